@@ -1,0 +1,118 @@
+// Link check: uses the core's public API from an entry point with no C/C++ runtime linked.
+// Only the four memory primitives a freestanding compiler may call are provided here.
+#include <cstddef>
+#include <cstdint>
+
+#include "volcomp/control_tick.hpp"
+#include "volcomp/crc32.hpp"
+#include "volcomp/firmware/board_app.hpp"
+#include "volcomp/table_image.hpp"
+#include "volcomp/table_writer.hpp"
+
+namespace {
+
+struct NullStepIo {
+  void ReadCounters(uint32_t* counters) {
+    for (int i = 0; i < 6; ++i) counters[i] = 0;
+  }
+  void Apply(const volcomp::PulsePlan*) {}
+};
+
+class NullIo final : public volcomp::hal::SlowIo {
+  bool DoRead(volcomp::hal::InputLine) override { return false; }
+  void DoWrite(volcomp::hal::OutputLine, bool) override {}
+};
+
+class NullFlash final : public volcomp::hal::Flash {
+  uint32_t DoSize() const override { return sizeof bytes_; }
+  uint32_t DoSectorSize() const override { return 64; }
+  uint32_t DoProgramUnit() const override { return 8; }
+  volcomp::Status DoErase(uint32_t) override { return volcomp::Status(); }
+  volcomp::Status DoProgram(uint32_t, const uint8_t*, uint32_t) override {
+    return volcomp::Status();
+  }
+  const uint8_t* DoMap(uint32_t offset) const override { return bytes_ + offset; }
+  alignas(4) uint8_t bytes_[256] = {};
+};
+
+}  // namespace
+
+extern "C" {
+// Called if a pure virtual function is ever invoked (never here); part of the ABI, not the runtime.
+void __cxa_pure_virtual() {
+  for (;;) {
+  }
+}
+
+void* memcpy(void* d, const void* s, size_t n) {
+  auto* dp = static_cast<unsigned char*>(d);
+  const auto* sp = static_cast<const unsigned char*>(s);
+  while (n-- != 0) *dp++ = *sp++;
+  return d;
+}
+void* memmove(void* d, const void* s, size_t n) {
+  auto* dp = static_cast<unsigned char*>(d);
+  const auto* sp = static_cast<const unsigned char*>(s);
+  if (dp < sp) {
+    while (n-- != 0) *dp++ = *sp++;
+  } else {
+    while (n-- != 0) dp[n] = sp[n];
+  }
+  return d;
+}
+void* memset(void* d, int c, size_t n) {
+  auto* dp = static_cast<unsigned char*>(d);
+  while (n-- != 0) *dp++ = static_cast<unsigned char>(c);
+  return d;
+}
+int memcmp(const void* a, const void* b, size_t n) {
+  const auto* x = static_cast<const unsigned char*>(a);
+  const auto* y = static_cast<const unsigned char*>(b);
+  for (; n != 0; --n, ++x, ++y) {
+    if (*x != *y) return *x < *y ? -1 : 1;
+  }
+  return 0;
+}
+
+// Never executed: the point is that this links.
+[[noreturn]] void volcomp_freestanding_entry() {
+  alignas(4) static uint8_t image[512];
+  static int16_t values[2 * 2 * 2 * 3];
+  volcomp::table::GridSpec grid;
+  for (auto& d : grid.dim) d = {2, 0, 100};
+  grid.values.i16 = values;
+  volcomp::table::ImageSpec spec;
+  spec.axis_count = 3;
+  spec.axes[0] = {'X', volcomp::table::AxisKind::kLinear, 1000000};
+  spec.axes[1] = {'Y', volcomp::table::AxisKind::kLinear, 1000000};
+  spec.axes[2] = {'Z', volcomp::table::AxisKind::kLinear, 1000000};
+  spec.grid = &grid;
+  volatile uint32_t sink = 0;
+  if (volcomp::table::WriteImage(spec, image, sizeof image).ok()) {
+    const auto view = volcomp::table::ParseImage(image, sizeof image);
+    static volcomp::ControlTick tick;
+    if (view.ok() && tick.Configure(volcomp::DefaultBoardConfig()).ok()) {
+      volcomp::PreparedTable t;
+      if (t.Prepare(*view, tick.config()).ok()) {
+        int32_t pos[3] = {0, 0, 0};
+        tick.compensator().SetTable(t, pos);
+      }
+      uint32_t counters[3] = {1, 2, 3};
+      volcomp::PulsePlan plans[3];
+      tick.Run(counters, plans);
+      sink = plans[0].count + volcomp::ComputeCrc32(image, 8);
+    }
+  }
+  static NullStepIo step_io;
+  static NullIo io;
+  static NullFlash flash;
+  static volcomp::firmware::BoardApp<NullStepIo> app({&step_io, &io, &flash});
+  if (app.Start(volcomp::DefaultBoardConfig()).ok()) {
+    app.Poll();
+    app.Tick();
+  }
+  (void)sink;
+  for (;;) {
+  }
+}
+}

@@ -1,0 +1,87 @@
+// Linear interpolation of an AXIS1D table: correction of one axis from its own position and its
+// direction of motion (forward table, reverse table or forward + backlash), with rotary wrap.
+//
+// Init() takes a validated Axis1dView (the image must outlive the lookup). Lookup() clamps to the
+// table (end values hold outside), no division. For wrap tables the caller passes the position
+// already reduced into [origin, origin + period) (see WrapTracker). Output: Q24.8 steps.
+#pragma once
+
+#include <cstdint>
+
+#include "volcomp/cell_locator.hpp"
+#include "volcomp/interp_arith.hpp"
+#include "volcomp/status.hpp"
+#include "volcomp/table_image.hpp"
+
+namespace volcomp {
+
+class AxisLookup {
+ public:
+  Status Init(const table::Axis1dView& view);
+
+  /// `reverse` = the axis last moved in the negative direction.
+  int32_t Lookup(int32_t pos_steps, bool reverse) const {
+    const uint8_t* values = reverse ? reverse_ : forward_;
+    const int32_t backlash = reverse ? backlash_q8_ : 0;
+    switch (type_) {
+      case table::ElementType::kInt16:
+        return Interpolate<LoadInt16>(values, pos_steps) + backlash;
+      case table::ElementType::kInt32:
+        return Interpolate<LoadInt32>(values, pos_steps) + backlash;
+      case table::ElementType::kFloat32:
+        return Interpolate<LoadFloat32>(values, pos_steps) + backlash;
+    }
+    return 0;
+  }
+
+  uint8_t axis() const { return axis_; }
+  bool wraps() const { return period_steps_ != 0; }
+  uint32_t period_steps() const { return period_steps_; }
+  int32_t origin_steps() const { return origin_steps_; }
+
+ private:
+  template <class Loader>
+  int32_t Interpolate(const uint8_t* values, int32_t pos_steps) const {
+    using A = typename Loader::Arith;
+    const CellPosition c = loc_.Locate(pos_steps);
+    const typename A::Weight w1 = A::FromQ30(c.t_q30), w0 = A::One() - w1;
+    const uint8_t* p = values + c.cell * Loader::kSize;
+    typename A::Acc acc = A::Mac(A::Zero(), w0, Loader::Load(p));
+    acc = A::Mac(acc, w1, Loader::Load(p + Loader::kSize));
+    return A::ToQ8(acc, shift_);
+  }
+
+  CellLocator loc_;
+  const uint8_t* forward_ = nullptr;
+  const uint8_t* reverse_ = nullptr;  // == forward_ when the table has no reverse part
+  int32_t backlash_q8_ = 0;
+  uint32_t shift_ = 22;
+  uint32_t period_steps_ = 0;
+  int32_t origin_steps_ = 0;
+  uint8_t axis_ = 0;
+  table::ElementType type_ = table::ElementType::kInt16;
+};
+
+/// Keeps a rotary position reduced modulo a period, updated by small deltas (no division per
+/// tick). Precondition: |delta| per Update() < period.
+class WrapTracker {
+ public:
+  /// Sets the tracked position from an absolute one (divides; call at activation).
+  void Init(int32_t pos_steps, int32_t origin_steps, uint32_t period_steps);
+  /// Advances by `delta_steps` and returns origin + ((pos - origin) mod period).
+  int32_t Update(int32_t delta_steps) {
+    int64_t o = static_cast<int64_t>(offset_) + delta_steps;
+    o -= (o >= period_) ? period_ : 0;
+    o += (o < 0) ? period_ : 0;
+    offset_ = static_cast<uint32_t>(o);
+    return static_cast<int32_t>(origin_ + static_cast<int64_t>(offset_));
+  }
+  int32_t position() const { return static_cast<int32_t>(origin_ + static_cast<int64_t>(offset_)); }
+
+ private:
+  int64_t period_ = 1;
+  int64_t origin_ = 0;
+  uint32_t offset_ = 0;
+};
+
+}  // namespace volcomp

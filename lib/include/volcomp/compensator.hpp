@@ -1,0 +1,102 @@
+// The compensator: correction = GRID3(x, y, z) + sum_i AXIS1D_i(q_i, direction_i), clamped to the
+// board's maximum, then moved toward by a rate/acceleration limiter per axis.
+//
+// The target is the table lookup only while the compensator is enabled, referenced, fault-free and
+// has an active table; otherwise the target is zero, so enabling ramps the correction in, and
+// disabling, losing the reference or a fault ramps it out (always within the limits). When the
+// applied correction is zero the output equals the input exactly (pass-through).
+//
+// Tick() is the per-tick hot path: no division, no allocation, constant time per axis.
+// Threading: call everything from the control context (the tick ISR or the code it defers to);
+// SetTable() and ClearTable() are meant for moments when the axes stand still.
+#pragma once
+
+#include <cstdint>
+
+#include "volcomp/axis_lookup.hpp"
+#include "volcomp/board_config.hpp"
+#include "volcomp/correction_limiter.hpp"
+#include "volcomp/grid_lookup.hpp"
+#include "volcomp/status.hpp"
+#include "volcomp/table_image.hpp"
+
+namespace volcomp {
+
+/// A table prepared for the hot path (reciprocals computed, lookups bound to the image bytes).
+struct PreparedTable {
+  bool has_grid = false;
+  GridLookup grid;
+  uint8_t axis_table_count = 0;
+  AxisLookup axis_table[table::kMaxAxes];
+  int8_t axis_table_of[table::kMaxAxes] = {-1, -1, -1, -1, -1, -1};  // per board axis, or -1
+  uint32_t table_id = 0;
+  uint32_t crc32 = 0;
+
+  /// Prepares `image` for `config` (checks it matches the board). Leaves *this unchanged on error.
+  Status Prepare(const table::TableView& image, const BoardConfig& config);
+
+  /// The table's correction per axis (Q24.8 steps, before clamp and limiter): GRID3 at
+  /// `pos_steps` plus each AXIS1D at `axis_pos_steps` (the same positions, except wrap axes
+  /// reduced into their period) in the direction given by `reverse`.
+  void TargetsQ8(const int32_t* pos_steps,
+                 const int32_t* axis_pos_steps,
+                 const bool* reverse,
+                 uint8_t axis_count,
+                 int32_t* target_q8) const;
+};
+
+class Compensator {
+ public:
+  /// Sets axis count and limits from a validated board configuration; resets all state.
+  Status Configure(const BoardConfig& config);
+
+  /// Makes `table` the active table (copied; the image bytes it points to must stay valid until
+  /// the next SetTable/ClearTable). The applied correction moves to the new target within limits.
+  void SetTable(const PreparedTable& table, const int32_t* machine_pos_steps);
+  /// Drops the active table at once; the applied correction ramps out to zero.
+  void ClearTable();
+  /// Machine coordinates jumped (re-referencing): restart direction and wrap tracking from
+  /// `machine_pos_steps` without treating the jump as motion.
+  void Rebase(const int32_t* machine_pos_steps);
+
+  void SetEnabled(bool on) { enabled_ = on; }
+  void SetReferenced(bool on) { referenced_ = on; }
+  void SetFault(bool on) { fault_ = on; }
+
+  /// One control tick. `machine_pos_steps`: commanded position per axis in machine coordinates.
+  /// Writes the whole-step correction to add to each axis's output position.
+  void Tick(const int32_t* machine_pos_steps, int32_t* correction_steps);
+
+  bool has_table() const { return has_table_; }
+  /// True when the target is the table (enabled, referenced, no fault, table active).
+  bool engaged() const { return has_table_ && enabled_ && referenced_ && !fault_; }
+  /// True when every axis has zero applied correction and is at rest (pure pass-through).
+  bool passthrough() const;
+  uint32_t table_id() const { return table_.table_id; }
+  uint32_t table_crc32() const { return table_.crc32; }
+  /// Last target and applied correction of an axis, Q24.8 steps.
+  int32_t target_q8(int axis) const { return target_q8_[axis]; }
+  int32_t applied_q8(int axis) const {
+    return static_cast<int32_t>(limiter_[axis].position_q32() >> 24);
+  }
+  /// True while the axis last moved in the negative direction.
+  bool reverse(int axis) const { return reverse_[axis]; }
+  uint8_t axis_count() const { return axis_count_; }
+
+ private:
+  uint8_t axis_count_ = 0;
+  bool enabled_ = false;
+  bool referenced_ = false;
+  bool fault_ = false;
+  bool has_table_ = false;
+  PreparedTable table_;
+  int32_t max_q8_[table::kMaxAxes] = {};
+  CorrectionLimiter limiter_[table::kMaxAxes];
+  WrapTracker wrap_[table::kMaxAxes];
+  bool wraps_[table::kMaxAxes] = {};
+  int32_t last_pos_[table::kMaxAxes] = {};
+  bool reverse_[table::kMaxAxes] = {};
+  int32_t target_q8_[table::kMaxAxes] = {};
+};
+
+}  // namespace volcomp

@@ -1,0 +1,82 @@
+// Per-axis output step planning: turns "output position should be N" into the pulses of one tick,
+// honouring the drive's minimum pulse width, step space, direction setup and hold, and maximum
+// rate, across tick boundaries.
+//
+// Each tick Plan() returns a PulsePlan: `count` pulses in one direction, the first rising edge at
+// `first_rise` and then every `period` (times in pulse-clock units from the tick start), and, if
+// the direction changes, the moment of the direction edge. A timer with a repetition counter (or
+// DMA) executes it on the MCU; the mock HAL expands it into edges. The generator never plans a
+// pulse it cannot place legally this tick: the rest stays as backlog for the next tick, so the
+// output position converges to the target and never loses or invents a step.
+//
+// Timing rules enforced (all measured at the output pins, pulse = rising edge + width):
+//   rise-to-rise >= max(width + space, ceil(clock / max_rate)); a direction edge comes >= dir_hold
+//   after the last falling edge and >= dir_setup before the next rising edge. For quadrature
+//   output each step is one edge and `width` is unused; for CW/CCW the "direction" is which line
+//   pulses and the same setup/hold apply between lines.
+//
+// Hot path: no division (reciprocals of the counts are precomputed), O(1) per tick.
+#pragma once
+
+#include <cstdint>
+
+#include "volcomp/board_config.hpp"
+#include "volcomp/invariant_divider.hpp"
+#include "volcomp/status.hpp"
+
+namespace volcomp {
+
+struct PulsePlan {
+  uint32_t count = 0;       // pulses this tick
+  bool negative = false;    // direction of these pulses (and the direction line level after)
+  bool dir_change = false;  // the direction line changes this tick, at dir_edge
+  uint32_t dir_edge = 0;    // pulse-clock units after the tick start
+  uint32_t first_rise = 0;  // first rising edge, pulse-clock units after the tick start
+  uint32_t period = 0;      // rise-to-rise, pulse-clock units
+  uint32_t width = 0;       // high time, pulse-clock units
+};
+
+class StepGenerator {
+ public:
+  /// Most pulses one tick may carry (bounds the reciprocal table).
+  static constexpr uint32_t kMaxPulsesPerTick = 256;
+
+  /// Converts the axis's drive timing to pulse-clock units. kConfigInvalid if the tick cannot
+  /// carry even one pulse or a direction change never fits.
+  Status Configure(const AxisConfig& axis, uint32_t tick_hz, uint32_t pulse_clock_hz);
+
+  /// Plans the pulses of the next tick toward `target_steps` (wrap-safe int32 positions).
+  PulsePlan Plan(int32_t target_steps);
+
+  /// Output position after all planned pulses.
+  int32_t position() const { return position_; }
+  /// Sets the output position without pulses (power-up).
+  void Reset(int32_t position_steps) { position_ = position_steps; }
+  /// Pulses still owed after the last Plan().
+  int32_t backlog(int32_t target_steps) const {
+    return static_cast<int32_t>(static_cast<uint32_t>(target_steps) -
+                                static_cast<uint32_t>(position_));
+  }
+  uint32_t tick_length() const { return tick_; }
+  uint32_t min_period() const { return min_period_; }
+  /// Largest pulse count of a tick without a direction change.
+  uint32_t max_pulses_per_tick() const { return max_per_tick_; }
+
+ private:
+  uint32_t tick_ = 0;        // tick length, pulse-clock units
+  uint32_t min_period_ = 1;  // minimum rise-to-rise
+  uint32_t width_ = 0;
+  uint32_t setup_ = 0;
+  uint32_t hold_ = 0;
+  uint32_t max_per_tick_ = 0;
+  bool edges_only_ = false;  // quadrature: a step is a single edge
+  InvariantDivider by_min_period_;
+  uint32_t recip_count_[kMaxPulsesPerTick + 1] = {};  // floor((2^32 - 1) / n)
+
+  int32_t position_ = 0;
+  bool negative_ = false;
+  int64_t last_rise_ = -(int64_t{1} << 40);  // relative to the current tick start
+  int64_t last_fall_ = -(int64_t{1} << 40);
+};
+
+}  // namespace volcomp

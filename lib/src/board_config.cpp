@@ -1,0 +1,85 @@
+// Board configuration checks.
+#include "volcomp/board_config.hpp"
+
+#include "volcomp/correction_limiter.hpp"
+
+namespace volcomp {
+namespace {
+
+bool ValidAxisName(char c) {
+  for (const char* p = table::kAxisNames; *p != '\0'; ++p) {
+    if (*p == c) return true;
+  }
+  return false;
+}
+
+Status ValidateAxis(const AxisConfig& a, uint32_t tick_hz) {
+  if (!ValidAxisName(a.name) || a.resolution_e9 == 0) return Error::kConfigInvalid;
+  if (a.kind != table::AxisKind::kLinear && a.kind != table::AxisKind::kRotary) {
+    return Error::kConfigInvalid;
+  }
+  if (static_cast<uint8_t>(a.input_format) > 2 || static_cast<uint8_t>(a.output_format) > 2) {
+    return Error::kConfigInvalid;
+  }
+  if (a.input_counter_bits != 16 && a.input_counter_bits != 32) return Error::kConfigInvalid;
+  if (a.max_correction_steps < 0 || a.max_correction_steps > table::kMaxCorrectionSteps) {
+    return Error::kConfigInvalid;
+  }
+  if (a.max_input_rate_hz == 0 || a.drive.max_rate_hz == 0) return Error::kConfigInvalid;
+  // A 16-bit counter must not wrap by half its range within one tick.
+  if (a.input_counter_bits == 16 && a.max_input_rate_hz / tick_hz >= 32768u) {
+    return Error::kConfigInvalid;
+  }
+  // The output must keep up with the fastest input plus the fastest correction.
+  if (static_cast<uint64_t>(a.max_input_rate_hz) + a.max_correction_rate_steps_s >
+      a.drive.max_rate_hz) {
+    return Error::kConfigInvalid;
+  }
+  const Result<CorrectionLimiter::Params> p = CorrectionLimiter::MakeParams(
+      tick_hz, a.max_correction_rate_steps_s, a.max_correction_accel_steps_s2);
+  return p.status();
+}
+
+}  // namespace
+
+Status ValidateBoardConfig(const BoardConfig& config) {
+  if (config.tick_hz < 1000 || config.tick_hz > 200000) return Error::kConfigInvalid;
+  if (config.pulse_clock_hz < config.tick_hz * 100u) return Error::kConfigInvalid;
+  if (config.axis_count < 1 || config.axis_count > table::kMaxAxes) return Error::kConfigInvalid;
+  for (uint8_t i = 0; i < config.axis_count; ++i) {
+    VOLCOMP_TRY(ValidateAxis(config.axis[i], config.tick_hz));
+    for (uint8_t j = 0; j < i; ++j) {
+      if (config.axis[j].name == config.axis[i].name) return Error::kConfigInvalid;
+    }
+  }
+  return Status::Ok();
+}
+
+Status CheckImageMatchesBoard(const table::TableView& image, const BoardConfig& config) {
+  if (image.axis_count > config.axis_count) return Error::kConfigTooManyAxes;
+  for (uint8_t i = 0; i < image.axis_count; ++i) {
+    const table::AxisInfo& img = image.axes[i];
+    const AxisConfig& cfg = config.axis[i];
+    if (img.name != cfg.name || img.kind != cfg.kind) return Error::kConfigAxisMismatch;
+    if (img.resolution_e9 != cfg.resolution_e9) return Error::kConfigResolutionMismatch;
+  }
+  return Status::Ok();
+}
+
+BoardConfig DefaultBoardConfig() {
+  BoardConfig c;
+  c.axis_count = 3;
+  const char names[3] = {'X', 'Y', 'Z'};
+  for (int i = 0; i < 3; ++i) {
+    c.axis[i] = AxisConfig();
+    c.axis[i].name = names[i];
+    c.axis[i].drive.pulse_width_ns = 200;
+    c.axis[i].drive.step_space_ns = 200;
+    c.axis[i].drive.dir_setup_ns = 200;
+    c.axis[i].drive.dir_hold_ns = 200;
+    c.axis[i].drive.max_rate_hz = 2000000;
+  }
+  return c;
+}
+
+}  // namespace volcomp

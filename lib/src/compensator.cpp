@@ -1,0 +1,116 @@
+// Compensator: table lookup -> clamp -> rate/acceleration limiter -> whole steps.
+#include "volcomp/compensator.hpp"
+
+namespace volcomp {
+
+Status PreparedTable::Prepare(const table::TableView& image, const BoardConfig& config) {
+  VOLCOMP_TRY(CheckImageMatchesBoard(image, config));
+  PreparedTable t;
+  if (image.grid.present) {
+    VOLCOMP_TRY(t.grid.Init(image.grid));
+    t.has_grid = true;
+  }
+  for (uint8_t i = 0; i < image.axis1d_count; ++i) {
+    VOLCOMP_TRY(t.axis_table[i].Init(image.axis1d[i]));
+    t.axis_table_of[image.axis1d[i].axis] = static_cast<int8_t>(i);
+  }
+  t.axis_table_count = image.axis1d_count;
+  t.table_id = image.table_id;
+  t.crc32 = image.crc32;
+  *this = t;
+  return Status::Ok();
+}
+
+void PreparedTable::TargetsQ8(const int32_t* pos_steps,
+                              const int32_t* axis_pos_steps,
+                              const bool* reverse,
+                              uint8_t axis_count,
+                              int32_t* target_q8) const {
+  for (uint8_t a = 0; a < axis_count; ++a) target_q8[a] = 0;
+  if (has_grid) {
+    int32_t g[3];
+    grid.Lookup(pos_steps, g);
+    for (int c = 0; c < 3; ++c) target_q8[grid.axis(c)] += g[c];
+  }
+  for (uint8_t a = 0; a < axis_count; ++a) {
+    const int8_t i = axis_table_of[a];
+    if (i >= 0) target_q8[a] += axis_table[i].Lookup(axis_pos_steps[a], reverse[a]);
+  }
+}
+
+Status Compensator::Configure(const BoardConfig& config) {
+  VOLCOMP_TRY(ValidateBoardConfig(config));
+  for (uint8_t a = 0; a < config.axis_count; ++a) {
+    const AxisConfig& ax = config.axis[a];
+    const Result<CorrectionLimiter::Params> p = CorrectionLimiter::MakeParams(
+        config.tick_hz, ax.max_correction_rate_steps_s, ax.max_correction_accel_steps_s2);
+    if (!p.ok()) return p.status();
+    limiter_[a] = CorrectionLimiter(*p);
+    max_q8_[a] = ax.max_correction_steps * (1 << table::kCorrectionFracBits);
+    last_pos_[a] = 0;
+    reverse_[a] = false;
+    target_q8_[a] = 0;
+  }
+  axis_count_ = config.axis_count;
+  has_table_ = false;
+  return Status::Ok();
+}
+
+void Compensator::SetTable(const PreparedTable& table, const int32_t* machine_pos_steps) {
+  table_ = table;
+  for (uint8_t a = 0; a < axis_count_; ++a) {
+    const int8_t i = table_.axis_table_of[a];
+    wraps_[a] = i >= 0 && table_.axis_table[i].wraps();
+  }
+  has_table_ = true;
+  Rebase(machine_pos_steps);
+}
+
+void Compensator::ClearTable() { has_table_ = false; }
+
+void Compensator::Rebase(const int32_t* machine_pos_steps) {
+  for (uint8_t a = 0; a < axis_count_; ++a) {
+    last_pos_[a] = machine_pos_steps[a];
+    if (has_table_ && wraps_[a]) {
+      const AxisLookup& t = table_.axis_table[table_.axis_table_of[a]];
+      wrap_[a].Init(machine_pos_steps[a], t.origin_steps(), t.period_steps());
+    }
+  }
+}
+
+bool Compensator::passthrough() const {
+  for (uint8_t a = 0; a < axis_count_; ++a) {
+    if (limiter_[a].position_q32() != 0 || !limiter_[a].at_rest()) return false;
+  }
+  return true;
+}
+
+void Compensator::Tick(const int32_t* machine_pos_steps, int32_t* correction_steps) {
+  for (uint8_t a = 0; a < axis_count_; ++a) {
+    const int32_t delta = static_cast<int32_t>(static_cast<uint32_t>(machine_pos_steps[a]) -
+                                               static_cast<uint32_t>(last_pos_[a]));
+    last_pos_[a] = machine_pos_steps[a];
+    reverse_[a] = delta < 0 ? true : (delta > 0 ? false : reverse_[a]);
+    if (has_table_ && wraps_[a]) wrap_[a].Update(delta);
+  }
+  if (engaged()) {
+    int32_t axis_pos[table::kMaxAxes];
+    for (uint8_t a = 0; a < axis_count_; ++a) {
+      axis_pos[a] = wraps_[a] ? wrap_[a].position() : machine_pos_steps[a];
+    }
+    table_.TargetsQ8(machine_pos_steps, axis_pos, reverse_, axis_count_, target_q8_);
+  } else {
+    for (uint8_t a = 0; a < axis_count_; ++a) target_q8_[a] = 0;
+  }
+  for (uint8_t a = 0; a < axis_count_; ++a) {
+    int32_t t = target_q8_[a];
+    t = t > max_q8_[a] ? max_q8_[a] : t;
+    t = t < -max_q8_[a] ? -max_q8_[a] : t;
+    target_q8_[a] = t;
+    const int64_t p = limiter_[a].Step(static_cast<int64_t>(t) * (int64_t{1} << 24));  // Q8 -> Q32
+    // Round half up to whole steps.
+    correction_steps[a] = static_cast<int32_t>((p + (int64_t{1} << 31)) >> 32);
+  }
+}
+
+}  // namespace volcomp

@@ -1,0 +1,77 @@
+// The per-tick data path.
+#include "volcomp/control_tick.hpp"
+
+namespace volcomp {
+
+Status ControlTick::Configure(const BoardConfig& config) {
+  VOLCOMP_TRY(ValidateBoardConfig(config));
+  VOLCOMP_TRY(compensator_.Configure(config));
+  for (uint8_t a = 0; a < config.axis_count; ++a) {
+    VOLCOMP_TRY(generator_[a].Configure(config.axis[a], config.tick_hz, config.pulse_clock_hz));
+    generator_[a].Reset(0);
+    counter_shift_[a] = static_cast<uint8_t>(32u - config.axis[a].input_counter_bits);
+    last_counter_[a] = 0;
+    commanded_[a] = machine_[a] = correction_[a] = target_[a] = 0;
+    reference_offset_[a] = 0;
+    referenced_[a] = false;
+    max_backlog_[a] = 0;
+  }
+  config_ = config;
+  axis_count_ = config.axis_count;
+  ticks_ = 0;
+  compensator_.SetReferenced(false);
+  return Status::Ok();
+}
+
+void ControlTick::Run(const uint32_t* input_counters, PulsePlan* plans) {
+  for (uint8_t a = 0; a < axis_count_; ++a) {
+    const uint32_t raw = input_counters[a];
+    // Sign-extend the counter difference from the counter width (16 or 32 bits).
+    const uint32_t diff = (raw - last_counter_[a]) << counter_shift_[a];
+    last_counter_[a] = raw;
+    commanded_[a] = static_cast<int32_t>(
+        static_cast<uint32_t>(commanded_[a]) +
+        static_cast<uint32_t>(static_cast<int32_t>(diff) >> counter_shift_[a]));
+    machine_[a] = static_cast<int32_t>(static_cast<uint32_t>(commanded_[a]) +
+                                       static_cast<uint32_t>(reference_offset_[a]));
+  }
+  compensator_.Tick(machine_, correction_);
+  for (uint8_t a = 0; a < axis_count_; ++a) {
+    target_[a] = static_cast<int32_t>(static_cast<uint32_t>(commanded_[a]) +
+                                      static_cast<uint32_t>(correction_[a]));
+    plans[a] = generator_[a].Plan(target_[a]);
+    const int32_t owed = generator_[a].backlog(target_[a]);
+    const uint32_t mag = static_cast<uint32_t>(owed < 0 ? -static_cast<int64_t>(owed) : owed);
+    max_backlog_[a] = mag > max_backlog_[a] ? mag : max_backlog_[a];
+  }
+  ++ticks_;
+}
+
+void ControlTick::LatchCounters(const uint32_t* input_counters) {
+  for (uint8_t a = 0; a < axis_count_; ++a) last_counter_[a] = input_counters[a];
+}
+
+void ControlTick::Reference(uint8_t axis) {
+  if (axis >= axis_count_) return;
+  reference_offset_[axis] =
+      static_cast<int32_t>(static_cast<uint32_t>(config_.axis[axis].home_position_steps) -
+                           static_cast<uint32_t>(commanded_[axis]));
+  machine_[axis] = config_.axis[axis].home_position_steps;
+  compensator_.Rebase(machine_);
+  referenced_[axis] = true;
+  compensator_.SetReferenced(all_referenced());
+}
+
+void ControlTick::Unreference() {
+  for (uint8_t a = 0; a < axis_count_; ++a) referenced_[a] = false;
+  compensator_.SetReferenced(false);
+}
+
+bool ControlTick::all_referenced() const {
+  for (uint8_t a = 0; a < axis_count_; ++a) {
+    if (!referenced_[a]) return false;
+  }
+  return axis_count_ > 0;
+}
+
+}  // namespace volcomp

@@ -1,0 +1,53 @@
+#!/usr/bin/env bash
+# Installs the Debian packages volcomp needs (idempotent). Usage: scripts/setup-deps.sh [GROUP...]
+#   build   compiler, CMake, Ninja, GoogleTest, Google Benchmark (default)
+# Later groups (CAN, cross toolchain, emulators) are added here as the project grows.
+# Installs only what is missing; needs root or sudo for that, and stops with a clear message
+# otherwise.
+set -euo pipefail
+
+declare -A GROUPS_PKGS=(
+  [build]="g++ cmake ninja-build libgtest-dev libgmock-dev libbenchmark-dev"
+)
+
+groups=("$@")
+[[ ${#groups[@]} -eq 0 ]] && groups=(build)
+
+wanted=()
+for g in "${groups[@]}"; do
+  if [[ -z "${GROUPS_PKGS[$g]+x}" ]]; then
+    echo "setup-deps: unknown group '$g' (known: ${!GROUPS_PKGS[*]})" >&2
+    exit 2
+  fi
+  read -r -a pkgs <<<"${GROUPS_PKGS[$g]}"
+  wanted+=("${pkgs[@]}")
+done
+
+missing=()
+for p in "${wanted[@]}"; do
+  if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
+    missing+=("$p")
+  fi
+done
+[[ ${#missing[@]} -eq 0 ]] && exit 0
+
+if ! command -v apt-get >/dev/null 2>&1; then
+  echo "setup-deps: missing packages: ${missing[*]}" >&2
+  echo "setup-deps: this script needs Debian (bookworm) with apt-get to install them." >&2
+  exit 1
+fi
+SUDO=""
+if [[ $(id -u) -ne 0 ]]; then
+  if command -v sudo >/dev/null 2>&1; then
+    SUDO="sudo"
+  else
+    echo "setup-deps: missing packages: ${missing[*]}" >&2
+    echo "setup-deps: run as root, or install sudo, or install them yourself:" >&2
+    echo "  apt-get install -y ${missing[*]}" >&2
+    exit 1
+  fi
+fi
+echo "setup-deps: installing ${missing[*]}" >&2
+export DEBIAN_FRONTEND=noninteractive
+$SUDO apt-get update -qq
+$SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null

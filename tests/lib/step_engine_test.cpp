@@ -1,0 +1,248 @@
+// The whole per-tick data path on random input step streams with compensation active:
+// output = input + correction exactly, no step lost or invented, no drive timing violated,
+// output within two ticks of the input.
+//
+// Input lines are simulated edge by edge through StepDecoder (the hardware counter model);
+// outputs go through MockStepIo into DriveModel checkers. VOLCOMP_LONG_TESTS (cmake option) or
+// the environment variable VOLCOMP_ENGINE_STEPS raises the step count (10^8 for the long run).
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <random>
+
+#include "test_tables.hpp"
+#include "volcomp/control_tick.hpp"
+#include "volcomp/hal/mock/mock_step_io.hpp"
+#include "volcomp/step_decoder.hpp"
+
+namespace volcomp {
+namespace {
+
+uint64_t StepsPerFormat() {
+  if (const char* env = std::getenv("VOLCOMP_ENGINE_STEPS")) return std::strtoull(env, nullptr, 10);
+#ifdef VOLCOMP_LONG_TESTS
+  return 100000000;
+#else
+  return 1000000;
+#endif
+}
+
+// A grid with strong gradients so corrections keep changing as the axes move: up to +-40 steps
+// over a 4x4x4 lattice spanning +-50000 steps.
+testing::GridCase SteepGrid(std::mt19937_64& rng) {
+  testing::GridCase g;
+  g.type = table::ElementType::kInt16;
+  g.frac_bits = 8;
+  for (auto& d : g.dim) d = {4, -50000, 33334};
+  std::uniform_int_distribution<int> v(-40 * 256, 40 * 256);
+  for (size_t i = 0; i < g.count(); ++i) {
+    g.i16.push_back(static_cast<int16_t>(v(rng)));
+    g.steps.push_back(g.i16.back() / 256.0);
+  }
+  return g;
+}
+
+struct EngineRun {
+  uint64_t input_steps = 0;
+  uint64_t output_steps = 0;
+  uint64_t violations = 0;
+  uint32_t max_backlog = 0;
+  int64_t max_abs_correction = 0;
+  uint64_t ticks = 0;
+};
+
+EngineRun RunEngine(PulseFormat in_format,
+                    PulseFormat out_format,
+                    uint8_t counter_bits,
+                    uint64_t steps_wanted,
+                    uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  BoardConfig cfg = DefaultBoardConfig();
+  for (int a = 0; a < 3; ++a) {
+    AxisConfig& ax = cfg.axis[a];
+    ax.input_format = in_format;
+    ax.output_format = out_format;
+    ax.input_counter_bits = counter_bits;
+    ax.max_input_rate_hz = 1000000;
+    ax.max_correction_steps = 1000;
+    ax.max_correction_rate_steps_s = 20000;
+    ax.max_correction_accel_steps_s2 = 4000000;
+    ax.drive = {200, 200, 300, 300, 2000000};  // width, space, setup, hold (ns), max rate
+  }
+  ControlTick engine;
+  EXPECT_TRUE(engine.Configure(cfg).ok());
+  const uint32_t zero_counters[3] = {0, 0, 0};
+  engine.LatchCounters(zero_counters);
+  const testing::GridCase grid = SteepGrid(rng);
+  const testing::AlignedBytes img = testing::WriteGridImage(grid);
+  const auto view = table::ParseImage(img.data(), img.size());
+  PreparedTable table;
+  EXPECT_TRUE(table.Prepare(*view, cfg).ok());
+  int32_t zero[3] = {0, 0, 0};
+  engine.compensator().SetTable(table, zero);
+  engine.compensator().SetEnabled(true);
+  for (uint8_t a = 0; a < 3; ++a) engine.Reference(a);
+
+  hal::mock::MockStepIo io(cfg, nullptr);
+  StepDecoder dec[3] = {StepDecoder(in_format), StepDecoder(in_format), StepDecoder(in_format)};
+  bool line_a[3] = {}, line_b[3] = {};
+  int8_t quad_phase[3] = {};
+  for (int a = 0; a < 3; ++a) {
+    line_b[a] = in_format == PulseFormat::kStepDir;
+    dec[a].Reset(line_a[a], line_b[a]);
+  }
+  const uint64_t tick_ns = 1000000000ull / cfg.tick_hz;
+  EngineRun run;
+  int64_t input_pos[3] = {};
+  int dir[3] = {1, 1, 1};
+  uint32_t rate[3] = {};
+  // Emits one input step on axis a through its line levels.
+  auto step = [&](int a, int d) {
+    switch (in_format) {
+      case PulseFormat::kStepDir:
+        if (line_b[a] != (d > 0)) {
+          line_b[a] = d > 0;
+          dec[a].Sample(line_a[a], line_b[a]);
+        }
+        dec[a].Sample(true, line_b[a]);
+        dec[a].Sample(false, line_b[a]);
+        break;
+      case PulseFormat::kCwCcw:
+        dec[a].Sample(d > 0, d < 0);
+        dec[a].Sample(false, false);
+        break;
+      case PulseFormat::kQuadrature: {
+        static const bool kA[4] = {false, true, true, false}, kB[4] = {false, false, true, true};
+        quad_phase[a] = static_cast<int8_t>((quad_phase[a] + (d > 0 ? 1 : 3)) & 3);
+        dec[a].Sample(kA[quad_phase[a]], kB[quad_phase[a]]);
+        break;
+      }
+    }
+    input_pos[a] += d;
+    ++run.input_steps;
+  };
+
+  uint64_t t = 0;
+  while (run.input_steps < steps_wanted) {
+    for (int a = 0; a < 3; ++a) {
+      // Random walk of the step rate: 0..20 steps per 20 us tick (up to 1 MHz), with reversals,
+      // kept inside the grid +-60000 (partly outside it, where the boundary values hold).
+      if (rng() % 64 == 0) rate[a] = static_cast<uint32_t>(rng() % 21);
+      if (rng() % 256 == 0 || (input_pos[a] > 60000 && dir[a] > 0) ||
+          (input_pos[a] < -60000 && dir[a] < 0)) {
+        dir[a] = -dir[a];
+      }
+      for (uint32_t s = 0; s < rate[a]; ++s) step(a, dir[a]);
+      io.set_counter(static_cast<uint8_t>(a), static_cast<uint32_t>(dec[a].count()));
+    }
+    io.set_tick_start_ns(t);
+    uint32_t counters[3];
+    io.ReadCounters(counters);
+    PulsePlan plans[3];
+    engine.Run(counters, plans);
+    io.Apply(plans);
+    for (uint8_t a = 0; a < 3; ++a) {
+      // Exactness every tick: planned output = input + correction - backlog.
+      EXPECT_EQ(engine.output_position(a) + engine.backlog(a),
+                static_cast<int32_t>(input_pos[a]) + engine.correction_steps(a));
+      run.max_abs_correction =
+          std::max<int64_t>(run.max_abs_correction, std::abs(engine.correction_steps(a)));
+    }
+    t += tick_ns;
+  }
+  // Let the correction settle with the inputs standing still, then compare.
+  for (int i = 0; i < 20000; ++i) {
+    io.set_tick_start_ns(t);
+    uint32_t counters[3];
+    io.ReadCounters(counters);
+    PulsePlan plans[3];
+    engine.Run(counters, plans);
+    io.Apply(plans);
+    t += tick_ns;
+  }
+  for (uint8_t a = 0; a < 3; ++a) {
+    const auto& drive = io.drive(a);
+    EXPECT_EQ(drive.position(), input_pos[a] + engine.correction_steps(a)) << "axis " << int(a);
+    EXPECT_EQ(engine.backlog(a), 0);
+    EXPECT_EQ(dec[a].errors(), 0u);
+    for (const auto& v : drive.violation_log()) ADD_FAILURE() << "axis " << int(a) << ": " << v;
+    run.violations += drive.violations();
+    run.output_steps += drive.steps();
+    run.max_backlog = std::max(run.max_backlog, engine.max_backlog(a));
+  }
+  run.ticks = engine.ticks();
+  // Latency: a step read at a tick start is emitted within that tick unless the backlog exceeds
+  // one tick's capacity, so the backlog never reaching it means <= 2 ticks edge to output.
+  EXPECT_LT(run.max_backlog, engine.generator(0).max_pulses_per_tick());
+  return run;
+}
+
+const char* Name(PulseFormat f) {
+  return f == PulseFormat::kStepDir ? "step/dir"
+                                    : (f == PulseFormat::kCwCcw ? "cw/ccw" : "quadrature");
+}
+
+class StepEngine : public ::testing::TestWithParam<PulseFormat> {};
+
+TEST_P(StepEngine, OutputEqualsInputPlusCorrectionWithoutTimingViolations) {
+  const PulseFormat f = GetParam();
+  const EngineRun r = RunEngine(f, f, 32, StepsPerFormat(), 100 + static_cast<int>(f));
+  EXPECT_GE(r.input_steps, StepsPerFormat());
+  EXPECT_EQ(r.violations, 0u);
+  EXPECT_GT(r.max_abs_correction, 5);  // the compensation really was active
+  std::printf(
+      "[ metric ] %s: %llu input steps, %llu output steps, %llu ticks, max backlog %u, "
+      "max |correction| %lld steps, %llu violations\n",
+      Name(f), static_cast<unsigned long long>(r.input_steps),
+      static_cast<unsigned long long>(r.output_steps), static_cast<unsigned long long>(r.ticks),
+      r.max_backlog, static_cast<long long>(r.max_abs_correction),
+      static_cast<unsigned long long>(r.violations));
+}
+
+INSTANTIATE_TEST_SUITE_P(Formats,
+                         StepEngine,
+                         ::testing::Values(PulseFormat::kStepDir,
+                                           PulseFormat::kCwCcw,
+                                           PulseFormat::kQuadrature));
+
+TEST(StepEngineMixed, SixteenBitCountersAndFormatConversion) {
+  // Quadrature in, step/dir out, 16-bit hardware counters that wrap many times.
+  const EngineRun r = RunEngine(PulseFormat::kQuadrature, PulseFormat::kStepDir, 16, 300000, 7);
+  EXPECT_EQ(r.violations, 0u);
+  EXPECT_GE(r.input_steps, 300000u);
+}
+
+TEST(StepGenerator, RespectsSlowDriveTimingAcrossDirectionChanges) {
+  // A slow drive (Leadshine-like: 2.5 us width/space, 5 us setup, 10 us hold, 200 kHz): the
+  // direction change does not fit one 20 us tick with pulses, so it waits.
+  AxisConfig ax;
+  ax.drive = {2500, 2500, 5000, 10000, 200000};
+  StepGenerator gen;
+  ASSERT_TRUE(gen.Configure(ax, 50000, 1000000000).ok());
+  DriveTiming timing = ax.drive;
+  hal::mock::DriveModel drive(PulseFormat::kStepDir, timing);
+  bool dir_level = true;
+  uint64_t t0 = 0;
+  std::mt19937_64 rng(8);
+  int32_t target = 0;
+  for (int tick = 0; tick < 200000; ++tick, t0 += 20000) {
+    if (tick % 7 == 0) target += static_cast<int32_t>(rng() % 9) - 4;
+    const PulsePlan p = gen.Plan(target);
+    if (p.dir_change) {
+      dir_level = !p.negative;
+      drive.OnEdge(t0 + p.dir_edge, true, dir_level);
+    }
+    for (uint32_t j = 0; j < p.count; ++j) {
+      drive.OnEdge(t0 + p.first_rise + uint64_t{j} * p.period, false, true);
+      drive.OnEdge(t0 + p.first_rise + uint64_t{j} * p.period + p.width, false, false);
+    }
+  }
+  for (const auto& v : drive.violation_log()) ADD_FAILURE() << v;
+  EXPECT_EQ(drive.violations(), 0u);
+  EXPECT_EQ(drive.position() + gen.backlog(target), target);
+  EXPECT_LE(std::abs(gen.backlog(target)), 8);
+}
+
+}  // namespace
+}  // namespace volcomp

@@ -1,0 +1,99 @@
+// Plain CSV reading for the PC tool: header-named columns, numbers with line-numbered errors.
+//
+// Accepted syntax: comma-separated fields (a ';' or TAB separator is detected from the header
+// line), optional double quotes around a field ("" for a literal quote), '#' starts a comment line,
+// blank lines are skipped, CRLF line ends are accepted. The first non-comment line is the header.
+// Every data row must have as many fields as the header. Errors carry the 1-based line number of
+// the input and name the column, e.g. `points.csv:12: column "dz_um": "abc" is not a number`.
+#pragma once
+
+#include <cstddef>
+#include <istream>
+#include <memory>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace volcomp::tools {
+
+/// Thrown for malformed input; what() is the full message with source name and line.
+class InputError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+class CsvTable;
+struct CsvMeta;
+
+/// One data row of a CsvTable.
+class CsvRow {
+ public:
+  /// 1-based line number in the source.
+  std::size_t line() const { return line_; }
+  /// Raw text of a field by column index.
+  const std::string& text(std::size_t column) const { return fields_.at(column); }
+  /// Raw text of a named column (throws InputError if the header has no such column).
+  const std::string& text(const std::string& column) const;
+  /// Field parsed as a finite double; throws InputError naming line and column otherwise.
+  double number(const std::string& column) const;
+  double number(std::size_t column) const;
+  /// Field parsed as an integer; throws InputError naming line and column otherwise.
+  long long integer(const std::string& column) const;
+  /// Named field as a finite double, or nullopt when the column is absent or the field is empty.
+  std::optional<double> optional_number(const std::string& column) const;
+
+ private:
+  friend class CsvTable;
+  std::shared_ptr<const CsvMeta> meta_;
+  std::size_t line_ = 0;
+  std::vector<std::string> fields_;
+};
+
+/// Source name and header shared by a table and its rows.
+struct CsvMeta {
+  std::string source;
+  std::size_t header_line = 0;
+  std::vector<std::string> header;
+
+  std::optional<std::size_t> find(const std::string& column) const;
+  std::size_t require(const std::string& column) const;
+  InputError error(std::size_t line, const std::string& message) const;
+};
+
+/// A whole CSV file in memory.
+class CsvTable {
+ public:
+  /// Parses `in`; `source` names it in error messages (a path, or "<stdin>").
+  static CsvTable Parse(std::istream& in, const std::string& source);
+  static CsvTable ParseFile(const std::string& path);
+  static CsvTable ParseString(const std::string& text, const std::string& source = "<string>");
+
+  const std::string& source() const { return meta_->source; }
+  const std::vector<std::string>& header() const { return meta_->header; }
+  const std::vector<CsvRow>& rows() const { return rows_; }
+  std::size_t header_line() const { return meta_->header_line; }
+
+  /// Index of a column (exact, case-sensitive match after trimming), or nullopt.
+  std::optional<std::size_t> find(const std::string& column) const { return meta_->find(column); }
+  /// Index of a column; throws InputError "missing column" when absent.
+  std::size_t require(const std::string& column) const { return meta_->require(column); }
+  /// First of several accepted names that is present, or nullopt.
+  std::optional<std::string> first_of(const std::vector<std::string>& names) const;
+
+  /// Builds an InputError message "source:line: message".
+  InputError error(std::size_t line, const std::string& message) const {
+    return meta_->error(line, message);
+  }
+
+ private:
+  std::shared_ptr<const CsvMeta> meta_;
+  std::vector<CsvRow> rows_;
+};
+
+/// Parses a finite double from the whole of `text` (leading/trailing spaces allowed).
+std::optional<double> ParseDouble(const std::string& text);
+/// Parses a base-10 integer from the whole of `text` (leading/trailing spaces allowed).
+std::optional<long long> ParseInteger(const std::string& text);
+
+}  // namespace volcomp::tools

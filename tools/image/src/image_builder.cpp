@@ -1,0 +1,251 @@
+// Hosted image building: quantise, lay out through the lib writer, validate.
+#include "volcomp/image/image_builder.hpp"
+
+#include <cmath>
+#include <fstream>
+#include <iterator>
+#include <sstream>
+
+#include "volcomp/table_writer.hpp"
+#include "volcomp/tools/csv.hpp"
+
+namespace volcomp::image {
+namespace {
+
+using tools::InputError;
+
+int64_t ElementLimit(table::ElementType type) {
+  switch (type) {
+    case table::ElementType::kInt16:
+      return 32767;
+    case table::ElementType::kInt32:
+      return 2147483647;
+    case table::ElementType::kFloat32:
+      return 0;
+  }
+  return 0;
+}
+
+// Calls `fn(value, description)` for every correction value of the request.
+template <class Fn>
+void ForEachValue(const ImageRequest& r, Fn fn) {
+  if (r.grid) {
+    const auto& g = *r.grid;
+    const uint64_t n0 = g.lattice[0].nodes, n1 = g.lattice[1].nodes;
+    for (size_t i = 0; i < g.correction_steps.size(); ++i) {
+      const uint64_t node = i / 3, c = i % 3;
+      fn(g.correction_steps[i], [=] {
+        std::ostringstream s;
+        s << "GRID3 node (" << node % n0 << ", " << (node / n0) % n1 << ", " << node / (n0 * n1)
+          << ") component " << c;
+        return s.str();
+      });
+    }
+  }
+  for (const auto& t : r.axis_tables) {
+    for (size_t i = 0; i < t.forward_steps.size(); ++i) {
+      fn(t.forward_steps[i], [&, i] {
+        return "AXIS1D axis " + std::to_string(t.axis) + " forward node " + std::to_string(i);
+      });
+    }
+    for (size_t i = 0; i < t.reverse_steps.size(); ++i) {
+      fn(t.reverse_steps[i], [&, i] {
+        return "AXIS1D axis " + std::to_string(t.axis) + " reverse node " + std::to_string(i);
+      });
+    }
+  }
+}
+
+void CheckRequest(const ImageRequest& r) {
+  if (r.axes.empty() || r.axes.size() > table::kMaxAxes) {
+    throw InputError("image: 1 to 6 axes are needed, got " + std::to_string(r.axes.size()));
+  }
+  if (!r.grid && r.axis_tables.empty()) throw InputError("image: no GRID3 and no AXIS1D table");
+  if (r.grid) {
+    const auto& g = *r.grid;
+    uint64_t nodes = 1;
+    for (const auto& l : g.lattice) nodes *= l.nodes;
+    if (g.correction_steps.size() != nodes * 3) {
+      throw InputError("image: GRID3 needs " + std::to_string(nodes * 3) + " values, got " +
+                       std::to_string(g.correction_steps.size()));
+    }
+  }
+  for (const auto& t : r.axis_tables) {
+    if (t.forward_steps.size() != t.lattice.nodes ||
+        (!t.reverse_steps.empty() && t.reverse_steps.size() != t.lattice.nodes)) {
+      throw InputError("image: AXIS1D axis " + std::to_string(t.axis) + " needs " +
+                       std::to_string(t.lattice.nodes) + " values per direction");
+    }
+  }
+  ForEachValue(r, [](double v, auto where) {
+    if (!std::isfinite(v)) throw InputError("image: " + where() + " is not a finite number");
+    if (std::fabs(v) > table::kMaxCorrectionSteps) {
+      std::ostringstream s;
+      s << "image: " << where() << " = " << v << " steps exceeds the maximum correction of "
+        << table::kMaxCorrectionSteps << " steps";
+      throw InputError(s.str());
+    }
+  });
+}
+
+// Encoded element storage for one array.
+struct Encoded {
+  std::vector<int16_t> i16;
+  std::vector<int32_t> i32;
+  std::vector<float> f32;
+  table::ElementArray view(table::ElementType type) const {
+    table::ElementArray a;
+    a.type = type;
+    a.i16 = i16.data();
+    a.i32 = i32.data();
+    a.f32 = f32.data();
+    return a;
+  }
+};
+
+Encoded Encode(const std::vector<double>& values, table::ElementType type, uint8_t frac) {
+  Encoded e;
+  const double scale = std::ldexp(1.0, frac);
+  for (double v : values) {
+    switch (type) {
+      case table::ElementType::kInt16:
+        e.i16.push_back(static_cast<int16_t>(std::llround(v * scale)));
+        break;
+      case table::ElementType::kInt32:
+        e.i32.push_back(static_cast<int32_t>(std::llround(v * scale)));
+        break;
+      case table::ElementType::kFloat32:
+        e.f32.push_back(static_cast<float>(v));
+        break;
+    }
+  }
+  return e;
+}
+
+std::string InfoText(const std::map<std::string, std::string>& info) {
+  std::string text;
+  for (const auto& [k, v] : info) {
+    for (const std::string* s : {&k, &v}) {
+      for (char c : *s) {
+        if (c == '\n' || c == '\r' || (static_cast<unsigned char>(c) < 0x20 && c != '\t')) {
+          throw InputError("image: INFO entry \"" + k + "\" contains a control character");
+        }
+      }
+    }
+    if (k.empty() || k.find('=') != std::string::npos) {
+      throw InputError("image: INFO key \"" + k + "\" must be non-empty and contain no '='");
+    }
+    text += k + "=" + v + "\n";
+  }
+  if (text.size() > table::kMaxInfoBytes - 3) throw InputError("image: INFO text too long");
+  return text;
+}
+
+}  // namespace
+
+uint8_t ChooseFracBits(const ImageRequest& request) {
+  CheckRequest(request);
+  if (request.element == table::ElementType::kFloat32) return 0;
+  double max_abs = 0;
+  ForEachValue(request, [&](double v, auto) { max_abs = std::max(max_abs, std::fabs(v)); });
+  for (const auto& t : request.axis_tables)
+    max_abs = std::max(max_abs, std::fabs(t.backlash_steps));
+  const int64_t limit = ElementLimit(request.element);
+  for (int f = table::kMaxFracBits; f >= 0; --f) {
+    if (std::llround(max_abs * std::ldexp(1.0, f)) <= limit) return static_cast<uint8_t>(f);
+  }
+  std::ostringstream s;
+  s << "image: a correction of " << max_abs << " steps does not fit int16 even with 0 fraction "
+    << "bits; use --element int32";
+  throw InputError(s.str());
+}
+
+std::vector<uint8_t> BuildImage(const ImageRequest& request) {
+  CheckRequest(request);
+  const uint8_t frac = request.frac_bits ? *request.frac_bits : ChooseFracBits(request);
+  const table::ElementType type = request.element;
+  if (type == table::ElementType::kFloat32 && frac != 0) {
+    throw InputError("image: float32 elements take no fraction bits");
+  }
+  if (frac > table::kMaxFracBits) throw InputError("image: fraction bits must be 0..8");
+  const int64_t limit = ElementLimit(type);
+  if (limit != 0) {
+    ForEachValue(request, [&](double v, auto where) {
+      if (std::llabs(std::llround(v * std::ldexp(1.0, frac))) > limit) {
+        std::ostringstream s;
+        s << "image: " << where() << " = " << v << " steps does not fit the element type with "
+          << int(frac) << " fraction bits";
+        throw InputError(s.str());
+      }
+    });
+  }
+
+  table::ImageSpec spec;
+  spec.table_id = request.table_id;
+  spec.axis_count = static_cast<uint8_t>(request.axes.size());
+  for (size_t i = 0; i < request.axes.size(); ++i) {
+    spec.axes[i] = {request.axes[i].name, request.axes[i].kind, request.axes[i].resolution_e9};
+  }
+  Encoded grid_values;
+  table::GridSpec grid;
+  if (request.grid) {
+    const auto& g = *request.grid;
+    grid_values = Encode(g.correction_steps, type, frac);
+    grid.frac_bits = frac;
+    for (int d = 0; d < 3; ++d) {
+      grid.axis[d] = g.axis[d];
+      grid.dim[d] = {g.lattice[d].nodes, g.lattice[d].origin_steps, g.lattice[d].spacing_steps};
+    }
+    grid.values = grid_values.view(type);
+    spec.grid = &grid;
+  }
+  std::vector<Encoded> axis_values(request.axis_tables.size() * 2);
+  spec.axis1d_count = static_cast<uint8_t>(request.axis_tables.size());
+  if (request.axis_tables.size() > table::kMaxAxes) throw InputError("image: too many AXIS1D");
+  for (size_t i = 0; i < request.axis_tables.size(); ++i) {
+    const auto& t = request.axis_tables[i];
+    table::Axis1dSpec& a = spec.axis1d[i];
+    a.axis = t.axis;
+    a.frac_bits = frac;
+    a.dim = {t.lattice.nodes, t.lattice.origin_steps, t.lattice.spacing_steps};
+    a.period_steps = t.wrap_period_steps;
+    a.backlash_q8 = static_cast<int32_t>(std::llround(t.backlash_steps * 256.0));
+    axis_values[2 * i] = Encode(t.forward_steps, type, frac);
+    a.forward = axis_values[2 * i].view(type);
+    a.has_reverse = !t.reverse_steps.empty();
+    if (a.has_reverse) {
+      axis_values[2 * i + 1] = Encode(t.reverse_steps, type, frac);
+      a.reverse = axis_values[2 * i + 1].view(type);
+    }
+  }
+  const std::string info = InfoText(request.info);
+  if (!info.empty()) {
+    spec.info = info.data();
+    spec.info_size = static_cast<uint32_t>(info.size());
+  }
+
+  const Result<uint32_t> size = table::ImageSize(spec);
+  if (!size.ok()) throw InputError(std::string("image: ") + ErrorText(size.error()));
+  std::vector<uint32_t> aligned((*size + 3) / 4);
+  uint8_t* out = reinterpret_cast<uint8_t*>(aligned.data());
+  const Result<uint32_t> written = table::WriteImage(spec, out, aligned.size() * 4);
+  if (!written.ok()) {
+    throw InputError(std::string("image: ") + ErrorText(written.error()) + " (" +
+                     ErrorName(written.error()) + ")");
+  }
+  return std::vector<uint8_t>(out, out + *written);
+}
+
+std::vector<uint8_t> ReadFileBytes(const std::string& path) {
+  std::ifstream f(path, std::ios::binary);
+  if (!f) throw InputError(path + ": cannot open");
+  return std::vector<uint8_t>(std::istreambuf_iterator<char>(f), {});
+}
+
+void WriteFileBytes(const std::string& path, const std::vector<uint8_t>& bytes) {
+  std::ofstream f(path, std::ios::binary | std::ios::trunc);
+  f.write(reinterpret_cast<const char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
+  if (!f) throw std::runtime_error(path + ": cannot write");
+}
+
+}  // namespace volcomp::image

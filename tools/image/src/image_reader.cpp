@@ -1,0 +1,63 @@
+// Hosted image reading and evaluation.
+#include "volcomp/image/image_reader.hpp"
+
+#include <cstring>
+
+#include "volcomp/image/image_builder.hpp"
+#include "volcomp/tools/csv.hpp"
+
+namespace volcomp::image {
+
+LoadedImage::LoadedImage(const std::vector<uint8_t>& bytes, const std::string& source)
+    : storage_((bytes.size() + 3) / 4) {
+  if (!bytes.empty()) std::memcpy(storage_.data(), bytes.data(), bytes.size());
+  const Result<table::TableView> v = table::ParseImage(data(), bytes.size());
+  if (!v.ok()) {
+    throw tools::InputError(source + ": invalid table image: " + ErrorText(v.error()) + " (" +
+                            ErrorName(v.error()) + ")");
+  }
+  view_ = *v;
+}
+
+LoadedImage LoadImageFile(const std::string& path) {
+  return LoadedImage(ReadFileBytes(path), path);
+}
+
+BoardConfig BoardConfigFor(const table::TableView& view) {
+  BoardConfig c = DefaultBoardConfig();
+  c.axis_count = view.axis_count;
+  for (uint8_t i = 0; i < view.axis_count; ++i) {
+    c.axis[i] = AxisConfig();
+    c.axis[i].name = view.axes[i].name;
+    c.axis[i].kind = view.axes[i].kind;
+    c.axis[i].resolution_e9 = view.axes[i].resolution_e9;
+    c.axis[i].max_correction_steps = table::kMaxCorrectionSteps;
+    c.axis[i].drive.max_rate_hz = 4000000;
+    c.axis[i].drive.pulse_width_ns = c.axis[i].drive.step_space_ns = 100;
+  }
+  return c;
+}
+
+ImageEvaluator::ImageEvaluator(const LoadedImage& image) : axis_count_(image.view().axis_count) {
+  const Status s = table_.Prepare(image.view(), BoardConfigFor(image.view()));
+  if (!s.ok()) throw tools::InputError(std::string("image: ") + ErrorText(s.error()));
+}
+
+void ImageEvaluator::CorrectionQ8(const int32_t* pos_steps,
+                                  const bool* reverse,
+                                  int32_t* out_q8) const {
+  int32_t axis_pos[table::kMaxAxes];
+  for (uint8_t a = 0; a < axis_count_; ++a) {
+    axis_pos[a] = pos_steps[a];
+    const int8_t i = table_.axis_table_of[a];
+    if (i >= 0 && table_.axis_table[i].wraps()) {
+      WrapTracker w;
+      w.Init(pos_steps[a], table_.axis_table[i].origin_steps(),
+             table_.axis_table[i].period_steps());
+      axis_pos[a] = w.position();
+    }
+  }
+  table_.TargetsQ8(pos_steps, axis_pos, reverse, axis_count_, out_q8);
+}
+
+}  // namespace volcomp::image
