@@ -1,0 +1,142 @@
+#!/usr/bin/env python3
+"""Regenerates the synthetic sample data of samples/metrology/ (deterministic, seed fixed).
+
+Run from this folder: python3 generate_samples.py
+The GOST 27843-88 example files are not generated here: they are the reconstructed worked example
+(see docs/metrology.md and tests/metrology/data/gost27843_example_reconstructed.csv); this script
+only converts the wide table to the long layout.
+"""
+import csv
+import math
+import random
+
+HERE = "."
+
+
+def gost_long():
+    rows = [r for r in csv.reader(open("../../tests/metrology/data/gost27843_example_reconstructed.csv"))
+            if r and not r[0].startswith("#")]
+    header, targets, runs = rows[0], rows[1], rows[2:]
+    with open(f"{HERE}/gost27843_example_long.csv", "w") as f:
+        f.write("# GOST 27843-88 worked example (reconstructed readings), long layout\n")
+        f.write("target_mm,direction,run,deviation_um\n")
+        for c in range(1, len(header)):
+            d = "up" if header[c].endswith("+") else "down"
+            for r in runs:
+                f.write(f"{targets[c]},{d},{r[0]},{r[c]}\n")
+
+
+def rotary_table_positioning(rng):
+    """A rotary table (C axis) tested at 12 positions every 30° incl. 0/90/180/270, 5 runs each
+    direction; worm-wheel errors: once-per-rev 6″, 4-per-rev 2″, reversal 3″, noise 0.8″."""
+    with open(f"{HERE}/rotary_table_positioning.csv", "w") as f:
+        f.write("# synthetic rotary table positioning test (GOST 27843-88 §2.8), arc-seconds\n")
+        f.write("target_deg,direction,run,deviation_arcsec\n")
+        for run in range(1, 6):
+            for d in ("up", "down"):
+                for j in range(12):
+                    a = 30.0 * j
+                    t = math.radians(a)
+                    dev = 6 * math.sin(t + 0.4) + 2 * math.sin(4 * t) + (1.5 if d == "up" else -1.5)
+                    dev += rng.gauss(0, 0.8)
+                    f.write(f"{a:.3f},{d},{run},{dev:.2f}\n")
+
+
+def diagonals(rng):
+    """Four body diagonals and two XY face diagonals of an 800 × 500 × 400 mm volume. Machine
+    model: scale errors X +12, Y −8, Z +5 µm/m; squareness XY 20 µrad; backlash X 4, Y 3, Z 2 µm;
+    noise 0.3 µm. Deviation = projection of the error vector on the diagonal direction."""
+    size = (800.0, 500.0, 400.0)
+    scale = (12e-3, -8e-3, 5e-3)  # µm per mm
+    backlash = (4.0, 3.0, 2.0)
+    sq_xy = 20e-6  # rad
+
+    def error(p, move):
+        e = [scale[i] * p[i] + 0.5 * backlash[i] * math.copysign(1.0, move[i]) if move[i] else
+             scale[i] * p[i] for i in range(3)]
+        e[0] += sq_xy * p[1] * 1000.0  # µm
+        return e
+
+    def corner(signs):
+        return [size[i] if s > 0 else 0.0 for i, s in enumerate(signs)]
+
+    specs = [("+X+Y+Z", (1, 1, 1), None), ("+X+Y-Z", (1, 1, -1), None),
+             ("+X-Y+Z", (1, -1, 1), None), ("-X+Y+Z", (-1, 1, 1), None),
+             ("+X+Y Z200", (1, 1, 0), 200.0), ("+X-Y Z200", (1, -1, 0), 200.0)]
+    with open(f"{HERE}/diagonals.csv", "w") as f:
+        f.write("# synthetic ISO 230-6 test: 4 body diagonals and 2 face diagonals (XY at Z200)\n")
+        f.write("# target_mm = distance from the diagonal's start corner; deviation along it\n")
+        f.write("diagonal,target_mm,direction,run,deviation_um\n")
+        for name, signs, z in specs:
+            p1 = corner(signs)
+            if z is not None:
+                p1[2] = z
+            p2 = [size[i] - p1[i] if signs[i] else p1[i] for i in range(3)]
+            v = [p2[i] - p1[i] for i in range(3)]
+            length = math.sqrt(sum(c * c for c in v))
+            u = [c / length for c in v]
+            steps = round(length / 100.0)
+            for run in range(1, 6):
+                for d in ("up", "down"):
+                    order = range(steps + 1) if d == "up" else range(steps, -1, -1)
+                    for i in order:
+                        t = i * length / steps
+                        p = [p1[k] + t * u[k] for k in range(3)]
+                        move = [c if d == "up" else -c for c in v]
+                        e = error(p, move)
+                        dev = sum(e[k] * u[k] for k in range(3)) + rng.gauss(0, 0.3)
+                        f.write(f"\"{name}\",{t:.3f},{d},{run},{dev:.2f}\n")
+
+
+def spindle(rng):
+    """Spindle with a sphere at two planes 80 mm apart and an axial sensor: eccentricity 5 µm,
+    2-lobe 0.6 µm, 3-lobe 0.25 µm, half-speed whirl 0.3 µm, noise 0.02 µm; tilt 2 µrad 2-lobe;
+    axial 0.4 µm once per rev + 0.15 µm 4-lobe."""
+    n, k_revs, L = 256, 8, 80.0
+    with open(f"{HERE}/spindle_error_motion.csv", "w") as f:
+        f.write("# synthetic ISO 230-7 spindle test, 8 revolutions x 256 angles, µm\n")
+        f.write("rev,angle_deg,x_um,y_um,x2_um,y2_um,z_um\n")
+        for k in range(k_revs):
+            for j in range(n):
+                a = 360.0 * j / n
+                t = math.radians(a)
+                tt = t + 2 * math.pi * k
+                ex, ey = 5 * math.cos(t + 0.3), 5 * math.sin(t + 0.3)  # sphere eccentricity
+                rx = 0.6 * math.cos(2 * t) * math.cos(t) + 0.25 * math.cos(3 * t + 1)
+                ry = 0.6 * math.cos(2 * t) * math.sin(t) + 0.25 * math.sin(3 * t + 1)
+                wx, wy = 0.3 * math.cos(tt / 2), 0.3 * math.sin(tt / 2)
+                x = ex + rx + wx + rng.gauss(0, 0.02)
+                y = ey + ry + wy + rng.gauss(0, 0.02)
+                tilt = 2e-3 * math.cos(2 * t)  # µm per mm = mrad·1e-3 -> 2 µrad
+                x2 = ex + rx + wx + L * tilt * math.cos(t) + rng.gauss(0, 0.02)
+                y2 = ey + ry + wy + L * tilt * math.sin(t) + rng.gauss(0, 0.02)
+                z = 0.2 * math.cos(t - 0.5) + 0.15 * math.cos(4 * t) + rng.gauss(0, 0.03)
+                f.write(f"{k + 1},{a:.4f},{x:.4f},{y:.4f},{x2:.4f},{y2:.4f},{z:.4f}\n")
+
+
+def reversal(rng):
+    """Donaldson reversal: artefact with a 3-lobe form of 0.5 µm and a 5-lobe of 0.1 µm, spindle
+    (FSD along X) with a 2-lobe of 0.3 µm; setup 2 with sphere and sensor turned 180°,
+    procedure P (same sign convention): T2P = P − S. 4 revolutions × 180 angles."""
+    n, k_revs = 180, 4
+    for setup in (1, 2):
+        with open(f"{HERE}/reversal_setup{setup}.csv", "w") as f:
+            f.write(f"# synthetic Donaldson reversal record, setup {setup} (ISO 230-7 annex B)\n")
+            f.write("rev,angle_deg,x_um\n")
+            for k in range(k_revs):
+                for j in range(n):
+                    a = 360.0 * j / n
+                    t = math.radians(a)
+                    p = 0.5 * math.cos(3 * t + 0.2) + 0.1 * math.sin(5 * t)
+                    s = 0.3 * math.cos(2 * t + 0.7)
+                    v = p + s if setup == 1 else p - s
+                    f.write(f"{k + 1},{a:.1f},{v + rng.gauss(0, 0.01):.4f}\n")
+
+
+if __name__ == "__main__":
+    rng = random.Random(27843)
+    gost_long()
+    rotary_table_positioning(rng)
+    diagonals(rng)
+    spindle(rng)
+    reversal(rng)

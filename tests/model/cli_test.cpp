@@ -1,0 +1,166 @@
+// The table-builder commands, run in-process: images are valid, reports say what they must, bad
+// input is refused with a clear message.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "commands.hpp"
+#include "volcomp/image/image_reader.hpp"
+#include "volcomp/tools/csv.hpp"
+
+namespace volcomp::tools {
+namespace {
+
+std::string Sample(const std::string& name) {
+  const char* root = std::getenv("VOLCOMP_SOURCE_DIR");
+  return std::string(root ? root : ".") + "/samples/model/" + name;
+}
+
+std::string TempPath(const std::string& name) {
+  return testing::TempDir() + "volcomp_model_" + name;
+}
+
+// Runs a command; returns its stdout. Exceptions propagate.
+std::string RunCommand(int (*cmd)(Args&), std::vector<std::string> argv, int* rc = nullptr) {
+  Args args(std::move(argv));
+  testing::internal::CaptureStdout();
+  int code = 0;
+  try {
+    code = cmd(args);
+  } catch (...) {
+    testing::internal::GetCapturedStdout();
+    throw;
+  }
+  if (rc != nullptr) *rc = code;
+  return testing::internal::GetCapturedStdout();
+}
+
+template <typename E>
+std::string ErrorOf(int (*cmd)(Args&), std::vector<std::string> argv) {
+  try {
+    RunCommand(cmd, std::move(argv));
+  } catch (const E& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(model_cli, BuildModelWritesAValidImageAndReports) {
+  const std::string out = TempPath("s500.vctb");
+  int rc = -1;
+  const std::string report =
+      RunCommand(RunBuildModel,
+                 {"--model", Sample("s500.conf"), "-o", out, "--resolution-nm",
+                  "X=1000,Y=1000,Z=1000", "--table-id", "7"},
+                 &rc);
+  EXPECT_EQ(rc, 0);
+  EXPECT_NE(report.find("predicted interpolation error between nodes"), std::string::npos);
+  EXPECT_NE(report.find("inverse at the nodes: worst residual"), std::string::npos);
+  const image::LoadedImage img = image::LoadImageFile(out);
+  EXPECT_EQ(img.view().table_id, 7u);
+  EXPECT_EQ(img.view().axis_count, 3u);
+}
+
+TEST(model_cli, BuildModelRefusesCorrectionsBeyondTheBound) {
+  const std::string msg = ErrorOf<InputError>(
+      RunBuildModel, {"--model", "s500", "-o", TempPath("x.vctb"), "--resolution-nm",
+                      "X=1000,Y=1000,Z=1000", "--max-correction-um", "100"});
+  EXPECT_NE(msg.find("exceeds the configured bound of 100.0 µm"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("--max-correction-um"), std::string::npos) << msg;
+}
+
+TEST(model_cli, GridOptionsAreChecked) {
+  const std::vector<std::string> base = {"--model", "s500", "-o", TempPath("x.vctb")};
+  auto with = [&base](std::vector<std::string> extra) {
+    std::vector<std::string> v = base;
+    v.insert(v.end(), extra.begin(), extra.end());
+    return v;
+  };
+  EXPECT_NE(ErrorOf<UsageError>(RunBuildModel, with({})).find("needs --resolution-nm"),
+            std::string::npos);
+  EXPECT_NE(ErrorOf<UsageError>(RunBuildModel, with({"--resolution-nm", "X=300,Y=1000,Z=1000",
+                                                     "--spacing-mm", "X=20.00005,Y=10,Z=10"}))
+                .find("not a whole number of steps"),
+            std::string::npos);
+  EXPECT_NE(
+      ErrorOf<UsageError>(RunBuildModel, with({"--resolution-nm", "X=1000,Y=1000,Z=1000",
+                                               "--spacing-mm", "10", "--max-interp-error-um", "1"}))
+          .find("not both"),
+      std::string::npos);
+  EXPECT_NE(ErrorOf<UsageError>(RunBuildModel, with({"--resolution-nm", "X=1000,Y=1000,Z=1000",
+                                                     "--range", "X=5:1"}))
+                .find("--range"),
+            std::string::npos);
+}
+
+TEST(model_cli, BuildTrackerMethods) {
+  const std::vector<std::string> res = {"--resolution-nm", "X=1000,Y=1000,Z=1000"};
+  std::vector<std::string> a = {"--points", Sample("tracker_s500_315.csv"), "-o",
+                                TempPath("t.vctb")};
+  a.insert(a.end(), res.begin(), res.end());
+  EXPECT_NE(RunCommand(RunBuildTracker, a).find("quasi-differential (exact inverse)"),
+            std::string::npos);
+  std::vector<std::string> b = a;
+  b.insert(b.end(), {"--method", "interval"});
+  EXPECT_NE(ErrorOf<UsageError>(RunBuildTracker, b).find("--allow-discontinuous"),
+            std::string::npos);
+  b.push_back("--allow-discontinuous");
+  EXPECT_NE(RunCommand(RunBuildTracker, b).find("method: interval"), std::string::npos);
+  std::vector<std::string> s = b;
+  s.insert(s.end(), {"--cosines", "scaled"});
+  EXPECT_NE(ErrorOf<UsageError>(RunBuildTracker, s).find("needs the quasi-differential method"),
+            std::string::npos);
+  std::vector<std::string> c = {"--builtin", "s500-315", "--cosines",         "printed", "--method",
+                                "static",    "-o",       TempPath("t3.vctb"), "--json"};
+  c.insert(c.end(), res.begin(), res.end());
+  EXPECT_NE(RunCommand(RunBuildTracker, c).find("\"max_inverse_residual_um\""), std::string::npos);
+}
+
+TEST(model_cli, BuildKmtppDefaultAndDissertationForm) {
+  const std::vector<std::string> base = {
+      "--model", "s500", "-o", TempPath("k.vctb"), "--resolution-nm", "X=1000,Y=1000,Z=1000"};
+  EXPECT_NE(RunCommand(RunBuildKmtpp, base).find("final_step: traced point"), std::string::npos);
+  std::vector<std::string> d = base;
+  d.push_back("--dissertation");
+  EXPECT_NE(ErrorOf<UsageError>(RunBuildKmtpp, d).find("--allow-discontinuous"), std::string::npos);
+}
+
+TEST(model_cli, BuildAxisFromAPositioningTest) {
+  const std::string out = TempPath("a.vctb");
+  const std::string report =
+      RunCommand(RunBuildAxis, {"--x", Sample("positioning_x.csv"), "-o", out, "--resolution-nm",
+                                "X=1000", "--reverse", "backlash", "--spacing", "X=20"});
+  EXPECT_NE(report.find("21 nodes from 0 every 20 mm"), std::string::npos) << report;
+  EXPECT_NE(report.find("backlash 4.0"), std::string::npos) << report;
+  EXPECT_EQ(image::LoadImageFile(out).view().axis_count, 1u);
+  // A rotary axis given a linear file is refused, naming the file.
+  const std::string msg = ErrorOf<InputError>(
+      RunBuildAxis, {"--a", Sample("positioning_x.csv"), "-o", out, "--resolution-nm", "A=1000"});
+  EXPECT_NE(msg.find("is rotary"), std::string::npos) << msg;
+}
+
+TEST(model_cli, ModelEvalForwardAndInverse) {
+  const std::string points = TempPath("points.csv");
+  std::ofstream(points) << "x_mm,y_mm,z_mm\n300,150,50\n";
+  // Appendix А in the dissertation formulation: 54.789039 µm (printed δ).
+  const std::string out =
+      RunCommand(RunModelEval, {"--model", "s500", "--formulation", "dissertation", "--order",
+                                "first", "--tool-offset-mm", "10,10,10", points});
+  EXPECT_NE(out.find(",54.789039\n"), std::string::npos) << out;
+  const std::string inv = RunCommand(RunModelEval, {"--model", "s500", "--inverse", points});
+  EXPECT_EQ(inv.rfind("x_mm,y_mm,z_mm,cmd_x_mm", 0), 0u) << inv;
+  std::ofstream(points) << "x_mm,y_mm\n1,2\n";
+  EXPECT_NE(ErrorOf<InputError>(RunModelEval, {"--model", "s500", points}).find("z_mm"),
+            std::string::npos);
+  EXPECT_NE(ErrorOf<InputError>(RunModelEval, {"--model", "/nonexistent.conf", points})
+                .find("/nonexistent.conf"),
+            std::string::npos);
+}
+
+}  // namespace
+}  // namespace volcomp::tools

@@ -1,0 +1,126 @@
+// Properties of the correction grids: exactness of trilinear interpolation where theory says so,
+// the inverse at every node, the predicted interpolation error, the spacing choice and the bounds.
+#include "volcomp/model/grid.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "volcomp/model/rigid_body.hpp"
+#include "volcomp/model/s500.hpp"
+
+namespace volcomp::model {
+namespace {
+
+GridBuildOptions S500Grid(double step_mm = 0.001) {
+  GridBuildOptions o;
+  o.min_mm = {0, 0, 0};
+  o.max_mm = {400, 280, 200};
+  o.natural_spacing_mm = {20, 10, 10};  // the measurement nodes of Tables 3.2-3.4
+  o.step_mm = {step_mm, step_mm, step_mm};
+  return o;
+}
+
+// The forward error as a "map" whose sampled correction is the error itself.
+InverseMap ForwardErrorAsMap(const Model& m) {
+  return [&m](const Vec3& p) { return p + 1e-3 * ToolPointError_um(m, p); };
+}
+
+double MaxTrilinearDeviationUm(const Model& m, int samples) {
+  const CorrectionGrid g = SampleGrid(MakeGridSpec(S500Grid(), {20, 10, 10}), ForwardErrorAsMap(m));
+  std::mt19937_64 rng(3);
+  std::uniform_real_distribution<double> ux(0, 400), uy(0, 280), uz(0, 200);
+  double worst = 0;
+  for (int i = 0; i < samples; ++i) {
+    const Vec3 p = {ux(rng), uy(rng), uz(rng)};
+    worst = std::fmax(worst, 1e3 * Norm(g.Interpolate(p) - 1e-3 * ToolPointError_um(m, p)));
+  }
+  return worst;
+}
+
+TEST(model_grid, TrilinearIsExactForFirstOrderSumOfAxisFunctions) {
+  // ch. 3 digest D5: the first-order model is a sum of univariate piecewise-linear functions, so a
+  // grid on the product of the measurement nodes reproduces it exactly between nodes too.
+  EXPECT_LT(MaxTrilinearDeviationUm(S500DissertationModel(Order::kFirst), 3000), 1e-9);
+  // The physical first-order model adds products ε_x(x)·z etc. and linear squareness terms: each
+  // is multilinear inside a cell, so it is reproduced exactly as well.
+  S500Options o;
+  o.order = Order::kFirst;
+  o.tool_offset_mm = {0, 0, 100};
+  EXPECT_LT(MaxTrilinearDeviationUm(S500Model(o), 3000), 1e-9);
+  // Exact rotations are not multilinear, but the difference is tiny.
+  o.order = Order::kSecond;
+  const double exact = MaxTrilinearDeviationUm(S500Model(o), 3000);
+  EXPECT_GT(exact, 1e-9);
+  EXPECT_LT(exact, 0.01);
+}
+
+TEST(model_grid, InterpolateClampsAndHitsNodes) {
+  GridBuildOptions o = S500Grid();
+  const GridSpec spec = MakeGridSpec(o, {200, 140, 100});
+  EXPECT_EQ(spec[0].nodes, 3u);
+  EXPECT_EQ(spec[1].nodes, 3u);
+  EXPECT_EQ(spec[2].nodes, 3u);
+  const InverseMap f = [](const Vec3& p) { return p + Vec3{p.x * p.y * 1e-6, 0.001, 0}; };
+  const CorrectionGrid g = SampleGrid(spec, f);
+  EXPECT_NEAR(g.Interpolate({200, 140, 100}).x, 200 * 140 * 1e-6, 1e-12);
+  EXPECT_NEAR(g.Interpolate({500, 140, -50}).x, 400 * 140 * 1e-6, 1e-12);  // clamped
+  EXPECT_NEAR(g.Interpolate({100, 70, 50}).x, 100 * 70 * 1e-6, 1e-12);     // bilinear: exact
+}
+
+TEST(model_grid, InverseGridOfTheS500) {
+  const Model m = S500Model();
+  const InverseMap inverse = [&m](const Vec3& t) { return SolveCommand(m, t).command_mm; };
+  const ForwardMap forward = [&m](const Vec3& q) { return q + 1e-3 * ToolPointError_um(m, q); };
+  const GridBuildResult r = BuildCorrectionGrid(S500Grid(), inverse, &forward);
+  EXPECT_EQ(r.grid.axes[0].nodes, 21u);
+  EXPECT_EQ(r.grid.axes[1].nodes, 29u);
+  EXPECT_EQ(r.grid.axes[2].nodes, 21u);
+  EXPECT_LE(r.stats.max_residual_um, 0.01);   // the requirement at every node
+  EXPECT_GT(r.stats.max_correction_um, 100);  // the S500 errors are hundreds of µm ...
+  EXPECT_LT(r.interpolation.max_um, 0.5);     // ... and a grid on the table nodes captures them
+  EXPECT_GT(r.interpolation.samples, 10000u);
+}
+
+TEST(model_grid, SpacingChosenFromTheInterpolationBound) {
+  const Model m = S500Model();
+  const InverseMap inverse = [&m](const Vec3& t) { return SolveCommand(m, t).command_mm; };
+  GridBuildOptions o = S500Grid();
+  o.max_interp_error_um = 2.0;
+  const GridBuildResult r = BuildCorrectionGrid(o, inverse);
+  EXPECT_LE(r.interpolation.max_um, 2.0);
+  ASSERT_FALSE(r.tried.empty());
+  // Every coarser spacing tried before the chosen one missed the bound.
+  for (std::size_t i = 0; i + 1 < r.tried.size(); ++i) EXPECT_GT(r.tried[i].second, 2.0);
+  // A bound no grid within the limits can meet is refused with a message.
+  o.max_interp_error_um = 1e-9;
+  o.max_nodes = 20000;
+  EXPECT_THROW(BuildCorrectionGrid(o, inverse), std::runtime_error);
+}
+
+TEST(model_grid, RefusesCorrectionsBeyondTheBound) {
+  const Model m = S500Model();
+  const InverseMap inverse = [&m](const Vec3& t) { return SolveCommand(m, t).command_mm; };
+  GridBuildOptions o = S500Grid();
+  o.max_correction_um = 50;
+  try {
+    BuildCorrectionGrid(o, inverse);
+    FAIL() << "expected a refusal";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("exceeds the configured bound of 50.0 µm"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
+TEST(model_grid, SpacingMustBeWholeSteps) {
+  GridBuildOptions o = S500Grid(0.0003);                               // 0.3 µm per step
+  EXPECT_THROW(MakeGridSpec(o, {20, 10, 10}), std::invalid_argument);  // 66666.67 steps
+  EXPECT_NO_THROW(MakeGridSpec(o, {19.9998, 9.9999, 9.9999}));
+  o.min_mm = {0.0001, 0, 0};
+  EXPECT_THROW(MakeGridSpec(o, {19.9998, 9.9999, 9.9999}), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace volcomp::model

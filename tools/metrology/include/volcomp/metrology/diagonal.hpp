@@ -1,0 +1,95 @@
+// ISO 230-6 diagonal displacement tests: diagonal names, target positions along a diagonal
+// (§5.2) and the evaluation of E and B per diagonal (§3.4-3.7, §6).
+//
+// Each diagonal is measured like a linear axis of ISO 230-2 whose coordinate is the distance
+// along the diagonal from its start P1 (mm); deviations are in µm. Only the bidirectional
+// systematic positioning error E and the reversal value B are evaluated (§6, §5.3 note):
+//   E_i = max_j max(x̄_j↑, x̄_j↓) − min_j min(x̄_j↑, x̄_j↓),   B_i = max_j |x̄_j↑ − x̄_j↓|;
+//   E_d = max(E_1..E_4), B_d = max(B_1..B_4) over the four body diagonals (§3.4, §3.6);
+//   E_d(ab) = max(E_1(ab), E_2(ab)), B_d(ab) likewise, for the face diagonals of plane ab
+//   (§3.5, §3.7).
+#pragma once
+
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "volcomp/metrology/positioning_data.hpp"
+#include "volcomp/metrology/positioning_eval.hpp"
+#include "volcomp/tools/csv.hpp"
+
+namespace volcomp::metrology {
+
+/// A diagonal named by its start corner (§3.2 note 2, §3.3 note 2).
+/// Accepted forms: body "+X+Y-Z" or "PPN"; face "+X-Y", "+X-Y Z300", "NP" or "NP300" (the N/P
+/// form of a face diagonal means the XY plane; other planes use the signed-axis form, e.g.
+/// "+X-Z Y150" or "-Y+Z").
+struct DiagonalName {
+  std::string text;            // normalized: "+X+Y-Z", "+X-Y Z300"
+  bool body = true;            // body diagonal (3 axes) or face diagonal (2 axes)
+  std::string plane;           // "XY", "XZ" or "YZ" for a face diagonal; empty for a body one
+  std::string offset;          // fixed coordinate of a face diagonal, e.g. "Z300"; may be empty
+  std::array<int, 3> signs{};  // start corner: +1, -1, or 0 (axis not involved), for X, Y, Z
+};
+
+/// Parses a diagonal name; nullopt when it is not one of the accepted forms.
+std::optional<DiagonalName> ParseDiagonalName(const std::string& text);
+
+struct Vec3 {
+  double x = 0.0, y = 0.0, z = 0.0;  // mm
+};
+
+/// Target positions along the diagonal from P1 to P2 with increment I_d (§5.2).
+struct DiagonalPlan {
+  Vec3 p1, p2;
+  double length_mm = 0.0;         // D = |P2 − P1|
+  Vec3 travel_mm;                 // X_v, Y_v, Z_v = P2 − P1
+  int steps = 0;                  // number of increments, round(D / I_d)
+  double increment_mm = 0.0;      // effective I_d = D / steps (the rounded increment)
+  Vec3 axis_increment_mm;         // I_x = (I_d/D)·X_v, I_y, I_z
+  std::vector<double> distances;  // target positions along the diagonal, mm, 0..D
+  std::vector<Vec3> points;       // the same as machine coordinates (P1 + t·(P2 − P1)/D)
+  std::vector<std::string> warnings;
+};
+
+/// Throws std::invalid_argument when P1 = P2 or the increment is not positive. The increment
+/// is rounded so that a whole number of steps spans the diagonal (the standard allows
+/// adjusting I_d for rounding); warns when fewer than 5 targets per metre of diagonal or fewer
+/// than 5 in total result (§5.2). Each point is computed from P1 directly, so no rounding
+/// accumulates along the diagonal (annex A).
+DiagonalPlan PlanDiagonal(const Vec3& p1, const Vec3& p2, double increment_mm);
+
+struct DiagonalResult {
+  DiagonalName name;
+  PositioningResult evaluation;  // ISO 230-2 evaluation along the diagonal
+  double length_mm = 0.0;        // span of the target positions
+  Span E;                        // E_i with the locations of its max and min
+  Extreme B;                     // B_i = max |B_j| and where
+};
+
+struct DiagonalGroupValue {
+  std::string name;    // "body" or the face plane with offset, e.g. "XY" or "XY Z300"
+  double E_d = 0.0;    // max E over the group
+  std::string E_from;  // diagonal giving E_d
+  double B_d = 0.0;    // max B over the group
+  std::string B_from;  // diagonal giving B_d
+  int diagonals = 0;
+};
+
+struct DiagonalEvaluation {
+  std::string source;
+  std::vector<DiagonalResult> diagonals;   // in order of first appearance in the file
+  std::optional<DiagonalGroupValue> body;  // E_d, B_d over the body diagonals
+  std::vector<DiagonalGroupValue> faces;   // E_d(ab), B_d(ab) per plane (and offset)
+  std::vector<std::string> warnings;
+};
+
+/// Reads the long CSV layout of positioning data with an extra `diagonal` column naming the
+/// diagonal of each row (target_mm = distance from the diagonal's start), checks every
+/// diagonal (both directions, ≥ min_approaches per target and direction, same targets in every
+/// run, §5.2 target count) and evaluates it. Throws tools::InputError with the line for a bad
+/// diagonal name or any of the checks of GroupReadings().
+DiagonalEvaluation EvaluateDiagonals(const tools::CsvTable& table, const GroupingOptions& options);
+
+}  // namespace volcomp::metrology

@@ -1,0 +1,114 @@
+// Evaluation of a positioning test per GOST 27843-88 or ISO 230-2:2014.
+//
+// Both standards use the same building blocks per target position P_j and direction:
+//   mean deviation X̄_j (GOST (2); ISO x̄_j),  standard deviation S_j (GOST (5) or the range
+//   method (6) S = W·a_n; ISO s_j, n − 1 divisor),  reversal B_j = X̄_j↑ − X̄_j↓ (GOST (3)).
+// They differ in the coverage factor k: GOST uses X̄ ± 3S and R = 6S, ISO 230-2:2014 uses
+// x̄ ± 2s and R = 4s.
+//
+// GOST 27843-88 parameters (§1.10-1.16, §2.14):
+//   A    = max(X̄_j + 3S_j) − min(X̄_j − 3S_j) over both directions (formula (10));
+//   A↑, A↓ the same over one direction;
+//   R_j↑ = 6S_j↑, R_j↓ = 6S_j↓ (7);  R↑, R↓ their maxima over j (§1.13);
+//   R_j  = max(3S_j↑ + 3S_j↓ + |B_j|, 6S_j↑, 6S_j↓) (8);  R_max = max_j R_j;
+//   R̄    = (Σ_j R_j↑ + Σ_j R_j↓) / 2m (9), m positions;
+//   B̄    = (1/m) Σ_j B_j (§1.15);  B_max = max_j |B_j| (§1.16).
+// ISO 230-2:2014 parameters (k = 2):
+//   E↑ = max x̄↑ − min x̄↑, E↓ likewise;  E = max(x̄↑, x̄↓) − min(x̄↑, x̄↓);
+//   M  = max x̄_j − min x̄_j with x̄_j = (x̄_j↑ + x̄_j↓)/2;
+//   A↑ = max(x̄↑ + 2s↑) − min(x̄↑ − 2s↑), A↓ likewise, A over both directions;
+//   R_j↑ = 4s_j↑;  R_j = max(2s_j↑ + 2s_j↓ + |B_j|, R_j↑, R_j↓);  R↑, R↓, R their maxima;
+//   B = max_j |B_j| (reversal value of the axis), B̄ = (1/m) Σ_j B_j.
+// Every extreme records the position (and direction) where it occurs.
+// Units: deviations and all parameters in µm (linear axis) or arc-seconds (rotary axis).
+#pragma once
+
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "volcomp/metrology/direction.hpp"
+#include "volcomp/metrology/positioning_data.hpp"
+
+namespace volcomp::metrology {
+
+enum class Standard { kGost27843, kIso230_2 };
+/// GOST 27843 formula (5) (sample standard deviation) or formula (6) (range × a_n, n = 5..10).
+/// ISO 230-2 always uses the formula.
+enum class SigmaMethod { kFormula, kRange };
+
+const char* StandardName(Standard s);  // "GOST 27843-88" or "ISO 230-2:2014"
+
+struct EvaluationOptions {
+  Standard standard = Standard::kGost27843;
+  SigmaMethod sigma = SigmaMethod::kFormula;
+};
+
+/// Coverage factor of the standard: 3 (GOST 27843) or 2 (ISO 230-2:2014).
+double CoverageFactor(Standard s);
+
+struct DirectionStats {
+  int n = 0;
+  double mean = 0.0;           // X̄_j
+  double s = 0.0;              // S_j (by the chosen method)
+  double range = 0.0;          // W_j (formula (4))
+  double upper = 0.0;          // X̄_j + k·S_j
+  double lower = 0.0;          // X̄_j − k·S_j
+  double repeatability = 0.0;  // R_j = 2k·S_j
+};
+
+struct PositionStats {
+  std::size_t index = 0;  // 0-based; position number j = index + 1
+  double target = 0.0;    // mm or degrees
+  std::optional<DirectionStats> up;
+  std::optional<DirectionStats> down;
+  // Bidirectional, present when both directions are:
+  std::optional<double> reversal;                     // B_j = X̄_j↑ − X̄_j↓
+  std::optional<double> mean_bidirectional;           // x̄_j = (X̄_j↑ + X̄_j↓)/2
+  std::optional<double> repeatability_bidirectional;  // R_j (GOST (8), ISO R_j)
+};
+
+/// One extreme value and where it occurs.
+struct Extreme {
+  double value = 0.0;
+  std::size_t position = 0;            // index into PositioningResult::positions
+  std::optional<Direction> direction;  // for values of one direction
+};
+
+/// A range parameter max − min with both locations.
+struct Span {
+  double value = 0.0;
+  Extreme max;
+  Extreme min;
+};
+
+struct PositioningResult {
+  Standard standard = Standard::kGost27843;
+  SigmaMethod sigma = SigmaMethod::kFormula;
+  double k = 3.0;
+  AxisKind kind = AxisKind::kLinear;
+  std::vector<PositionStats> positions;
+  bool bidirectional = false;
+
+  std::optional<Span> accuracy_up;               // A↑
+  std::optional<Span> accuracy_down;             // A↓
+  std::optional<Span> accuracy;                  // A (needs both directions)
+  std::optional<Extreme> repeatability_up;       // R↑ = max R_j↑
+  std::optional<Extreme> repeatability_down;     // R↓
+  std::optional<Extreme> repeatability;          // R_max (GOST) / R (ISO) = max R_j
+  std::optional<double> mean_repeatability;      // R̄ (GOST formula (9))
+  std::optional<Extreme> reversal_max;           // B_max (GOST) / B (ISO) = max |B_j| (value ≥ 0)
+  std::optional<double> reversal_mean;           // B̄ (signed mean of B_j)
+  std::optional<Span> systematic_up;             // E↑ (ISO)
+  std::optional<Span> systematic_down;           // E↓ (ISO)
+  std::optional<Span> systematic;                // E (ISO)
+  std::optional<Span> mean_bidirectional_range;  // M (ISO)
+  std::vector<std::string> warnings;
+};
+
+/// Evaluates grouped readings. Throws tools::InputError when the range method is chosen and a
+/// position has a number of approaches outside 5..10 (the a_n table of GOST formula (6)).
+PositioningResult EvaluatePositioning(const PositioningSet& set, const EvaluationOptions& options);
+
+}  // namespace volcomp::metrology

@@ -1,0 +1,99 @@
+// ISO 230-7 synchronous / asynchronous / total error-motion values.
+#include "volcomp/metrology/error_motion.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "volcomp/metrology/polar_fit.hpp"
+
+namespace volcomp::metrology {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+CentreValues About(const ErrorMotion& em, CentreKind kind, double a, double b) {
+  CentreValues v;
+  v.kind = kind;
+  v.a = a;
+  v.b = b;
+  v.synchronous = ValueAbout(em.angle_deg, em.synchronous, a, b);
+  v.inner = ValueAbout(em.angle_deg, em.inner, a, b);
+  v.outer = ValueAbout(em.angle_deg, em.outer, a, b);
+  double lo = 0.0, hi = 0.0;
+  bool first = true;
+  for (const auto& rev : em.total) {
+    for (double r : ResidualsAbout(em.angle_deg, rev, a, b)) {
+      if (first || r < lo) lo = r;
+      if (first || r > hi) hi = r;
+      first = false;
+    }
+  }
+  v.total = hi - lo;
+  return v;
+}
+
+}  // namespace
+
+const char* CentreName(CentreKind kind) {
+  switch (kind) {
+    case CentreKind::kPc:
+      return "PC";
+    case CentreKind::kLsc:
+      return "LSC";
+    case CentreKind::kMz:
+      return "MZ";
+  }
+  return "?";
+}
+
+ErrorMotion AnalyseErrorMotion(const std::vector<double>& angle_deg,
+                               const Revolutions& u,
+                               bool min_zone) {
+  const std::size_t n = angle_deg.size();
+  if (u.empty()) throw std::invalid_argument("error motion needs at least one revolution");
+  if (n < 4) throw std::invalid_argument("error motion needs at least 4 angles per revolution");
+  for (const auto& rev : u) {
+    if (rev.size() != n) throw std::invalid_argument("revolutions of unequal length");
+  }
+  ErrorMotion em;
+  em.angle_deg = angle_deg;
+  em.total = u;
+  em.revolutions = static_cast<int>(u.size());
+  em.synchronous.assign(n, 0.0);
+  em.inner.assign(n, 0.0);
+  em.outer.assign(n, 0.0);
+  for (std::size_t j = 0; j < n; ++j) {
+    double sum = 0.0, lo = u[0][j], hi = u[0][j];
+    for (const auto& rev : u) {
+      sum += rev[j];
+      lo = std::min(lo, rev[j]);
+      hi = std::max(hi, rev[j]);
+    }
+    em.synchronous[j] = sum / static_cast<double>(u.size());
+    em.inner[j] = lo;
+    em.outer[j] = hi;
+    if (j == 0 || hi - lo > em.asynchronous_value) {
+      em.asynchronous_value = hi - lo;
+      em.asynchronous_angle_deg = angle_deg[j];
+    }
+  }
+  const CentreFit lsc = FitLeastSquaresCentre(angle_deg, em.synchronous);
+  em.lsc_mean = lsc.mean;
+  em.pc = About(em, CentreKind::kPc, 0.0, 0.0);
+  em.lsc = About(em, CentreKind::kLsc, lsc.a, lsc.b);
+  if (min_zone) {
+    const CentreFit mz = FitMinimumZoneCentre(angle_deg, em.synchronous);
+    em.mz = About(em, CentreKind::kMz, mz.a, mz.b);
+  }
+  em.fundamental_value = 2.0 * std::hypot(lsc.a, lsc.b);
+  em.fundamental_angle_deg = std::atan2(lsc.b, lsc.a) * 180.0 / kPi;
+  return em;
+}
+
+const CentreValues& ValuesAbout(const ErrorMotion& em, CentreKind kind) {
+  if (kind == CentreKind::kMz && em.mz) return *em.mz;
+  return kind == CentreKind::kPc ? em.pc : em.lsc;
+}
+
+}  // namespace volcomp::metrology

@@ -1,0 +1,203 @@
+// Positioning CSV reader: long and wide layouts.
+#include "volcomp/metrology/positioning_csv.hpp"
+
+#include <cmath>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace volcomp::metrology {
+namespace {
+
+using tools::CsvRow;
+using tools::CsvTable;
+using tools::InputError;
+
+// How a measurement column converts to the internal deviation unit.
+struct MeasurementColumn {
+  const char* name;
+  AxisKind kind;
+  double scale;   // value·scale = deviation (µm or arc-seconds)
+  bool absolute;  // value is the measured position, not the deviation
+};
+
+constexpr MeasurementColumn kMeasurementColumns[] = {
+    {"deviation_um", AxisKind::kLinear, 1.0, false},
+    {"deviation_mm", AxisKind::kLinear, 1000.0, false},
+    {"measured_mm", AxisKind::kLinear, 1000.0, true},
+    {"deviation_arcsec", AxisKind::kRotary, 1.0, false},
+    {"deviation_deg", AxisKind::kRotary, 3600.0, false},
+    {"measured_deg", AxisKind::kRotary, 3600.0, true},
+};
+
+const MeasurementColumn* FindMeasurement(const std::string& name) {
+  for (const auto& m : kMeasurementColumns) {
+    if (name == m.name) return &m;
+  }
+  return nullptr;
+}
+
+std::string MeasurementNames() {
+  std::string s;
+  for (const auto& m : kMeasurementColumns) s += (s.empty() ? "" : ", ") + std::string(m.name);
+  return s;
+}
+
+double ToDeviation(const MeasurementColumn& m, double value, double target) {
+  if (!m.absolute) return value * m.scale;
+  double diff = value - target;
+  if (m.kind == AxisKind::kRotary) {
+    diff = std::remainder(diff, 360.0);  // into [-180, 180]
+    if (diff == -180.0) diff = 180.0;
+  }
+  return diff * m.scale;
+}
+
+int ParseRun(const CsvTable& t,
+             const CsvRow& row,
+             const std::string& text,
+             const std::string& column) {
+  const auto v = tools::ParseInteger(text);
+  if (!v || *v < 1 || *v > 1000000) {
+    throw t.error(row.line(), "column \"" + column + "\": run index \"" + text +
+                                  "\" is not a positive integer");
+  }
+  return static_cast<int>(*v);
+}
+
+PositioningData ReadLong(const CsvTable& t) {
+  PositioningData d;
+  d.source = t.source();
+  const bool lin = t.find("target_mm").has_value();
+  const bool rot = t.find("target_deg").has_value();
+  if (lin && rot) {
+    throw t.error(t.header_line(), "both \"target_mm\" and \"target_deg\" columns; give one");
+  }
+  const std::string target_col = lin ? "target_mm" : "target_deg";
+  d.kind = lin ? AxisKind::kLinear : AxisKind::kRotary;
+  t.require("direction");
+  t.require("run");
+  const MeasurementColumn* meas = nullptr;
+  for (const auto& name : t.header()) {
+    const MeasurementColumn* m = FindMeasurement(name);
+    if (!m) continue;
+    if (meas) {
+      throw t.error(t.header_line(), "two measurement columns \"" + std::string(meas->name) +
+                                         "\" and \"" + name + "\"; give exactly one");
+    }
+    meas = m;
+  }
+  if (!meas) {
+    throw t.error(t.header_line(),
+                  "missing measurement column (one of " + MeasurementNames() + ")");
+  }
+  if (meas->kind != d.kind) {
+    throw t.error(t.header_line(),
+                  "column \"" + std::string(meas->name) + "\" does not fit \"" + target_col +
+                      "\" (" + (d.kind == AxisKind::kLinear ? "linear" : "rotary") + " axis)");
+  }
+  for (const CsvRow& row : t.rows()) {
+    PositioningReading r;
+    r.line = row.line();
+    r.target = row.number(target_col);
+    const auto dir = ParseDirection(row.text("direction"));
+    if (!dir) {
+      throw t.error(row.line(), "column \"direction\": \"" + row.text("direction") +
+                                    "\" is not a direction (use +, -, up or down)");
+    }
+    r.direction = *dir;
+    r.run = ParseRun(t, row, row.text("run"), "run");
+    r.deviation = ToDeviation(*meas, row.number(meas->name), r.target);
+    d.readings.push_back(r);
+  }
+  if (d.readings.empty()) throw t.error(t.header_line(), "no data rows after the header");
+  return d;
+}
+
+// "3+", "3-", "3up", "3down", "3↑", "3↓" -> (3, direction).
+std::optional<std::pair<long long, Direction>> ParseWideColumn(const std::string& name) {
+  std::size_t i = 0;
+  while (i < name.size() && name[i] >= '0' && name[i] <= '9') ++i;
+  if (i == 0 || i == name.size()) return std::nullopt;
+  const auto j = tools::ParseInteger(name.substr(0, i));
+  const auto dir = ParseDirection(name.substr(i));
+  if (!j || !dir) return std::nullopt;
+  return std::make_pair(*j, *dir);
+}
+
+PositioningData ReadWide(const CsvTable& t, const MeasurementColumn& meas) {
+  PositioningData d;
+  d.source = t.source();
+  d.kind = meas.kind;
+  const auto& header = t.header();
+  std::vector<std::pair<long long, Direction>> cols;
+  for (std::size_t c = 1; c < header.size(); ++c) {
+    const auto jd = ParseWideColumn(header[c]);
+    if (!jd) {
+      throw t.error(t.header_line(), "column \"" + header[c] +
+                                         "\" is not a position and direction such as \"3+\" "
+                                         "or \"3-\"");
+    }
+    cols.push_back(*jd);
+  }
+  if (cols.empty())
+    throw t.error(t.header_line(), "no position columns after \"" + header[0] + "\"");
+  if (t.rows().empty()) throw t.error(t.header_line(), "no target row after the header");
+  const CsvRow& target_row = t.rows().front();
+  const std::string target_label = meas.kind == AxisKind::kLinear ? "target_mm" : "target_deg";
+  if (target_row.text(0) != target_label) {
+    throw t.error(target_row.line(), "expected the row \"" + target_label +
+                                         "\" with the target positions, found \"" +
+                                         target_row.text(0) + "\"");
+  }
+  std::vector<double> targets;
+  std::map<long long, std::pair<double, std::size_t>> target_of_j;  // j -> (target, column)
+  for (std::size_t c = 1; c < header.size(); ++c) {
+    const double p = target_row.number(c);
+    targets.push_back(p);
+    const long long j = cols[c - 1].first;
+    const auto it = target_of_j.find(j);
+    if (it != target_of_j.end() && it->second.first != p) {
+      throw t.error(target_row.line(), "position " + std::to_string(j) + " has target " +
+                                           target_row.text(c) + " in column \"" + header[c] +
+                                           "\" but " + target_row.text(it->second.second) +
+                                           " in column \"" + header[it->second.second] + "\"");
+    }
+    target_of_j.emplace(j, std::make_pair(p, c));
+  }
+  for (std::size_t k = 1; k < t.rows().size(); ++k) {
+    const CsvRow& row = t.rows()[k];
+    const int run = ParseRun(t, row, row.text(0), header[0]);
+    for (std::size_t c = 1; c < header.size(); ++c) {
+      if (row.text(c).empty()) continue;  // missing reading
+      PositioningReading r;
+      r.line = row.line();
+      r.target = targets[c - 1];
+      r.direction = cols[c - 1].second;
+      r.run = run;
+      r.deviation = ToDeviation(meas, row.number(c), r.target);
+      d.readings.push_back(r);
+    }
+  }
+  if (d.readings.empty()) throw t.error(target_row.line(), "no readings after the target row");
+  return d;
+}
+
+}  // namespace
+
+PositioningData ReadPositioningCsv(const CsvTable& table) {
+  const auto& header = table.header();
+  if (const MeasurementColumn* m = FindMeasurement(header.front())) {
+    if (header.size() > 1 && ParseWideColumn(header[1])) return ReadWide(table, *m);
+  }
+  if (!table.find("target_mm") && !table.find("target_deg")) {
+    throw table.error(table.header_line(),
+                      "unrecognised header: expected the long layout (target_mm or target_deg, "
+                      "direction, run and a measurement column) or the wide layout (first cell a "
+                      "measurement column such as deviation_um, then columns like 1+,1-,2+,...)");
+  }
+  return ReadLong(table);
+}
+
+}  // namespace volcomp::metrology

@@ -1,0 +1,227 @@
+// ISO 230-7 profile construction and evaluation.
+#include "volcomp/metrology/rotary_eval.hpp"
+
+#include <cmath>
+#include <complex>
+#include <sstream>
+#include <stdexcept>
+
+#include "volcomp/metrology/polar_fit.hpp"
+#include "volcomp/tools/csv.hpp"
+
+namespace volcomp::metrology {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+double Rad(double deg) { return deg * kPi / 180.0; }
+
+std::string Num(double v) {
+  std::ostringstream s;
+  s.precision(10);
+  s << v;
+  return s.str();
+}
+
+const Revolutions* Channel(const RotaryRecord& r, const std::string& name) {
+  const auto it = r.channels.find(name);
+  return it == r.channels.end() ? nullptr : &it->second;
+}
+
+// u[k][j] = fx(θ_j)·X[k][j] + fy(θ_j)·Y[k][j] (either channel may be absent when its factor is 0).
+template <typename Fx, typename Fy>
+Revolutions Combine(
+    const RotaryRecord& rec, const Revolutions* x, const Revolutions* y, Fx fx, Fy fy) {
+  const std::size_t k_n = rec.revs.size(), n = rec.angle_deg.size();
+  Revolutions u(k_n, std::vector<double>(n, 0.0));
+  for (std::size_t k = 0; k < k_n; ++k) {
+    for (std::size_t j = 0; j < n; ++j) {
+      const double th = rec.angle_deg[j];
+      if (x) u[k][j] += fx(th) * (*x)[k][j];
+      if (y) u[k][j] += fy(th) * (*y)[k][j];
+    }
+  }
+  return u;
+}
+
+Revolutions Difference(const Revolutions& a, const Revolutions& b, double scale) {
+  Revolutions d = a;
+  for (std::size_t k = 0; k < d.size(); ++k) {
+    for (std::size_t j = 0; j < d[k].size(); ++j) d[k][j] = (a[k][j] - b[k][j]) * scale;
+  }
+  return d;
+}
+
+tools::InputError Error(const RotaryRecord& r, const std::string& msg) {
+  return tools::InputError(r.source + ": " + msg);
+}
+
+}  // namespace
+
+RotaryEvaluation EvaluateRotary(const RotaryRecord& rec, const RotaryOptions& o) {
+  RotaryEvaluation ev;
+  ev.source = rec.source;
+  ev.revolutions = static_cast<int>(rec.revs.size());
+  ev.samples_per_revolution = static_cast<int>(rec.angle_deg.size());
+  ev.options = o;
+  const bool rsd = o.sensitive == SensitiveDirection::kRotating;
+  const double cf = std::cos(Rad(o.fsd_angle_deg)), sf = std::sin(Rad(o.fsd_angle_deg));
+  const bool need_x = rsd || std::fabs(cf) > 1e-12;
+  const bool need_y = rsd || std::fabs(sf) > 1e-12;
+  auto add = [&](std::string name, std::string key, std::string unit, std::string profile,
+                 CentreKind preferred, bool fundamental, const Revolutions& u) {
+    RotaryMeasurement m;
+    m.name = std::move(name);
+    m.key = std::move(key);
+    m.unit = std::move(unit);
+    m.profile = std::move(profile);
+    m.preferred = preferred;
+    m.report_fundamental = fundamental;
+    m.motion = AnalyseErrorMotion(rec.angle_deg, u, o.min_zone);
+    ev.measurements.push_back(std::move(m));
+  };
+  auto radial_profile = [&](const Revolutions* x, const Revolutions* y) {
+    if (rsd) {
+      return Combine(
+          rec, x, y, [](double th) { return std::cos(Rad(th)); },
+          [](double th) { return std::sin(Rad(th)); });
+    }
+    return Combine(
+        rec, need_x ? x : nullptr, need_y ? y : nullptr, [cf](double) { return cf; },
+        [sf](double) { return sf; });
+  };
+  const std::string mode =
+      rsd ? "rotating sensitive direction, u = ΔX·cos θ + ΔY·sin θ (ISO 230-7 formula (1))"
+          : "fixed sensitive direction at θ_f = " + Num(o.fsd_angle_deg) +
+                "°, u = ΔX·cos θ_f + ΔY·sin θ_f (formulas (3), (4))";
+
+  const Revolutions* x = Channel(rec, "x_um");
+  const Revolutions* y = Channel(rec, "y_um");
+  const Revolutions* x2 = Channel(rec, "x2_um");
+  const Revolutions* y2 = Channel(rec, "y2_um");
+  const Revolutions* z = Channel(rec, "z_um");
+  const Revolutions* face = Channel(rec, "face_um");
+  const bool radial1 = x || y;
+  const bool radial2 = x2 || y2;
+  auto check_plane = [&](const Revolutions* px, const Revolutions* py, const char* xn,
+                         const char* yn) {
+    if (need_x && !px) {
+      throw Error(rec, std::string(rsd ? "a rotating sensitive direction" : "this θ_f") +
+                           " needs column " + xn);
+    }
+    if (need_y && !py) {
+      throw Error(rec, std::string(rsd ? "a rotating sensitive direction" : "this θ_f") +
+                           " needs column " + yn);
+    }
+  };
+  if (radial1) {
+    check_plane(x, y, "x_um", "y_um");
+    add("radial", "radial", "µm", mode, CentreKind::kLsc, false, radial_profile(x, y));
+  }
+  if (radial2) {
+    if (!radial1) throw Error(rec, "x2_um/y2_um (second plane) need x_um/y_um (first plane)");
+    check_plane(x2, y2, "x2_um", "y2_um");
+    add("radial, plane 2", "radial_plane2", "µm", mode, CentreKind::kLsc, false,
+        radial_profile(x2, y2));
+    if (!o.tilt_distance_mm) {
+      ev.warnings.push_back(
+          "x2_um/y2_um are present but no tilt distance was given "
+          "(--tilt-distance-mm L): tilt is not evaluated");
+    }
+  }
+  if (radial2 && o.tilt_distance_mm) {
+    if (!(*o.tilt_distance_mm > 0.0)) throw Error(rec, "the tilt distance must be positive");
+    // µm / mm = mrad; ×1000 gives µrad.
+    const double k = 1000.0 / *o.tilt_distance_mm;
+    const Revolutions dx = need_x ? Difference(*x2, *x, k) : Revolutions();
+    const Revolutions dy = need_y ? Difference(*y2, *y, k) : Revolutions();
+    add("tilt", "tilt", "µrad",
+        "(plane 2 − plane 1)/L with L = " + Num(*o.tilt_distance_mm) +
+            " mm, combined as the radial profile (A.6; §5.3.3 method 2; formula (5) for a fixed "
+            "direction)",
+        CentreKind::kLsc, false, radial_profile(need_x ? &dx : nullptr, need_y ? &dy : nullptr));
+  }
+  if (z) {
+    add("axial", "axial", "µm", "u = Δz (§5.3.4, §5.4.4, §6.2)", CentreKind::kPc, true, *z);
+  }
+  if (face) {
+    add("face", "face", "µm",
+        "face channel" +
+            (o.face_radius_mm ? " at R = " + Num(*o.face_radius_mm) + " mm" : std::string()) +
+            " (§3.4.5)",
+        CentreKind::kPc, true, *face);
+  }
+  if (z && face && o.face_radius_mm) {
+    if (!(*o.face_radius_mm > 0.0)) throw Error(rec, "the face radius must be positive");
+    add("tilt from axial and face", "tilt_axial_face", "µrad",
+        "(Δz − face)/R with R = " + Num(*o.face_radius_mm) + " mm (A.5)", CentreKind::kLsc, false,
+        Difference(*z, *face, 1000.0 / *o.face_radius_mm));
+  }
+  if (ev.measurements.empty()) throw Error(rec, "no channel to evaluate");
+
+  if (x && y) {
+    // Synchronous ΔX, ΔY, then the positive and negative fundamentals of ΔX + iΔY.
+    const std::size_t n = rec.angle_deg.size();
+    const double kk = static_cast<double>(rec.revs.size());
+    std::complex<double> cp(0, 0), cm(0, 0);
+    for (std::size_t j = 0; j < n; ++j) {
+      double sx = 0.0, sy = 0.0;
+      for (std::size_t k = 0; k < rec.revs.size(); ++k) {
+        sx += (*x)[k][j];
+        sy += (*y)[k][j];
+      }
+      const std::complex<double> zj(sx / kk, sy / kk);
+      const double th = Rad(rec.angle_deg[j]);
+      cp += zj * std::polar(1.0, -th);
+      cm += zj * std::polar(1.0, th);
+    }
+    cp /= static_cast<double>(n);
+    cm /= static_cast<double>(n);
+    ev.radial_fundamentals = RadialFundamentals{std::abs(cp), std::arg(cp) * 180.0 / kPi,
+                                                std::abs(cm), std::arg(cm) * 180.0 / kPi};
+  }
+
+  if (!rec.equally_spaced) {
+    ev.warnings.push_back(
+        "angles are not equally spaced: LSC centres are fitted by least squares; "
+        "the c₊/c₋ fundamentals assume equal spacing");
+  }
+  if (ev.revolutions < 2) {
+    ev.warnings.push_back("one revolution only: asynchronous error motion cannot be evaluated");
+  }
+  if (ev.samples_per_revolution < 8) {
+    ev.warnings.push_back(
+        "fewer than 8 angles per revolution (ISO 230-7 annex E asks at least 8 "
+        "for a static test)");
+  }
+  return ev;
+}
+
+ReversalResult DonaldsonReversal(const std::vector<double>& angle_deg,
+                                 const std::vector<double>& t1,
+                                 const std::vector<double>& t2,
+                                 ReversalProcedure procedure) {
+  if (t1.size() != angle_deg.size() || t2.size() != angle_deg.size()) {
+    throw std::invalid_argument("reversal records must have the same angles");
+  }
+  ReversalResult r;
+  r.angle_deg = angle_deg;
+  r.artefact.resize(t1.size());
+  r.spindle.resize(t1.size());
+  for (std::size_t j = 0; j < t1.size(); ++j) {
+    if (procedure == ReversalProcedure::kP) {
+      r.artefact[j] = 0.5 * (t1[j] + t2[j]);  // (B.3)
+      r.spindle[j] = 0.5 * (t1[j] - t2[j]);
+    } else {
+      r.spindle[j] = 0.5 * (t1[j] + t2[j]);  // (B.5)
+      r.artefact[j] = 0.5 * (t1[j] - t2[j]);
+    }
+  }
+  r.artefact_lsc = FitLeastSquaresCentre(angle_deg, r.artefact);
+  r.spindle_lsc = FitLeastSquaresCentre(angle_deg, r.spindle);
+  r.artefact_value = ValueAbout(angle_deg, r.artefact, r.artefact_lsc.a, r.artefact_lsc.b);
+  r.spindle_value = ValueAbout(angle_deg, r.spindle, r.spindle_lsc.a, r.spindle_lsc.b);
+  return r;
+}
+
+}  // namespace volcomp::metrology

@@ -1,0 +1,30 @@
+// Builder results (mm, µm) → image sections (steps) for volcomp::image::BuildImage.
+#pragma once
+
+#include <vector>
+
+#include "volcomp/image/image_builder.hpp"
+#include "volcomp/model/axis1d.hpp"
+#include "volcomp/model/grid.hpp"
+
+namespace volcomp::model {
+
+/// The GRID3 of a correction grid for image axes `axes` (component/dimension c ↔ axes[c], linear,
+/// mm). Origin and spacing must be whole steps (MakeGridSpec guarantees it); corrections are
+/// converted to steps of their component's axis. Throws tools::InputError otherwise.
+image::GridCorrections ToGridCorrections(const CorrectionGrid& grid,
+                                         const std::vector<image::AxisDef>& axes);
+
+/// The AXIS1D of a 1-D table for image axis `axis_index` (positions mm or deg, corrections µm or
+/// arcsec). `wrap`: rotary wrap-around, the table must span exactly 360°.
+image::AxisCorrections ToAxisCorrections(const Axis1dTable& table,
+                                         uint8_t axis_index,
+                                         const image::AxisDef& axis,
+                                         bool rotary,
+                                         bool wrap);
+
+/// Length of the least significant bit of an element with `frac_bits` for an axis, in µm (or
+/// arcsec for rotary axes): 2^-frac_bits steps.
+double LsbUm(const image::AxisDef& axis, uint8_t frac_bits);
+
+}  // namespace volcomp::model
