@@ -1,13 +1,17 @@
 #!/usr/bin/env bash
 # Installs the Debian packages volcomp needs (idempotent). Usage: scripts/setup-deps.sh [GROUP...]
 #   build   compiler, CMake, Ninja, GoogleTest, Google Benchmark (default)
-# Later groups (CAN, cross toolchain, emulators) are added here as the project grows.
+#   arm     Cortex-M4F cross toolchain (GCC 12, newlib/picolibc, binutils) and QEMU (mps2-an386)
+#   can     CAN test peers: Debian's python3-can (the independent SDO client), can-utils
+#           (candump), user-mode-linux + kmod (real SocketCAN in a UML kernel)
 # Installs only what is missing; needs root or sudo for that, and stops with a clear message
 # otherwise.
 set -euo pipefail
 
 declare -A GROUPS_PKGS=(
   [build]="g++ cmake ninja-build libgtest-dev libgmock-dev libbenchmark-dev"
+  [can]="python3-can can-utils user-mode-linux kmod"
+  [arm]="gcc-arm-none-eabi binutils-arm-none-eabi libnewlib-arm-none-eabi libstdc++-arm-none-eabi-newlib qemu-system-arm python3"
 )
 
 groups=("$@")

@@ -1,29 +1,39 @@
 #!/usr/bin/env bash
 # Builds everything and runs every test (README Quick start, command 2; also what CI runs).
-#   scripts/test.sh            release build + tests, then an ASan/UBSan build + tests
-#   scripts/test.sh --fast     release build + tests only
+#   scripts/test.sh            release build + tests, Cortex-M4F build + QEMU tests + cycle
+#                              budgets, then an ASan/UBSan build + tests
+#   scripts/test.sh --fast     release and Cortex-M4F builds + tests only
 # Long versions of the randomized tests: VOLCOMP_ENGINE_STEPS=100000000 scripts/test.sh --fast
 set -euo pipefail
 cd "$(dirname "$0")/.."
 fast=0
 [[ "${1:-}" == "--fast" ]] && fast=1
 
-scripts/setup-deps.sh build
+scripts/setup-deps.sh build can
 jobs=$(nproc 2>/dev/null || echo 2)
 
 run_preset() {
   local preset=$1
+  shift
   echo "== configure + build: $preset" >&2
   cmake --preset "$preset" >/dev/null
   cmake --build --preset "$preset" -j "$jobs"
   echo "== test: $preset" >&2
-  ctest --preset "$preset" -j "$jobs"
+  ctest --preset "$preset" -j "$jobs" "$@"
 }
 
 run_preset host
 echo "== benchmarks (figures only, not pass/fail)" >&2
 build/host/tests/bench/core_bench --benchmark_min_time=0.05 2>/dev/null | tail -n +4 || true
+# Cortex-M4F (docs/mcu-target.md): STM32G474 image, lib tests on QEMU mps2-an386, cycle budgets.
+scripts/setup-deps.sh arm
+run_preset arm-m4f
+toolchain/size-report.sh build/arm-m4f/firmware/stm32g4/volcomp_stm32g474.elf >&2
+echo "== Cortex-M4 cycle table (toolchain/cyclemodel/cm4cost.py)" >&2
+cat build/arm-m4f/tests/target/cycle_budgets.md >&2
 if [[ $fast -eq 0 ]]; then
-  run_preset host-asan
+  # Tests that start other processes (python3-can, user-mode-linux) run once, in the release
+  # build; the sanitizer build runs everything in-process.
+  run_preset host-asan -LE external
 fi
 echo "== all tests passed" >&2

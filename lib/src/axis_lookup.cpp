@@ -9,7 +9,7 @@ Status AxisLookup::Init(const table::Axis1dView& view) {
   forward_ = view.forward;
   reverse_ = view.reverse != nullptr ? view.reverse : view.forward;
   backlash_q8_ = view.backlash_q8;
-  shift_ = 30u + view.frac_bits - table::kCorrectionFracBits;
+  frac_bits_ = view.frac_bits;
   period_steps_ = view.period_steps;
   origin_steps_ = view.dim.origin_steps;
   axis_ = view.axis;

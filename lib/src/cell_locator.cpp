@@ -16,4 +16,12 @@ void CellLocator::Init(const table::Dimension& dim) {
       static_cast<uint32_t>((1ull << 62) / (static_cast<uint64_t>(spacing_) << norm_shift_));
 }
 
+void LatticeLocator::Init(const table::Dimension& dim) {
+  lo_ = dim.origin_steps;
+  span_ = static_cast<uint32_t>(static_cast<uint64_t>(dim.nodes - 1u) * dim.spacing_steps);
+  const uint64_t recip = ~uint64_t{0} / dim.spacing_steps;
+  recip_lo_ = static_cast<uint32_t>(recip);
+  recip_hi_ = static_cast<uint32_t>(recip >> 32);
+}
+
 }  // namespace volcomp

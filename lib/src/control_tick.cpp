@@ -18,17 +18,21 @@ Status ControlTick::Configure(const BoardConfig& config) {
   }
   config_ = config;
   axis_count_ = config.axis_count;
+  idle_ticks_ = 0xFFFFFFFFu;
+  overruns_ = 0;
   ticks_ = 0;
   compensator_.SetReferenced(false);
   return Status::Ok();
 }
 
 void ControlTick::Run(const uint32_t* input_counters, PulsePlan* plans) {
+  bool moved = false;
   for (uint8_t a = 0; a < axis_count_; ++a) {
     const uint32_t raw = input_counters[a];
     // Sign-extend the counter difference from the counter width (16 or 32 bits).
     const uint32_t diff = (raw - last_counter_[a]) << counter_shift_[a];
     last_counter_[a] = raw;
+    moved = moved || diff != 0;
     commanded_[a] = static_cast<int32_t>(
         static_cast<uint32_t>(commanded_[a]) +
         static_cast<uint32_t>(static_cast<int32_t>(diff) >> counter_shift_[a]));
@@ -43,7 +47,9 @@ void ControlTick::Run(const uint32_t* input_counters, PulsePlan* plans) {
     const int32_t owed = generator_[a].backlog(target_[a]);
     const uint32_t mag = static_cast<uint32_t>(owed < 0 ? -static_cast<int64_t>(owed) : owed);
     max_backlog_[a] = mag > max_backlog_[a] ? mag : max_backlog_[a];
+    overruns_ += mag > generator_[a].max_pulses_per_tick() ? 1u : 0u;
   }
+  idle_ticks_ = moved ? 0u : idle_ticks_ + (idle_ticks_ != 0xFFFFFFFFu ? 1u : 0u);
   ++ticks_;
 }
 

@@ -1,6 +1,7 @@
 // The board application on the mock HAL: stored table at boot, referencing by home switches,
 // fault handling, refused images leave the active table untouched, recorded output timeline.
 #include "volcomp/firmware/board_app.hpp"
+#include "volcomp/firmware/table_store.hpp"
 
 #include <gtest/gtest.h>
 
@@ -36,12 +37,16 @@ class BoardAppTest : public ::testing::Test {
         step_io_(config_, &timeline_),
         app_({&step_io_, &io_, &flash_}) {}
 
+  // Stores `img` as the active table, as a completed upload and activation would.
   void Store(const testing::AlignedBytes& img) {
-    for (uint32_t s = 0; s < flash_.size(); s += flash_.sector_size())
-      ASSERT_TRUE(flash_.Erase(s).ok());
-    std::vector<uint8_t> padded(img.data(), img.data() + img.size());
-    padded.resize((padded.size() + 7) / 8 * 8, 0xFF);
-    ASSERT_TRUE(flash_.Program(0, padded.data(), static_cast<uint32_t>(padded.size())).ok());
+    firmware::TableStore store;
+    ASSERT_TRUE(store.Init(&flash_, flash_.size() / 2).ok());
+    store.MountActive(config_).status().IgnoreError();
+    ASSERT_TRUE(store.BeginUpload(static_cast<uint32_t>(img.size())).ok());
+    ASSERT_TRUE(store.UploadData(img.data(), static_cast<uint32_t>(img.size())).ok());
+    ASSERT_TRUE(store.FinishUpload(true).ok());
+    ASSERT_TRUE(store.Verify(config_).ok());
+    ASSERT_TRUE(store.Activate().ok());
   }
   // Runs `n` ticks of 20 us with a Poll() every 50 ticks.
   void Run(int n) {
@@ -70,7 +75,7 @@ class BoardAppTest : public ::testing::Test {
 
 TEST_F(BoardAppTest, EmptyFlashRunsPassThrough) {
   ASSERT_TRUE(app_.Start(config_).ok());
-  EXPECT_EQ(app_.stored_table_status().error(), Error::kImageBadMagic);
+  EXPECT_EQ(app_.stored_table_status().error(), Error::kNotFound);
   io_.SetInput(InputLine::kEnable, true);
   Home();
   step_io_.add_steps(0, 1234);
@@ -84,6 +89,7 @@ TEST_F(BoardAppTest, StoredTableEngagesAfterHomingAndTimelineShowsIt) {
   Store(UniformImage(5, -3, 2, 77));
   ASSERT_TRUE(app_.Start(config_).ok());
   ASSERT_TRUE(app_.stored_table_status().ok()) << app_.stored_table_status().name();
+  Run(1);  // the table is handed to the data path at the next tick
   EXPECT_EQ(app_.engine().compensator().table_id(), 77u);
   io_.SetInput(InputLine::kEnable, true);
   step_io_.add_steps(1, 500);

@@ -23,6 +23,15 @@ const std::vector<Command>& Commands();
 int RunBuildGrid(Args& args);
 int RunInspect(Args& args);
 int RunLookup(Args& args);
+int RunUpload(Args& args);
+int RunVerify(Args& args);
+int RunActivate(Args& args);
+int RunDeactivate(Args& args);
+int RunReference(Args& args);
+int RunStatus(Args& args);
+int RunMonitor(Args& args);
+int RunSdo(Args& args);
+int RunEds(Args& args);
 // Metrology (issue 4): cmd_evaluate_*.cpp, cmd_program.cpp.
 int RunEvaluatePositioning(Args& args);
 int RunEvaluateDiagonal(Args& args);

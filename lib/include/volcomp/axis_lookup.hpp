@@ -7,6 +7,7 @@
 #pragma once
 
 #include <cstdint>
+#include <type_traits>
 
 #include "volcomp/cell_locator.hpp"
 #include "volcomp/interp_arith.hpp"
@@ -40,22 +41,30 @@ class AxisLookup {
   int32_t origin_steps() const { return origin_steps_; }
 
  private:
+  // Linear interpolation between the two nodes of the cell: weights (~frac) >> 1 and frac >> 1
+  // (Q1.31, the x level of interp_arith.hpp), or the same in float for float32 tables.
   template <class Loader>
   int32_t Interpolate(const uint8_t* values, int32_t pos_steps) const {
-    using A = typename Loader::Arith;
-    const CellPosition c = loc_.Locate(pos_steps);
-    const typename A::Weight w1 = A::FromQ30(c.t_q30), w0 = A::One() - w1;
+    const LatticeCell c = loc_.Locate(pos_steps);
     const uint8_t* p = values + c.cell * Loader::kSize;
-    typename A::Acc acc = A::Mac(A::Zero(), w0, Loader::Load(p));
-    acc = A::Mac(acc, w1, Loader::Load(p + Loader::kSize));
-    return A::ToQ8(acc, shift_);
+    typename Loader::Acc acc = Loader::Zero();
+    if constexpr (std::is_floating_point_v<typename Loader::Value>) {
+      const float t = static_cast<float>(c.frac_q32) * (1.0f / 4294967296.0f);
+      acc = Loader::Mac(acc, 1.0f - t, Loader::Load(p));
+      acc = Loader::Mac(acc, t, Loader::Load(p + Loader::kSize));
+    } else {
+      acc = Loader::Mac(acc, static_cast<int32_t>(~c.frac_q32 >> 1), Loader::Load(p));
+      acc =
+          Loader::Mac(acc, static_cast<int32_t>(c.frac_q32 >> 1), Loader::Load(p + Loader::kSize));
+    }
+    return Loader::ToQ8(acc, frac_bits_);
   }
 
-  CellLocator loc_;
+  LatticeLocator loc_;
   const uint8_t* forward_ = nullptr;
   const uint8_t* reverse_ = nullptr;  // == forward_ when the table has no reverse part
   int32_t backlash_q8_ = 0;
-  uint32_t shift_ = 22;
+  uint32_t frac_bits_ = 0;
   uint32_t period_steps_ = 0;
   int32_t origin_steps_ = 0;
   uint8_t axis_ = 0;

@@ -53,4 +53,44 @@ class CellLocator {
   uint32_t norm_shift_ = 0;  // spacing << norm_shift in (2^30, 2^31]
 };
 
+/// The hot-path locator: position -> (cell, fraction as Q0.32), one 32x64-bit multiply.
+///
+/// Init() precomputes recip = floor((2^64 - 1) / spacing) (64 bits, at activation). Locate()
+/// clamps u = pos - origin to [0, span] (span = (nodes-1)*spacing) and forms the 64-bit cell
+/// coordinate X = floor(u * recip / 2^32) = cell * 2^32 + frac. Because recip < 2^64 / spacing,
+/// X is always slightly below the exact u * 2^32 / spacing (by less than 2 units of 2^-32 cells):
+///   * off the nodes the cell is exact and frac is within 2 * 2^-32 of the exact fraction;
+///   * on a node (u = m * spacing, m >= 1) the result is cell m - 1 with frac = 2^32 - 1 or
+///     2^32 - 2, i.e. the end of the previous cell; the interpolated value is the same to within
+///     2^-31 of a corner difference, and the last node needs no special case (cell <= nodes - 2
+///     for every u <= span, proved by X < u * 2^32 / spacing <= (nodes - 1) * 2^32).
+/// So the fraction never reaches 1.0 and fits in 32 bits. Cost on a Cortex-M4: clamp (5-7
+/// instructions) + UMULL + UMLAL; no division, no data-dependent branch.
+struct LatticeCell {
+  uint32_t cell = 0;      // 0..nodes-2
+  uint32_t frac_q32 = 0;  // [0, 2^32)
+};
+
+class LatticeLocator {
+ public:
+  /// `dim` must have passed table validation (nodes >= 2, spacing >= 1, extent within int32).
+  void Init(const table::Dimension& dim);
+
+  LatticeCell Locate(int32_t pos_steps) const {
+    uint32_t u = static_cast<uint32_t>(pos_steps) - static_cast<uint32_t>(lo_);
+    u = pos_steps < lo_ ? 0u : u;
+    u = u > span_ ? span_ : u;
+    const uint64_t x =
+        ((static_cast<uint64_t>(u) * recip_lo_) >> 32) + static_cast<uint64_t>(u) * recip_hi_;
+    return LatticeCell{static_cast<uint32_t>(x >> 32), static_cast<uint32_t>(x)};
+  }
+
+ private:
+  // Field order is the load order of the hot path (one LDM).
+  int32_t lo_ = 0;
+  uint32_t span_ = 0;
+  uint32_t recip_lo_ = 0;  // low word of floor((2^64 - 1) / spacing)
+  uint32_t recip_hi_ = 0;  // high word
+};
+
 }  // namespace volcomp

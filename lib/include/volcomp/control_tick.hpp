@@ -58,6 +58,10 @@ class ControlTick {
   /// Largest |backlog| seen since Configure(), per axis.
   uint32_t max_backlog(uint8_t a) const { return max_backlog_[a]; }
   uint64_t ticks() const { return ticks_; }
+  /// Ticks since an input step was last counted on any axis (saturates).
+  uint32_t idle_ticks() const { return idle_ticks_; }
+  /// Ticks whose owed steps exceeded one tick's pulse capacity (the latency bound was at risk).
+  uint32_t overruns() const { return overruns_; }
   const StepGenerator& generator(uint8_t a) const { return generator_[a]; }
 
  private:
@@ -75,6 +79,8 @@ class ControlTick {
   int32_t target_[table::kMaxAxes] = {};
   uint32_t max_backlog_[table::kMaxAxes] = {};
   uint64_t ticks_ = 0;
+  uint32_t idle_ticks_ = 0xFFFFFFFFu;
+  uint32_t overruns_ = 0;
 };
 
 }  // namespace volcomp

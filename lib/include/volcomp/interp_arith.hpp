@@ -1,82 +1,138 @@
-// Arithmetic policies of the interpolators: one template, fixed-point or float32 arithmetic.
+// Arithmetic of the interpolators: the weights and the element policies shared by the clear
+// reference (GridLookup::Interpolate<Loader>) and the optimised hot path (GridLookup::Lookup).
 //
-// An interpolator computes weights w_k (products of cell fractions, summing to One()) and the sum
-// S = sum_k w_k * v_k over the corner values, then converts S to Q24.8 steps.
-//
-// FixedQ30: weights are Q2.30 in int32; each weight product is truncated, and the last weight of
-//   every pair is formed as (parent - sibling), so the weights sum to exactly 2^30. S is exact in
-//   int64 (|w| <= 2^30, |v| <= 2^24 LSB). ToQ8 rounds half up. Error bound in
-//   docs/table-image-format.md.
-// Float32: weights and S in float (compile with -ffp-contract=off on the host so host and target
-//   round the same way); ToQ8 rounds half away from zero.
+// Fractions come from LatticeLocator as Q0.32 (never 1.0). Fixed-point weights:
+//   * x level, Q0.32: x1 = tx, x0 = ~tx (= 2^32 - 1 - tx);
+//   * y level, Q0.32: x?y1 = MulHi(x?, ty), x?y0 = x? - x?y1 (the pair sums to its parent);
+//   * z level, Q1.31: w1 = MulHi(w, tz >> 1), w0 = (w >> 1) - w1.
+// All eight are in [0, 2^31), products only ever take the high word of a 32x32 multiply (one UMULL
+// on a Cortex-M4), and the weights sum to 2^31 - 1 minus at most 3 (the halvings), so the weight
+// error is below 2^-29 in total.
+// Element policies (per table element type):
+//   int16   S = sum_k floor(w_k * v_k / 2^16) in int32 (the Cortex-M4 SMLAWB operation); Q8 result
+//           (S + 2^(6+f)) >> (7+f). Product truncation <= 8 * 2^-15 element LSB.
+//   int32   S = sum_k w_k * v_k exactly in int64 (SMLAL); Q8 result (S + 2^(22+f)) >> (23+f).
+//   float32 the same tree in float from tx, ty, tz (converted from Q0.32); S in float, converted to
+//           Q8 rounding half away from zero (compile with -ffp-contract=off on every target).
+// Error bound (docs/table-image-format.md): fixed point <= 1/2 (rounding) + 1/16 (weights) +
+// 1/16 (int16 products) + 2^-6 (fraction) LSB < 1 LSB of Q8 over the whole valid value range.
 #pragma once
 
 #include <cstdint>
 
-#include "volcomp/byte_order.hpp"
+#if defined(__ARM_FEATURE_DSP)
+#include <arm_acle.h>
+#endif
 
 namespace volcomp {
 
-struct FixedQ30 {
-  using Weight = int32_t;
-  using Acc = int64_t;
-  using Value = int32_t;
-  static constexpr Weight One() { return 1 << 30; }
-  static Weight FromQ30(uint32_t t) { return static_cast<int32_t>(t); }
-  static Weight Mul(Weight a, Weight b) {
-    return static_cast<int32_t>(
-        (static_cast<uint64_t>(static_cast<uint32_t>(a)) * static_cast<uint32_t>(b)) >> 30);
-  }
-  static constexpr Acc Zero() { return 0; }
-  static Acc Mac(Acc acc, Weight w, Value v) { return acc + static_cast<int64_t>(w) * v; }
-  /// `shift` = 30 + frac_bits - 8 (22..30).
-  static int32_t ToQ8(Acc acc, uint32_t shift) {
-    return static_cast<int32_t>((acc + (int64_t{1} << (shift - 1u))) >> shift);
+/// High word of the 64-bit product (UMULL on Cortex-M4).
+inline uint32_t MulHiU32(uint32_t a, uint32_t b) {
+  return static_cast<uint32_t>((static_cast<uint64_t>(a) * b) >> 32);
+}
+
+/// acc + floor(w * v16 / 2^16) with v16 the low halfword of v as signed (SMLAWB).
+inline int32_t MulAddWordHalf(int32_t acc, int32_t w, int32_t v) {
+#if defined(__ARM_FEATURE_DSP)
+  return __smlawb(w, v, acc);
+#else
+  const int64_t p = static_cast<int64_t>(w) * static_cast<int16_t>(v);
+  return static_cast<int32_t>(static_cast<uint32_t>(acc) +
+                              static_cast<uint32_t>(static_cast<int32_t>(p >> 16)));
+#endif
+}
+
+/// The eight trilinear weights in Q1.31 (index bit 0 = x, bit 1 = y, bit 2 = z).
+struct TrilinearWeights {
+  int32_t w[8];
+  TrilinearWeights(uint32_t tx, uint32_t ty, uint32_t tz) {
+    const uint32_t x1 = tx, x0 = ~tx;
+    const uint32_t x1y1 = MulHiU32(x1, ty), x1y0 = x1 - x1y1;
+    const uint32_t x0y1 = MulHiU32(x0, ty), x0y0 = x0 - x0y1;
+    const uint32_t tz31 = tz >> 1;
+    const uint32_t xy[4] = {x0y0, x1y0, x0y1, x1y1};
+#pragma GCC unroll 4
+    for (int k = 0; k < 4; ++k) {
+      const uint32_t hi = MulHiU32(xy[k], tz31);
+      w[k + 4] = static_cast<int32_t>(hi);
+      w[k] = static_cast<int32_t>((xy[k] >> 1) - hi);
+    }
   }
 };
 
-struct Float32 {
-  using Weight = float;
-  using Acc = float;
-  using Value = float;
-  static constexpr Weight One() { return 1.0f; }
-  static Weight FromQ30(uint32_t t) { return static_cast<float>(t) * (1.0f / 1073741824.0f); }
-  static Weight Mul(Weight a, Weight b) { return a * b; }
-  static constexpr Acc Zero() { return 0.0f; }
-  static Acc Mac(Acc acc, Weight w, Value v) { return acc + w * v; }
-  static int32_t ToQ8(Acc acc, uint32_t /*shift*/) {
-    const float s = acc * 256.0f;
-    return static_cast<int32_t>(s < 0.0f ? s - 0.5f : s + 0.5f);
+/// Float weights from the same fractions (the float32 table path).
+struct TrilinearWeightsF {
+  float w[8];
+  TrilinearWeightsF(uint32_t tx_q32, uint32_t ty_q32, uint32_t tz_q32) {
+    constexpr float kQ32 = 1.0f / 4294967296.0f;
+    const float tx = static_cast<float>(tx_q32) * kQ32, ty = static_cast<float>(ty_q32) * kQ32,
+                tz = static_cast<float>(tz_q32) * kQ32;
+    const float x1 = tx, x0 = 1.0f - tx;
+    const float x1y1 = x1 * ty, x1y0 = x1 - x1y1;
+    const float x0y1 = x0 * ty, x0y0 = x0 - x0y1;
+    const float xy[4] = {x0y0, x1y0, x0y1, x1y1};
+#pragma GCC unroll 4
+    for (int k = 0; k < 4; ++k) {
+      w[k + 4] = xy[k] * tz;
+      w[k] = xy[k] - w[k + 4];
+    }
   }
 };
 
-/// Element loaders: raw little-endian storage -> the policy's Value type.
+/// Q8 rounding of a float sum, half away from zero.
+inline int32_t FloatToQ8(float acc) {
+  const float s = acc * 256.0f;
+  return static_cast<int32_t>(s < 0.0f ? s - 0.5f : s + 0.5f);
+}
+
+/// Element policies: how a raw little-endian element is loaded and accumulated.
 struct LoadInt16 {
-  using Arith = FixedQ30;
   static constexpr uint32_t kSize = 2;
+  using Value = int32_t;
+  using Acc = int32_t;
   static int32_t Load(const uint8_t* p) {
     int16_t v;
     __builtin_memcpy(&v, p, sizeof v);
     return v;
   }
+  static constexpr Acc Zero() { return 0; }
+  static Acc Mac(Acc acc, int32_t w_q31, int32_t v) { return MulAddWordHalf(acc, w_q31, v); }
+  /// `frac_bits` of the table (0..8).
+  static int32_t ToQ8(Acc acc, uint32_t frac_bits) {
+    const uint32_t shift = 7u + frac_bits;
+    return static_cast<int32_t>(static_cast<uint32_t>(acc) + (1u << (shift - 1u))) >> shift;
+  }
 };
 struct LoadInt32 {
-  using Arith = FixedQ30;
   static constexpr uint32_t kSize = 4;
+  using Value = int32_t;
+  using Acc = int64_t;
   static int32_t Load(const uint8_t* p) {
     int32_t v;
     __builtin_memcpy(&v, p, sizeof v);
     return v;
   }
+  static constexpr Acc Zero() { return 0; }
+  static Acc Mac(Acc acc, int32_t w_q31, int32_t v) {
+    return acc + static_cast<int64_t>(w_q31) * v;
+  }
+  static int32_t ToQ8(Acc acc, uint32_t frac_bits) {
+    const uint32_t shift = 23u + frac_bits;
+    return static_cast<int32_t>((acc + (int64_t{1} << (shift - 1u))) >> shift);
+  }
 };
 struct LoadFloat32 {
-  using Arith = Float32;
   static constexpr uint32_t kSize = 4;
+  using Value = float;
+  using Acc = float;
   static float Load(const uint8_t* p) {
     float v;
     __builtin_memcpy(&v, p, sizeof v);
     return v;
   }
+  static constexpr Acc Zero() { return 0.0f; }
+  static Acc Mac(Acc acc, float w, float v) { return acc + w * v; }
+  static int32_t ToQ8(Acc acc, uint32_t /*frac_bits*/) { return FloatToQ8(acc); }
 };
 
 }  // namespace volcomp

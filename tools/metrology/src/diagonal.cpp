@@ -8,16 +8,12 @@
 #include <stdexcept>
 
 #include "volcomp/metrology/positioning_csv.hpp"
+#include "volcomp/report/format.hpp"
 
 namespace volcomp::metrology {
 namespace {
 
-std::string Num(double v) {
-  std::ostringstream s;
-  s.precision(10);
-  s << v;
-  return s.str();
-}
+std::string Num(double v) { return report::FormatNumber(v); }
 
 // Minimum target count of §5.2: 5 per metre of diagonal, and 5 in total.
 std::size_t RequiredTargets(double length_mm) {

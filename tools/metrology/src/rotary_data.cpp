@@ -5,15 +5,12 @@
 #include <set>
 #include <sstream>
 
+#include "volcomp/report/format.hpp"
+
 namespace volcomp::metrology {
 namespace {
 
-std::string Num(double v) {
-  std::ostringstream s;
-  s.precision(10);
-  s << v;
-  return s.str();
-}
+std::string Num(double v) { return report::FormatNumber(v); }
 
 }  // namespace
 

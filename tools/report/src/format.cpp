@@ -3,6 +3,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <sstream>
 
 namespace volcomp::report {
 
@@ -22,6 +23,13 @@ std::string FormatSigned(double value, int decimals) {
   std::string s = FormatFixed(value, decimals);
   if (s != "n/a" && s[0] != '-') s.insert(0, "+");
   return s;
+}
+
+std::string FormatNumber(double value, int significant) {
+  std::ostringstream s;
+  s.precision(significant);
+  s << value;
+  return s.str();
 }
 
 std::string EscapeXml(const std::string& text) {

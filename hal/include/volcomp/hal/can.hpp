@@ -5,25 +5,18 @@
 
 #include <cstdint>
 
+#include "volcomp/can_frame.hpp"
 #include "volcomp/status.hpp"
 
 namespace volcomp::hal {
 
-struct CanFrame {
-  uint32_t id = 0;  // 11-bit, or 29-bit when extended
-  bool extended = false;
-  bool rtr = false;
-  uint8_t dlc = 0;  // 0..8
-  uint8_t data[8] = {};
-};
+using volcomp::CanFrame;
 
 class CanPort {
  public:
   /// Queues `frame`; kFull when the transmit queue is full, kInvalidArgument for a bad frame.
   Status Send(const CanFrame& frame) {
-    if (frame.dlc > 8 || frame.id > (frame.extended ? 0x1FFFFFFFu : 0x7FFu)) {
-      return Error::kInvalidArgument;
-    }
+    if (!frame.valid()) return Error::kInvalidArgument;
     return DoSend(frame);
   }
   /// Pops the next received frame into *frame; false when none is waiting.

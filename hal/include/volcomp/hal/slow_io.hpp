@@ -12,7 +12,7 @@ enum class InputLine : uint8_t {
   kEnable = 6,        // compensation enable from the CNC (active high)
   kEStop = 7,         // emergency stop chain open (active high = stopped)
   kDriveAlarm = 8,    // any drive reports an alarm (active high)
-  kWriteProtect = 9,  // hardware write-protect jumper/key (active high = protected)
+  kWriteEnable = 9,   // write-enable key/jumper (active high = tables and settings writable)
   kCount = 10,
 };
 

@@ -12,6 +12,9 @@ std::string FormatFixed(double value, int decimals);
 /// `value` with a sign always shown ("+1.25", "-0.40"), otherwise as FormatFixed.
 std::string FormatSigned(double value, int decimals);
 
+/// `value` with up to `significant` significant digits, no trailing zeros ("0.1", "-12.5").
+std::string FormatNumber(double value, int significant = 10);
+
 /// Escapes &, <, >, " and ' for use in HTML/SVG text and attribute values.
 std::string EscapeXml(const std::string& text);
 

@@ -1,0 +1,49 @@
+// What the object dictionary may ask of the running board application (implemented by BoardApp).
+// Requests that touch the data path are handed to the next control tick, never applied from the
+// main loop directly.
+#pragma once
+
+#include <cstdint>
+
+#include "volcomp/compensator.hpp"
+#include "volcomp/control_tick.hpp"
+
+namespace volcomp::firmware {
+
+class BoardControl {
+ public:
+  /// Makes `table` the active table at the next tick.
+  void RequestTable(const PreparedTable& table) { DoRequestTable(table); }
+  /// Drops the active table at the next tick (the correction ramps out).
+  void RequestClearTable() { DoRequestClearTable(); }
+  /// References the axes in `mask` (bit a = axis a) at the next tick.
+  void RequestReference(uint8_t mask) { DoRequestReference(mask); }
+  /// Enables or disables compensation from the bus (AND-ed with the enable input).
+  void SetBusEnable(bool on) { DoSetBusEnable(on); }
+  bool bus_enable() const { return DoBusEnable(); }
+  /// The data path, for reading state (positions, corrections, counters).
+  const ControlTick& engine() const { return DoEngine(); }
+  /// True while any axis moved within the last `ms` milliseconds.
+  bool moving() const { return DoMoving(); }
+  bool fault() const { return DoFault(); }
+  /// Hardware write-enable input level.
+  bool write_enable_input() const { return DoWriteEnableInput(); }
+  uint32_t max_tick_cost_ns() const { return DoMaxTickCostNs(); }
+
+ protected:
+  ~BoardControl() = default;
+
+ private:
+  virtual void DoRequestTable(const PreparedTable& table) = 0;
+  virtual void DoRequestClearTable() = 0;
+  virtual void DoRequestReference(uint8_t mask) = 0;
+  virtual void DoSetBusEnable(bool on) = 0;
+  virtual bool DoBusEnable() const = 0;
+  virtual const ControlTick& DoEngine() const = 0;
+  virtual bool DoMoving() const = 0;
+  virtual bool DoFault() const = 0;
+  virtual bool DoWriteEnableInput() const = 0;
+  virtual uint32_t DoMaxTickCostNs() const = 0;
+};
+
+}  // namespace volcomp::firmware

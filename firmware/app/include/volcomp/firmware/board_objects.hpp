@@ -1,0 +1,119 @@
+// The board's object dictionary values (everything outside the CiA 301 communication objects):
+// identity, board configuration (pending until stored and reset), table staging and control,
+// write access, operation and live diagnostics. See docs/canopen.md for the object list.
+//
+// Write access: writes to tables and configuration (0x1010, 0x1011, 0x2000-0x201E, 0x2100, table
+// activate/deactivate/clear) are refused with 0x08000020 unless the hardware write-enable input
+// is active or the board was unlocked by writing kUnlockSignature to 0x2110 within the last
+// kUnlockMs milliseconds. Table activation is refused with 0x08000022 unless every axis is
+// referenced and no axis moved within kStillMs. Each refusal and each failed action is counted
+// and reported with an EMCY (code kEmcyRefused / kEmcyTableInvalid, abort code in bytes 3..6).
+#pragma once
+
+#include <cstdint>
+
+#include "volcomp/canopen/node.hpp"
+#include "volcomp/canopen/object_values.hpp"
+#include "volcomp/firmware/board_control.hpp"
+#include "volcomp/firmware/settings.hpp"
+#include "volcomp/firmware/table_store.hpp"
+
+namespace volcomp::firmware {
+
+inline constexpr uint32_t kUnlockSignature = 0x6B6C6E75;  // "unlk"
+inline constexpr uint32_t kSaveSignature = 0x65766173;    // "save" (CiA 301 0x1010)
+inline constexpr uint32_t kLoadSignature = 0x64616F6C;    // "load" (CiA 301 0x1011)
+inline constexpr uint32_t kUnlockMs = 60000;
+inline constexpr uint32_t kStillMs = 100;
+inline constexpr uint16_t kEmcyRefused = 0xFF10;       // an action was refused (manufacturer)
+inline constexpr uint16_t kEmcyTableInvalid = 0x6300;  // data set: staged/stored table invalid
+inline constexpr uint16_t kEmcyWriteFailed = 0x5530;   // flash write failed
+
+/// Values of 0x2101 (table control).
+enum class TableCommand : uint8_t { kDeactivate = 0, kActivate = 1, kClear = 3, kVerify = 4 };
+
+/// Bits of 0x2122 (device state).
+enum DeviceStateBit : uint16_t {
+  kStateReferenced = 1u << 0,
+  kStateEngaged = 1u << 1,
+  kStateFault = 1u << 2,
+  kStateWritable = 1u << 3,
+  kStateMoving = 1u << 4,
+  kStateTableActive = 1u << 5,
+  kStateStagedVerified = 1u << 6,
+  kStatePassthrough = 1u << 7,
+  kStateSettingsPending = 1u << 8,
+};
+
+struct IdentityInfo {
+  const char* device_name = "volcomp";
+  const char* hardware_version = "host";
+  const char* software_version = "0.1.0";
+  uint32_t serial_number = 0;
+};
+
+class BoardObjects : public canopen::ObjectValues {
+ public:
+  BoardObjects(BoardControl* control,
+               TableStore* tables,
+               SettingsStore* settings_store,
+               canopen::Node* node,
+               const IdentityInfo& identity);
+
+  /// The settings in force (from Start) and the pending copy the configuration objects edit.
+  void SetSettings(const BoardSettings& active);
+  const BoardSettings& pending_settings() const { return pending_; }
+
+  /// Called every main-loop pass with the current time.
+  void set_now_ms(uint32_t now_ms) { now_ms_ = now_ms; }
+  bool writable() const;
+  uint16_t device_state() const;
+  /// 0x2102 table status word: bit 0 busy, bits 1-7 result, bits 8-15 staged state, 16-31 error.
+  uint32_t table_status() const;
+
+  uint32_t refused_actions() const { return refused_; }
+  void CountFrame(bool received) { ++(received ? rx_frames_ : tx_frames_); }
+  void set_active(uint32_t id, uint32_t crc) {
+    active_id_ = id;
+    active_crc_ = crc;
+    has_active_ = true;
+  }
+  void clear_active() { has_active_ = false; }
+
+ private:
+  uint32_t DoRead(const canopen::ObjectEntry& e,
+                  uint32_t offset,
+                  uint8_t* buf,
+                  uint32_t cap,
+                  uint32_t* copied,
+                  uint32_t* total) override;
+  uint32_t DoWrite(const canopen::ObjectEntry& e, const uint8_t* data, uint32_t size) override;
+  uint32_t DoBeginDomainWrite(const canopen::ObjectEntry& e, uint32_t size) override;
+  uint32_t DoDomainWriteData(const uint8_t* data, uint32_t size) override;
+  uint32_t DoEndDomainWrite(bool complete) override;
+
+  bool ReadNumber(const canopen::ObjectEntry& e, uint32_t* value) const;
+  uint32_t WriteConfig(const canopen::ObjectEntry& e, uint32_t value);
+  uint32_t TableControl(uint8_t command);
+  uint32_t Refuse(uint32_t abort_code);
+
+  BoardControl* control_;
+  TableStore* tables_;
+  SettingsStore* settings_store_;
+  canopen::Node* node_;
+  IdentityInfo identity_;
+  BoardSettings active_;
+  BoardSettings pending_;
+  uint32_t now_ms_ = 0;
+  uint32_t unlocked_at_ms_ = 0;
+  bool unlocked_ = false;
+  uint8_t last_command_ = 0;
+  bool has_active_ = false;
+  uint32_t active_id_ = 0;
+  uint32_t active_crc_ = 0;
+  uint32_t refused_ = 0;
+  uint32_t rx_frames_ = 0;
+  uint32_t tx_frames_ = 0;
+};
+
+}  // namespace volcomp::firmware

@@ -1,0 +1,94 @@
+// Two banks of NOR flash holding one committed blob, switched atomically and safe against power
+// loss at any flash operation.
+//
+// Layout of the region: bank 0 then bank 1, each `bank_size` bytes (a multiple of the sector size).
+// The last 64 bytes of a bank hold two 32-byte records: COMMIT (magic, sequence, blob size, blob
+// CRC-32, check word, zeros) and REVOKE (magic, sequence, zeros, check word, zeros). The blob
+// starts at offset 0 of the bank and may use everything before the records.
+//
+// The committed blob is the bank whose COMMIT record is valid and has the highest sequence; if
+// that bank is revoked or its bytes do not match the record's size and CRC-32, there is no
+// committed blob (never a fall-back to an older one). Staging always writes the other bank, so the
+// committed blob's bytes are never erased or programmed while it is committed; the switch is the
+// single program operation of the COMMIT record, whose check word makes a partly programmed record
+// invalid. Hence after a power loss at any point the store holds exactly the old or the new blob.
+//
+// Staging erases lazily: the record sector first, then each sector just before the first byte is
+// programmed into it, so no operation takes longer than one sector erase plus one program burst.
+#pragma once
+
+#include <cstdint>
+
+#include "volcomp/hal/flash.hpp"
+#include "volcomp/status.hpp"
+
+namespace volcomp::firmware {
+
+class DualBankStore {
+ public:
+  static constexpr uint32_t kRecordBytes = 64;
+  static constexpr uint32_t kMaxProgramUnit = 16;
+
+  /// Uses `flash` offsets [0, 2 * bank_size). kInvalidArgument if the geometry does not fit.
+  Status Init(hal::Flash* flash, uint32_t bank_size);
+  /// Finds the committed blob after power-up (reads only; checks the blob's CRC-32).
+  void Mount();
+
+  bool has_committed() const { return committed_ >= 0; }
+  /// The committed blob in place (valid until the next Commit/Revoke); null if none.
+  const uint8_t* committed_data() const;
+  uint32_t committed_size() const { return committed_size_; }
+  uint32_t committed_crc32() const { return committed_crc_; }
+  uint32_t capacity() const { return bank_size_ - kRecordBytes; }
+
+  // ---- Staging (into the bank that is not committed) ----
+  /// Starts a new blob: erases the staging bank's record sector. kIoError on flash failure.
+  Status BeginStaging();
+  /// Appends bytes; kImageTooLarge past capacity(), kIoError on flash failure, kNotReady if no
+  /// staging is open.
+  Status Append(const uint8_t* data, uint32_t size);
+  /// Flushes the last partial program unit; the staged blob is then complete.
+  Status FinishStaging();
+  /// Marks the staging as abandoned (the bank content is ignored until the next BeginStaging).
+  void AbandonStaging() { staging_open_ = staged_complete_ = false; }
+  bool staging_open() const { return staging_open_; }
+  bool staged_complete() const { return staged_complete_; }
+  uint32_t staged_size() const { return staged_size_; }
+  const uint8_t* staged_data() const;
+
+  /// Commits the complete staged blob (the caller has validated its content): one program of the
+  /// COMMIT record carrying its size and CRC-32. kNotReady if nothing complete is staged.
+  Status Commit();
+  /// Revokes the committed blob (program of its REVOKE record): afterwards nothing is committed.
+  Status Revoke();
+
+ private:
+  struct Record {
+    uint32_t magic, sequence, size, crc32;
+  };
+  bool ReadRecord(int bank, uint32_t offset_in_bank, uint32_t magic, Record* r) const;
+  Status ProgramRecord(int bank, uint32_t offset_in_bank, const Record& r);
+  Status EnsureErased(uint32_t bank_offset_end);
+  uint32_t BankBase(int bank) const { return static_cast<uint32_t>(bank) * bank_size_; }
+
+  hal::Flash* flash_ = nullptr;
+  uint32_t bank_size_ = 0;
+  uint32_t sector_ = 0;
+  uint32_t unit_ = 8;
+
+  int committed_ = -1;  // bank index or -1
+  uint32_t committed_seq_ = 0;
+  uint32_t committed_size_ = 0;
+  uint32_t committed_crc_ = 0;
+  uint32_t highest_seq_ = 0;
+
+  int staging_ = -1;
+  bool staging_open_ = false;
+  bool staged_complete_ = false;
+  uint32_t staged_size_ = 0;
+  uint32_t erased_until_ = 0;  // bytes of the staging bank known erased from offset 0
+  uint8_t pending_[kMaxProgramUnit] = {};
+  uint32_t pending_len_ = 0;
+};
+
+}  // namespace volcomp::firmware

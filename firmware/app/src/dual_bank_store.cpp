@@ -1,0 +1,175 @@
+// Power-loss-safe A/B blob store on NOR flash.
+#include "volcomp/firmware/dual_bank_store.hpp"
+
+#include "volcomp/byte_order.hpp"
+#include "volcomp/crc32.hpp"
+
+namespace volcomp::firmware {
+namespace {
+constexpr uint32_t kCommitMagic = 0x4D4D4F43;  // "COMM"
+constexpr uint32_t kRevokeMagic = 0x4B564552;  // "REVK"
+constexpr uint32_t kCommitFromEnd = 64;
+constexpr uint32_t kRevokeFromEnd = 32;
+
+uint32_t CheckWord(uint32_t magic, uint32_t seq, uint32_t size, uint32_t crc) {
+  return ~(magic ^ (seq * 0x9E3779B1u) ^ (size * 5u) ^ (crc * 3u));
+}
+}  // namespace
+
+Status DualBankStore::Init(hal::Flash* flash, uint32_t bank_size) {
+  flash_ = flash;
+  bank_size_ = bank_size;
+  sector_ = flash->sector_size();
+  unit_ = flash->program_unit();
+  if (sector_ == 0 || bank_size % sector_ != 0 || 2ull * bank_size > flash->size() || unit_ == 0 ||
+      unit_ > kMaxProgramUnit || 32 % unit_ != 0 || bank_size < 2 * kRecordBytes ||
+      sector_ < kRecordBytes) {
+    return Error::kInvalidArgument;
+  }
+  committed_ = staging_ = -1;
+  staging_open_ = staged_complete_ = false;
+  return Status::Ok();
+}
+
+bool DualBankStore::ReadRecord(int bank, uint32_t offset_in_bank, uint32_t magic, Record* r) const {
+  const uint8_t* p = flash_->Map(BankBase(bank) + offset_in_bank);
+  r->magic = LoadLe32(p);
+  r->sequence = LoadLe32(p + 4);
+  r->size = LoadLe32(p + 8);
+  r->crc32 = LoadLe32(p + 12);
+  return r->magic == magic &&
+         LoadLe32(p + 16) == CheckWord(r->magic, r->sequence, r->size, r->crc32);
+}
+
+Status DualBankStore::ProgramRecord(int bank, uint32_t offset_in_bank, const Record& r) {
+  uint8_t rec[32] = {};
+  StoreLe32(rec, r.magic);
+  StoreLe32(rec + 4, r.sequence);
+  StoreLe32(rec + 8, r.size);
+  StoreLe32(rec + 12, r.crc32);
+  StoreLe32(rec + 16, CheckWord(r.magic, r.sequence, r.size, r.crc32));
+  if (!flash_->Program(BankBase(bank) + offset_in_bank, rec, 32).ok()) return Error::kIoError;
+  return Status::Ok();
+}
+
+void DualBankStore::Mount() {
+  committed_ = -1;
+  committed_size_ = committed_crc_ = 0;
+  highest_seq_ = 0;
+  int best = -1;
+  Record best_rec{};
+  for (int b = 0; b < 2; ++b) {
+    Record r;
+    if (!ReadRecord(b, bank_size_ - kCommitFromEnd, kCommitMagic, &r)) continue;
+    if (r.sequence > highest_seq_) highest_seq_ = r.sequence;
+    if (best < 0 || r.sequence > best_rec.sequence) {
+      best = b;
+      best_rec = r;
+    }
+  }
+  if (best < 0) return;
+  Record rv;
+  if (ReadRecord(best, bank_size_ - kRevokeFromEnd, kRevokeMagic, &rv) &&
+      rv.sequence == best_rec.sequence) {
+    return;  // the newest commit was revoked
+  }
+  if (best_rec.size > capacity() ||
+      ComputeCrc32(flash_->Map(BankBase(best)), best_rec.size) != best_rec.crc32) {
+    return;  // damaged: nothing committed rather than an older blob
+  }
+  committed_ = best;
+  committed_seq_ = best_rec.sequence;
+  committed_size_ = best_rec.size;
+  committed_crc_ = best_rec.crc32;
+}
+
+const uint8_t* DualBankStore::committed_data() const {
+  return committed_ < 0 ? nullptr : flash_->Map(BankBase(committed_));
+}
+
+const uint8_t* DualBankStore::staged_data() const {
+  return staging_ < 0 ? nullptr : flash_->Map(BankBase(staging_));
+}
+
+Status DualBankStore::EnsureErased(uint32_t bank_offset_end) {
+  const uint32_t record_sector = bank_size_ - sector_;  // erased by BeginStaging
+  while (erased_until_ < bank_offset_end) {
+    if (erased_until_ != record_sector && !flash_->Erase(BankBase(staging_) + erased_until_).ok()) {
+      return Error::kIoError;
+    }
+    erased_until_ += sector_;
+  }
+  return Status::Ok();
+}
+
+Status DualBankStore::BeginStaging() {
+  staging_open_ = staged_complete_ = false;
+  staging_ = committed_ == 0 ? 1 : 0;
+  staged_size_ = 0;
+  pending_len_ = 0;
+  erased_until_ = 0;
+  if (!flash_->Erase(BankBase(staging_) + bank_size_ - sector_).ok()) return Error::kIoError;
+  staging_open_ = true;
+  return Status::Ok();
+}
+
+Status DualBankStore::Append(const uint8_t* data, uint32_t size) {
+  if (!staging_open_) return Error::kNotReady;
+  if (size > capacity() - staged_size_) return Error::kImageTooLarge;
+  for (uint32_t i = 0; i < size; ++i) {
+    pending_[pending_len_++] = data[i];
+    if (pending_len_ == unit_) {
+      const uint32_t at = staged_size_ + i + 1 - unit_;
+      const Status s = EnsureErased(at + unit_);
+      if (!s.ok() || !flash_->Program(BankBase(staging_) + at, pending_, unit_).ok()) {
+        staging_open_ = false;
+        return Error::kIoError;
+      }
+      pending_len_ = 0;
+    }
+  }
+  staged_size_ += size;
+  return Status::Ok();
+}
+
+Status DualBankStore::FinishStaging() {
+  if (!staging_open_) return Error::kNotReady;
+  if (pending_len_ > 0) {
+    for (uint32_t i = pending_len_; i < unit_; ++i) pending_[i] = 0xFF;
+    const uint32_t at = staged_size_ - pending_len_;
+    const Status s = EnsureErased(at + unit_);
+    if (!s.ok() || !flash_->Program(BankBase(staging_) + at, pending_, unit_).ok()) {
+      staging_open_ = false;
+      return Error::kIoError;
+    }
+    pending_len_ = 0;
+  }
+  staging_open_ = false;
+  staged_complete_ = true;
+  return Status::Ok();
+}
+
+Status DualBankStore::Commit() {
+  if (!staged_complete_ || staging_ < 0) return Error::kNotReady;
+  const uint32_t crc32 = ComputeCrc32(flash_->Map(BankBase(staging_)), staged_size_);
+  const Record r{kCommitMagic, highest_seq_ + 1, staged_size_, crc32};
+  VOLCOMP_TRY(ProgramRecord(staging_, bank_size_ - kCommitFromEnd, r));
+  committed_ = staging_;
+  committed_seq_ = highest_seq_ = r.sequence;
+  committed_crc_ = crc32;
+  committed_size_ = staged_size_;
+  staging_ = -1;
+  staged_complete_ = false;
+  return Status::Ok();
+}
+
+Status DualBankStore::Revoke() {
+  if (committed_ < 0) return Status::Ok();
+  const Record r{kRevokeMagic, committed_seq_, 0, 0};
+  VOLCOMP_TRY(ProgramRecord(committed_, bank_size_ - kRevokeFromEnd, r));
+  committed_ = -1;
+  committed_size_ = committed_crc_ = 0;
+  return Status::Ok();
+}
+
+}  // namespace volcomp::firmware

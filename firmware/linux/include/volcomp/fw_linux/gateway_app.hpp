@@ -1,0 +1,101 @@
+// The board application in CAN gateway mode, independent of Linux: the CiA 301 node (BoardApp with
+// its object dictionary, table store and activation rules) on the controller's bus, and the CiA 402
+// CSP gateway (CspGateway) between the controller's bus and the drives' bus, with the correction
+// computed by the same ControlTick / Compensator as in step/dir mode (GatewayStepIo feeds it the
+// commanded positions from the target PDOs).
+//
+//   OnControllerFrame()  a frame received on the controller side: forwarded to the drives with
+//                        corrected targets; NMT and the board's own SDO requests also go to the
+//                        node (its answers are sent on the controller side).
+//   OnDriveFrame()       a frame received on the drive side: forwarded with corrected actuals.
+//   Tick()               the control tick (BoardSettings::board.tick_hz): ControlTick, then the
+//                        new corrections go to the gateway.
+//   Poll()               the main loop: slow lines and the node (SDO, NMT, heartbeat, EMCY).
+//
+// Without a drive port (`drives` null) the board is a plain CANopen node (no forwarding).
+// Hosted C++17 (a small heap use at construction only); the devices are HAL interfaces, so tests
+// run it on the mock HAL and volcomp-fw-linux on SocketCAN, files and GPIO.
+//
+// Thread-safety: everything from one thread (the Linux main loop); Tick() and Poll() must not
+// run concurrently.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+
+#include "volcomp/csp_gateway.hpp"
+#include "volcomp/firmware/board_app.hpp"
+#include "volcomp/fw_linux/gateway_step_io.hpp"
+#include "volcomp/hal/can.hpp"
+#include "volcomp/hal/clock.hpp"
+#include "volcomp/hal/flash.hpp"
+#include "volcomp/hal/slow_io.hpp"
+
+namespace volcomp::fw_linux {
+
+struct GatewayDevices {
+  hal::CanPort* controller = nullptr;    // CNC side (required): the board's node lives here
+  hal::CanPort* drives = nullptr;        // drive side (optional: no gateway without it)
+  hal::SlowIo* io = nullptr;             // required
+  hal::Flash* table_flash = nullptr;     // required: the dual-bank table store
+  hal::Flash* settings_flash = nullptr;  // optional: settings stored with 0x1010
+  hal::Clock* clock = nullptr;           // required
+};
+
+/// Counters of the glue (the gateway's own counters are in gateway().counters()).
+struct GatewayAppCounters {
+  uint32_t forwarded_to_drives = 0;
+  uint32_t forwarded_to_controller = 0;
+  uint32_t send_failures = 0;  // a forward refused by the port (queue full): frame lost
+  uint32_t node_overruns = 0;  // node frames dropped because the node queue was full
+};
+
+class GatewayApp {
+ public:
+  using App = firmware::BoardApp<GatewayStepIo>;
+
+  explicit GatewayApp(const GatewayDevices& devices);
+  ~GatewayApp();
+  GatewayApp(const GatewayApp&) = delete;
+  GatewayApp& operator=(const GatewayApp&) = delete;
+
+  /// Starts the board (stored settings override `defaults`) and the gateway with `gateway`
+  /// (own_node_id is taken from the settings in force). kConfigInvalid when the settings or the
+  /// gateway mapping are invalid for the axis count in force.
+  Status Start(const firmware::BoardSettings& defaults, const gateway::GatewayConfig& gateway,
+               const firmware::AppOptions& options = firmware::AppOptions());
+
+  gateway::Route OnControllerFrame(const CanFrame& frame);
+  gateway::Route OnDriveFrame(const CanFrame& frame);
+  void Tick();
+  void Poll();
+
+  /// Receives and handles every frame waiting on both ports (tests and simple loops; the Linux
+  /// runner calls OnControllerFrame / OnDriveFrame itself to time each frame).
+  void PumpFrames();
+
+  App& app() { return *app_; }
+  const App& app() const { return *app_; }
+  const gateway::CspGateway& gateway() const { return gateway_; }
+  const GatewayAppCounters& counters() const { return counters_; }
+  bool gateway_active() const { return devices_.drives != nullptr && gateway_ok_; }
+  /// True when frames for the node are waiting (call Poll() soon for a prompt SDO answer).
+  bool node_pending() const;
+
+ private:
+  class NodePort;
+  void SyncGatewayWithSettings();
+
+  GatewayDevices devices_;
+  gateway::CspGateway gateway_;
+  gateway::GatewayConfig gateway_config_;
+  bool gateway_ok_ = false;
+  uint8_t gateway_node_id_ = 0;
+  uint8_t gateway_axes_ = 0;
+  GatewayStepIo step_io_;
+  std::unique_ptr<NodePort> node_port_;
+  std::unique_ptr<App> app_;
+  GatewayAppCounters counters_;
+};
+
+}  // namespace volcomp::fw_linux

@@ -1,0 +1,394 @@
+// volcomp-fw-linux's event loop.
+#include "volcomp/fw_linux/linux_runner.hpp"
+
+#include <linux/sockios.h>
+#include <sys/epoll.h>
+#include <sys/ioctl.h>
+#include <time.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <memory>
+
+#include "volcomp/fw_linux/gateway_app.hpp"
+#include "volcomp/fw_linux/latency_stats.hpp"
+#include "volcomp/hal/linux/fake_gpio.hpp"
+#include "volcomp/hal/linux/file_flash.hpp"
+#include "volcomp/hal/linux/gpiod_backend.hpp"
+#include "volcomp/hal/linux/linux_slow_io.hpp"
+#include "volcomp/hal/linux/monotonic_clock.hpp"
+#include "volcomp/hal/linux/shutdown_signal.hpp"
+#include "volcomp/hal/linux/socketcan_port.hpp"
+#include "volcomp/hal/linux/tick_timer.hpp"
+
+namespace volcomp::fw_linux {
+namespace {
+
+namespace lb = hal::linux_board;
+using hal::socketcan::SocketCanPort;
+
+constexpr uint64_t kMaxCatchUpTicks = 10;
+constexpr int kFrameBudget = 64;  // frames per port per loop pass (keeps the tick on time)
+
+uint64_t RealtimeNs() {
+  timespec ts{};
+  clock_gettime(CLOCK_REALTIME, &ts);
+  return static_cast<uint64_t>(ts.tv_sec) * 1000000000u + static_cast<uint64_t>(ts.tv_nsec);
+}
+
+// Kernel receive time of the last frame read from `fd` (CLOCK_REALTIME), or 0.
+uint64_t KernelStampNs(int fd) {
+  timespec ts{};
+  if (ioctl(fd, SIOCGSTAMPNS, &ts) != 0) return 0;
+  return static_cast<uint64_t>(ts.tv_sec) * 1000000000u + static_cast<uint64_t>(ts.tv_nsec);
+}
+
+struct Direction {
+  LatencyStats kernel_to_write;  // kernel receive timestamp -> write() of the forward returned
+  LatencyStats in_process;       // read() returned -> write() returned
+  uint64_t unstamped = 0;        // forwarded frames without a usable kernel timestamp
+  bool skip_stamps = false;      // the port was serviced in batch since the last drain
+};
+
+class Runner {
+ public:
+  Runner(const LinuxBoardConfig& config, const RunOptions& options)
+      : config_(config), options_(options) {}
+
+  int Run();
+
+ private:
+  bool Open();
+  void DrainController();
+  void DrainDrives();
+  void OnTimer();
+  void Shutdown();
+  void Report();
+  SocketCanPort::Options PortOptions() const {
+    SocketCanPort::Options o;
+    o.tx_capacity = config_.tx_queue;
+    o.restart_on_bus_off = config_.restart_on_bus_off;
+    return o;
+  }
+
+  const LinuxBoardConfig& config_;
+  RunOptions options_;
+  lb::ShutdownSignal signal_;
+  lb::TickTimer timer_;
+  lb::MonotonicClock clock_;
+  SocketCanPort controller_;
+  SocketCanPort drives_;
+  bool have_drives_ = false;
+  lb::FileFlash tables_;
+  lb::FileFlash settings_;
+  bool have_settings_ = false;
+  std::unique_ptr<lb::GpioBackend> gpio_;
+  std::unique_ptr<lb::LinuxSlowIo> io_;
+  std::unique_ptr<GatewayApp> app_;
+  Direction to_drives_, to_controller_;
+  uint64_t ticks_ = 0, late_ticks_ = 0, skipped_ticks_ = 0, max_tick_ns_ = 0;
+  uint64_t next_io_ns_ = 0, stop_at_ns_ = 0, started_ns_ = 0;
+  int stop_signal_ = 0;
+  bool stop_ = false;
+};
+
+bool Runner::Open() {
+  std::string why = signal_.Open();
+  if (!why.empty()) {
+    std::fprintf(stderr, "volcomp-fw-linux: %s\n", why.c_str());
+    return false;
+  }
+  if (!controller_.Open(config_.controller_iface, PortOptions()).ok()) {
+    std::fprintf(stderr, "volcomp-fw-linux: controller side: %s\n",
+                 controller_.last_error().c_str());
+    return false;
+  }
+  have_drives_ = !config_.drives_iface.empty();
+  if (have_drives_ && !drives_.Open(config_.drives_iface, PortOptions()).ok()) {
+    std::fprintf(stderr, "volcomp-fw-linux: drive side: %s\n", drives_.last_error().c_str());
+    return false;
+  }
+  lb::FileFlash::Options fo;
+  fo.size = 2 * config_.table_bank_bytes;
+  fo.sector_size = config_.sector_bytes;
+  fo.sync = config_.flash_sync;
+  why = tables_.Open(config_.table_file, fo);
+  if (!why.empty()) {
+    std::fprintf(stderr, "volcomp-fw-linux: %s\n", why.c_str());
+    return false;
+  }
+  have_settings_ = !config_.settings_file.empty();
+  if (have_settings_) {
+    fo.size = 2 * config_.sector_bytes;
+    why = settings_.Open(config_.settings_file, fo);
+    if (!why.empty()) {
+      std::fprintf(stderr, "volcomp-fw-linux: %s\n", why.c_str());
+      return false;
+    }
+  }
+  switch (config_.gpio_backend) {
+    case GpioBackendKind::kNone: gpio_ = std::make_unique<lb::FakeGpio>(); break;
+    case GpioBackendKind::kFake:
+      gpio_ = std::make_unique<lb::FakeGpio>(config_.fake_state_file);
+      break;
+    case GpioBackendKind::kGpiod:
+      gpio_ = lb::MakeGpiodBackend();
+      if (gpio_ == nullptr) {
+        std::fprintf(stderr,
+                     "volcomp-fw-linux: [gpio] backend = gpiod, but this build has no libgpiod "
+                     "(install libgpiod-dev and rebuild, or use backend = fake)\n");
+        return false;
+      }
+      break;
+  }
+  why = gpio_->Open(config_.gpio);
+  if (!why.empty()) {
+    std::fprintf(stderr, "volcomp-fw-linux: %s\n", why.c_str());
+    return false;
+  }
+  lb::LinuxSlowIo::Options io;
+  io.debounce_ms = config_.debounce_ms;
+  io_ = std::make_unique<lb::LinuxSlowIo>(gpio_.get(), io);
+  io_->Refresh(clock_.NowNs());
+
+  GatewayDevices dev;
+  dev.controller = &controller_;
+  dev.drives = have_drives_ ? &drives_ : nullptr;
+  dev.io = io_.get();
+  dev.table_flash = &tables_;
+  dev.settings_flash = have_settings_ ? &settings_ : nullptr;
+  dev.clock = &clock_;
+  app_ = std::make_unique<GatewayApp>(dev);
+  firmware::AppOptions ao;
+  ao.use_enable_input = config_.enable_input;
+  ao.table_bank_size = config_.table_bank_bytes;
+  ao.settings_bank_size = config_.sector_bytes;
+  ao.measure_tick_cost = true;
+  ao.identity.hardware_version = "linux";
+  ao.identity.serial_number = config_.serial_number;
+  const Status s = app_->Start(config_.settings, config_.gateway, ao);
+  if (!s.ok()) {
+    std::fprintf(stderr, "volcomp-fw-linux: start failed: %s (%s)\n", s.name(),
+                 ErrorText(s.error()));
+    return false;
+  }
+  why = timer_.Start(1000000000ull / app_->app().settings().board.tick_hz);
+  if (!why.empty()) {
+    std::fprintf(stderr, "volcomp-fw-linux: %s\n", why.c_str());
+    return false;
+  }
+  const Status stored = app_->app().stored_table_status();
+  std::fprintf(stderr,
+               "volcomp-fw-linux: node 0x%02X on %s, %s%s, %u axes, tick %u Hz, gpio %s, stored "
+               "table: %s\n",
+               app_->app().settings().node_id, config_.controller_iface.c_str(),
+               have_drives_ ? "gateway to " : "no gateway",
+               have_drives_ ? config_.drives_iface.c_str() : "",
+               unsigned{app_->app().engine().axis_count()},
+               app_->app().settings().board.tick_hz, gpio_->Describe().c_str(),
+               stored.ok() ? "active" : ErrorText(stored.error()));
+  return true;
+}
+
+void Runner::DrainController() {
+  Direction& d = to_drives_;
+  const bool stamp = options_.measure_latency && !d.skip_stamps && have_drives_;
+  d.skip_stamps = false;
+  for (int i = 0; i < kFrameBudget; ++i) {
+    CanFrame f;
+    if (!controller_.Receive(&f)) break;
+    const uint64_t t_read = clock_.NowNs();
+    const uint64_t k_rx = stamp ? KernelStampNs(controller_.fd()) : 0;
+    const gateway::Route route = app_->OnControllerFrame(f);
+    if (route != gateway::Route::kForward || !have_drives_ || !options_.measure_latency) continue;
+    const uint64_t t_done = clock_.NowNs();
+    const uint64_t r_done = RealtimeNs();
+    d.in_process.Add(t_done - t_read);
+    if (k_rx != 0 && r_done >= k_rx && drives_.pending_tx() == 0) {
+      d.kernel_to_write.Add(r_done - k_rx);
+    } else {
+      ++d.unstamped;
+    }
+  }
+  if (app_->node_pending()) app_->Poll();  // answer SDO requests at once
+}
+
+void Runner::DrainDrives() {
+  Direction& d = to_controller_;
+  const bool stamp = options_.measure_latency && !d.skip_stamps;
+  d.skip_stamps = false;
+  for (int i = 0; i < kFrameBudget; ++i) {
+    CanFrame f;
+    if (!drives_.Receive(&f)) break;
+    const uint64_t t_read = clock_.NowNs();
+    const uint64_t k_rx = stamp ? KernelStampNs(drives_.fd()) : 0;
+    const gateway::Route route = app_->OnDriveFrame(f);
+    if (route != gateway::Route::kForward || !options_.measure_latency) continue;
+    const uint64_t t_done = clock_.NowNs();
+    const uint64_t r_done = RealtimeNs();
+    d.in_process.Add(t_done - t_read);
+    if (k_rx != 0 && r_done >= k_rx && controller_.pending_tx() == 0) {
+      d.kernel_to_write.Add(r_done - k_rx);
+    } else {
+      ++d.unstamped;
+    }
+  }
+}
+
+void Runner::OnTimer() {
+  const uint64_t n = timer_.Take();
+  if (n == 0) return;
+  if (n > 1) late_ticks_ += n - 1;
+  const uint64_t run = n < kMaxCatchUpTicks ? n : kMaxCatchUpTicks;
+  skipped_ticks_ += n - run;
+  for (uint64_t i = 0; i < run; ++i) {
+    const uint64_t t0 = clock_.NowNs();
+    app_->Tick();
+    const uint64_t dt = clock_.NowNs() - t0;
+    max_tick_ns_ = dt > max_tick_ns_ ? dt : max_tick_ns_;
+  }
+  ticks_ += run;
+  const uint64_t now = clock_.NowNs();
+  if (now >= next_io_ns_) {
+    io_->Refresh(now);
+    next_io_ns_ = now + uint64_t{config_.io_poll_ms} * 1000000u;
+  }
+  app_->Poll();
+  // Frames deferred by ENOBUFS pacing: flush them (Service() also reads waiting frames into the
+  // port's queue, whose kernel timestamps are then unknown).
+  if (controller_.pending_tx() != 0) {
+    controller_.Service();
+    to_drives_.skip_stamps = true;
+  }
+  if (have_drives_ && drives_.pending_tx() != 0) {
+    drives_.Service();
+    to_controller_.skip_stamps = true;
+  }
+  if (stop_at_ns_ != 0 && now >= stop_at_ns_) stop_ = true;
+}
+
+void Runner::Shutdown() {
+  // Outputs inactive: the board is no longer compensating or ready.
+  io_->Write(hal::OutputLine::kCompensating, false);
+  io_->Write(hal::OutputLine::kReady, false);
+  for (int i = 0; i < 100 && (controller_.pending_tx() != 0 ||
+                              (have_drives_ && drives_.pending_tx() != 0));
+       ++i) {
+    controller_.Service();
+    if (have_drives_) drives_.Service();
+    usleep(1000);
+  }
+}
+
+void Runner::Report() {
+  const gateway::GatewayCounters& g = app_->gateway().counters();
+  const GatewayAppCounters& a = app_->counters();
+  const double run_s = static_cast<double>(clock_.NowNs() - started_ns_) * 1e-9;
+  std::fprintf(stderr,
+               "volcomp-fw-linux: stopped%s after %.1f s: %llu ticks (%llu late, %llu skipped), "
+               "longest tick %llu ns\n",
+               stop_signal_ != 0 ? " by signal" : "", run_s,
+               static_cast<unsigned long long>(ticks_),
+               static_cast<unsigned long long>(late_ticks_),
+               static_cast<unsigned long long>(skipped_ticks_),
+               static_cast<unsigned long long>(max_tick_ns_));
+  std::fprintf(stderr,
+               "  frames: %u from controller (%u to drives, %u for the node, %u SYNC), %u from "
+               "drives (%u to controller, %u conflicts); targets corrected %u, actuals corrected "
+               "%u, short PDOs %u, send failures %u\n",
+               g.from_controller, a.forwarded_to_drives, g.local, g.syncs, g.from_drives,
+               a.forwarded_to_controller, g.conflicts, g.targets_corrected, g.actuals_corrected,
+               g.short_pdos, a.send_failures);
+  if (have_drives_ && options_.measure_latency) {
+    std::fprintf(stderr, "  latency controller->drives, kernel rx -> forwarded write: %s\n",
+                 to_drives_.kernel_to_write.Summary().c_str());
+    std::fprintf(stderr, "  latency controller->drives, in process: %s\n",
+                 to_drives_.in_process.Summary().c_str());
+    std::fprintf(stderr, "  latency drives->controller, kernel rx -> forwarded write: %s\n",
+                 to_controller_.kernel_to_write.Summary().c_str());
+    std::fprintf(stderr, "  latency drives->controller, in process: %s\n",
+                 to_controller_.in_process.Summary().c_str());
+  }
+  if (options_.stats_file.empty()) return;
+  std::ofstream f(options_.stats_file, std::ios::trunc);
+  auto dir = [](const Direction& d) {
+    return "{\"kernel_to_write\":" + d.kernel_to_write.Json() +
+           ",\"in_process\":" + d.in_process.Json() +
+           ",\"unstamped\":" + std::to_string(d.unstamped) + "}";
+  };
+  f << "{\"run_s\":" << run_s << ",\"ticks\":" << ticks_ << ",\"late_ticks\":" << late_ticks_
+    << ",\"skipped_ticks\":" << skipped_ticks_ << ",\"max_tick_ns\":" << max_tick_ns_ << ",\"from_controller\":" << g.from_controller
+    << ",\"from_drives\":" << g.from_drives << ",\"forwarded_to_drives\":" << a.forwarded_to_drives
+    << ",\"forwarded_to_controller\":" << a.forwarded_to_controller << ",\"local\":" << g.local
+    << ",\"syncs\":" << g.syncs << ",\"targets_corrected\":" << g.targets_corrected
+    << ",\"actuals_corrected\":" << g.actuals_corrected << ",\"short_pdos\":" << g.short_pdos
+    << ",\"conflicts\":" << g.conflicts << ",\"send_failures\":" << a.send_failures
+    << ",\"controller_to_drives\":" << dir(to_drives_)
+    << ",\"drives_to_controller\":" << dir(to_controller_) << "}\n";
+}
+
+int Runner::Run() {
+  if (!Open()) return 1;
+  started_ns_ = clock_.NowNs();
+  if (options_.duration_s > 0) {
+    stop_at_ns_ = started_ns_ + static_cast<uint64_t>(options_.duration_s * 1e9);
+  }
+  const int ep = epoll_create1(EPOLL_CLOEXEC);
+  if (ep < 0) {
+    std::fprintf(stderr, "volcomp-fw-linux: epoll_create1: %s\n", std::strerror(errno));
+    return 1;
+  }
+  enum : uint64_t { kController = 1, kDrives, kTimer, kSignal };
+  auto watch = [&](int fd, uint64_t tag) {
+    epoll_event ev{};
+    ev.events = EPOLLIN;
+    ev.data.u64 = tag;
+    return epoll_ctl(ep, EPOLL_CTL_ADD, fd, &ev) == 0;
+  };
+  if (!watch(controller_.fd(), kController) || (have_drives_ && !watch(drives_.fd(), kDrives)) ||
+      !watch(timer_.fd(), kTimer) || !watch(signal_.fd(), kSignal)) {
+    std::fprintf(stderr, "volcomp-fw-linux: epoll_ctl: %s\n", std::strerror(errno));
+    close(ep);
+    return 1;
+  }
+  if (!options_.ready_file.empty()) {
+    std::ofstream(options_.ready_file, std::ios::trunc) << getpid() << "\n";
+  }
+  while (!stop_) {
+    epoll_event events[8];
+    const int n = epoll_wait(ep, events, 8, -1);
+    if (n < 0) {
+      if (errno == EINTR) continue;
+      std::fprintf(stderr, "volcomp-fw-linux: epoll_wait: %s\n", std::strerror(errno));
+      break;
+    }
+    for (int i = 0; i < n; ++i) {
+      switch (events[i].data.u64) {
+        case kController: DrainController(); break;
+        case kDrives: DrainDrives(); break;
+        case kTimer: OnTimer(); break;
+        case kSignal:
+          stop_signal_ = signal_.Take();
+          stop_ = true;
+          break;
+        default: break;
+      }
+    }
+  }
+  close(ep);
+  Shutdown();
+  Report();
+  return 0;
+}
+
+}  // namespace
+
+int RunLinuxBoard(const LinuxBoardConfig& config, const RunOptions& options) {
+  Runner runner(config, options);
+  return runner.Run();
+}
+
+}  // namespace volcomp::fw_linux

@@ -1,0 +1,64 @@
+// STM32G474 reference board: the board application on the register-level HAL.
+//   tick    TIM6 update interrupt at BoardConfig::tick_hz (highest priority): BoardApp::Tick()
+//   main    BoardApp::Poll() in a loop (slow lines, CANopen), watchdog refresh
+// The tick path and the application object run from CCM SRAM (stm32g474re.ld).
+#include <cstdint>
+
+#include "cm4_runtime.hpp"
+#include "volcomp/firmware/board_app.hpp"
+#include "volcomp/hal/stm32g4/drivers.hpp"
+
+namespace {
+
+using volcomp::stm32g4::StepIo;
+using App = volcomp::firmware::BoardApp<StepIo>;
+
+// The reference board: X, Y on 32-bit input timers (TIM2, TIM5), Z on a 16-bit one (TIM3);
+// output timers count at SYSCLK.
+volcomp::firmware::BoardSettings BoardDefaults() {
+  volcomp::firmware::BoardSettings s;
+  s.board = volcomp::DefaultBoardConfig();
+  s.board.pulse_clock_hz = volcomp::stm32g4::kSysclkHz;
+  s.board.axis[2].input_counter_bits = 16;
+  return s;
+}
+
+StepIo g_step_io;
+volcomp::stm32g4::StmSlowIo g_io;
+volcomp::stm32g4::StmFlash g_tables(volcomp::stm32g4::layout::kTableOffset,
+                                    volcomp::stm32g4::layout::kTableBytes);
+volcomp::stm32g4::StmFlash g_settings(volcomp::stm32g4::layout::kConfigOffset,
+                                      volcomp::stm32g4::layout::kConfigBytes);
+volcomp::stm32g4::StmFdcan g_can;
+volcomp::stm32g4::CycleClock g_clock;
+
+// The application (the tick's data) in CCM SRAM next to the tick code.
+__attribute__((section(".ccm_bss")))
+App g_app({&g_step_io, &g_io, &g_tables, &g_settings, &g_can, &g_clock});
+
+}  // namespace
+
+// The control tick (vector TIM6_DAC), placed in CCM SRAM through its section name.
+extern "C" __attribute__((section(".volcomp_hot.tick_isr"))) void volcomp_tick_isr() {
+  volcomp::stm32g4::TickTimerAcknowledge();
+  g_app.Tick();
+}
+
+int main() {
+  if (!volcomp::stm32g4::ConfigureSystemClock().ok()) volcomp_runtime_panic();
+  g_clock.Init();
+  g_io.Init();
+  const volcomp::firmware::BoardSettings defaults = BoardDefaults();
+  volcomp::firmware::AppOptions options;
+  options.table_bank_size = volcomp::stm32g4::layout::kTableBankBytes;
+  // A bad configuration leaves the board in pass-through with FAULT set; keep serving CAN.
+  if (g_step_io.Init(defaults.board).ok() && g_can.Init(1000000u).ok()) {
+    g_app.Start(defaults, options).IgnoreError();  // status is reported on the FAULT line
+  }
+  volcomp::stm32g4::Iwdg::Start(100);
+  volcomp::stm32g4::StartTickTimer(defaults.board.tick_hz, 0).IgnoreError();
+  for (;;) {
+    g_app.Poll();
+    volcomp::stm32g4::Iwdg::Refresh();
+  }
+}

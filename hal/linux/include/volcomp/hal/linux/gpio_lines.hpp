@@ -1,0 +1,68 @@
+// The board's slow lines on Linux GPIO: which chip line each hal::SlowIo line is wired to, and the
+// backend interface that reads and drives them (libgpiod on a real board, a fake for tests and
+// development machines without GPIO).
+//
+// Line names (configuration file keys, fake-GPIO state file keys):
+//   inputs   home0 .. home5 (home switch of axis 0..5), enable, estop, drive_alarm, write_enable
+//   outputs  ready, compensating, fault
+// A line spec is "CHIP:OFFSET [flags]" (CHIP: anything gpiod_chip_open_lookup() accepts:
+// gpiochip0, /dev/gpiochip0, 0, or a chip label) or "NAME [flags]" (a line name from the device
+// tree, found with gpiod_line_find()). Flags: active-low, pull-up, pull-down, bias-disable.
+// Levels are logical everywhere: true = active (after active-low inversion).
+//
+// Thread-safety: backends are used from one thread (the main loop).
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+#include "volcomp/hal/slow_io.hpp"
+
+namespace volcomp::hal::linux_board {
+
+inline constexpr int kInputLineCount = static_cast<int>(InputLine::kCount);
+inline constexpr int kOutputLineCount = static_cast<int>(OutputLine::kCount);
+
+enum class Bias : uint8_t { kAsIs, kDisable, kPullUp, kPullDown };
+
+struct GpioLineSpec {
+  bool used = false;
+  std::string chip;       // empty: look the line up by `line_name`
+  unsigned offset = 0;
+  std::string line_name;  // used when `chip` is empty
+  bool active_low = false;
+  Bias bias = Bias::kAsIs;
+};
+
+struct GpioConfig {
+  GpioLineSpec input[kInputLineCount];
+  GpioLineSpec output[kOutputLineCount];
+  std::string consumer = "volcomp";  // shown by gpioinfo
+};
+
+/// Parses a line spec (see above). Returns "" or what is wrong with `text`.
+std::string ParseGpioLineSpec(const std::string& text, GpioLineSpec* out);
+/// The spec back as text ("gpiochip0:17 active-low pull-up").
+std::string FormatGpioLineSpec(const GpioLineSpec& spec);
+
+const char* InputLineName(InputLine line);
+const char* OutputLineName(OutputLine line);
+/// Looks a name up; false when it names no line.
+bool InputLineFromName(const std::string& name, InputLine* line);
+bool OutputLineFromName(const std::string& name, OutputLine* line);
+
+class GpioBackend {
+ public:
+  virtual ~GpioBackend() = default;
+  /// Requests the configured lines. Returns "" or a message naming the line and the cause.
+  virtual std::string Open(const GpioConfig& config) = 0;
+  /// Reads every input into levels[0 .. kInputLineCount) (unconfigured lines: false). Returns ""
+  /// or the error (levels then keep their previous values).
+  virtual std::string ReadInputs(bool* levels) = 0;
+  /// Drives an output (unconfigured outputs are ignored). Returns "" or the error.
+  virtual std::string WriteOutput(OutputLine line, bool active) = 0;
+  /// "libgpiod 1.6.3", "fake", ...
+  virtual std::string Describe() const = 0;
+};
+
+}  // namespace volcomp::hal::linux_board

@@ -1,0 +1,79 @@
+// volcomp::hal::CanPort on a Linux SocketCAN interface (the firmware's CAN port when the board
+// application runs on a Linux board or inside user-mode-linux on vcan0).
+//
+// Send() never blocks: frames go to a bounded software queue that is flushed to the socket on
+// every Send()/Receive()/Service() call. When the interface queue is full (ENOBUFS, CAN netdevs
+// default to txqueuelen 10) the port stops writing for `enobufs_backoff` and retries, so a burst
+// is paced instead of lost. Error frames are counted and tracked into bus_state(); on bus-off the
+// port asks the kernel to restart the controller (rtnetlink; needs CAP_NET_ADMIN, at most once per
+// `restart_interval`). While bus-off, Send() keeps queueing (kFull once the queue is full), so the
+// traffic resumes after a restart.
+//
+// Thread-safety: main-loop use from one thread, like every CanPort.
+#pragma once
+
+#include <chrono>
+#include <cstdint>
+#include <deque>
+#include <string>
+
+#include "volcomp/hal/can.hpp"
+#include "volcomp/hal/linux/socketcan_socket.hpp"
+
+namespace volcomp::hal::socketcan {
+
+class SocketCanPort final : public CanPort {
+ public:
+  struct Options {
+    SocketCanSocket::Options socket;
+    size_t tx_capacity = 256;  // frames waiting in software
+    std::chrono::microseconds enobufs_backoff{200};
+    bool restart_on_bus_off = true;
+    std::chrono::milliseconds restart_interval{1000};
+  };
+  struct Counters {
+    uint64_t tx_frames = 0;     // written to the socket
+    uint64_t rx_frames = 0;     // data/remote frames received
+    uint64_t error_frames = 0;  // error frames received
+    uint64_t enobufs = 0;       // writes deferred because the interface queue was full
+    uint64_t tx_dropped = 0;    // frames dropped after a hard write error
+    uint64_t bus_off = 0;       // bus-off events
+    uint64_t restarts = 0;      // restart requests the kernel accepted
+  };
+
+  SocketCanPort() = default;
+  ~SocketCanPort() = default;
+
+  /// Opens and binds the socket. kIoError when it fails; last_error() says why.
+  Status Open(const std::string& iface, const Options& options);
+  Status Open(const std::string& iface) { return Open(iface, Options()); }
+  bool is_open() const { return socket_.is_open(); }
+  /// Flushes queued frames and reads pending error frames (call from the main loop when idle).
+  void Service();
+
+  BusState bus_state() const { return state_; }
+  const Counters& counters() const { return counters_; }
+  size_t pending_tx() const { return tx_.size(); }
+  /// The last error text (open failure, write error, restart failure, error frame).
+  const std::string& last_error() const { return last_error_; }
+  int fd() const { return socket_.fd(); }
+
+ private:
+  Status DoSend(const CanFrame& frame) override;
+  bool DoReceive(CanFrame* frame) override;
+  void Flush();
+  void OnError(const CanErrorInfo& info);
+
+  using Clock = std::chrono::steady_clock;
+  Options options_;
+  SocketCanSocket socket_;
+  std::deque<CanFrame> tx_;
+  std::deque<CanFrame> rx_;  // data frames read while looking for error frames in Service()
+  Clock::time_point retry_at_{};
+  Clock::time_point last_restart_{};
+  BusState state_ = BusState::kErrorActive;
+  Counters counters_;
+  std::string last_error_;
+};
+
+}  // namespace volcomp::hal::socketcan

@@ -1,0 +1,107 @@
+// Pure computations behind the STM32G474 drivers (no register access, host-tested in
+// tests/stm32g4/): PLL and flash wait states, FDCAN bit timing, the flash layout, and the timer
+// settings that execute one PulsePlan.
+#pragma once
+
+#include <cstdint>
+
+#include "volcomp/status.hpp"
+#include "volcomp/step_generator.hpp"
+
+namespace volcomp::stm32g4 {
+
+// ---- System clock (RM0440 §7.2.4 PLL, §3.3.3 Table 9 wait states)
+// --------------------------------
+struct PllConfig {
+  uint32_t m = 1;  // input divider 1..16: f_in / m must be 2.66..16 MHz
+  uint32_t n = 8;  // multiplier 8..127: VCO = f_in / m * n must be 96..344 MHz
+  uint32_t r = 2;  // SYSCLK divider 2, 4, 6 or 8
+  uint32_t q = 2;  // FDCAN/USB divider (PLLQ) 2, 4, 6 or 8
+  uint32_t sysclk_hz = 0;
+};
+
+/// Finds M, N, R giving exactly `target_hz` from `input_hz` (HSI16 or HSE), preferring the
+/// lowest VCO input divider; kConfigInvalid when no exact combination exists.
+Result<PllConfig> ComputePll(uint32_t input_hz, uint32_t target_hz);
+
+/// Flash wait states for HCLK (Table 9: Range 1 boost mode, 34 MHz per wait state up to 170 MHz;
+/// Range 1 normal mode 30 MHz per wait state up to 150 MHz).
+uint32_t FlashWaitStates(uint32_t hclk_hz, bool boost_mode);
+
+// ---- FDCAN nominal bit timing (RM0440 §44.3.5; classic CAN)
+// ----------------------------------------
+struct CanBitTiming {
+  uint32_t prescaler = 1;  // NBRP + 1 (1..512)
+  uint32_t tseg1 = 1;      // NTSEG1 + 1 (2..256): propagation + phase segment 1, in tq
+  uint32_t tseg2 = 1;      // NTSEG2 + 1 (1..128), in tq
+  uint32_t sjw = 1;        // NSJW + 1 (1..128)
+  uint32_t nbtp() const {
+    return ((sjw - 1u) << 25) | ((prescaler - 1u) << 16) | ((tseg1 - 1u) << 8) | (tseg2 - 1u);
+  }
+};
+
+/// Exact bit rate from `kernel_hz` with the sample point closest to `sample_permille` (e.g. 875),
+/// 8..25 time quanta per bit; kConfigInvalid when the rate is not reachable exactly.
+Result<CanBitTiming> ComputeCanBitTiming(uint32_t kernel_hz,
+                                         uint32_t bitrate,
+                                         uint32_t sample_permille);
+
+// ---- Flash layout of the reference board (RM0440 §3.3.1: dual-bank mode, 2 KB pages) ------------
+namespace layout {
+inline constexpr uint32_t kPageBytes = 2048;
+inline constexpr uint32_t kBankBytes = 256u * 1024u;  // flash bank 1 at 0x08000000, bank 2 above
+inline constexpr uint32_t kAppOffset = 0;
+inline constexpr uint32_t kAppBytes = 76u * 1024u;
+inline constexpr uint32_t kConfigOffset = kAppOffset + kAppBytes;  // settings store, 2 pages
+inline constexpr uint32_t kConfigBytes = 2u * kPageBytes;
+/// Table store: bank A fills the rest of flash bank 1, bank B the start of flash bank 2, so
+/// staging (erasing, programming) one never stalls the tick reading the other: the flash banks
+/// read while the other writes (RM0440 §3.3.1). 176 KB holds a 31 x 31 x 31 int16 grid.
+inline constexpr uint32_t kTableBankBytes = 88u * kPageBytes;
+inline constexpr uint32_t kTableOffset = kConfigOffset + kConfigBytes;
+inline constexpr uint32_t kTableBankBOffset = kBankBytes;
+/// The table store region (what the firmware's dual-bank store sees): bank A, then bank B.
+/// Bank B starts the second flash bank, so the region includes no gap: A ends where bank 2 begins.
+inline constexpr uint32_t kTableBytes = 2u * kTableBankBytes;
+inline constexpr uint32_t kReservedOffset = kTableBankBOffset + kTableBankBytes;
+inline constexpr uint32_t kFlashBytes = 512u * 1024u;
+static_assert(kTableOffset + kTableBankBytes == kBankBytes, "bank A must end with flash bank 1");
+static_assert(kTableOffset + kTableBankBytes == kTableBankBOffset, "the banks must be contiguous");
+static_assert(kReservedOffset <= kFlashBytes, "layout exceeds the flash");
+}  // namespace layout
+
+/// Flash bank (0 or 1) and page number within it of a flash offset (dual-bank mode).
+struct FlashPage {
+  uint32_t bank = 0;
+  uint32_t page = 0;
+};
+inline FlashPage PageOf(uint32_t flash_offset) {
+  return {flash_offset / layout::kBankBytes,
+          (flash_offset % layout::kBankBytes) / layout::kPageBytes};
+}
+
+// ---- Pulse output timer settings for one PulsePlan ----------------------------------------------
+/// How a timer in PWM mode 2 with one-pulse mode and a repetition counter produces a plan: the
+/// counter starts at the tick boundary (slave trigger from the tick timer); the first period is
+/// ARR = first_rise + width - 1 with CCR = first_rise (rise at first_rise, fall at the update),
+/// the following periods ARR = period - 1, CCR = period - width (loaded from the preload registers
+/// at the first update); RCR = count - 1 stops the counter after `count` pulses. The direction
+/// line is a second channel set/cleared on match at dir_edge (repeated matches keep its level).
+struct PulseTimerSettings {
+  bool run = false;        // false: no pulse and no direction change this tick
+  bool pulse = false;      // false: only the direction edge (pulse channel disabled)
+  uint32_t first_arr = 0;  // first period
+  uint32_t first_ccr = 0;
+  uint32_t arr = 0;  // following periods
+  uint32_t ccr = 0;
+  uint32_t rcr = 0;      // repetitions - 1
+  uint32_t dir_ccr = 0;  // direction edge compare value
+  bool dir_change = false;
+  bool negative = false;
+};
+
+/// Timer settings for `plan` with a `counter_bits`-wide counter (16 for TIM1/8/15); `tick` is the
+/// tick length in timer clocks. kConfigInvalid if the plan does not fit the timer.
+Result<PulseTimerSettings> PlanToTimer(const PulsePlan& plan, uint32_t tick, uint32_t counter_bits);
+
+}  // namespace volcomp::stm32g4

@@ -1,0 +1,123 @@
+// STM32G474 backends of the volcomp HAL, register level (registers.hpp, RM0440):
+//   StepIo       input counters in timer encoder / clock+direction modes, pulse outputs from
+//                timers in PWM mode 2 + one-pulse mode + repetition counter, started by the tick
+//                timer's trigger output (ReadCounters / Apply: the static StepIo interface).
+//   StmSlowIo    GPIO lines (hal::SlowIo).
+//   StmFlash     a region of main flash (hal::Flash): 2 KB page erase, double-word programming.
+//   StmFdcan     FDCAN1 in classic CAN mode (hal::CanPort), Rx FIFO 0, Tx FIFO queue.
+//   CycleClock   monotonic time from the DWT cycle counter (hal::Clock).
+//   Iwdg         the independent watchdog.
+// Clock tree and tick timer setup are free functions. Everything here is for the main loop except
+// StepIo::ReadCounters/Apply, which the tick ISR calls (and which live in CCM SRAM).
+#pragma once
+
+#include <cstdint>
+
+#include "volcomp/board_config.hpp"
+#include "volcomp/hal/can.hpp"
+#include "volcomp/hal/clock.hpp"
+#include "volcomp/hal/flash.hpp"
+#include "volcomp/hal/slow_io.hpp"
+#include "volcomp/hal/stm32g4/config_math.hpp"
+#include "volcomp/step_generator.hpp"
+
+namespace volcomp::stm32g4 {
+
+inline constexpr uint32_t kSysclkHz = 170000000u;
+
+/// HSI16 -> PLL (M=4, N=85, R=2) -> 170 MHz SYSCLK, Range 1 boost mode, 4 flash wait states with
+/// prefetch and caches, APB1 = APB2 = 170 MHz (RM0440 §7.2.7 clock switching sequence above
+/// 80 MHz: AHB /2 for the switch, then /1).
+Status ConfigureSystemClock();
+
+/// A pin: port (0 = A, 1 = B, ...) and number.
+struct Pin {
+  uint8_t port;
+  uint8_t pin;
+};
+/// Alternate-function pin, very high speed, no pull.
+void ConfigureAfPin(Pin p, uint32_t af);
+void ConfigureInputPin(Pin p, bool pull_up);
+void ConfigureOutputPin(Pin p, bool level);
+
+/// Timer tick at `tick_hz` (TIM6, update interrupt and TRGO = update); the ISR calls
+/// TickTimerAcknowledge() first. Starts counting.
+Status StartTickTimer(uint32_t tick_hz, uint32_t irq_priority);
+void TickTimerAcknowledge();
+
+/// Step inputs and outputs of up to three axes (X, Y, Z; see docs/mcu-target.md for pins).
+class StepIo {
+ public:
+  static constexpr uint8_t kAxes = 3;
+  /// Configures input and output timers for `config` (formats, counter widths); the output
+  /// timers count at SYSCLK, so config.pulse_clock_hz must equal kSysclkHz.
+  Status Init(const BoardConfig& config);
+  void ReadCounters(uint32_t* counters);
+  void Apply(const PulsePlan* plans);
+  /// Plans the hardware could not execute (0 in a correct configuration).
+  uint32_t rejected_plans() const { return rejected_; }
+
+ private:
+  uint8_t axes_ = 0;
+  uint32_t tick_clocks_ = 0;
+  uint32_t rejected_ = 0;
+  bool cw_ccw_[kAxes] = {};
+};
+
+class StmSlowIo final : public hal::SlowIo {
+ public:
+  void Init();
+
+ private:
+  bool DoRead(hal::InputLine line) override;
+  void DoWrite(hal::OutputLine line, bool level) override;
+};
+
+/// `size` bytes of main flash from `offset` (page aligned), e.g. layout::kTableOffset.
+class StmFlash final : public hal::Flash {
+ public:
+  StmFlash(uint32_t offset, uint32_t size) : offset_(offset), size_(size) {}
+
+ private:
+  uint32_t DoSize() const override { return size_; }
+  uint32_t DoSectorSize() const override { return layout::kPageBytes; }
+  uint32_t DoProgramUnit() const override { return 8; }
+  Status DoErase(uint32_t offset) override;
+  Status DoProgram(uint32_t offset, const uint8_t* data, uint32_t bytes) override;
+  const uint8_t* DoMap(uint32_t offset) const override;
+
+  uint32_t offset_;
+  uint32_t size_;
+};
+
+class StmFdcan final : public hal::CanPort {
+ public:
+  /// FDCAN1 on PA11 (RX) / PA12 (TX), kernel clock PCLK1, classic CAN at `bitrate`; every frame
+  /// is accepted into Rx FIFO 0 (filtering is the protocol's job). kConfigInvalid if the bit rate
+  /// is not reachable.
+  Status Init(uint32_t bitrate);
+  bool bus_off() const;
+
+ private:
+  Status DoSend(const hal::CanFrame& frame) override;
+  bool DoReceive(hal::CanFrame* frame) override;
+};
+
+class CycleClock final : public hal::Clock {
+ public:
+  void Init();
+
+ private:
+  uint64_t DoNowNs() override;
+  uint32_t last_ = 0;
+  uint64_t high_ = 0;
+};
+
+class Iwdg {
+ public:
+  /// Starts the watchdog (LSI 32 kHz / 32): reset after `timeout_ms` (1..4095) without Refresh().
+  static void Start(uint32_t timeout_ms);
+  static void Refresh();
+};
+
+}  // namespace volcomp::stm32g4

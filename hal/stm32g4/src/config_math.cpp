@@ -1,0 +1,92 @@
+// Pure computations behind the STM32G474 drivers (host-tested).
+#include "volcomp/hal/stm32g4/config_math.hpp"
+
+namespace volcomp::stm32g4 {
+
+Result<PllConfig> ComputePll(uint32_t input_hz, uint32_t target_hz) {
+  for (uint32_t m = 1; m <= 16; ++m) {
+    const uint32_t ref = input_hz / m;
+    if (ref * m != input_hz || ref < 2660000u || ref > 16000000u) continue;
+    for (uint32_t r = 2; r <= 8; r += 2) {
+      const uint64_t vco = static_cast<uint64_t>(target_hz) * r;
+      if (vco % ref != 0) continue;
+      const uint64_t n = vco / ref;
+      if (n < 8 || n > 127 || vco < 96000000u || vco > 344000000u) continue;
+      PllConfig c;
+      c.m = m;
+      c.n = static_cast<uint32_t>(n);
+      c.r = r;
+      c.q = r;
+      c.sysclk_hz = target_hz;
+      return c;
+    }
+  }
+  return Error::kConfigInvalid;
+}
+
+uint32_t FlashWaitStates(uint32_t hclk_hz, bool boost_mode) {
+  const uint32_t per_ws = boost_mode ? 34000000u : 30000000u;
+  return hclk_hz == 0 ? 0 : (hclk_hz - 1u) / per_ws;
+}
+
+Result<CanBitTiming> ComputeCanBitTiming(uint32_t kernel_hz,
+                                         uint32_t bitrate,
+                                         uint32_t sample_permille) {
+  if (bitrate == 0) return Error::kConfigInvalid;
+  bool found = false;
+  CanBitTiming best;
+  uint32_t best_err = ~0u;
+  for (uint32_t tq = 25; tq >= 8; --tq) {  // more quanta first: finer sample point
+    const uint64_t clocks = static_cast<uint64_t>(bitrate) * tq;
+    if (kernel_hz % clocks != 0) continue;
+    const uint32_t prescaler = static_cast<uint32_t>(kernel_hz / clocks);
+    if (prescaler < 1 || prescaler > 512) continue;
+    // Sample point = (1 + tseg1) / tq; tseg2 >= 1.
+    uint32_t tseg1 = (sample_permille * tq + 500u) / 1000u;
+    tseg1 = tseg1 < 2 ? 1 : tseg1 - 1u;
+    if (tseg1 > tq - 2u) tseg1 = tq - 2u;
+    const uint32_t tseg2 = tq - 1u - tseg1;
+    const uint32_t sp = (1000u * (1u + tseg1)) / tq;
+    const uint32_t err = sp > sample_permille ? sp - sample_permille : sample_permille - sp;
+    if (err < best_err) {
+      best = {prescaler, tseg1, tseg2, tseg2 < 4 ? tseg2 : 4u};
+      best_err = err;
+      found = true;
+    }
+  }
+  if (!found) return Error::kConfigInvalid;
+  return best;
+}
+
+Result<PulseTimerSettings> PlanToTimer(const PulsePlan& plan,
+                                       uint32_t tick,
+                                       uint32_t counter_bits) {
+  const uint64_t max = (uint64_t{1} << counter_bits) - 1u;
+  PulseTimerSettings s;
+  s.negative = plan.negative;
+  s.dir_change = plan.dir_change;
+  if (plan.count == 0 && !plan.dir_change) return s;
+  s.run = true;
+  s.dir_ccr = plan.dir_edge;
+  if (plan.count == 0) {
+    // Only the direction edge: one period covering it, no pulse.
+    s.first_arr = s.arr = plan.dir_edge + 1u;
+    s.first_ccr = s.ccr = 0;
+    s.rcr = 0;
+    if (s.first_arr > max || s.first_arr > tick) return Error::kConfigInvalid;
+    return s;
+  }
+  if (plan.width == 0 || plan.period <= plan.width || plan.count > 256u) {
+    return Error::kConfigInvalid;
+  }
+  s.pulse = true;
+  s.first_ccr = plan.first_rise;
+  s.first_arr = plan.first_rise + plan.width - 1u;
+  s.arr = plan.period - 1u;
+  s.ccr = plan.period - plan.width;
+  s.rcr = plan.count - 1u;
+  if (s.first_arr > max || s.arr > max) return Error::kConfigInvalid;
+  return s;
+}
+
+}  // namespace volcomp::stm32g4

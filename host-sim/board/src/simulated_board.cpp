@@ -1,0 +1,86 @@
+// The firmware on the mock HAL on a simulated bus, in virtual time.
+#include "volcomp/sim/simulated_board.hpp"
+
+#include <fstream>
+#include <iterator>
+
+namespace volcomp::sim {
+
+SimulatedBoard::SimulatedBoard(SimBus& bus, const SimulatedBoardOptions& options)
+    : options_(options),
+      endpoint_(bus.Attach("board")),
+      io_(&clock_, nullptr),
+      table_flash_(options.table_flash_bytes, options.flash_sector_bytes, 8, &clock_, nullptr),
+      settings_flash_(
+          options.settings_flash_bytes, options.flash_sector_bytes, 8, &clock_, nullptr),
+      can_(endpoint_, 64) {
+  step_io_ = std::make_unique<hal::mock::MockStepIo>(options.settings.board, nullptr);
+  app_ = std::make_unique<firmware::BoardApp<hal::mock::MockStepIo>>(
+      firmware::BoardApp<hal::mock::MockStepIo>::Devices{step_io_.get(), &io_, &table_flash_,
+                                                         &settings_flash_, &can_, &clock_});
+  tick_ns_ = 1000000000ull / options.settings.board.tick_hz;
+}
+
+SimulatedBoard::~SimulatedBoard() = default;
+
+void SimulatedBoard::LoadFlash() {
+  if (options_.flash_dir.empty()) return;
+  for (auto [flash, name] :
+       {std::pair{&table_flash_, "tables.bin"}, std::pair{&settings_flash_, "settings.bin"}}) {
+    std::ifstream f(options_.flash_dir + "/" + name, std::ios::binary);
+    if (!f) continue;
+    std::vector<uint8_t> bytes((std::istreambuf_iterator<char>(f)), {});
+    if (bytes.size() == flash->raw().size()) flash->raw() = bytes;
+  }
+}
+
+void SimulatedBoard::SaveFlash() const {
+  if (options_.flash_dir.empty()) return;
+  for (auto [flash, name] :
+       {std::pair{&table_flash_, "tables.bin"}, std::pair{&settings_flash_, "settings.bin"}}) {
+    std::ofstream f(options_.flash_dir + "/" + name, std::ios::binary | std::ios::trunc);
+    const auto& raw = const_cast<hal::mock::MockFlash*>(flash)->raw();
+    f.write(reinterpret_cast<const char*>(raw.data()), static_cast<std::streamsize>(raw.size()));
+  }
+}
+
+Status SimulatedBoard::Start() {
+  LoadFlash();
+  if (options_.initial_table_flash.size() == table_flash_.raw().size()) {
+    table_flash_.raw() = options_.initial_table_flash;
+  }
+  io_.SetInput(hal::InputLine::kEnable, options_.enable_input);
+  io_.SetInput(hal::InputLine::kWriteEnable, options_.write_enable_input);
+  clock_.Set(now_ns_);
+  firmware::AppOptions app;
+  app.identity.hardware_version = "simulator";
+  const Status s = app_->Start(options_.settings, app);
+  next_tick_ns_ = now_ns_;
+  next_poll_ns_ = now_ns_;
+  return s;
+}
+
+uint64_t SimulatedBoard::NextEventTime() const {
+  return next_tick_ns_ < next_poll_ns_ ? next_tick_ns_ : next_poll_ns_;
+}
+
+void SimulatedBoard::AdvanceTo(uint64_t t_ns) {
+  while (NextEventTime() <= t_ns) {
+    if (next_tick_ns_ <= next_poll_ns_) {
+      now_ns_ = next_tick_ns_;
+      clock_.Set(now_ns_);
+      step_io_->set_tick_start_ns(now_ns_);
+      app_->Tick();
+      next_tick_ns_ += tick_ns_;
+    } else {
+      now_ns_ = next_poll_ns_;
+      clock_.Set(now_ns_);
+      app_->Poll();
+      next_poll_ns_ += options_.poll_period_ns;
+    }
+  }
+  now_ns_ = t_ns;
+  clock_.Set(now_ns_);
+}
+
+}  // namespace volcomp::sim

@@ -1,0 +1,34 @@
+// A volcomp::hal::CanPort on a SimBus endpoint, so the firmware (which talks to a CanPort, like
+// MockCan) can sit on the simulated bus. Send() queues on the endpoint (kFull beyond
+// `tx_capacity` frames waiting, like a controller's transmit mailboxes/FIFO); Receive() pops the
+// endpoint's receive queue. Thread-safety: the bus's thread only.
+#pragma once
+
+#include <cstddef>
+
+#include "volcomp/hal/can.hpp"
+#include "volcomp/sim/sim_bus.hpp"
+
+namespace volcomp::sim {
+
+class SimBusCanPort final : public hal::CanPort {
+ public:
+  explicit SimBusCanPort(Endpoint& endpoint, size_t tx_capacity = 64)
+      : endpoint_(endpoint), tx_capacity_(tx_capacity) {}
+  ~SimBusCanPort() = default;
+
+  Endpoint& endpoint() { return endpoint_; }
+
+ private:
+  Status DoSend(const CanFrame& frame) override {
+    if (endpoint_.tx_pending() >= tx_capacity_) return Error::kFull;
+    endpoint_.Send(frame);
+    return Status::Ok();
+  }
+  bool DoReceive(CanFrame* frame) override { return endpoint_.Receive(frame); }
+
+  Endpoint& endpoint_;
+  size_t tx_capacity_;
+};
+
+}  // namespace volcomp::sim

@@ -1,0 +1,308 @@
+// The simulated CNC controller.
+#include "volcomp/sim/cnc.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace volcomp::sim {
+
+struct Cnc::Block {
+  enum class Kind { kMove, kDwell, kHome };
+  Kind kind = Kind::kMove;
+  std::array<double, 3> value_steps = {0, 0, 0};  // absolute target or distance (incremental)
+  std::array<bool, 3> has = {true, true, true};
+  bool incremental = false;
+  bool rapid = true;
+  double feed_mm_s = 0;
+  double dwell_s = 0;
+  uint8_t mask = 0;
+};
+
+struct Cnc::Move {
+  uint64_t start_ns = 0;
+  uint64_t end_ns = 0;
+  TrapezoidProfile profile{0, 1, 1};
+  std::array<int64_t, 3> n = {0, 0, 0};
+  std::array<int64_t, 3> done = {0, 0, 0};
+  std::array<int, 3> dir = {1, 1, 1};
+  std::array<uint64_t, 3> next_t = {0, 0, 0};
+
+  uint64_t StepTime(size_t a, int64_t k) const {
+    const double s = profile.length_mm() * static_cast<double>(k) / static_cast<double>(n[a]);
+    return start_ns + static_cast<uint64_t>(std::ceil(profile.TimeAt(s) * 1e9));
+  }
+};
+
+struct Cnc::Homing {
+  enum class Phase { kLeave, kFast, kPause1, kBackoff, kPause2, kSlow, kDone };
+  struct Axis {
+    Phase phase = Phase::kDone;
+    uint64_t phase_start = 0;
+    uint64_t period_ns = 0;
+    int dir = -1;
+    int64_t k = 0;
+    int64_t backoff_left = -1;  // steps still to go after the switch opened (-1: not open yet)
+  };
+  std::array<Axis, 3> axis;
+};
+
+Cnc::Cnc(const CncConfig& config, StepSink* sink, SwitchReader home_switch)
+    : config_(config), sink_(sink), switch_(std::move(home_switch)) {
+  for (double s : config_.step_mm) {
+    if (!(s > 0)) throw std::invalid_argument("cnc: step length must be > 0");
+  }
+  if (!(config_.max_step_rate_hz > 0) || !(config_.accel_mm_s2 > 0)) {
+    throw std::invalid_argument("cnc: step rate and acceleration must be > 0");
+  }
+}
+
+Cnc::~Cnc() = default;
+
+void Cnc::QueueRapid(const std::array<int64_t, 3>& target_steps) {
+  Block b;
+  for (size_t a = 0; a < 3; ++a) b.value_steps[a] = static_cast<double>(target_steps[a]);
+  queue_.push_back(b);
+}
+
+void Cnc::QueueLinear(const std::array<int64_t, 3>& target_steps, double feed_mm_s) {
+  if (!(feed_mm_s > 0)) throw std::invalid_argument("cnc: feed must be > 0");
+  Block b;
+  for (size_t a = 0; a < 3; ++a) b.value_steps[a] = static_cast<double>(target_steps[a]);
+  b.rapid = false;
+  b.feed_mm_s = feed_mm_s;
+  queue_.push_back(b);
+}
+
+void Cnc::QueueDwell(double seconds) {
+  if (!(seconds >= 0)) throw std::invalid_argument("cnc: dwell must be >= 0");
+  Block b;
+  b.kind = Block::Kind::kDwell;
+  b.dwell_s = seconds;
+  queue_.push_back(b);
+}
+
+void Cnc::QueueHome(uint8_t mask) {
+  Block b;
+  b.kind = Block::Kind::kHome;
+  b.mask = static_cast<uint8_t>(mask & 7u);
+  queue_.push_back(b);
+}
+
+void Cnc::QueueProgram(const Program& program) {
+  for (const ProgramBlock& p : program) {
+    Block b;
+    if (p.kind == ProgramBlock::Kind::kDwell) {
+      b.kind = Block::Kind::kDwell;
+      b.dwell_s = p.dwell_s;
+    } else {
+      b.rapid = p.kind == ProgramBlock::Kind::kRapid;
+      b.feed_mm_s = p.feed_mm_s;
+      b.incremental = p.incremental;
+      for (size_t a = 0; a < 3; ++a) {
+        b.has[a] = p.has[a];
+        b.value_steps[a] = p.value_mm[a] / config_.step_mm[a];
+      }
+    }
+    queue_.push_back(b);
+  }
+}
+
+double Cnc::RapidSpeed_mm_s(const std::array<int64_t, 3>& delta_steps) const {
+  double len2 = 0;
+  for (size_t a = 0; a < 3; ++a) {
+    const double d = static_cast<double>(delta_steps[a]) * config_.step_mm[a];
+    len2 += d * d;
+  }
+  const double length = std::sqrt(len2);
+  double v = INFINITY;
+  for (size_t a = 0; a < 3; ++a) {
+    if (delta_steps[a] == 0) continue;
+    v = std::min(v, config_.max_step_rate_hz * length /
+                        std::fabs(static_cast<double>(delta_steps[a])));
+  }
+  return v;
+}
+
+void Cnc::Emit(int axis, uint64_t t, int dir) {
+  count_[static_cast<size_t>(axis)] += dir;
+  ++steps_;
+  if (sink_ != nullptr) sink_->OnStep(axis, t, dir);
+}
+
+void Cnc::Start(const Block& b, uint64_t t0) {
+  active_ = std::make_unique<Block>(b);
+  if (b.kind == Block::Kind::kDwell) {
+    dwell_end_ns_ = t0 + static_cast<uint64_t>(std::llround(b.dwell_s * 1e9));
+    return;
+  }
+  if (b.kind == Block::Kind::kHome) {
+    homing_ = std::make_unique<Homing>();
+    for (size_t a = 0; a < 3; ++a) {
+      if ((b.mask & (1u << a)) == 0) continue;
+      Homing::Axis& h = homing_->axis[a];
+      h.phase = Homing::Phase::kLeave;
+      h.phase_start = t0;
+    }
+    return;
+  }
+  auto m = std::make_unique<Move>();
+  m->start_ns = t0;
+  std::array<int64_t, 3> delta = {0, 0, 0};
+  double len2 = 0;
+  for (size_t a = 0; a < 3; ++a) {
+    int64_t target = position(static_cast<int>(a));
+    if (b.has[a]) {
+      const int64_t v = std::llround(b.value_steps[a]);
+      target = b.incremental ? target + v : v;
+    }
+    delta[a] = target - position(static_cast<int>(a));
+    m->n[a] = std::llabs(delta[a]);
+    m->dir[a] = delta[a] < 0 ? -1 : 1;
+    const double d = static_cast<double>(delta[a]) * config_.step_mm[a];
+    len2 += d * d;
+  }
+  const double length = std::sqrt(len2);
+  if (length == 0) {
+    m->end_ns = t0;
+    move_ = std::move(m);
+    return;
+  }
+  double speed = RapidSpeed_mm_s(delta);
+  if (!b.rapid) speed = std::min(speed, b.feed_mm_s);
+  m->profile = TrapezoidProfile(length, speed, config_.accel_mm_s2);
+  m->end_ns = t0 + static_cast<uint64_t>(std::ceil(m->profile.duration_s() * 1e9));
+  for (size_t a = 0; a < 3; ++a) {
+    if (m->n[a] == 0) continue;
+    const double rate = m->profile.peak_speed_mm_s() * static_cast<double>(m->n[a]) / length;
+    peak_rate_hz_ = std::max(peak_rate_hz_, rate);
+    m->next_t[a] = m->StepTime(a, 1);
+  }
+  move_ = std::move(m);
+}
+
+bool Cnc::RunMove(uint64_t t_ns) {
+  Move& m = *move_;
+  for (size_t a = 0; a < 3; ++a) {
+    while (m.done[a] < m.n[a] && m.next_t[a] <= t_ns) {
+      Emit(static_cast<int>(a), m.next_t[a], m.dir[a]);
+      ++m.done[a];
+      if (m.done[a] < m.n[a]) m.next_t[a] = m.StepTime(a, m.done[a] + 1);
+    }
+  }
+  for (size_t a = 0; a < 3; ++a) {
+    if (m.done[a] < m.n[a]) return false;
+  }
+  if (m.end_ns > t_ns) return false;
+  cursor_ns_ = m.end_ns;
+  return true;
+}
+
+bool Cnc::RunHoming(uint64_t t_ns) {
+  using Phase = Homing::Phase;
+  bool all_done = true;
+  for (size_t a = 0; a < 3; ++a) {
+    Homing::Axis& h = homing_->axis[a];
+    const int axis = static_cast<int>(a);
+    auto jog = [&](Phase p, int dir, double speed_mm_s) {
+      h.phase = p;
+      h.phase_start = t_ns;
+      h.dir = dir;
+      h.k = 0;
+      h.period_ns = static_cast<uint64_t>(std::llround(1e9 * config_.step_mm[a] / speed_mm_s));
+    };
+    // Phase changes on what the switch shows now (the drives' state before this instant).
+    const bool closed = h.phase != Phase::kDone && switch_(axis);
+    switch (h.phase) {
+      case Phase::kLeave:
+        if (!closed) {
+          jog(Phase::kFast, -1, config_.home_fast_mm_s);
+        } else if (h.k == 0 && h.dir != 1) {
+          jog(Phase::kLeave, 1, config_.home_fast_mm_s);
+        }
+        break;
+      case Phase::kFast:
+        if (closed) {
+          h.phase = Phase::kPause1;
+          h.phase_start = t_ns;
+        }
+        break;
+      case Phase::kPause1:
+        if (t_ns >= h.phase_start + static_cast<uint64_t>(config_.home_pause_s * 1e9)) {
+          jog(Phase::kBackoff, 1, config_.home_fast_mm_s / 4);
+          h.backoff_left = -1;
+        }
+        break;
+      case Phase::kBackoff:
+        if (!closed && h.backoff_left < 0) {
+          h.backoff_left = std::llround(config_.home_backoff_mm / config_.step_mm[a]);
+        }
+        if (h.backoff_left == 0) {
+          h.phase = Phase::kPause2;
+          h.phase_start = t_ns;
+        }
+        break;
+      case Phase::kPause2:
+        if (t_ns >= h.phase_start + static_cast<uint64_t>(config_.home_pause_s * 1e9)) {
+          jog(Phase::kSlow, -1, config_.home_slow_mm_s);
+        }
+        break;
+      case Phase::kSlow:
+        if (closed) {
+          offset_[a] = config_.home_position_steps[a] - count_[a];
+          homed_[a] = true;
+          h.phase = Phase::kDone;
+        }
+        break;
+      case Phase::kDone:
+        break;
+    }
+    const bool jogging = h.phase == Phase::kLeave || h.phase == Phase::kFast ||
+                         h.phase == Phase::kBackoff || h.phase == Phase::kSlow;
+    if (jogging && h.period_ns > 0) {
+      while (h.phase_start + static_cast<uint64_t>(h.k + 1) * h.period_ns <= t_ns) {
+        if (h.phase == Phase::kBackoff && h.backoff_left == 0) break;
+        ++h.k;
+        Emit(axis, h.phase_start + static_cast<uint64_t>(h.k) * h.period_ns, h.dir);
+        if (h.phase == Phase::kBackoff && h.backoff_left > 0) --h.backoff_left;
+      }
+    }
+    all_done = all_done && h.phase == Phase::kDone;
+  }
+  if (all_done) cursor_ns_ = t_ns;
+  return all_done;
+}
+
+void Cnc::AdvanceTo(uint64_t t_ns) {
+  for (;;) {
+    if (!active_) {
+      if (queue_.empty()) break;
+      const Block b = queue_.front();
+      queue_.pop_front();
+      Start(b, std::max(cursor_ns_, now_ns_));
+    }
+    bool finished = false;
+    switch (active_->kind) {
+      case Block::Kind::kMove:
+        finished = RunMove(t_ns);
+        break;
+      case Block::Kind::kDwell:
+        if (dwell_end_ns_ <= t_ns) {
+          cursor_ns_ = dwell_end_ns_;
+          if (on_dwell_) on_dwell_(dwell_end_ns_);
+          finished = true;
+        }
+        break;
+      case Block::Kind::kHome:
+        finished = RunHoming(t_ns);
+        break;
+    }
+    if (!finished) break;
+    active_.reset();
+    move_.reset();
+    homing_.reset();
+  }
+  now_ns_ = std::max(now_ns_, t_ns);
+}
+
+}  // namespace volcomp::sim

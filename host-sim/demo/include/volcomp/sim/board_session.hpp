@@ -1,0 +1,46 @@
+// The PC tool's table transfer, run against the simulated board in virtual time with the PC tool's
+// own protocol code (tools/canopen SdoClient through sdo_runner), in the same order as
+// `volcomp upload` (tools/volcomp/cmd_upload.cpp): read the active CRC-32 and the bank size,
+// unlock if needed (0x2110), clear the staging bank (0x2101 = 3), block-download the image into
+// 0x2100, verify on the board (0x2101 = 4), compare the staged CRC-32 (0x2105); then
+// `volcomp activate` (0x2101 = 1) and a check of the active CRC-32 (0x2104) and device state
+// (0x2122).
+#pragma once
+
+#include <cstdint>
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include "volcomp/sim/world.hpp"
+
+namespace volcomp::sim {
+
+struct UploadReport {
+  bool ok = false;
+  std::string message;
+  uint32_t bytes = 0;
+  uint32_t image_crc = 0;
+  uint32_t staged_crc = 0;
+  double transfer_s = 0;  // block download, virtual time
+  double rate_bytes_s = 0;
+  uint64_t frames = 0;
+  uint32_t resent_segments = 0;
+};
+
+/// Stages and verifies `image` on the board; progress lines go to `log`.
+UploadReport UploadTable(World& world, const std::vector<uint8_t>& image, std::ostream& log);
+
+struct ActivationReport {
+  bool ok = false;
+  std::string message;
+  uint32_t active_crc = 0;
+  uint16_t device_state = 0;  // 0x2122 after activation
+};
+
+ActivationReport ActivateTable(World& world, uint32_t expected_crc);
+
+/// Reads 0x2122 (device state bits, firmware/board_objects.hpp DeviceStateBit).
+uint16_t ReadDeviceState(World& world);
+
+}  // namespace volcomp::sim

@@ -1,0 +1,65 @@
+// Latency from an input step to the output step that carries it, measured from the outside.
+//
+// Input side: every step the CNC emits, with its exact time and the input count it produces (n).
+// Output side: every pulse the drive receives, with its time; after a pulse the drive position minus
+// the board's whole-step correction of that tick is the input count the output has "served".
+// An input step is carried when the served count reaches its n (in its direction); its latency is
+// that pulse's time minus the input step's time. A step absorbed by a simultaneous correction step
+// (no pulse needed) is carried at the start of the tick that absorbed it.
+//
+// The distribution is kept as a histogram in 1/100 tick bins up to 10 ticks (plus overflow);
+// the maximum is exact. Input steps not carried within 1000 ticks are counted as unmatched.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <deque>
+#include <vector>
+
+namespace volcomp::sim {
+
+struct LatencySummary {
+  uint64_t samples = 0;
+  uint64_t unmatched = 0;
+  double p50_ticks = 0, p90_ticks = 0, p99_ticks = 0, p999_ticks = 0, max_ticks = 0;
+  double mean_ticks = 0;
+  uint64_t over_2_ticks = 0;  // samples above 2 ticks
+};
+
+class LatencyMeter {
+ public:
+  static constexpr int kBinsPerTick = 100;
+  static constexpr int kMaxTicks = 10;
+
+  explicit LatencyMeter(uint64_t tick_ns);
+
+  void OnInput(int axis, uint64_t t_ns, int dir, int64_t count_after);
+  void OnOutput(int axis, uint64_t t_ns, int64_t served);
+  /// After each tick's pulses: carries absorbed steps, drops stale ones.
+  void EndOfTick(int axis, uint64_t tick_ns, int64_t served);
+
+  LatencySummary Summarize() const;
+  /// Counts per bin of 1/kBinsPerTick tick; the last bin holds everything beyond kMaxTicks.
+  const std::vector<uint64_t>& histogram() const { return bins_; }
+  uint64_t tick_ns() const { return tick_ns_; }
+
+ private:
+  struct Pending {
+    uint64_t t_ns;
+    int64_t count;
+    int dir;
+  };
+  void Record(uint64_t latency_ns);
+  void Carry(int axis, uint64_t t_ns, int64_t served);
+
+  uint64_t tick_ns_;
+  std::array<std::deque<Pending>, 3> pending_;
+  std::vector<uint64_t> bins_;
+  uint64_t samples_ = 0;
+  uint64_t unmatched_ = 0;
+  uint64_t max_ns_ = 0;
+  uint64_t over_2_ticks_ = 0;
+  double sum_ns_ = 0;
+};
+
+}  // namespace volcomp::sim

@@ -1,0 +1,100 @@
+// Measurement sessions on the simulated installation: run a test program on the CNC (through the
+// board), read the instrument at every stop, and evaluate with tools/metrology.
+//
+//   MeasureGostAxis    GOST 27843-88 positioning test of one axis (laser interferometer)
+//   MeasureDiagonals   ISO 230-6 body diagonals (interferometer along each diagonal)
+//   MeasurePointSet    volumetric error at points (laser tracker registered at the first point)
+//   MeasureParametric  the six error motions of one axis through the reference point (6-DOF laser)
+// Lengths mm, deviations µm, angles µrad. Every session throws std::runtime_error when the CNC
+// does not finish or the dwell count does not match the program's stops.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "volcomp/metrology/diagonal.hpp"
+#include "volcomp/metrology/positioning_data.hpp"
+#include "volcomp/metrology/positioning_eval.hpp"
+#include "volcomp/model/vec3.hpp"
+#include "volcomp/sim/instruments.hpp"
+#include "volcomp/sim/test_programs.hpp"
+#include "volcomp/sim/world.hpp"
+
+namespace volcomp::sim {
+
+/// The state at one stop: where the drives put the axes and what the CNC commanded.
+struct StopState {
+  MeasuredStop stop;
+  model::Vec3 q_mm;    // axis positions at the drives (machine model frame)
+  model::Vec3 cmd_mm;  // the CNC's commanded point
+  bool at_rest_ok = true;
+};
+
+/// Parses and runs `program` on `world`; the state at the end of every dwell.
+std::vector<StopState> RunTestProgram(World& world, const TestProgram& program);
+
+struct GostAxisResult {
+  int axis = 0;
+  TestProgram program;
+  metrology::PositioningData data;
+  metrology::PositioningResult gost;  // GOST 27843-88
+  metrology::PositioningResult iso;   // ISO 230-2:2014, the same readings
+};
+
+struct GostPlan {
+  std::vector<double> targets_mm;  // metrology::PlanGostTargets
+  Point3 line_point_mm;            // the other coordinates of the test line
+  CycleOptions cycle;
+};
+
+GostAxisResult MeasureGostAxis(World& world,
+                               LaserInterferometer& laser,
+                               int axis,
+                               const GostPlan& plan);
+
+struct DiagonalSetResult {
+  std::vector<TestProgram> programs;
+  std::string csv;  // the readings in the layout `volcomp evaluate diagonal` reads
+  metrology::DiagonalEvaluation evaluation;
+};
+
+DiagonalSetResult MeasureDiagonals(World& world,
+                                   LaserInterferometer& laser,
+                                   const std::vector<BodyDiagonal>& diagonals,
+                                   int targets_per_diagonal,
+                                   const CycleOptions& cycle);
+
+struct PointSetResult {
+  TestProgram program;
+  std::vector<Point3> targets_mm;            // without the datum
+  std::vector<model::Vec3> measured_error_um;  // tracker reading minus command
+  std::vector<model::Vec3> true_error_um;      // machine model, no instrument error
+  double max_um = 0, rms_um = 0;               // of |measured error|
+  double true_max_um = 0, true_rms_um = 0;
+};
+
+PointSetResult MeasurePointSet(World& world,
+                               LaserTracker& tracker,
+                               const std::vector<Point3>& points_mm,
+                               double dwell_s);
+
+struct ParametricResult {
+  int axis = 0;
+  std::vector<double> position_mm;
+  std::vector<SixDofReading> measured;  // mean over the approaches, zero at the reference point
+  std::vector<SixDofReading> truth;     // the same without instrument errors
+};
+
+/// `positions_mm` must contain the reference point's coordinate of `axis`.
+ParametricResult MeasureParametric(World& world,
+                                   LaserInterferometer& laser,
+                                   int axis,
+                                   const Point3& reference_mm,
+                                   const std::vector<double>& positions_mm,
+                                   const CycleOptions& cycle);
+
+/// Long-layout positioning CSV (target_mm,direction,run,deviation_um) of `volcomp evaluate
+/// positioning`.
+std::string PositioningCsv(const metrology::PositioningData& data);
+
+}  // namespace volcomp::sim

@@ -1,0 +1,240 @@
+// HTML report and data files of a demo run.
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <stdexcept>
+
+#include "volcomp/image/image_builder.hpp"
+#include "volcomp/metrology/diagonal_report.hpp"
+#include "volcomp/metrology/positioning_report.hpp"
+#include "volcomp/report/format.hpp"
+#include "volcomp/report/html_page.hpp"
+#include "volcomp/report/xy_chart.hpp"
+#include "volcomp/sim/demo.hpp"
+
+namespace volcomp::sim {
+namespace {
+
+using report::FormatFixed;
+
+void WriteText(const std::string& path, const std::string& text) {
+  std::ofstream f(path);
+  if (!f) throw std::runtime_error("cannot write " + path);
+  f << text;
+}
+
+std::string PointsCsv(const PointSetResult& p) {
+  std::string csv = "x_mm,y_mm,z_mm,dx_um,dy_um,dz_um,norm_um,true_dx_um,true_dy_um,true_dz_um\n";
+  for (size_t i = 0; i < p.targets_mm.size(); ++i) {
+    const model::Vec3& m = p.measured_error_um[i];
+    const model::Vec3& t = p.true_error_um[i];
+    csv += FormatFixed(p.targets_mm[i][0], 3) + "," + FormatFixed(p.targets_mm[i][1], 3) + "," +
+           FormatFixed(p.targets_mm[i][2], 3) + "," + FormatFixed(m.x, 3) + "," +
+           FormatFixed(m.y, 3) + "," + FormatFixed(m.z, 3) + "," + FormatFixed(model::Norm(m), 3) +
+           "," + FormatFixed(t.x, 4) + "," + FormatFixed(t.y, 4) + "," + FormatFixed(t.z, 4) + "\n";
+  }
+  return csv;
+}
+
+std::string Pct(double before, double after) {
+  return before > 0 ? FormatFixed(100.0 * (1.0 - after / before), 2) + " %" : "n/a";
+}
+
+std::string PointsChart(const DemoResult& r) {
+  report::XyChart c;
+  c.title = "Volumetric error at the random points (laser tracker)";
+  c.x_label = "point";
+  c.y_label = "|error|, µm";
+  report::XySeries b, a;
+  b.label = "before";
+  a.label = "after";
+  a.color = "#d62728";
+  b.line = a.line = false;
+  for (size_t i = 0; i < r.before.points.targets_mm.size(); ++i) {
+    b.x.push_back(static_cast<double>(i + 1));
+    b.y.push_back(model::Norm(r.before.points.measured_error_um[i]));
+  }
+  for (size_t i = 0; i < r.after.points.targets_mm.size(); ++i) {
+    a.x.push_back(static_cast<double>(i + 1));
+    a.y.push_back(model::Norm(r.after.points.measured_error_um[i]));
+  }
+  c.series = {b, a};
+  return c.Render();
+}
+
+std::string AfterPointsChart(const DemoResult& r) {
+  report::XyChart c;
+  c.title = "After compensation: tracker reading and machine model (no instrument error)";
+  c.x_label = "point";
+  c.y_label = "|error|, µm";
+  report::XySeries m, t;
+  m.label = "tracker";
+  t.label = "machine model";
+  t.color = "#2ca02c";
+  m.line = t.line = false;
+  for (size_t i = 0; i < r.after.points.targets_mm.size(); ++i) {
+    m.x.push_back(static_cast<double>(i + 1));
+    m.y.push_back(model::Norm(r.after.points.measured_error_um[i]));
+    t.x.push_back(static_cast<double>(i + 1));
+    t.y.push_back(model::Norm(r.after.points.true_error_um[i]));
+  }
+  c.series = {m, t};
+  return c.Render();
+}
+
+std::string ParametricChart(const ParametricResult& p, bool angular) {
+  static const char* kColors[3] = {"#1f77b4", "#d62728", "#2ca02c"};
+  report::XyChart c;
+  const char axis = "XYZ"[p.axis];
+  c.title = std::string(angular ? "Angular" : "Linear") + " error motions of " + axis +
+            " (measured: markers, machine model: dashed)";
+  c.x_label = std::string(1, axis) + ", mm";
+  c.y_label = angular ? "µrad" : "µm";
+  for (int k = 0; k < 3; ++k) {
+    report::XySeries m, t;
+    const char* names = angular ? "ABC" : "XYZ";
+    m.label = std::string("E") + names[k] + axis;
+    m.color = t.color = kColors[k];
+    m.line = false;
+    t.dash = "4 3";
+    t.marker = report::Marker::kNone;
+    for (size_t i = 0; i < p.position_mm.size(); ++i) {
+      const SixDofReading& mm = p.measured[i];
+      const SixDofReading& tt = p.truth[i];
+      m.x.push_back(p.position_mm[i]);
+      t.x.push_back(p.position_mm[i]);
+      m.y.push_back(angular ? mm.angular_urad[k] : mm.linear_um[k]);
+      t.y.push_back(angular ? tt.angular_urad[k] : tt.linear_um[k]);
+    }
+    c.series.push_back(m);
+    c.series.push_back(t);
+  }
+  return c.Render();
+}
+
+std::string LatencyChart(const DemoResult& r) {
+  report::XyChart c;
+  c.title = "Latency from an input step to its output step";
+  c.x_label = "ticks";
+  c.y_label = "steps (log10)";
+  report::XyBars bars;
+  bars.bar_px = 2;
+  const size_t n = r.latency_histogram.size();
+  for (size_t i = 0; i + 1 < n && i < 3 * LatencyMeter::kBinsPerTick; ++i) {
+    if (r.latency_histogram[i] == 0) continue;
+    bars.x.push_back((static_cast<double>(i) + 0.5) / LatencyMeter::kBinsPerTick);
+    bars.y.push_back(std::log10(static_cast<double>(r.latency_histogram[i]) + 1.0));
+  }
+  c.bars = {bars};
+  report::XyHLine limit;
+  (void)limit;
+  return c.Render();
+}
+
+}  // namespace
+
+void WriteDemoReport(const DemoResult& r, const std::string& dir) {
+  const std::string index = report::PrepareReportPath(dir, "index.html");
+  report::PrepareReportPath(dir + "/data", "x");
+  report::PrepareReportPath(dir + "/programs", "x");
+  report::PrepareReportPath(dir + "/model", "x");
+
+  // Data files, in the formats the PC tool reads.
+  for (const auto& [phase, res] : {std::pair{"before", &r.before}, std::pair{"after", &r.after}}) {
+    for (size_t a = 0; a < 3; ++a) {
+      WriteText(dir + "/data/gost_" + std::string(1, "xyz"[a]) + "_" + phase + ".csv",
+                PositioningCsv(res->gost[a].data));
+    }
+    WriteText(dir + "/data/diagonals_" + std::string(phase) + ".csv", res->diagonals.csv);
+    WriteText(dir + "/data/points_" + std::string(phase) + ".csv", PointsCsv(res->points));
+  }
+  for (size_t a = 0; a < 3; ++a) {
+    WriteText(dir + "/programs/gost_" + std::string(1, "xyz"[a]) + ".ngc",
+              r.before.gost[a].program.gcode);
+  }
+  for (const TestProgram& p : r.before.diagonals.programs) {
+    std::string name = p.name;
+    for (char& c : name) c = c == '+' ? 'P' : c == '-' ? 'N' : c;
+    WriteText(dir + "/programs/diagonal_" + name + ".ngc", p.gcode);
+  }
+  WriteText(dir + "/programs/points.ngc", r.before.points.program.gcode);
+  WriteModelFiles(r.measured_model, dir + "/model");
+  image::WriteFileBytes(dir + "/table.vct", r.table.image);
+
+  report::HtmlPage page("volcomp-sim demo report");
+  page.Heading(1, "volcomp-sim demo: volumetric compensation of a simulated machine");
+  page.Paragraph("Seed " + std::to_string(r.options.seed) + ". Machine: " + r.machine_name +
+                 ". The real firmware (BoardApp on the mock HAL) ran between the simulated CNC "
+                 "and the drive checkers; the table went over the simulated CAN bus with the PC "
+                 "tool's SDO code. Run time " + FormatFixed(r.wall_s, 1) + " s wall for " +
+                 FormatFixed(r.virtual_s, 1) + " s of machine time.");
+  page.Heading(2, "Before and after");
+  std::vector<std::vector<std::string>> rows;
+  auto row = [&](const std::string& what, double b, double a) {
+    rows.push_back({what, FormatFixed(b, 3), FormatFixed(a, 3), Pct(b, a)});
+  };
+  row("ISO 230-6 E_d (body diagonals), µm", r.before.Ed(), r.after.Ed());
+  row("ISO 230-6 B_d, µm", r.before.Bd(), r.after.Bd());
+  row("volumetric error, max over points (tracker), µm", r.before.points.max_um,
+      r.after.points.max_um);
+  row("volumetric error, rms (tracker), µm", r.before.points.rms_um, r.after.points.rms_um);
+  row("volumetric error, max, machine model, µm", r.before.points.true_max_um,
+      r.after.points.true_max_um);
+  const auto gb = r.before.Gost(), ga = r.after.Gost();
+  for (size_t a = 0; a < 3; ++a) {
+    const std::string axis(1, "XYZ"[a]);
+    row("GOST 27843 " + axis + " A, µm", gb[a].A, ga[a].A);
+    row("GOST 27843 " + axis + " R, µm", gb[a].R, ga[a].R);
+    row("GOST 27843 " + axis + " B, µm", gb[a].B, ga[a].B);
+  }
+  page.Table({"figure", "before", "after", "reduction"}, rows);
+  page.Heading(2, "Steps, timing and latency");
+  page.Table(
+      {"figure", "value"},
+      {{"input steps / output steps", std::to_string(r.audit.input_steps) + " / " +
+                                          std::to_string(r.audit.output_steps)},
+       {"lost steps (rest checks)", std::to_string(r.audit.lost_steps) + " at " +
+                                        std::to_string(r.audit.rest_checks) + " rest points"},
+       {"ticks where a drive's count differed from the board's output",
+        std::to_string(r.audit.tick_mismatches) + " of " + std::to_string(r.audit.ticks)},
+       {"pulse timing violations at the drives", std::to_string(r.audit.timing_violations)},
+       {"latency p50 / p90 / p99 / p99.9 / max, ticks of " + FormatFixed(r.tick_us, 0) + " µs",
+        FormatFixed(r.latency.p50_ticks, 2) + " / " + FormatFixed(r.latency.p90_ticks, 2) +
+            " / " + FormatFixed(r.latency.p99_ticks, 2) + " / " +
+            FormatFixed(r.latency.p999_ticks, 2) + " / " + FormatFixed(r.latency.max_ticks, 3)},
+       {"peak input step rate per axis", FormatFixed(r.peak_input_rate_hz / 1e6, 3) + " MHz"},
+       {"simulator speed (3 axes at 1 MHz)",
+        FormatFixed(r.benchmark.steps_per_s / 1e6, 1) + " M steps per wall-clock second"}});
+  page.Figure(LatencyChart(r), "Latency distribution (1/100 tick bins, log scale).");
+  page.Heading(2, "Volumetric error at random points");
+  page.Figure(PointsChart(r), "Norm of the error vector at each point, before and after.");
+  page.Figure(AfterPointsChart(r), "After compensation: what the tracker read and what the "
+                                   "machine model says (the rest is tracker noise).");
+  page.Heading(2, "The table");
+  std::vector<std::string> items;
+  for (const auto& [k, v] : r.table.info) items.push_back(k + ": " + v);
+  items.push_back("image: " + std::to_string(r.table.image.size()) + " bytes (table.vct), " +
+                  "largest correction " + FormatFixed(r.table.grid.stats.max_correction_um, 1) +
+                  " µm");
+  items.push_back("upload: " + FormatFixed(r.upload.transfer_s, 2) + " s of bus time, " +
+                  FormatFixed(r.upload.rate_bytes_s / 1000, 1) + " kB/s");
+  page.List(items);
+  page.Paragraph("Rebuild it with the PC tool: volcomp build model --model model/measured.conf "
+                 "--resolution-nm X=1000,Y=1000,Z=1000 --spacing-mm " +
+                 FormatFixed(r.options.grid_spacing_mm, 0) + " -o table.vct");
+  for (const ParametricResult& p : r.parametric) {
+    page.Figure(ParametricChart(p, false), "");
+    page.Figure(ParametricChart(p, true), "");
+  }
+  for (const auto& [phase, res] : {std::pair{"before", &r.before}, std::pair{"after", &r.after}}) {
+    page.Heading(2, std::string("ISO 230-6 diagonals, ") + phase + " compensation");
+    metrology::AddDiagonalSections(&page, res->diagonals.evaluation);
+    for (size_t a = 0; a < 3; ++a) {
+      page.Heading(2, std::string("GOST 27843 ") + "XYZ"[a] + ", " + phase + " compensation");
+      metrology::AddPositioningSection(&page, res->gost[a].gost);
+    }
+  }
+  page.WriteFile(index);
+}
+
+}  // namespace volcomp::sim

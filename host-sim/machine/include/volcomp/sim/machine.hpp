@@ -1,0 +1,65 @@
+// The simulated machine tool: the 21-parameter rigid-body error model of tools/model (the STAN
+// S500 by default, or any model file) driven by the drives' output step counts.
+//
+// Frames and units:
+//   * Axis position q (mm, the model's command frame) = power-up position + drive steps x step
+//     length. The drives count output steps from 0 at power-up (DriveModel), so the simulator never
+//     needs to know what the CNC or the board think the position is.
+//   * Tool point (mm) = q + e(q), e from model::ToolPointError_um (actual minus nominal).
+//   * Each axis has a home switch at its negative end: closed while q <= home_switch_mm.
+//
+// Thread-safety: const methods may be called concurrently except PointOnTool_mm (caches models).
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <cmath>
+#include <map>
+#include <string>
+
+#include "volcomp/model/rigid_body.hpp"
+#include "volcomp/model/vec3.hpp"
+
+namespace volcomp::sim {
+
+struct MachineOptions {
+  model::Model model;                                   // empty: the built-in S500
+  std::array<double, 3> step_mm = {0.001, 0.001, 0.001};  // drive step length per axis
+  /// Where each axis stands at power-up; NaN = 10 % into its travel.
+  std::array<double, 3> power_up_mm = {NAN, NAN, NAN};
+  /// The home switch closes at or below this position; NaN = 5 mm below the travel's start.
+  std::array<double, 3> home_switch_mm = {NAN, NAN, NAN};
+};
+
+/// "s500" (the built-in STAN S500 model) or a model config file (tools/model io.hpp format).
+/// Throws std::runtime_error / tools::InputError naming the problem.
+model::Model LoadMachineModel(const std::string& spec);
+
+class Machine {
+ public:
+  explicit Machine(MachineOptions options);
+
+  const model::Model& model() const { return options_.model; }
+  double step_mm(int axis) const { return options_.step_mm[static_cast<size_t>(axis)]; }
+  /// The travel covered by the model's error tables (mm).
+  double travel_min_mm(int axis) const;
+  double travel_max_mm(int axis) const;
+  double home_switch_mm(int axis) const { return options_.home_switch_mm[static_cast<size_t>(axis)]; }
+  double power_up_mm(int axis) const { return options_.power_up_mm[static_cast<size_t>(axis)]; }
+
+  /// Axis positions (mm) for drive step counts.
+  model::Vec3 AxisPositions_mm(const std::array<int64_t, 3>& drive_steps) const;
+  /// Where the tool point actually is (mm) with the axes at `q_mm`.
+  model::Vec3 ToolPoint_mm(const model::Vec3& q_mm) const;
+  /// Where a point rigidly attached to the tool side at `offset_mm` from the tool point actually
+  /// is (the second reflector of angular optics, a level on the spindle head).
+  model::Vec3 PointOnTool_mm(const model::Vec3& q_mm, const model::Vec3& offset_mm);
+  /// True while the axis's home switch is closed.
+  bool HomeSwitchClosed(int axis, int64_t drive_steps) const;
+
+ private:
+  MachineOptions options_;
+  std::map<std::array<double, 3>, model::Model> offset_models_;
+};
+
+}  // namespace volcomp::sim

@@ -1,0 +1,93 @@
+// The object dictionary's structure (od_entries.def): indices, types, access, defaults, names.
+// Values live elsewhere (the node and the application, see object_values.hpp); this table is what
+// the SDO server checks every access against, what the PC tool uses for object addresses, and what
+// the EDS generator writes.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+
+namespace volcomp::canopen {
+
+/// CiA 301 data types (EDS DataType codes).
+enum class DataType : uint16_t {
+  kBoolean = 0x0001,
+  kInteger8 = 0x0002,
+  kInteger16 = 0x0003,
+  kInteger32 = 0x0004,
+  kUnsigned8 = 0x0005,
+  kUnsigned16 = 0x0006,
+  kUnsigned32 = 0x0007,
+  kVisibleString = 0x0009,
+  kDomain = 0x000F,
+};
+
+enum class Access : uint8_t { kRo, kWo, kRw, kConst };
+enum class ObjectKind : uint8_t { kVar = 7, kArray = 8, kRecord = 9 };  // EDS ObjectType codes
+
+/// Every (sub-)entry by name.
+enum class ObjectId : uint16_t {
+#define VOLCOMP_OD_OBJECT(index, kind, name)
+#define VOLCOMP_OD_ENTRY(id, index, sub, type, access, def, name) id,
+#include "volcomp/canopen/od_entries.def"
+#undef VOLCOMP_OD_OBJECT
+#undef VOLCOMP_OD_ENTRY
+  kCount
+};
+
+struct ObjectEntry {
+  ObjectId id;
+  uint16_t index;
+  uint8_t sub;
+  DataType type;
+  Access access;
+  int64_t default_value;
+  const char* name;
+};
+
+struct ObjectHeader {
+  uint16_t index;
+  ObjectKind kind;
+  const char* name;
+};
+
+/// All entries in (index, sub) order.
+extern const ObjectEntry kObjectEntries[];
+extern const size_t kObjectEntryCount;
+/// All objects in index order.
+extern const ObjectHeader kObjectHeaders[];
+extern const size_t kObjectHeaderCount;
+
+/// The entry for (index, sub), or null. `index_exists` (optional) reports whether the index exists
+/// at all (to tell "no object" from "no sub-index").
+const ObjectEntry* FindEntry(uint16_t index, uint8_t sub, bool* index_exists = nullptr);
+/// The entry of an id (always valid for ids below kCount).
+const ObjectEntry& Entry(ObjectId id);
+
+/// Size in bytes of fixed-size types; 0 for strings and domains.
+constexpr uint32_t FixedSize(DataType t) {
+  switch (t) {
+    case DataType::kBoolean:
+    case DataType::kInteger8:
+    case DataType::kUnsigned8:
+      return 1;
+    case DataType::kInteger16:
+    case DataType::kUnsigned16:
+      return 2;
+    case DataType::kInteger32:
+    case DataType::kUnsigned32:
+      return 4;
+    default:
+      return 0;
+  }
+}
+
+constexpr bool Readable(Access a) { return a != Access::kWo; }
+constexpr bool Writable(Access a) { return a == Access::kWo || a == Access::kRw; }
+
+/// The (index, sub) of axis `axis` (0-based) in a per-axis array whose axis-1 entry is `first`.
+inline const ObjectEntry& AxisEntry(ObjectId first, uint8_t axis) {
+  return Entry(static_cast<ObjectId>(static_cast<uint16_t>(first) + axis));
+}
+
+}  // namespace volcomp::canopen

@@ -1,0 +1,185 @@
+// CiA 301 node: NMT, heartbeat, EMCY, communication objects, SDO routing.
+#include "volcomp/byte_order.hpp"
+#include "volcomp/canopen/node.hpp"
+#include "volcomp/canopen/sdo_abort.hpp"
+
+namespace volcomp::canopen {
+namespace {
+constexpr uint32_t kNmtId = 0x000, kEmcyBase = 0x080, kSdoRxBase = 0x600, kSdoTxBase = 0x580,
+                   kHeartbeatBase = 0x700;
+}  // namespace
+
+void Node::Start(uint8_t node_id, ObjectValues* app, uint32_t now_ms, const SdoServerConfig& sdo) {
+  node_id_ = node_id;
+  app_ = app;
+  sdo_.Init(node_id, this, sdo);
+  urgent_count_ = 0;
+  reset_ = ResetRequest::kNone;
+  CanFrame boot;
+  boot.id = kHeartbeatBase + node_id_;
+  boot.dlc = 1;
+  boot.data[0] = 0x00;
+  QueueUrgent(boot);
+  state_ = NmtState::kPreOperational;
+  last_heartbeat_ms_ = now_ms;
+}
+
+void Node::QueueUrgent(const CanFrame& f) {
+  if (urgent_count_ == 8) {  // drop the oldest heartbeat-class frame rather than block
+    urgent_head_ = static_cast<uint8_t>((urgent_head_ + 1) % 8);
+    --urgent_count_;
+  }
+  urgent_[(urgent_head_ + urgent_count_) % 8] = f;
+  ++urgent_count_;
+}
+
+void Node::OnFrame(const CanFrame& f, uint32_t now_ms) {
+  if (f.extended) return;
+  if (f.id == kNmtId) {
+    if (f.rtr || f.dlc != 2) {
+      ++malformed_;
+      return;
+    }
+    if (f.data[1] != 0 && f.data[1] != node_id_) return;
+    switch (f.data[0]) {
+      case 0x01:
+        state_ = NmtState::kOperational;
+        break;
+      case 0x02:
+        state_ = NmtState::kStopped;
+        break;
+      case 0x80:
+        state_ = NmtState::kPreOperational;
+        break;
+      case 0x81:
+        reset_ = ResetRequest::kNode;
+        break;
+      case 0x82:
+        reset_ = ResetRequest::kCommunication;
+        break;
+      default:
+        ++malformed_;
+        break;
+    }
+    return;
+  }
+  if (f.id == kSdoRxBase + node_id_ && state_ != NmtState::kStopped) sdo_.OnFrame(f, now_ms);
+}
+
+void Node::Poll(uint32_t now_ms) {
+  if (state_ != NmtState::kStopped) sdo_.Poll(now_ms);
+  if (heartbeat_ms_ != 0 && static_cast<uint32_t>(now_ms - last_heartbeat_ms_) >= heartbeat_ms_) {
+    last_heartbeat_ms_ = now_ms;
+    CanFrame hb;
+    hb.id = kHeartbeatBase + node_id_;
+    hb.dlc = 1;
+    hb.data[0] = static_cast<uint8_t>(state_);
+    QueueUrgent(hb);
+  }
+}
+
+bool Node::PopTx(CanFrame* frame) {
+  if (urgent_count_ > 0) {
+    *frame = urgent_[urgent_head_];
+    urgent_head_ = static_cast<uint8_t>((urgent_head_ + 1) % 8);
+    --urgent_count_;
+    return true;
+  }
+  return state_ != NmtState::kStopped && sdo_.PopTx(frame);
+}
+
+void Node::RaiseError(uint16_t code, uint8_t register_bits, const uint8_t* manufacturer) {
+  error_register_ = static_cast<uint8_t>(error_register_ | register_bits | kErrGeneric);
+  for (int i = 7; i > 0; --i) history_[i] = history_[i - 1];
+  history_[0] = code;
+  if (history_count_ < 8) ++history_count_;
+  if (state_ == NmtState::kStopped) return;  // EMCY is not sent while stopped
+  CanFrame e;
+  e.id = kEmcyBase + node_id_;
+  e.dlc = 8;
+  StoreLe16(e.data, code);
+  e.data[2] = error_register_;
+  for (int i = 0; i < 5; ++i) e.data[3 + i] = manufacturer != nullptr ? manufacturer[i] : 0;
+  QueueUrgent(e);
+  ++emcy_sent_;
+}
+
+void Node::ClearErrors() {
+  if (error_register_ == 0) return;
+  error_register_ = 0;
+  if (state_ == NmtState::kStopped) return;
+  CanFrame e;
+  e.id = kEmcyBase + node_id_;
+  e.dlc = 8;
+  QueueUrgent(e);
+  ++emcy_sent_;
+}
+
+bool Node::ReadCommunication(const ObjectEntry& e, uint32_t* value) const {
+  switch (e.id) {
+    case ObjectId::kErrorRegister:
+      *value = error_register_;
+      return true;
+    case ObjectId::kErrorCount:
+      *value = history_count_;
+      return true;
+    case ObjectId::kCobIdEmcy:
+      *value = kEmcyBase + node_id_;
+      return true;
+    case ObjectId::kHeartbeatTime:
+      *value = heartbeat_ms_;
+      return true;
+    case ObjectId::kSdoCobIdRx:
+      *value = kSdoRxBase + node_id_;
+      return true;
+    case ObjectId::kSdoCobIdTx:
+      *value = kSdoTxBase + node_id_;
+      return true;
+    default:
+      if (e.index == 0x1003 && e.sub >= 1 && e.sub <= 8) {
+        *value = e.sub <= history_count_ ? history_[e.sub - 1] : 0;
+        return true;
+      }
+      return false;
+  }
+}
+
+uint32_t Node::DoRead(const ObjectEntry& e,
+                      uint32_t offset,
+                      uint8_t* buf,
+                      uint32_t cap,
+                      uint32_t* copied,
+                      uint32_t* total) {
+  uint32_t value = 0;
+  if (!ReadCommunication(e, &value)) return app_->Read(e, offset, buf, cap, copied, total);
+  uint8_t bytes[4];
+  StoreLe32(bytes, value);
+  *total = FixedSize(e.type);
+  *copied = 0;
+  for (uint32_t i = offset; i < *total && *copied < cap; ++i) buf[(*copied)++] = bytes[i];
+  return 0;
+}
+
+uint32_t Node::DoWrite(const ObjectEntry& e, const uint8_t* data, uint32_t size) {
+  switch (e.id) {
+    case ObjectId::kErrorCount:
+      if (size != 1 || data[0] != 0) return kAbortInvalidValue;  // only 0 (clear) is allowed
+      history_count_ = 0;
+      return 0;
+    case ObjectId::kHeartbeatTime:
+      heartbeat_ms_ = LoadLe16(data);
+      return 0;
+    default:
+      return app_->Write(e, data, size);
+  }
+}
+
+uint32_t Node::DoBeginDomainWrite(const ObjectEntry& e, uint32_t size) {
+  return app_->BeginDomainWrite(e, size);
+}
+uint32_t Node::DoDomainWriteData(const uint8_t* data, uint32_t size) {
+  return app_->DomainWriteData(data, size);
+}
+uint32_t Node::DoEndDomainWrite(bool complete) { return app_->EndDomainWrite(complete); }
+
+}  // namespace volcomp::canopen

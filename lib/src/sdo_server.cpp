@@ -1,0 +1,461 @@
+// CiA 301 SDO server state machine. Frame layouts: CiA 301 section 7.2.4.3 (summarised in
+// docs/canopen.md): byte 0 command specifier, bytes 1-2 index (LE), byte 3 sub-index.
+#include "volcomp/canopen/sdo_server.hpp"
+
+#include "volcomp/byte_order.hpp"
+#include "volcomp/canopen/crc16.hpp"
+#include "volcomp/canopen/sdo_abort.hpp"
+
+namespace volcomp::canopen {
+namespace {
+
+constexpr uint32_t kSdoTxBase = 0x580;
+constexpr uint32_t kSmallCapacity = 64;
+
+bool Elapsed(uint32_t now_ms, uint32_t since_ms, uint32_t limit_ms) {
+  return static_cast<uint32_t>(now_ms - since_ms) >= limit_ms;
+}
+
+}  // namespace
+
+void SdoServer::Init(uint8_t node_id, ObjectValues* values, const SdoServerConfig& config) {
+  node_id_ = node_id;
+  values_ = values;
+  config_ = config;
+  if (config_.block_size < 1 || config_.block_size > 127) config_.block_size = 127;
+  state_ = State::kIdle;
+  tx_count_ = 0;
+  aborts_ = malformed_ = last_abort_ = 0;
+}
+
+CanFrame SdoServer::Frame(uint8_t cmd) const {
+  CanFrame f;
+  f.id = kSdoTxBase + node_id_;
+  f.dlc = 8;
+  f.data[0] = cmd;
+  return f;
+}
+
+void SdoServer::Queue(const CanFrame& f) {
+  if (tx_count_ == sizeof(tx_) / sizeof(tx_[0])) return;  // responses never exceed the ring
+  tx_[(tx_head_ + tx_count_) % 4] = f;
+  ++tx_count_;
+}
+
+void SdoServer::Respond(uint8_t cmd, const uint8_t* payload4) {
+  CanFrame f = Frame(cmd);
+  StoreLe16(f.data + 1, index_);
+  f.data[3] = sub_;
+  if (payload4 != nullptr) {
+    for (int i = 0; i < 4; ++i) f.data[4 + i] = payload4[i];
+  }
+  Queue(f);
+}
+
+void SdoServer::EndTransfer(bool complete) {
+  if (domain_ && (state_ == State::kDownloadSegmented || state_ == State::kBlockDownload ||
+                  state_ == State::kBlockDownloadEnd)) {
+    // A failure of a complete transfer is reported by FinishDownload(), not here.
+    (void)values_->EndDomainWrite(complete);
+  }
+  state_ = State::kIdle;
+  domain_ = false;
+}
+
+void SdoServer::Abort(uint32_t code) {
+  uint8_t payload[4];
+  StoreLe32(payload, code);
+  Respond(0x80, payload);
+  EndTransfer(false);
+  ++aborts_;
+  last_abort_ = code;
+}
+
+uint32_t SdoServer::Lookup(uint16_t index, uint8_t sub, bool write) {
+  index_ = index;
+  sub_ = sub;
+  bool index_exists = false;
+  entry_ = FindEntry(index, sub, &index_exists);
+  if (entry_ == nullptr) return index_exists ? kAbortNoSubIndex : kAbortNoObject;
+  if (write && !Writable(entry_->access)) return kAbortReadOnly;
+  if (!write && !Readable(entry_->access)) return kAbortWriteOnly;
+  return 0;
+}
+
+uint32_t SdoServer::Deliver(const uint8_t* data, uint32_t size) {
+  if (size_known_ && offset_ + size > size_) return kAbortTooLong;
+  if (crc_on_) crc_ = Crc16Update(crc_, data, size);
+  offset_ += size;
+  if (domain_) return values_->DomainWriteData(data, size);
+  if (small_len_ + size > kSmallCapacity) return kAbortTooLong;
+  for (uint32_t i = 0; i < size; ++i) small_[small_len_++] = data[i];
+  return 0;
+}
+
+uint32_t SdoServer::FinishDownload() {
+  if (size_known_ && offset_ != size_) return offset_ < size_ ? kAbortTooShort : kAbortTooLong;
+  if (domain_) {
+    const uint32_t code = values_->EndDomainWrite(true);
+    domain_ = false;  // ended, successfully or not
+    return code;
+  }
+  const uint32_t fixed = FixedSize(entry_->type);
+  if (fixed != 0 && small_len_ != fixed) return kAbortTypeMismatch;
+  return values_->Write(*entry_, small_, small_len_);
+}
+
+void SdoServer::OnFrame(const CanFrame& f, uint32_t now_ms) {
+  if (f.rtr || f.dlc != 8) {
+    ++malformed_;
+    return;
+  }
+  last_rx_ms_ = now_ms;
+  const uint8_t cmd = f.data[0];
+  if (cmd == 0x80) {  // abort from the client: end silently
+    if (state_ != State::kIdle) {
+      ++aborts_;
+      last_abort_ = LoadLe32(f.data + 4);
+      EndTransfer(false);
+    }
+    return;
+  }
+  switch (state_) {
+    case State::kIdle:
+      HandleIdle(f);
+      return;
+    case State::kDownloadSegmented:
+      if ((cmd >> 5) == 0) return DownloadSegment(f);
+      break;
+    case State::kUploadSegmented:
+      if ((cmd >> 5) == 3) return UploadSegment(f);
+      break;
+    case State::kBlockDownload:
+      return BlockDownloadSegment(f);
+    case State::kBlockDownloadEnd:
+      if ((cmd & 0xE3) == 0xC1) return BlockDownloadEnd(f);
+      // A repeated last segment (our ack was lost): acknowledge again.
+      if ((cmd & 0x7F) == last_seq_) return SendBlockAck();
+      break;
+    case State::kBlockUploadWaitStart:
+      if (cmd == 0xA3) {
+        state_ = State::kBlockUploadSend;
+        up_seq_ = 1;
+        return;
+      }
+      break;
+    case State::kBlockUploadSend:
+    case State::kBlockUploadWaitAck:
+      if (cmd == 0xA2) return BlockUploadAck(f);
+      break;
+    case State::kBlockUploadWaitEndAck:
+      if (cmd == 0xA1) return BlockUploadEndAck(f);
+      break;
+  }
+  // A new initiate while a transfer runs: the client gave up on the old one; start over.
+  if ((cmd >> 5) == 1 || (cmd >> 5) == 2 || (cmd & 0xE1) == 0xC0 || (cmd & 0xE3) == 0xA0) {
+    EndTransfer(false);
+    HandleIdle(f);
+    return;
+  }
+  Abort(kAbortCommand);
+}
+
+void SdoServer::HandleIdle(const CanFrame& f) {
+  const uint8_t cmd = f.data[0];
+  switch (cmd >> 5) {
+    case 1:
+      return InitiateDownload(f);
+    case 2:
+      return InitiateUpload(f);
+    case 5:
+      if ((cmd & 0x03) == 0) return InitiateBlockUpload(f);
+      break;
+    case 6:
+      if ((cmd & 0x01) == 0) return InitiateBlockDownload(f);
+      break;
+    default:
+      break;
+  }
+  index_ = LoadLe16(f.data + 1);
+  sub_ = f.data[3];
+  Abort(kAbortCommand);
+}
+
+void SdoServer::InitiateDownload(const CanFrame& f) {
+  const uint8_t cmd = f.data[0];
+  const uint32_t code = Lookup(LoadLe16(f.data + 1), f.data[3], true);
+  if (code != 0) return Abort(code);
+  const bool expedited = (cmd & 0x02) != 0, size_indicated = (cmd & 0x01) != 0;
+  domain_ = false;
+  small_len_ = 0;
+  offset_ = 0;
+  crc_on_ = false;
+  if (expedited) {
+    uint32_t n = size_indicated ? 4u - ((cmd >> 2) & 0x03u) : 4u;
+    const uint32_t fixed = FixedSize(entry_->type);
+    if (!size_indicated && fixed != 0) n = fixed;
+    if (entry_->type == DataType::kDomain) {
+      uint32_t c = values_->BeginDomainWrite(*entry_, n);
+      if (c == 0) c = values_->DomainWriteData(f.data + 4, n);
+      if (c == 0) c = values_->EndDomainWrite(true);
+      if (c != 0) return Abort(c);
+    } else {
+      if (fixed != 0 && n != fixed) return Abort(kAbortTypeMismatch);
+      const uint32_t c = values_->Write(*entry_, f.data + 4, n);
+      if (c != 0) return Abort(c);
+    }
+    return Respond(0x60);
+  }
+  size_known_ = size_indicated;
+  size_ = size_indicated ? LoadLe32(f.data + 4) : 0;
+  if (entry_->type == DataType::kDomain) {
+    const uint32_t c = values_->BeginDomainWrite(*entry_, size_);
+    if (c != 0) return Abort(c);
+    domain_ = true;
+  } else if (size_known_ && size_ > kSmallCapacity) {
+    return Abort(kAbortTooLong);
+  }
+  toggle_ = 0;
+  state_ = State::kDownloadSegmented;
+  Respond(0x60);
+}
+
+void SdoServer::DownloadSegment(const CanFrame& f) {
+  const uint8_t cmd = f.data[0];
+  if (((cmd >> 4) & 1u) != toggle_) return Abort(kAbortToggle);
+  const uint32_t n = 7u - ((cmd >> 1) & 0x07u);
+  const uint32_t c = Deliver(f.data + 1, n);
+  if (c != 0) return Abort(c);
+  const uint8_t response = static_cast<uint8_t>(0x20 | (toggle_ << 4));
+  toggle_ = static_cast<uint8_t>(toggle_ ^ 1u);
+  if ((cmd & 0x01) != 0) {  // last segment
+    const uint32_t done = FinishDownload();
+    if (done != 0) return Abort(done);
+    state_ = State::kIdle;
+  }
+  CanFrame r = Frame(response);
+  Queue(r);
+}
+
+void SdoServer::InitiateUpload(const CanFrame& f) {
+  const uint32_t code = Lookup(LoadLe16(f.data + 1), f.data[3], false);
+  if (code != 0) return Abort(code);
+  uint8_t buf[4] = {0, 0, 0, 0};
+  uint32_t copied = 0, total = 0;
+  const uint32_t c = values_->Read(*entry_, 0, buf, 4, &copied, &total);
+  if (c != 0) return Abort(c);
+  if (total >= 1 && total <= 4 && copied == total) {
+    return Respond(static_cast<uint8_t>(0x43 | ((4u - total) << 2)), buf);
+  }
+  size_ = total;
+  offset_ = 0;
+  toggle_ = 0;
+  state_ = State::kUploadSegmented;
+  uint8_t size_le[4];
+  StoreLe32(size_le, total);
+  Respond(0x41, size_le);
+}
+
+void SdoServer::UploadSegment(const CanFrame& f) {
+  const uint8_t t = (f.data[0] >> 4) & 1u;
+  if (t != toggle_) return Abort(kAbortToggle);
+  CanFrame r = Frame(0);
+  uint32_t copied = 0, total = 0;
+  const uint32_t c = values_->Read(*entry_, offset_, r.data + 1, 7, &copied, &total);
+  if (c != 0) return Abort(c);
+  offset_ += copied;
+  const bool last = offset_ >= size_ || copied < 7;
+  r.data[0] = static_cast<uint8_t>((toggle_ << 4) | ((7u - copied) << 1) | (last ? 1u : 0u));
+  toggle_ = static_cast<uint8_t>(toggle_ ^ 1u);
+  if (last) state_ = State::kIdle;
+  Queue(r);
+}
+
+void SdoServer::InitiateBlockDownload(const CanFrame& f) {
+  const uint8_t cmd = f.data[0];
+  const uint32_t code = Lookup(LoadLe16(f.data + 1), f.data[3], true);
+  if (code != 0) return Abort(code);
+  size_known_ = (cmd & 0x02) != 0;
+  size_ = size_known_ ? LoadLe32(f.data + 4) : 0;
+  crc_on_ = (cmd & 0x04) != 0;
+  crc_ = 0;
+  offset_ = 0;
+  small_len_ = 0;
+  domain_ = false;
+  if (entry_->type == DataType::kDomain) {
+    const uint32_t c = values_->BeginDomainWrite(*entry_, size_);
+    if (c != 0) return Abort(c);
+    domain_ = true;
+  } else if (size_known_ && size_ > kSmallCapacity) {
+    return Abort(kAbortTooLong);
+  }
+  blksize_ = config_.block_size;
+  last_seq_ = 0;
+  have_held_ = false;
+  last_segment_seen_ = false;
+  awaiting_first_ = true;
+  state_ = State::kBlockDownload;
+  const uint8_t payload[4] = {blksize_, 0, 0, 0};
+  Respond(static_cast<uint8_t>(0xA0 | (crc_on_ ? 0x04 : 0x00)), payload);
+}
+
+void SdoServer::BlockDownloadSegment(const CanFrame& f) {
+  const uint8_t seq = f.data[0] & 0x7F;
+  const bool last = (f.data[0] & 0x80) != 0;
+  if (seq == 0 || seq > blksize_) return;  // not a segment of this sub-block: ignore
+  if (seq <= last_seq_) return;            // duplicate
+  if (seq != last_seq_ + 1) {
+    // Gap: acknowledge what arrived in sequence; the client resends the rest from 1.
+    if (!awaiting_first_) SendBlockAck();
+    return;
+  }
+  awaiting_first_ = false;
+  if (have_held_) {
+    const uint32_t c = Deliver(held_, 7);
+    if (c != 0) return Abort(c);
+  }
+  for (int i = 0; i < 7; ++i) held_[i] = f.data[1 + i];
+  have_held_ = true;
+  last_seq_ = seq;
+  if (last) {
+    last_segment_seen_ = true;
+    state_ = State::kBlockDownloadEnd;
+    SendBlockAck();
+  } else if (seq == blksize_) {
+    SendBlockAck();
+  }
+}
+
+void SdoServer::SendBlockAck() {
+  CanFrame r = Frame(0xA2);
+  r.data[1] = last_seq_;
+  r.data[2] = blksize_;
+  Queue(r);
+  if (state_ == State::kBlockDownload) {
+    last_seq_ = 0;  // the next sub-block starts at 1
+    awaiting_first_ = true;
+  }
+}
+
+void SdoServer::BlockDownloadEnd(const CanFrame& f) {
+  const uint32_t unused = (f.data[0] >> 2) & 0x07u;
+  if (have_held_) {
+    const uint32_t c = Deliver(held_, 7u - unused);
+    if (c != 0) return Abort(c);
+    have_held_ = false;
+  }
+  if (crc_on_ && LoadLe16(f.data + 1) != crc_) return Abort(kAbortCrc);
+  const uint32_t done = FinishDownload();
+  if (done != 0) return Abort(done);
+  state_ = State::kIdle;
+  CanFrame r = Frame(0xA1);
+  Queue(r);
+}
+
+void SdoServer::InitiateBlockUpload(const CanFrame& f) {
+  const uint8_t cmd = f.data[0];
+  const uint32_t code = Lookup(LoadLe16(f.data + 1), f.data[3], false);
+  if (code != 0) return Abort(code);
+  const uint8_t blk = f.data[4];
+  if (blk < 1 || blk > 127) return Abort(kAbortBlockSize);
+  uint8_t probe[1];
+  uint32_t copied = 0, total = 0;
+  const uint32_t c = values_->Read(*entry_, 0, probe, 0, &copied, &total);
+  if (c != 0) return Abort(c);
+  size_ = total;
+  offset_ = 0;
+  crc_on_ = (cmd & 0x04) != 0;
+  crc_ = 0;
+  up_blksize_ = blk;
+  up_seq_ = 1;
+  state_ = State::kBlockUploadWaitStart;
+  uint8_t size_le[4];
+  StoreLe32(size_le, total);
+  Respond(static_cast<uint8_t>(0xC2 | (crc_on_ ? 0x04 : 0x00)), size_le);
+}
+
+void SdoServer::BlockUploadAck(const CanFrame& f) {
+  const uint8_t ackseq = f.data[1];
+  const uint8_t next_blk = f.data[2];
+  const uint32_t sent_here = static_cast<uint32_t>(up_seq_ - 1u);
+  if (ackseq > sent_here || next_blk < 1 || next_blk > 127) return Abort(kAbortSequence);
+  // Bytes confirmed by this ack: fold them into the CRC.
+  uint32_t confirmed = ackseq * 7u;
+  if (offset_ + confirmed > size_) confirmed = size_ - offset_;
+  uint8_t buf[28];
+  uint32_t done = 0;
+  while (done < confirmed) {
+    uint32_t copied = 0, total = 0;
+    const uint32_t want = confirmed - done < sizeof buf ? confirmed - done : sizeof buf;
+    const uint32_t c = values_->Read(*entry_, offset_ + done, buf, want, &copied, &total);
+    if (c != 0 || copied == 0) return Abort(c != 0 ? c : kAbortGeneral);
+    if (crc_on_) crc_ = Crc16Update(crc_, buf, copied);
+    done += copied;
+  }
+  offset_ += confirmed;
+  up_blksize_ = next_blk;
+  up_seq_ = 1;
+  if (offset_ >= size_) {
+    // All data confirmed: end with the CRC and the unused byte count of the last segment.
+    const uint32_t tail = size_ % 7u;
+    const uint32_t unused = (size_ == 0 || tail == 0) ? (size_ == 0 ? 7u : 0u) : 7u - tail;
+    CanFrame r;
+    r.id = kSdoTxBase + node_id_;
+    r.dlc = 8;
+    r.data[0] = static_cast<uint8_t>(0xC1 | (unused << 2));
+    StoreLe16(r.data + 1, crc_);
+    Queue(r);
+    state_ = State::kBlockUploadWaitEndAck;
+    return;
+  }
+  state_ = State::kBlockUploadSend;
+}
+
+void SdoServer::BlockUploadEndAck(const CanFrame& f) {
+  (void)f;
+  state_ = State::kIdle;
+}
+
+void SdoServer::Poll(uint32_t now_ms) {
+  if (state_ == State::kIdle) return;
+  if (Elapsed(now_ms, last_rx_ms_, config_.timeout_ms)) {
+    Abort(kAbortTimeout);
+    return;
+  }
+  // Silence in the middle of a block download sub-block means its tail was lost: acknowledge
+  // the good part so the client resends the rest. (Silence after our ack is left to the client:
+  // repeating an ack it already acted on would acknowledge segments it has not sent yet.)
+  if (state_ == State::kBlockDownload && !awaiting_first_ &&
+      Elapsed(now_ms, last_rx_ms_, config_.block_gap_ms)) {
+    SendBlockAck();
+  }
+}
+
+bool SdoServer::PopTx(CanFrame* frame) {
+  if (tx_count_ > 0) {
+    *frame = tx_[tx_head_];
+    tx_head_ = static_cast<uint8_t>((tx_head_ + 1) % 4);
+    --tx_count_;
+    return true;
+  }
+  if (state_ != State::kBlockUploadSend) return false;
+  // Generate the next block upload segment on demand.
+  const uint32_t start = offset_ + (up_seq_ - 1u) * 7u;
+  CanFrame r = Frame(0);
+  uint32_t copied = 0, total = 0;
+  const uint32_t c = values_->Read(*entry_, start, r.data + 1, 7, &copied, &total);
+  if (c != 0) {
+    Abort(c);
+    return PopTx(frame);
+  }
+  const bool last = start + copied >= size_;
+  r.data[0] = static_cast<uint8_t>(up_seq_ | (last ? 0x80 : 0x00));
+  if (last || up_seq_ == up_blksize_) {
+    state_ = State::kBlockUploadWaitAck;
+  }
+  ++up_seq_;
+  *frame = r;
+  return true;
+}
+
+}  // namespace volcomp::canopen

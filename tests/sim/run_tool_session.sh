@@ -1,0 +1,78 @@
+#!/usr/bin/env bash
+# The PC tool against `volcomp-sim node` over SLCAN-TCP: upload (progress, --log in candump -L
+# format), refusal of activation before referencing, reference, activate, verify --readback,
+# status --json, skip of an upload that is already active, and a connection cut in the middle of
+# an upload (node stopped), after which a restarted node still has the old table and a new
+# upload completes.
+# usage: run_tool_session.sh VOLCOMP_SIM VOLCOMP SOURCE_DIR
+set -euo pipefail
+sim=$1 volcomp=$2 src=$3
+work=$(mktemp -d)
+trap 'kill $(jobs -p) 2>/dev/null || true; rm -rf "$work"' EXIT
+fail() { echo "FAIL: $*" >&2; exit 1; }
+
+start_node() {
+  rm -f "$work/ready"
+  "$sim" node --slcan-tcp 0 --flash-dir "$work/flash" --ready-file "$work/ready" --duration 120 \
+    >>"$work/node.log" 2>&1 &
+  node_pid=$!
+  for _ in $(seq 100); do [[ -s $work/ready ]] && break; sleep 0.05; done
+  [[ -s $work/ready ]] || fail "node did not start"
+  can=$(cat "$work/ready")
+}
+mkdir -p "$work/flash"
+
+"$volcomp" build grid --csv "$src/samples/grid_example.csv" -o "$work/a.vct" \
+  --resolution-nm X=1000,Y=1000,Z=1000 --table-id 1 >/dev/null 2>&1
+/usr/bin/env python3 - "$work/big.csv" <<'PY'
+import math, sys
+with open(sys.argv[1], "w") as f:
+    f.write("x_mm,y_mm,z_mm,dx_um,dy_um,dz_um\n")
+    for k in range(24):
+        for j in range(24):
+            for i in range(24):
+                f.write("%d,%d,%d,%.3f,%.3f,%.3f\n" % (i * 20, j * 20, k * 10, 8 * math.sin(i / 4),
+                        0.3 * j, 4 * math.cos(k / 3)))
+PY
+"$volcomp" build grid --csv "$work/big.csv" -o "$work/b.vct" \
+  --resolution-nm X=1000,Y=1000,Z=1000 --table-id 2 >/dev/null 2>&1
+
+start_node
+echo "== upload (not activated: axes not referenced)"
+if "$volcomp" upload "$work/a.vct" --can "$can" --activate --log "$work/upload.log" \
+     >"$work/out.txt" 2>&1; then
+  fail "activation before referencing succeeded"
+fi
+cat "$work/out.txt"
+grep -q "staged and verified" "$work/out.txt" || fail "not staged"
+grep -q "0x08000022" "$work/out.txt" || fail "no 0x08000022 in the refusal"
+grep -qE '^\([0-9]+\.[0-9]{6}\) slcan0 610#C6002100' "$work/upload.log" || fail "candump log format"
+echo "== reference, activate, verify --readback, status"
+"$volcomp" reference --can "$can" --axes 1,2,3
+sleep 0.3
+"$volcomp" activate --can "$can"
+"$volcomp" verify "$work/a.vct" --can "$can" --readback
+"$volcomp" status --can "$can" --json >"$work/status.json"
+grep -q '"present": true' "$work/status.json" || fail "status: no active table"
+"$volcomp" upload "$work/a.vct" --can "$can" | tee "$work/out.txt"
+grep -q "already has this table active" "$work/out.txt" || fail "no skip of an active table"
+
+echo "== connection cut in the middle of an upload"
+"$volcomp" upload "$work/b.vct" --can "$can" --retries 0 --quiet >"$work/cut.txt" 2>&1 &
+upload_pid=$!
+sleep 0.4
+kill "$node_pid"; wait "$node_pid" || true
+if wait "$upload_pid"; then fail "upload survived the cut"; fi
+cat "$work/cut.txt"
+grep -q "upload failed" "$work/cut.txt" || fail "no clear failure message"
+start_node
+"$volcomp" verify "$work/a.vct" --can "$can" || fail "old table not active after the cut"
+"$volcomp" upload "$work/b.vct" --can "$can" --quiet
+"$volcomp" reference --can "$can"
+sleep 0.3
+"$volcomp" activate --can "$can"
+"$volcomp" verify "$work/b.vct" --can "$can"
+"$volcomp" deactivate --can "$can"
+"$volcomp" status --can "$can" | tee "$work/out.txt"
+grep -q "active table: none" "$work/out.txt" || fail "deactivate"
+echo "tool session: OK"

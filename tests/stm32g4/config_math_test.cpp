@@ -1,0 +1,126 @@
+// STM32G474 driver computations: PLL, flash wait states, FDCAN bit timing, flash layout and the
+// timer settings that execute a pulse plan (checked against the plan's own timing).
+#include "volcomp/hal/stm32g4/config_math.hpp"
+
+#include <gtest/gtest.h>
+
+#include "volcomp/board_config.hpp"
+
+namespace volcomp::stm32g4 {
+namespace {
+
+TEST(Stm32g4Clock, Pll170MHzFromHsi16) {
+  const Result<PllConfig> p = ComputePll(16000000u, 170000000u);
+  ASSERT_TRUE(p.ok());
+  const uint64_t vco = uint64_t{16000000u} / p->m * p->n;
+  EXPECT_EQ(vco / p->r, 170000000u);
+  EXPECT_GE(16000000u / p->m, 2660000u);
+  EXPECT_LE(16000000u / p->m, 16000000u);
+  EXPECT_GE(vco, 96000000u);
+  EXPECT_LE(vco, 344000000u);
+  // The lowest input divider that gives exactly 170 MHz: 4 MHz reference, VCO 340 MHz.
+  EXPECT_EQ(p->m, 4u);
+  EXPECT_EQ(p->n, 85u);
+  EXPECT_EQ(p->r, 2u);
+}
+
+TEST(Stm32g4Clock, PllFromHseAndUnreachable) {
+  const Result<PllConfig> p = ComputePll(8000000u, 170000000u);
+  ASSERT_TRUE(p.ok());
+  EXPECT_EQ(uint64_t{8000000u} / p->m * p->n / p->r, 170000000u);
+  EXPECT_FALSE(ComputePll(16000000u, 170000001u).ok());
+}
+
+TEST(Stm32g4Clock, FlashWaitStatesPerRm0440Table9) {
+  EXPECT_EQ(FlashWaitStates(170000000u, true), 4u);  // 136 < HCLK <= 170 MHz: 4 WS (boost)
+  EXPECT_EQ(FlashWaitStates(136000000u, true), 3u);
+  EXPECT_EQ(FlashWaitStates(34000000u, true), 0u);
+  EXPECT_EQ(FlashWaitStates(150000000u, false), 4u);
+  EXPECT_EQ(FlashWaitStates(16000000u, false), 0u);
+}
+
+TEST(Stm32g4Can, BitTimingExactWithSamplePoint) {
+  for (uint32_t rate : {125000u, 250000u, 500000u, 1000000u}) {
+    const Result<CanBitTiming> t = ComputeCanBitTiming(170000000u, rate, 875);
+    ASSERT_TRUE(t.ok()) << rate;
+    const uint32_t tq = 1 + t->tseg1 + t->tseg2;
+    EXPECT_EQ(uint64_t{rate} * tq * t->prescaler, 170000000u) << rate;
+    const uint32_t sp = 1000 * (1 + t->tseg1) / tq;
+    EXPECT_NEAR(sp, 875, 60) << rate;
+    EXPECT_GE(t->tseg2, 1u);
+    EXPECT_LE(t->sjw, t->tseg2);
+    // NBTP fields hold value - 1.
+    EXPECT_EQ((t->nbtp() >> 16) & 0x1FF, t->prescaler - 1);
+    EXPECT_EQ((t->nbtp() >> 8) & 0xFF, t->tseg1 - 1);
+    EXPECT_EQ(t->nbtp() & 0x7F, t->tseg2 - 1);
+  }
+  EXPECT_FALSE(ComputeCanBitTiming(170000000u, 0, 875).ok());
+}
+
+TEST(Stm32g4Flash, LayoutAndPages) {
+  using namespace layout;
+  EXPECT_EQ(kTableOffset % kPageBytes, 0u);
+  EXPECT_EQ(kConfigOffset % kPageBytes, 0u);
+  EXPECT_EQ(kTableOffset + kTableBankBytes, kBankBytes);  // bank A in flash bank 1 only
+  const FlashPage a_first = PageOf(kTableOffset);
+  const FlashPage b_first = PageOf(kTableOffset + kTableBankBytes);
+  EXPECT_EQ(a_first.bank, 0u);
+  EXPECT_EQ(b_first.bank, 1u);
+  EXPECT_EQ(b_first.page, 0u);
+  EXPECT_EQ(PageOf(kTableOffset + kTableBankBytes - 1).bank, 0u);
+  EXPECT_EQ(PageOf(kTableOffset + kTableBankBytes - 1).page, 127u);
+  // A 31 x 31 x 31 int16 grid image fits a bank with the store's 64-byte records.
+  const uint32_t image = 24 + 8 + 28 + 8 + 44 + 31 * 31 * 31 * 3 * 2 + 2 + 4;
+  EXPECT_LE(image + 64, kTableBankBytes);
+}
+
+// Expands timer settings into rising/falling edge times (what PWM mode 2 + OPM + RCR produce)
+// and compares them with the plan.
+TEST(Stm32g4PulseTimer, SettingsReproduceThePlan) {
+  BoardConfig cfg = DefaultBoardConfig();
+  cfg.pulse_clock_hz = 170000000u;
+  StepGenerator gen;
+  ASSERT_TRUE(gen.Configure(cfg.axis[0], cfg.tick_hz, cfg.pulse_clock_hz).ok());
+  int32_t target = 0;
+  int checked = 0;
+  for (int tick = 0; tick < 2000; ++tick) {
+    target += (tick / 100) % 2 == 0 ? 17 : -9;
+    const PulsePlan plan = gen.Plan(target);
+    const Result<PulseTimerSettings> s = PlanToTimer(plan, gen.tick_length(), 16);
+    ASSERT_TRUE(s.ok());
+    ASSERT_EQ(s->run, plan.count > 0 || plan.dir_change);
+    if (plan.dir_change) {
+      EXPECT_EQ(s->dir_ccr, plan.dir_edge);
+    }
+    if (plan.count == 0) continue;
+    uint32_t start = 0;
+    for (uint32_t k = 0; k <= s->rcr; ++k) {
+      const uint32_t arr = k == 0 ? s->first_arr : s->arr;
+      const uint32_t ccr = k == 0 ? s->first_ccr : s->ccr;
+      const uint32_t rise = start + ccr, fall = start + arr + 1;
+      EXPECT_EQ(rise, plan.first_rise + k * plan.period);
+      EXPECT_EQ(fall - rise, plan.width);
+      start += arr + 1;
+      ++checked;
+    }
+  }
+  EXPECT_GT(checked, 1000);
+}
+
+TEST(Stm32g4PulseTimer, RejectsWhatTheTimerCannotDo) {
+  PulsePlan p;
+  p.count = 3;
+  p.period = 100000;  // beyond a 16-bit counter
+  p.width = 10;
+  EXPECT_FALSE(PlanToTimer(p, 200000, 16).ok());
+  p.period = 10;
+  p.width = 10;  // no low time
+  EXPECT_FALSE(PlanToTimer(p, 3400, 16).ok());
+  PulsePlan idle;
+  const Result<PulseTimerSettings> s = PlanToTimer(idle, 3400, 16);
+  ASSERT_TRUE(s.ok());
+  EXPECT_FALSE(s->run);
+}
+
+}  // namespace
+}  // namespace volcomp::stm32g4

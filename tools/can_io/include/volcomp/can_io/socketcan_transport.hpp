@@ -1,0 +1,49 @@
+// SocketCAN client transport (Linux): a CanTransport over hal::socketcan::SocketCanSocket.
+//
+// Send() paces on ENOBUFS (the interface queue is full; CAN netdevs default to txqueuelen 10):
+// it backs off 100 µs .. 2 ms and retries until `send_timeout`, then throws with a hint to raise
+// txqueuelen. Error frames become BusEvents; a bus-off triggers one restart request (rtnetlink,
+// needs CAP_NET_ADMIN) and, until the controller reports a restart, Send() throws CanBusOffError.
+//
+// Thread-safety: one thread at a time.
+#pragma once
+
+#include <chrono>
+#include <memory>
+#include <string>
+
+#include "volcomp/can_io/transport.hpp"
+#include "volcomp/hal/linux/socketcan_socket.hpp"
+
+namespace volcomp::can_io {
+
+struct SocketCanOptions {
+  hal::socketcan::SocketCanSocket::Options socket;  // filters, error frames, receive own
+  std::chrono::milliseconds send_timeout{2000};
+  bool restart_on_bus_off = true;
+};
+
+class SocketCanTransport : public CanTransport {
+ public:
+  /// Opens and binds; throws std::runtime_error with SocketCanErrorText's message on failure.
+  SocketCanTransport(const std::string& iface, const SocketCanOptions& options);
+
+  void Send(const CanFrame& frame) override;
+  std::optional<CanFrame> Receive(std::chrono::microseconds timeout) override;
+  std::string description() const override { return "socketcan:" + socket_.iface(); }
+  std::vector<BusEvent> TakeEvents() override;
+
+  hal::socketcan::BusState bus_state() const { return state_; }
+
+ private:
+  void OnError(const hal::socketcan::CanErrorInfo& info);
+  // Reads without blocking; true when a data frame was stored in *frame.
+  bool ReadOne(CanFrame* frame);
+
+  SocketCanOptions options_;
+  hal::socketcan::SocketCanSocket socket_;
+  hal::socketcan::BusState state_ = hal::socketcan::BusState::kErrorActive;
+  std::vector<BusEvent> events_;
+};
+
+}  // namespace volcomp::can_io

@@ -1,0 +1,85 @@
+// CanTransport: the PC tool's and the simulator's connection to a CAN bus, and OpenTransport(),
+// which builds one from a spec string:
+//   socketcan:IFACE                    Linux SocketCAN raw socket (e.g. socketcan:can0)
+//   slcan:DEVICE[@BITRATE]             SLCAN adapter on a serial device or pty
+//   slcan-tcp:HOST:PORT[@BITRATE]      SLCAN over TCP (e.g. the simulator's SlcanServer)
+// BITRATE is bit/s with an optional k/M suffix (500k, 1M, 1000000) and must be in the SLCAN S0..S9
+// table; without it the adapter keeps its configured bitrate. See docs/can-transports.md.
+//
+// Errors: hosted C++, failures throw std::runtime_error whose what() names the spec and the cause
+// (bad spec, unreachable endpoint, closed connection, adapter refusal, transmit timeout).
+// CanBusOffError (a runtime_error) marks a controller that is bus-off.
+//
+// Thread-safety: a transport is used from one thread at a time.
+#pragma once
+
+#include <chrono>
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "volcomp/can_frame.hpp"
+
+namespace volcomp::can_io {
+
+/// Something the bus or adapter reported besides frames: error frames and state changes
+/// (SocketCAN), error replies (SLCAN BEL).
+struct BusEvent {
+  enum class Kind : uint8_t {
+    kErrorFrame,    // SocketCAN error frame without a state change (bus error, no ack, ...)
+    kErrorWarning,  // controller reached the warning level
+    kErrorPassive,  // controller is error-passive
+    kBusOff,        // controller is bus-off (it sends and acknowledges nothing)
+    kErrorActive,   // controller is back to error-active (e.g. after a restart)
+    kAdapterError,  // SLCAN adapter answered BEL to a command or frame
+  };
+  Kind kind = Kind::kErrorFrame;
+  std::string text;  // readable description
+};
+
+/// Thrown by Send() while the controller is bus-off and could not be restarted.
+class CanBusOffError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+class CanTransport {
+ public:
+  virtual ~CanTransport() = default;
+
+  /// Transmits one frame (blocks only while the adapter or the interface queue is full, up to
+  /// the transport's send timeout). Throws std::runtime_error on failure, std::invalid_argument
+  /// for an invalid frame.
+  virtual void Send(const CanFrame& frame) = 0;
+  /// The next received frame, or nullopt when none arrived within `timeout` (0 = poll). Throws
+  /// std::runtime_error when the link is gone (connection closed, device removed).
+  virtual std::optional<CanFrame> Receive(std::chrono::microseconds timeout) = 0;
+  /// What this transport is connected to, e.g. "slcan-tcp:127.0.0.1:29536 @1000000".
+  virtual std::string description() const = 0;
+  /// Events seen since the last call (oldest first).
+  virtual std::vector<BusEvent> TakeEvents() { return {}; }
+};
+
+/// A parsed transport spec.
+struct TransportSpec {
+  enum class Kind : uint8_t { kSocketCan, kSlcanSerial, kSlcanTcp };
+  Kind kind = Kind::kSocketCan;
+  std::string target;    // interface, device path, or host
+  uint16_t port = 0;     // kSlcanTcp
+  uint32_t bitrate = 0;  // SLCAN: 0 = do not send S<n>
+};
+
+/// Parses a spec (forms above). Throws std::runtime_error explaining the accepted forms.
+TransportSpec ParseTransportSpec(const std::string& spec);
+/// Parses "500000", "500k", "1M" into bit/s; throws when not in the SLCAN table.
+uint32_t ParseBitrate(const std::string& text);
+
+/// Opens the transport a spec names. Throws std::runtime_error with a clear message, e.g.
+/// "socketcan: socket(AF_CAN): address family not supported: this kernel has no CAN support
+/// (try slcan-tcp:HOST:PORT against a simulator, or run inside user-mode-linux)".
+std::unique_ptr<CanTransport> OpenTransport(const std::string& spec);
+
+}  // namespace volcomp::can_io

@@ -1,0 +1,22 @@
+// Writes the CiA 306 EDS (electronic data sheet) of a volcomp node from the shared object
+// dictionary definition (od_entries.def). The checked-in docs/volcomp.eds is this output; a test
+// regenerates it and fails when they differ, so firmware, PC tool and EDS cannot drift apart.
+#pragma once
+
+#include <ostream>
+#include <string>
+
+namespace volcomp::canopen_client {
+
+struct EdsInfo {
+  std::string file_name = "volcomp.eds";
+  std::string vendor_name = "volcomp project";
+  std::string product_name = "volcomp volumetric compensation co-processor";
+  std::string device_name = "volcomp";     // 0x1008 default
+  std::string hardware_version = "1.0";    // 0x1009 default
+  std::string software_version = "0.1.0";  // 0x100A default
+};
+
+void WriteEds(std::ostream& out, const EdsInfo& info = EdsInfo());
+
+}  // namespace volcomp::canopen_client

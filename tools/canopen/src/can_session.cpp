@@ -1,0 +1,104 @@
+// PC-tool session over a real CAN transport.
+#include "volcomp/canopen_client/can_session.hpp"
+
+#include "volcomp/can_io/logging_transport.hpp"
+
+namespace volcomp::canopen_client {
+
+CanSession::CanSession(const std::string& spec,
+                       uint8_t node,
+                       const std::string& log_path,
+                       SdoClient::Options options)
+    : node_(node), options_(options), transport_(can_io::OpenTransportWithLog(spec, log_path)) {
+  link_.send = [this](const CanFrame& f) { transport_->Send(f); };
+  link_.receive = [this](uint64_t timeout_us) {
+    return transport_->Receive(std::chrono::microseconds(timeout_us));
+  };
+  link_.now_us = [] {
+    return static_cast<uint64_t>(std::chrono::duration_cast<std::chrono::microseconds>(
+                                     std::chrono::steady_clock::now().time_since_epoch())
+                                     .count());
+  };
+  link_.other = [this](const CanFrame& f) { Observe(f); };
+}
+
+void CanSession::Observe(const CanFrame& f) {
+  if (f.extended || f.rtr) return;
+  if (f.id == 0x700u + node_ && f.dlc == 1) nmt_state_ = f.data[0];
+  if (f.id == 0x80u + node_ && f.dlc == 8) emcy_.push_back(f);
+}
+
+SdoResult CanSession::Write(canopen::ObjectId id, uint32_t value) {
+  const canopen::ObjectEntry& e = canopen::Entry(id);
+  const uint32_t n = canopen::FixedSize(e.type);
+  return WriteU32(link_, node_, e.index, e.sub, value, static_cast<uint8_t>(n ? n : 4));
+}
+
+SdoResult CanSession::Read(canopen::ObjectId id, uint32_t* value) {
+  const canopen::ObjectEntry& e = canopen::Entry(id);
+  return ReadU32(link_, node_, e.index, e.sub, value);
+}
+
+SdoResult CanSession::ReadString(canopen::ObjectId id, std::string* value) {
+  const canopen::ObjectEntry& e = canopen::Entry(id);
+  SdoResult r = Upload(link_, node_, e.index, e.sub, false, options_);
+  if (r.ok) value->assign(r.data.begin(), r.data.end());
+  return r;
+}
+
+SdoResult CanSession::Download(canopen::ObjectId id,
+                               const std::vector<uint8_t>& data,
+                               std::function<void(uint32_t, uint32_t)> progress) {
+  const canopen::ObjectEntry& e = canopen::Entry(id);
+  return canopen_client::Download(link_, node_, e.index, e.sub, data, options_,
+                                  std::move(progress));
+}
+
+SdoResult CanSession::UploadDomain(canopen::ObjectId id, std::vector<uint8_t>* data) {
+  const canopen::ObjectEntry& e = canopen::Entry(id);
+  SdoResult r = Upload(link_, node_, e.index, e.sub, true, options_);
+  if (r.ok) *data = r.data;
+  return r;
+}
+
+void CanSession::Listen(std::chrono::milliseconds duration) {
+  const auto end = std::chrono::steady_clock::now() + duration;
+  for (;;) {
+    const auto now = std::chrono::steady_clock::now();
+    if (now >= end) return;
+    const auto left = std::chrono::duration_cast<std::chrono::microseconds>(end - now);
+    if (auto f = transport_->Receive(left)) Observe(*f);
+  }
+}
+
+std::vector<CanFrame> CanSession::TakeEmcy() {
+  std::vector<CanFrame> out;
+  out.swap(emcy_);
+  return out;
+}
+
+void CanSession::SendNmt(uint8_t command) {
+  CanFrame f;
+  f.id = 0;
+  f.dlc = 2;
+  f.data[0] = command;
+  f.data[1] = node_;
+  transport_->Send(f);
+}
+
+std::string NmtStateName(uint8_t state) {
+  switch (state) {
+    case 0x00:
+      return "boot-up";
+    case 0x04:
+      return "stopped";
+    case 0x05:
+      return "operational";
+    case 0x7F:
+      return "pre-operational";
+    default:
+      return "unknown state " + std::to_string(state);
+  }
+}
+
+}  // namespace volcomp::canopen_client

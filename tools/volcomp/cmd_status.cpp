@@ -1,0 +1,212 @@
+// `volcomp status [--json]` and `volcomp monitor`: a board's state over CAN.
+#include <chrono>
+#include <cstdio>
+#include <iostream>
+
+#include "can_options.hpp"
+#include "commands.hpp"
+#include "volcomp/byte_order.hpp"
+#include "volcomp/canopen/sdo_abort.hpp"
+#include "volcomp/status.hpp"
+#include "volcomp/tools/json.hpp"
+
+namespace volcomp::tools {
+namespace {
+
+using canopen::ObjectId;
+
+struct Snapshot {
+  std::string device_name, software_version;
+  uint32_t vendor = 0, product = 0, revision = 0, serial = 0;
+  uint32_t state = 0, table_status = 0, active_id = 0, active_crc = 0, staged_crc = 0,
+           staged_id = 0, staged_bytes = 0, writable = 0, axes = 0;
+  int32_t commanded[6] = {}, correction_q8[6] = {}, output[6] = {};
+  uint32_t backlog[6] = {};
+  uint32_t counters[9] = {};
+  std::optional<uint8_t> nmt;
+};
+
+uint32_t Get(canopen_client::CanSession& s, ObjectId id) {
+  uint32_t v = 0;
+  const auto r = s.Read(id, &v);
+  if (!r.ok) throw InputError("reading " + std::string(canopen::Entry(id).name) + ": " + r.message);
+  return v;
+}
+
+Snapshot Take(canopen_client::CanSession& s, bool axes_detail) {
+  Snapshot n;
+  s.ReadString(ObjectId::kDeviceName, &n.device_name);
+  s.ReadString(ObjectId::kSoftwareVersion, &n.software_version);
+  n.vendor = Get(s, ObjectId::kVendorId);
+  n.product = Get(s, ObjectId::kProductCode);
+  n.revision = Get(s, ObjectId::kRevision);
+  n.serial = Get(s, ObjectId::kSerialNumber);
+  n.state = Get(s, ObjectId::kDeviceState);
+  n.table_status = Get(s, ObjectId::kTableStatus);
+  n.active_id = Get(s, ObjectId::kActiveTableId);
+  n.active_crc = Get(s, ObjectId::kActiveTableCrc);
+  n.staged_crc = Get(s, ObjectId::kStagedTableCrc);
+  n.staged_id = Get(s, ObjectId::kStagedTableId);
+  n.staged_bytes = Get(s, ObjectId::kStagedBytes);
+  n.writable = Get(s, ObjectId::kWriteAccess);
+  n.axes = Get(s, ObjectId::kAxisCountConfig);
+  const uint32_t axes = n.axes > 6 ? 6 : n.axes;
+  for (uint32_t a = 0; a < axes && axes_detail; ++a) {
+    auto id = [a](ObjectId first) { return static_cast<ObjectId>(static_cast<int>(first) + a); };
+    n.commanded[a] = static_cast<int32_t>(Get(s, id(ObjectId::kCommandedPosition1)));
+    n.correction_q8[a] = static_cast<int32_t>(Get(s, id(ObjectId::kAppliedCorrection1)));
+    n.output[a] = static_cast<int32_t>(Get(s, id(ObjectId::kOutputPosition1)));
+    n.backlog[a] = Get(s, id(ObjectId::kMaxBacklog1));
+  }
+  for (int i = 0; i < 9; ++i) {
+    n.counters[i] = Get(s, static_cast<ObjectId>(static_cast<int>(ObjectId::kCanRxFrames) + i));
+  }
+  n.nmt = s.nmt_state();
+  return n;
+}
+
+const char* kStateBits[] = {"referenced",      "engaged",     "fault",
+                            "writable",        "moving",      "table-active",
+                            "staged-verified", "passthrough", "settings-pending"};
+const char* kStagedStates[] = {"empty", "receiving", "complete", "verified", "failed"};
+const char* kCounterNames[] = {"can_rx_frames",    "can_tx_frames",    "malformed_frames",
+                               "sdo_aborts",       "emcy_sent",        "ticks",
+                               "lost_step_checks", "max_tick_cost_ns", "refused_actions"};
+
+std::string StateText(uint32_t state) {
+  std::string s;
+  for (int b = 0; b < 9; ++b) {
+    if (state & (1u << b)) s += std::string(s.empty() ? "" : ",") + kStateBits[b];
+  }
+  return s.empty() ? "-" : s;
+}
+
+std::string Hex32(uint32_t v) {
+  char b[16];
+  std::snprintf(b, sizeof b, "0x%08X", v);
+  return b;
+}
+
+std::string Emcy(const CanFrame& f) {
+  char b[96];
+  std::snprintf(b, sizeof b, "EMCY 0x%04X register 0x%02X data %02X %02X %02X %02X %02X",
+                LoadLe16(f.data), f.data[2], f.data[3], f.data[4], f.data[5], f.data[6], f.data[7]);
+  std::string s = b;
+  if (LoadLe16(f.data) == 0xFF10)
+    s += " (refused action: abort " + Hex32(LoadLe32(f.data + 3)) + ")";
+  if (LoadLe16(f.data) == 0x6300)
+    s += std::string(" (table invalid: ") + ErrorName(static_cast<Error>(f.data[3])) + ")";
+  if (LoadLe16(f.data) == 0x0000) s += " (errors cleared)";
+  return s;
+}
+
+}  // namespace
+
+int RunStatus(Args& args) {
+  const CanOptions can = ParseCanOptions(args);
+  const bool json = args.flag("--json");
+  args.finish();
+  auto s = OpenSession(can);
+  s->Listen(std::chrono::milliseconds(0));
+  const Snapshot n = Take(*s, true);
+  const uint32_t staged_state = (n.table_status >> 8) & 0xFF;
+  const Error last = static_cast<Error>(n.table_status >> 16);
+  if (json) {
+    JsonWriter w(std::cout);
+    w.begin_object();
+    w.key("node").value(unsigned{can.node});
+    w.key("device_name").value(n.device_name);
+    w.key("software_version").value(n.software_version);
+    w.key("vendor_id").value(Hex32(n.vendor));
+    w.key("product_code").value(Hex32(n.product));
+    w.key("revision").value(Hex32(n.revision));
+    w.key("serial_number").value(uint64_t{n.serial});
+    if (n.nmt) w.key("nmt_state").value(canopen_client::NmtStateName(*n.nmt));
+    w.key("device_state").value(uint64_t{n.state});
+    w.key("device_state_flags").value(StateText(n.state));
+    w.key("writable").value(n.writable != 0);
+    w.key("active_table").begin_object();
+    w.key("present").value((n.state & 32u) != 0);
+    w.key("id").value(uint64_t{n.active_id});
+    w.key("crc32").value(Hex32(n.active_crc));
+    w.end_object();
+    w.key("staged_table").begin_object();
+    w.key("state").value(staged_state < 5 ? kStagedStates[staged_state] : "?");
+    w.key("bytes").value(uint64_t{n.staged_bytes});
+    w.key("id").value(uint64_t{n.staged_id});
+    w.key("crc32").value(Hex32(n.staged_crc));
+    w.key("last_error").value(ErrorName(last));
+    w.end_object();
+    w.key("axes").begin_array();
+    for (uint32_t a = 0; a < n.axes && a < 6; ++a) {
+      w.begin_object();
+      w.key("commanded_steps").value(int64_t{n.commanded[a]});
+      w.key("applied_correction_steps").value(n.correction_q8[a] / 256.0);
+      w.key("output_steps").value(int64_t{n.output[a]});
+      w.key("max_backlog_steps").value(uint64_t{n.backlog[a]});
+      w.end_object();
+    }
+    w.end_array();
+    w.key("counters").begin_object();
+    for (int i = 0; i < 9; ++i) w.key(kCounterNames[i]).value(uint64_t{n.counters[i]});
+    w.end_object();
+    w.end_object();
+    return 0;
+  }
+  std::printf("node %u: %s %s (vendor %s, product %s, revision %s, serial %u)%s\n", can.node,
+              n.device_name.c_str(), n.software_version.c_str(), Hex32(n.vendor).c_str(),
+              Hex32(n.product).c_str(), Hex32(n.revision).c_str(), n.serial,
+              n.nmt ? (", " + canopen_client::NmtStateName(*n.nmt)).c_str() : "");
+  std::printf("state: %s\n", StateText(n.state).c_str());
+  std::printf(
+      "active table: %s\n",
+      (n.state & 32u)
+          ? ("id " + std::to_string(n.active_id) + ", CRC-32 " + Hex32(n.active_crc)).c_str()
+          : "none (pass-through)");
+  std::printf(
+      "staged table: %s, %u bytes, id %u, CRC-32 %s%s\n",
+      staged_state < 5 ? kStagedStates[staged_state] : "?", n.staged_bytes, n.staged_id,
+      Hex32(n.staged_crc).c_str(),
+      last != Error::kOk
+          ? (std::string(", last error ") + ErrorName(last) + ": " + ErrorText(last)).c_str()
+          : "");
+  for (uint32_t a = 0; a < n.axes && a < 6; ++a) {
+    std::printf("axis %u: commanded %d, correction %+.3f, output %d steps, max backlog %u\n", a + 1,
+                n.commanded[a], n.correction_q8[a] / 256.0, n.output[a], n.backlog[a]);
+  }
+  std::printf("counters:");
+  for (int i = 0; i < 9; ++i) std::printf(" %s=%u", kCounterNames[i], n.counters[i]);
+  std::printf("\n");
+  return 0;
+}
+
+int RunMonitor(Args& args) {
+  const CanOptions can = ParseCanOptions(args);
+  const double duration = args.number("--duration").value_or(0);
+  const long long interval = args.integer("--interval-ms").value_or(1000);
+  args.finish();
+  if (interval < 50) throw UsageError("--interval-ms must be at least 50");
+  auto s = OpenSession(can);
+  const auto start = std::chrono::steady_clock::now();
+  std::optional<uint8_t> last_nmt;
+  for (;;) {
+    s->Listen(std::chrono::milliseconds(interval));
+    for (const CanFrame& f : s->TakeEmcy()) std::printf("%s\n", Emcy(f).c_str());
+    if (s->nmt_state() != last_nmt && s->nmt_state()) {
+      std::printf("heartbeat: %s\n", canopen_client::NmtStateName(*s->nmt_state()).c_str());
+      last_nmt = s->nmt_state();
+    }
+    const Snapshot n = Take(*s, true);
+    std::printf("state %s |", StateText(n.state).c_str());
+    for (uint32_t a = 0; a < n.axes && a < 6; ++a) {
+      std::printf(" a%u %d%+.2f", a + 1, n.commanded[a], n.correction_q8[a] / 256.0);
+    }
+    std::printf(" | rx %u tx %u aborts %u\n", n.counters[0], n.counters[1], n.counters[3]);
+    std::fflush(stdout);
+    const double elapsed =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (duration > 0 && elapsed >= duration) return 0;
+  }
+}
+
+}  // namespace volcomp::tools
