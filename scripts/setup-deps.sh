@@ -2,6 +2,7 @@
 # Installs the Debian packages volcomp needs (idempotent). Usage: scripts/setup-deps.sh [GROUP...]
 #   build   compiler, CMake, Ninja, GoogleTest, Google Benchmark (default)
 #   arm     Cortex-M4F cross toolchain (GCC 12, newlib/picolibc, binutils) and QEMU (mps2-an386)
+#   fuzz    clang 14 with libFuzzer and the sanitizer runtimes (the fuzz preset)
 #   can     CAN test peers: Debian's python3-can (the independent SDO client), can-utils
 #           (candump), user-mode-linux + kmod (real SocketCAN in a UML kernel)
 # Installs only what is missing; needs root or sudo for that, and stops with a clear message
@@ -10,7 +11,8 @@ set -euo pipefail
 
 declare -A GROUPS_PKGS=(
   [build]="g++ cmake ninja-build libgtest-dev libgmock-dev libbenchmark-dev"
-  [can]="python3-can can-utils user-mode-linux kmod"
+  [can]="python3-can can-utils user-mode-linux kmod libgpiod-dev"
+  [fuzz]="clang-14 libclang-rt-14-dev"
   [arm]="gcc-arm-none-eabi binutils-arm-none-eabi libnewlib-arm-none-eabi libstdc++-arm-none-eabi-newlib qemu-system-arm python3"
 )
 

@@ -1,9 +1,11 @@
 #!/usr/bin/env bash
 # Builds everything and runs every test (README Quick start, command 2; also what CI runs).
 #   scripts/test.sh            release build + tests, Cortex-M4F build + QEMU tests + cycle
-#                              budgets, then an ASan/UBSan build + tests
+#                              budgets, then an ASan/UBSan build + tests, then 30 s of libFuzzer
+#                              per fuzz target
 #   scripts/test.sh --fast     release and Cortex-M4F builds + tests only
-# Long versions of the randomized tests: VOLCOMP_ENGINE_STEPS=100000000 scripts/test.sh --fast
+# Long versions (docs/reliability.md): VOLCOMP_ENGINE_STEPS, VOLCOMP_FAULT_TRIALS,
+# VOLCOMP_SOAK_STEPS, VOLCOMP_FUZZ_SECONDS (cmake -DVOLCOMP_FUZZ_SECONDS=N --preset fuzz).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 fast=0
@@ -35,5 +37,8 @@ if [[ $fast -eq 0 ]]; then
   # Tests that start other processes (python3-can, user-mode-linux) run once, in the release
   # build; the sanitizer build runs everything in-process.
   run_preset host-asan -LE external
+  # libFuzzer (clang 14 + ASan + UBSan): each target 30 s on its seed corpus (docs/reliability.md).
+  scripts/setup-deps.sh fuzz
+  run_preset fuzz
 fi
 echo "== all tests passed" >&2

@@ -13,6 +13,7 @@ void Node::Start(uint8_t node_id, ObjectValues* app, uint32_t now_ms, const SdoS
   node_id_ = node_id;
   app_ = app;
   sdo_.Init(node_id, this, sdo);
+  reported_aborts_ = 0;
   urgent_count_ = 0;
   reset_ = ResetRequest::kNone;
   CanFrame boot;
@@ -68,6 +69,19 @@ void Node::OnFrame(const CanFrame& f, uint32_t now_ms) {
 
 void Node::Poll(uint32_t now_ms) {
   if (state_ != NmtState::kStopped) sdo_.Poll(now_ms);
+  // Report failed transfers (protocol aborts: toggle, timeout, sequence, CRC, ...) by EMCY; the
+  // application reports the requests it refuses itself.
+  if (sdo_.aborts() != reported_aborts_) {
+    reported_aborts_ = sdo_.aborts();
+    const uint32_t code = sdo_.last_abort();
+    if ((code >> 16) == 0x0503 || (code >> 16) == 0x0504) {
+      uint8_t m[5];
+      StoreLe32(m, code);
+      m[4] = 0;
+      RaiseError(kEmcySdoTransferFailed, kErrCommunication, m);
+      ClearErrors();
+    }
+  }
   if (heartbeat_ms_ != 0 && static_cast<uint32_t>(now_ms - last_heartbeat_ms_) >= heartbeat_ms_) {
     last_heartbeat_ms_ = now_ms;
     CanFrame hb;

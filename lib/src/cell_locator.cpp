@@ -17,11 +17,11 @@ void CellLocator::Init(const table::Dimension& dim) {
 }
 
 void LatticeLocator::Init(const table::Dimension& dim) {
-  lo_ = dim.origin_steps;
-  span_ = static_cast<uint32_t>(static_cast<uint64_t>(dim.nodes - 1u) * dim.spacing_steps);
+  d_.lo = dim.origin_steps;
+  d_.span = static_cast<uint32_t>(static_cast<uint64_t>(dim.nodes - 1u) * dim.spacing_steps);
   const uint64_t recip = ~uint64_t{0} / dim.spacing_steps;
-  recip_lo_ = static_cast<uint32_t>(recip);
-  recip_hi_ = static_cast<uint32_t>(recip >> 32);
+  d_.recip_lo = static_cast<uint32_t>(recip);
+  d_.recip_hi = static_cast<uint32_t>(recip >> 32);
 }
 
 }  // namespace volcomp

@@ -50,25 +50,38 @@ Status Compensator::Configure(const BoardConfig& config) {
     last_pos_[a] = 0;
     reverse_[a] = false;
     target_q8_[a] = 0;
+    wraps_[a] = false;
   }
   axis_count_ = config.axis_count;
   has_table_ = false;
+  UpdateEngaged();
+  phase_ = 0;
   return Status::Ok();
 }
 
 void Compensator::SetTable(const PreparedTable& table, const int32_t* machine_pos_steps) {
   table_ = table;
+  for (int8_t& c : grid_component_of_) c = -1;
+  if (table_.has_grid) {
+    for (int8_t c = 0; c < 3; ++c) grid_component_of_[table_.grid.axis(c)] = c;
+  }
   for (uint8_t a = 0; a < axis_count_; ++a) {
     const int8_t i = table_.axis_table_of[a];
     wraps_[a] = i >= 0 && table_.axis_table[i].wraps();
   }
   has_table_ = true;
+  UpdateEngaged();
   Rebase(machine_pos_steps);
 }
 
-void Compensator::ClearTable() { has_table_ = false; }
+void Compensator::ClearTable() {
+  has_table_ = false;
+  UpdateEngaged();
+  for (bool& w : wraps_) w = false;
+}
 
 void Compensator::Rebase(const int32_t* machine_pos_steps) {
+  phase_ = 0;  // a refresh in progress used the old coordinates
   for (uint8_t a = 0; a < axis_count_; ++a) {
     last_pos_[a] = machine_pos_steps[a];
     if (has_table_ && wraps_[a]) {
@@ -85,32 +98,44 @@ bool Compensator::passthrough() const {
   return true;
 }
 
-void Compensator::Tick(const int32_t* machine_pos_steps, int32_t* correction_steps) {
-  for (uint8_t a = 0; a < axis_count_; ++a) {
-    const int32_t delta = static_cast<int32_t>(static_cast<uint32_t>(machine_pos_steps[a]) -
-                                               static_cast<uint32_t>(last_pos_[a]));
-    last_pos_[a] = machine_pos_steps[a];
-    reverse_[a] = delta < 0 ? true : (delta > 0 ? false : reverse_[a]);
-    if (has_table_ && wraps_[a]) wrap_[a].Update(delta);
-  }
-  if (engaged()) {
-    int32_t axis_pos[table::kMaxAxes];
-    for (uint8_t a = 0; a < axis_count_; ++a) {
-      axis_pos[a] = wraps_[a] ? wrap_[a].position() : machine_pos_steps[a];
-    }
-    table_.TargetsQ8(machine_pos_steps, axis_pos, reverse_, axis_count_, target_q8_);
-  } else {
+void Compensator::RefreshTargets(const int32_t* machine_pos_steps) {
+  if (!engaged()) {
     for (uint8_t a = 0; a < axis_count_; ++a) target_q8_[a] = 0;
+    phase_ = 0;
+    return;
   }
-  for (uint8_t a = 0; a < axis_count_; ++a) {
-    int32_t t = target_q8_[a];
-    t = t > max_q8_[a] ? max_q8_[a] : t;
-    t = t < -max_q8_[a] ? -max_q8_[a] : t;
+  // One part per tick; an if-chain, not a switch (a jump table would be an indirect jump, which
+  // the static cycle bound of toolchain/cyclemodel refuses).
+  const uint32_t phase = phase_;
+  uint32_t next = phase + 1u;
+  if (phase < kGridPhases) {
+    if (table_.has_grid) {
+      if (phase == 0) {
+        table_.grid.Begin(machine_pos_steps, &grid_partial_);
+      } else if (phase == 1) {
+        table_.grid.AccumulateZ0(&grid_partial_);
+      } else {
+        table_.grid.FinishZ1(grid_partial_, grid_q8_);
+      }
+    }
+  } else {
+    // Axis a: its grid component (from the positions latched in part 0), its AXIS1D table at
+    // its current position and direction, clamped: the new target of the axis.
+    const uint32_t a = phase - kGridPhases;
+    const int8_t c = grid_component_of_[a];
+    int32_t t = c >= 0 ? grid_q8_[c] : 0;
+    const int8_t i = table_.axis_table_of[a];
+    if (i >= 0) {
+      t += table_.axis_table[i].Lookup(wraps_[a] ? wrap_[a].position() : machine_pos_steps[a],
+                                       reverse_[a]);
+    }
+    const int32_t max = max_q8_[a];
+    t = t > max ? max : t;
+    t = t < -max ? -max : t;
     target_q8_[a] = t;
-    const int64_t p = limiter_[a].Step(static_cast<int64_t>(t) * (int64_t{1} << 24));  // Q8 -> Q32
-    // Round half up to whole steps.
-    correction_steps[a] = static_cast<int32_t>((p + (int64_t{1} << 31)) >> 32);
+    next = a + 1u == axis_count_ ? 0u : next;
   }
+  phase_ = static_cast<uint8_t>(next);
 }
 
 }  // namespace volcomp

@@ -26,30 +26,34 @@ Status ControlTick::Configure(const BoardConfig& config) {
 }
 
 void ControlTick::Run(const uint32_t* input_counters, PulsePlan* plans) {
-  bool moved = false;
+  // Two walks over the axes around the compensator's target refresh (Compensator::Tick() in its
+  // three steps, fused with the counter and output work of each axis).
+  uint32_t moved = 0;
   for (uint8_t a = 0; a < axis_count_; ++a) {
     const uint32_t raw = input_counters[a];
     // Sign-extend the counter difference from the counter width (16 or 32 bits).
     const uint32_t diff = (raw - last_counter_[a]) << counter_shift_[a];
     last_counter_[a] = raw;
-    moved = moved || diff != 0;
-    commanded_[a] = static_cast<int32_t>(
+    moved |= diff;
+    const uint32_t commanded =
         static_cast<uint32_t>(commanded_[a]) +
-        static_cast<uint32_t>(static_cast<int32_t>(diff) >> counter_shift_[a]));
-    machine_[a] = static_cast<int32_t>(static_cast<uint32_t>(commanded_[a]) +
-                                       static_cast<uint32_t>(reference_offset_[a]));
+        static_cast<uint32_t>(static_cast<int32_t>(diff) >> counter_shift_[a]);
+    commanded_[a] = static_cast<int32_t>(commanded);
+    machine_[a] = static_cast<int32_t>(commanded + static_cast<uint32_t>(reference_offset_[a]));
+    compensator_.SenseAxis(a, machine_[a]);
   }
-  compensator_.Tick(machine_, correction_);
+  compensator_.RefreshTargets(machine_);
   for (uint8_t a = 0; a < axis_count_; ++a) {
-    target_[a] = static_cast<int32_t>(static_cast<uint32_t>(commanded_[a]) +
-                                      static_cast<uint32_t>(correction_[a]));
-    plans[a] = generator_[a].Plan(target_[a]);
-    const int32_t owed = generator_[a].backlog(target_[a]);
-    const uint32_t mag = static_cast<uint32_t>(owed < 0 ? -static_cast<int64_t>(owed) : owed);
-    max_backlog_[a] = mag > max_backlog_[a] ? mag : max_backlog_[a];
-    overruns_ += mag > generator_[a].max_pulses_per_tick() ? 1u : 0u;
+    const int32_t correction = compensator_.ApplyAxis(a);
+    correction_[a] = correction;
+    const int32_t target = static_cast<int32_t>(static_cast<uint32_t>(commanded_[a]) +
+                                                static_cast<uint32_t>(correction));
+    target_[a] = target;
+    const uint32_t left = generator_[a].PlanTick(target, &plans[a]);
+    max_backlog_[a] = left > max_backlog_[a] ? left : max_backlog_[a];
+    overruns_ += left > generator_[a].max_pulses_per_tick() ? 1u : 0u;
   }
-  idle_ticks_ = moved ? 0u : idle_ticks_ + (idle_ticks_ != 0xFFFFFFFFu ? 1u : 0u);
+  idle_ticks_ = moved != 0 ? 0u : idle_ticks_ + (idle_ticks_ != 0xFFFFFFFFu ? 1u : 0u);
   ++ticks_;
 }
 

@@ -27,7 +27,10 @@ uint32_t Wrap(int32_t v) { return static_cast<uint32_t>(v); }
 Status ValidateGatewayConfig(const GatewayConfig& config, uint8_t axis_count) {
   if (axis_count == 0 || axis_count > table::kMaxAxes) return Error::kConfigInvalid;
   if (config.map_count > kMaxPdoMaps || config.own_node_id > 127) return Error::kConfigInvalid;
-  if (config.sync_cob_id == kNmtCobId || config.sync_cob_id > 0x7FF) return Error::kConfigInvalid;
+  if (config.sync_cob_id == kNmtCobId || config.sync_cob_id > 0x7FF ||
+      IsOwnCobId(config.sync_cob_id, config.own_node_id)) {
+    return Error::kConfigInvalid;
+  }
   if (config.feedback != FeedbackMode::kAtSync && config.feedback != FeedbackMode::kLatest) {
     return Error::kConfigInvalid;
   }

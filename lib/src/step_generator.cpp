@@ -1,21 +1,41 @@
 // Output pulse planning.
 #include "volcomp/step_generator.hpp"
 
+#include "volcomp/interp_arith.hpp"
+
 namespace volcomp {
 namespace {
+
 uint32_t NsToClock(uint32_t ns, uint32_t clock_hz) {
   return static_cast<uint32_t>((static_cast<uint64_t>(ns) * clock_hz + 999999999u) / 1000000000u);
 }
+
+// max(t, -2^30) for t >= -2^31 + 2^29 (one SSAT #31).
+inline int32_t FloorFarPast(int32_t t) {
+#if defined(__ARM_FEATURE_SAT)
+  return __ssat(t, 31);
+#else
+  return t < -(int32_t{1} << 30) ? -(int32_t{1} << 30) : t;
+#endif
+}
+
 }  // namespace
 
 Status StepGenerator::Configure(const AxisConfig& axis, uint32_t tick_hz, uint32_t pulse_clock_hz) {
   if (tick_hz == 0 || pulse_clock_hz < tick_hz || axis.drive.max_rate_hz == 0) {
     return Error::kConfigInvalid;
   }
+  constexpr uint32_t kTimeLimit = 1u << 29;
   edges_only_ = axis.output_format == PulseFormat::kQuadrature;
   tick_ = pulse_clock_hz / tick_hz;
   width_ = edges_only_ ? 0 : NsToClock(axis.drive.pulse_width_ns, pulse_clock_hz);
   const uint32_t space = edges_only_ ? 0 : NsToClock(axis.drive.step_space_ns, pulse_clock_hz);
+  const uint64_t setup = static_cast<uint64_t>(axis.drive.dir_setup_ns) * pulse_clock_hz;
+  const uint64_t hold = static_cast<uint64_t>(axis.drive.dir_hold_ns) * pulse_clock_hz;
+  if (tick_ >= kTimeLimit || setup >= uint64_t{kTimeLimit} * 1000000000u ||
+      hold >= uint64_t{kTimeLimit} * 1000000000u) {
+    return Error::kConfigInvalid;
+  }
   setup_ = NsToClock(axis.drive.dir_setup_ns, pulse_clock_hz);
   hold_ = NsToClock(axis.drive.dir_hold_ns, pulse_clock_hz);
   const uint32_t rate_period =
@@ -31,51 +51,62 @@ Status StepGenerator::Configure(const AxisConfig& axis, uint32_t tick_hz, uint32
   return Status::Ok();
 }
 
-PulsePlan StepGenerator::Plan(int32_t target_steps) {
-  PulsePlan plan;
-  plan.width = width_;
-  const int32_t owed = backlog(target_steps);
-  const bool want_negative = owed < 0;
-  const uint32_t steps = static_cast<uint32_t>(want_negative ? -static_cast<int64_t>(owed) : owed);
-  int64_t earliest = last_rise_ + min_period_;
-  plan.negative = negative_;
-  if (steps != 0 && want_negative != negative_) {
-    int64_t edge = last_fall_ + hold_;
-    if (edge < 0) edge = 0;
-    if (edge < tick_) {  // otherwise wait: the hold time runs into the next tick
-      plan.dir_change = true;
-      plan.dir_edge = static_cast<uint32_t>(edge);
-      plan.negative = negative_ = want_negative;
-      if (edge + setup_ > earliest) earliest = edge + setup_;
-    } else {
-      earliest = tick_;  // no pulses this tick
+uint32_t StepGenerator::PlanTick(int32_t target_steps, PulsePlan* out) {
+  const int32_t owed =
+      static_cast<int32_t>(static_cast<uint32_t>(target_steps) - static_cast<uint32_t>(position_));
+  const int32_t tick = static_cast<int32_t>(tick_);
+  int32_t rise = last_rise_, fall = last_fall_;
+  bool negative = negative_, dir_change = false;
+  uint32_t count = 0, dir_edge = 0, first_rise = 0, period = 0, left = 0;
+  if (owed != 0) {
+    const bool want_negative = owed < 0;
+    const uint32_t steps =
+        want_negative ? 0u - static_cast<uint32_t>(owed) : static_cast<uint32_t>(owed);
+    left = steps;
+    int32_t earliest = rise + static_cast<int32_t>(min_period_);
+    bool may_pulse = true;
+    if (want_negative != negative) {
+      int32_t edge = fall + static_cast<int32_t>(hold_);
+      edge = edge < 0 ? 0 : edge;
+      if (edge < tick) {
+        dir_change = true;
+        dir_edge = static_cast<uint32_t>(edge);
+        negative = want_negative;
+        const int32_t ready = edge + static_cast<int32_t>(setup_);
+        earliest = ready > earliest ? ready : earliest;
+      } else {
+        may_pulse = false;  // the hold time runs into the next tick
+      }
+    }
+    earliest = earliest < 0 ? 0 : earliest;
+    if (may_pulse && earliest < tick) {
+      const uint32_t window = tick_ - static_cast<uint32_t>(earliest);
+      // The first pulse sits at `earliest`; n pulses need (n - 1) periods, all rises inside.
+      uint32_t fit = by_min_period_.Divide(window - 1u).quotient + 1u;
+      fit = fit > max_per_tick_ ? max_per_tick_ : fit;
+      count = steps < fit ? steps : fit;
+      period = MulHiU32(window, recip_count_[count]);
+      period = period < min_period_ ? min_period_ : period;
+      first_rise = static_cast<uint32_t>(earliest);
+      rise = earliest + static_cast<int32_t>((count - 1u) * period);
+      fall = rise + static_cast<int32_t>(width_);
+      position_ = static_cast<int32_t>(static_cast<uint32_t>(position_) +
+                                       (want_negative ? 0u - count : count));
+      left = steps - count;
     }
   }
-  if (earliest < 0) earliest = 0;
-  if (steps != 0 && plan.negative == want_negative && earliest < tick_) {
-    const uint32_t window = tick_ - static_cast<uint32_t>(earliest);
-    // The first pulse sits at `earliest`; n pulses need (n - 1) periods, all rises inside the tick.
-    uint32_t fit = by_min_period_.Divide(window - 1u).quotient + 1u;
-    if (fit > max_per_tick_) fit = max_per_tick_;
-    const uint32_t n = steps < fit ? steps : fit;
-    uint32_t period =
-        static_cast<uint32_t>((static_cast<uint64_t>(window) * recip_count_[n]) >> 32);
-    if (period < min_period_) period = min_period_;
-    plan.count = n;
-    plan.first_rise = static_cast<uint32_t>(earliest);
-    plan.period = period;
-    last_rise_ = earliest + static_cast<int64_t>(n - 1) * period;
-    last_fall_ = last_rise_ + width_;
-    position_ =
-        static_cast<int32_t>(static_cast<uint32_t>(position_) +
-                             (want_negative ? static_cast<uint32_t>(-static_cast<int64_t>(n)) : n));
-  }
-  // Move the time origin to the next tick start; keep far-past values bounded.
-  last_rise_ -= tick_;
-  last_fall_ -= tick_;
-  if (last_rise_ < -(int64_t{1} << 40)) last_rise_ = -(int64_t{1} << 40);
-  if (last_fall_ < -(int64_t{1} << 40)) last_fall_ = -(int64_t{1} << 40);
-  return plan;
+  negative_ = negative;
+  // Move the time origin to the next tick start.
+  last_rise_ = FloorFarPast(rise - tick);
+  last_fall_ = FloorFarPast(fall - tick);
+  out->count = count;
+  out->negative = negative;
+  out->dir_change = dir_change;
+  out->dir_edge = dir_edge;
+  out->first_rise = first_rise;
+  out->period = period;
+  out->width = width_;
+  return left;
 }
 
 }  // namespace volcomp

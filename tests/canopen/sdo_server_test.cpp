@@ -78,7 +78,8 @@ TEST_F(SdoServerTest, ExpeditedDownloadAndUpload) {
   EXPECT_EQ(Send("4000300000000000"), Frames{"590#8000300000000206"});
   EXPECT_EQ(Send("4018100900000000"), Frames{"590#8018100911000906"});
   // Unknown command specifier.
-  EXPECT_EQ(Send("E000000000000000"), Frames{"590#8000000001000405"});
+  EXPECT_EQ(Send("E000000000000000"),
+            (Frames{"090#11FF110100040500", "090#0000000000000000", "590#8000000001000405"}));
 }
 
 TEST_F(SdoServerTest, SegmentedUploadOfAString) {
@@ -88,7 +89,8 @@ TEST_F(SdoServerTest, SegmentedUploadOfAString) {
   EXPECT_EQ(Send("7000000000000000"), Frames{"590#1B2D580000000000"});  // 2 bytes, last
   // Toggle error.
   EXPECT_EQ(Send("4008100000000000"), Frames{"590#4108100009000000"});
-  EXPECT_EQ(Send("7000000000000000"), Frames{"590#8008100000000305"});
+  EXPECT_EQ(Send("7000000000000000"),
+            (Frames{"090#11FF110000030500", "090#0000000000000000", "590#8008100000000305"}));
 }
 
 TEST_F(SdoServerTest, SegmentedDownloadOfADomain) {
@@ -149,7 +151,10 @@ TEST_F(SdoServerTest, BlockDownloadWrongCrcAborts) {
   Send("0130313233343536");
   Send("0237383941424344");
   Send("8345464748494A00");
-  EXPECT_EQ(Send("C5F1350000000000"), Frames{"590#8000210004000405"});
+  // The abort, preceded by the EMCY reporting the failed transfer (0xFF11, communication error,
+  // abort code in bytes 3-6) and the "errors cleared" EMCY.
+  EXPECT_EQ(Send("C5F1350000000000"),
+            (Frames{"090#11FF110400040500", "090#0000000000000000", "590#8000210004000405"}));
   EXPECT_EQ(values_.ends_failed, 1);
   EXPECT_EQ(node_.sdo().last_abort(), canopen::kAbortCrc);
 }
@@ -176,7 +181,8 @@ TEST_F(SdoServerTest, IdleTransferTimesOut) {
   Advance(150);  // re-ack of the partial sub-block
   Drain();
   Advance(1000);
-  EXPECT_EQ(Drain(), Frames{"590#8000210000000405"});
+  EXPECT_EQ(Drain(),
+            (Frames{"090#11FF110000040500", "090#0000000000000000", "590#8000210000000405"}));
   EXPECT_EQ(values_.ends_failed, 1);
   EXPECT_FALSE(node_.sdo().busy());
 }

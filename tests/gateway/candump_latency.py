@@ -63,6 +63,8 @@ def main():
             print("identifier %s: %d frames on %s, %d on %s" % (ident, len(ts), src, len(td), dst))
             unpaired += abs(len(ts) - len(td))
         for x, y in zip(ts, td):
+            if y < x:  # a frame missing from the log shifted the pairing
+                unpaired += 1
             lat[src + "->" + dst].append(y - x)
     result = {k: summary(v) for k, v in lat.items()}
     for k, s in result.items():
@@ -73,6 +75,8 @@ def main():
     if out:
         with open(out, "w") as f:
             json.dump(result, f, indent=1)
+    if unpaired:
+        print("%d frames could not be paired (did candump drop frames?)" % unpaired)
     return 1 if unpaired else 0
 
 

@@ -11,7 +11,7 @@ Checked frame by frame, against expectations computed here (not by volcomp code)
   * targets seen by the drives = target sent + c, where c is 0 before a table is active and after
     deactivation, and at rest equals the table's correction at the target (trilinear interpolation
     of the grid CSV written by this test, in drive increments of 100 nm) within 1 increment;
-    while moving within 2 increments;
+    while moving, the correction at one of the last 10 targets within 1 increment;
   * actual positions seen by the master = exactly the target the drive took over (no following
     error, whatever the correction);
   * SYNC, NMT, SDO to and from a drive, EMCY, heartbeat, remote and extended frames are forwarded
@@ -89,8 +89,14 @@ def i32(v):
     return (v + 2 ** 31) % 2 ** 32 - 2 ** 31
 
 
+class Abort(Exception):
+    """Too many failures (or out of time): stop the session."""
+
+
 class Session:
     def __init__(self, args, grid):
+        self.t0 = time.monotonic()
+        self.deadline = self.t0 + 60
         self.args = args
         self.grid = grid
         # The master hears only what comes from the drives' side (and not the board's own frames).
@@ -118,6 +124,8 @@ class Session:
     # ---- checks
     def fail(self, what):
         self.errors.append("cycle %d: %s" % (self.cycle, what))
+        if len(self.errors) >= 30 or time.monotonic() > self.deadline:
+            raise Abort()
 
     def expect_same(self, sent, got, what):
         if (got is None or got.arbitration_id != sent.arbitration_id or
@@ -161,9 +169,10 @@ class Session:
             if self.position[a] is not None:
                 self.drv.send(can.Message(arbitration_id=TPDO[a], is_extended_id=False,
                                           data=struct.pack("<Hi", STATUSWORD, i32(self.position[a]))))
-        # The RPDOs as the drives see them. While moving, the correction may lag the target by
-        # up to `lag` cycles (the control tick runs on its own timer): any value between the
-        # expectations of the last lag + 1 targets is right.
+        # The RPDOs as the drives see them. While moving, the correction may belong to a target
+        # up to `lag` cycles old (the control tick runs on its own 1 kHz timer and the compensator
+        # refreshes its targets in 3 + axes phases, one per tick): any value between the
+        # expectations of the last lag + 1 targets (+- tolerance) is right.
         expected = self.grid.correction_increments(self.target)
         self.history = (self.history + [expected])[-(self.lag + 1):]
         for a in range(3):
@@ -225,13 +234,30 @@ class Session:
         """Runs a PC tool command while the cycles go on; returns (rc, output)."""
         p = subprocess.Popen(argv, stdout=subprocess.PIPE, stderr=subprocess.STDOUT)
         n = 0
+        self.max_gap = 0.0  # longest time between two cycles meanwhile (a stalled master)
+        last = time.monotonic()
         while p.poll() is None or n < min_cycles:
             self.step(kind, path)
+            now = time.monotonic()
+            self.max_gap = max(self.max_gap, now - last)
+            last = now
             n += 1
         out = p.stdout.read().decode(errors="replace")
-        print("$ %s -> rc %d (%d cycles meanwhile)\n%s" %
-              (" ".join(argv[1:]), p.returncode, n, out.strip()), flush=True)
+        print("$ %s -> rc %d (%d cycles meanwhile, longest gap %.0f ms)\n%s" %
+              (" ".join(argv[1:]), p.returncode, n, self.max_gap * 1000, out.strip()), flush=True)
         return p.returncode, out
+
+    def settle(self, min_s=0.15, max_s=3.0, stable_cycles=25):
+        """Cycles at rest until the corrections stopped changing (the ramp is over)."""
+        start = time.monotonic()
+        same, last = 0, None
+        while time.monotonic() - start < max_s:
+            self.step()
+            same = same + 1 if self.corrections == last else 0
+            last = list(self.corrections)
+            if same >= stable_cycles and time.monotonic() - start >= min_s:
+                return
+        self.fail("the correction did not settle within %.1f s" % max_s)
 
     # ---- the non-PDO traffic
     def passthrough_checks(self):
@@ -277,10 +303,17 @@ def main():
         return 0
     grid = Grid(nodes)
     s = Session(args, grid)
+    try:
+        run(s, grid, args)
+    except Abort:
+        s.errors.append("aborted")
+    return report(s)
+
+
+def run(s, grid, args):
     s.last_sent = list(HOME)
     tool = [args.volcomp]
     can_opt = ["--can", "socketcan:" + args.cnc]
-    t0 = time.monotonic()
 
     def around(center, amp, period):
         # A triangular back-and-forth motion around `center` (amp increments).
@@ -313,8 +346,18 @@ def main():
     if rc != 0:
         s.fail("reference failed")
     print("== activation while moving is refused", flush=True)
-    rc, out = s.while_running(tool + ["activate"] + can_opt, path=around(HOME, 150000, 200),
-                              min_cycles=20)
+    for attempt in range(3):
+        rc, out = s.while_running(tool + ["activate"] + can_opt, path=around(HOME, 150000, 200),
+                                  min_cycles=20)
+        if rc != 0 or s.max_gap < 0.08:
+            break
+        # The master itself stalled for most of the 100 ms "at rest" window (an overloaded
+        # machine), so the board rightly saw the axes at rest: undo and try again.
+        print("   (the master stalled %.0f ms: not a test of 'moving'; again)" % (s.max_gap * 1000))
+        s.expect_zero = False
+        s.while_running(tool + ["deactivate"] + can_opt, path=around(HOME, 150000, 200))
+        s.settle()
+        s.expect_zero = True
     if rc == 0:
         s.fail("activation while moving was not refused")
     print("== at rest: activation, ramp-in, exact correction", flush=True)
@@ -326,13 +369,11 @@ def main():
     hold_until = time.monotonic() + 0.25
     while time.monotonic() < hold_until:
         s.step()
+    s.expect_zero = False  # the correction ramps in as soon as the board accepts
     rc, _ = s.while_running(tool + ["activate"] + can_opt, kind="rest")
     if rc != 0:
         s.fail("activation at rest failed")
-    s.expect_zero = False
-    settle = time.monotonic() + 0.3
-    while time.monotonic() < settle:
-        s.step()
+    s.settle()
     s.tolerance = 1.0
     s.cycles(50)
     print("   at rest: corrections %s increments, expected %s" %
@@ -340,8 +381,8 @@ def main():
     print("== moving through the volume", flush=True)
     waypoints = [rest, [3500000, 800000, 3000000], [600000, 3600000, 2000000],
                  [2500000, 2500000, 400000], rest]
-    per_leg = 300
-    s.tolerance, s.lag = 1.0, 2
+    per_leg = 200
+    s.tolerance, s.lag = 1.0, 10  # 10 cycles >= 20 ms >> 2 ticks + 6-tick refresh
     for w in range(len(waypoints) - 1):
         a, b = waypoints[w], waypoints[w + 1]
         s.cycles(per_leg, kind="moving", path=lambda c, c0=s.cycle, a=a, b=b: [
@@ -349,24 +390,25 @@ def main():
     s.lag = 0
     s.cycles(50)
     print("== deactivation ramps out to pass-through", flush=True)
+    s.tolerance = None
     rc, _ = s.while_running(tool + ["deactivate"] + can_opt, kind="rest")
     if rc != 0:
         s.fail("deactivation failed")
-    s.tolerance = None
-    settle = time.monotonic() + 0.3
-    while time.monotonic() < settle:
-        s.step()
+    s.settle()
     s.expect_zero = True
     s.cycles(25)
 
+
+
+def report(s):
     for m in s.stray:
         if (not m.is_extended_id and m.arbitration_id in (0x600 + BOARD_NODE, 0x580 + BOARD_NODE,
                                                           0x700 + BOARD_NODE, 0x080 + BOARD_NODE)):
-            s.fail("the board's own frame reached the drive bus: %s" % m)
+            s.errors.append("the board's own frame reached the drive bus: %s" % m)
             break
     print("cycles %d, frames checked %d, max |c - expected| at rest %.2f, moving %.2f increments, "
           "%.1f s" % (s.cycle, s.frames_checked, s.max_dev["rest"], s.max_dev["moving"],
-                      time.monotonic() - t0), flush=True)
+                      time.monotonic() - s.t0), flush=True)
     for e in s.errors[:20]:
         print("FAIL " + e, flush=True)
     if s.errors:

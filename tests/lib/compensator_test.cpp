@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include <random>
+
 #include "test_tables.hpp"
 
 namespace volcomp {
@@ -213,6 +215,150 @@ TEST_F(CompensatorTest, ImageForAnotherBoardIsRefusedAndNothingChanges) {
   EXPECT_EQ(t.Prepare(f.view, other).error(), Error::kConfigAxisMismatch);
   other.axis_count = 2;
   EXPECT_EQ(t.Prepare(f.view, other).error(), Error::kConfigTooManyAxes);
+}
+
+// The target refresh (compensator.hpp): while engaged, part p of the refresh runs on the p-th tick
+// of a cycle of 3 + axis_count ticks: the grid is located at the positions of part 0; on part 3 + a
+// axis a gets clamp(grid component + its AXIS1D table at its position and direction of that tick).
+// Checked tick by tick against an evaluation written from that description with the reference
+// lookups (GridLookup::Interpolate, AxisLookup::LookupReference) and independent direction and
+// wrap tracking, for every element type, with random motion, reversals and wrap-around.
+template <class Loader>
+void CheckRefreshSchedule(table::ElementType type, uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  testing::GridCase g = testing::RandomGrid(rng, type, 5, 3000, 40);
+  std::vector<int16_t> v16[3];
+  std::vector<int32_t> v32[3];
+  std::vector<float> vf[3];
+  table::Axis1dSpec axis1d[2];
+  for (int t = 0; t < 2; ++t) {
+    table::Axis1dSpec& a = axis1d[t];
+    a.axis = static_cast<uint8_t>(t == 0 ? 0 : 2);  // X (forward/reverse/backlash), Z (wrap)
+    a.frac_bits = type == table::ElementType::kFloat32 ? 0 : 4;
+    a.dim = t == 0 ? table::Dimension{6, -7000, 2500} : table::Dimension{5, 100, 1000};
+    if (t == 1) a.period_steps = 4000;
+    const uint32_t n = a.dim.nodes;
+    for (int k = 0; k < (t == 0 ? 2 : 1); ++k) {
+      const int idx = t == 0 ? k : 2;
+      for (uint32_t i = 0; i < n; ++i) {
+        const int32_t val = static_cast<int32_t>(rng() % 1601) - 800;  // +-50 steps
+        v16[idx].push_back(static_cast<int16_t>(val));
+        v32[idx].push_back(val);
+        vf[idx].push_back(static_cast<float>(val) / 16.0f);
+      }
+      if (t == 1) {  // continuous across the seam
+        v16[idx].back() = v16[idx].front();
+        v32[idx].back() = v32[idx].front();
+        vf[idx].back() = vf[idx].front();
+      }
+    }
+    const int f = t == 0 ? 0 : 2;
+    a.forward = {type, v16[f].data(), v32[f].data(), vf[f].data()};
+    if (t == 0) {
+      a.has_reverse = true;
+      a.reverse = {type, v16[1].data(), v32[1].data(), vf[1].data()};
+      a.backlash_q8 = 77;
+    }
+  }
+  const testing::AlignedBytes img = testing::WriteGridImage(g, 9, axis1d, 2);
+  ASSERT_GT(img.size(), 0u);
+  const auto view = table::ParseImage(img.data(), img.size());
+  ASSERT_TRUE(view.ok()) << view.status().name();
+  BoardConfig config = DefaultBoardConfig();
+  for (int a = 0; a < 3; ++a) {
+    config.axis[a].max_correction_steps = 30;  // some targets clamp
+    config.axis[a].max_correction_rate_steps_s = 20000;
+    config.axis[a].max_correction_accel_steps_s2 = 4000000;
+  }
+  Compensator comp;
+  ASSERT_TRUE(comp.Configure(config).ok());
+  PreparedTable table;
+  ASSERT_TRUE(table.Prepare(*view, config).ok());
+  int32_t pos[3] = {static_cast<int32_t>(rng() % 20000) - 10000, 0, 0};
+  comp.SetTable(table, pos);
+  comp.SetReferenced(true);
+  comp.SetEnabled(true);
+
+  // Independent tracking: last motion direction, wrapped Z position.
+  bool reverse[3] = {false, false, false};
+  auto wrapped = [](int64_t p) {
+    int64_t o = (p - 100) % 4000;
+    return static_cast<int32_t>((o < 0 ? o + 4000 : o) + 100);
+  };
+  const uint32_t cycle = Compensator::kGridPhases + 3;
+  EXPECT_EQ(comp.refresh_ticks(), cycle);
+  int32_t grid_pos[3] = {};
+  int32_t expect[3] = {0, 0, 0};
+  int dir[3] = {1, -1, 1};
+  int refreshes = 0;
+  for (uint32_t tick = 0; tick < 6000; ++tick) {
+    int32_t last[3];
+    for (int a = 0; a < 3; ++a) {
+      last[a] = pos[a];
+      if (rng() % 50 == 0) dir[a] = -dir[a];
+      pos[a] += dir[a] * static_cast<int32_t>(rng() % 30);
+      if (pos[a] != last[a]) reverse[a] = pos[a] < last[a];
+    }
+    const uint32_t part = tick % cycle;
+    if (part == 0) std::copy(pos, pos + 3, grid_pos);
+    if (part >= Compensator::kGridPhases) {
+      const int a = static_cast<int>(part - Compensator::kGridPhases);
+      int32_t gq[3];
+      table.grid.Interpolate<Loader>(grid_pos, gq);
+      int32_t t = 0;
+      for (int c = 0; c < 3; ++c) {
+        if (table.grid.axis(c) == a) t += gq[c];
+      }
+      if (a == 0) t += table.axis_table[0].LookupReference(pos[0], reverse[0]);
+      if (a == 2) t += table.axis_table[1].LookupReference(wrapped(pos[2]), reverse[2]);
+      const int32_t max = 30 * 256;
+      expect[a] = t > max ? max : (t < -max ? -max : t);
+      ++refreshes;
+    }
+    int32_t corr[3];
+    comp.Tick(pos, corr);
+    for (int a = 0; a < 3; ++a) {
+      ASSERT_EQ(comp.target_q8(a), expect[a]) << "tick " << tick << " axis " << a;
+      ASSERT_EQ(comp.reverse(a), reverse[a]);
+    }
+  }
+  EXPECT_EQ(refreshes, 3000);  // parts 3..5 of each 6-tick cycle refresh one axis each
+  // Disengaging zeroes the targets on the next tick and restarts the cycle.
+  comp.SetEnabled(false);
+  int32_t corr[3];
+  comp.Tick(pos, corr);
+  for (int a = 0; a < 3; ++a) EXPECT_EQ(comp.target_q8(a), 0);
+}
+
+TEST(CompensatorRefresh, ScheduleAndValuesInt16) {
+  CheckRefreshSchedule<LoadInt16>(table::ElementType::kInt16, 31);
+}
+TEST(CompensatorRefresh, ScheduleAndValuesInt32) {
+  CheckRefreshSchedule<LoadInt32>(table::ElementType::kInt32, 32);
+}
+TEST(CompensatorRefresh, ScheduleAndValuesFloat32) {
+  CheckRefreshSchedule<LoadFloat32>(table::ElementType::kFloat32, 33);
+}
+
+// A new target is in effect within refresh_ticks() ticks of engaging, of SetTable() and of
+// Rebase() (the latency the refresh adds on top of the limiter).
+TEST_F(CompensatorTest, NewTargetWithinOneRefreshCycle) {
+  TableFixture f(10, -20, 30), g(-5, 6, 7);
+  comp_.SetTable(Prepare(f), pos_);
+  comp_.SetReferenced(true);
+  comp_.SetEnabled(true);
+  const uint32_t n = comp_.refresh_ticks();
+  EXPECT_EQ(n, 6u);
+  for (uint32_t i = 0; i < n; ++i) comp_.Tick(pos_, corr_);
+  EXPECT_EQ(comp_.target_q8(0), 10 * 256);
+  EXPECT_EQ(comp_.target_q8(1), -20 * 256);
+  EXPECT_EQ(comp_.target_q8(2), 30 * 256);
+  for (uint32_t i = 0; i < 2; ++i) comp_.Tick(pos_, corr_);  // mid-cycle
+  comp_.SetTable(Prepare(g), pos_);
+  for (uint32_t i = 0; i < n; ++i) comp_.Tick(pos_, corr_);
+  EXPECT_EQ(comp_.target_q8(0), -5 * 256);
+  EXPECT_EQ(comp_.target_q8(1), 6 * 256);
+  EXPECT_EQ(comp_.target_q8(2), 7 * 256);
 }
 
 }  // namespace

@@ -18,7 +18,7 @@
 #include "volcomp/canopen_client/sdo_client.hpp"
 #include "volcomp/sim/simulated_board.hpp"
 #include "volcomp/table_image.hpp"
-#include "volcomp/table_writer.hpp"
+#include "xyz_image.hpp"
 
 namespace volcomp {
 namespace {
@@ -28,19 +28,7 @@ using canopen_client::SdoClient;
 std::vector<uint8_t> Image(uint32_t id, int16_t offset, uint32_t nodes) {
   std::vector<int16_t> v(size_t{nodes} * nodes * nodes * 3);
   for (size_t i = 0; i < v.size(); ++i) v[i] = static_cast<int16_t>(offset + (i * 37) % 200);
-  table::GridSpec g;
-  g.frac_bits = 4;
-  for (auto& d : g.dim) d = {nodes, -50000, 100000 / (nodes - 1)};
-  g.values.i16 = v.data();
-  table::ImageSpec s;
-  s.table_id = id;
-  s.axis_count = 3;
-  for (int a = 0; a < 3; ++a) s.axes[a] = {"XYZ"[a], table::AxisKind::kLinear, 1000000};
-  s.grid = &g;
-  std::vector<uint32_t> w((*table::ImageSize(s) + 3) / 4);
-  const uint32_t n = *table::WriteImage(s, reinterpret_cast<uint8_t*>(w.data()), w.size() * 4);
-  const uint8_t* p = reinterpret_cast<const uint8_t*>(w.data());
-  return std::vector<uint8_t>(p, p + n);
+  return testing::XyzImage(id, nodes, -50000, 100000 / (nodes - 1), v);
 }
 
 uint32_t TrailerCrc(const std::vector<uint8_t>& img) {

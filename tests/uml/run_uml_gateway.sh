@@ -11,7 +11,7 @@
 # (per-frame forwarding latency from the candump kernel timestamps).
 # usage: run_uml_gateway.sh VOLCOMP_FW_LINUX VOLCOMP SOURCE_DIR ARTIFACT_DIR
 set -euo pipefail
-fw=$1 volcomp=$2 src=$3 artifacts=$4
+fw=$(realpath "$1") volcomp=$(realpath "$2") src=$(realpath "$3") artifacts=$4
 uml=$(command -v linux.uml || true)
 if [[ -z $uml ]]; then
   echo "user-mode-linux is not installed (scripts/setup-deps.sh can)" >&2
@@ -77,6 +77,9 @@ backend = fake:$work/gpio
 tables = $work/tables.bin
 settings = $work/settings.bin
 sync = true
+[process]
+realtime_priority = 50
+lock_memory = true
 CONF
 printf 'enable=1\n' >"$work/gpio"
 "$fw" --config "$work/board.conf" --check-config >/dev/null
@@ -95,7 +98,9 @@ rc=1
 (
   set -e
   cd $work
-  candump -L vcan0 vcan1 > candump.log &
+  # candump above the firmware's real-time priority, with a large socket buffer: it must not drop
+  # frames, or the latency pairing below would be wrong (-d reports any drop on stderr).
+  chrt -f 60 candump -L -d -r 8388608 vcan0 vcan1 > candump.log 2> candump.err &
   dump=\$!
   $fw --config board.conf --ready-file ready --stats stats.json > fw.log 2>&1 &
   board=\$!
@@ -117,6 +122,9 @@ timeout 90 "$uml" mem=384M root=/dev/root rootfstype=hostfs rootflags=/ rw init=
 end=$(date +%s%N)
 cp -f "$work/candump.log" "$artifacts/uml-gateway-candump.log" 2>/dev/null || true
 cp -f "$work/stats.json" "$artifacts/uml-gateway-stats.json" 2>/dev/null || true
+if grep -qi drop "$work/candump.err" 2>/dev/null; then
+  echo "--- candump reported dropped frames:"; cat "$work/candump.err"
+fi
 cat "$work/session.log" 2>/dev/null || true
 echo "--- firmware log"
 cat "$work/fw.log" 2>/dev/null || true

@@ -225,13 +225,13 @@ std::string ParseConfig(const std::string& text, const std::string& source, Linu
 
   // ---- Sections must be known.
   for (const Section& s : sections) {
-    const bool known = (s.arg.empty() && (s.name == "board" || s.name == "can" ||
-                                          s.name == "gateway" || s.name == "gpio" ||
-                                          s.name == "flash")) ||
-                       (s.name == "axis" && !s.arg.empty());
+    const bool known =
+        (s.arg.empty() && (s.name == "board" || s.name == "can" || s.name == "gateway" ||
+                           s.name == "gpio" || s.name == "flash" || s.name == "process")) ||
+        (s.name == "axis" && !s.arg.empty());
     if (!known) {
       return p.Where(s.line) + "unknown section [" + s.name + (s.arg.empty() ? "" : " " + s.arg) +
-             "] (expected board, can, gateway, axis NAME, gpio, flash)";
+             "] (expected board, can, gateway, axis NAME, gpio, flash, process)";
     }
   }
 
@@ -341,7 +341,8 @@ std::string ParseConfig(const std::string& text, const std::string& source, Linu
              .ok()) {
       return p.Where(s->line) + "[axis " + axis_names[a] + "]: max_rate / max_accel do not fit " +
              "tick_hz " + std::to_string(st.board.tick_hz) +
-             " (the acceleration must be at least tick_hz^2 / 2^32 and at most tick_hz^2 steps/s2, " +
+             " (the acceleration must be at least tick_hz^2 / 2^32 and below tick_hz^2 "
+             "steps/s2, " +
              "and max_rate at least max_accel / tick_hz)";
     }
   }
@@ -375,19 +376,20 @@ std::string ParseConfig(const std::string& text, const std::string& source, Linu
   }
 
   // ---- [gateway]
-  if (!apply(find("gateway", ""),
-             {{"sync_cob_id", [&](const Entry& e) { return p.U(e, 1, 0x7FF, &gw.sync_cob_id, &err); }},
-              {"feedback", [&](const Entry& e) {
-                 const std::string v = Lower(e.value);
-                 if (v == "sync") {
-                   gw.feedback = gateway::FeedbackMode::kAtSync;
-                 } else if (v == "latest") {
-                   gw.feedback = gateway::FeedbackMode::kLatest;
-                 } else {
-                   return p.Fail(e, "expected sync or latest", &err);
-                 }
-                 return true;
-               }}})) {
+  if (!apply(
+          find("gateway", ""),
+          {{"sync_cob_id", [&](const Entry& e) { return p.U(e, 1, 0x7FF, &gw.sync_cob_id, &err); }},
+           {"feedback", [&](const Entry& e) {
+              const std::string v = Lower(e.value);
+              if (v == "sync") {
+                gw.feedback = gateway::FeedbackMode::kAtSync;
+              } else if (v == "latest") {
+                gw.feedback = gateway::FeedbackMode::kLatest;
+              } else {
+                return p.Fail(e, "expected sync or latest", &err);
+              }
+              return true;
+            }}})) {
     return err;
   }
 
@@ -446,21 +448,32 @@ std::string ParseConfig(const std::string& text, const std::string& source, Linu
 
   // ---- [flash]
   uint32_t bank_kib = c.table_bank_bytes / 1024;
-  if (!apply(find("flash", ""),
-             {{"tables",
-               [&](const Entry& e) {
-                 c.table_file = e.value;
-                 return true;
-               }},
-              {"settings",
-               [&](const Entry& e) {
-                 c.settings_file = e.value;
-                 return true;
-               }},
-              {"table_bank_kib", [&](const Entry& e) { return p.U(e, 16, 65536, &bank_kib, &err); }},
-              {"sector_bytes",
-               [&](const Entry& e) { return p.U(e, 256, 1u << 20, &c.sector_bytes, &err); }},
-              {"sync", [&](const Entry& e) { return p.Bool(e, &c.flash_sync, &err); }}})) {
+  if (!apply(
+          find("flash", ""),
+          {{"tables",
+            [&](const Entry& e) {
+              c.table_file = e.value;
+              return true;
+            }},
+           {"settings",
+            [&](const Entry& e) {
+              c.settings_file = e.value;
+              return true;
+            }},
+           {"table_bank_kib", [&](const Entry& e) { return p.U(e, 16, 65536, &bank_kib, &err); }},
+           {"sector_bytes",
+            [&](const Entry& e) { return p.U(e, 256, 1u << 20, &c.sector_bytes, &err); }},
+           {"sync", [&](const Entry& e) { return p.Bool(e, &c.flash_sync, &err); }},
+           {"write_behind",
+            [&](const Entry& e) { return p.Bool(e, &c.flash_write_behind, &err); }}})) {
+    return err;
+  }
+
+  // ---- [process]
+  if (!apply(find("process", ""),
+             {{"realtime_priority",
+               [&](const Entry& e) { return p.U(e, 0, 99, &c.realtime_priority, &err); }},
+              {"lock_memory", [&](const Entry& e) { return p.Bool(e, &c.lock_memory, &err); }}})) {
     return err;
   }
   c.table_bank_bytes = bank_kib * 1024u;
@@ -506,8 +519,9 @@ std::string FormatConfig(const LinuxBoardConfig& c) {
     << "\ndrives = " << c.drives_iface << "\ntx_queue = " << c.tx_queue
     << "\nrestart_on_bus_off = " << (c.restart_on_bus_off ? "true" : "false") << "\n\n[gateway]\n";
   std::snprintf(hex, sizeof hex, "0x%03X", c.gateway.sync_cob_id);
-  o << "sync_cob_id = " << hex << "\nfeedback = "
-    << (c.gateway.feedback == gateway::FeedbackMode::kAtSync ? "sync" : "latest") << "\n";
+  o << "sync_cob_id = " << hex
+    << "\nfeedback = " << (c.gateway.feedback == gateway::FeedbackMode::kAtSync ? "sync" : "latest")
+    << "\n";
   for (uint8_t a = 0; a < st.board.axis_count; ++a) {
     const AxisConfig& ax = st.board.axis[a];
     const uint32_t r = ax.resolution_e9;
@@ -516,9 +530,10 @@ std::string FormatConfig(const LinuxBoardConfig& c) {
     std::string u = units;
     while (u.back() == '0') u.pop_back();
     if (u.back() == '.') u.pop_back();
-    o << "\n[axis " << ax.name << "]\nkind = "
-      << (ax.kind == table::AxisKind::kLinear ? "linear" : "rotary") << "\nunits_per_step = " << u
-      << "\ninvert = " << (c.gateway.invert[a] ? "true" : "false") << "\n";
+    o << "\n[axis " << ax.name
+      << "]\nkind = " << (ax.kind == table::AxisKind::kLinear ? "linear" : "rotary")
+      << "\nunits_per_step = " << u << "\ninvert = " << (c.gateway.invert[a] ? "true" : "false")
+      << "\n";
     for (uint8_t i = 0; i < c.gateway.map_count; ++i) {
       const gateway::PdoMap& m = c.gateway.map[i];
       if (m.axis != a) continue;
@@ -533,8 +548,12 @@ std::string FormatConfig(const LinuxBoardConfig& c) {
   }
   o << "\n[gpio]\nbackend = ";
   switch (c.gpio_backend) {
-    case GpioBackendKind::kNone: o << "none"; break;
-    case GpioBackendKind::kGpiod: o << "gpiod"; break;
+    case GpioBackendKind::kNone:
+      o << "none";
+      break;
+    case GpioBackendKind::kGpiod:
+      o << "gpiod";
+      break;
     case GpioBackendKind::kFake:
       o << "fake" << (c.fake_state_file.empty() ? "" : ":" + c.fake_state_file);
       break;
@@ -555,7 +574,10 @@ std::string FormatConfig(const LinuxBoardConfig& c) {
   }
   o << "\n[flash]\ntables = " << c.table_file << "\nsettings = " << c.settings_file
     << "\ntable_bank_kib = " << c.table_bank_bytes / 1024 << "\nsector_bytes = " << c.sector_bytes
-    << "\nsync = " << (c.flash_sync ? "true" : "false") << "\n";
+    << "\nsync = " << (c.flash_sync ? "true" : "false")
+    << "\nwrite_behind = " << (c.flash_write_behind ? "true" : "false")
+    << "\n\n[process]\nrealtime_priority = " << c.realtime_priority
+    << "\nlock_memory = " << (c.lock_memory ? "true" : "false") << "\n";
   return o.str();
 }
 

@@ -2,8 +2,10 @@
 #include "volcomp/fw_linux/linux_runner.hpp"
 
 #include <linux/sockios.h>
+#include <sched.h>
 #include <sys/epoll.h>
 #include <sys/ioctl.h>
+#include <sys/mman.h>
 #include <time.h>
 #include <unistd.h>
 
@@ -115,6 +117,7 @@ bool Runner::Open() {
   fo.size = 2 * config_.table_bank_bytes;
   fo.sector_size = config_.sector_bytes;
   fo.sync = config_.flash_sync;
+  fo.background = config_.flash_write_behind;
   why = tables_.Open(config_.table_file, fo);
   if (!why.empty()) {
     std::fprintf(stderr, "volcomp-fw-linux: %s\n", why.c_str());
@@ -130,7 +133,9 @@ bool Runner::Open() {
     }
   }
   switch (config_.gpio_backend) {
-    case GpioBackendKind::kNone: gpio_ = std::make_unique<lb::FakeGpio>(); break;
+    case GpioBackendKind::kNone:
+      gpio_ = std::make_unique<lb::FakeGpio>();
+      break;
     case GpioBackendKind::kFake:
       gpio_ = std::make_unique<lb::FakeGpio>(config_.fake_state_file);
       break;
@@ -180,6 +185,21 @@ bool Runner::Open() {
     std::fprintf(stderr, "volcomp-fw-linux: %s\n", why.c_str());
     return false;
   }
+  // Real-time scheduling last, once everything is allocated.
+  if (config_.lock_memory && mlockall(MCL_CURRENT | MCL_FUTURE) != 0) {
+    std::fprintf(stderr, "volcomp-fw-linux: warning: mlockall: %s (needs CAP_IPC_LOCK)\n",
+                 std::strerror(errno));
+  }
+  if (config_.realtime_priority != 0) {
+    sched_param sp{};
+    sp.sched_priority = static_cast<int>(config_.realtime_priority);
+    if (sched_setscheduler(0, SCHED_FIFO, &sp) != 0) {
+      std::fprintf(stderr,
+                   "volcomp-fw-linux: warning: SCHED_FIFO priority %u: %s (needs CAP_SYS_NICE; "
+                   "running with normal scheduling)\n",
+                   config_.realtime_priority, std::strerror(errno));
+    }
+  }
   const Status stored = app_->app().stored_table_status();
   std::fprintf(stderr,
                "volcomp-fw-linux: node 0x%02X on %s, %s%s, %u axes, tick %u Hz, gpio %s, stored "
@@ -187,8 +207,9 @@ bool Runner::Open() {
                app_->app().settings().node_id, config_.controller_iface.c_str(),
                have_drives_ ? "gateway to " : "no gateway",
                have_drives_ ? config_.drives_iface.c_str() : "",
-               unsigned{app_->app().engine().axis_count()},
-               app_->app().settings().board.tick_hz, gpio_->Describe().c_str(),
+               unsigned{app_->app().engine().axis_count()}, app_->app().settings().board.tick_hz,
+               config_.gpio_backend == GpioBackendKind::kNone ? "none (inputs inactive)"
+                                                              : gpio_->Describe().c_str(),
                stored.ok() ? "active" : ErrorText(stored.error()));
   return true;
 }
@@ -274,8 +295,11 @@ void Runner::Shutdown() {
   // Outputs inactive: the board is no longer compensating or ready.
   io_->Write(hal::OutputLine::kCompensating, false);
   io_->Write(hal::OutputLine::kReady, false);
-  for (int i = 0; i < 100 && (controller_.pending_tx() != 0 ||
-                              (have_drives_ && drives_.pending_tx() != 0));
+  // Everything the stores wrote reaches the files before the process ends.
+  tables_.Flush();
+  if (have_settings_) settings_.Flush();
+  for (int i = 0;
+       i < 100 && (controller_.pending_tx() != 0 || (have_drives_ && drives_.pending_tx() != 0));
        ++i) {
     controller_.Service();
     if (have_drives_) drives_.Service();
@@ -287,14 +311,13 @@ void Runner::Report() {
   const gateway::GatewayCounters& g = app_->gateway().counters();
   const GatewayAppCounters& a = app_->counters();
   const double run_s = static_cast<double>(clock_.NowNs() - started_ns_) * 1e-9;
-  std::fprintf(stderr,
-               "volcomp-fw-linux: stopped%s after %.1f s: %llu ticks (%llu late, %llu skipped), "
-               "longest tick %llu ns\n",
-               stop_signal_ != 0 ? " by signal" : "", run_s,
-               static_cast<unsigned long long>(ticks_),
-               static_cast<unsigned long long>(late_ticks_),
-               static_cast<unsigned long long>(skipped_ticks_),
-               static_cast<unsigned long long>(max_tick_ns_));
+  std::fprintf(
+      stderr,
+      "volcomp-fw-linux: stopped%s after %.1f s: %llu ticks (%llu late, %llu skipped), "
+      "longest tick %llu ns\n",
+      stop_signal_ != 0 ? " by signal" : "", run_s, static_cast<unsigned long long>(ticks_),
+      static_cast<unsigned long long>(late_ticks_), static_cast<unsigned long long>(skipped_ticks_),
+      static_cast<unsigned long long>(max_tick_ns_));
   std::fprintf(stderr,
                "  frames: %u from controller (%u to drives, %u for the node, %u SYNC), %u from "
                "drives (%u to controller, %u conflicts); targets corrected %u, actuals corrected "
@@ -302,6 +325,12 @@ void Runner::Report() {
                g.from_controller, a.forwarded_to_drives, g.local, g.syncs, g.from_drives,
                a.forwarded_to_controller, g.conflicts, g.targets_corrected, g.actuals_corrected,
                g.short_pdos, a.send_failures);
+  const lb::FileFlash::Counters fc = tables_.counters();
+  std::fprintf(stderr, "  table flash: %llu erases, %llu programs, most queued %llu%s%s\n",
+               static_cast<unsigned long long>(fc.erases),
+               static_cast<unsigned long long>(fc.programs),
+               static_cast<unsigned long long>(fc.max_queued),
+               tables_.last_error().empty() ? "" : "; error: ", tables_.last_error().c_str());
   if (have_drives_ && options_.measure_latency) {
     std::fprintf(stderr, "  latency controller->drives, kernel rx -> forwarded write: %s\n",
                  to_drives_.kernel_to_write.Summary().c_str());
@@ -320,8 +349,9 @@ void Runner::Report() {
            ",\"unstamped\":" + std::to_string(d.unstamped) + "}";
   };
   f << "{\"run_s\":" << run_s << ",\"ticks\":" << ticks_ << ",\"late_ticks\":" << late_ticks_
-    << ",\"skipped_ticks\":" << skipped_ticks_ << ",\"max_tick_ns\":" << max_tick_ns_ << ",\"from_controller\":" << g.from_controller
-    << ",\"from_drives\":" << g.from_drives << ",\"forwarded_to_drives\":" << a.forwarded_to_drives
+    << ",\"skipped_ticks\":" << skipped_ticks_ << ",\"max_tick_ns\":" << max_tick_ns_
+    << ",\"from_controller\":" << g.from_controller << ",\"from_drives\":" << g.from_drives
+    << ",\"forwarded_to_drives\":" << a.forwarded_to_drives
     << ",\"forwarded_to_controller\":" << a.forwarded_to_controller << ",\"local\":" << g.local
     << ",\"syncs\":" << g.syncs << ",\"targets_corrected\":" << g.targets_corrected
     << ",\"actuals_corrected\":" << g.actuals_corrected << ",\"short_pdos\":" << g.short_pdos
@@ -367,14 +397,21 @@ int Runner::Run() {
     }
     for (int i = 0; i < n; ++i) {
       switch (events[i].data.u64) {
-        case kController: DrainController(); break;
-        case kDrives: DrainDrives(); break;
-        case kTimer: OnTimer(); break;
+        case kController:
+          DrainController();
+          break;
+        case kDrives:
+          DrainDrives();
+          break;
+        case kTimer:
+          OnTimer();
+          break;
         case kSignal:
           stop_signal_ = signal_.Take();
           stop_ = true;
           break;
-        default: break;
+        default:
+          break;
       }
     }
   }

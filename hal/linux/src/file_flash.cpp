@@ -8,6 +8,7 @@
 
 #include <cerrno>
 #include <cstring>
+#include <utility>
 
 namespace volcomp::hal::linux_board {
 namespace {
@@ -62,7 +63,8 @@ std::string FileFlash::Open(const std::string& path, const Options& options) {
   Close();
   if (options.size == 0 || options.sector_size == 0 || options.program_unit == 0 ||
       options.size % options.sector_size != 0 || options.sector_size % options.program_unit != 0) {
-    return "flash file " + path + ": size must be a multiple of the sector size, and the sector "
+    return "flash file " + path +
+           ": size must be a multiple of the sector size, and the sector "
            "size a multiple of the program unit";
   }
   options_ = options;
@@ -99,46 +101,123 @@ std::string FileFlash::Open(const std::string& path, const Options& options) {
     }
     done += static_cast<size_t>(r);
   }
-  counters_ = Counters();
-  last_error_.clear();
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    counters_ = Counters();
+    error_.clear();
+    queue_.clear();
+    stop_ = busy_ = false;
+  }
+  if (options.background) writer_ = std::thread([this] { WriterLoop(); });
   return "";
 }
 
 void FileFlash::Close() {
+  if (writer_.joinable()) {
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      stop_ = true;
+    }
+    wake_.notify_all();
+    writer_.join();  // the writer drains the queue before it stops
+  }
   if (fd_ >= 0) ::close(fd_);  // also releases the lock
   fd_ = -1;
 }
 
-Status FileFlash::WriteThrough(uint32_t offset, uint32_t size) {
-  if (!WriteAll(fd_, bytes() + offset, size, static_cast<off_t>(offset)) ||
+std::string FileFlash::Flush() {
+  std::unique_lock<std::mutex> lock(mutex_);
+  idle_.wait(lock, [this] { return (queue_.empty() && !busy_) || !writer_.joinable(); });
+  return error_;
+}
+
+FileFlash::Counters FileFlash::counters() const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  return counters_;
+}
+
+std::string FileFlash::last_error() const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  return error_;
+}
+
+std::string FileFlash::WriteOp(const uint8_t* data, uint32_t size, uint32_t offset) {
+  if (!WriteAll(fd_, data, size, static_cast<off_t>(offset)) ||
       (options_.sync && ::fdatasync(fd_) != 0)) {
-    last_error_ = Why(path_, "write failed");
-    return Error::kIoError;
+    return Why(path_, "write failed");
   }
+  return "";
+}
+
+void FileFlash::WriterLoop() {
+  std::unique_lock<std::mutex> lock(mutex_);
+  for (;;) {
+    wake_.wait(lock, [this] { return stop_ || !queue_.empty(); });
+    if (queue_.empty()) break;  // stop_ with nothing left
+    Op op = std::move(queue_.front());
+    queue_.pop_front();
+    busy_ = true;
+    const bool failed = !error_.empty();
+    lock.unlock();
+    const std::string why =
+        failed ? "" : WriteOp(op.bytes.data(), static_cast<uint32_t>(op.bytes.size()), op.offset);
+    lock.lock();
+    busy_ = false;
+    if (!why.empty() && error_.empty()) error_ = why;
+    if (why.empty() && !failed) ++counters_.written;
+    if (queue_.empty()) idle_.notify_all();
+  }
+  idle_.notify_all();
+}
+
+Status FileFlash::Submit(uint32_t offset, uint32_t size) {
+  if (!options_.background) {
+    const std::string why = WriteOp(bytes() + offset, size, offset);
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (!why.empty()) {
+      if (error_.empty()) error_ = why;
+      return Error::kIoError;
+    }
+    ++counters_.written;
+    return Status::Ok();
+  }
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    queue_.push_back(Op{offset, std::vector<uint8_t>(bytes() + offset, bytes() + offset + size)});
+    if (queue_.size() > counters_.max_queued) counters_.max_queued = queue_.size();
+  }
+  wake_.notify_one();
   return Status::Ok();
 }
 
 Status FileFlash::DoErase(uint32_t offset) {
   if (fd_ < 0) return Error::kNotReady;
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (!error_.empty()) return Error::kIoError;
+    ++counters_.erases;
+  }
   std::memset(bytes() + offset, 0xFF, options_.sector_size);
-  ++counters_.erases;
-  return WriteThrough(offset, options_.sector_size);
+  return Submit(offset, options_.sector_size);
 }
 
 Status FileFlash::DoProgram(uint32_t offset, const uint8_t* data, uint32_t size) {
   if (fd_ < 0) return Error::kNotReady;
   uint8_t* dst = bytes() + offset;
-  for (uint32_t i = 0; i < size; ++i) {
-    if ((dst[i] & data[i]) != data[i]) {  // NOR: programming cannot set a bit
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    bool refused = !error_.empty();
+    for (uint32_t i = 0; i < size && !refused; ++i) {
+      refused = (dst[i] & data[i]) != data[i];  // NOR: programming cannot set a bit
+    }
+    if (refused) {
       ++counters_.refused;
       return Error::kIoError;
     }
+    ++counters_.programs;
   }
   std::memcpy(dst, data, size);
-  ++counters_.programs;
-  const Status s = WriteThrough(offset, size);
-  if (!s.ok()) ++counters_.refused;
-  return s;
+  return Submit(offset, size);
 }
 
 }  // namespace volcomp::hal::linux_board

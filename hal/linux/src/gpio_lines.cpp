@@ -6,9 +6,9 @@
 namespace volcomp::hal::linux_board {
 namespace {
 
-const char* const kInputNames[kInputLineCount] = {
-    "home0", "home1", "home2", "home3", "home4", "home5",
-    "enable", "estop", "drive_alarm", "write_enable"};
+const char* const kInputNames[kInputLineCount] = {"home0",       "home1",       "home2",  "home3",
+                                                  "home4",       "home5",       "enable", "estop",
+                                                  "drive_alarm", "write_enable"};
 const char* const kOutputNames[kOutputLineCount] = {"ready", "compensating", "fault"};
 
 bool ParseOffset(const std::string& s, unsigned* out) {
@@ -66,7 +66,8 @@ std::string ParseGpioLineSpec(const std::string& text, GpioLineSpec* out) {
 
 std::string FormatGpioLineSpec(const GpioLineSpec& spec) {
   if (!spec.used) return "";
-  std::string s = spec.chip.empty() ? spec.line_name : spec.chip + ":" + std::to_string(spec.offset);
+  std::string s =
+      spec.chip.empty() ? spec.line_name : spec.chip + ":" + std::to_string(spec.offset);
   if (spec.active_low) s += " active-low";
   if (spec.bias == Bias::kPullUp) s += " pull-up";
   if (spec.bias == Bias::kPullDown) s += " pull-down";

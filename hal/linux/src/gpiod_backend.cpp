@@ -38,8 +38,8 @@ class GpiodBackend final : public GpioBackend {
       }
       const int v = gpiod_line_get_value(in_[i].line);
       if (v < 0) {
-        why = std::string("gpio ") + InputLineName(static_cast<InputLine>(i)) + ": read failed: " +
-              std::strerror(errno);
+        why = std::string("gpio ") + InputLineName(static_cast<InputLine>(i)) +
+              ": read failed: " + std::strerror(errno);
         continue;
       }
       levels[i] = v != 0;
@@ -51,8 +51,8 @@ class GpiodBackend final : public GpioBackend {
     const int i = static_cast<int>(line);
     if (i < 0 || i >= kOutputLineCount || out_[i].line == nullptr) return "";
     if (gpiod_line_set_value(out_[i].line, active ? 1 : 0) != 0) {
-      return std::string("gpio ") + OutputLineName(line) + ": write failed: " +
-             std::strerror(errno);
+      return std::string("gpio ") + OutputLineName(line) +
+             ": write failed: " + std::strerror(errno);
     }
     return "";
   }
@@ -68,16 +68,19 @@ class GpiodBackend final : public GpioBackend {
     bool found = false;          // line from gpiod_line_find (owns its chip)
   };
 
-  static std::string Request(const GpioLineSpec& spec, const std::string& consumer, bool output,
-                             const char* what, Held* held) {
+  static std::string Request(const GpioLineSpec& spec,
+                             const std::string& consumer,
+                             bool output,
+                             const char* what,
+                             Held* held) {
     if (!spec.used) return "";
     const std::string where = FormatGpioLineSpec(spec);
     if (spec.chip.empty()) {
       errno = 0;
       held->line = gpiod_line_find(spec.line_name.c_str());
       if (held->line == nullptr) {
-        return std::string("gpio ") + what + " (" + where + "): " +
-               (errno != 0 ? std::strerror(errno) : "no line with this name");
+        return std::string("gpio ") + what + " (" + where +
+               "): " + (errno != 0 ? std::strerror(errno) : "no line with this name");
       }
       held->found = true;
     } else {

@@ -2,12 +2,16 @@
 //   node          the real firmware on the mock HAL on a simulated bus, served to external CAN
 //                 clients over SLCAN (pty or TCP) or a SocketCAN interface, in real time
 //   bench-upload  upload throughput of a 33x33x33 int16 grid over the simulated 1 Mbit/s bus
+//   demo          the main job: measure -> evaluate -> build -> upload -> re-measure (virtual time)
 #include <cstdio>
 #include <cstring>
 #include <string>
 #include <vector>
 
 #include "volcomp/sim/node_server.hpp"
+#ifdef VOLCOMP_SIM_HAS_DEMO
+#include "volcomp/sim/demo_cli.hpp"
+#endif
 #include "volcomp/sim/upload_bench.hpp"
 
 namespace {
@@ -50,6 +54,9 @@ void Usage() {
       "       the real firmware on the mock HAL, on a simulated bus, served in real time\n"
       "  bench-upload [--bitrate N] [--nodes N]\n"
       "       upload throughput over the simulated bus (virtual time)\n");
+#ifdef VOLCOMP_SIM_HAS_DEMO
+  std::printf("%s", volcomp::sim::DemoUsage());
+#endif
 }
 
 }  // namespace
@@ -65,6 +72,9 @@ int main(int argc, char** argv) {
   try {
     if (cmd == "bench-upload") return BenchUpload(args);
     if (cmd == "node") return volcomp::sim::RunNodeServer(args);
+#ifdef VOLCOMP_SIM_HAS_DEMO
+    if (cmd == "demo") return volcomp::sim::RunDemoCommand(args);
+#endif
   } catch (const std::exception& e) {
     std::fprintf(stderr, "volcomp-sim %s: %s\n", cmd.c_str(), e.what());
     return 1;

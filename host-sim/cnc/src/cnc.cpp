@@ -27,9 +27,10 @@ struct Cnc::Move {
   std::array<int64_t, 3> done = {0, 0, 0};
   std::array<int, 3> dir = {1, 1, 1};
   std::array<uint64_t, 3> next_t = {0, 0, 0};
+  std::array<double, 3> path_per_step_mm = {0, 0, 0};  // path length per step of each axis
 
   uint64_t StepTime(size_t a, int64_t k) const {
-    const double s = profile.length_mm() * static_cast<double>(k) / static_cast<double>(n[a]);
+    const double s = k == n[a] ? profile.length_mm() : path_per_step_mm[a] * static_cast<double>(k);
     return start_ns + static_cast<uint64_t>(std::ceil(profile.TimeAt(s) * 1e9));
   }
 };
@@ -118,8 +119,8 @@ double Cnc::RapidSpeed_mm_s(const std::array<int64_t, 3>& delta_steps) const {
   double v = INFINITY;
   for (size_t a = 0; a < 3; ++a) {
     if (delta_steps[a] == 0) continue;
-    v = std::min(v, config_.max_step_rate_hz * length /
-                        std::fabs(static_cast<double>(delta_steps[a])));
+    v = std::min(
+        v, config_.max_step_rate_hz * length / std::fabs(static_cast<double>(delta_steps[a])));
   }
   return v;
 }
@@ -176,6 +177,7 @@ void Cnc::Start(const Block& b, uint64_t t0) {
     if (m->n[a] == 0) continue;
     const double rate = m->profile.peak_speed_mm_s() * static_cast<double>(m->n[a]) / length;
     peak_rate_hz_ = std::max(peak_rate_hz_, rate);
+    m->path_per_step_mm[a] = length / static_cast<double>(m->n[a]);
     m->next_t[a] = m->StepTime(a, 1);
   }
   move_ = std::move(m);

@@ -60,8 +60,8 @@ TestProgram LineTestProgram(const std::string& name,
     }
     g += "G1 " + Coords(pt);
     if (m.measure) {
-      g += " (P" + std::to_string(m.target) + " " + metrology::DirectionName(m.approach) +
-           " run " + std::to_string(m.run) + ")\nG4 P" + Seconds(options.dwell_s) + "\n";
+      g += " (P" + std::to_string(m.target) + " " + metrology::DirectionName(m.approach) + " run " +
+           std::to_string(m.run) + ")\nG4 P" + Seconds(options.dwell_s) + "\n";
       MeasuredStop s;
       s.point_mm = pt;
       s.along_mm = m.position;

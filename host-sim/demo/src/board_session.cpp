@@ -91,8 +91,8 @@ UploadReport UploadTable(World& world, const std::vector<uint8_t>& image, std::o
   res = Read(world, ObjectId::kStagedTableCrc, &r.staged_crc);
   if (!res.ok) return fail("reading the staged CRC-32 (0x2105)", res);
   if (r.staged_crc != r.image_crc) {
-    r.message = "the board staged CRC-32 " + Hex32(r.staged_crc) + ", expected " +
-                Hex32(r.image_crc);
+    r.message =
+        "the board staged CRC-32 " + Hex32(r.staged_crc) + ", expected " + Hex32(r.image_crc);
     return r;
   }
   r.ok = true;

@@ -1,4 +1,5 @@
-// `volcomp-sim demo`: measure -> evaluate -> build -> upload -> reference -> activate -> re-measure.
+// `volcomp-sim demo`: measure -> evaluate -> build -> upload -> reference -> activate ->
+// re-measure.
 #include "volcomp/sim/demo.hpp"
 
 #include <algorithm>
@@ -26,6 +27,12 @@ std::string Fmt(const char* format, double a) {
   return b;
 }
 
+std::string Hex32(uint32_t v) {
+  char b[16];
+  std::snprintf(b, sizeof b, "0x%08X", v);
+  return b;
+}
+
 // Prints "  label ... (x.x s)" lines as the demo goes.
 class Progress {
  public:
@@ -41,10 +48,10 @@ class Progress {
 };
 
 struct Layout {
-  Point3 lo, hi;          // travel of the error tables
+  Point3 lo, hi;              // travel of the error tables
   Point3 inner_lo, inner_hi;  // test box (margin inside)
   Point3 centre;
-  Point3 reference;       // where the parametric lines meet (command origin, clamped)
+  Point3 reference;  // where the parametric lines meet: the command origin
 };
 
 Layout MakeLayout(const Machine& m, double margin) {
@@ -58,7 +65,13 @@ Layout MakeLayout(const Machine& m, double margin) {
     l.inner_lo[i] = l.lo[i] + g;
     l.inner_hi[i] = l.hi[i] - g;
     l.centre[i] = 0.5 * (l.lo[i] + l.hi[i]);
-    l.reference[i] = std::clamp(0.0, l.lo[i], l.hi[i]);
+    // The model's lever arms start where all commands are 0, so the parametric lines must meet
+    // there (see docs/simulator.md): the tables must cover position 0.
+    if (!(l.lo[i] <= 0.0 && 0.0 <= l.hi[i])) {
+      throw std::runtime_error(std::string("the model's ") + "XYZ"[a] +
+                               " table must include position 0 (the reference point)");
+    }
+    l.reference[i] = 0.0;
   }
   return l;
 }
@@ -86,14 +99,19 @@ std::string GostLine(const char* axis, const AxisFigures& f) {
   return b;
 }
 
-PhaseResults MeasurePhase(World& world, LaserInterferometer& laser, LaserTracker& tracker,
-                          const DemoOptions& o, const Layout& l,
+PhaseResults MeasurePhase(World& world,
+                          LaserInterferometer& laser,
+                          LaserTracker& tracker,
+                          const DemoOptions& o,
+                          const Layout& l,
                           const std::array<GostPlan, 3>& gost_plans,
-                          const std::vector<Point3>& points, Progress& progress) {
+                          const std::vector<Point3>& points,
+                          Progress& progress) {
   PhaseResults r;
   for (int a = 0; a < 3; ++a) {
     const auto t0 = Clock::now();
-    r.gost[static_cast<size_t>(a)] = MeasureGostAxis(world, laser, a, gost_plans[static_cast<size_t>(a)]);
+    r.gost[static_cast<size_t>(a)] =
+        MeasureGostAxis(world, laser, a, gost_plans[static_cast<size_t>(a)]);
     const AxisFigures f = r.Gost()[static_cast<size_t>(a)];
     progress.Line(GostLine(a == 0 ? "X" : a == 1 ? "Y" : "Z", f) + Fmt("   (%.1f s)", Since(t0)));
   }
@@ -173,13 +191,17 @@ DemoResult RunDemo(const DemoOptions& o, std::ostream& log) {
 
   log << "volcomp-sim demo: seed " << o.seed << "\n"
       << "  machine: " << r.machine_name << "\n"
+      << "    squareness C0Y " << world.machine().model().squareness.c0y_urad << ", B0Z "
+      << world.machine().model().squareness.b0z_urad << ", A0Z "
+      << world.machine().model().squareness.a0z_urad << " urad; chain "
+      << world.machine().model().chain.ToString() << " (workpiece|tool)\n"
       << "  travel: X " << l.lo[0] << ".." << l.hi[0] << ", Y " << l.lo[1] << ".." << l.hi[1]
       << ", Z " << l.lo[2] << ".." << l.hi[2] << " mm; " << world.machine().step_mm(0) * 1000
-      << " um/step; CNC up to " << world.cnc().config().max_step_rate_hz / 1e6
-      << " MHz per axis, " << o.accel_mm_s2 / 1000 << " m/s^2\n"
+      << " um/step; CNC up to " << world.cnc().config().max_step_rate_hz / 1e6 << " MHz per axis, "
+      << o.accel_mm_s2 / 1000 << " m/s^2\n"
       << "  board: the real firmware (BoardApp) on the mock HAL, tick "
-      << wo.board.board.tick_hz / 1000 << " kHz; CAN " << wo.can_bitrate / 1000
-      << " kbit/s; node " << static_cast<int>(wo.board.node_id) << "\n";
+      << wo.board.board.tick_hz / 1000 << " kHz; CAN " << wo.can_bitrate / 1000 << " kbit/s; node "
+      << static_cast<int>(wo.board.node_id) << "\n";
 
   Random rng(o.seed);
   LaserInterferometer laser(&world.machine(), o.laser, rng.Next());
@@ -209,8 +231,9 @@ DemoResult RunDemo(const DemoOptions& o, std::ostream& log) {
   }
 
   // 1. Homing.
-  progress.Step("power-up and homing: home switches 5 mm below the travel, board references on "
-                "their edges");
+  progress.Step(
+      "power-up and homing: home switches 5 mm below the travel, board references on "
+      "their edges");
   {
     const auto t0 = Clock::now();
     world.cnc().QueueHome(7);
@@ -218,20 +241,27 @@ DemoResult RunDemo(const DemoOptions& o, std::ostream& log) {
     world.RunFor(20000000);
     const ControlTick& e = world.board().app().engine();
     bool agree = e.all_referenced();
-    for (uint8_t a = 0; a < 3; ++a) agree = agree && e.machine_position(a) == world.cnc().position(a);
+    for (uint8_t a = 0; a < 3; ++a)
+      agree = agree && e.machine_position(a) == world.cnc().position(a);
     r.reference_agrees = agree;
-    progress.Line(std::string("X, Y, Z referenced; board and CNC positions ") +
-                  (agree ? "agree" : "DISAGREE") + Fmt("   (%.1f s)", Since(t0)));
+    progress.Line(std::string("X, Y, Z referenced at their home positions (0x2018: ") +
+                  std::to_string(wo.board.board.axis[0].home_position_steps) + ", " +
+                  std::to_string(wo.board.board.axis[1].home_position_steps) + ", " +
+                  std::to_string(wo.board.board.axis[2].home_position_steps) +
+                  " steps); board and CNC positions " + (agree ? "agree" : "DISAGREE") +
+                  Fmt("   (%.1f s)", Since(t0)));
   }
 
   // 2. Uncompensated machine.
-  progress.Step("measuring the uncompensated machine (GOST 27843 per axis, ISO 230-6 diagonals, "
-                "random points)");
+  progress.Step(
+      "measuring the uncompensated machine (GOST 27843 per axis, ISO 230-6 diagonals, "
+      "random points)");
   r.before = MeasurePhase(world, laser, tracker, o, l, gost, points, progress);
 
   // 3. Parametric errors.
-  progress.Step("measuring the six error motions of X, Y, Z through the reference point "
-                "(virtual 6-DOF laser, like XL-80 linear/straightness/angular setups)");
+  progress.Step(
+      "measuring the six error motions of X, Y, Z through the reference point "
+      "(virtual 6-DOF laser, like XL-80 linear/straightness/angular setups)");
   {
     const auto t0 = Clock::now();
     for (int a = 0; a < 3; ++a) {
@@ -255,7 +285,7 @@ DemoResult RunDemo(const DemoOptions& o, std::ostream& log) {
       char b[200];
       std::snprintf(b, sizeof b,
                     "%c: %zu positions every %.0f mm, up and down: linear errors up to %.1f um, "
-                    "angular up to %.1f urad (reading error <= %.3f um)",
+                    "angular up to %.1f urad (readings minus model: linear <= %.3f um)",
                     "XYZ"[a], pos.size(), o.parametric_step_mm, lin, ang, dev_lin);
       progress.Line(b);
     }
@@ -272,9 +302,11 @@ DemoResult RunDemo(const DemoOptions& o, std::ostream& log) {
     r.table = BuildTableImage(r.measured_model, l.lo, l.hi,
                               {o.grid_spacing_mm, o.grid_spacing_mm, o.grid_spacing_mm}, step, 1);
     const model::GridSpec& g = r.table.grid.grid.axes;
-    progress.Line("source: the measured six error motions of each axis (18 functions; the three "
-                  "squareness angles are in the straightness slopes) = a 21-parameter model, "
-                  "chain " + r.measured_model.chain.ToString());
+    progress.Line(
+        "source: the measured six error motions of each axis (18 functions; the three "
+        "squareness angles are in the straightness slopes) = a 21-parameter model, "
+        "chain " +
+        r.measured_model.chain.ToString());
     char b[300];
     std::snprintf(b, sizeof b,
                   "inverse GRID3 (tools/model, as `volcomp build model`): %ux%ux%u nodes every "
@@ -284,7 +316,8 @@ DemoResult RunDemo(const DemoOptions& o, std::ostream& log) {
                   r.table.grid.stats.max_correction_um, r.table.grid.stats.max_residual_um,
                   r.table.grid.interpolation.max_um);
     progress.Line(b);
-    std::snprintf(b, sizeof b, "image: %zu bytes, int16 with %u fraction bits (LSB %.4f um), "
+    std::snprintf(b, sizeof b,
+                  "image: %zu bytes, int16 with %u fraction bits (LSB %.4f um), "
                   "CRC-32 0x%08X   (%.1f s)",
                   r.table.image.size(), r.table.frac_bits, r.table.lsb_um, r.table.crc32,
                   Since(t0));
@@ -319,7 +352,7 @@ DemoResult RunDemo(const DemoOptions& o, std::ostream& log) {
     world.RunFor(500000000);  // the correction ramps in within the rate limits
     const uint16_t state = ReadDeviceState(world);
     r.activation.device_state = state;
-    progress.Line(std::string("active table CRC-32 ") + Fmt("0x%08X", r.activation.active_crc) +
+    progress.Line(std::string("active table CRC-32 ") + Hex32(r.activation.active_crc) +
                   "; device state: referenced " +
                   ((state & firmware::kStateReferenced) ? "yes" : "no") + ", engaged " +
                   ((state & firmware::kStateEngaged) ? "yes" : "no") +
@@ -334,10 +367,9 @@ DemoResult RunDemo(const DemoOptions& o, std::ostream& log) {
   progress.Step("simulator speed: rapid moves with X, Y and Z each at 1 MHz through the board");
   {
     const double d = std::min({l.hi[0] - l.lo[0], l.hi[1] - l.lo[1], l.hi[2] - l.lo[2]});
-    const std::array<int64_t, 3> a = {
-        std::llround(l.lo[0] / world.machine().step_mm(0)),
-        std::llround(l.lo[1] / world.machine().step_mm(1)),
-        std::llround(l.lo[2] / world.machine().step_mm(2))};
+    const std::array<int64_t, 3> a = {std::llround(l.lo[0] / world.machine().step_mm(0)),
+                                      std::llround(l.lo[1] / world.machine().step_mm(1)),
+                                      std::llround(l.lo[2] / world.machine().step_mm(2))};
     std::array<int64_t, 3> b = a;
     for (size_t i = 0; i < 3; ++i) {
       b[i] += std::llround(d / world.machine().step_mm(static_cast<int>(i)));
@@ -380,8 +412,7 @@ DemoResult RunDemo(const DemoOptions& o, std::ostream& log) {
   const double step_um = 1000 * world.machine().step_mm(0);
   check(r.after.Ed() <= 0.05 * r.before.Ed() || r.after.Ed() <= step_um,
         "ISO 230-6 E_d not reduced by 95 %");
-  check(r.after.points.max_um <= 0.05 * r.before.points.max_um ||
-            r.after.points.max_um <= step_um,
+  check(r.after.points.max_um <= 0.05 * r.before.points.max_um || r.after.points.max_um <= step_um,
         "max volumetric error at the random points not reduced by 95 %");
   check(r.audit.lost_steps == 0 && r.audit.tick_mismatches == 0, "lost steps");
   check(r.audit.timing_violations == 0, "pulse timing violations");
@@ -395,17 +426,25 @@ DemoResult RunDemo(const DemoOptions& o, std::ostream& log) {
 void PrintSummary(const DemoResult& r, std::ostream& out) {
   char b[256];
   out << "\n== before / after compensation ==========================================\n";
-  out << "                                              before        after   reduction\n";
-  auto row = [&](const char* label, double before, double after) {
-    std::snprintf(b, sizeof b, "%-40s %9.3f um %9.3f um   %6.2f %%\n", label, before, after,
-                  Reduction(before, after));
-    out << b;
+  out << "                                                  before        after   reduction\n";
+  // `reduce`: print the reduction (not for noise-level figures such as R and B here: the model
+  // has no backlash and no random positioning error, so they are instrument noise).
+  auto row = [&](const std::string& label, double before, double after, bool reduce = true) {
+    char line[256];
+    if (reduce) {
+      std::snprintf(line, sizeof line, "%-44s %9.3f um %9.3f um   %6.2f %%\n", label.c_str(),
+                    before, after, Reduction(before, after));
+    } else {
+      std::snprintf(line, sizeof line, "%-44s %9.3f um %9.3f um   (noise)\n", label.c_str(), before,
+                    after);
+    }
+    out << line;
   };
   row("ISO 230-6 E_d (4 body diagonals)", r.before.Ed(), r.after.Ed());
-  row("ISO 230-6 B_d", r.before.Bd(), r.after.Bd());
-  std::snprintf(b, sizeof b, "volumetric error, max of %zu points",
-                r.after.points.targets_mm.size());
-  row(b, r.before.points.max_um, r.after.points.max_um);
+  row("ISO 230-6 B_d", r.before.Bd(), r.after.Bd(), false);
+  row("volumetric error, max of " + std::to_string(r.after.points.targets_mm.size()) +
+          " points (tracker)",
+      r.before.points.max_um, r.after.points.max_um);
   row("  rms (tracker)", r.before.points.rms_um, r.after.points.rms_um);
   row("  max, machine model (no instrument error)", r.before.points.true_max_um,
       r.after.points.true_max_um);
@@ -413,11 +452,11 @@ void PrintSummary(const DemoResult& r, std::ostream& out) {
   for (size_t a = 0; a < 3; ++a) {
     const char axis = "XYZ"[a];
     std::string label = std::string("GOST 27843 ") + axis + "  A (accuracy)";
-    row(label.c_str(), gb[a].A, ga[a].A);
+    row(label, gb[a].A, ga[a].A);
     label = std::string("GOST 27843 ") + axis + "  R (repeatability)";
-    row(label.c_str(), gb[a].R, ga[a].R);
+    row(label, gb[a].R, ga[a].R, false);
     label = std::string("GOST 27843 ") + axis + "  B (reversal)";
-    row(label.c_str(), gb[a].B, ga[a].B);
+    row(label, gb[a].B, ga[a].B, false);
   }
   out << "\n== steps, timing, latency, speed =========================================\n";
   std::snprintf(b, sizeof b,
@@ -443,8 +482,8 @@ void PrintSummary(const DemoResult& r, std::ostream& out) {
                 "latency input step -> output step (tick %.0f us, %llu steps): p50 %.2f, p90 "
                 "%.2f, p99 %.2f, p99.9 %.2f, max %.3f ticks; > 2 ticks: %llu; unmatched: %llu\n",
                 r.tick_us, static_cast<unsigned long long>(r.latency.samples), r.latency.p50_ticks,
-                r.latency.p90_ticks, r.latency.p99_ticks, r.latency.p999_ticks,
-                r.latency.max_ticks, static_cast<unsigned long long>(r.latency.over_2_ticks),
+                r.latency.p90_ticks, r.latency.p99_ticks, r.latency.p999_ticks, r.latency.max_ticks,
+                static_cast<unsigned long long>(r.latency.over_2_ticks),
                 static_cast<unsigned long long>(r.latency.unmatched));
   out << b;
   std::snprintf(b, sizeof b,

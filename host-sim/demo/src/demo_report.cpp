@@ -126,8 +126,6 @@ std::string LatencyChart(const DemoResult& r) {
     bars.y.push_back(std::log10(static_cast<double>(r.latency_histogram[i]) + 1.0));
   }
   c.bars = {bars};
-  report::XyHLine limit;
-  (void)limit;
   return c.Render();
 }
 
@@ -166,15 +164,16 @@ void WriteDemoReport(const DemoResult& r, const std::string& dir) {
   page.Paragraph("Seed " + std::to_string(r.options.seed) + ". Machine: " + r.machine_name +
                  ". The real firmware (BoardApp on the mock HAL) ran between the simulated CNC "
                  "and the drive checkers; the table went over the simulated CAN bus with the PC "
-                 "tool's SDO code. Run time " + FormatFixed(r.wall_s, 1) + " s wall for " +
-                 FormatFixed(r.virtual_s, 1) + " s of machine time.");
+                 "tool's SDO code. Run time " +
+                 FormatFixed(r.wall_s, 1) + " s wall for " + FormatFixed(r.virtual_s, 1) +
+                 " s of machine time.");
   page.Heading(2, "Before and after");
   std::vector<std::vector<std::string>> rows;
-  auto row = [&](const std::string& what, double b, double a) {
-    rows.push_back({what, FormatFixed(b, 3), FormatFixed(a, 3), Pct(b, a)});
+  auto row = [&](const std::string& what, double b, double a, bool reduce = true) {
+    rows.push_back({what, FormatFixed(b, 3), FormatFixed(a, 3), reduce ? Pct(b, a) : "(noise)"});
   };
   row("ISO 230-6 E_d (body diagonals), µm", r.before.Ed(), r.after.Ed());
-  row("ISO 230-6 B_d, µm", r.before.Bd(), r.after.Bd());
+  row("ISO 230-6 B_d, µm", r.before.Bd(), r.after.Bd(), false);
   row("volumetric error, max over points (tracker), µm", r.before.points.max_um,
       r.after.points.max_um);
   row("volumetric error, rms (tracker), µm", r.before.points.rms_um, r.after.points.rms_um);
@@ -184,32 +183,33 @@ void WriteDemoReport(const DemoResult& r, const std::string& dir) {
   for (size_t a = 0; a < 3; ++a) {
     const std::string axis(1, "XYZ"[a]);
     row("GOST 27843 " + axis + " A, µm", gb[a].A, ga[a].A);
-    row("GOST 27843 " + axis + " R, µm", gb[a].R, ga[a].R);
-    row("GOST 27843 " + axis + " B, µm", gb[a].B, ga[a].B);
+    row("GOST 27843 " + axis + " R, µm", gb[a].R, ga[a].R, false);
+    row("GOST 27843 " + axis + " B, µm", gb[a].B, ga[a].B, false);
   }
   page.Table({"figure", "before", "after", "reduction"}, rows);
   page.Heading(2, "Steps, timing and latency");
   page.Table(
       {"figure", "value"},
-      {{"input steps / output steps", std::to_string(r.audit.input_steps) + " / " +
-                                          std::to_string(r.audit.output_steps)},
+      {{"input steps / output steps",
+        std::to_string(r.audit.input_steps) + " / " + std::to_string(r.audit.output_steps)},
        {"lost steps (rest checks)", std::to_string(r.audit.lost_steps) + " at " +
                                         std::to_string(r.audit.rest_checks) + " rest points"},
        {"ticks where a drive's count differed from the board's output",
         std::to_string(r.audit.tick_mismatches) + " of " + std::to_string(r.audit.ticks)},
        {"pulse timing violations at the drives", std::to_string(r.audit.timing_violations)},
        {"latency p50 / p90 / p99 / p99.9 / max, ticks of " + FormatFixed(r.tick_us, 0) + " µs",
-        FormatFixed(r.latency.p50_ticks, 2) + " / " + FormatFixed(r.latency.p90_ticks, 2) +
-            " / " + FormatFixed(r.latency.p99_ticks, 2) + " / " +
-            FormatFixed(r.latency.p999_ticks, 2) + " / " + FormatFixed(r.latency.max_ticks, 3)},
+        FormatFixed(r.latency.p50_ticks, 2) + " / " + FormatFixed(r.latency.p90_ticks, 2) + " / " +
+            FormatFixed(r.latency.p99_ticks, 2) + " / " + FormatFixed(r.latency.p999_ticks, 2) +
+            " / " + FormatFixed(r.latency.max_ticks, 3)},
        {"peak input step rate per axis", FormatFixed(r.peak_input_rate_hz / 1e6, 3) + " MHz"},
        {"simulator speed (3 axes at 1 MHz)",
         FormatFixed(r.benchmark.steps_per_s / 1e6, 1) + " M steps per wall-clock second"}});
   page.Figure(LatencyChart(r), "Latency distribution (1/100 tick bins, log scale).");
   page.Heading(2, "Volumetric error at random points");
   page.Figure(PointsChart(r), "Norm of the error vector at each point, before and after.");
-  page.Figure(AfterPointsChart(r), "After compensation: what the tracker read and what the "
-                                   "machine model says (the rest is tracker noise).");
+  page.Figure(AfterPointsChart(r),
+              "After compensation: what the tracker read and what the "
+              "machine model says (the rest is tracker noise).");
   page.Heading(2, "The table");
   std::vector<std::string> items;
   for (const auto& [k, v] : r.table.info) items.push_back(k + ": " + v);
@@ -219,9 +219,10 @@ void WriteDemoReport(const DemoResult& r, const std::string& dir) {
   items.push_back("upload: " + FormatFixed(r.upload.transfer_s, 2) + " s of bus time, " +
                   FormatFixed(r.upload.rate_bytes_s / 1000, 1) + " kB/s");
   page.List(items);
-  page.Paragraph("Rebuild it with the PC tool: volcomp build model --model model/measured.conf "
-                 "--resolution-nm X=1000,Y=1000,Z=1000 --spacing-mm " +
-                 FormatFixed(r.options.grid_spacing_mm, 0) + " -o table.vct");
+  page.Paragraph(
+      "Rebuild it with the PC tool: volcomp build model --model model/measured.conf "
+      "--resolution-nm X=1000,Y=1000,Z=1000 --spacing-mm " +
+      FormatFixed(r.options.grid_spacing_mm, 0) + " -o table.vct");
   for (const ParametricResult& p : r.parametric) {
     page.Figure(ParametricChart(p, false), "");
     page.Figure(ParametricChart(p, true), "");

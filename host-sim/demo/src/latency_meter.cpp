@@ -9,7 +9,12 @@ LatencyMeter::LatencyMeter(uint64_t tick_ns)
     : tick_ns_(tick_ns), bins_(static_cast<size_t>(kBinsPerTick * kMaxTicks + 1), 0) {}
 
 void LatencyMeter::OnInput(int axis, uint64_t t_ns, int dir, int64_t count_after) {
-  pending_[static_cast<size_t>(axis)].push_back({t_ns, count_after, dir});
+  Queue& q = pending_[static_cast<size_t>(axis)];
+  if (q.head > 4096 && q.head * 2 > q.items.size()) {  // drop the consumed front now and then
+    q.items.erase(q.items.begin(), q.items.begin() + static_cast<std::ptrdiff_t>(q.head));
+    q.head = 0;
+  }
+  q.items.push_back({t_ns, count_after, dir});
 }
 
 void LatencyMeter::Record(uint64_t latency_ns) {
@@ -28,7 +33,7 @@ void LatencyMeter::Carry(int axis, uint64_t t_ns, int64_t served) {
     const bool carried = p.dir > 0 ? served >= p.count : served <= p.count;
     if (!carried) break;
     Record(t_ns >= p.t_ns ? t_ns - p.t_ns : 0);
-    q.pop_front();
+    q.pop();
   }
 }
 
@@ -39,7 +44,7 @@ void LatencyMeter::EndOfTick(int axis, uint64_t tick_ns, int64_t served) {
   auto& q = pending_[static_cast<size_t>(axis)];
   while (!q.empty() && q.front().t_ns + 1000 * tick_ns_ < tick_ns) {
     ++unmatched_;
-    q.pop_front();
+    q.pop();
   }
 }
 

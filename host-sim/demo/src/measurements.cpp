@@ -1,6 +1,7 @@
 // Measurement sessions on the simulated installation.
 #include "volcomp/sim/measurements.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <map>
@@ -38,8 +39,8 @@ std::vector<StopState> RunTestProgram(World& world, const TestProgram& program) 
   world.cnc().set_dwell_handler({});
   if (!done) throw std::runtime_error(program.name + ": the CNC did not finish the program");
   if (states.size() != program.stops.size()) {
-    throw std::runtime_error(program.name + ": " + std::to_string(states.size()) +
-                             " dwells for " + std::to_string(program.stops.size()) + " stops");
+    throw std::runtime_error(program.name + ": " + std::to_string(states.size()) + " dwells for " +
+                             std::to_string(program.stops.size()) + " stops");
   }
   return states;
 }
@@ -70,7 +71,9 @@ GostAxisResult MeasureGostAxis(World& world,
     reading.line = line;
     r.data.readings.push_back(reading);
   }
-  const metrology::PositioningSet set = metrology::GroupReadings(r.data, {});
+  metrology::GroupingOptions grouping;  // GOST 27843 §2.10: 5 approaches (fewer only if asked)
+  grouping.min_approaches = std::max(2, std::min(5, plan.cycle.runs));
+  const metrology::PositioningSet set = metrology::GroupReadings(r.data, grouping);
   metrology::EvaluationOptions gost;
   gost.standard = metrology::Standard::kGost27843;
   r.gost = metrology::EvaluatePositioning(set, gost);
@@ -101,13 +104,15 @@ DiagonalSetResult MeasureDiagonals(World& world,
       }
       const double dev = laser.Deviation_um(s.q_mm, s.cmd_mm, beam);
       r.csv += d.name + "," + Fixed(s.stop.along_mm, 4) + "," +
-               metrology::DirectionName(s.stop.approach) + "," + std::to_string(s.stop.run) +
-               "," + Fixed(dev, 4) + "\n";
+               metrology::DirectionName(s.stop.approach) + "," + std::to_string(s.stop.run) + "," +
+               Fixed(dev, 4) + "\n";
     }
     r.programs.push_back(p);
   }
   const tools::CsvTable table = tools::CsvTable::ParseString(r.csv, "ISO 230-6 diagonals");
-  r.evaluation = metrology::EvaluateDiagonals(table, {});
+  metrology::GroupingOptions grouping;  // ISO 230-6 §5.3: 5 approaches (fewer only if asked)
+  grouping.min_approaches = std::max(2, std::min(5, cycle.runs));
+  r.evaluation = metrology::EvaluateDiagonals(table, grouping);
   return r;
 }
 

@@ -100,8 +100,8 @@ void WriteModelFiles(const model::Model& measured, const std::string& dir) {
       const model::AxisErrorSample& s = t.row(i);
       char line[256];
       std::snprintf(line, sizeof line, "%.4f,%.5f,%.5f,%.5f,%.5f,%.5f,%.5f\n", t.position_mm(i),
-                    s.linear_um.x, s.linear_um.y, s.linear_um.z, s.angular_urad.x,
-                    s.angular_urad.y, s.angular_urad.z);
+                    s.linear_um.x, s.linear_um.y, s.linear_um.z, s.angular_urad.x, s.angular_urad.y,
+                    s.angular_urad.z);
       f << line;
     }
   }

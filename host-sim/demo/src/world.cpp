@@ -37,8 +37,9 @@ World::World(const WorldOptions& options)
     cc.step_mm[i] = machine_->step_mm(a);
     cc.home_position_steps[i] = options_.board.board.axis[a].home_position_steps;
   }
-  cnc_ = std::make_unique<Cnc>(cc, this, [this](int axis) {
-    return machine_->HomeSwitchClosed(axis, board_->step_io().drive(static_cast<uint8_t>(axis)).position());
+  cnc_ = std::make_unique<Cnc>(cc, static_cast<StepSink*>(this), [this](int axis) {
+    return machine_->HomeSwitchClosed(
+        axis, board_->step_io().drive(static_cast<uint8_t>(axis)).position());
   });
 
   link_.send = [this](const CanFrame& f) {

@@ -24,7 +24,8 @@ LaserInterferometer::LaserInterferometer(Machine* machine,
     : machine_(machine), options_(options), rng_(seed) {}
 
 model::Vec3 LaserInterferometer::Rotation_urad(const model::Vec3& q_mm) {
-  // omega x (d e_y) = d(-wz, 0, wx); omega x (d e_z) = d(wy, -wx, 0); omega x (d e_x) = d(0, wz, -wy)
+  // omega x (d e_y) = d(-wz, 0, wx); omega x (d e_z) = d(wy, -wx, 0); omega x (d e_x) = d(0, wz,
+  // -wy)
   const double d = options_.angular_baseline_mm;
   const model::Vec3 p0 = machine_->PointOnTool_mm(q_mm, {0, 0, 0});
   const model::Vec3 px = machine_->PointOnTool_mm(q_mm, {d, 0, 0}) - p0;

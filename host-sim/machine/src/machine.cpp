@@ -26,6 +26,8 @@ Machine::Machine(MachineOptions options) : options_(std::move(options)) {
     if (!(options_.power_up_mm[i] > options_.home_switch_mm[i])) {
       throw std::invalid_argument("machine: the axes must power up above their home switches");
     }
+    switch_steps_[i] =
+        std::llround((options_.home_switch_mm[i] - options_.power_up_mm[i]) / options_.step_mm[i]);
   }
 }
 
@@ -64,9 +66,7 @@ model::Vec3 Machine::PointOnTool_mm(const model::Vec3& q_mm, const model::Vec3& 
 }
 
 bool Machine::HomeSwitchClosed(int axis, int64_t drive_steps) const {
-  const size_t i = static_cast<size_t>(axis);
-  return options_.power_up_mm[i] + static_cast<double>(drive_steps) * options_.step_mm[i] <=
-         options_.home_switch_mm[i];
+  return drive_steps <= switch_steps_[static_cast<size_t>(axis)];
 }
 
 }  // namespace volcomp::sim

@@ -20,8 +20,13 @@ class AxisLookup {
  public:
   Status Init(const table::Axis1dView& view);
 
-  /// `reverse` = the axis last moved in the negative direction.
-  int32_t Lookup(int32_t pos_steps, bool reverse) const {
+  /// `reverse` = the axis last moved in the negative direction. The hot path: LocateFast(), the
+  /// two nodes of an int16 table read as one word (SMLAWB/SMLAWT), the rounding term folded into
+  /// the accumulator; bit-identical to LookupReference().
+  int32_t Lookup(int32_t pos_steps, bool reverse) const;
+
+  /// The clear reference: one template for every element type (tests compare Lookup() with it).
+  int32_t LookupReference(int32_t pos_steps, bool reverse) const {
     const uint8_t* values = reverse ? reverse_ : forward_;
     const int32_t backlash = reverse ? backlash_q8_ : 0;
     switch (type_) {
@@ -60,36 +65,44 @@ class AxisLookup {
     return Loader::ToQ8(acc, frac_bits_);
   }
 
-  LatticeLocator loc_;
+  // Hot fields first, in the order Lookup() reads them.
+  LatticeDim dim_;
   const uint8_t* forward_ = nullptr;
   const uint8_t* reverse_ = nullptr;  // == forward_ when the table has no reverse part
   int32_t backlash_q8_ = 0;
+  int32_t round_ = 0;   // fixed point: 2^(shift_ - 1)
+  uint32_t shift_ = 0;  // fixed point: 7 + f (int16), 23 + f (int32)
+  table::ElementType type_ = table::ElementType::kInt16;
+  uint8_t axis_ = 0;
   uint32_t frac_bits_ = 0;
   uint32_t period_steps_ = 0;
   int32_t origin_steps_ = 0;
-  uint8_t axis_ = 0;
-  table::ElementType type_ = table::ElementType::kInt16;
+  LatticeLocator loc_;  // the reference's locator (same constants as dim_)
 };
 
 /// Keeps a rotary position reduced modulo a period, updated by small deltas (no division per
-/// tick). Precondition: |delta| per Update() < period.
+/// tick). Precondition: |delta| per Update() < period (validation bounds the period to the
+/// extent of a table, < 2^31 steps, so 32-bit arithmetic holds every intermediate).
 class WrapTracker {
  public:
   /// Sets the tracked position from an absolute one (divides; call at activation).
   void Init(int32_t pos_steps, int32_t origin_steps, uint32_t period_steps);
   /// Advances by `delta_steps` and returns origin + ((pos - origin) mod period).
   int32_t Update(int32_t delta_steps) {
-    int64_t o = static_cast<int64_t>(offset_) + delta_steps;
-    o -= (o >= period_) ? period_ : 0;
-    o += (o < 0) ? period_ : 0;
-    offset_ = static_cast<uint32_t>(o);
-    return static_cast<int32_t>(origin_ + static_cast<int64_t>(offset_));
+    // offset + delta lies in (-period, 2 * period): one correction either way.
+    uint32_t o = offset_ + static_cast<uint32_t>(delta_steps);
+    o = (delta_steps < 0 && static_cast<int32_t>(o) < 0) ? o + period_ : o;
+    o = o >= period_ ? o - period_ : o;
+    offset_ = o;
+    return position();
   }
-  int32_t position() const { return static_cast<int32_t>(origin_ + static_cast<int64_t>(offset_)); }
+  int32_t position() const {
+    return static_cast<int32_t>(static_cast<uint32_t>(origin_) + offset_);
+  }
 
  private:
-  int64_t period_ = 1;
-  int64_t origin_ = 0;
+  uint32_t period_ = 1;
+  int32_t origin_ = 0;
   uint32_t offset_ = 0;
 };
 

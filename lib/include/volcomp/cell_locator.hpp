@@ -10,6 +10,7 @@
 
 #include <cstdint>
 
+#include "volcomp/interp_arith.hpp"
 #include "volcomp/invariant_divider.hpp"
 #include "volcomp/table_image.hpp"
 
@@ -71,26 +72,45 @@ struct LatticeCell {
   uint32_t frac_q32 = 0;  // [0, 2^32)
 };
 
+/// The constants of one lattice dimension, in the hot path's load order.
+struct LatticeDim {
+  int32_t lo = 0;
+  uint32_t span = 0;      // (nodes - 1) * spacing <= table::kMaxExtentSteps (2^31 - 1)
+  uint32_t recip_lo = 0;  // low word of floor((2^64 - 1) / spacing)
+  uint32_t recip_hi = 0;  // high word
+};
+
 class LatticeLocator {
  public:
   /// `dim` must have passed table validation (nodes >= 2, spacing >= 1, extent within int32).
   void Init(const table::Dimension& dim);
 
+  /// The clear reference (LocateFast() must give the same result for every position).
   LatticeCell Locate(int32_t pos_steps) const {
-    uint32_t u = static_cast<uint32_t>(pos_steps) - static_cast<uint32_t>(lo_);
-    u = pos_steps < lo_ ? 0u : u;
-    u = u > span_ ? span_ : u;
+    uint32_t u = static_cast<uint32_t>(pos_steps) - static_cast<uint32_t>(d_.lo);
+    u = pos_steps < d_.lo ? 0u : u;
+    u = u > d_.span ? d_.span : u;
     const uint64_t x =
-        ((static_cast<uint64_t>(u) * recip_lo_) >> 32) + static_cast<uint64_t>(u) * recip_hi_;
+        ((static_cast<uint64_t>(u) * d_.recip_lo) >> 32) + static_cast<uint64_t>(u) * d_.recip_hi;
     return LatticeCell{static_cast<uint32_t>(x >> 32), static_cast<uint32_t>(x)};
   }
 
+  const LatticeDim& dim() const { return d_; }
+
  private:
-  // Field order is the load order of the hot path (one LDM).
-  int32_t lo_ = 0;
-  uint32_t span_ = 0;
-  uint32_t recip_lo_ = 0;  // low word of floor((2^64 - 1) / spacing)
-  uint32_t recip_hi_ = 0;  // high word
+  LatticeDim d_;
 };
+
+/// The hot-path form of LatticeLocator::Locate(), for the Cortex-M4: the clamp is QSUB (pos - lo
+/// saturated: a true difference above INT32_MAX is above span too, because validation bounds the
+/// extent to 2^31 - 1), USAT (max with 0) and one compare (min with span); then
+/// UMULL + UMLAL. Bit-identical to Locate() (tests/lib/cell_locator_test.cpp).
+inline LatticeCell LocateFast(int32_t pos_steps, const LatticeDim& d) {
+  uint32_t u = SatUnsigned31(SubSat(pos_steps, d.lo));
+  u = u > d.span ? d.span : u;
+  const uint64_t x =
+      ((static_cast<uint64_t>(u) * d.recip_lo) >> 32) + static_cast<uint64_t>(u) * d.recip_hi;
+  return LatticeCell{static_cast<uint32_t>(x >> 32), static_cast<uint32_t>(x)};
+}
 
 }  // namespace volcomp

@@ -6,6 +6,19 @@
 // disabling, losing the reference or a fault ramps it out (always within the limits). When the
 // applied correction is zero the output equals the input exactly (pass-through).
 //
+// Target refresh (the tick's cycle budget, docs/mcu-target.md): while engaged, the tables are
+// evaluated in refresh_ticks() = 3 + axis_count parts, one per tick: (0) locate the grid cell at
+// the current positions and form the y-level weights; (1) the grid's lower z level; (2) its upper
+// z level; (3 + a) axis a: its grid component plus its AXIS1D table at its current position and
+// direction, clamped, becomes the axis's new target. So with 3 axes each target is refreshed
+// every 6 ticks (120 us at 50 kHz), from a grid position at most 5 ticks old, and a new target
+// (engaging, SetTable(), Rebase()) is in effect after at most 6 ticks. Each refresh equals
+// PreparedTable::TargetsQ8() (clamped) at those positions: compensator_test checks it against
+// an independent evaluation. The correction changes by at most the rate limit per tick (of the
+// order of 10^4 steps/s, below one step per tick), so the refresh interval only adds a few ticks
+// of motion to the position a target belongs to. The limiter and the whole-step correction run
+// every tick.
+//
 // Tick() is the per-tick hot path: no division, no allocation, constant time per axis.
 // Threading: call everything from the control context (the tick ISR or the code it defers to);
 // SetTable() and ClearTable() are meant for moments when the axes stand still.
@@ -59,22 +72,54 @@ class Compensator {
   /// `machine_pos_steps` without treating the jump as motion.
   void Rebase(const int32_t* machine_pos_steps);
 
-  void SetEnabled(bool on) { enabled_ = on; }
-  void SetReferenced(bool on) { referenced_ = on; }
-  void SetFault(bool on) { fault_ = on; }
+  void SetEnabled(bool on) {
+    enabled_ = on;
+    UpdateEngaged();
+  }
+  void SetReferenced(bool on) {
+    referenced_ = on;
+    UpdateEngaged();
+  }
+  void SetFault(bool on) {
+    fault_ = on;
+    UpdateEngaged();
+  }
 
   /// One control tick. `machine_pos_steps`: commanded position per axis in machine coordinates.
   /// Writes the whole-step correction to add to each axis's output position.
-  void Tick(const int32_t* machine_pos_steps, int32_t* correction_steps);
+  void Tick(const int32_t* machine_pos_steps, int32_t* correction_steps) {
+    for (uint8_t a = 0; a < axis_count_; ++a) SenseAxis(a, machine_pos_steps[a]);
+    RefreshTargets(machine_pos_steps);
+    for (uint8_t a = 0; a < axis_count_; ++a) correction_steps[a] = ApplyAxis(a);
+  }
+
+  /// Tick() in its three steps, for ControlTick::Run() (which walks its axes once before and once
+  /// after the refresh): SenseAxis() for every axis, then RefreshTargets(), then ApplyAxis() for
+  /// every axis, in this order, once per tick.
+  /// Direction and rotary wrap tracking of axis `a` at its new position.
+  void SenseAxis(uint8_t a, int32_t machine_pos_steps) {
+    const int32_t delta = static_cast<int32_t>(static_cast<uint32_t>(machine_pos_steps) -
+                                               static_cast<uint32_t>(last_pos_[a]));
+    last_pos_[a] = machine_pos_steps;
+    if (delta != 0) reverse_[a] = delta < 0;
+    if (wraps_[a]) wrap_[a].Update(delta);
+  }
+  /// One phase of the table evaluation (or zero targets when not engaged).
+  void RefreshTargets(const int32_t* machine_pos_steps);
+  /// Limiter step toward the axis's target; returns the whole-step correction (round half up).
+  int32_t ApplyAxis(uint8_t a) {
+    const int64_t p = limiter_[a].Step(static_cast<int64_t>(target_q8_[a]) * (int64_t{1} << 24));
+    return static_cast<int32_t>((p + (int64_t{1} << 31)) >> 32);
+  }
 
   bool has_table() const { return has_table_; }
   /// True when the target is the table (enabled, referenced, no fault, table active).
-  bool engaged() const { return has_table_ && enabled_ && referenced_ && !fault_; }
+  bool engaged() const { return engaged_; }
   /// True when every axis has zero applied correction and is at rest (pure pass-through).
   bool passthrough() const;
   uint32_t table_id() const { return table_.table_id; }
   uint32_t table_crc32() const { return table_.crc32; }
-  /// Last target and applied correction of an axis, Q24.8 steps.
+  /// Target (the last refresh, clamped) and applied correction of an axis, Q24.8 steps.
   int32_t target_q8(int axis) const { return target_q8_[axis]; }
   int32_t applied_q8(int axis) const {
     return static_cast<int32_t>(limiter_[axis].position_q32() >> 24);
@@ -83,20 +128,32 @@ class Compensator {
   bool reverse(int axis) const { return reverse_[axis]; }
   uint8_t axis_count() const { return axis_count_; }
 
+  /// Ticks per target refresh: the grid's three parts, then one per axis (see the top of this
+  /// file).
+  static constexpr uint8_t kGridPhases = 3;
+  uint32_t refresh_ticks() const { return kGridPhases + axis_count_; }
+
  private:
+  void UpdateEngaged() { engaged_ = has_table_ && enabled_ && referenced_ && !fault_; }
+
   uint8_t axis_count_ = 0;
+  bool engaged_ = false;  // has_table_ && enabled_ && referenced_ && !fault_ (one load per tick)
   bool enabled_ = false;
   bool referenced_ = false;
   bool fault_ = false;
   bool has_table_ = false;
-  PreparedTable table_;
+  uint8_t phase_ = 0;  // next refresh phase, 0..refresh_ticks()-1
+  int32_t target_q8_[table::kMaxAxes] = {};
+  int32_t grid_q8_[3] = {};                         // the grid part of the refresh
+  int8_t grid_component_of_[table::kMaxAxes] = {};  // grid component correcting the axis, or -1
   int32_t max_q8_[table::kMaxAxes] = {};
   CorrectionLimiter limiter_[table::kMaxAxes];
   WrapTracker wrap_[table::kMaxAxes];
   bool wraps_[table::kMaxAxes] = {};
   int32_t last_pos_[table::kMaxAxes] = {};
   bool reverse_[table::kMaxAxes] = {};
-  int32_t target_q8_[table::kMaxAxes] = {};
+  GridLookup::Partial grid_partial_;
+  PreparedTable table_;
 };
 
 }  // namespace volcomp

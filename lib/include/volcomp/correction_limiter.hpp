@@ -6,7 +6,8 @@
 // configured rate, and its change never exceeds the configured acceleration. The largest k toward
 // the target is taken for which braking a*k*(k+1)/2 still stops at the target, so a fixed target
 // is reached without overshoot; a residue below one acceleration step is taken in one tick.
-// Integer only, no division per tick.
+// Integer only, no division per tick. LimiterStepReference() (hot_path_reference.hpp) is the clear
+// version; Step() decides identically.
 #pragma once
 
 #include <cstdint>
@@ -47,11 +48,6 @@ class CorrectionLimiter {
   const Params& params() const { return params_; }
 
  private:
-  bool CanStopWithin(uint32_t m, uint64_t distance_q32) const {
-    return static_cast<uint64_t>(params_.accel_q32) * (static_cast<uint64_t>(m) * (m + 1u) / 2u) <=
-           distance_q32;
-  }
-
   Params params_;
   int64_t pos_ = 0;
   int32_t k_ = 0;

@@ -71,9 +71,10 @@ struct GatewayConfig {
   bool invert[table::kMaxAxes] = {};  // the drive's positive direction is the machine's negative
 };
 
-/// Checks `config` for a board with `axis_count` axes: COB-IDs 0x001..0x7FF and not the SYNC or
-/// a COB-ID of the board itself, offset <= 4, axis in range, at most one target and one actual
-/// field per axis, no overlapping fields in one PDO. kConfigInvalid otherwise.
+/// Checks `config` for a board with `axis_count` axes: mapped COB-IDs 0x001..0x7FF, neither the
+/// SYNC COB-ID nor one of the board's own (0x080/0x580/0x600/0x700 + node-ID, which the SYNC must
+/// not be either); offset <= 4; axis in range; at most one target and one actual field per axis;
+/// no overlapping fields in one PDO. kConfigInvalid otherwise.
 Status ValidateGatewayConfig(const GatewayConfig& config, uint8_t axis_count);
 
 /// What to do with a frame after the gateway looked at it.
@@ -84,14 +85,14 @@ enum class Route : uint8_t {
 };
 
 struct GatewayCounters {
-  uint32_t from_controller = 0;   // frames received on the CNC side
-  uint32_t from_drives = 0;       // frames received on the drive side
+  uint32_t from_controller = 0;    // frames received on the CNC side
+  uint32_t from_drives = 0;        // frames received on the drive side
   uint32_t targets_corrected = 0;  // mapped target fields rewritten
   uint32_t actuals_corrected = 0;  // mapped actual fields rewritten
-  uint32_t short_pdos = 0;        // mapped PDO too short for its field: forwarded untouched
-  uint32_t local = 0;             // frames for the board's own SDO server
-  uint32_t conflicts = 0;         // drive-side frames with the board's own COB-IDs (dropped)
-  uint32_t syncs = 0;             // SYNC frames from the controller
+  uint32_t short_pdos = 0;         // mapped PDO too short for its field: forwarded untouched
+  uint32_t local = 0;              // frames for the board's own SDO server
+  uint32_t conflicts = 0;          // drive-side frames with the board's own COB-IDs (dropped)
+  uint32_t syncs = 0;              // SYNC frames from the controller
 };
 
 class CspGateway {

@@ -59,15 +59,40 @@ class GridLookup {
   void LookupInt32(const int32_t* pos_steps, int32_t out_q8[3]) const;
   void LookupFloat32(const int32_t* pos_steps, int32_t out_q8[3]) const;
 
+  /// The same lookup in three parts, for spreading it over control ticks (the compensator does
+  /// one part per tick): Begin() locates the cell and forms the y-level weights, AccumulateZ0()
+  /// adds the four corners of the lower z level, FinishZ1() the upper four and writes the result.
+  /// Same arithmetic in the same order as Lookup(): the result is bit-identical.
+  struct Partial {
+    const uint8_t* corner = nullptr;  // the cell's first corner (x0, y0, z0)
+    uint32_t xy[4] = {};              // x0y0, x1y0, x0y1, x1y1: Q0.32, or float bits (float32)
+    uint32_t tz = 0;                  // tz >> 1 (Q1.31), or float bits (float32)
+    uint32_t acc[6] = {};             // 3 x int32 (int16), 3 x int64 (int32), 3 x float (float32)
+  };
+  void Begin(const int32_t* pos_steps, Partial* s) const;
+  void AccumulateZ0(Partial* s) const;
+  void FinishZ1(const Partial& s, int32_t out_q8[3]) const;
+
   uint8_t axis(int d) const { return axis_[d]; }
   table::ElementType element_type() const { return type_; }
 
  private:
+  // One lattice dimension: the board axis it reads, then the locator constants.
+  struct Dim {
+    uint32_t axis;
+    LatticeDim lattice;
+  };
   // Hot fields first, in the order the kernels read them.
-  LatticeLocator loc_[3];
+  Dim dim_[3];
   const uint8_t* data_ = nullptr;
-  uint32_t stride_[3] = {0, 0, 0};  // bytes between neighbouring nodes along each dimension
+  uint32_t node_bytes_ = 6;  // 3 elements
+  uint32_t stride_y_ = 0;    // bytes between neighbouring nodes along y
+  uint32_t stride_z_ = 0;    // along z
+  int32_t round_ = 0;        // fixed point: 2^(shift_ - 1), the rounding term of ToQ8
+  uint32_t shift_ = 0;       // fixed point: 7 + f (int16), 23 + f (int32)
   uint32_t frac_bits_ = 0;
+  LatticeLocator loc_[3];  // the reference's locators (same constants)
+  uint32_t stride_[3] = {0, 0, 0};
   uint8_t axis_[3] = {0, 1, 2};
   table::ElementType type_ = table::ElementType::kInt16;
 };

@@ -42,6 +42,56 @@ inline int32_t MulAddWordHalf(int32_t acc, int32_t w, int32_t v) {
 #endif
 }
 
+/// acc + floor(w * v16 / 2^16) with v16 the high halfword of v as signed (SMLAWT).
+inline int32_t MulAddWordTop(int32_t acc, int32_t w, int32_t v) {
+#if defined(__ARM_FEATURE_DSP)
+  return __smlawt(w, v, acc);
+#else
+  const int64_t p = static_cast<int64_t>(w) * static_cast<int16_t>(static_cast<uint32_t>(v) >> 16);
+  return static_cast<int32_t>(static_cast<uint32_t>(acc) +
+                              static_cast<uint32_t>(static_cast<int32_t>(p >> 16)));
+#endif
+}
+
+/// a - b saturated to the int32 range (QSUB).
+inline int32_t SubSat(int32_t a, int32_t b) {
+#if defined(__ARM_FEATURE_DSP)
+  return __qsub(a, b);
+#else
+  const int64_t d = static_cast<int64_t>(a) - b;
+  return static_cast<int32_t>(d > INT32_MAX ? INT32_MAX : (d < INT32_MIN ? INT32_MIN : d));
+#endif
+}
+
+/// acc + w * v, exactly in 64 bits (SMLAL). GCC 12 knows that the weights are non-negative and
+/// then multiplies them as unsigned (UMULL + MLA + ADDS/ADC); the one-instruction form is written
+/// out for the Cortex-M4 (C reference below, the same value).
+inline int64_t MulAddLong(int64_t acc, int32_t w, int32_t v) {
+#if defined(__ARM_ARCH_7EM__) && defined(__GNUC__)
+  __asm__("smlal %Q0, %R0, %1, %2" : "+r"(acc) : "r"(w), "r"(v));
+  return acc;
+#else
+  return acc + static_cast<int64_t>(w) * v;
+#endif
+}
+
+/// max(v, 0) for any int32 v, as uint32 (USAT #31).
+inline uint32_t SatUnsigned31(int32_t v) {
+#if defined(__ARM_FEATURE_SAT)
+  return static_cast<uint32_t>(__usat(v, 31));
+#else
+  return v < 0 ? 0u : static_cast<uint32_t>(v);
+#endif
+}
+
+/// Four bytes at any address (one LDR on a Cortex-M4, which allows unaligned word loads), in the
+/// host's byte order (little-endian on every supported target).
+inline int32_t LoadWordUnaligned(const uint8_t* p) {
+  int32_t v;
+  __builtin_memcpy(&v, p, sizeof v);
+  return v;
+}
+
 /// The eight trilinear weights in Q1.31 (index bit 0 = x, bit 1 = y, bit 2 = z).
 struct TrilinearWeights {
   int32_t w[8];

@@ -15,7 +15,9 @@
 //   output each step is one edge and `width` is unused; for CW/CCW the "direction" is which line
 //   pulses and the same setup/hold apply between lines.
 //
-// Hot path: no division (reciprocals of the counts are precomputed), O(1) per tick.
+// Hot path: no division (reciprocals of the counts are precomputed), O(1) per tick, int32 time
+// arithmetic (times relative to the tick start, floored at -2^30 by one SSAT; the clear int64
+// version is StepGeneratorReference in hot_path_reference.hpp and plans bit-identically).
 #pragma once
 
 #include <cstdint>
@@ -42,11 +44,18 @@ class StepGenerator {
   static constexpr uint32_t kMaxPulsesPerTick = 256;
 
   /// Converts the axis's drive timing to pulse-clock units. kConfigInvalid if the tick cannot
-  /// carry even one pulse or a direction change never fits.
+  /// carry even one pulse, a direction change never fits, or a time exceeds the int32 time
+  /// arithmetic (tick, setup or hold of 2^29 pulse-clock units or more: over 0.5 s at 1 GHz).
   Status Configure(const AxisConfig& axis, uint32_t tick_hz, uint32_t pulse_clock_hz);
 
   /// Plans the pulses of the next tick toward `target_steps` (wrap-safe int32 positions).
-  PulsePlan Plan(int32_t target_steps);
+  PulsePlan Plan(int32_t target_steps) {
+    PulsePlan plan;
+    PlanTick(target_steps, &plan);
+    return plan;
+  }
+  /// Plan() writing into `plan`; returns the steps still owed afterwards (|backlog|).
+  uint32_t PlanTick(int32_t target_steps, PulsePlan* plan);
 
   /// Output position after all planned pulses.
   int32_t position() const { return position_; }
@@ -63,20 +72,24 @@ class StepGenerator {
   uint32_t max_pulses_per_tick() const { return max_per_tick_; }
 
  private:
+  // Times relative to the current tick start, never below kFarPast (far enough that no rule can
+  // reach into the present: every time constant is below 2^29).
+  static constexpr int32_t kFarPast = -(int32_t{1} << 30);
+
+  // State, then the constants (the hot path reads them with short offsets).
+  int32_t position_ = 0;
+  int32_t last_rise_ = kFarPast;
+  int32_t last_fall_ = kFarPast;
+  bool negative_ = false;
+  bool edges_only_ = false;  // quadrature: a step is a single edge
   uint32_t tick_ = 0;        // tick length, pulse-clock units
   uint32_t min_period_ = 1;  // minimum rise-to-rise
   uint32_t width_ = 0;
   uint32_t setup_ = 0;
   uint32_t hold_ = 0;
   uint32_t max_per_tick_ = 0;
-  bool edges_only_ = false;  // quadrature: a step is a single edge
   InvariantDivider by_min_period_;
   uint32_t recip_count_[kMaxPulsesPerTick + 1] = {};  // floor((2^32 - 1) / n)
-
-  int32_t position_ = 0;
-  bool negative_ = false;
-  int64_t last_rise_ = -(int64_t{1} << 40);  // relative to the current tick start
-  int64_t last_fall_ = -(int64_t{1} << 40);
 };
 
 }  // namespace volcomp

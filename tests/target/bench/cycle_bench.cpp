@@ -61,6 +61,38 @@ __attribute__((noinline)) void RunLookup(const GridLookup& lookup,
   }
 }
 
+// The three parts of the lookup the control tick spreads over ticks (GridLookup::Begin,
+// AccumulateZ0, FinishZ1), on every grid case: one scenario per part.
+__attribute__((noinline)) void RunParts(const GridLookup& lookup, const int32_t* pos, int part) {
+  static GridLookup::Partial s;
+  int32_t out[3];
+  if (part == 0) lookup.Begin(pos, &s);
+  if (part == 1) lookup.AccumulateZ0(&s);
+  if (part == 2) {
+    lookup.FinishZ1(s, out);
+    g_sink = out[0] + out[1] + out[2];
+  }
+}
+
+int BenchParts(int part, const char* name, const char* symbol) {
+  Scenario(name, symbol);
+  for (const GridCaseSpec& c : kGridCases) {
+    const uint32_t size = BuildGridImage(c, g_image, sizeof g_image);
+    const Result<table::TableView> view = table::ParseImage(g_image, size);
+    GridLookup lookup;
+    if (size == 0 || !view.ok() || !lookup.Init(view->grid).ok()) return 1;
+    Rng rng(c.seed);
+    uint32_t n[3];
+    for (int d = 0; d < 3; ++d) n[d] = CoordinateCount(c.dim[d]);
+    for (uint32_t i = 0; i < n[0] + n[1] + n[2]; ++i) {
+      int32_t pos[3];
+      for (int d = 0; d < 3; ++d) pos[d] = Coordinate(c.dim[d], (i * (d + 1) + d) % n[d], rng);
+      for (int p = 0; p <= part; ++p) RunParts(lookup, pos, p);
+    }
+  }
+  return 0;
+}
+
 template <class Loader>
 int BenchGrid(const GridCaseSpec& c, const char* name) {
   const uint32_t size = BuildGridImage(c, g_image, sizeof g_image);
@@ -106,10 +138,20 @@ int BenchTick() {
   for (uint8_t a = 0; a < 3; ++a) engine.Reference(a);
   uint32_t counters[3] = {0, 0, 0};
   PulsePlan plans[3];
-  Scenario("control_tick_3axes", "_ZN7volcomp11ControlTick3Run");
-  for (uint32_t i = 0; i < kTickPatternLength; ++i) {
-    for (uint32_t a = 0; a < 3; ++a) counters[a] += TickCounterDelta(i, a);
-    engine.Run(counters, plans);
+  // The whole tick, then the same pattern again with the tick's parts as their own rows (each
+  // call of the part inside the tick is one sample).
+  const char* const kRuns[][2] = {
+      {"control_tick_3axes", "_ZN7volcomp11ControlTick3Run"},
+      {"tick_part_refresh", "_ZN7volcomp11Compensator14RefreshTargets"},
+      {"tick_part_limiter", "_ZN7volcomp17CorrectionLimiter4Step"},
+      {"tick_part_step_generator", "_ZN7volcomp13StepGenerator8PlanTick"},
+  };
+  for (const auto& run : kRuns) {
+    Scenario(run[0], run[1]);
+    for (uint32_t i = 0; i < kTickPatternLength; ++i) {
+      for (uint32_t a = 0; a < 3; ++a) counters[a] += TickCounterDelta(i, a);
+      engine.Run(counters, plans);
+    }
   }
   if (!engine.compensator().engaged()) {
     semihost::Write("bench: compensation not engaged\n");
@@ -132,6 +174,9 @@ int main() {
   rc |= BenchGrid<LoadInt32>(kGridCases[3], "lookup_int32_b");
   rc |= BenchGrid<LoadFloat32>(kGridCases[4], "lookup_float32_a");
   rc |= BenchGrid<LoadFloat32>(kGridCases[5], "lookup_float32_b");
+  rc |= BenchParts(0, "lookup_part_begin", "_ZNK7volcomp10GridLookup5Begin");
+  rc |= BenchParts(1, "lookup_part_z0", "_ZNK7volcomp10GridLookup12AccumulateZ0");
+  rc |= BenchParts(2, "lookup_part_z1", "_ZNK7volcomp10GridLookup8FinishZ1");
   rc |= BenchTick();
   volcomp::semihost::Write(rc == 0 ? "bench: done\n" : "bench: FAILED\n");
   return rc;

@@ -25,6 +25,10 @@ enum class NmtState : uint8_t {
 
 enum class ResetRequest : uint8_t { kNone, kNode, kCommunication };
 
+/// EMCY code sent when an SDO transfer failed on protocol grounds (timeout, toggle, sequence, CRC;
+/// bytes 3-6 = the abort code).
+inline constexpr uint16_t kEmcySdoTransferFailed = 0xFF11;
+
 /// Error register (0x1001) bits.
 enum ErrorRegisterBit : uint8_t {
   kErrGeneric = 0x01,
@@ -99,6 +103,7 @@ class Node : private ObjectValues {
   uint8_t urgent_count_ = 0;
   uint32_t emcy_sent_ = 0;
   uint32_t malformed_ = 0;
+  uint32_t reported_aborts_ = 0;
 };
 
 }  // namespace volcomp::canopen

@@ -12,7 +12,8 @@
 //   [gpio]     backend (gpiod | fake | fake:STATE_FILE | none), consumer, debounce_ms, poll_ms,
 //              and one line spec per wired line (home0..home5, enable, estop, drive_alarm,
 //              write_enable, ready, compensating, fault)
-//   [flash]    tables, settings (files), table_bank_kib, sector_bytes, sync
+//   [flash]    tables, settings (files), table_bank_kib, sector_bytes, sync, write_behind
+//   [process]  realtime_priority (SCHED_FIFO 1..99, 0 = normal scheduling), lock_memory
 //
 // '#' and ';' start comments; numbers are decimal or 0x hex; booleans true/false/yes/no/on/off/1/0.
 // Unknown sections and keys are errors (typos must not silently change the machine's behaviour).
@@ -55,6 +56,10 @@ struct LinuxBoardConfig {
   uint32_t table_bank_bytes = 512u * 1024u;
   uint32_t sector_bytes = 4096;
   bool flash_sync = true;
+  bool flash_write_behind = true;
+
+  uint32_t realtime_priority = 0;  // SCHED_FIFO priority of the process (0: SCHED_OTHER)
+  bool lock_memory = false;        // mlockall: no page faults on the forwarding path
 };
 
 /// Parses `text` (named `source` in messages) into *out, starting from the defaults, and checks the

@@ -62,7 +62,8 @@ class GatewayApp {
   /// Starts the board (stored settings override `defaults`) and the gateway with `gateway`
   /// (own_node_id is taken from the settings in force). kConfigInvalid when the settings or the
   /// gateway mapping are invalid for the axis count in force.
-  Status Start(const firmware::BoardSettings& defaults, const gateway::GatewayConfig& gateway,
+  Status Start(const firmware::BoardSettings& defaults,
+               const gateway::GatewayConfig& gateway,
                const firmware::AppOptions& options = firmware::AppOptions());
 
   gateway::Route OnControllerFrame(const CanFrame& frame);

@@ -26,11 +26,10 @@
 namespace volcomp::fw_linux {
 
 struct RunOptions {
-  std::string ready_file;      // written once the board is running (tests wait for it)
-  std::string stats_file;      // JSON statistics written at exit
-  double duration_s = 0;       // stop after this long (0 = until a signal)
+  std::string ready_file;  // written once the board is running (tests wait for it)
+  std::string stats_file;  // JSON statistics written at exit
+  double duration_s = 0;   // stop after this long (0 = until a signal)
   bool measure_latency = true;
-  bool verbose = false;
 };
 
 /// Runs the board until a signal (or the duration). Returns the process exit code; errors are

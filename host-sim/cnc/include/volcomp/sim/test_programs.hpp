@@ -29,9 +29,9 @@ struct MeasuredStop {
   Point3 point_mm = {0, 0, 0};  // commanded position (machine frame)
   double along_mm = 0;          // position along the test line (the target's coordinate)
   metrology::Direction approach = metrology::Direction::kUp;
-  int run = 0;                  // 1-based; 0 for the datum
-  int target = 0;               // 1-based target number; 0 for the datum
-  bool datum = false;           // the instrument is zeroed here, no reading
+  int run = 0;         // 1-based; 0 for the datum
+  int target = 0;      // 1-based target number; 0 for the datum
+  bool datum = false;  // the instrument is zeroed here, no reading
 };
 
 struct TestProgram {

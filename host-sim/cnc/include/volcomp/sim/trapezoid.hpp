@@ -21,8 +21,8 @@ class TrapezoidProfile {
 
  private:
   double length_, accel_, peak_;
-  double ramp_s_;      // duration of the acceleration (and of the deceleration)
-  double ramp_mm_;     // distance covered while accelerating
+  double ramp_s_;   // duration of the acceleration (and of the deceleration)
+  double ramp_mm_;  // distance covered while accelerating
   double duration_;
 };
 

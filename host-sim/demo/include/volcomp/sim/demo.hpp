@@ -33,17 +33,17 @@ struct DemoOptions {
   std::string report_dir;           // empty: no report
   int gost_targets = 11;
   int gost_runs = 5;
-  double gost_pitch_mm = 5;         // P of GOST 27843 §2.7 (lead-screw pitch)
+  double gost_pitch_mm = 5;  // P of GOST 27843 §2.7 (lead-screw pitch)
   int diagonal_targets = 11;
   int diagonal_runs = 5;
   int random_points = 200;
   double parametric_step_mm = 10;
   double grid_spacing_mm = 10;
-  double margin_mm = 10;            // test lines and diagonals stay this far inside the travel
-  double dwell_s = 0.05;            // dwell at every measured stop (virtual)
-  double test_feed_mm_s = 1000;     // G1 feed of the test cycles
+  double margin_mm = 10;         // test lines and diagonals stay this far inside the travel
+  double dwell_s = 0.05;         // dwell at every measured stop (virtual)
+  double test_feed_mm_s = 1000;  // G1 feed of the test cycles
   double accel_mm_s2 = 10000;
-  int benchmark_moves = 6;          // rapid moves with every axis at 1 MHz for the speed figure
+  int benchmark_moves = 6;  // rapid moves with every axis at 1 MHz for the speed figure
   InterferometerOptions laser;
   TrackerOptions tracker;
 };

@@ -1,8 +1,8 @@
 // Latency from an input step to the output step that carries it, measured from the outside.
 //
 // Input side: every step the CNC emits, with its exact time and the input count it produces (n).
-// Output side: every pulse the drive receives, with its time; after a pulse the drive position minus
-// the board's whole-step correction of that tick is the input count the output has "served".
+// Output side: every pulse the drive receives, with its time; after a pulse the drive position
+// minus the board's whole-step correction of that tick is the input count the output has "served".
 // An input step is carried when the served count reaches its n (in its direction); its latency is
 // that pulse's time minus the input step's time. A step absorbed by a simultaneous correction step
 // (no pulse needed) is carried at the start of the tick that absorbed it.
@@ -12,8 +12,8 @@
 #pragma once
 
 #include <array>
+#include <cstddef>
 #include <cstdint>
-#include <deque>
 #include <vector>
 
 namespace volcomp::sim {
@@ -49,11 +49,24 @@ class LatencyMeter {
     int64_t count;
     int dir;
   };
+  // A FIFO per axis: entries [head, size) are pending (cheaper than std::deque per step).
+  struct Queue {
+    std::vector<Pending> items;
+    size_t head = 0;
+    bool empty() const { return head == items.size(); }
+    const Pending& front() const { return items[head]; }
+    void pop() {
+      if (++head == items.size()) {
+        items.clear();
+        head = 0;
+      }
+    }
+  };
   void Record(uint64_t latency_ns);
   void Carry(int axis, uint64_t t_ns, int64_t served);
 
   uint64_t tick_ns_;
-  std::array<std::deque<Pending>, 3> pending_;
+  std::array<Queue, 3> pending_;
   std::vector<uint64_t> bins_;
   uint64_t samples_ = 0;
   uint64_t unmatched_ = 0;

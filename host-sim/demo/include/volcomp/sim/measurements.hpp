@@ -6,7 +6,9 @@
 //   MeasurePointSet    volumetric error at points (laser tracker registered at the first point)
 //   MeasureParametric  the six error motions of one axis through the reference point (6-DOF laser)
 // Lengths mm, deviations µm, angles µrad. Every session throws std::runtime_error when the CNC
-// does not finish or the dwell count does not match the program's stops.
+// does not finish or the dwell count does not match the program's stops. The evaluations require
+// 5 approaches per target and direction (GOST 27843 §2.10, ISO 230-6 §5.3) unless the cycle runs
+// fewer (reduced test runs), then that many (at least 2).
 #pragma once
 
 #include <string>
@@ -66,7 +68,7 @@ DiagonalSetResult MeasureDiagonals(World& world,
 
 struct PointSetResult {
   TestProgram program;
-  std::vector<Point3> targets_mm;            // without the datum
+  std::vector<Point3> targets_mm;              // without the datum
   std::vector<model::Vec3> measured_error_um;  // tracker reading minus command
   std::vector<model::Vec3> true_error_um;      // machine model, no instrument error
   double max_um = 0, rms_um = 0;               // of |measured error|

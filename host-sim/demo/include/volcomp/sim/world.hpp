@@ -50,7 +50,7 @@ struct StepAudit {
   uint64_t owed_at_rest = 0;     // sum over rest checks of |backlog|
   uint64_t tick_mismatches = 0;  // ticks where a drive's count differs from the board's output
   uint64_t timing_violations = 0;
-  uint32_t overruns = 0;         // ticks whose backlog exceeded one tick's pulse capacity
+  uint32_t overruns = 0;  // ticks whose backlog exceeded one tick's pulse capacity
   uint32_t max_backlog = 0;
   uint64_t input_steps = 0;
   uint64_t output_steps = 0;

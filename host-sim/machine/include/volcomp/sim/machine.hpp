@@ -6,14 +6,15 @@
 //     length. The drives count output steps from 0 at power-up (DriveModel), so the simulator never
 //     needs to know what the CNC or the board think the position is.
 //   * Tool point (mm) = q + e(q), e from model::ToolPointError_um (actual minus nominal).
-//   * Each axis has a home switch at its negative end: closed while q <= home_switch_mm.
+//   * Each axis has a home switch at its negative end: closed while q <= home_switch_mm, i.e.
+//     while the drive count <= round((home_switch_mm - power-up position) / step).
 //
 // Thread-safety: const methods may be called concurrently except PointOnTool_mm (caches models).
 #pragma once
 
 #include <array>
-#include <cstdint>
 #include <cmath>
+#include <cstdint>
 #include <map>
 #include <string>
 
@@ -23,7 +24,7 @@
 namespace volcomp::sim {
 
 struct MachineOptions {
-  model::Model model;                                   // empty: the built-in S500
+  model::Model model;                                     // empty: the built-in S500
   std::array<double, 3> step_mm = {0.001, 0.001, 0.001};  // drive step length per axis
   /// Where each axis stands at power-up; NaN = 10 % into its travel.
   std::array<double, 3> power_up_mm = {NAN, NAN, NAN};
@@ -44,7 +45,9 @@ class Machine {
   /// The travel covered by the model's error tables (mm).
   double travel_min_mm(int axis) const;
   double travel_max_mm(int axis) const;
-  double home_switch_mm(int axis) const { return options_.home_switch_mm[static_cast<size_t>(axis)]; }
+  double home_switch_mm(int axis) const {
+    return options_.home_switch_mm[static_cast<size_t>(axis)];
+  }
   double power_up_mm(int axis) const { return options_.power_up_mm[static_cast<size_t>(axis)]; }
 
   /// Axis positions (mm) for drive step counts.
@@ -59,6 +62,7 @@ class Machine {
 
  private:
   MachineOptions options_;
+  std::array<int64_t, 3> switch_steps_ = {0, 0, 0};
   std::map<std::array<double, 3>, model::Model> offset_models_;
 };
 

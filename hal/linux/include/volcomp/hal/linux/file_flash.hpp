@@ -9,19 +9,32 @@
 //                     Erase/Program of that range.
 //
 // Durability: every Erase/Program is written with pwrite() at its offset and, with `sync` on (the
-// default), fdatasync()ed before it returns. Operations therefore reach the disk in program order,
-// which is what the dual-bank store relies on (data before commit record); a power loss during
-// one operation tears at most that operation, which the store treats like an interrupted flash
-// program. A new file is created at the full size filled with 0xFF (written to a temporary file,
-// fsynced and renamed into place, then the directory is fsynced), so a crash while creating never
-// leaves a short file. A file of another size is refused (the layout would not match). The file
-// is locked (flock, exclusive) while open, so two processes cannot share one flash.
+// default), fdatasync()ed before the next one is written. Operations therefore reach the disk in
+// program order, which is what the dual-bank store relies on (data before commit record); a power
+// loss during one operation tears at most that operation, and a power loss with operations still
+// queued loses them from the tail, which the store treats like power lost before them (the old
+// table stays). A new file is created at the full size filled with 0xFF (temporary file, fsync,
+// rename, fsync of the directory), so a crash while creating never leaves a short file. A file of
+// another size is refused (the layout would not match). The file is locked (flock, exclusive)
+// while open, so two processes cannot share one flash.
 //
-// Thread-safety: one thread (the firmware's main loop), like every hal::Flash.
+// Write-behind (`background`, the default): the in-memory copy changes at once and the file writes
+// run in order on a writer thread, so the caller (the gateway's event loop, which must keep
+// forwarding frames during a table upload) never waits for the disk; fdatasync on an SD card can
+// take tens of milliseconds. Flush() and Close() wait until everything queued is on disk. A write
+// error is sticky: every later Erase/Program fails with kIoError. Without `background` each
+// operation is written (and synced) before it returns.
+//
+// Thread-safety: the hal::Flash interface from one thread (the firmware's main loop); the writer
+// thread is internal.
 #pragma once
 
+#include <condition_variable>
 #include <cstdint>
+#include <deque>
+#include <mutex>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "volcomp/hal/flash.hpp"
@@ -34,12 +47,15 @@ class FileFlash final : public Flash {
     uint32_t size = 1u << 20;
     uint32_t sector_size = 4096;
     uint32_t program_unit = 8;
-    bool sync = true;  // fdatasync after every operation
+    bool sync = true;        // fdatasync after every operation
+    bool background = true;  // write-behind thread (see above)
   };
   struct Counters {
     uint64_t erases = 0;
     uint64_t programs = 0;
-    uint64_t refused = 0;  // programs refused for a 0 -> 1 change or an I/O error
+    uint64_t refused = 0;     // programs refused for a 0 -> 1 change or after a write error
+    uint64_t max_queued = 0;  // most operations waiting for the writer thread at once
+    uint64_t written = 0;     // operations on disk
   };
 
   FileFlash() = default;
@@ -49,14 +65,22 @@ class FileFlash final : public Flash {
 
   /// Opens (or creates) `path`. Returns "" or a message naming the file and the cause.
   std::string Open(const std::string& path, const Options& options);
+  /// Waits for queued writes, then closes the file (and releases the lock).
   void Close();
+  /// Waits until every operation so far is written (and synced). Returns "" or the write error.
+  std::string Flush();
   bool is_open() const { return fd_ >= 0; }
   const std::string& path() const { return path_; }
-  const Counters& counters() const { return counters_; }
-  /// The last I/O error text ("" when none).
-  const std::string& last_error() const { return last_error_; }
+  Counters counters() const;
+  /// The write error ("" when none).
+  std::string last_error() const;
 
  private:
+  struct Op {
+    uint32_t offset;
+    std::vector<uint8_t> bytes;
+  };
+
   uint32_t DoSize() const override { return options_.size; }
   uint32_t DoSectorSize() const override { return options_.sector_size; }
   uint32_t DoProgramUnit() const override { return options_.program_unit; }
@@ -66,14 +90,23 @@ class FileFlash final : public Flash {
 
   uint8_t* bytes() { return reinterpret_cast<uint8_t*>(storage_.data()); }
   const uint8_t* bytes() const { return reinterpret_cast<const uint8_t*>(storage_.data()); }
-  Status WriteThrough(uint32_t offset, uint32_t size);
+  Status Submit(uint32_t offset, uint32_t size);
+  std::string WriteOp(const uint8_t* data, uint32_t size, uint32_t offset);
+  void WriterLoop();
 
   Options options_;
   std::string path_;
   int fd_ = -1;
   std::vector<uint64_t> storage_;  // 8-byte aligned image of the file
+
+  mutable std::mutex mutex_;  // guards everything below
+  std::condition_variable wake_, idle_;
+  std::deque<Op> queue_;
+  bool busy_ = false;  // the writer holds an operation
+  bool stop_ = false;
+  std::string error_;  // sticky write error
   Counters counters_;
-  std::string last_error_;
+  std::thread writer_;
 };
 
 }  // namespace volcomp::hal::linux_board

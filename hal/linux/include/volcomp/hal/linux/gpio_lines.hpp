@@ -27,7 +27,7 @@ enum class Bias : uint8_t { kAsIs, kDisable, kPullUp, kPullDown };
 
 struct GpioLineSpec {
   bool used = false;
-  std::string chip;       // empty: look the line up by `line_name`
+  std::string chip;  // empty: look the line up by `line_name`
   unsigned offset = 0;
   std::string line_name;  // used when `chip` is empty
   bool active_low = false;

@@ -1,11 +1,12 @@
 // hal::SlowIo over a GpioBackend (libgpiod or fake) for the Linux board.
 //
-// Refresh(now) reads all inputs once (the first call takes the levels as they are) (call it from the main loop, e.g. every 1-2 ms) and updates
-// software-debounced levels: a level change is reported after it has been stable for
-// `debounce_ms` (libgpiod 1.6 has no kernel debounce). Fail-safe lines are not delayed in their
-// active direction: e-stop and drive alarm become active at the first Refresh() that sees them
-// active and return to inactive only after the debounce time. Read() returns the debounced level
-// (no system call); Write() drives the output when its level changes.
+// Refresh(now) reads all inputs once (the first call takes the levels as they are) (call it from
+// the main loop, e.g. every 1-2 ms) and updates software-debounced levels: a level change is
+// reported after it has been stable for `debounce_ms` (libgpiod 1.6 has no kernel debounce).
+// Fail-safe lines are not delayed in their active direction: e-stop and drive alarm become active
+// at the first Refresh() that sees them active and return to inactive only after the debounce time.
+// Read() returns the debounced level (no system call); Write() drives the output when its level
+// changes.
 //
 // Backend errors are counted and kept (last_error()); a line that cannot be read keeps its level.
 //
@@ -53,7 +54,7 @@ class LinuxSlowIo final : public SlowIo {
   bool primed_ = false;
   bool raw_[kInputLineCount] = {};
   bool stable_[kInputLineCount] = {};
-  bool pending_[kInputLineCount] = {};        // a change is being timed
+  bool pending_[kInputLineCount] = {};       // a change is being timed
   uint64_t since_ns_[kInputLineCount] = {};  // when the raw level first differed
   bool out_[kOutputLineCount] = {};
   bool out_written_[kOutputLineCount] = {};

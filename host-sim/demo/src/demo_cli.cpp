@@ -1,0 +1,69 @@
+// The `volcomp-sim demo` command line.
+#include "volcomp/sim/demo_cli.hpp"
+
+#include <cstdio>
+#include <iostream>
+#include <stdexcept>
+
+#include "volcomp/sim/demo.hpp"
+#include "volcomp/tools/args.hpp"
+
+namespace volcomp::sim {
+
+const char* DemoUsage() {
+  return "  demo [--seed N] [--report DIR] [--model s500|CONFIG] [--points N] [--quick]\n"
+         "       [--laser-noise-um S] [--tracker-noise-um S]\n"
+         "       the main job on the simulated machine: measure, evaluate, build the table,\n"
+         "       upload it over the simulated CAN bus, reference, activate, re-measure\n";
+}
+
+int RunDemoCommand(const std::vector<std::string>& words) {
+  DemoOptions o;
+  try {
+    tools::Args args(words);
+    if (auto s = args.integer("--seed")) {
+      if (*s < 0) throw tools::UsageError("--seed must be >= 0");
+      o.seed = static_cast<uint64_t>(*s);
+    }
+    if (auto d = args.value("--report")) o.report_dir = *d;
+    if (auto m = args.value("--model")) o.model_spec = *m;
+    if (args.flag("--quick")) {  // a smaller run: fewer points and targets, same checks
+      o.random_points = 50;
+      o.diagonal_targets = 6;
+      o.gost_targets = 6;
+      o.benchmark_moves = 2;
+    }
+    if (auto v = args.number("--laser-noise-um")) {
+      if (!(*v >= 0)) throw tools::UsageError("--laser-noise-um must be >= 0");
+      o.laser.linear_um.noise = *v;
+    }
+    if (auto v = args.number("--tracker-noise-um")) {
+      if (!(*v >= 0)) throw tools::UsageError("--tracker-noise-um must be >= 0");
+      o.tracker.coordinate_um.noise = *v;
+    }
+    if (auto n = args.integer("--points")) {
+      if (*n < 1 || *n > 100000) throw tools::UsageError("--points must be 1..100000");
+      o.random_points = static_cast<int>(*n);
+    }
+    args.finish();
+  } catch (const tools::UsageError& e) {
+    std::fprintf(stderr, "volcomp-sim demo: %s\n", e.what());
+    return 2;
+  }
+  try {
+    const DemoResult r = RunDemo(o, std::cout);
+    PrintSummary(r, std::cout);
+    if (!o.report_dir.empty()) {
+      WriteDemoReport(r, o.report_dir);
+      std::cout << "report: " << o.report_dir << "/index.html (data, programs, measured model, "
+                << "table.vct alongside)\n";
+    }
+    std::printf("wall time %.1f s\n", r.wall_s);
+    return r.failures.empty() ? 0 : 1;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "volcomp-sim demo: %s\n", e.what());
+    return 1;
+  }
+}
+
+}  // namespace volcomp::sim

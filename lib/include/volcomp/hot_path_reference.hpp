@@ -1,0 +1,50 @@
+// The clear versions of the tick's optimised routines, kept as executable specifications: the
+// host tests (tests/lib/hot_path_reference_test.cpp) drive each optimised routine and its
+// reference with the same random and adversarial inputs and require identical results, bit for
+// bit. Nothing on the product's tick path uses this file.
+//
+//   StepGeneratorReference     StepGenerator::Plan() with int64 times relative to the tick (the
+//                              optimised one keeps int32 times floored at -2^30)
+//   LimiterStepReference()     CorrectionLimiter::Step() as first written
+//   (GridLookup::Interpolate<Loader> and LatticeLocator::Locate are the lookup references; they
+//   stay in grid_lookup.hpp and cell_locator.hpp next to the kernels.)
+#pragma once
+
+#include <cstdint>
+
+#include "volcomp/board_config.hpp"
+#include "volcomp/correction_limiter.hpp"
+#include "volcomp/status.hpp"
+#include "volcomp/step_generator.hpp"
+
+namespace volcomp {
+
+/// Output pulse planning as first written (see step_generator.hpp for the rules).
+class StepGeneratorReference {
+ public:
+  Status Configure(const AxisConfig& axis, uint32_t tick_hz, uint32_t pulse_clock_hz);
+  PulsePlan Plan(int32_t target_steps);
+  int32_t position() const { return position_; }
+  void Reset(int32_t position_steps) { position_ = position_steps; }
+
+ private:
+  uint32_t tick_ = 0;
+  uint32_t min_period_ = 1;
+  uint32_t width_ = 0;
+  uint32_t setup_ = 0;
+  uint32_t hold_ = 0;
+  uint32_t max_per_tick_ = 0;
+  bool edges_only_ = false;
+  int32_t position_ = 0;
+  bool negative_ = false;
+  int64_t last_rise_ = -(int64_t{1} << 40);  // relative to the current tick start
+  int64_t last_fall_ = -(int64_t{1} << 40);
+};
+
+/// One tick of the correction limiter as first written: moves (pos, k) toward `target_q32`.
+int64_t LimiterStepReference(const LimiterParams& p,
+                             int64_t& pos_q32,
+                             int32_t& k,
+                             int64_t target_q32);
+
+}  // namespace volcomp

@@ -1,0 +1,147 @@
+// The simulated installation: the real firmware between the CNC and the drive checkers, at 1 MHz
+// per axis, in every output pulse format; homing; a table over the simulated bus.
+#include "volcomp/sim/world.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <sstream>
+#include <string>
+
+#include "volcomp/firmware/board_objects.hpp"
+#include "volcomp/image/image_builder.hpp"
+#include "volcomp/sim/board_session.hpp"
+
+namespace volcomp::sim {
+namespace {
+
+WorldOptions Options(PulseFormat output = PulseFormat::kStepDir) {
+  WorldOptions wo;
+  wo.board = BoardSettingsFor(Machine(wo.machine));
+  for (int a = 0; a < 3; ++a) wo.board.board.axis[a].output_format = output;
+  return wo;
+}
+
+void ExpectCleanRun(World& w) {
+  w.RunFor(2000000);
+  EXPECT_TRUE(w.CheckAtRest());
+  const StepAudit audit = w.Audit();
+  EXPECT_EQ(audit.lost_steps, 0u);
+  EXPECT_EQ(audit.tick_mismatches, 0u);
+  EXPECT_EQ(audit.timing_violations, 0u);
+  EXPECT_EQ(audit.overruns, 0u);
+  const LatencySummary lat = w.latency().Summarize();
+  EXPECT_EQ(lat.samples, audit.input_steps);
+  EXPECT_EQ(lat.unmatched, 0u);
+  EXPECT_LE(lat.max_ticks, 2.0);
+  EXPECT_GT(lat.max_ticks, 0.5);  // it is measured, not zero
+}
+
+class SimWorldFormats : public ::testing::TestWithParam<PulseFormat> {};
+
+TEST_P(SimWorldFormats, PassThroughAtOneMegahertzLosesNothing) {
+  World w(Options(GetParam()));
+  ASSERT_TRUE(w.Start().ok());
+  w.cnc().QueueRapid({250000, 0, 0});       // X alone at 1 MHz
+  w.cnc().QueueRapid({0, 200000, 150000});  // back on X, Y and Z together
+  w.cnc().QueueRapid({120000, -30000, 0});
+  ASSERT_TRUE(w.RunUntilCncIdle(10000000000ull));
+  EXPECT_NEAR(w.cnc().peak_step_rate_hz(), 1e6, 1);
+  ExpectCleanRun(w);
+  // Without a table the drives are exactly where the CNC sent them.
+  const auto d = w.DriveSteps();
+  EXPECT_EQ(d[0], 120000);
+  EXPECT_EQ(d[1], -30000);
+  EXPECT_EQ(d[2], 0);
+}
+
+INSTANTIATE_TEST_SUITE_P(Outputs,
+                         SimWorldFormats,
+                         ::testing::Values(PulseFormat::kStepDir,
+                                           PulseFormat::kCwCcw,
+                                           PulseFormat::kQuadrature));
+
+TEST(SimWorld, HomingReferencesTheBoardWhereTheSwitchCloses) {
+  const WorldOptions wo = Options();
+  World w(wo);
+  ASSERT_TRUE(w.Start().ok());
+  w.cnc().QueueHome(7);
+  ASSERT_TRUE(w.RunUntilCncIdle(60000000000ull));
+  w.RunFor(1000000);
+  const ControlTick& e = w.board().app().engine();
+  EXPECT_TRUE(e.all_referenced());
+  const auto d = w.DriveSteps();
+  for (int a = 0; a < 3; ++a) {
+    const Machine& m = w.machine();
+    // The drive count at which the axis reaches the switch: (switch - power-up) / step.
+    const int64_t closes = std::llround((m.home_switch_mm(a) - m.power_up_mm(a)) / m.step_mm(a));
+    EXPECT_EQ(d[static_cast<size_t>(a)], closes) << a;
+    const int32_t home = wo.board.board.axis[a].home_position_steps;
+    EXPECT_EQ(home, std::lround(m.home_switch_mm(a) / m.step_mm(a)));
+    EXPECT_EQ(e.machine_position(static_cast<uint8_t>(a)), home) << a;
+    EXPECT_EQ(w.cnc().position(a), home) << a;
+  }
+  ExpectCleanRun(w);
+}
+
+// A GRID3 with the same correction at every node: (37, -12, 5) steps everywhere.
+std::vector<uint8_t> ConstantImage() {
+  image::ImageRequest req;
+  req.table_id = 7;
+  for (char name : {'X', 'Y', 'Z'}) {
+    image::AxisDef d;
+    d.name = name;
+    d.resolution_e9 = 1000000;
+    req.axes.push_back(d);
+  }
+  image::GridCorrections g;
+  for (auto& l : g.lattice) l = {2, 0, 500000};
+  for (int n = 0; n < 8; ++n) {
+    g.correction_steps.push_back(37);
+    g.correction_steps.push_back(-12);
+    g.correction_steps.push_back(5);
+  }
+  req.grid = g;
+  req.frac_bits = 0;
+  return image::BuildImage(req);
+}
+
+TEST(SimWorld, TableOverTheBusThenCompensatedMotionLosesNothing) {
+  World w(Options());
+  ASSERT_TRUE(w.Start().ok());
+  const std::vector<uint8_t> image = ConstantImage();
+  std::ostringstream log;
+  const UploadReport up = UploadTable(w, image, log);
+  ASSERT_TRUE(up.ok) << up.message;
+  EXPECT_EQ(up.staged_crc, up.image_crc);
+  EXPECT_GT(up.transfer_s, 0);
+  // Not referenced yet: the board refuses to activate.
+  ActivationReport refused = ActivateTable(w, up.image_crc);
+  EXPECT_FALSE(refused.ok);
+  EXPECT_NE(refused.message.find("referenced"), std::string::npos) << refused.message;
+
+  w.cnc().QueueHome(7);
+  ASSERT_TRUE(w.RunUntilCncIdle(60000000000ull));
+  w.RunFor(150000000);
+  const ActivationReport act = ActivateTable(w, up.image_crc);
+  ASSERT_TRUE(act.ok) << act.message;
+  w.RunFor(300000000);
+  EXPECT_NE(ReadDeviceState(w) & firmware::kStateEngaged, 0);
+  EXPECT_TRUE(w.CheckAtRest());
+  const std::array<int64_t, 3> c = {37, -12, 5};
+  auto d = w.DriveSteps();
+  for (int a = 0; a < 3; ++a) {
+    EXPECT_EQ(d[static_cast<size_t>(a)], w.cnc().count(a) + c[static_cast<size_t>(a)]) << a;
+  }
+  w.cnc().QueueRapid({300000, 250000, 180000});
+  w.cnc().QueueRapid({10000, 20000, 30000});
+  ASSERT_TRUE(w.RunUntilCncIdle(10000000000ull));
+  ExpectCleanRun(w);
+  d = w.DriveSteps();
+  for (int a = 0; a < 3; ++a) {
+    EXPECT_EQ(d[static_cast<size_t>(a)], w.cnc().count(a) + c[static_cast<size_t>(a)]) << a;
+  }
+}
+
+}  // namespace
+}  // namespace volcomp::sim
