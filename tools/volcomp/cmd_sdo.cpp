@@ -36,7 +36,7 @@ int RunSdo(Args& args) {
   auto s = OpenSession(can);
   const canopen::ObjectEntry* e = canopen::FindEntry(index, sub);
   if (pos[0] == "read") {
-    const auto r = canopen_client::Upload(s->link(), can.node, index, sub, false);
+    const auto r = canopen_client::Upload(s->link(), can.node, index, sub, false, s->options());
     if (!r.ok) throw InputError(r.message);
     if (e != nullptr && e->type == canopen::DataType::kVisibleString) {
       std::printf("%s\n", std::string(r.data.begin(), r.data.end()).c_str());
@@ -65,8 +65,9 @@ int RunSdo(Args& args) {
   }
   const uint32_t size =
       e != nullptr && canopen::FixedSize(e->type) ? canopen::FixedSize(e->type) : 4;
-  const auto r = canopen_client::WriteU32(s->link(), can.node, index, sub,
-                                          static_cast<uint32_t>(value), static_cast<uint8_t>(size));
+  const auto r =
+      canopen_client::WriteU32(s->link(), can.node, index, sub, static_cast<uint32_t>(value),
+                               static_cast<uint8_t>(size), s->options());
   if (!r.ok) throw InputError(r.message);
   std::printf("ok\n");
   return 0;

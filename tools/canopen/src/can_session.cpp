@@ -31,12 +31,12 @@ void CanSession::Observe(const CanFrame& f) {
 SdoResult CanSession::Write(canopen::ObjectId id, uint32_t value) {
   const canopen::ObjectEntry& e = canopen::Entry(id);
   const uint32_t n = canopen::FixedSize(e.type);
-  return WriteU32(link_, node_, e.index, e.sub, value, static_cast<uint8_t>(n ? n : 4));
+  return WriteU32(link_, node_, e.index, e.sub, value, static_cast<uint8_t>(n ? n : 4), options_);
 }
 
 SdoResult CanSession::Read(canopen::ObjectId id, uint32_t* value) {
   const canopen::ObjectEntry& e = canopen::Entry(id);
-  return ReadU32(link_, node_, e.index, e.sub, value);
+  return ReadU32(link_, node_, e.index, e.sub, value, options_);
 }
 
 SdoResult CanSession::ReadString(canopen::ObjectId id, std::string* value) {

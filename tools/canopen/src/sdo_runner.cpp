@@ -53,15 +53,20 @@ SdoResult WriteU32(const FrameLink& link,
                    uint16_t index,
                    uint8_t sub,
                    uint32_t value,
-                   uint8_t size_bytes) {
+                   uint8_t size_bytes,
+                   SdoClient::Options options) {
   std::vector<uint8_t> d;
   for (uint8_t i = 0; i < size_bytes; ++i) d.push_back(static_cast<uint8_t>(value >> (8 * i)));
-  return Download(link, node, index, sub, d);
+  return Download(link, node, index, sub, d, options);
 }
 
-SdoResult ReadU32(
-    const FrameLink& link, uint8_t node, uint16_t index, uint8_t sub, uint32_t* value) {
-  SdoResult r = Upload(link, node, index, sub);
+SdoResult ReadU32(const FrameLink& link,
+                  uint8_t node,
+                  uint16_t index,
+                  uint8_t sub,
+                  uint32_t* value,
+                  SdoClient::Options options) {
+  SdoResult r = Upload(link, node, index, sub, false, options);
   if (r.ok) {
     if (r.data.empty() || r.data.size() > 4) {
       r.ok = false;

@@ -28,6 +28,7 @@ class CanSession {
 
   uint8_t node() const { return node_; }
   const FrameLink& link() const { return link_; }
+  const SdoClient::Options& options() const { return options_; }
   can_io::CanTransport& transport() { return *transport_; }
 
   SdoResult Write(canopen::ObjectId id, uint32_t value);

@@ -44,9 +44,14 @@ SdoResult WriteU32(const FrameLink& link,
                    uint16_t index,
                    uint8_t sub,
                    uint32_t value,
-                   uint8_t size_bytes = 4);
+                   uint8_t size_bytes = 4,
+                   SdoClient::Options options = {});
 /// Reads an unsigned value of 1..4 bytes; on success `*value` is set.
-SdoResult ReadU32(
-    const FrameLink& link, uint8_t node, uint16_t index, uint8_t sub, uint32_t* value);
+SdoResult ReadU32(const FrameLink& link,
+                  uint8_t node,
+                  uint16_t index,
+                  uint8_t sub,
+                  uint32_t* value,
+                  SdoClient::Options options = {});
 
 }  // namespace volcomp::canopen_client
