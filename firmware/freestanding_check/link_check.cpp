@@ -1,5 +1,6 @@
 // Link check: uses the core's public API from an entry point with no C/C++ runtime linked.
-// Only the four memory primitives a freestanding compiler may call are provided here.
+// Only the four memory primitives a freestanding compiler may call are provided
+// (toolchain/runtime/mem_primitives.cpp, the same as in the Cortex-M4F images).
 #include <cstddef>
 #include <cstdint>
 
@@ -42,36 +43,6 @@ extern "C" {
 void __cxa_pure_virtual() {
   for (;;) {
   }
-}
-
-void* memcpy(void* d, const void* s, size_t n) {
-  auto* dp = static_cast<unsigned char*>(d);
-  const auto* sp = static_cast<const unsigned char*>(s);
-  while (n-- != 0) *dp++ = *sp++;
-  return d;
-}
-void* memmove(void* d, const void* s, size_t n) {
-  auto* dp = static_cast<unsigned char*>(d);
-  const auto* sp = static_cast<const unsigned char*>(s);
-  if (dp < sp) {
-    while (n-- != 0) *dp++ = *sp++;
-  } else {
-    while (n-- != 0) dp[n] = sp[n];
-  }
-  return d;
-}
-void* memset(void* d, int c, size_t n) {
-  auto* dp = static_cast<unsigned char*>(d);
-  while (n-- != 0) *dp++ = static_cast<unsigned char>(c);
-  return d;
-}
-int memcmp(const void* a, const void* b, size_t n) {
-  const auto* x = static_cast<const unsigned char*>(a);
-  const auto* y = static_cast<const unsigned char*>(b);
-  for (; n != 0; --n, ++x, ++y) {
-    if (*x != *y) return *x < *y ? -1 : 1;
-  }
-  return 0;
 }
 
 // Never executed: the point is that this links.

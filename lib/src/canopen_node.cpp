@@ -75,11 +75,7 @@ void Node::Poll(uint32_t now_ms) {
     reported_aborts_ = sdo_.aborts();
     const uint32_t code = sdo_.last_abort();
     if ((code >> 16) == 0x0503 || (code >> 16) == 0x0504) {
-      uint8_t m[5];
-      StoreLe32(m, code);
-      m[4] = 0;
-      RaiseError(kEmcySdoTransferFailed, kErrCommunication, m);
-      ClearErrors();
+      ReportEvent(kEmcySdoTransferFailed, kErrCommunication, code);
     }
   }
   if (heartbeat_ms_ != 0 && static_cast<uint32_t>(now_ms - last_heartbeat_ms_) >= heartbeat_ms_) {
@@ -127,6 +123,14 @@ void Node::ClearErrors() {
   e.dlc = 8;
   QueueUrgent(e);
   ++emcy_sent_;
+}
+
+void Node::ReportEvent(uint16_t code, uint8_t register_bits, uint32_t detail) {
+  uint8_t m[5];
+  StoreLe32(m, detail);
+  m[4] = 0;
+  RaiseError(code, register_bits, m);
+  ClearErrors();
 }
 
 bool Node::ReadCommunication(const ObjectEntry& e, uint32_t* value) const {

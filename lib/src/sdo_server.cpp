@@ -206,18 +206,22 @@ void SdoServer::InitiateDownload(const CanFrame& f) {
     }
     return Respond(0x60);
   }
-  size_known_ = size_indicated;
-  size_ = size_indicated ? LoadLe32(f.data + 4) : 0;
-  if (entry_->type == DataType::kDomain) {
-    const uint32_t c = values_->BeginDomainWrite(*entry_, size_);
-    if (c != 0) return Abort(c);
-    domain_ = true;
-  } else if (size_known_ && size_ > kSmallCapacity) {
-    return Abort(kAbortTooLong);
-  }
+  const uint32_t c = BeginTransfer(size_indicated, size_indicated ? LoadLe32(f.data + 4) : 0);
+  if (c != 0) return Abort(c);
   toggle_ = 0;
   state_ = State::kDownloadSegmented;
   Respond(0x60);
+}
+
+uint32_t SdoServer::BeginTransfer(bool size_known, uint32_t size) {
+  size_known_ = size_known;
+  size_ = size;
+  if (entry_->type == DataType::kDomain) {
+    const uint32_t c = values_->BeginDomainWrite(*entry_, size_);
+    domain_ = c == 0;
+    return c;
+  }
+  return size_known_ && size_ > kSmallCapacity ? uint32_t{kAbortTooLong} : 0u;
 }
 
 void SdoServer::DownloadSegment(const CanFrame& f) {
@@ -275,20 +279,14 @@ void SdoServer::InitiateBlockDownload(const CanFrame& f) {
   const uint8_t cmd = f.data[0];
   const uint32_t code = Lookup(LoadLe16(f.data + 1), f.data[3], true);
   if (code != 0) return Abort(code);
-  size_known_ = (cmd & 0x02) != 0;
-  size_ = size_known_ ? LoadLe32(f.data + 4) : 0;
+  const bool size_indicated = (cmd & 0x02) != 0;
   crc_on_ = (cmd & 0x04) != 0;
   crc_ = 0;
   offset_ = 0;
   small_len_ = 0;
   domain_ = false;
-  if (entry_->type == DataType::kDomain) {
-    const uint32_t c = values_->BeginDomainWrite(*entry_, size_);
-    if (c != 0) return Abort(c);
-    domain_ = true;
-  } else if (size_known_ && size_ > kSmallCapacity) {
-    return Abort(kAbortTooLong);
-  }
+  const uint32_t c = BeginTransfer(size_indicated, size_indicated ? LoadLe32(f.data + 4) : 0);
+  if (c != 0) return Abort(c);
   blksize_ = config_.block_size;
   last_seq_ = 0;
   have_held_ = false;

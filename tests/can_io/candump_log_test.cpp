@@ -6,20 +6,13 @@
 #include <deque>
 #include <sstream>
 
+#include "can_frames.hpp"
 #include "volcomp/can_io/logging_transport.hpp"
 
 namespace volcomp::can_io {
 namespace {
 
-CanFrame Frame(uint32_t id, bool ext, bool rtr, std::vector<uint8_t> data, int dlc = -1) {
-  CanFrame f;
-  f.id = id;
-  f.extended = ext;
-  f.rtr = rtr;
-  f.dlc = static_cast<uint8_t>(dlc >= 0 ? dlc : static_cast<int>(data.size()));
-  for (size_t i = 0; i < data.size(); ++i) f.data[i] = data[i];
-  return f;
-}
+using testing::Frame;
 
 std::string Line(const CanFrame& f, uint64_t us, Direction d = Direction::kNone) {
   CandumpRecord r;

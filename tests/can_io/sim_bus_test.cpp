@@ -7,6 +7,7 @@
 #include <atomic>
 #include <thread>
 
+#include "can_frames.hpp"
 #include "volcomp/can_io/slcan_server.hpp"
 #include "volcomp/can_io/transport.hpp"
 #include "volcomp/sim/bus_bridge.hpp"
@@ -17,13 +18,7 @@ namespace volcomp::sim {
 namespace {
 
 CanFrame Frame(uint32_t id, std::vector<uint8_t> data = {}, bool ext = false, bool rtr = false) {
-  CanFrame f;
-  f.id = id;
-  f.extended = ext;
-  f.rtr = rtr;
-  f.dlc = static_cast<uint8_t>(data.size());
-  for (size_t i = 0; i < data.size(); ++i) f.data[i] = data[i];
-  return f;
+  return testing::Frame(id, ext, rtr, std::move(data));
 }
 
 std::vector<CanFrame> Drain(Endpoint& ep) {

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "can_frames.hpp"
 #include "volcomp/slcan.hpp"
 
 namespace volcomp::slcan {
@@ -13,15 +14,7 @@ namespace {
 
 using namespace std::string_literals;
 
-CanFrame Frame(uint32_t id, bool ext, bool rtr, std::vector<uint8_t> data) {
-  CanFrame f;
-  f.id = id;
-  f.extended = ext;
-  f.rtr = rtr;
-  f.dlc = static_cast<uint8_t>(data.size());
-  for (size_t i = 0; i < data.size(); ++i) f.data[i] = data[i];
-  return f;
-}
+using testing::Frame;
 
 std::string EncodeToString(const Message& m) {
   char buf[kMaxEncodedLength];

@@ -14,6 +14,7 @@
 #include <functional>
 #include <thread>
 
+#include "can_frames.hpp"
 #include "volcomp/can_io/slcan_server.hpp"
 #include "volcomp/can_io/slcan_transport.hpp"
 #include "volcomp/can_io/transport.hpp"
@@ -25,15 +26,7 @@ using std::chrono::microseconds;
 using std::chrono::milliseconds;
 using Clock = std::chrono::steady_clock;
 
-CanFrame Frame(uint32_t id, bool ext, bool rtr, std::vector<uint8_t> data) {
-  CanFrame f;
-  f.id = id;
-  f.extended = ext;
-  f.rtr = rtr;
-  f.dlc = static_cast<uint8_t>(data.size());
-  for (size_t i = 0; i < data.size(); ++i) f.data[i] = data[i];
-  return f;
-}
+using testing::Frame;
 
 // The i-th frame of a test sequence: standard, extended and remote frames of every length.
 CanFrame TestFrame(uint32_t i) {

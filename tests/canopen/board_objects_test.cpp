@@ -4,14 +4,18 @@
 #include <gtest/gtest.h>
 
 #include <functional>
+#include <optional>
 
 #include "test_tables.hpp"
 #include "volcomp/canopen/object_dictionary.hpp"
 #include "volcomp/canopen/sdo_abort.hpp"
+#include "volcomp/canopen_client/node_objects.hpp"
 #include "volcomp/canopen_client/sdo_client.hpp"
+#include "volcomp/canopen_client/table_staging.hpp"
 #include "volcomp/firmware/board_app.hpp"
 #include "volcomp/hal/mock/mock_devices.hpp"
 #include "volcomp/hal/mock/mock_step_io.hpp"
+#include "volcomp/tools/hex.hpp"
 
 namespace volcomp {
 namespace {
@@ -85,11 +89,8 @@ class Bench : public ::testing::Test {
   }
   SdoResult Write(ObjectId id, uint32_t value) {
     const auto& e = canopen::Entry(id);
-    std::vector<uint8_t> d;
-    for (uint32_t i = 0; i < canopen::FixedSize(e.type); ++i)
-      d.push_back(uint8_t(value >> (8 * i)));
     SdoClient c(kNode);
-    c.StartDownload(e.index, e.sub, d);
+    c.StartDownload(e.index, e.sub, canopen_client::NumericPayload(id, value));
     return Run(c);
   }
   uint32_t Read(ObjectId id) {
@@ -113,6 +114,31 @@ class Bench : public ::testing::Test {
     for (uint8_t a = 0; a < 3; ++a) io_.SetInput(hal::HomeLine(a), false);
     Step(100);
   }
+  // The PC tool's view of the board: a blocking frame link over the mock bus (requests to 0x2110
+  // are counted).
+  canopen_client::FrameLink Link() {
+    canopen_client::FrameLink l;
+    l.send = [this](const CanFrame& f) {
+      if (LoadLe16(f.data + 1) == 0x2110) ++unlock_requests_;
+      can_.Inject(f);
+    };
+    l.receive = [this](uint64_t timeout_us) -> std::optional<CanFrame> {
+      const uint64_t end = clock_.now() + timeout_us * 1000;
+      while (replies_.empty() && clock_.now() < end) {
+        Step(50);
+        for (const CanFrame& r : can_.TakeSent()) {
+          sent_.push_back(r);
+          replies_.push_back(r);
+        }
+      }
+      if (replies_.empty()) return std::nullopt;
+      const CanFrame f = replies_.front();
+      replies_.erase(replies_.begin());
+      return f;
+    };
+    l.now_us = [this] { return clock_.now() / 1000; };
+    return l;
+  }
   int CountEmcy(uint16_t code) const {
     int n = 0;
     for (const CanFrame& f : sent_) {
@@ -129,6 +155,8 @@ class Bench : public ::testing::Test {
   hal::mock::MockStepIo step_io_;
   firmware::BoardApp<hal::mock::MockStepIo> app_;
   std::vector<CanFrame> sent_;
+  std::vector<CanFrame> replies_;  // received through Link(), not yet taken
+  int unlock_requests_ = 0;
   uint64_t tick_count_ = 0;
 };
 
@@ -143,7 +171,7 @@ TEST_F(Bench, UploadIsRefusedWhileWriteProtectedAndAllowedWhenUnlocked) {
   EXPECT_EQ(Read(ObjectId::kWriteAccess), 0u);
   // Wrong signature: refused; right one: writable for 60 s.
   EXPECT_EQ(Write(ObjectId::kUnlock, 0x12345678).abort_code, canopen::kAbortInvalidValue);
-  ASSERT_TRUE(Write(ObjectId::kUnlock, firmware::kUnlockSignature).ok);
+  ASSERT_TRUE(Write(ObjectId::kUnlock, canopen::kUnlockSignature).ok);
   EXPECT_EQ(Read(ObjectId::kWriteAccess), 1u);
   r = Upload(img);
   ASSERT_TRUE(r.ok) << r.message;
@@ -233,13 +261,13 @@ TEST_F(Bench, SettingsAreStoredAndAppliedAfterReset) {
   EXPECT_TRUE(Read(ObjectId::kDeviceState) & firmware::kStateSettingsPending);
   EXPECT_EQ(app_.settings().board.axis[1].max_correction_steps, 1000);
   EXPECT_EQ(Write(ObjectId::kStoreAll, 0x12345678).abort_code, canopen::kAbortCannotStore);
-  ASSERT_TRUE(Write(ObjectId::kStoreAll, firmware::kSaveSignature).ok);
+  ASSERT_TRUE(Write(ObjectId::kStoreAll, canopen::kSaveSignature).ok);
   can_.Inject(CanFrame{0x000, false, false, 2, {0x81, 0}});
   Step(100);
   EXPECT_EQ(app_.settings().board.axis[1].max_correction_steps, 250);
   EXPECT_FALSE(Read(ObjectId::kDeviceState) & firmware::kStateSettingsPending);
   // Restore defaults, reset: back to the defaults.
-  ASSERT_TRUE(Write(ObjectId::kRestoreAll, firmware::kLoadSignature).ok);
+  ASSERT_TRUE(Write(ObjectId::kRestoreAll, canopen::kLoadSignature).ok);
   can_.Inject(CanFrame{0x000, false, false, 2, {0x81, 0}});
   Step(100);
   EXPECT_EQ(app_.settings().board.axis[1].max_correction_steps, 1000);
@@ -263,6 +291,59 @@ TEST_F(Bench, DiagnosticsAndIdentity) {
   int hb = 0;
   for (const CanFrame& f : can_.TakeSent()) hb += f.id == 0x700u + kNode && f.data[0] == 0x7F;
   EXPECT_EQ(hb, 1);
+}
+
+// The PC tool's staging steps (tools/canopen table_staging.hpp, used by `volcomp upload` and the
+// simulator's demo) against the real board objects.
+TEST_F(Bench, StagingStepsUnlockStageAndVerify) {
+  Boot();
+  const testing::AlignedBytes img = UniformImage(5, 42);
+  const uint32_t crc = LoadLe32(img.data() + img.size() - 4);
+  const canopen_client::FrameLink link = Link();
+  canopen_client::NodeObjects node(link, kNode);
+  SdoResult r = canopen_client::PrepareStaging(node);
+  ASSERT_TRUE(r.ok) << r.message;
+  EXPECT_EQ(unlock_requests_, 1);  // write-protected: the steps unlocked it
+  EXPECT_EQ(Read(ObjectId::kWriteAccess), 1u);
+  r = node.Download(ObjectId::kTableData,
+                    std::vector<uint8_t>(img.data(), img.data() + img.size()));
+  ASSERT_TRUE(r.ok) << r.message;
+  uint32_t staged = 0;
+  r = canopen_client::VerifyStaged(node, crc, &staged);
+  ASSERT_TRUE(r.ok) << r.message;
+  EXPECT_EQ(staged, crc);
+  EXPECT_EQ(Read(ObjectId::kStagedTableId), 42u);
+  // A CRC that is not the image's: a failure of its own (no abort code), naming both values.
+  r = canopen_client::VerifyStaged(node, crc ^ 1u, &staged);
+  EXPECT_FALSE(r.ok);
+  EXPECT_EQ(r.abort_code, 0u);
+  EXPECT_NE(
+      r.message.find("staged CRC-32 " + tools::Hex32(crc) + ", expected " + tools::Hex32(crc ^ 1u)),
+      std::string::npos)
+      << r.message;
+  // Activation before referencing: the step, the board's reason and what to do.
+  r = canopen_client::Explain(node.Write(ObjectId::kTableControl, 1), "activating");
+  EXPECT_EQ(r.abort_code, canopen::kAbortDeviceState);
+  EXPECT_EQ(r.message.rfind("activating: ", 0), 0u) << r.message;
+  EXPECT_NE(r.message.find("; the axes must be referenced (homed) and at rest"), std::string::npos)
+      << r.message;
+  // Already writable (hardware input): no unlock request.
+  io_.SetInput(InputLine::kWriteEnable, true);
+  Step(100);
+  ASSERT_TRUE(canopen_client::EnsureWritable(node).ok);
+  EXPECT_EQ(unlock_requests_, 1);
+}
+
+TEST_F(Bench, StagingStepsNameTheStepThatFailed) {
+  Boot();
+  const canopen_client::FrameLink link = Link();
+  canopen_client::NodeObjects node(link, kNode);
+  ASSERT_TRUE(canopen_client::PrepareStaging(node).ok);
+  // Nothing was downloaded: the board's verification refuses.
+  const SdoResult r = canopen_client::VerifyStaged(node, 0x12345678u);
+  EXPECT_FALSE(r.ok);
+  EXPECT_NE(r.abort_code, 0u);
+  EXPECT_EQ(r.message.rfind("verifying on the board (0x2101 = 4): ", 0), 0u) << r.message;
 }
 
 }  // namespace

@@ -18,6 +18,7 @@
 #include "test_tables.hpp"
 #include "volcomp/canopen/object_dictionary.hpp"
 #include "volcomp/canopen/sdo_abort.hpp"
+#include "volcomp/canopen_client/node_objects.hpp"
 #include "volcomp/canopen_client/sdo_client.hpp"
 #include "volcomp/hal/linux/file_flash.hpp"
 #include "volcomp/hal/mock/mock_devices.hpp"
@@ -183,11 +184,8 @@ class Machine {
   }
   SdoResult Write(ObjectId id, uint32_t value) {
     const auto& e = canopen::Entry(id);
-    std::vector<uint8_t> d;
-    for (uint32_t i = 0; i < canopen::FixedSize(e.type); ++i)
-      d.push_back(uint8_t(value >> (8 * i)));
     SdoClient c(kNode);
-    c.StartDownload(e.index, e.sub, d);
+    c.StartDownload(e.index, e.sub, canopen_client::NumericPayload(id, value));
     return Run(c);
   }
   SdoResult Upload(const testing::AlignedBytes& img) {

@@ -1,4 +1,4 @@
-// Division-free index/fraction computation against exact integer arithmetic.
+// Division-free quotients and lattice locations against exact integer arithmetic.
 #include "volcomp/cell_locator.hpp"
 
 #include <gtest/gtest.h>
@@ -41,25 +41,32 @@ TEST(InvariantDivider, ExactForRandomAndEdgeOperands) {
   }
 }
 
-// Reference: clamp, floor division, and the fraction as an exact rational.
+// LatticeLocator against exact integer arithmetic: with u = clamp(pos) - origin and the exact cell
+// coordinate E = u * 2^32 / spacing, the result X = cell * 2^32 + frac is E for u = 0 and otherwise
+// strictly below E by less than 2 units (cell_locator.hpp); off the nodes the cell is exact.
 void CheckLocate(const table::Dimension& dim, int32_t pos) {
-  CellLocator loc;
+  LatticeLocator loc;
   loc.Init(dim);
   const int64_t lo = dim.origin_steps;
   const int64_t hi = lo + int64_t{dim.nodes - 1} * dim.spacing_steps;
   const int64_t p = pos < lo ? lo : (pos > hi ? hi : pos);
-  int64_t cell = (p - lo) / dim.spacing_steps;
-  if (cell > int64_t{dim.nodes} - 2) cell = dim.nodes - 2;
-  const int64_t r = p - lo - cell * dim.spacing_steps;
-  const long double exact_t = static_cast<long double>(r) * (1u << 30) / dim.spacing_steps;
-  const CellPosition c = loc.Locate(pos);
-  ASSERT_EQ(c.cell, static_cast<uint32_t>(cell)) << pos;
-  ASSERT_LE(c.t_q30, 1u << 30);
-  ASSERT_LT(std::fabs(static_cast<long double>(c.t_q30) - exact_t), 2.0L)
-      << "pos " << pos << " spacing " << dim.spacing_steps;
+  const uint64_t u = static_cast<uint64_t>(p - lo);
+  const uint64_t q = (u << 32) / dim.spacing_steps, r = (u << 32) % dim.spacing_steps;
+  const LatticeCell c = loc.Locate(pos);
+  const uint64_t x = (uint64_t{c.cell} << 32) | c.frac_q32;
+  ASSERT_LE(c.cell, dim.nodes - 2) << pos;
+  if (u == 0) {
+    ASSERT_EQ(x, 0u) << pos;
+    return;
+  }
+  ASSERT_TRUE(x < q || (x == q && r != 0)) << "not below the exact value: pos " << pos;
+  ASSERT_LE(q - x, 1u) << "pos " << pos << " spacing " << dim.spacing_steps;
+  if (u % dim.spacing_steps != 0) {
+    ASSERT_EQ(c.cell, u / dim.spacing_steps) << "pos " << pos << " spacing " << dim.spacing_steps;
+  }
 }
 
-TEST(CellLocator, MatchesExactArithmetic) {
+TEST(LatticeLocator, MatchesExactArithmetic) {
   std::mt19937_64 rng(2);
   for (int i = 0; i < 2000; ++i) {
     table::Dimension dim;
@@ -85,17 +92,20 @@ TEST(CellLocator, MatchesExactArithmetic) {
   }
 }
 
-TEST(CellLocator, NodeGivesZeroFractionAndLastNodeGivesOne) {
-  CellLocator loc;
+TEST(LatticeLocator, NodesEndThePreviousCellAndTheEndsClamp) {
+  LatticeLocator loc;
   loc.Init({5, -30, 7});
-  EXPECT_EQ(loc.Locate(-30).cell, 0u);
-  EXPECT_EQ(loc.Locate(-30).t_q30, 0u);
-  EXPECT_EQ(loc.Locate(-23).cell, 1u);
-  EXPECT_EQ(loc.Locate(-23).t_q30, 0u);
-  EXPECT_EQ(loc.Locate(-2).cell, 3u);  // last node: last cell at t = 1
-  EXPECT_GE(loc.Locate(-2).t_q30, (1u << 30) - 1);
-  EXPECT_EQ(loc.Locate(1000).cell, 3u);
-  EXPECT_EQ(loc.Locate(-1000).t_q30, 0u);
+  EXPECT_EQ(loc.Locate(-30).cell, 0u);  // the first node: cell 0 at fraction 0
+  EXPECT_EQ(loc.Locate(-30).frac_q32, 0u);
+  EXPECT_EQ(loc.Locate(-1000).cell, 0u);  // below: held at the first node
+  EXPECT_EQ(loc.Locate(-1000).frac_q32, 0u);
+  EXPECT_EQ(loc.Locate(-23).cell, 0u);  // node 1: the end of cell 0
+  EXPECT_GE(loc.Locate(-23).frac_q32, 0xFFFFFFFEu);
+  EXPECT_EQ(loc.Locate(-22).cell, 1u);  // just past node 1
+  EXPECT_EQ(loc.Locate(-2).cell, 3u);   // the last node: the end of the last cell
+  EXPECT_GE(loc.Locate(-2).frac_q32, 0xFFFFFFFEu);
+  EXPECT_EQ(loc.Locate(1000).cell, 3u);  // above: held at the last node
+  EXPECT_EQ(loc.Locate(1000).frac_q32, loc.Locate(-2).frac_q32);
 }
 
 }  // namespace

@@ -16,7 +16,7 @@
 #include "volcomp/byte_order.hpp"
 #include "volcomp/canopen/object_dictionary.hpp"
 #include "volcomp/canopen_client/sdo_client.hpp"
-#include "volcomp/sim/simulated_board.hpp"
+#include "volcomp/sim/sim_sdo_host.hpp"
 #include "volcomp/table_image.hpp"
 #include "xyz_image.hpp"
 
@@ -61,52 +61,15 @@ class Rig {
     o.initial_table_flash = std::move(flash);
     board_ = std::make_unique<sim::SimulatedBoard>(bus_, o);
     pc_ = &bus_.Attach("pc");
+    host_ = std::make_unique<sim::SimSdoHost>(bus_, *board_, *pc_, 0x10);
     EXPECT_TRUE(board_->Start().ok());
-    Idle(2000000);
+    host_->Idle(2000000);
   }
   sim::SimBus& bus() { return bus_; }
   sim::SimulatedBoard& board() { return *board_; }
 
-  // Runs `c` until done or `limit_ns`; `stall_at` (bytes acknowledged) makes the PC go silent.
-  void Run(SdoClient& c, uint64_t limit_ns, const std::function<bool(uint64_t)>& pc_alive = {}) {
-    const uint64_t end = bus_.now() + limit_ns;
-    while (!c.done() && bus_.now() < end) {
-      const bool alive = !pc_alive || pc_alive(bus_.now());
-      CanFrame f;
-      if (alive) {
-        while (c.PopTx(&f)) pc_->Send(f);
-      }
-      uint64_t t = std::min(board_->NextEventTime(), end);
-      if (auto b = bus_.NextEventTime()) t = std::min(t, *b);
-      bus_.RunUntil(t);
-      board_->AdvanceTo(t);
-      // A stalled PC leaves received frames queued (as its OS would) and handles them later.
-      while (alive && pc_->Receive(&f)) c.OnFrame(f, t / 1000);
-      if (alive) c.Poll(t / 1000);
-    }
-    CanFrame f;
-    while (c.PopTx(&f)) pc_->Send(f);
-  }
-  void Idle(uint64_t ns) {
-    const uint64_t end = bus_.now() + ns;
-    while (bus_.now() < end) {
-      uint64_t t = std::min(board_->NextEventTime(), end);
-      if (auto b = bus_.NextEventTime()) t = std::min(t, *b);
-      bus_.RunUntil(t);
-      board_->AdvanceTo(t);
-      CanFrame f;
-      while (pc_->Receive(&f)) {
-      }
-    }
-  }
   canopen_client::SdoResult Write(canopen::ObjectId id, uint32_t v) {
-    const auto& e = canopen::Entry(id);
-    std::vector<uint8_t> d;
-    for (uint32_t i = 0; i < canopen::FixedSize(e.type); ++i) d.push_back(uint8_t(v >> (8 * i)));
-    SdoClient c(0x10);
-    c.StartDownload(e.index, e.sub, d);
-    Run(c, 3000000000ull);
-    return c.result();
+    return host_->Write(id, v, 3000000000ull);
   }
   // The PC tool's sequence: clear, block download, verify, reference, activate.
   canopen_client::SdoResult Upload(const std::vector<uint8_t>& img,
@@ -120,7 +83,7 @@ class Rig {
     if (client_abort) {
       // Abort after a random share of the transfer.
       const uint64_t stop = bus_.now() + 1000000ull + (*rng)() % 20000000ull;
-      Run(c, stop - bus_.now(), pc_alive);
+      host_->Run(c, stop - bus_.now(), pc_alive);
       if (!c.done()) {
         CanFrame f;
         f.id = 0x610;
@@ -129,14 +92,14 @@ class Rig {
         StoreLe16(f.data + 1, 0x2100);
         StoreLe32(f.data + 4, 0x08000000);
         pc_->Send(f);
-        Idle(5000000);
+        host_->Idle(5000000);
         canopen_client::SdoResult a;
         a.message = "upload aborted by the PC (sent abort 0x08000000: general error)";
         a.abort_code = 0x08000000;
         return a;
       }
     } else {
-      Run(c, 30000000000ull, pc_alive);
+      host_->Run(c, 30000000000ull, pc_alive);
     }
     if (!c.done()) {  // the PC side went silent: there is nobody to report; the board recovers
       canopen_client::SdoResult gone;
@@ -148,7 +111,7 @@ class Rig {
     if (!r.ok) return r;
     r = Write(canopen::ObjectId::kReferenceAxes, 7);
     if (!r.ok) return r;
-    Idle(150000000);
+    host_->Idle(150000000);
     return Write(canopen::ObjectId::kTableControl, 1);
   }
 
@@ -156,6 +119,7 @@ class Rig {
   sim::SimBus bus_;
   std::unique_ptr<sim::SimulatedBoard> board_;
   sim::Endpoint* pc_ = nullptr;
+  std::unique_ptr<sim::SimSdoHost> host_;
 };
 
 uint32_t EnvOr(const char* name, uint32_t fallback) {

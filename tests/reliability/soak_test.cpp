@@ -49,15 +49,7 @@ class Soak {
 
   // Advances to `t` in event order, checking the exactness invariant after every tick.
   void AdvanceTo(uint64_t t) {
-    while (true) {
-      uint64_t next = board_->NextEventTime();
-      if (auto b = bus_.NextEventTime()) next = std::min(next, *b);
-      if (next > t) break;
-      bus_.RunUntil(next);
-      board_->AdvanceTo(next);
-    }
-    bus_.RunUntil(t);
-    board_->AdvanceTo(t);
+    sim::AdvanceInEventOrder(bus_, *board_, t);
     const ControlTick& e = board_->app().engine();
     for (uint8_t a = 0; a < 3; ++a) {
       ASSERT_EQ(e.output_position(a) + e.backlog(a), input_[a] + e.correction_steps(a));

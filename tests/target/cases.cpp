@@ -141,6 +141,20 @@ uint32_t BuildTickImage(uint8_t* out, uint32_t capacity) {
   return w.ok() ? *w : 0;
 }
 
+bool StartTickEngine(uint8_t* image, uint32_t capacity, ControlTick& engine, PreparedTable& table) {
+  const uint32_t size = BuildTickImage(image, capacity);
+  const Result<table::TableView> view = table::ParseImage(image, size);
+  const BoardConfig cfg = TickBoardConfig();
+  if (size == 0 || !view.ok() || !engine.Configure(cfg).ok() || !table.Prepare(*view, cfg).ok()) {
+    return false;
+  }
+  const int32_t zero[3] = {0, 0, 0};
+  engine.compensator().SetTable(table, zero);
+  engine.compensator().SetEnabled(true);
+  for (uint8_t a = 0; a < 3; ++a) engine.Reference(a);
+  return true;
+}
+
 uint32_t TickCounterDelta(uint32_t i, uint32_t axis) {
   // Phases of 40 ticks; axes are offset so they do different things at once.
   const uint32_t phase = ((i / 40) + axis) % 10;

@@ -9,6 +9,7 @@
 #include <cstdint>
 
 #include "volcomp/board_config.hpp"
+#include "volcomp/control_tick.hpp"
 #include "volcomp/table_format.hpp"
 #include "volcomp/table_writer.hpp"
 
@@ -86,6 +87,11 @@ BoardConfig TickBoardConfig();
 /// reverse table and backlash, Y forward only, Z with rotary-style wrap). Values reach beyond the
 /// board's maximum correction so the clamp engages.
 uint32_t BuildTickImage(uint8_t* out, uint32_t capacity);
+
+/// The control-tick case's engine: builds the tick image into `image` (4-byte aligned, `capacity`
+/// bytes, kept: the table refers to it), configures `engine` for TickBoardConfig(), prepares
+/// `table`, sets it active and enabled, and references every axis. False if any step fails.
+bool StartTickEngine(uint8_t* image, uint32_t capacity, ControlTick& engine, PreparedTable& table);
 
 /// Counter increment of tick `i` of the control-tick input pattern (per axis): standstill, steady
 /// 1 MHz input, reversals, single steps and a jump across several cells.

@@ -186,19 +186,12 @@ void StepGeneratorSection(GoldenSink& sink) {
 }
 
 void ControlTickSection(GoldenSink& sink) {
-  const uint32_t size = BuildTickImage(g_image, sizeof g_image);
-  const Result<table::TableView> view = table::ParseImage(g_image, size);
   static ControlTick engine;
   static PreparedTable table;
-  const BoardConfig cfg = TickBoardConfig();
-  if (size == 0 || !view.ok() || !engine.Configure(cfg).ok() || !table.Prepare(*view, cfg).ok()) {
+  if (!StartTickEngine(g_image, sizeof g_image, engine, table)) {
     sink.Put(0xDEADu);
     return;
   }
-  const int32_t zero[3] = {0, 0, 0};
-  engine.compensator().SetTable(table, zero);
-  engine.compensator().SetEnabled(true);
-  for (uint8_t a = 0; a < 3; ++a) engine.Reference(a);
   uint32_t counters[3] = {0, 0, 0};
   PulsePlan plans[3];
   for (uint32_t i = 0; i < kTickPatternLength; ++i) {

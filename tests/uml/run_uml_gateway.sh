@@ -12,11 +12,8 @@
 # usage: run_uml_gateway.sh VOLCOMP_FW_LINUX VOLCOMP SOURCE_DIR ARTIFACT_DIR
 set -euo pipefail
 fw=$(realpath "$1") volcomp=$(realpath "$2") src=$(realpath "$3") artifacts=$4
-uml=$(command -v linux.uml || true)
-if [[ -z $uml ]]; then
-  echo "user-mode-linux is not installed (scripts/setup-deps.sh can)" >&2
-  exit 1
-fi
+source "$(dirname "$0")/uml_lib.sh"
+uml_require
 for tool in candump; do
   command -v $tool >/dev/null || { echo "$tool is not installed (can-utils)" >&2; exit 1; }
 done
@@ -24,7 +21,6 @@ if ! /usr/bin/python3 -c 'import can' 2>/dev/null; then
   echo "python3-can is not installed (scripts/setup-deps.sh can)" >&2
   exit 1
 fi
-mods=$(ls -d /usr/lib/uml/modules/*/kernel | head -n1)
 mkdir -p "$artifacts"
 work=$(mktemp -d /tmp/volcomp-uml-gw.XXXXXX)
 trap 'rm -rf "$work"' EXIT
@@ -84,16 +80,9 @@ CONF
 printf 'enable=1\n' >"$work/gpio"
 "$fw" --config "$work/board.conf" --check-config >/dev/null
 
-cat >"$work/init.sh" <<INIT
-#!/bin/sh
-export PATH=/usr/sbin:/usr/bin:/sbin:/bin
-mount -t proc proc /proc; mount -t sysfs sys /sys
-for m in net/can/can.ko net/can/can-raw.ko drivers/net/can/dev/can-dev.ko drivers/net/can/vcan.ko; do
-  insmod $mods/\$m || echo "insmod \$m failed"
-done
-for i in vcan0 vcan1; do
-  ip link add dev \$i type vcan && ip link set \$i txqueuelen 1000 && ip link set up \$i
-done
+{
+uml_init_prologue vcan0 vcan1
+cat <<INIT
 rc=1
 (
   set -e
@@ -112,14 +101,10 @@ rc=1
   sleep 0.1
   kill \$dump
 ) > $work/session.log 2>&1 && rc=0
-echo \$rc > $work/rc
-/sbin/poweroff -f
 INIT
-chmod +x "$work/init.sh"
-start=$(date +%s%N)
-timeout 90 "$uml" mem=384M root=/dev/root rootfstype=hostfs rootflags=/ rw init="$work/init.sh" \
-  con=null con0=null,fd:2 </dev/null >"$work/uml.log" 2>&1 || true
-end=$(date +%s%N)
+uml_init_epilogue "$work"
+} >"$work/init.sh"
+uml_boot 90 "$work"
 cp -f "$work/candump.log" "$artifacts/uml-gateway-candump.log" 2>/dev/null || true
 cp -f "$work/stats.json" "$artifacts/uml-gateway-stats.json" 2>/dev/null || true
 if grep -qi drop "$work/candump.err" 2>/dev/null; then
@@ -128,12 +113,9 @@ fi
 cat "$work/session.log" 2>/dev/null || true
 echo "--- firmware log"
 cat "$work/fw.log" 2>/dev/null || true
-echo "user-mode-linux run: $(( (end - start) / 1000000 )) ms; candump log:" \
+echo "user-mode-linux run: $uml_ms ms; candump log:" \
   "$artifacts/uml-gateway-candump.log ($(wc -l < "$artifacts/uml-gateway-candump.log" 2>/dev/null || echo 0) frames)"
-if [[ "$(cat "$work/rc" 2>/dev/null)" != 0 ]]; then
-  echo "--- uml console" >&2; tail -30 "$work/uml.log" >&2
-  exit 1
-fi
+uml_session_ok "$work" || exit 1
 grep -q "CSP gateway session: OK" "$work/session.log"
 grep -q "firmware exit code 0" "$work/session.log"
 grep -q "stopped by signal" "$work/fw.log"

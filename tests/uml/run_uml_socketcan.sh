@@ -6,26 +6,17 @@
 # usage: run_uml_socketcan.sh VOLCOMP_SIM VOLCOMP SOURCE_DIR ARTIFACT_DIR
 set -euo pipefail
 sim=$1 volcomp=$2 src=$3 artifacts=$4
-uml=$(command -v linux.uml || true)
-if [[ -z $uml ]]; then
-  echo "user-mode-linux is not installed (scripts/setup-deps.sh can)" >&2
-  exit 1
-fi
-mods=$(ls -d /usr/lib/uml/modules/*/kernel | head -n1)
+source "$(dirname "$0")/uml_lib.sh"
+uml_require
 mkdir -p "$artifacts"
 work=$(mktemp -d /tmp/volcomp-uml.XXXXXX)
 trap 'rm -rf "$work"' EXIT
 "$volcomp" build grid --csv "$src/samples/grid_example.csv" -o "$work/table.vct" \
   --resolution-nm X=1000,Y=1000,Z=1000 --table-id 9 >/dev/null 2>&1
 
-cat >"$work/init.sh" <<INIT
-#!/bin/sh
-export PATH=/usr/sbin:/usr/bin:/sbin:/bin
-mount -t proc proc /proc; mount -t sysfs sys /sys
-for m in net/can/can.ko net/can/can-raw.ko drivers/net/can/dev/can-dev.ko drivers/net/can/vcan.ko; do
-  insmod $mods/\$m || echo "insmod \$m failed"
-done
-ip link add dev vcan0 type vcan && ip link set vcan0 txqueuelen 1000 && ip link set up vcan0
+{
+uml_init_prologue vcan0
+cat <<INIT
 rc=1
 (
   set -e
@@ -42,19 +33,14 @@ rc=1
   $volcomp status --can socketcan:vcan0
   kill \$node; kill \$dump
 ) > $work/session.log 2>&1 && rc=0
-echo \$rc > $work/rc
-/sbin/poweroff -f
 INIT
-chmod +x "$work/init.sh"
-start=$(date +%s%N)
-timeout 60 "$uml" mem=384M root=/dev/root rootfstype=hostfs rootflags=/ rw init="$work/init.sh" \
-  con=null con0=null,fd:2 </dev/null >"$work/uml.log" 2>&1 || true
-end=$(date +%s%N)
+uml_init_epilogue "$work"
+} >"$work/init.sh"
+uml_boot 60 "$work"
 cp -f "$work/candump.log" "$artifacts/uml-candump.log" 2>/dev/null || true
 cat "$work/session.log" 2>/dev/null || true
-echo "user-mode-linux run: $(( (end - start) / 1000000 )) ms; candump log: $artifacts/uml-candump.log ($(wc -l < "$artifacts/uml-candump.log" 2>/dev/null || echo 0) frames)"
-if [[ "$(cat "$work/rc" 2>/dev/null)" != 0 ]]; then
-  echo "--- uml console" >&2; tail -30 "$work/uml.log" >&2
+echo "user-mode-linux run: $uml_ms ms; candump log: $artifacts/uml-candump.log ($(wc -l < "$artifacts/uml-candump.log" 2>/dev/null || echo 0) frames)"
+if ! uml_session_ok "$work"; then
   echo "--- node log" >&2; cat "$work/node.log" >&2 2>/dev/null || true
   exit 1
 fi

@@ -1,6 +1,6 @@
-// Bare-metal C/C++ runtime for the Cortex-M4F images (STM32G474 firmware, QEMU test images): the
-// memory primitives a freestanding compiler may call, .data/.bss initialisation, static
-// constructors and the C++ ABI hooks. No libc, no libstdc++: images link with -nostdlib and libgcc.
+// Bare-metal C/C++ runtime for the Cortex-M4F images (STM32G474 firmware, QEMU test images):
+// .data/.bss initialisation, static constructors and the C++ ABI hooks (the memory primitives are
+// in mem_primitives.cpp). No libc, no libstdc++: images link with -nostdlib and libgcc.
 #include "cm4_runtime.hpp"
 
 #include <cstddef>
@@ -22,45 +22,6 @@ extern uint32_t __ccm_bss_end[];
 using InitFn = void (*)();
 extern InitFn __init_array_start[];
 extern InitFn __init_array_end[];
-
-// The compiler may emit calls to these four even in freestanding code (struct copies, zeroing).
-void* memcpy(void* d, const void* s, size_t n) {
-  auto* dp = static_cast<unsigned char*>(d);
-  const auto* sp = static_cast<const unsigned char*>(s);
-  if (((reinterpret_cast<uintptr_t>(dp) | reinterpret_cast<uintptr_t>(sp)) & 3u) == 0) {
-    for (; n >= 4; n -= 4, dp += 4, sp += 4) {
-      *reinterpret_cast<uint32_t*>(dp) = *reinterpret_cast<const uint32_t*>(sp);
-    }
-  }
-  while (n-- != 0) *dp++ = *sp++;
-  return d;
-}
-
-void* memmove(void* d, const void* s, size_t n) {
-  auto* dp = static_cast<unsigned char*>(d);
-  const auto* sp = static_cast<const unsigned char*>(s);
-  if (dp < sp) {
-    while (n-- != 0) *dp++ = *sp++;
-  } else {
-    while (n-- != 0) dp[n] = sp[n];
-  }
-  return d;
-}
-
-void* memset(void* d, int c, size_t n) {
-  auto* dp = static_cast<unsigned char*>(d);
-  while (n-- != 0) *dp++ = static_cast<unsigned char>(c);
-  return d;
-}
-
-int memcmp(const void* a, const void* b, size_t n) {
-  const auto* x = static_cast<const unsigned char*>(a);
-  const auto* y = static_cast<const unsigned char*>(b);
-  for (; n != 0; --n, ++x, ++y) {
-    if (*x != *y) return *x < *y ? -1 : 1;
-  }
-  return 0;
-}
 
 // A pure virtual call is a bug: stop where a debugger sees it.
 void __cxa_pure_virtual() { volcomp_runtime_panic(); }

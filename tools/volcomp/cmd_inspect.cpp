@@ -6,6 +6,7 @@
 
 #include "commands.hpp"
 #include "volcomp/image/image_reader.hpp"
+#include "volcomp/tools/hex.hpp"
 #include "volcomp/tools/json.hpp"
 
 namespace volcomp::tools {
@@ -36,12 +37,6 @@ struct Range {
 std::pair<const char*, double> DisplayUnit(const table::AxisInfo& a) {
   if (a.kind == table::AxisKind::kRotary) return {"arcsec", a.resolution_e9 * 1e-9 * 3600.0};
   return {"um", a.resolution_e9 * 1e-9 * 1000.0};
-}
-
-std::string Hex32(uint32_t v) {
-  char buf[16];
-  std::snprintf(buf, sizeof buf, "0x%08X", v);
-  return buf;
 }
 
 }  // namespace

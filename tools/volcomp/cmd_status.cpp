@@ -8,6 +8,7 @@
 #include "volcomp/byte_order.hpp"
 #include "volcomp/canopen/sdo_abort.hpp"
 #include "volcomp/status.hpp"
+#include "volcomp/tools/hex.hpp"
 #include "volcomp/tools/json.hpp"
 
 namespace volcomp::tools {
@@ -79,12 +80,6 @@ std::string StateText(uint32_t state) {
     if (state & (1u << b)) s += std::string(s.empty() ? "" : ",") + kStateBits[b];
   }
   return s.empty() ? "-" : s;
-}
-
-std::string Hex32(uint32_t v) {
-  char b[16];
-  std::snprintf(b, sizeof b, "0x%08X", v);
-  return b;
 }
 
 std::string Emcy(const CanFrame& f) {

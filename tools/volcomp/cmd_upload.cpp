@@ -1,9 +1,10 @@
 // `volcomp upload IMAGE` and `volcomp verify IMAGE`: table transfer to a board over CAN.
 //
-// Upload: validate the image locally, skip if the board already has it active, unlock, clear the
-// staging bank, block-download the image into 0x2100, verify on the board (0x2101 = 4), check the
-// staged CRC-32, and optionally activate (0x2101 = 1). A failed or cut transfer is retried from
-// the start (--retries), which is always safe: the active table is never touched by staging.
+// Upload: validate the image locally, skip if the board already has it active, then the staging
+// protocol of canopen_client/table_staging.hpp (unlock, clear the staging bank, block-download into
+// 0x2100, verify on the board, check the staged CRC-32), and optionally activate (0x2101 = 1).
+// A failed or cut transfer is retried from the start (--retries), which is always safe: the active
+// table is never touched by staging.
 #include <unistd.h>
 
 #include <chrono>
@@ -13,9 +14,10 @@
 
 #include "can_options.hpp"
 #include "commands.hpp"
-#include "volcomp/canopen/sdo_abort.hpp"
+#include "sdo_failure.hpp"
 #include "volcomp/image/image_builder.hpp"
 #include "volcomp/image/image_reader.hpp"
+#include "volcomp/tools/hex.hpp"
 
 namespace volcomp::tools {
 namespace {
@@ -23,8 +25,6 @@ namespace {
 using canopen::ObjectId;
 using canopen_client::CanSession;
 using canopen_client::SdoResult;
-
-constexpr uint32_t kUnlockSignature = 0x6B6C6E75;  // "unlk", see firmware/board_objects.hpp
 
 class ProgressBar {
  public:
@@ -64,52 +64,15 @@ class ProgressBar {
   std::chrono::steady_clock::time_point start_;
 };
 
-std::string Hex32(uint32_t v) {
-  char b[16];
-  std::snprintf(b, sizeof b, "0x%08X", v);
-  return b;
-}
-
-// An SDO failure; `retryable` when a fresh attempt can succeed (protocol errors, timeouts).
-class SdoFailure : public InputError {
- public:
-  SdoFailure(const std::string& message, uint32_t code)
-      : InputError(message), retryable((code >> 16) == 0x0504 || code == 0x05030000) {}
-  bool retryable;
-};
-
-// Throws SdoFailure with the SDO failure explained (and what to do about the common ones).
-void Check(const SdoResult& r, const std::string& what) {
-  if (r.ok) return;
-  std::string hint;
-  if (r.abort_code == canopen::kAbortCannotStore) {
-    hint = "; the board is write-protected: set its write-enable input or let the tool unlock it";
-  } else if (r.abort_code == canopen::kAbortDeviceState) {
-    hint =
-        "; the axes must be referenced (homed) and at rest: home the machine, then run "
-        "`volcomp activate`";
-  } else if (r.abort_code == canopen::kAbortNoData) {
-    hint = "; no verified table is staged: upload one first";
-  }
-  throw SdoFailure(what + ": " + r.message + hint, r.abort_code);
-}
-
 uint32_t ReadOr(CanSession& s, ObjectId id, const std::string& what) {
   uint32_t v = 0;
   Check(s.Read(id, &v), "reading " + what);
   return v;
 }
 
-void Unlock(CanSession& s) {
-  uint32_t writable = 0;
-  Check(s.Read(ObjectId::kWriteAccess, &writable), "reading write access (0x2111)");
-  if (writable == 0) Check(s.Write(ObjectId::kUnlock, kUnlockSignature), "unlocking (0x2110)");
-}
-
 // One complete attempt; throws on failure.
 void UploadOnce(CanSession& s, const std::vector<uint8_t>& bytes, uint32_t crc, bool quiet) {
-  Unlock(s);
-  Check(s.Write(ObjectId::kTableControl, 3), "clearing the staging bank (0x2101 = 3)");
+  Require(canopen_client::PrepareStaging(s));
   ProgressBar bar(static_cast<uint32_t>(bytes.size()));
   const SdoResult r = s.Download(ObjectId::kTableData, bytes, [&](uint32_t done, uint32_t) {
     if (!quiet) bar.Update(done);
@@ -119,11 +82,7 @@ void UploadOnce(CanSession& s, const std::vector<uint8_t>& bytes, uint32_t crc, 
   const double secs = bar.Seconds();
   std::printf("transferred %zu bytes in %.2f s (%.1f kB/s)\n", bytes.size(), secs,
               secs > 0 ? static_cast<double>(bytes.size()) / secs / 1000 : 0.0);
-  Check(s.Write(ObjectId::kTableControl, 4), "verifying on the board (0x2101 = 4)");
-  const uint32_t staged = ReadOr(s, ObjectId::kStagedTableCrc, "the staged CRC-32 (0x2105)");
-  if (staged != crc) {
-    throw InputError("the board staged CRC-32 " + Hex32(staged) + ", expected " + Hex32(crc));
-  }
+  Require(canopen_client::VerifyStaged(s, crc));
 }
 
 }  // namespace

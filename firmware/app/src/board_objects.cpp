@@ -142,11 +142,7 @@ uint32_t BoardObjects::table_status() const {
 
 uint32_t BoardObjects::Refuse(uint32_t abort_code) {
   ++refused_;
-  uint8_t m[5];
-  StoreLe32(m, abort_code);
-  m[4] = 0;
-  node_->RaiseError(kEmcyRefused, 0, m);
-  node_->ClearErrors();
+  node_->ReportEvent(kEmcyRefused, 0, abort_code);
   return abort_code;
 }
 
@@ -400,9 +396,8 @@ uint32_t BoardObjects::TableControl(uint8_t command) {
     case TableCommand::kVerify: {
       const Status s = tables_->Verify(board);
       if (!s.ok()) {
-        uint8_t m[5] = {static_cast<uint8_t>(s.error()), 0, 0, 0, 0};
-        node_->RaiseError(kEmcyTableInvalid, canopen::kErrManufacturer, m);
-        node_->ClearErrors();
+        node_->ReportEvent(kEmcyTableInvalid, canopen::kErrManufacturer,
+                           static_cast<uint32_t>(s.error()));
         return canopen::kAbortInvalidValue;
       }
       return 0;
@@ -441,7 +436,7 @@ uint32_t BoardObjects::DoWrite(const ObjectEntry& e, const uint8_t* data, uint32
   for (uint32_t i = 0; i < size && i < 4; ++i) v |= uint32_t{data[i]} << (8 * i);
   switch (e.id) {
     case ObjectId::kUnlock:
-      if (v == kUnlockSignature) {
+      if (v == canopen::kUnlockSignature) {
         unlocked_ = true;
         unlocked_at_ms_ = now_ms_;
         return 0;
@@ -459,13 +454,13 @@ uint32_t BoardObjects::DoWrite(const ObjectEntry& e, const uint8_t* data, uint32
       return TableControl(static_cast<uint8_t>(v));
     case ObjectId::kStoreAll:
       if (!writable()) return Refuse(canopen::kAbortCannotStore);
-      if (v != kSaveSignature) return canopen::kAbortCannotStore;
+      if (v != canopen::kSaveSignature) return canopen::kAbortCannotStore;
       if (!ValidateSettings(pending_).ok()) return canopen::kAbortInvalidValue;
       if (!settings_store_->Save(pending_).ok()) return Refuse(canopen::kAbortHardware);
       return 0;
     case ObjectId::kRestoreAll:
       if (!writable()) return Refuse(canopen::kAbortCannotStore);
-      if (v != kLoadSignature) return canopen::kAbortCannotStore;
+      if (v != canopen::kLoadSignature) return canopen::kAbortCannotStore;
       if (!settings_store_->Reset().ok()) return Refuse(canopen::kAbortHardware);
       return 0;
     default:

@@ -115,19 +115,9 @@ int RunNodeServer(const std::vector<std::string>& args) {
   const auto wall_start = std::chrono::steady_clock::now();
   while (!g_stop) {
     // Catch virtual time up with the wall clock, events in order.
-    const uint64_t now = clock.Now();
-    for (;;) {
-      uint64_t t = board.NextEventTime();
-      if (auto b = bus.NextEventTime()) t = std::min(t, *b);
-      if (t > now) break;
-      bus.RunUntil(t);
-      board.AdvanceTo(t);
-    }
-    bus.RunUntil(now);
+    AdvanceInEventOrder(bus, board, clock.Now());
     // External I/O, waiting at most until the next event or 1 ms.
-    uint64_t next = board.NextEventTime();
-    if (auto b = bus.NextEventTime()) next = std::min(next, *b);
-    auto wait = clock.Until(next);
+    auto wait = clock.Until(NextEventTime(bus, board));
     if (wait > std::chrono::microseconds(1000)) wait = std::chrono::microseconds(1000);
     if (server) {
       ServeSlcan(*server, ext, wait);

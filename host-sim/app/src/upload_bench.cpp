@@ -2,13 +2,12 @@
 #include "volcomp/sim/upload_bench.hpp"
 
 #include <cmath>
-#include <functional>
 
 #include "volcomp/byte_order.hpp"
 #include "volcomp/canopen/crc16.hpp"
 #include "volcomp/canopen/object_dictionary.hpp"
 #include "volcomp/canopen_client/sdo_client.hpp"
-#include "volcomp/sim/simulated_board.hpp"
+#include "volcomp/sim/sim_sdo_host.hpp"
 #include "volcomp/table_writer.hpp"
 
 namespace volcomp::sim {
@@ -42,46 +41,6 @@ std::vector<uint8_t> BuildGridImage(uint32_t n) {
   const Result<uint32_t> size = table::WriteImage(s, out, words.size() * 4);
   return std::vector<uint8_t>(out, out + (size.ok() ? *size : 0));
 }
-
-// Drives client + board + bus in virtual time until the client is done (or `limit_ns`).
-class CoSim {
- public:
-  CoSim(SimBus& bus, SimulatedBoard& board, Endpoint& pc) : bus_(bus), board_(board), pc_(pc) {}
-
-  void Run(canopen_client::SdoClient& c, uint64_t limit_ns) {
-    while (!c.done() && bus_.now() < limit_ns) {
-      CanFrame f;
-      while (c.PopTx(&f)) pc_.Send(f);
-      uint64_t t = board_.NextEventTime();
-      if (auto b = bus_.NextEventTime()) t = std::min(t, *b);
-      if (t < bus_.now()) t = bus_.now();
-      bus_.RunUntil(t);
-      board_.AdvanceTo(t);
-      while (pc_.Receive(&f)) c.OnFrame(f, t / 1000);
-      c.Poll(t / 1000);
-    }
-    CanFrame f;
-    while (c.PopTx(&f)) pc_.Send(f);
-  }
-  // Advances everything by `ns` (the board keeps ticking).
-  void Idle(uint64_t ns) {
-    const uint64_t end = bus_.now() + ns;
-    while (bus_.now() < end) {
-      uint64_t t = std::min(board_.NextEventTime(), end);
-      if (auto b = bus_.NextEventTime()) t = std::min(t, *b);
-      bus_.RunUntil(t);
-      board_.AdvanceTo(t);
-      CanFrame f;
-      while (pc_.Receive(&f)) {
-      }
-    }
-  }
-
- private:
-  SimBus& bus_;
-  SimulatedBoard& board_;
-  Endpoint& pc_;
-};
 
 }  // namespace
 
@@ -131,31 +90,25 @@ UploadBenchResult RunUploadBench(const UploadBenchOptions& options) {
     return r;
   }
   const uint8_t node = bo.settings.node_id;
-  CoSim sim(bus, board, pc);
-  sim.Idle(5000000);
-  auto write = [&](canopen::ObjectId id, uint32_t v) {
-    const auto& e = canopen::Entry(id);
-    std::vector<uint8_t> d;
-    for (uint32_t i = 0; i < canopen::FixedSize(e.type); ++i) d.push_back(uint8_t(v >> (8 * i)));
-    canopen_client::SdoClient c(node);
-    c.StartDownload(e.index, e.sub, d);
-    sim.Run(c, bus.now() + 2000000000ull);
-    return c.result();
-  };
+  SimSdoHost host(bus, board, pc, node);
+  host.Idle(5000000);
+  constexpr uint64_t kWriteTimeoutNs = 2000000000ull;
+  auto write = [&](canopen::ObjectId id, uint32_t v) { return host.Write(id, v, kWriteTimeoutNs); };
   auto fail = [&](const std::string& what, const canopen_client::SdoResult& res) {
     r.message = what + ": " + res.message;
     return r;
   };
-  auto res = write(canopen::ObjectId::kUnlock, 0x6B6C6E75);
+  auto res = write(canopen::ObjectId::kUnlock, canopen::kUnlockSignature);
   if (!res.ok) return fail("unlock", res);
   res = write(canopen::ObjectId::kTableControl, 3);
   if (!res.ok) return fail("clear", res);
 
   uint64_t frames_before = bus.stats().frames;
+  const canopen::ObjectEntry& data = canopen::Entry(canopen::ObjectId::kTableData);
   canopen_client::SdoClient c(node);
-  c.StartDownload(0x2100, 0, image);
+  c.StartDownload(data.index, data.sub, image);
   const uint64_t t0 = bus.now();
-  sim.Run(c, t0 + 60000000000ull);
+  host.Run(c, 60000000000ull);
   if (!c.done() || !c.result().ok) return fail("block download", c.result());
   const double bytes = static_cast<double>(image.size());
   r.transfer_s = static_cast<double>(bus.now() - t0) * 1e-9;
@@ -171,14 +124,15 @@ UploadBenchResult RunUploadBench(const UploadBenchOptions& options) {
   if (options.activate) {
     res = write(canopen::ObjectId::kReferenceAxes, 0x07);
     if (!res.ok) return fail("reference", res);
-    sim.Idle(200000000);
+    host.Idle(200000000);
     res = write(canopen::ObjectId::kTableControl, 1);
     if (!res.ok) return fail("activate", res);
     r.activated = true;
   }
+  const canopen::ObjectEntry& active = canopen::Entry(canopen::ObjectId::kActiveTableCrc);
   canopen_client::SdoClient rd(node);
-  rd.StartUpload(0x2104, 0);
-  sim.Run(rd, bus.now() + 2000000000ull);
+  rd.StartUpload(active.index, active.sub);
+  host.Run(rd, kWriteTimeoutNs);
   if (!rd.result().ok || rd.result().data.size() != 4) return fail("read active CRC", rd.result());
   r.active_crc = LoadLe32(rd.result().data.data());
   r.ok = true;

@@ -83,4 +83,22 @@ void SimulatedBoard::AdvanceTo(uint64_t t_ns) {
   clock_.Set(now_ns_);
 }
 
+uint64_t NextEventTime(const SimBus& bus, const SimulatedBoard& board) {
+  const uint64_t t = board.NextEventTime();
+  const std::optional<uint64_t> b = bus.NextEventTime();
+  return b && *b < t ? *b : t;
+}
+
+void StepTo(SimBus& bus, SimulatedBoard& board, uint64_t t_ns) {
+  bus.RunUntil(t_ns);
+  board.AdvanceTo(t_ns);
+}
+
+void AdvanceInEventOrder(SimBus& bus, SimulatedBoard& board, uint64_t t_ns) {
+  for (uint64_t next = NextEventTime(bus, board); next <= t_ns; next = NextEventTime(bus, board)) {
+    StepTo(bus, board, next);
+  }
+  StepTo(bus, board, t_ns);
+}
+
 }  // namespace volcomp::sim

@@ -50,8 +50,7 @@ SimBus::SimBus(uint32_t bitrate) : bitrate_(bitrate) {
 }
 
 Endpoint& SimBus::Attach(std::string name) {
-  endpoints_.push_back(
-      std::unique_ptr<Endpoint>(new Endpoint(this, std::move(name), endpoints_.size())));
+  endpoints_.push_back(std::unique_ptr<Endpoint>(new Endpoint(std::move(name), endpoints_.size())));
   return *endpoints_.back();
 }
 

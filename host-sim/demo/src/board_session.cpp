@@ -3,65 +3,38 @@
 
 #include <cstdio>
 
-#include "volcomp/canopen/object_dictionary.hpp"
-#include "volcomp/canopen/sdo_abort.hpp"
-#include "volcomp/canopen_client/sdo_runner.hpp"
+#include "volcomp/byte_order.hpp"
+#include "volcomp/canopen_client/table_staging.hpp"
+#include "volcomp/tools/hex.hpp"
 
 namespace volcomp::sim {
-namespace {
 
 using canopen::ObjectId;
+using canopen_client::Explain;
+using canopen_client::NodeObjects;
 using canopen_client::SdoResult;
-
-constexpr uint32_t kUnlockSignature = 0x6B6C6E75;  // "unlk"
-
-SdoResult Write(World& w, ObjectId id, uint32_t value) {
-  const canopen::ObjectEntry& e = canopen::Entry(id);
-  return canopen_client::WriteU32(w.SdoLink(), w.node_id(), e.index, e.sub, value,
-                                  static_cast<uint8_t>(canopen::FixedSize(e.type)));
-}
-
-SdoResult Read(World& w, ObjectId id, uint32_t* value) {
-  const canopen::ObjectEntry& e = canopen::Entry(id);
-  return canopen_client::ReadU32(w.SdoLink(), w.node_id(), e.index, e.sub, value);
-}
-
-std::string Hex32(uint32_t v) {
-  char b[16];
-  std::snprintf(b, sizeof b, "0x%08X", v);
-  return b;
-}
-
-}  // namespace
 
 UploadReport UploadTable(World& world, const std::vector<uint8_t>& image, std::ostream& log) {
   UploadReport r;
   r.bytes = static_cast<uint32_t>(image.size());
-  r.image_crc = static_cast<uint32_t>(image[image.size() - 4]) |
-                static_cast<uint32_t>(image[image.size() - 3]) << 8 |
-                static_cast<uint32_t>(image[image.size() - 2]) << 16 |
-                static_cast<uint32_t>(image[image.size() - 1]) << 24;
-  auto fail = [&](const std::string& what, const SdoResult& res) {
-    r.message = what + ": " + res.message;
+  r.image_crc = LoadLe32(image.data() + image.size() - 4);
+  NodeObjects node(world.SdoLink(), world.node_id());
+  auto fail = [&](const SdoResult& res) {
+    r.message = res.message;
     return r;
   };
-  uint32_t active = 0, bank = 0, writable = 0;
-  SdoResult res = Read(world, ObjectId::kActiveTableCrc, &active);
-  if (!res.ok) return fail("reading the active CRC-32 (0x2104)", res);
-  res = Read(world, ObjectId::kTableBankSize, &bank);
-  if (!res.ok) return fail("reading the bank size (0x2108)", res);
+  uint32_t active = 0, bank = 0;
+  SdoResult res =
+      Explain(node.Read(ObjectId::kActiveTableCrc, &active), "reading the active CRC-32 (0x2104)");
+  if (!res.ok) return fail(res);
+  res = Explain(node.Read(ObjectId::kTableBankSize, &bank), "reading the bank size (0x2108)");
+  if (!res.ok) return fail(res);
   if (image.size() > bank) {
     r.message = "the image does not fit the board's table bank";
     return r;
   }
-  res = Read(world, ObjectId::kWriteAccess, &writable);
-  if (!res.ok) return fail("reading write access (0x2111)", res);
-  if (writable == 0) {
-    res = Write(world, ObjectId::kUnlock, kUnlockSignature);
-    if (!res.ok) return fail("unlocking (0x2110)", res);
-  }
-  res = Write(world, ObjectId::kTableControl, 3);
-  if (!res.ok) return fail("clearing the staging bank (0x2101 = 3)", res);
+  res = canopen_client::PrepareStaging(node);
+  if (!res.ok) return fail(res);
 
   const uint64_t frames0 = world.bus().stats().frames;
   const uint64_t t0 = world.now_ns();
@@ -79,22 +52,16 @@ UploadReport UploadTable(World& world, const std::vector<uint8_t>& image, std::o
       log << line << std::flush;
     }
   });
-  res = canopen_client::RunToCompletion(client, world.SdoLink());
-  if (!res.ok) return fail("block download into 0x2100", res);
+  res = Explain(canopen_client::RunToCompletion(client, world.SdoLink()),
+                "block download into 0x2100");
+  if (!res.ok) return fail(res);
   r.transfer_s = static_cast<double>(world.now_ns() - t0) * 1e-9;
   r.rate_bytes_s = r.transfer_s > 0 ? r.bytes / r.transfer_s : 0;
   r.frames = world.bus().stats().frames - frames0;
   r.resent_segments = client.resent_segments();
 
-  res = Write(world, ObjectId::kTableControl, 4);
-  if (!res.ok) return fail("verifying on the board (0x2101 = 4)", res);
-  res = Read(world, ObjectId::kStagedTableCrc, &r.staged_crc);
-  if (!res.ok) return fail("reading the staged CRC-32 (0x2105)", res);
-  if (r.staged_crc != r.image_crc) {
-    r.message =
-        "the board staged CRC-32 " + Hex32(r.staged_crc) + ", expected " + Hex32(r.image_crc);
-    return r;
-  }
+  res = canopen_client::VerifyStaged(node, r.image_crc, &r.staged_crc);
+  if (!res.ok) return fail(res);
   r.ok = true;
   r.message = "staged and verified";
   return r;
@@ -102,28 +69,25 @@ UploadReport UploadTable(World& world, const std::vector<uint8_t>& image, std::o
 
 ActivationReport ActivateTable(World& world, uint32_t expected_crc) {
   ActivationReport r;
-  SdoResult res = Write(world, ObjectId::kTableControl, 1);
-  if (!res.ok) {
-    r.message = "activating (0x2101 = 1): " + res.message;
-    if (res.abort_code == canopen::kAbortDeviceState) {
-      r.message += "; the axes must be referenced (homed) and at rest";
-    }
-    return r;
+  NodeObjects node(world.SdoLink(), world.node_id());
+  SdoResult res = Explain(node.Write(ObjectId::kTableControl, 1), "activating (0x2101 = 1)");
+  if (res.ok) {
+    res = Explain(node.Read(ObjectId::kActiveTableCrc, &r.active_crc),
+                  "reading the active CRC-32 (0x2104)");
   }
-  res = Read(world, ObjectId::kActiveTableCrc, &r.active_crc);
   if (!res.ok) {
-    r.message = "reading the active CRC-32 (0x2104): " + res.message;
+    r.message = res.message;
     return r;
   }
   r.device_state = ReadDeviceState(world);
   r.ok = r.active_crc == expected_crc;
-  r.message = r.ok ? "active" : "the active CRC-32 is " + Hex32(r.active_crc);
+  r.message = r.ok ? "active" : "the active CRC-32 is " + tools::Hex32(r.active_crc);
   return r;
 }
 
 uint16_t ReadDeviceState(World& world) {
   uint32_t v = 0;
-  if (!Read(world, ObjectId::kDeviceState, &v).ok) return 0;
+  if (!NodeObjects(world.SdoLink(), world.node_id()).Read(ObjectId::kDeviceState, &v).ok) return 0;
   return static_cast<uint16_t>(v);
 }
 

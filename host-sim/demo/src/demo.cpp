@@ -11,11 +11,13 @@
 #include "volcomp/firmware/board_objects.hpp"
 #include "volcomp/metrology/test_program.hpp"
 #include "volcomp/sim/random.hpp"
+#include "volcomp/tools/hex.hpp"
 
 namespace volcomp::sim {
 namespace {
 
 using Clock = std::chrono::steady_clock;
+using tools::Hex32;
 
 double Since(Clock::time_point t0) {
   return std::chrono::duration<double>(Clock::now() - t0).count();
@@ -24,12 +26,6 @@ double Since(Clock::time_point t0) {
 std::string Fmt(const char* format, double a) {
   char b[64];
   std::snprintf(b, sizeof b, format, a);
-  return b;
-}
-
-std::string Hex32(uint32_t v) {
-  char b[16];
-  std::snprintf(b, sizeof b, "0x%08X", v);
   return b;
 }
 

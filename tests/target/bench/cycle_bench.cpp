@@ -121,21 +121,12 @@ int BenchGrid(const GridCaseSpec& c, const char* name) {
 }
 
 int BenchTick() {
-  const uint32_t size = BuildTickImage(g_image, sizeof g_image);
-  const Result<table::TableView> view = table::ParseImage(g_image, size);
-  if (size == 0 || !view.ok()) {
-    semihost::Write("bench: tick image invalid\n");
+  static ControlTick engine;
+  static PreparedTable table;
+  if (!StartTickEngine(g_image, sizeof g_image, engine, table)) {
+    semihost::Write("bench: tick image or engine setup invalid\n");
     return 1;
   }
-  static ControlTick engine;
-  const BoardConfig cfg = TickBoardConfig();
-  if (!engine.Configure(cfg).ok()) return 1;
-  static PreparedTable table;
-  if (!table.Prepare(*view, cfg).ok()) return 1;
-  const int32_t zero[3] = {0, 0, 0};
-  engine.compensator().SetTable(table, zero);
-  engine.compensator().SetEnabled(true);
-  for (uint8_t a = 0; a < 3; ++a) engine.Reference(a);
   uint32_t counters[3] = {0, 0, 0};
   PulsePlan plans[3];
   // The whole tick, then the same pattern again with the tick's parts as their own rows (each

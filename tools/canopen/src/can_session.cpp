@@ -9,7 +9,7 @@ CanSession::CanSession(const std::string& spec,
                        uint8_t node,
                        const std::string& log_path,
                        SdoClient::Options options)
-    : node_(node), options_(options), transport_(can_io::OpenTransportWithLog(spec, log_path)) {
+    : NodeObjects(link_, node, options), transport_(can_io::OpenTransportWithLog(spec, log_path)) {
   link_.send = [this](const CanFrame& f) { transport_->Send(f); };
   link_.receive = [this](uint64_t timeout_us) {
     return transport_->Receive(std::chrono::microseconds(timeout_us));
@@ -24,41 +24,8 @@ CanSession::CanSession(const std::string& spec,
 
 void CanSession::Observe(const CanFrame& f) {
   if (f.extended || f.rtr) return;
-  if (f.id == 0x700u + node_ && f.dlc == 1) nmt_state_ = f.data[0];
-  if (f.id == 0x80u + node_ && f.dlc == 8) emcy_.push_back(f);
-}
-
-SdoResult CanSession::Write(canopen::ObjectId id, uint32_t value) {
-  const canopen::ObjectEntry& e = canopen::Entry(id);
-  const uint32_t n = canopen::FixedSize(e.type);
-  return WriteU32(link_, node_, e.index, e.sub, value, static_cast<uint8_t>(n ? n : 4), options_);
-}
-
-SdoResult CanSession::Read(canopen::ObjectId id, uint32_t* value) {
-  const canopen::ObjectEntry& e = canopen::Entry(id);
-  return ReadU32(link_, node_, e.index, e.sub, value, options_);
-}
-
-SdoResult CanSession::ReadString(canopen::ObjectId id, std::string* value) {
-  const canopen::ObjectEntry& e = canopen::Entry(id);
-  SdoResult r = Upload(link_, node_, e.index, e.sub, false, options_);
-  if (r.ok) value->assign(r.data.begin(), r.data.end());
-  return r;
-}
-
-SdoResult CanSession::Download(canopen::ObjectId id,
-                               const std::vector<uint8_t>& data,
-                               std::function<void(uint32_t, uint32_t)> progress) {
-  const canopen::ObjectEntry& e = canopen::Entry(id);
-  return canopen_client::Download(link_, node_, e.index, e.sub, data, options_,
-                                  std::move(progress));
-}
-
-SdoResult CanSession::UploadDomain(canopen::ObjectId id, std::vector<uint8_t>* data) {
-  const canopen::ObjectEntry& e = canopen::Entry(id);
-  SdoResult r = Upload(link_, node_, e.index, e.sub, true, options_);
-  if (r.ok) *data = r.data;
-  return r;
+  if (f.id == 0x700u + node() && f.dlc == 1) nmt_state_ = f.data[0];
+  if (f.id == 0x80u + node() && f.dlc == 8) emcy_.push_back(f);
 }
 
 void CanSession::Listen(std::chrono::milliseconds duration) {
@@ -82,7 +49,7 @@ void CanSession::SendNmt(uint8_t command) {
   f.id = 0;
   f.dlc = 2;
   f.data[0] = command;
-  f.data[1] = node_;
+  f.data[1] = node();
   transport_->Send(f);
 }
 

@@ -58,6 +58,10 @@ class Node : private ObjectValues {
   void RaiseError(uint16_t code, uint8_t register_bits, const uint8_t* manufacturer = nullptr);
   /// Clears the error register and sends the "error reset" EMCY (code 0x0000).
   void ClearErrors();
+  /// Reports a one-off event that leaves no error standing (a refused request, a failed transfer
+  /// or verification): RaiseError(code, register_bits) with `detail` little-endian in bytes 3..6
+  /// and 0 in byte 7, then ClearErrors().
+  void ReportEvent(uint16_t code, uint8_t register_bits, uint32_t detail);
 
   NmtState state() const { return state_; }
   uint8_t node_id() const { return node_id_; }

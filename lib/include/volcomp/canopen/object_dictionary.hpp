@@ -35,6 +35,11 @@ enum class ObjectId : uint16_t {
   kCount
 };
 
+/// Values that must be written to trigger an action (ASCII, little-endian).
+inline constexpr uint32_t kSaveSignature = 0x65766173;    // "save" to 0x1010:1 (CiA 301)
+inline constexpr uint32_t kLoadSignature = 0x64616F6C;    // "load" to 0x1011:1 (CiA 301)
+inline constexpr uint32_t kUnlockSignature = 0x6B6C6E75;  // "unlk" to 0x2110 (write access)
+
 struct ObjectEntry {
   ObjectId id;
   uint16_t index;

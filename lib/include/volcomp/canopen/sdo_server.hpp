@@ -73,6 +73,9 @@ class SdoServer {
 
   // Checks the entry for reading or writing; 0 or an abort code.
   uint32_t Lookup(uint16_t index, uint8_t sub, bool write);
+  // Start of a segmented or block download of `size` bytes (if known) into entry_: opens a domain
+  // write or checks the size against the small-value buffer; 0 or an abort code.
+  uint32_t BeginTransfer(bool size_known, uint32_t size);
   // Delivers download data to the value or the small-object buffer; 0 or an abort code.
   uint32_t Deliver(const uint8_t* data, uint32_t size);
   uint32_t FinishDownload();

@@ -59,7 +59,7 @@ inline constexpr uint16_t kEmcyEStop = 0xFF01;
 inline constexpr uint16_t kEmcyDriveAlarm = 0xFF02;
 
 template <class StepIo>
-class BoardApp : private BoardControl {
+class BoardApp final : private BoardControl {
   static_assert(hal::IsStepIo<StepIo>::value, "StepIo must provide ReadCounters() and Apply()");
 
  public:

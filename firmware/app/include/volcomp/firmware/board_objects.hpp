@@ -4,8 +4,8 @@
 //
 // Write access: writes to tables and configuration (0x1010, 0x1011, 0x2000-0x201E, 0x2100, table
 // activate/deactivate/clear) are refused with 0x08000020 unless the hardware write-enable input
-// is active or the board was unlocked by writing kUnlockSignature to 0x2110 within the last
-// kUnlockMs milliseconds. Table activation is refused with 0x08000022 unless every axis is
+// is active or the board was unlocked by writing canopen::kUnlockSignature to 0x2110 within the
+// last kUnlockMs milliseconds. Table activation is refused with 0x08000022 unless every axis is
 // referenced and no axis moved within kStillMs. Each refusal and each failed action is counted
 // and reported with an EMCY (code kEmcyRefused / kEmcyTableInvalid, abort code in bytes 3..6).
 #pragma once
@@ -20,9 +20,6 @@
 
 namespace volcomp::firmware {
 
-inline constexpr uint32_t kUnlockSignature = 0x6B6C6E75;  // "unlk"
-inline constexpr uint32_t kSaveSignature = 0x65766173;    // "save" (CiA 301 0x1010)
-inline constexpr uint32_t kLoadSignature = 0x64616F6C;    // "load" (CiA 301 0x1011)
 inline constexpr uint32_t kUnlockMs = 60000;
 inline constexpr uint32_t kStillMs = 100;
 inline constexpr uint16_t kEmcyRefused = 0xFF10;       // an action was refused (manufacturer)

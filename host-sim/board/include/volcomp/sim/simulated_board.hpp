@@ -38,8 +38,8 @@ class SimulatedBoard {
 
   /// Starts the firmware (loads flash files first when configured).
   Status Start();
-  /// Runs ticks and main-loop passes up to virtual time `t_ns` (the bus must be advanced by the
-  /// caller in step: use NextEventTime() to interleave).
+  /// Runs ticks and main-loop passes up to virtual time `t_ns` (the bus must be advanced in step:
+  /// see StepTo() and AdvanceInEventOrder() below).
   void AdvanceTo(uint64_t t_ns);
   /// Virtual time of the next tick or poll.
   uint64_t NextEventTime() const;
@@ -71,5 +71,17 @@ class SimulatedBoard {
   uint64_t next_tick_ns_ = 0;
   uint64_t next_poll_ns_ = 0;
 };
+
+/// The earlier of the board's next tick or poll and the bus's next event.
+uint64_t NextEventTime(const SimBus& bus, const SimulatedBoard& board);
+
+/// One step of the co-simulation: the bus to `t_ns` (frames ending by then are delivered), then
+/// the board's ticks and polls up to `t_ns`. A caller that acts between events (an SDO client, a
+/// fault injector) calls it with t_ns = NextEventTime(bus, board) (or an earlier limit) and acts
+/// after each step.
+void StepTo(SimBus& bus, SimulatedBoard& board, uint64_t t_ns);
+
+/// Runs the bus and the board to `t_ns` with every event of either in time order.
+void AdvanceInEventOrder(SimBus& bus, SimulatedBoard& board, uint64_t t_ns);
 
 }  // namespace volcomp::sim

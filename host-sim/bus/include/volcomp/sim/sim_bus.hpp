@@ -94,14 +94,12 @@ class Endpoint {
 
  private:
   friend class SimBus;
-  Endpoint(SimBus* bus, std::string name, size_t index)
-      : bus_(bus), name_(std::move(name)), index_(index) {}
+  Endpoint(std::string name, size_t index) : name_(std::move(name)), index_(index) {}
 
   struct Queued {
     CanFrame frame;
     bool retransmission = false;  // a duplicate's second copy: no further faults
   };
-  SimBus* bus_;
   std::string name_;
   size_t index_;
   std::deque<Queued> tx_;

@@ -1,6 +1,5 @@
 // A PC-tool session with one volcomp node over a real transport (SocketCAN, SLCAN, SLCAN-TCP):
-// typed object access by ObjectId (addresses and sizes from the shared object dictionary), and
-// the node's heartbeat and EMCY frames observed on the way.
+// typed object access (NodeObjects) and the node's heartbeat and EMCY frames observed on the way.
 #pragma once
 
 #include <chrono>
@@ -12,12 +11,11 @@
 #include <vector>
 
 #include "volcomp/can_io/transport.hpp"
-#include "volcomp/canopen/object_dictionary.hpp"
-#include "volcomp/canopen_client/sdo_runner.hpp"
+#include "volcomp/canopen_client/node_objects.hpp"
 
 namespace volcomp::canopen_client {
 
-class CanSession {
+class CanSession : public NodeObjects {
  public:
   /// Opens `spec` (see can_io::OpenTransport), logging every frame to `log_path` if not empty.
   /// Throws std::runtime_error when the transport cannot be opened.
@@ -25,19 +23,10 @@ class CanSession {
              uint8_t node,
              const std::string& log_path = "",
              SdoClient::Options options = {});
+  CanSession(const CanSession&) = delete;
+  CanSession& operator=(const CanSession&) = delete;
 
-  uint8_t node() const { return node_; }
-  const FrameLink& link() const { return link_; }
-  const SdoClient::Options& options() const { return options_; }
   can_io::CanTransport& transport() { return *transport_; }
-
-  SdoResult Write(canopen::ObjectId id, uint32_t value);
-  SdoResult Read(canopen::ObjectId id, uint32_t* value);
-  SdoResult ReadString(canopen::ObjectId id, std::string* value);
-  SdoResult Download(canopen::ObjectId id,
-                     const std::vector<uint8_t>& data,
-                     std::function<void(uint32_t, uint32_t)> progress = {});
-  SdoResult UploadDomain(canopen::ObjectId id, std::vector<uint8_t>* data);
 
   /// Receives for `duration`, recording heartbeats and EMCY (monitoring, waiting for a state).
   void Listen(std::chrono::milliseconds duration);
@@ -51,10 +40,8 @@ class CanSession {
  private:
   void Observe(const CanFrame& f);
 
-  uint8_t node_;
-  SdoClient::Options options_;
+  FrameLink link_;  // what NodeObjects talks through (bound before it is filled in)
   std::unique_ptr<can_io::CanTransport> transport_;
-  FrameLink link_;
   std::optional<uint8_t> nmt_state_;
   std::vector<CanFrame> emcy_;
 };

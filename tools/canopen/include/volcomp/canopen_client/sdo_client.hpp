@@ -93,7 +93,6 @@ class SdoClient {
   uint32_t sub_start_ = 0;  // byte offset of this sub-block's first segment
   bool block_upload_ = false;
   uint32_t upload_size_ = 0;
-  uint16_t up_crc_expected_ = 0;
   std::vector<uint8_t> up_block_;  // segments of the current upload sub-block
   uint8_t up_last_seq_ = 0;
   bool up_last_ = false;

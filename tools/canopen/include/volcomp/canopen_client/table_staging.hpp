@@ -1,0 +1,39 @@
+// The board's table-staging protocol as one sequence of object accesses, shared by the PC tool
+// (`volcomp upload`) and the simulator's demo session, so both exercise the same steps:
+//
+//   PrepareStaging: read write access (0x2111), unlock (0x2110 = "unlk") if it is off, clear the
+//                   staging bank (0x2101 = 3);
+//   (the caller block-downloads the image into 0x2100, with its own progress and timing);
+//   VerifyStaged:   verify on the board (0x2101 = 4), read the staged CRC-32 (0x2105) and compare
+//                   it with the image's.
+//
+// Every failure comes back as an SdoResult whose message names the step and explains the common
+// refusals (see Explain()); abort_code is the server's (0 for a CRC mismatch).
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+#include "volcomp/canopen_client/node_objects.hpp"
+
+namespace volcomp::canopen_client {
+
+/// What to do about the board's common refusals (write-protected, not referenced / moving, nothing
+/// staged); empty for other codes.
+std::string AbortHint(uint32_t abort_code);
+
+/// `r` with its message prefixed by `step` ("step: reason; hint") when it failed; unchanged if ok.
+SdoResult Explain(SdoResult r, const std::string& step);
+
+/// Reads write access (0x2111) and unlocks the board (0x2110) if it is off: before every write to
+/// tables or settings (staging, activation, deactivation).
+SdoResult EnsureWritable(NodeObjects& node);
+
+/// EnsureWritable(), then clears the staging bank.
+SdoResult PrepareStaging(NodeObjects& node);
+
+/// Verifies the staged image on the board and checks its CRC-32 against `image_crc`;
+/// `*staged_crc` (optional) receives the board's value when it could be read.
+SdoResult VerifyStaged(NodeObjects& node, uint32_t image_crc, uint32_t* staged_crc = nullptr);
+
+}  // namespace volcomp::canopen_client
