@@ -7,6 +7,7 @@
 #include <cstdint>
 
 #include "cases.hpp"
+#include "hand_lookup.hpp"
 #include "semihost.hpp"
 #include "volcomp/control_tick.hpp"
 #include "volcomp/grid_lookup.hpp"
@@ -93,6 +94,23 @@ int BenchParts(int part, const char* name, const char* symbol) {
   return 0;
 }
 
+// The timed positions of a grid case: each dimension walks its adversarial coordinates; the others
+// cycle through theirs offset, so every coordinate of every dimension appears with varied
+// partners. `visit(pos)` returns false to stop (a failed check).
+template <class Visit>
+bool ForEachTimedPosition(const GridCaseSpec& c, Visit&& visit) {
+  Rng rng(c.seed);
+  uint32_t n[3];
+  for (int d = 0; d < 3; ++d) n[d] = CoordinateCount(c.dim[d]);
+  const uint32_t total = n[0] > n[1] ? (n[0] > n[2] ? n[0] : n[2]) : (n[1] > n[2] ? n[1] : n[2]);
+  for (uint32_t i = 0; i < 2 * total; ++i) {
+    int32_t pos[3];
+    for (int d = 0; d < 3; ++d) pos[d] = Coordinate(c.dim[d], (i * (d + 1) + d) % n[d], rng);
+    if (!visit(pos)) return false;
+  }
+  return true;
+}
+
 template <class Loader>
 int BenchGrid(const GridCaseSpec& c, const char* name) {
   const uint32_t size = BuildGridImage(c, g_image, sizeof g_image);
@@ -104,18 +122,37 @@ int BenchGrid(const GridCaseSpec& c, const char* name) {
   GridLookup lookup;
   if (!lookup.Init(view->grid).ok()) return 1;
   Scenario(name, KernelSymbol<Loader>());
-  Rng rng(c.seed);
-  // Each dimension walks its adversarial coordinates; the others cycle through theirs offset, so
-  // every coordinate of every dimension appears with varied partners.
-  uint32_t n[3];
-  for (int d = 0; d < 3; ++d) n[d] = CoordinateCount(c.dim[d]);
-  const uint32_t total = n[0] > n[1] ? (n[0] > n[2] ? n[0] : n[2]) : (n[1] > n[2] ? n[1] : n[2]);
-  for (uint32_t i = 0; i < 2 * total; ++i) {
-    int32_t pos[3];
-    for (int d = 0; d < 3; ++d) pos[d] = Coordinate(c.dim[d], (i * (d + 1) + d) % n[d], rng);
+  ForEachTimedPosition(c, [&](const int32_t* pos) {
     int32_t out[3];
     RunLookup<Loader>(lookup, pos, out);
     g_sink = out[0] + out[1] + out[2];
+    return true;
+  });
+  return 0;
+}
+
+// The hand-scheduled int16 kernel (hand_lookup.hpp) on the positions BenchGrid times, each result
+// checked against GridLookup::LookupInt16.
+int BenchHandLookup(const GridCaseSpec& c, const char* name) {
+  const uint32_t size = BuildGridImage(c, g_image, sizeof g_image);
+  const Result<table::TableView> view = table::ParseImage(g_image, size);
+  GridLookup lookup;
+  HandLookupConstants k;
+  if (size == 0 || !view.ok() || !lookup.Init(view->grid).ok() ||
+      !PrepareHandLookup(view->grid, &k)) {
+    semihost::Write("bench: hand lookup case invalid\n");
+    return 1;
+  }
+  Scenario(name, "volcomp_hand_lookup_int16");
+  const bool same = ForEachTimedPosition(c, [&](const int32_t* pos) {
+    int32_t out[3], ref[3];
+    volcomp_hand_lookup_int16(&k, pos, out);
+    lookup.LookupInt16(pos, ref);
+    return ref[0] == out[0] && ref[1] == out[1] && ref[2] == out[2];
+  });
+  if (!same) {
+    semihost::Write("bench: hand-scheduled lookup differs from GridLookup::LookupInt16\n");
+    return 1;
   }
   return 0;
 }
@@ -161,6 +198,8 @@ int main() {
   int rc = 0;
   rc |= BenchGrid<LoadInt16>(kGridCases[0], "lookup_int16_a");
   rc |= BenchGrid<LoadInt16>(kGridCases[1], "lookup_int16_b");
+  rc |= BenchHandLookup(kGridCases[0], "hand_lookup_int16_a");
+  rc |= BenchHandLookup(kGridCases[1], "hand_lookup_int16_b");
   rc |= BenchGrid<LoadInt32>(kGridCases[2], "lookup_int32_a");
   rc |= BenchGrid<LoadInt32>(kGridCases[3], "lookup_int32_b");
   rc |= BenchGrid<LoadFloat32>(kGridCases[4], "lookup_float32_a");
