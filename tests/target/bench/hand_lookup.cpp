@@ -6,7 +6,8 @@
 namespace volcomp::target {
 
 bool PrepareHandLookup(const table::Grid3View& grid, HandLookupConstants* k) {
-  if (!grid.present || grid.type != table::ElementType::kInt16) return false;
+  if (!grid.present || grid.type == table::ElementType::kInt32) return false;
+  const bool int16 = grid.type == table::ElementType::kInt16;
   for (int d = 0; d < 3; ++d) {
     LatticeLocator loc;
     loc.Init(grid.dim[d]);
@@ -14,14 +15,54 @@ bool PrepareHandLookup(const table::Grid3View& grid, HandLookupConstants* k) {
                  loc.dim().recip_hi};
   }
   k->data = grid.data;
-  k->stride_y = 6u * grid.dim[0].nodes;
+  k->stride_y = 3u * table::ElementSize(grid.type) * grid.dim[0].nodes;
   k->stride_z = k->stride_y * grid.dim[1].nodes;
-  k->shift = 7u + grid.frac_bits;
-  k->round = static_cast<int32_t>(1u << (k->shift - 1u));
+  k->shift = int16 ? 7u + grid.frac_bits : 0u;
+  k->round = int16 ? static_cast<int32_t>(1u << (k->shift - 1u)) : 0;
   return true;
 }
 
 }  // namespace volcomp::target
+
+// The locate shared by both kernels (r0 = constants, advanced to `data`; r1 = positions): per
+// dimension clamp (QSUB, USAT, min with span), then cell:frac = u * recip / 2^32. Leaves
+// r5 = fx, r6 = cx, r7 = fy, r8 = cy, r9 = fz, r10 = cz; uses r3, r4, r11.
+__asm(
+    ".macro volcomp_hand_locate\n"
+    // x
+    "ldmia   r0!, {r3, r4, r5, r6, r7}\n"
+    "ldr     r3, [r1, r3, lsl #2]\n"
+    "qsub    r3, r3, r4\n"
+    "usat    r3, #31, r3\n"
+    "cmp     r3, r5\n"
+    "it      hi\n"
+    "movhi   r3, r5\n"
+    "umull   r4, r5, r3, r6\n"
+    "movs    r6, #0\n"
+    "umlal   r5, r6, r3, r7\n"  // r5 = fx, r6 = cx
+    // y
+    "ldmia   r0!, {r3, r4, r7, r8, r9}\n"
+    "ldr     r3, [r1, r3, lsl #2]\n"
+    "qsub    r3, r3, r4\n"
+    "usat    r3, #31, r3\n"
+    "cmp     r3, r7\n"
+    "it      hi\n"
+    "movhi   r3, r7\n"
+    "umull   r4, r7, r3, r8\n"
+    "movs    r8, #0\n"
+    "umlal   r7, r8, r3, r9\n"  // r7 = fy, r8 = cy
+    // z
+    "ldmia   r0!, {r3, r4, r9, r10, r11}\n"
+    "ldr     r3, [r1, r3, lsl #2]\n"
+    "qsub    r3, r3, r4\n"
+    "usat    r3, #31, r3\n"
+    "cmp     r3, r9\n"
+    "it      hi\n"
+    "movhi   r3, r9\n"
+    "umull   r4, r9, r3, r10\n"
+    "movs    r10, #0\n"
+    "umlal   r9, r10, r3, r11\n"  // r9 = fz, r10 = cz
+    ".endm\n");
 
 // r0 = constants, r1 = positions, r2 = out. Register use in the row phase: r0 h0, r1 row pointer
 // (z0), r2 a0, r3 stride_y, r4 row pointer (z1), r5 x1 weight, r6 x0 weight, r7 x1y1, r8 a1,
@@ -52,39 +93,7 @@ volcomp_hand_lookup_int16(const volcomp::target::HandLookupConstants*, const int
       "smlawt  r11, r12, lr, r11\n"
       ".endm\n"
       "push    {r0, r2, r4, r5, r6, r7, r8, r9, r10, r11, lr}\n"
-      // x: clamp (QSUB, USAT, min with span), then cell:frac = u * recip / 2^32.
-      "ldmia   r0!, {r3, r4, r5, r6, r7}\n"
-      "ldr     r3, [r1, r3, lsl #2]\n"
-      "qsub    r3, r3, r4\n"
-      "usat    r3, #31, r3\n"
-      "cmp     r3, r5\n"
-      "it      hi\n"
-      "movhi   r3, r5\n"
-      "umull   r4, r5, r3, r6\n"
-      "movs    r6, #0\n"
-      "umlal   r5, r6, r3, r7\n"  // r5 = fx, r6 = cx
-      // y
-      "ldmia   r0!, {r3, r4, r7, r8, r9}\n"
-      "ldr     r3, [r1, r3, lsl #2]\n"
-      "qsub    r3, r3, r4\n"
-      "usat    r3, #31, r3\n"
-      "cmp     r3, r7\n"
-      "it      hi\n"
-      "movhi   r3, r7\n"
-      "umull   r4, r7, r3, r8\n"
-      "movs    r8, #0\n"
-      "umlal   r7, r8, r3, r9\n"  // r7 = fy, r8 = cy
-      // z
-      "ldmia   r0!, {r3, r4, r9, r10, r11}\n"
-      "ldr     r3, [r1, r3, lsl #2]\n"
-      "qsub    r3, r3, r4\n"
-      "usat    r3, #31, r3\n"
-      "cmp     r3, r9\n"
-      "it      hi\n"
-      "movhi   r3, r9\n"
-      "umull   r4, r9, r3, r10\n"
-      "movs    r10, #0\n"
-      "umlal   r9, r10, r3, r11\n"  // r9 = fz, r10 = cz
+      "volcomp_hand_locate\n"
       // Corner address p = data + 6 cx + cy sy + cz sz; q = p + sz; accumulators = round.
       "ldmia   r0, {r1, r3, r4, r11}\n"
       "add     r6, r6, r6, lsl #1\n"
@@ -122,5 +131,95 @@ volcomp_hand_lookup_int16(const volcomp::target::HandLookupConstants*, const int
       "asr     r8, r8, r1\n"
       "asr     r11, r11, r1\n"
       "stmia   r3, {r2, r8, r11}\n"
+      "pop     {r4, r5, r6, r7, r8, r9, r10, r11, pc}\n");
+}
+
+// r0 = constants, r1 = positions, r2 = out (kept). After volcomp_hand_locate: corner address,
+// weights in s8..s15 (w0..w7, TrilinearWeightsF), accumulators s0..s2, one node's three
+// elements in s3..s5 (VLDM with write-back walks a row: x0 node, then x1 node).
+extern "C" __attribute__((naked, section(".volcomp_hot.hand_lookup"))) void
+volcomp_hand_lookup_float32(const volcomp::target::HandLookupConstants*, const int32_t*, int32_t*) {
+  __asm volatile(
+      // One corner node at r: products with weight w added to the accumulators.
+      ".macro volcomp_hand_node r, w\n"
+      "vldmia  \\r!, {s3, s4, s5}\n"
+      "vmul.f32 s3, \\w, s3\n"
+      "vmul.f32 s4, \\w, s4\n"
+      "vmul.f32 s5, \\w, s5\n"
+      "vadd.f32 s0, s0, s3\n"
+      "vadd.f32 s1, s1, s4\n"
+      "vadd.f32 s2, s2, s5\n"
+      ".endm\n"
+      "push    {r4, r5, r6, r7, r8, r9, r10, r11, lr}\n"
+      "volcomp_hand_locate\n"
+      // Corner address p = data + 12 cx + cy sy + cz sz; q = p + sz; r3 = sy - 24 (row to row
+      // after a row's two VLDM write-backs).
+      "ldmia   r0, {r1, r3, r4}\n"
+      "add     r6, r6, r6, lsl #1\n"
+      "add     r1, r1, r6, lsl #2\n"
+      "mla     r1, r8, r3, r1\n"
+      "mla     r1, r10, r4, r1\n"
+      "add     r4, r1, r4\n"
+      "sub     r3, r3, #24\n"
+      // Fractions to float (exact scaling by 2^-32), then TrilinearWeightsF.
+      "vmov    s0, s1, r5, r7\n"
+      "vmov    s2, r9\n"
+      "vcvt.f32.u32 s0, s0, #32\n"
+      "vcvt.f32.u32 s1, s1, #32\n"
+      "vcvt.f32.u32 s2, s2, #32\n"
+      "vmov.f32 s3, #1.0\n"
+      "vsub.f32 s3, s3, s0\n"    // x0
+      "vmul.f32 s4, s0, s1\n"    // x1y1
+      "vmul.f32 s5, s3, s1\n"    // x0y1
+      "vsub.f32 s6, s0, s4\n"    // x1y0
+      "vsub.f32 s7, s3, s5\n"    // x0y0
+      "vmul.f32 s12, s7, s2\n"   // w4
+      "vmul.f32 s13, s6, s2\n"   // w5
+      "vmul.f32 s14, s5, s2\n"   // w6
+      "vmul.f32 s15, s4, s2\n"   // w7
+      "vsub.f32 s8, s7, s12\n"   // w0
+      "vsub.f32 s9, s6, s13\n"   // w1
+      "vsub.f32 s10, s5, s14\n"  // w2
+      "vsub.f32 s11, s4, s15\n"  // w3
+      // k = 0 starts the sums, k = 1..7 add in the reference's order.
+      "vldmia  r1!, {s3, s4, s5}\n"
+      "vmul.f32 s0, s8, s3\n"
+      "vmul.f32 s1, s8, s4\n"
+      "vmul.f32 s2, s8, s5\n"
+      "volcomp_hand_node r1, s9\n"
+      "add     r1, r1, r3\n"
+      "volcomp_hand_node r1, s10\n"
+      "volcomp_hand_node r1, s11\n"
+      "volcomp_hand_node r4, s12\n"
+      "volcomp_hand_node r4, s13\n"
+      "add     r4, r4, r3\n"
+      "volcomp_hand_node r4, s14\n"
+      "volcomp_hand_node r4, s15\n"
+      // FloatToQ8: s = a * 256, s -/+ 0.5 by the sign (MI: false for NaN, as in C), truncate.
+      "mov     r3, #0x43800000\n"
+      "vmov    s6, r3\n"
+      "vmov.f32 s7, #0.5\n"
+      "vmul.f32 s0, s0, s6\n"
+      "vmul.f32 s1, s1, s6\n"
+      "vmul.f32 s2, s2, s6\n"
+      "vcmp.f32 s0, #0\n"
+      "vmrs    APSR_nzcv, fpscr\n"
+      "ite     mi\n"
+      "vsubmi.f32 s0, s0, s7\n"
+      "vaddpl.f32 s0, s0, s7\n"
+      "vcmp.f32 s1, #0\n"
+      "vmrs    APSR_nzcv, fpscr\n"
+      "ite     mi\n"
+      "vsubmi.f32 s1, s1, s7\n"
+      "vaddpl.f32 s1, s1, s7\n"
+      "vcmp.f32 s2, #0\n"
+      "vmrs    APSR_nzcv, fpscr\n"
+      "ite     mi\n"
+      "vsubmi.f32 s2, s2, s7\n"
+      "vaddpl.f32 s2, s2, s7\n"
+      "vcvt.s32.f32 s0, s0\n"
+      "vcvt.s32.f32 s1, s1\n"
+      "vcvt.s32.f32 s2, s2\n"
+      "vstmia  r2, {s0, s1, s2}\n"
       "pop     {r4, r5, r6, r7, r8, r9, r10, r11, pc}\n");
 }

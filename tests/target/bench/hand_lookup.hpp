@@ -1,12 +1,13 @@
-// A hand-scheduled Thumb-2 form of GridLookup::LookupInt16 (bench only, not product code).
+// Hand-scheduled Thumb-2 forms of GridLookup::LookupInt16 and LookupFloat32 (bench only, not
+// product code).
 //
-// Purpose: a measured floor for the 3-component int16 lookup under the cycle model. It does the
-// same arithmetic as the C++ kernel (LocateFast per dimension, the same Q0.32/Q1.31 weights, 24
-// SMLAWB/SMLAWT, the same rounding) with every register assigned by hand: no stack traffic
-// beyond the callee-saved registers, constants read with LDM, all 14 usable registers live in
-// the row phase. The bench checks it against GridLookup::LookupInt16 on every position it times,
-// so the figure belongs to a correct kernel. docs/mcu-target.md ("The lookup budgets") uses the
-// figure.
+// Purpose: a measured floor for the 3-component lookup under the cycle model. Each does the same
+// arithmetic as its C++ kernel (LocateFast per dimension; int16: the same Q0.32/Q1.31 weights, 24
+// SMLAWB/SMLAWT and rounding; float32: TrilinearWeightsF, the reference's order of the 8 products
+// per component, FloatToQ8) with every register assigned by hand: no stack traffic beyond the
+// callee-saved registers, constants read with LDM, float rows read with VLDM. The bench checks
+// each against its GridLookup kernel on every position it times, so the figures belong to correct
+// kernels. docs/mcu-target.md ("The lookup budgets") uses the figures.
 #pragma once
 
 #include <cstddef>
@@ -29,18 +30,22 @@ struct HandLookupConstants {
   const uint8_t* data;
   uint32_t stride_y;
   uint32_t stride_z;
-  int32_t round;   // 2^(shift - 1)
-  uint32_t shift;  // 7 + frac_bits
+  int32_t round;   // int16: 2^(shift - 1); float32: unused
+  uint32_t shift;  // int16: 7 + frac_bits; float32: unused
 };
 static_assert(sizeof(void*) != 4 || offsetof(HandLookupConstants, data) == 60, "asm offsets");
 static_assert(sizeof(void*) != 4 || offsetof(HandLookupConstants, shift) == 76, "asm offsets");
 
-/// Fills `k` for an int16 GRID3 (as GridLookup::Init() does); false for other element types.
+/// Fills `k` for an int16 or float32 GRID3 (as GridLookup::Init() does); false for int32.
 bool PrepareHandLookup(const table::Grid3View& grid, HandLookupConstants* k);
 
 }  // namespace volcomp::target
 
-/// The kernel: out_q8[c] as GridLookup::LookupInt16(pos_steps, out_q8) computes it.
+/// The kernels: out_q8[c] as GridLookup::LookupInt16 / LookupFloat32(pos_steps, out_q8) computes
+/// it.
 extern "C" void volcomp_hand_lookup_int16(const volcomp::target::HandLookupConstants* k,
                                           const int32_t* pos_steps,
                                           int32_t* out_q8);
+extern "C" void volcomp_hand_lookup_float32(const volcomp::target::HandLookupConstants* k,
+                                            const int32_t* pos_steps,
+                                            int32_t* out_q8);
