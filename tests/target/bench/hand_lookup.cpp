@@ -1,4 +1,4 @@
-// The hand-scheduled int16 lookup (see hand_lookup.hpp) and its constants.
+// The hand-scheduled lookups (see hand_lookup.hpp) and their constants.
 #include "hand_lookup.hpp"
 
 #include "volcomp/cell_locator.hpp"

@@ -5,7 +5,7 @@
 // arithmetic as its C++ kernel (LocateFast per dimension; int16: the same Q0.32/Q1.31 weights, 24
 // SMLAWB/SMLAWT and rounding; float32: TrilinearWeightsF, the reference's order of the 8 products
 // per component, FloatToQ8) with every register assigned by hand: no stack traffic beyond the
-// callee-saved registers, constants read with LDM, float rows read with VLDM. The bench checks
+// callee-saved registers, constants read with LDM, float nodes read with VLDM. The bench checks
 // each against its GridLookup kernel on every position it times, so the figures belong to correct
 // kernels. docs/mcu-target.md ("The lookup budgets") uses the figures.
 #pragma once
