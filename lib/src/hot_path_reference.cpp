@@ -4,10 +4,6 @@
 namespace volcomp {
 namespace {
 
-uint32_t NsToClock(uint32_t ns, uint32_t clock_hz) {
-  return static_cast<uint32_t>((static_cast<uint64_t>(ns) * clock_hz + 999999999u) / 1000000000u);
-}
-
 bool CanStopWithin(const LimiterParams& p, uint32_t m, uint64_t distance_q32) {
   return static_cast<uint64_t>(p.accel_q32) * (static_cast<uint64_t>(m) * (m + 1u) / 2u) <=
          distance_q32;
@@ -18,71 +14,55 @@ bool CanStopWithin(const LimiterParams& p, uint32_t m, uint64_t distance_q32) {
 Status StepGeneratorReference::Configure(const AxisConfig& axis,
                                          uint32_t tick_hz,
                                          uint32_t pulse_clock_hz) {
-  if (tick_hz == 0 || pulse_clock_hz < tick_hz || axis.drive.max_rate_hz == 0) {
-    return Error::kConfigInvalid;
-  }
-  edges_only_ = axis.output_format == PulseFormat::kQuadrature;
-  tick_ = pulse_clock_hz / tick_hz;
-  width_ = edges_only_ ? 0 : NsToClock(axis.drive.pulse_width_ns, pulse_clock_hz);
-  const uint32_t space = edges_only_ ? 0 : NsToClock(axis.drive.step_space_ns, pulse_clock_hz);
-  setup_ = NsToClock(axis.drive.dir_setup_ns, pulse_clock_hz);
-  hold_ = NsToClock(axis.drive.dir_hold_ns, pulse_clock_hz);
-  const uint32_t rate_period =
-      static_cast<uint32_t>((static_cast<uint64_t>(pulse_clock_hz) + axis.drive.max_rate_hz - 1) /
-                            axis.drive.max_rate_hz);
-  min_period_ = width_ + space > rate_period ? width_ + space : rate_period;
-  if (min_period_ == 0) min_period_ = 1;
-  if (min_period_ > tick_) return Error::kConfigInvalid;
-  max_per_tick_ = tick_ / min_period_;
-  if (max_per_tick_ > StepGenerator::kMaxPulsesPerTick) {
-    max_per_tick_ = StepGenerator::kMaxPulsesPerTick;
-  }
+  const Result<PulseTiming> t = PulseTiming::FromDrive(axis, tick_hz, pulse_clock_hz);
+  if (!t.ok()) return t.error();
+  t_ = *t;
   return Status::Ok();
 }
 
 PulsePlan StepGeneratorReference::Plan(int32_t target_steps) {
   PulsePlan plan;
-  plan.width = width_;
+  plan.width = t_.width;
   const int32_t owed =
       static_cast<int32_t>(static_cast<uint32_t>(target_steps) - static_cast<uint32_t>(position_));
   const bool want_negative = owed < 0;
   const uint32_t steps = static_cast<uint32_t>(want_negative ? -static_cast<int64_t>(owed) : owed);
-  int64_t earliest = last_rise_ + min_period_;
+  int64_t earliest = last_rise_ + t_.min_period;
   plan.negative = negative_;
   if (steps != 0 && want_negative != negative_) {
-    int64_t edge = last_fall_ + hold_;
+    int64_t edge = last_fall_ + t_.hold;
     if (edge < 0) edge = 0;
-    if (edge < tick_) {  // otherwise wait: the hold time runs into the next tick
+    if (edge < t_.tick) {  // otherwise wait: the hold time runs into the next tick
       plan.dir_change = true;
       plan.dir_edge = static_cast<uint32_t>(edge);
       plan.negative = negative_ = want_negative;
-      if (edge + setup_ > earliest) earliest = edge + setup_;
+      if (edge + t_.setup > earliest) earliest = edge + t_.setup;
     } else {
-      earliest = tick_;  // no pulses this tick
+      earliest = t_.tick;  // no pulses this tick
     }
   }
   if (earliest < 0) earliest = 0;
-  if (steps != 0 && plan.negative == want_negative && earliest < tick_) {
-    const uint32_t window = tick_ - static_cast<uint32_t>(earliest);
+  if (steps != 0 && plan.negative == want_negative && earliest < t_.tick) {
+    const uint32_t window = t_.tick - static_cast<uint32_t>(earliest);
     // The first pulse sits at `earliest`; n pulses need (n - 1) periods, all rises inside the tick.
-    uint32_t fit = (window - 1u) / min_period_ + 1u;
-    if (fit > max_per_tick_) fit = max_per_tick_;
+    uint32_t fit = (window - 1u) / t_.min_period + 1u;
+    if (fit > t_.max_per_tick) fit = t_.max_per_tick;
     const uint32_t n = steps < fit ? steps : fit;
     uint32_t period =
         static_cast<uint32_t>((static_cast<uint64_t>(window) * (0xFFFFFFFFu / n)) >> 32);
-    if (period < min_period_) period = min_period_;
+    if (period < t_.min_period) period = t_.min_period;
     plan.count = n;
     plan.first_rise = static_cast<uint32_t>(earliest);
     plan.period = period;
     last_rise_ = earliest + static_cast<int64_t>(n - 1) * period;
-    last_fall_ = last_rise_ + width_;
+    last_fall_ = last_rise_ + t_.width;
     position_ =
         static_cast<int32_t>(static_cast<uint32_t>(position_) +
                              (want_negative ? static_cast<uint32_t>(-static_cast<int64_t>(n)) : n));
   }
   // Move the time origin to the next tick start; keep far-past values bounded.
-  last_rise_ -= tick_;
-  last_fall_ -= tick_;
+  last_rise_ -= t_.tick;
+  last_fall_ -= t_.tick;
   if (last_rise_ < -(int64_t{1} << 40)) last_rise_ = -(int64_t{1} << 40);
   if (last_fall_ < -(int64_t{1} << 40)) last_fall_ = -(int64_t{1} << 40);
   return plan;

@@ -21,31 +21,48 @@ inline int32_t FloorFarPast(int32_t t) {
 
 }  // namespace
 
-Status StepGenerator::Configure(const AxisConfig& axis, uint32_t tick_hz, uint32_t pulse_clock_hz) {
+Result<PulseTiming> PulseTiming::FromDrive(const AxisConfig& axis,
+                                           uint32_t tick_hz,
+                                           uint32_t pulse_clock_hz) {
   if (tick_hz == 0 || pulse_clock_hz < tick_hz || axis.drive.max_rate_hz == 0) {
     return Error::kConfigInvalid;
   }
   constexpr uint32_t kTimeLimit = 1u << 29;
-  edges_only_ = axis.output_format == PulseFormat::kQuadrature;
-  tick_ = pulse_clock_hz / tick_hz;
-  width_ = edges_only_ ? 0 : NsToClock(axis.drive.pulse_width_ns, pulse_clock_hz);
-  const uint32_t space = edges_only_ ? 0 : NsToClock(axis.drive.step_space_ns, pulse_clock_hz);
+  const bool edges_only = axis.output_format == PulseFormat::kQuadrature;
+  PulseTiming t;
+  t.tick = pulse_clock_hz / tick_hz;
+  t.width = edges_only ? 0 : NsToClock(axis.drive.pulse_width_ns, pulse_clock_hz);
+  const uint32_t space = edges_only ? 0 : NsToClock(axis.drive.step_space_ns, pulse_clock_hz);
   const uint64_t setup = static_cast<uint64_t>(axis.drive.dir_setup_ns) * pulse_clock_hz;
   const uint64_t hold = static_cast<uint64_t>(axis.drive.dir_hold_ns) * pulse_clock_hz;
-  if (tick_ >= kTimeLimit || setup >= uint64_t{kTimeLimit} * 1000000000u ||
+  if (t.tick >= kTimeLimit || setup >= uint64_t{kTimeLimit} * 1000000000u ||
       hold >= uint64_t{kTimeLimit} * 1000000000u) {
     return Error::kConfigInvalid;
   }
-  setup_ = NsToClock(axis.drive.dir_setup_ns, pulse_clock_hz);
-  hold_ = NsToClock(axis.drive.dir_hold_ns, pulse_clock_hz);
+  t.setup = NsToClock(axis.drive.dir_setup_ns, pulse_clock_hz);
+  t.hold = NsToClock(axis.drive.dir_hold_ns, pulse_clock_hz);
   const uint32_t rate_period =
       static_cast<uint32_t>((static_cast<uint64_t>(pulse_clock_hz) + axis.drive.max_rate_hz - 1) /
                             axis.drive.max_rate_hz);
-  min_period_ = width_ + space > rate_period ? width_ + space : rate_period;
-  if (min_period_ == 0) min_period_ = 1;
-  if (min_period_ > tick_) return Error::kConfigInvalid;
-  max_per_tick_ = tick_ / min_period_;
-  if (max_per_tick_ > kMaxPulsesPerTick) max_per_tick_ = kMaxPulsesPerTick;
+  t.min_period = t.width + space > rate_period ? t.width + space : rate_period;
+  if (t.min_period == 0) t.min_period = 1;
+  if (t.min_period > t.tick) return Error::kConfigInvalid;
+  t.max_per_tick = t.tick / t.min_period;
+  if (t.max_per_tick > StepGenerator::kMaxPulsesPerTick) {
+    t.max_per_tick = StepGenerator::kMaxPulsesPerTick;
+  }
+  return t;
+}
+
+Status StepGenerator::Configure(const AxisConfig& axis, uint32_t tick_hz, uint32_t pulse_clock_hz) {
+  const Result<PulseTiming> t = PulseTiming::FromDrive(axis, tick_hz, pulse_clock_hz);
+  if (!t.ok()) return t.error();
+  tick_ = t->tick;
+  min_period_ = t->min_period;
+  width_ = t->width;
+  setup_ = t->setup;
+  hold_ = t->hold;
+  max_per_tick_ = t->max_per_tick;
   by_min_period_.Init(min_period_);
   for (uint32_t n = 1; n <= kMaxPulsesPerTick; ++n) recip_count_[n] = 0xFFFFFFFFu / n;
   return Status::Ok();

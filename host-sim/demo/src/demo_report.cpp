@@ -40,25 +40,28 @@ std::string Pct(double before, double after) {
   return before > 0 ? FormatFixed(100.0 * (1.0 - after / before), 2) + " %" : "n/a";
 }
 
+// |error| per point as markers (point number on x).
+report::XySeries NormSeries(const char* label,
+                            const char* color,
+                            const std::vector<model::Vec3>& errors_um) {
+  report::XySeries s;
+  s.label = label;
+  if (color != nullptr) s.color = color;
+  s.line = false;
+  for (size_t i = 0; i < errors_um.size(); ++i) {
+    s.x.push_back(static_cast<double>(i + 1));
+    s.y.push_back(model::Norm(errors_um[i]));
+  }
+  return s;
+}
+
 std::string PointsChart(const DemoResult& r) {
   report::XyChart c;
   c.title = "Volumetric error at the random points (laser tracker)";
   c.x_label = "point";
   c.y_label = "|error|, µm";
-  report::XySeries b, a;
-  b.label = "before";
-  a.label = "after";
-  a.color = "#d62728";
-  b.line = a.line = false;
-  for (size_t i = 0; i < r.before.points.targets_mm.size(); ++i) {
-    b.x.push_back(static_cast<double>(i + 1));
-    b.y.push_back(model::Norm(r.before.points.measured_error_um[i]));
-  }
-  for (size_t i = 0; i < r.after.points.targets_mm.size(); ++i) {
-    a.x.push_back(static_cast<double>(i + 1));
-    a.y.push_back(model::Norm(r.after.points.measured_error_um[i]));
-  }
-  c.series = {b, a};
+  c.series = {NormSeries("before", nullptr, r.before.points.measured_error_um),
+              NormSeries("after", "#d62728", r.after.points.measured_error_um)};
   return c.Render();
 }
 
@@ -67,18 +70,8 @@ std::string AfterPointsChart(const DemoResult& r) {
   c.title = "After compensation: tracker reading and machine model (no instrument error)";
   c.x_label = "point";
   c.y_label = "|error|, µm";
-  report::XySeries m, t;
-  m.label = "tracker";
-  t.label = "machine model";
-  t.color = "#2ca02c";
-  m.line = t.line = false;
-  for (size_t i = 0; i < r.after.points.targets_mm.size(); ++i) {
-    m.x.push_back(static_cast<double>(i + 1));
-    m.y.push_back(model::Norm(r.after.points.measured_error_um[i]));
-    t.x.push_back(static_cast<double>(i + 1));
-    t.y.push_back(model::Norm(r.after.points.true_error_um[i]));
-  }
-  c.series = {m, t};
+  c.series = {NormSeries("tracker", nullptr, r.after.points.measured_error_um),
+              NormSeries("machine model", "#2ca02c", r.after.points.true_error_um)};
   return c.Render();
 }
 

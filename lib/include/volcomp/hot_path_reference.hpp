@@ -28,13 +28,7 @@ class StepGeneratorReference {
   void Reset(int32_t position_steps) { position_ = position_steps; }
 
  private:
-  uint32_t tick_ = 0;
-  uint32_t min_period_ = 1;
-  uint32_t width_ = 0;
-  uint32_t setup_ = 0;
-  uint32_t hold_ = 0;
-  uint32_t max_per_tick_ = 0;
-  bool edges_only_ = false;
+  PulseTiming t_;  // the same conversion as StepGenerator (not what the comparison checks)
   int32_t position_ = 0;
   bool negative_ = false;
   int64_t last_rise_ = -(int64_t{1} << 40);  // relative to the current tick start

@@ -38,6 +38,23 @@ struct PulsePlan {
   uint32_t width = 0;       // high time, pulse-clock units
 };
 
+/// A drive's timing in pulse-clock units, as the generators use it.
+struct PulseTiming {
+  uint32_t tick = 0;          // tick length
+  uint32_t min_period = 1;    // minimum rise-to-rise: max(width + space, ceil(clock / max rate))
+  uint32_t width = 0;         // high time (0 for quadrature: a step is a single edge)
+  uint32_t setup = 0;         // direction edge to next rising edge
+  uint32_t hold = 0;          // last falling edge to direction edge
+  uint32_t max_per_tick = 0;  // pulses a tick can carry, at most StepGenerator::kMaxPulsesPerTick
+
+  /// Converts `axis`'s drive timing at `tick_hz` (times rounded up to whole clock units).
+  /// kConfigInvalid if the tick cannot carry even one pulse, or a time is 2^29 clock units or
+  /// more (over 0.5 s at 1 GHz; StepGenerator's int32 time arithmetic needs the headroom).
+  static Result<PulseTiming> FromDrive(const AxisConfig& axis,
+                                       uint32_t tick_hz,
+                                       uint32_t pulse_clock_hz);
+};
+
 class StepGenerator {
  public:
   /// Most pulses one tick may carry (bounds the reciprocal table).
@@ -81,9 +98,9 @@ class StepGenerator {
   int32_t last_rise_ = kFarPast;
   int32_t last_fall_ = kFarPast;
   bool negative_ = false;
-  bool edges_only_ = false;  // quadrature: a step is a single edge
-  uint32_t tick_ = 0;        // tick length, pulse-clock units
-  uint32_t min_period_ = 1;  // minimum rise-to-rise
+  // PulseTiming's fields, copied here so the hot path reads them right after the state.
+  uint32_t tick_ = 0;
+  uint32_t min_period_ = 1;
   uint32_t width_ = 0;
   uint32_t setup_ = 0;
   uint32_t hold_ = 0;
