@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "csp_drives.hpp"
 #include "frames.hpp"
 
 namespace volcomp {
@@ -24,35 +25,10 @@ using testing::ToString;
 
 constexpr uint8_t kBoardNode = 0x10;
 
-// Drive n (1..3) <-> axis n-1: RPDO1 0x200+n = controlword + target at offset 2, TPDO1 0x180+n =
-// statusword + actual at offset 2.
-GatewayConfig ThreeDrives() {
-  GatewayConfig c;
-  c.own_node_id = kBoardNode;
-  for (uint8_t a = 0; a < 3; ++a) {
-    c.map[c.map_count++] = {static_cast<uint16_t>(0x201 + a), PdoField::kTargetPosition, 2, a};
-    c.map[c.map_count++] = {static_cast<uint16_t>(0x181 + a), PdoField::kActualPosition, 2, a};
-  }
-  return c;
-}
+GatewayConfig ThreeDrives() { return testing::CspDriveMapping(3, kBoardNode); }
 
-// "0F00" + little-endian position: the PDO layout above.
-CanFrame Pdo(uint32_t id, uint16_t word, int32_t pos) {
-  CanFrame f;
-  f.id = id;
-  f.dlc = 6;
-  f.data[0] = static_cast<uint8_t>(word);
-  f.data[1] = static_cast<uint8_t>(word >> 8);
-  const uint32_t u = static_cast<uint32_t>(pos);
-  for (int i = 0; i < 4; ++i) f.data[2 + i] = static_cast<uint8_t>(u >> (8 * i));
-  return f;
-}
-
-int32_t PdoPos(const CanFrame& f) {
-  uint32_t u = 0;
-  for (int i = 0; i < 4; ++i) u |= uint32_t{f.data[2 + i]} << (8 * i);
-  return static_cast<int32_t>(u);
-}
+CanFrame Pdo(uint32_t id, uint16_t word, int32_t pos) { return testing::CspPdo(id, pos, word); }
+using testing::CspPdoPosition;
 
 class GatewayTest : public ::testing::Test {
  protected:
@@ -122,9 +98,9 @@ TEST_F(GatewayTest, AddsTheCorrectionToTheTargetAndLeavesTheRestOfThePdo) {
 
 TEST_F(GatewayTest, PositionsWrapLikeInteger32) {
   gw_.SetCorrection(0, 5);
-  EXPECT_EQ(PdoPos(Down(Pdo(0x201, 0x0F, INT32_MAX))), INT32_MIN + 4);
+  EXPECT_EQ(CspPdoPosition(Down(Pdo(0x201, 0x0F, INT32_MAX))), INT32_MIN + 4);
   gw_.SetCorrection(0, -5);
-  EXPECT_EQ(PdoPos(Down(Pdo(0x201, 0x0F, INT32_MIN + 2))), INT32_MAX - 2);
+  EXPECT_EQ(CspPdoPosition(Down(Pdo(0x201, 0x0F, INT32_MIN + 2))), INT32_MAX - 2);
   // The commanded position keeps counting across the wrap (relative to the first target).
   EXPECT_EQ(gw_.InputCounter(0), 3u);
 }
@@ -146,27 +122,28 @@ TEST_F(GatewayTest, FeedbackLosesTheCorrectionOfTheTargetTakenOverAtSync) {
   // Order 1: SYNC, then the RPDOs of the next cycle (drive takes them over at the next SYNC).
   gw_.SetCorrection(0, 10);
   Down(F(0x080, ""));
-  EXPECT_EQ(PdoPos(Down(Pdo(0x201, 0x0F, 1000))), 1010);  // cycle 1 target
+  EXPECT_EQ(CspPdoPosition(Down(Pdo(0x201, 0x0F, 1000))), 1010);  // cycle 1 target
   gw_.SetCorrection(0, 20);
-  Down(F(0x080, ""));                                     // the drive takes over 1010
-  EXPECT_EQ(PdoPos(Down(Pdo(0x201, 0x0F, 1100))), 1120);  // cycle 2 target, sent before the TPDO
+  Down(F(0x080, ""));  // the drive takes over 1010
+  EXPECT_EQ(CspPdoPosition(Down(Pdo(0x201, 0x0F, 1100))),
+            1120);  // cycle 2 target, sent before the TPDO
   // The drive reports 1010 (it follows perfectly): the controller must see its 1000.
-  EXPECT_EQ(PdoPos(Up(Pdo(0x181, 0x1237, 1010))), 1000);
+  EXPECT_EQ(CspPdoPosition(Up(Pdo(0x181, 0x1237, 1010))), 1000);
   EXPECT_EQ(gw_.feedback_correction(0), 10);
   Down(F(0x080, ""));  // the drive takes over 1120
-  EXPECT_EQ(PdoPos(Up(Pdo(0x181, 0x1237, 1120))), 1100);
+  EXPECT_EQ(CspPdoPosition(Up(Pdo(0x181, 0x1237, 1120))), 1100);
   // A following error of the drive itself stays visible to the controller.
-  EXPECT_EQ(PdoPos(Up(Pdo(0x181, 0x1237, 1117))), 1097);
+  EXPECT_EQ(CspPdoPosition(Up(Pdo(0x181, 0x1237, 1117))), 1097);
 }
 
 TEST_F(GatewayTest, FeedbackWithTargetsSentBeforeSync) {
   // Order 2: the RPDO of a cycle precedes its SYNC; the drive applies it at that SYNC.
   gw_.SetCorrection(1, -7);
-  EXPECT_EQ(PdoPos(Down(Pdo(0x202, 0x0F, 2000))), 1993);
+  EXPECT_EQ(CspPdoPosition(Down(Pdo(0x202, 0x0F, 2000))), 1993);
   Down(F(0x080, ""));
   gw_.SetCorrection(1, -9);
-  EXPECT_EQ(PdoPos(Down(Pdo(0x202, 0x0F, 2050))), 2041);  // next cycle, before the TPDO
-  EXPECT_EQ(PdoPos(Up(Pdo(0x182, 0x1237, 1993))), 2000);
+  EXPECT_EQ(CspPdoPosition(Down(Pdo(0x202, 0x0F, 2050))), 2041);  // next cycle, before the TPDO
+  EXPECT_EQ(CspPdoPosition(Up(Pdo(0x182, 0x1237, 1993))), 2000);
 }
 
 TEST_F(GatewayTest, LatestFeedbackModeUsesTheLastForwardedTarget) {
@@ -177,7 +154,7 @@ TEST_F(GatewayTest, LatestFeedbackModeUsesTheLastForwardedTarget) {
   Down(Pdo(0x203, 0x0F, 100));
   gw_.SetCorrection(2, 6);
   Down(Pdo(0x203, 0x0F, 200));
-  EXPECT_EQ(PdoPos(Up(Pdo(0x183, 0x1237, 206))), 200);  // no SYNC at all
+  EXPECT_EQ(CspPdoPosition(Up(Pdo(0x183, 0x1237, 206))), 200);  // no SYNC at all
 }
 
 TEST_F(GatewayTest, InvertedAxisCountsAgainstTheDrive) {
@@ -185,9 +162,9 @@ TEST_F(GatewayTest, InvertedAxisCountsAgainstTheDrive) {
   c.invert[0] = true;
   ASSERT_TRUE(gw_.Configure(c, 3).ok());
   gw_.SetCorrection(0, 10);  // +10 machine steps = -10 drive increments
-  EXPECT_EQ(PdoPos(Down(Pdo(0x201, 0x0F, 5000))), 4990);
+  EXPECT_EQ(CspPdoPosition(Down(Pdo(0x201, 0x0F, 5000))), 4990);
   Down(F(0x080, ""));
-  EXPECT_EQ(PdoPos(Up(Pdo(0x181, 0x1237, 4990))), 5000);
+  EXPECT_EQ(CspPdoPosition(Up(Pdo(0x181, 0x1237, 4990))), 5000);
   Down(Pdo(0x201, 0x0F, 4900));  // the drive moves -100: the machine axis +100
   EXPECT_EQ(gw_.InputCounter(0), 100u);
 }

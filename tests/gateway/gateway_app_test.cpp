@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "csp_drives.hpp"
 #include "test_tables.hpp"
 #include "volcomp/canopen/object_dictionary.hpp"
 #include "volcomp/canopen/sdo_abort.hpp"
@@ -82,25 +83,9 @@ firmware::BoardSettings Settings() {
   return s;
 }
 
-gateway::GatewayConfig Mapping() {
-  gateway::GatewayConfig c;
-  for (uint8_t a = 0; a < 3; ++a) {
-    c.map[c.map_count++] = {static_cast<uint16_t>(kRpdo[a]), gateway::PdoField::kTargetPosition, 2,
-                            a};
-    c.map[c.map_count++] = {static_cast<uint16_t>(kTpdo[a]), gateway::PdoField::kActualPosition, 2,
-                            a};
-  }
-  return c;
-}
+gateway::GatewayConfig Mapping() { return testing::CspDriveMapping(3); }
 
-CanFrame Pdo(uint32_t id, int32_t pos) {
-  CanFrame f;
-  f.id = id;
-  f.dlc = 6;
-  f.data[0] = 0x0F;
-  StoreLe32(f.data + 2, static_cast<uint32_t>(pos));
-  return f;
-}
+CanFrame Pdo(uint32_t id, int32_t pos) { return testing::CspPdo(id, pos); }
 
 // The CNC master, the drives and the board, one 1 ms cycle per Cycle() (one control tick).
 class Machine {
@@ -143,7 +128,7 @@ class Machine {
       }
       for (int a = 0; a < 3; ++a) {
         if (f.id == kRpdo[a]) {
-          pending_[a] = static_cast<int32_t>(LoadLe32(f.data + 2));
+          pending_[a] = testing::CspPdoPosition(f);
           has_pending_[a] = true;
           correction_[a] = pending_[a] - target_[a];
         }
@@ -154,7 +139,7 @@ class Machine {
     for (const CanFrame& f : cnc_.TakeSent()) {
       for (int a = 0; a < 3; ++a) {
         if (f.id == kTpdo[a]) {
-          const int32_t seen = static_cast<int32_t>(LoadLe32(f.data + 2));
+          const int32_t seen = testing::CspPdoPosition(f);
           feedback_ok_ = feedback_ok_ && seen == commanded_at_takeover_[a];
           ++feedback_frames_;
         }

@@ -5,7 +5,7 @@
 // tests/uml/run_uml_gateway.sh from candump timestamps.
 #include <benchmark/benchmark.h>
 
-#include "volcomp/byte_order.hpp"
+#include "csp_drives.hpp"
 #include "volcomp/csp_gateway.hpp"
 #include "volcomp/fw_linux/gateway_app.hpp"
 #include "volcomp/hal/mock/mock_devices.hpp"
@@ -13,32 +13,15 @@
 namespace volcomp {
 namespace {
 
-gateway::GatewayConfig Mapping(uint8_t axes) {
-  gateway::GatewayConfig c;
-  c.own_node_id = 0x10;
-  for (uint8_t a = 0; a < axes; ++a) {
-    c.map[c.map_count++] = {static_cast<uint16_t>(0x201 + a), gateway::PdoField::kTargetPosition, 2,
-                            a};
-    c.map[c.map_count++] = {static_cast<uint16_t>(0x181 + a), gateway::PdoField::kActualPosition, 2,
-                            a};
-  }
-  return c;
-}
+gateway::GatewayConfig Mapping(uint8_t axes) { return testing::CspDriveMapping(axes, 0x10); }
 
-CanFrame Pdo(uint32_t id, int32_t pos) {
-  CanFrame f;
-  f.id = id;
-  f.dlc = 6;
-  f.data[0] = 0x0F;
-  StoreLe32(f.data + 2, static_cast<uint32_t>(pos));
-  return f;
-}
+using testing::CspPdo;
 
 void BM_GatewayTargetRpdo(benchmark::State& state) {
   gateway::CspGateway gw;
   if (!gw.Configure(Mapping(6), 6).ok()) state.SkipWithError("config");
   gw.SetCorrection(5, 17);
-  CanFrame in = Pdo(0x206, 1000), out;  // the last mapping: the longest scan
+  CanFrame in = CspPdo(0x206, 1000), out;  // the last mapping: the longest scan
   for (auto _ : state) {
     in.data[2] = static_cast<uint8_t>(in.data[2] + 1);
     benchmark::DoNotOptimize(gw.FromController(in, &out));
@@ -50,7 +33,7 @@ BENCHMARK(BM_GatewayTargetRpdo);
 void BM_GatewayActualTpdo(benchmark::State& state) {
   gateway::CspGateway gw;
   if (!gw.Configure(Mapping(6), 6).ok()) state.SkipWithError("config");
-  CanFrame in = Pdo(0x186, 1000), out;
+  CanFrame in = CspPdo(0x186, 1000), out;
   for (auto _ : state) {
     in.data[2] = static_cast<uint8_t>(in.data[2] + 1);
     benchmark::DoNotOptimize(gw.FromDrive(in, &out));
@@ -62,7 +45,7 @@ BENCHMARK(BM_GatewayActualTpdo);
 void BM_GatewayUnmapped(benchmark::State& state) {
   gateway::CspGateway gw;
   if (!gw.Configure(Mapping(6), 6).ok()) state.SkipWithError("config");
-  CanFrame in = Pdo(0x381, 1000), out;
+  CanFrame in = CspPdo(0x381, 1000), out;
   for (auto _ : state) {
     benchmark::DoNotOptimize(gw.FromController(in, &out));
     benchmark::DoNotOptimize(out);
@@ -79,7 +62,7 @@ void BM_GatewayAppForward(benchmark::State& state) {
   firmware::BoardSettings s;
   s.board.tick_hz = 1000;
   if (!app.Start(s, Mapping(3)).ok()) state.SkipWithError("start");
-  CanFrame in = Pdo(0x201, 1000);
+  CanFrame in = CspPdo(0x201, 1000);
   uint32_t n = 0;
   for (auto _ : state) {
     in.data[2] = static_cast<uint8_t>(in.data[2] + 1);
