@@ -1,13 +1,11 @@
 // CiA 301 node: NMT, heartbeat, EMCY, communication objects, SDO routing.
 #include "volcomp/byte_order.hpp"
+#include "volcomp/canopen/board_protocol.hpp"
 #include "volcomp/canopen/node.hpp"
 #include "volcomp/canopen/sdo_abort.hpp"
+#include "volcomp/canopen/sdo_protocol.hpp"
 
 namespace volcomp::canopen {
-namespace {
-constexpr uint32_t kNmtId = 0x000, kEmcyBase = 0x080, kSdoRxBase = 0x600, kSdoTxBase = 0x580,
-                   kHeartbeatBase = 0x700;
-}  // namespace
 
 void Node::Start(uint8_t node_id, ObjectValues* app, uint32_t now_ms, const SdoServerConfig& sdo) {
   node_id_ = node_id;
@@ -17,7 +15,7 @@ void Node::Start(uint8_t node_id, ObjectValues* app, uint32_t now_ms, const SdoS
   urgent_count_ = 0;
   reset_ = ResetRequest::kNone;
   CanFrame boot;
-  boot.id = kHeartbeatBase + node_id_;
+  boot.id = kHeartbeatCobBase + node_id_;
   boot.dlc = 1;
   boot.data[0] = 0x00;
   QueueUrgent(boot);
@@ -36,7 +34,7 @@ void Node::QueueUrgent(const CanFrame& f) {
 
 void Node::OnFrame(const CanFrame& f, uint32_t now_ms) {
   if (f.extended) return;
-  if (f.id == kNmtId) {
+  if (f.id == kNmtCobId) {
     if (f.rtr || f.dlc != 2) {
       ++malformed_;
       return;
@@ -64,7 +62,8 @@ void Node::OnFrame(const CanFrame& f, uint32_t now_ms) {
     }
     return;
   }
-  if (f.id == kSdoRxBase + node_id_ && state_ != NmtState::kStopped) sdo_.OnFrame(f, now_ms);
+  if (f.id == sdo::kRequestCobBase + node_id_ && state_ != NmtState::kStopped)
+    sdo_.OnFrame(f, now_ms);
 }
 
 void Node::Poll(uint32_t now_ms) {
@@ -74,14 +73,14 @@ void Node::Poll(uint32_t now_ms) {
   if (sdo_.aborts() != reported_aborts_) {
     reported_aborts_ = sdo_.aborts();
     const uint32_t code = sdo_.last_abort();
-    if ((code >> 16) == 0x0503 || (code >> 16) == 0x0504) {
+    if (IsProtocolAbort(code)) {
       ReportEvent(kEmcySdoTransferFailed, kErrCommunication, code);
     }
   }
   if (heartbeat_ms_ != 0 && static_cast<uint32_t>(now_ms - last_heartbeat_ms_) >= heartbeat_ms_) {
     last_heartbeat_ms_ = now_ms;
     CanFrame hb;
-    hb.id = kHeartbeatBase + node_id_;
+    hb.id = kHeartbeatCobBase + node_id_;
     hb.dlc = 1;
     hb.data[0] = static_cast<uint8_t>(state_);
     QueueUrgent(hb);
@@ -104,13 +103,11 @@ void Node::RaiseError(uint16_t code, uint8_t register_bits, const uint8_t* manuf
   history_[0] = code;
   if (history_count_ < 8) ++history_count_;
   if (state_ == NmtState::kStopped) return;  // EMCY is not sent while stopped
-  CanFrame e;
-  e.id = kEmcyBase + node_id_;
-  e.dlc = 8;
-  StoreLe16(e.data, code);
-  e.data[2] = error_register_;
-  for (int i = 0; i < 5; ++i) e.data[3 + i] = manufacturer != nullptr ? manufacturer[i] : 0;
-  QueueUrgent(e);
+  Emcy e;
+  e.code = code;
+  e.error_register = error_register_;
+  for (int i = 0; i < 5; ++i) e.data[i] = manufacturer != nullptr ? manufacturer[i] : 0;
+  QueueUrgent(EncodeEmcy(node_id_, e));
   ++emcy_sent_;
 }
 
@@ -118,10 +115,9 @@ void Node::ClearErrors() {
   if (error_register_ == 0) return;
   error_register_ = 0;
   if (state_ == NmtState::kStopped) return;
-  CanFrame e;
-  e.id = kEmcyBase + node_id_;
-  e.dlc = 8;
-  QueueUrgent(e);
+  Emcy reset;
+  reset.code = kEmcyErrorReset;
+  QueueUrgent(EncodeEmcy(node_id_, reset));
   ++emcy_sent_;
 }
 
@@ -142,16 +138,16 @@ bool Node::ReadCommunication(const ObjectEntry& e, uint32_t* value) const {
       *value = history_count_;
       return true;
     case ObjectId::kCobIdEmcy:
-      *value = kEmcyBase + node_id_;
+      *value = kEmcyCobBase + node_id_;
       return true;
     case ObjectId::kHeartbeatTime:
       *value = heartbeat_ms_;
       return true;
     case ObjectId::kSdoCobIdRx:
-      *value = kSdoRxBase + node_id_;
+      *value = sdo::kRequestCobBase + node_id_;
       return true;
     case ObjectId::kSdoCobIdTx:
-      *value = kSdoTxBase + node_id_;
+      *value = sdo::kResponseCobBase + node_id_;
       return true;
     default:
       if (e.index == 0x1003 && e.sub >= 1 && e.sub <= 8) {

@@ -5,11 +5,13 @@
 #include "volcomp/byte_order.hpp"
 #include "volcomp/canopen/crc16.hpp"
 #include "volcomp/canopen/sdo_abort.hpp"
+#include "volcomp/canopen/sdo_protocol.hpp"
 
 namespace volcomp::canopen {
+using namespace sdo;  // NOLINT(build/namespaces): the frame vocabulary of this file
+
 namespace {
 
-constexpr uint32_t kSdoTxBase = 0x580;
 constexpr uint32_t kSmallCapacity = 64;
 
 bool Elapsed(uint32_t now_ms, uint32_t since_ms, uint32_t limit_ms) {
@@ -22,7 +24,9 @@ void SdoServer::Init(uint8_t node_id, ObjectValues* values, const SdoServerConfi
   node_id_ = node_id;
   values_ = values;
   config_ = config;
-  if (config_.block_size < 1 || config_.block_size > 127) config_.block_size = 127;
+  if (config_.block_size < 1 || config_.block_size > kMaxBlockSize) {
+    config_.block_size = kMaxBlockSize;
+  }
   state_ = State::kIdle;
   tx_count_ = 0;
   aborts_ = malformed_ = last_abort_ = 0;
@@ -30,7 +34,7 @@ void SdoServer::Init(uint8_t node_id, ObjectValues* values, const SdoServerConfi
 
 CanFrame SdoServer::Frame(uint8_t cmd) const {
   CanFrame f;
-  f.id = kSdoTxBase + node_id_;
+  f.id = kResponseCobBase + node_id_;
   f.dlc = 8;
   f.data[0] = cmd;
   return f;
@@ -65,7 +69,7 @@ void SdoServer::EndTransfer(bool complete) {
 void SdoServer::Abort(uint32_t code) {
   uint8_t payload[4];
   StoreLe32(payload, code);
-  Respond(0x80, payload);
+  Respond(kAbort, payload);
   EndTransfer(false);
   ++aborts_;
   last_abort_ = code;
@@ -111,7 +115,7 @@ void SdoServer::OnFrame(const CanFrame& f, uint32_t now_ms) {
   }
   last_rx_ms_ = now_ms;
   const uint8_t cmd = f.data[0];
-  if (cmd == 0x80) {  // abort from the client: end silently
+  if (cmd == kAbort) {  // abort from the client: end silently
     if (state_ != State::kIdle) {
       ++aborts_;
       last_abort_ = LoadLe32(f.data + 4);
@@ -124,20 +128,20 @@ void SdoServer::OnFrame(const CanFrame& f, uint32_t now_ms) {
       HandleIdle(f);
       return;
     case State::kDownloadSegmented:
-      if ((cmd >> 5) == 0) return DownloadSegment(f);
+      if (Specifier(cmd) == kCcsDownloadSegment) return DownloadSegment(f);
       break;
     case State::kUploadSegmented:
-      if ((cmd >> 5) == 3) return UploadSegment(f);
+      if (Specifier(cmd) == kCcsUploadSegment) return UploadSegment(f);
       break;
     case State::kBlockDownload:
       return BlockDownloadSegment(f);
     case State::kBlockDownloadEnd:
-      if ((cmd & 0xE3) == 0xC1) return BlockDownloadEnd(f);
+      if (IsBlockDownloadEnd(cmd)) return BlockDownloadEnd(f);
       // A repeated last segment (our ack was lost): acknowledge again.
-      if ((cmd & 0x7F) == last_seq_) return SendBlockAck();
+      if (BlockSequence(cmd) == last_seq_) return SendBlockAck();
       break;
     case State::kBlockUploadWaitStart:
-      if (cmd == 0xA3) {
+      if (cmd == Block(kCcsBlockUpload, kBlockStartUpload)) {
         state_ = State::kBlockUploadSend;
         up_seq_ = 1;
         return;
@@ -145,14 +149,14 @@ void SdoServer::OnFrame(const CanFrame& f, uint32_t now_ms) {
       break;
     case State::kBlockUploadSend:
     case State::kBlockUploadWaitAck:
-      if (cmd == 0xA2) return BlockUploadAck(f);
+      if (cmd == Block(kCcsBlockUpload, kBlockAck)) return BlockUploadAck(f);
       break;
     case State::kBlockUploadWaitEndAck:
-      if (cmd == 0xA1) return BlockUploadEndAck(f);
+      if (cmd == Block(kCcsBlockUpload, kBlockEnd)) return BlockUploadEndAck(f);
       break;
   }
   // A new initiate while a transfer runs: the client gave up on the old one; start over.
-  if ((cmd >> 5) == 1 || (cmd >> 5) == 2 || (cmd & 0xE1) == 0xC0 || (cmd & 0xE3) == 0xA0) {
+  if (IsInitiate(cmd)) {
     EndTransfer(false);
     HandleIdle(f);
     return;
@@ -162,20 +166,10 @@ void SdoServer::OnFrame(const CanFrame& f, uint32_t now_ms) {
 
 void SdoServer::HandleIdle(const CanFrame& f) {
   const uint8_t cmd = f.data[0];
-  switch (cmd >> 5) {
-    case 1:
-      return InitiateDownload(f);
-    case 2:
-      return InitiateUpload(f);
-    case 5:
-      if ((cmd & 0x03) == 0) return InitiateBlockUpload(f);
-      break;
-    case 6:
-      if ((cmd & 0x01) == 0) return InitiateBlockDownload(f);
-      break;
-    default:
-      break;
-  }
+  if (IsInitiateDownload(cmd)) return InitiateDownload(f);
+  if (IsInitiateUpload(cmd)) return InitiateUpload(f);
+  if (IsBlockUploadInitiate(cmd)) return InitiateBlockUpload(f);
+  if (IsBlockDownloadInitiate(cmd)) return InitiateBlockDownload(f);
   index_ = LoadLe16(f.data + 1);
   sub_ = f.data[3];
   Abort(kAbortCommand);
@@ -185,13 +179,13 @@ void SdoServer::InitiateDownload(const CanFrame& f) {
   const uint8_t cmd = f.data[0];
   const uint32_t code = Lookup(LoadLe16(f.data + 1), f.data[3], true);
   if (code != 0) return Abort(code);
-  const bool expedited = (cmd & 0x02) != 0, size_indicated = (cmd & 0x01) != 0;
+  const bool expedited = (cmd & kExpedited) != 0, size_indicated = (cmd & kSizeIndicated) != 0;
   domain_ = false;
   small_len_ = 0;
   offset_ = 0;
   crc_on_ = false;
   if (expedited) {
-    uint32_t n = size_indicated ? 4u - ((cmd >> 2) & 0x03u) : 4u;
+    uint32_t n = ExpeditedBytes(cmd);
     const uint32_t fixed = FixedSize(entry_->type);
     if (!size_indicated && fixed != 0) n = fixed;
     if (entry_->type == DataType::kDomain) {
@@ -204,13 +198,13 @@ void SdoServer::InitiateDownload(const CanFrame& f) {
       const uint32_t c = values_->Write(*entry_, f.data + 4, n);
       if (c != 0) return Abort(c);
     }
-    return Respond(0x60);
+    return Respond(Command(kScsInitiateDownload));
   }
   const uint32_t c = BeginTransfer(size_indicated, size_indicated ? LoadLe32(f.data + 4) : 0);
   if (c != 0) return Abort(c);
   toggle_ = 0;
   state_ = State::kDownloadSegmented;
-  Respond(0x60);
+  Respond(Command(kScsInitiateDownload));
 }
 
 uint32_t SdoServer::BeginTransfer(bool size_known, uint32_t size) {
@@ -226,13 +220,13 @@ uint32_t SdoServer::BeginTransfer(bool size_known, uint32_t size) {
 
 void SdoServer::DownloadSegment(const CanFrame& f) {
   const uint8_t cmd = f.data[0];
-  if (((cmd >> 4) & 1u) != toggle_) return Abort(kAbortToggle);
-  const uint32_t n = 7u - ((cmd >> 1) & 0x07u);
+  if (ToggleOf(cmd) != toggle_) return Abort(kAbortToggle);
+  const uint32_t n = SegmentBytes(cmd);
   const uint32_t c = Deliver(f.data + 1, n);
   if (c != 0) return Abort(c);
-  const uint8_t response = static_cast<uint8_t>(0x20 | (toggle_ << 4));
+  const uint8_t response = SegmentAck(kScsDownloadSegment, toggle_);
   toggle_ = static_cast<uint8_t>(toggle_ ^ 1u);
-  if ((cmd & 0x01) != 0) {  // last segment
+  if ((cmd & kLastSegment) != 0) {
     const uint32_t done = FinishDownload();
     if (done != 0) return Abort(done);
     state_ = State::kIdle;
@@ -249,7 +243,7 @@ void SdoServer::InitiateUpload(const CanFrame& f) {
   const uint32_t c = values_->Read(*entry_, 0, buf, 4, &copied, &total);
   if (c != 0) return Abort(c);
   if (total >= 1 && total <= 4 && copied == total) {
-    return Respond(static_cast<uint8_t>(0x43 | ((4u - total) << 2)), buf);
+    return Respond(Initiate(kScsInitiateUpload, total, true), buf);
   }
   size_ = total;
   offset_ = 0;
@@ -257,19 +251,18 @@ void SdoServer::InitiateUpload(const CanFrame& f) {
   state_ = State::kUploadSegmented;
   uint8_t size_le[4];
   StoreLe32(size_le, total);
-  Respond(0x41, size_le);
+  Respond(Initiate(kScsInitiateUpload, 0, true), size_le);
 }
 
 void SdoServer::UploadSegment(const CanFrame& f) {
-  const uint8_t t = (f.data[0] >> 4) & 1u;
-  if (t != toggle_) return Abort(kAbortToggle);
+  if (ToggleOf(f.data[0]) != toggle_) return Abort(kAbortToggle);
   CanFrame r = Frame(0);
   uint32_t copied = 0, total = 0;
-  const uint32_t c = values_->Read(*entry_, offset_, r.data + 1, 7, &copied, &total);
+  const uint32_t c = values_->Read(*entry_, offset_, r.data + 1, kSegmentBytes, &copied, &total);
   if (c != 0) return Abort(c);
   offset_ += copied;
-  const bool last = offset_ >= size_ || copied < 7;
-  r.data[0] = static_cast<uint8_t>((toggle_ << 4) | ((7u - copied) << 1) | (last ? 1u : 0u));
+  const bool last = offset_ >= size_ || copied < kSegmentBytes;
+  r.data[0] = Segment(toggle_, copied, last);
   toggle_ = static_cast<uint8_t>(toggle_ ^ 1u);
   if (last) state_ = State::kIdle;
   Queue(r);
@@ -279,8 +272,8 @@ void SdoServer::InitiateBlockDownload(const CanFrame& f) {
   const uint8_t cmd = f.data[0];
   const uint32_t code = Lookup(LoadLe16(f.data + 1), f.data[3], true);
   if (code != 0) return Abort(code);
-  const bool size_indicated = (cmd & 0x02) != 0;
-  crc_on_ = (cmd & 0x04) != 0;
+  const bool size_indicated = (cmd & kBlockSizeIndicated) != 0;
+  crc_on_ = (cmd & kBlockCrc) != 0;
   crc_ = 0;
   offset_ = 0;
   small_len_ = 0;
@@ -294,12 +287,12 @@ void SdoServer::InitiateBlockDownload(const CanFrame& f) {
   awaiting_first_ = true;
   state_ = State::kBlockDownload;
   const uint8_t payload[4] = {blksize_, 0, 0, 0};
-  Respond(static_cast<uint8_t>(0xA0 | (crc_on_ ? 0x04 : 0x00)), payload);
+  Respond(Block(kScsBlockDownload, kBlockInitiate, crc_on_), payload);
 }
 
 void SdoServer::BlockDownloadSegment(const CanFrame& f) {
-  const uint8_t seq = f.data[0] & 0x7F;
-  const bool last = (f.data[0] & 0x80) != 0;
+  const uint8_t seq = BlockSequence(f.data[0]);
+  const bool last = (f.data[0] & kBlockLastSegment) != 0;
   if (seq == 0 || seq > blksize_) return;  // not a segment of this sub-block: ignore
   if (seq <= last_seq_) return;            // duplicate
   if (seq != last_seq_ + 1) {
@@ -309,10 +302,10 @@ void SdoServer::BlockDownloadSegment(const CanFrame& f) {
   }
   awaiting_first_ = false;
   if (have_held_) {
-    const uint32_t c = Deliver(held_, 7);
+    const uint32_t c = Deliver(held_, kSegmentBytes);
     if (c != 0) return Abort(c);
   }
-  for (int i = 0; i < 7; ++i) held_[i] = f.data[1 + i];
+  for (int i = 0; i < static_cast<int>(kSegmentBytes); ++i) held_[i] = f.data[1 + i];
   have_held_ = true;
   last_seq_ = seq;
   if (last) {
@@ -325,7 +318,7 @@ void SdoServer::BlockDownloadSegment(const CanFrame& f) {
 }
 
 void SdoServer::SendBlockAck() {
-  CanFrame r = Frame(0xA2);
+  CanFrame r = Frame(Block(kScsBlockDownload, kBlockAck));
   r.data[1] = last_seq_;
   r.data[2] = blksize_;
   Queue(r);
@@ -336,9 +329,9 @@ void SdoServer::SendBlockAck() {
 }
 
 void SdoServer::BlockDownloadEnd(const CanFrame& f) {
-  const uint32_t unused = (f.data[0] >> 2) & 0x07u;
+  const uint32_t unused = BlockEndUnused(f.data[0]);
   if (have_held_) {
-    const uint32_t c = Deliver(held_, 7u - unused);
+    const uint32_t c = Deliver(held_, kSegmentBytes - unused);
     if (c != 0) return Abort(c);
     have_held_ = false;
   }
@@ -346,7 +339,7 @@ void SdoServer::BlockDownloadEnd(const CanFrame& f) {
   const uint32_t done = FinishDownload();
   if (done != 0) return Abort(done);
   state_ = State::kIdle;
-  CanFrame r = Frame(0xA1);
+  CanFrame r = Frame(Block(kScsBlockDownload, kBlockEnd));
   Queue(r);
 }
 
@@ -355,30 +348,30 @@ void SdoServer::InitiateBlockUpload(const CanFrame& f) {
   const uint32_t code = Lookup(LoadLe16(f.data + 1), f.data[3], false);
   if (code != 0) return Abort(code);
   const uint8_t blk = f.data[4];
-  if (blk < 1 || blk > 127) return Abort(kAbortBlockSize);
+  if (blk < 1 || blk > kMaxBlockSize) return Abort(kAbortBlockSize);
   uint8_t probe[1];
   uint32_t copied = 0, total = 0;
   const uint32_t c = values_->Read(*entry_, 0, probe, 0, &copied, &total);
   if (c != 0) return Abort(c);
   size_ = total;
   offset_ = 0;
-  crc_on_ = (cmd & 0x04) != 0;
+  crc_on_ = (cmd & kBlockCrc) != 0;
   crc_ = 0;
   up_blksize_ = blk;
   up_seq_ = 1;
   state_ = State::kBlockUploadWaitStart;
   uint8_t size_le[4];
   StoreLe32(size_le, total);
-  Respond(static_cast<uint8_t>(0xC2 | (crc_on_ ? 0x04 : 0x00)), size_le);
+  Respond(Block(kScsBlockUpload, kBlockInitiate, crc_on_, true), size_le);
 }
 
 void SdoServer::BlockUploadAck(const CanFrame& f) {
   const uint8_t ackseq = f.data[1];
   const uint8_t next_blk = f.data[2];
   const uint32_t sent_here = static_cast<uint32_t>(up_seq_ - 1u);
-  if (ackseq > sent_here || next_blk < 1 || next_blk > 127) return Abort(kAbortSequence);
+  if (ackseq > sent_here || next_blk < 1 || next_blk > kMaxBlockSize) return Abort(kAbortSequence);
   // Bytes confirmed by this ack: fold them into the CRC.
-  uint32_t confirmed = ackseq * 7u;
+  uint32_t confirmed = ackseq * kSegmentBytes;
   if (offset_ + confirmed > size_) confirmed = size_ - offset_;
   uint8_t buf[28];
   uint32_t done = 0;
@@ -395,12 +388,10 @@ void SdoServer::BlockUploadAck(const CanFrame& f) {
   up_seq_ = 1;
   if (offset_ >= size_) {
     // All data confirmed: end with the CRC and the unused byte count of the last segment.
-    const uint32_t tail = size_ % 7u;
-    const uint32_t unused = (size_ == 0 || tail == 0) ? (size_ == 0 ? 7u : 0u) : 7u - tail;
-    CanFrame r;
-    r.id = kSdoTxBase + node_id_;
-    r.dlc = 8;
-    r.data[0] = static_cast<uint8_t>(0xC1 | (unused << 2));
+    const uint32_t tail = size_ % kSegmentBytes;
+    const uint32_t unused =
+        (size_ == 0 || tail == 0) ? (size_ == 0 ? kSegmentBytes : 0u) : kSegmentBytes - tail;
+    CanFrame r = Frame(BlockEndCommand(kScsBlockUpload, unused));
     StoreLe16(r.data + 1, crc_);
     Queue(r);
     state_ = State::kBlockUploadWaitEndAck;
@@ -438,16 +429,16 @@ bool SdoServer::PopTx(CanFrame* frame) {
   }
   if (state_ != State::kBlockUploadSend) return false;
   // Generate the next block upload segment on demand.
-  const uint32_t start = offset_ + (up_seq_ - 1u) * 7u;
+  const uint32_t start = offset_ + (up_seq_ - 1u) * kSegmentBytes;
   CanFrame r = Frame(0);
   uint32_t copied = 0, total = 0;
-  const uint32_t c = values_->Read(*entry_, start, r.data + 1, 7, &copied, &total);
+  const uint32_t c = values_->Read(*entry_, start, r.data + 1, kSegmentBytes, &copied, &total);
   if (c != 0) {
     Abort(c);
     return PopTx(frame);
   }
   const bool last = start + copied >= size_;
-  r.data[0] = static_cast<uint8_t>(up_seq_ | (last ? 0x80 : 0x00));
+  r.data[0] = BlockSegment(up_seq_, last);
   if (last || up_seq_ == up_blksize_) {
     state_ = State::kBlockUploadWaitAck;
   }

@@ -7,6 +7,7 @@
 #include <optional>
 
 #include "test_tables.hpp"
+#include "volcomp/canopen/board_protocol.hpp"
 #include "volcomp/canopen/object_dictionary.hpp"
 #include "volcomp/canopen/sdo_abort.hpp"
 #include "volcomp/canopen_client/node_objects.hpp"
@@ -21,6 +22,7 @@ namespace volcomp {
 namespace {
 
 using canopen::ObjectId;
+using canopen::TableCommand;
 using canopen_client::SdoClient;
 using canopen_client::SdoResult;
 using hal::InputLine;
@@ -93,6 +95,7 @@ class Bench : public ::testing::Test {
     c.StartDownload(e.index, e.sub, canopen_client::NumericPayload(id, value));
     return Run(c);
   }
+  SdoResult Command(TableCommand c) { return Write(ObjectId::kTableControl, canopen::Value(c)); }
   uint32_t Read(ObjectId id) {
     const auto& e = canopen::Entry(id);
     SdoClient c(kNode);
@@ -142,7 +145,8 @@ class Bench : public ::testing::Test {
   int CountEmcy(uint16_t code) const {
     int n = 0;
     for (const CanFrame& f : sent_) {
-      if (f.id == 0x80u + kNode && LoadLe16(f.data) == code) ++n;
+      canopen::Emcy e;
+      if (canopen::DecodeEmcy(f, kNode, &e) && e.code == code) ++n;
     }
     return n;
   }
@@ -166,7 +170,7 @@ TEST_F(Bench, UploadIsRefusedWhileWriteProtectedAndAllowedWhenUnlocked) {
   SdoResult r = Upload(img);
   EXPECT_FALSE(r.ok);
   EXPECT_EQ(r.abort_code, canopen::kAbortCannotStore);
-  EXPECT_EQ(CountEmcy(firmware::kEmcyRefused), 1);
+  EXPECT_EQ(CountEmcy(canopen::kEmcyRefused), 1);
   EXPECT_EQ(Read(ObjectId::kRefusedActions), 1u);
   EXPECT_EQ(Read(ObjectId::kWriteAccess), 0u);
   // Wrong signature: refused; right one: writable for 60 s.
@@ -190,36 +194,37 @@ TEST_F(Bench, ActivationNeedsReferencedAxesAtRest) {
   io_.SetInput(InputLine::kWriteEnable, true);
   const testing::AlignedBytes img = UniformImage(6, 77);
   ASSERT_TRUE(Upload(img).ok);
-  ASSERT_TRUE(Write(ObjectId::kTableControl, 4).ok);  // verify
+  ASSERT_TRUE(Command(TableCommand::kVerify).ok);  // verify
   const uint32_t status = Read(ObjectId::kTableStatus);
-  EXPECT_EQ((status >> 8) & 0xFF, uint32_t(firmware::StagedState::kVerified)) << std::hex << status;
+  EXPECT_EQ(canopen::DecodeTableStatus(status).staged, canopen::StagedState::kVerified)
+      << std::hex << status;
   EXPECT_EQ(Read(ObjectId::kStagedTableCrc), LoadLe32(img.data() + img.size() - 4));
   EXPECT_EQ(Read(ObjectId::kStagedTableId), 77u);
   // Not referenced: refused with 0x08000022 and an EMCY.
-  SdoResult r = Write(ObjectId::kTableControl, 1);
+  SdoResult r = Command(TableCommand::kActivate);
   EXPECT_EQ(r.abort_code, canopen::kAbortDeviceState);
   EXPECT_NE(r.message.find("not allowed in the present device state"), std::string::npos);
-  EXPECT_EQ(CountEmcy(firmware::kEmcyRefused), 1);
+  EXPECT_EQ(CountEmcy(canopen::kEmcyRefused), 1);
   // Reference over CAN, then move an axis: still refused while moving.
   ASSERT_TRUE(Write(ObjectId::kReferenceAxes, 0x07).ok);
   EXPECT_TRUE(app_.engine().all_referenced());
   step_io_.add_steps(0, 100);
   Step(1);
-  EXPECT_EQ(Write(ObjectId::kTableControl, 1).abort_code, canopen::kAbortDeviceState);
+  EXPECT_EQ(Command(TableCommand::kActivate).abort_code, canopen::kAbortDeviceState);
   Step(10000);  // 200 ms at rest
-  r = Write(ObjectId::kTableControl, 1);
+  r = Command(TableCommand::kActivate);
   ASSERT_TRUE(r.ok) << r.message;
   EXPECT_EQ(Read(ObjectId::kActiveTableCrc), LoadLe32(img.data() + img.size() - 4));
   EXPECT_EQ(Read(ObjectId::kActiveTableId), 77u);
   Step(20000);
   EXPECT_EQ(step_io_.drive(0).position(), 100 + 6);
   const uint32_t state = Read(ObjectId::kDeviceState);
-  EXPECT_TRUE(state & firmware::kStateEngaged);
-  EXPECT_TRUE(state & firmware::kStateTableActive);
+  EXPECT_TRUE(canopen::DecodeDeviceState(state).engaged);
+  EXPECT_TRUE(canopen::DecodeDeviceState(state).table_active);
   EXPECT_EQ(static_cast<int32_t>(Read(ObjectId::kAppliedCorrection1)), 6 * 256);
   EXPECT_EQ(Read(ObjectId::kCommandedPosition1), 100u);
   // Deactivate: ramps out, and stays off after a reset.
-  ASSERT_TRUE(Write(ObjectId::kTableControl, 0).ok);
+  ASSERT_TRUE(Command(TableCommand::kDeactivate).ok);
   Step(20000);
   EXPECT_EQ(step_io_.drive(0).position(), 100);
   EXPECT_EQ(Read(ObjectId::kActiveTableCrc), 0u);
@@ -232,18 +237,19 @@ TEST_F(Bench, ActiveTableSurvivesAResetAndBadUploads) {
   ASSERT_TRUE(Upload(good).ok);
   ASSERT_TRUE(Write(ObjectId::kReferenceAxes, 0x07).ok);
   Step(10000);
-  ASSERT_TRUE(Write(ObjectId::kTableControl, 1).ok);
+  ASSERT_TRUE(Command(TableCommand::kActivate).ok);
   const uint32_t crc = Read(ObjectId::kActiveTableCrc);
   // A corrupt image and an image for another board are staged but never become active.
   testing::AlignedBytes corrupt = UniformImage(9, 2);
   corrupt[60] ^= 0x01;
   ASSERT_TRUE(Upload(corrupt).ok);  // the transfer itself is fine
-  EXPECT_EQ(Write(ObjectId::kTableControl, 4).abort_code, canopen::kAbortInvalidValue);
-  EXPECT_EQ(Write(ObjectId::kTableControl, 1).abort_code, canopen::kAbortNoData);
-  EXPECT_EQ(Read(ObjectId::kTableStatus) >> 16, uint32_t(Error::kImageBadCrc));
+  EXPECT_EQ(Command(TableCommand::kVerify).abort_code, canopen::kAbortInvalidValue);
+  EXPECT_EQ(Command(TableCommand::kActivate).abort_code, canopen::kAbortNoData);
+  EXPECT_EQ(canopen::DecodeTableStatus(Read(ObjectId::kTableStatus)).error, Error::kImageBadCrc);
   ASSERT_TRUE(Upload(UniformImage(9, 3, 500000)).ok);
-  EXPECT_EQ(Write(ObjectId::kTableControl, 4).abort_code, canopen::kAbortInvalidValue);
-  EXPECT_EQ(Read(ObjectId::kTableStatus) >> 16, uint32_t(Error::kConfigResolutionMismatch));
+  EXPECT_EQ(Command(TableCommand::kVerify).abort_code, canopen::kAbortInvalidValue);
+  EXPECT_EQ(canopen::DecodeTableStatus(Read(ObjectId::kTableStatus)).error,
+            Error::kConfigResolutionMismatch);
   EXPECT_EQ(Read(ObjectId::kActiveTableCrc), crc);
   // NMT reset node: the stored active table comes back.
   can_.Inject(CanFrame{0x000, false, false, 2, {0x81, kNode}});
@@ -258,14 +264,14 @@ TEST_F(Bench, SettingsAreStoredAndAppliedAfterReset) {
   EXPECT_EQ(Read(ObjectId::kAxisMaxCorrection2), 1000u);
   ASSERT_TRUE(Write(ObjectId::kAxisMaxCorrection2, 250).ok);
   EXPECT_EQ(Write(ObjectId::kAxisMaxCorrection2, 1u << 20).abort_code, canopen::kAbortValueTooHigh);
-  EXPECT_TRUE(Read(ObjectId::kDeviceState) & firmware::kStateSettingsPending);
+  EXPECT_TRUE(canopen::DecodeDeviceState(Read(ObjectId::kDeviceState)).settings_pending);
   EXPECT_EQ(app_.settings().board.axis[1].max_correction_steps, 1000);
   EXPECT_EQ(Write(ObjectId::kStoreAll, 0x12345678).abort_code, canopen::kAbortCannotStore);
   ASSERT_TRUE(Write(ObjectId::kStoreAll, canopen::kSaveSignature).ok);
   can_.Inject(CanFrame{0x000, false, false, 2, {0x81, 0}});
   Step(100);
   EXPECT_EQ(app_.settings().board.axis[1].max_correction_steps, 250);
-  EXPECT_FALSE(Read(ObjectId::kDeviceState) & firmware::kStateSettingsPending);
+  EXPECT_FALSE(canopen::DecodeDeviceState(Read(ObjectId::kDeviceState)).settings_pending);
   // Restore defaults, reset: back to the defaults.
   ASSERT_TRUE(Write(ObjectId::kRestoreAll, canopen::kLoadSignature).ok);
   can_.Inject(CanFrame{0x000, false, false, 2, {0x81, 0}});
@@ -322,7 +328,8 @@ TEST_F(Bench, StagingStepsUnlockStageAndVerify) {
       std::string::npos)
       << r.message;
   // Activation before referencing: the step, the board's reason and what to do.
-  r = canopen_client::Explain(node.Write(ObjectId::kTableControl, 1), "activating");
+  r = canopen_client::Explain(
+      node.Write(ObjectId::kTableControl, canopen::Value(TableCommand::kActivate)), "activating");
   EXPECT_EQ(r.abort_code, canopen::kAbortDeviceState);
   EXPECT_EQ(r.message.rfind("activating: ", 0), 0u) << r.message;
   EXPECT_NE(r.message.find("; the axes must be referenced (homed) and at rest"), std::string::npos)

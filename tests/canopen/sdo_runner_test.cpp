@@ -3,6 +3,9 @@
 
 #include <gtest/gtest.h>
 
+#include "volcomp/canopen/board_protocol.hpp"
+#include "volcomp/canopen/object_dictionary.hpp"
+
 namespace volcomp::canopen_client {
 namespace {
 
@@ -43,7 +46,9 @@ TEST(SdoRunner, WriteU32TimesOutAfterTheGivenTimeout) {
   SilentLink s;
   SdoClient::Options o;
   o.timeout_ms = 20;
-  const SdoResult r = WriteU32(s.link(), 0x10, 0x2101, 0, 4, 1, o);
+  const canopen::ObjectEntry& control = canopen::Entry(canopen::ObjectId::kTableControl);
+  const SdoResult r = WriteU32(s.link(), 0x10, control.index, control.sub,
+                               canopen::Value(canopen::TableCommand::kVerify), 1, o);
   EXPECT_FALSE(r.ok);
   EXPECT_EQ(r.abort_code, kAbortTimeout);
   const uint64_t waited_us = s.now_us - 1000;

@@ -57,7 +57,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
       if (!out.valid()) std::abort();
     }
   }
-  if (app.objects().device_state() & firmware::kStateTableActive) {
+  if (app.objects().device_state() & canopen::kStateTableActive) {
     const firmware::TableStore& t = app.tables();
     if (!table::ParseImage(t.active_data(), t.active_size()).ok()) std::abort();
   }

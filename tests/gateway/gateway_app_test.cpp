@@ -17,6 +17,7 @@
 
 #include "csp_drives.hpp"
 #include "test_tables.hpp"
+#include "volcomp/canopen/board_protocol.hpp"
 #include "volcomp/canopen/object_dictionary.hpp"
 #include "volcomp/canopen/sdo_abort.hpp"
 #include "volcomp/canopen_client/node_objects.hpp"
@@ -181,10 +182,11 @@ class Machine {
   // Uploads, references at home, waits at rest and activates; returns the activation result.
   SdoResult UploadReferenceActivate(const testing::AlignedBytes& img) {
     EXPECT_TRUE(Upload(img).ok);
-    EXPECT_TRUE(Write(ObjectId::kTableControl, 4).ok);  // verify
+    EXPECT_TRUE(Write(ObjectId::kTableControl, canopen::Value(canopen::TableCommand::kVerify))
+                    .ok);  // verify
     EXPECT_TRUE(Write(ObjectId::kReferenceAxes, 7).ok);
     for (int i = 0; i < 150; ++i) Cycle();
-    return Write(ObjectId::kTableControl, 1);
+    return Write(ObjectId::kTableControl, canopen::Value(canopen::TableCommand::kActivate));
   }
 
   // The machine position of the current target (drive increments = steps).
@@ -239,9 +241,10 @@ TEST_F(GatewayAppTest, UploadReferenceActivateAndCorrectEveryCycle) {
   for (int i = 0; i < 10; ++i) m_.Cycle();
   const testing::AlignedBytes img = LinearTable(33);
   ASSERT_TRUE(m_.Upload(img).ok);
-  ASSERT_TRUE(m_.Write(ObjectId::kTableControl, 4).ok);  // verify
+  ASSERT_TRUE(m_.Write(ObjectId::kTableControl, canopen::Value(canopen::TableCommand::kVerify))
+                  .ok);  // verify
   // Not referenced: refused.
-  SdoResult r = m_.Write(ObjectId::kTableControl, 1);
+  SdoResult r = m_.Write(ObjectId::kTableControl, canopen::Value(canopen::TableCommand::kActivate));
   EXPECT_FALSE(r.ok);
   EXPECT_EQ(r.abort_code, canopen::kAbortDeviceState);
   // Referenced at home, but moving: refused.
@@ -251,8 +254,11 @@ TEST_F(GatewayAppTest, UploadReferenceActivateAndCorrectEveryCycle) {
     m_.target_[1] += 50;
     m_.Cycle();
   }
+  const canopen::ObjectEntry& control = canopen::Entry(ObjectId::kTableControl);
   SdoClient c(kNode);
-  c.StartDownload(0x2101, 0, {1});
+  c.StartDownload(control.index, control.sub,
+                  canopen_client::NumericPayload(ObjectId::kTableControl,
+                                                 canopen::Value(canopen::TableCommand::kActivate)));
   for (int i = 0; i < 5; ++i) m_.target_[1] += 50, m_.Cycle();
   r = m_.Run(c);
   EXPECT_FALSE(r.ok);
@@ -260,7 +266,8 @@ TEST_F(GatewayAppTest, UploadReferenceActivateAndCorrectEveryCycle) {
   for (int a = 0; a < 3; ++a) EXPECT_EQ(m_.correction_[a], 0);
   // At rest for 150 ms: allowed.
   for (int i = 0; i < 150; ++i) m_.Cycle();
-  ASSERT_TRUE(m_.Write(ObjectId::kTableControl, 1).ok);
+  ASSERT_TRUE(
+      m_.Write(ObjectId::kTableControl, canopen::Value(canopen::TableCommand::kActivate)).ok);
   for (int i = 0; i < 100; ++i) {
     m_.Cycle();
     EXPECT_TRUE(m_.feedback_ok_) << "ramp-in cycle " << i;
@@ -325,7 +332,7 @@ TEST_F(GatewayAppTest, EStopRampsTheCorrectionOutWhileForwardingGoesOn) {
   EXPECT_FALSE(m_.app_.app().engine().all_referenced());  // the fault dropped the reference
   bool emcy = false;
   for (const CanFrame& f : m_.controller_bus_) {
-    emcy = emcy || (f.id == 0x080u + kNode && LoadLe16(f.data) == firmware::kEmcyEStop);
+    emcy = emcy || (f.id == 0x080u + kNode && LoadLe16(f.data) == canopen::kEmcyEStop);
   }
   EXPECT_TRUE(emcy);
 }

@@ -15,7 +15,10 @@
 
 #include "volcomp/byte_order.hpp"
 #include "volcomp/canopen/object_dictionary.hpp"
+#include "volcomp/canopen/sdo_abort.hpp"
+#include "volcomp/canopen/sdo_protocol.hpp"
 #include "volcomp/canopen_client/sdo_client.hpp"
+#include "volcomp/canopen_client/table_staging.hpp"
 #include "volcomp/sim/sim_sdo_host.hpp"
 #include "volcomp/table_image.hpp"
 #include "xyz_image.hpp"
@@ -23,7 +26,11 @@
 namespace volcomp {
 namespace {
 
+using canopen::ObjectId;
+using canopen::TableCommand;
 using canopen_client::SdoClient;
+
+constexpr uint8_t kNode = 0x10;
 
 std::vector<uint8_t> Image(uint32_t id, int16_t offset, uint32_t nodes) {
   std::vector<int16_t> v(size_t{nodes} * nodes * nodes * 3);
@@ -61,41 +68,42 @@ class Rig {
     o.initial_table_flash = std::move(flash);
     board_ = std::make_unique<sim::SimulatedBoard>(bus_, o);
     pc_ = &bus_.Attach("pc");
-    host_ = std::make_unique<sim::SimSdoHost>(bus_, *board_, *pc_, 0x10);
+    host_ = std::make_unique<sim::SimSdoHost>(bus_, *board_, *pc_, kNode);
     EXPECT_TRUE(board_->Start().ok());
     host_->Idle(2000000);
   }
   sim::SimBus& bus() { return bus_; }
   sim::SimulatedBoard& board() { return *board_; }
 
-  canopen_client::SdoResult Write(canopen::ObjectId id, uint32_t v) {
-    return host_->Write(id, v, 3000000000ull);
-  }
-  // The PC tool's sequence: clear, block download, verify, reference, activate.
+  // The PC tool's sequence: its staging steps (write access, clear), the block download (event by
+  // event, so the PC can stall or abort), its verification steps, reference, activate.
   canopen_client::SdoResult Upload(const std::vector<uint8_t>& img,
                                    const std::function<bool(uint64_t)>& pc_alive = {},
                                    bool client_abort = false,
                                    std::mt19937_64* rng = nullptr) {
-    auto r = Write(canopen::ObjectId::kTableControl, 3);
+    canopen_client::NodeObjects pc_tool(host_->Link(), kNode);
+    auto r = canopen_client::PrepareStaging(pc_tool);
     if (!r.ok) return r;
-    SdoClient c(0x10);
-    c.StartDownload(0x2100, 0, img);
+    const canopen::ObjectEntry& data = canopen::Entry(ObjectId::kTableData);
+    SdoClient c(kNode);
+    c.StartDownload(data.index, data.sub, img);
     if (client_abort) {
       // Abort after a random share of the transfer.
       const uint64_t stop = bus_.now() + 1000000ull + (*rng)() % 20000000ull;
       host_->Run(c, stop - bus_.now(), pc_alive);
       if (!c.done()) {
         CanFrame f;
-        f.id = 0x610;
+        f.id = canopen::sdo::kRequestCobBase + kNode;
         f.dlc = 8;
-        f.data[0] = 0x80;
-        StoreLe16(f.data + 1, 0x2100);
-        StoreLe32(f.data + 4, 0x08000000);
+        f.data[0] = canopen::sdo::kAbort;
+        StoreLe16(f.data + 1, data.index);
+        f.data[3] = data.sub;
+        StoreLe32(f.data + 4, canopen::kAbortGeneral);
         pc_->Send(f);
         host_->Idle(5000000);
         canopen_client::SdoResult a;
         a.message = "upload aborted by the PC (sent abort 0x08000000: general error)";
-        a.abort_code = 0x08000000;
+        a.abort_code = canopen::kAbortGeneral;
         return a;
       }
     } else {
@@ -107,12 +115,12 @@ class Rig {
       return gone;
     }
     if (!c.result().ok) return c.result();
-    r = Write(canopen::ObjectId::kTableControl, 4);
+    r = canopen_client::VerifyStaged(pc_tool, TrailerCrc(img));
     if (!r.ok) return r;
-    r = Write(canopen::ObjectId::kReferenceAxes, 7);
+    r = pc_tool.Write(ObjectId::kReferenceAxes, 7);
     if (!r.ok) return r;
     host_->Idle(150000000);
-    return Write(canopen::ObjectId::kTableControl, 1);
+    return canopen_client::WriteTableCommand(pc_tool, TableCommand::kActivate);
   }
 
  private:
@@ -197,7 +205,8 @@ TEST(FaultCampaign, EveryTrialEndsWithTheOldOrTheNewTableAndAnUploadCanFinish) {
     }
     if (rates.drop + rates.duplicate + rates.corrupt + rates.destroy > 0) {
       rig.bus().SetFaultHook(sim::RandomFaults(rng(), rates, [](const CanFrame& f) {
-        return f.id == 0x610 || f.id == 0x590;  // SDO traffic of node 0x10
+        return f.id == canopen::sdo::kRequestCobBase + kNode ||
+               f.id == canopen::sdo::kResponseCobBase + kNode;  // SDO traffic of the node
       }));
     }
     const canopen_client::SdoResult r = rig.Upload(images[next], alive, client_abort, &rng);

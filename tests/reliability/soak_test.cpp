@@ -11,6 +11,8 @@
 #include <random>
 
 #include "volcomp/byte_order.hpp"
+#include "volcomp/canopen/board_protocol.hpp"
+#include "volcomp/canopen/object_dictionary.hpp"
 #include "volcomp/canopen/sdo_abort.hpp"
 #include "volcomp/canopen_client/sdo_client.hpp"
 #include "volcomp/sim/simulated_board.hpp"
@@ -19,6 +21,8 @@
 namespace volcomp {
 namespace {
 
+using canopen::ObjectId;
+using canopen::TableCommand;
 using canopen_client::SdoClient;
 
 std::vector<uint8_t> SteepImage(uint32_t id, int seed) {
@@ -54,6 +58,13 @@ class Soak {
     for (uint8_t a = 0; a < 3; ++a) {
       ASSERT_EQ(e.output_position(a) + e.backlog(a), input_[a] + e.correction_steps(a));
     }
+  }
+  canopen_client::SdoResult Sdo(ObjectId id, std::vector<uint8_t> data) {
+    const canopen::ObjectEntry& e = canopen::Entry(id);
+    return Sdo(e.index, e.sub, std::move(data));
+  }
+  canopen_client::SdoResult Command(TableCommand c) {
+    return Sdo(ObjectId::kTableControl, {static_cast<uint8_t>(canopen::Value(c))});
   }
   canopen_client::SdoResult Sdo(uint16_t index,
                                 uint8_t sub,
@@ -111,15 +122,15 @@ TEST(Soak, RandomTrajectoriesActivationsAndReferenceLossWithoutLostSteps) {
   uint32_t refused = 0, activated = 0, reference_losses = 0;
   // Stage and activate the first table at rest after referencing.
   auto upload = [&](const std::vector<uint8_t>& img) {
-    ASSERT_TRUE(s.Sdo(0x2101, 0, {3}).ok);
-    ASSERT_TRUE(s.Sdo(0x2100, 0, img).ok);
-    ASSERT_TRUE(s.Sdo(0x2101, 0, {4}).ok);
+    ASSERT_TRUE(s.Command(TableCommand::kClear).ok);
+    ASSERT_TRUE(s.Sdo(ObjectId::kTableData, img).ok);
+    ASSERT_TRUE(s.Command(TableCommand::kVerify).ok);
   };
   s.stopped_ = true;
   upload(images[0]);
-  ASSERT_TRUE(s.Sdo(0x2120, 0, {7}).ok);
+  ASSERT_TRUE(s.Sdo(ObjectId::kReferenceAxes, {7}).ok);
   s.AdvanceTo(s.bus_.now() + 150000000);
-  ASSERT_TRUE(s.Sdo(0x2101, 0, {1}).ok);
+  ASSERT_TRUE(s.Command(TableCommand::kActivate).ok);
   s.stopped_ = false;
   int which = 1;
   uint64_t tick = 0;
@@ -130,7 +141,7 @@ TEST(Soak, RandomTrajectoriesActivationsAndReferenceLossWithoutLostSteps) {
     ++tick;
     if (tick % 50000 == 0) {  // stage the other table and try to activate it while moving
       upload(images[which]);
-      const auto r = s.Sdo(0x2101, 0, {1});
+      const auto r = s.Command(TableCommand::kActivate);
       ASSERT_FALSE(r.ok);
       ASSERT_EQ(r.abort_code, canopen::kAbortDeviceState);
       ++refused;
@@ -150,7 +161,7 @@ TEST(Soak, RandomTrajectoriesActivationsAndReferenceLossWithoutLostSteps) {
     if (tick % 170000 == 0) {  // stop, activate the staged table at rest, go on
       s.stopped_ = true;
       s.AdvanceTo(s.bus_.now() + 150000000);
-      const auto r = s.Sdo(0x2101, 0, {1});
+      const auto r = s.Command(TableCommand::kActivate);
       ASSERT_TRUE(r.ok) << r.message;
       ++activated;
       which = 1 - which;

@@ -74,7 +74,7 @@ void CheckUpload(const DemoResult& r) {
   EXPECT_EQ(r.upload.bytes, r.table.image.size());
   EXPECT_EQ(r.upload.staged_crc, r.table.crc32);
   EXPECT_EQ(r.activation.active_crc, r.table.crc32);
-  EXPECT_NE(r.activation.device_state & firmware::kStateEngaged, 0);
+  EXPECT_NE(r.activation.device_state & canopen::kStateEngaged, 0);
   EXPECT_TRUE(r.reference_agrees);
   // 1 Mbit/s: a block transfer cannot beat ~60 kB/s; this one is far from a stall.
   EXPECT_GT(r.upload.rate_bytes_s, 40000.0);

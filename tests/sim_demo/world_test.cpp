@@ -126,7 +126,7 @@ TEST(SimWorld, TableOverTheBusThenCompensatedMotionLosesNothing) {
   const ActivationReport act = ActivateTable(w, up.image_crc);
   ASSERT_TRUE(act.ok) << act.message;
   w.RunFor(300000000);
-  EXPECT_NE(ReadDeviceState(w) & firmware::kStateEngaged, 0);
+  EXPECT_NE(ReadDeviceState(w) & canopen::kStateEngaged, 0);
   EXPECT_TRUE(w.CheckAtRest());
   const std::array<int64_t, 3> c = {37, -12, 5};
   auto d = w.DriveSteps();

@@ -5,7 +5,7 @@
 
 #include "can_options.hpp"
 #include "commands.hpp"
-#include "volcomp/byte_order.hpp"
+#include "volcomp/canopen/board_protocol.hpp"
 #include "volcomp/canopen/sdo_abort.hpp"
 #include "volcomp/status.hpp"
 #include "volcomp/tools/hex.hpp"
@@ -66,33 +66,36 @@ Snapshot Take(canopen_client::CanSession& s, bool axes_detail) {
   return n;
 }
 
-const char* kStateBits[] = {"referenced",      "engaged",     "fault",
-                            "writable",        "moving",      "table-active",
-                            "staged-verified", "passthrough", "settings-pending"};
-const char* kStagedStates[] = {"empty", "receiving", "complete", "verified", "failed"};
 const char* kCounterNames[] = {"can_rx_frames",    "can_tx_frames",    "malformed_frames",
                                "sdo_aborts",       "emcy_sent",        "ticks",
                                "lost_step_checks", "max_tick_cost_ns", "refused_actions"};
 
 std::string StateText(uint32_t state) {
   std::string s;
-  for (int b = 0; b < 9; ++b) {
-    if (state & (1u << b)) s += std::string(s.empty() ? "" : ",") + kStateBits[b];
+  for (int b = 0; b < canopen::kDeviceStateBitCount; ++b) {
+    if (state & (1u << b)) {
+      s += std::string(s.empty() ? "" : ",") + canopen::kDeviceStateBitNames[b];
+    }
   }
   return s.empty() ? "-" : s;
 }
 
-std::string Emcy(const CanFrame& f) {
+// `e` for people: the code, the register, the data and what the board's codes mean.
+std::string EmcyText(const canopen::Emcy& e) {
   char b[96];
-  std::snprintf(b, sizeof b, "EMCY 0x%04X register 0x%02X data %02X %02X %02X %02X %02X",
-                LoadLe16(f.data), f.data[2], f.data[3], f.data[4], f.data[5], f.data[6], f.data[7]);
+  std::snprintf(b, sizeof b, "EMCY 0x%04X register 0x%02X data %02X %02X %02X %02X %02X", e.code,
+                e.error_register, e.data[0], e.data[1], e.data[2], e.data[3], e.data[4]);
   std::string s = b;
-  if (LoadLe16(f.data) == 0xFF10)
-    s += " (refused action: abort " + Hex32(LoadLe32(f.data + 3)) + ")";
-  if (LoadLe16(f.data) == 0x6300)
-    s += std::string(" (table invalid: ") + ErrorName(static_cast<Error>(f.data[3])) + ")";
-  if (LoadLe16(f.data) == 0x0000) s += " (errors cleared)";
+  if (e.code == canopen::kEmcyRefused)
+    s += " (refused action: abort " + Hex32(e.abort_code()) + ")";
+  if (e.code == canopen::kEmcyTableInvalid)
+    s += std::string(" (table invalid: ") + ErrorName(e.error()) + ")";
+  if (e.code == canopen::kEmcyErrorReset) s += " (errors cleared)";
   return s;
+}
+
+const char* StagedStateName(canopen::StagedState s) {
+  return s < canopen::StagedState::kCount ? canopen::kStagedStateNames[static_cast<int>(s)] : "?";
 }
 
 }  // namespace
@@ -104,8 +107,10 @@ int RunStatus(Args& args) {
   auto s = OpenSession(can);
   s->Listen(std::chrono::milliseconds(0));
   const Snapshot n = Take(*s, true);
-  const uint32_t staged_state = (n.table_status >> 8) & 0xFF;
-  const Error last = static_cast<Error>(n.table_status >> 16);
+  const canopen::TableStatus table = canopen::DecodeTableStatus(n.table_status);
+  const canopen::StagedState staged_state = table.staged;
+  const Error last = table.error;
+  const bool table_active = canopen::DecodeDeviceState(n.state).table_active;
   if (json) {
     JsonWriter w(std::cout);
     w.begin_object();
@@ -121,12 +126,12 @@ int RunStatus(Args& args) {
     w.key("device_state_flags").value(StateText(n.state));
     w.key("writable").value(n.writable != 0);
     w.key("active_table").begin_object();
-    w.key("present").value((n.state & 32u) != 0);
+    w.key("present").value(table_active);
     w.key("id").value(uint64_t{n.active_id});
     w.key("crc32").value(Hex32(n.active_crc));
     w.end_object();
     w.key("staged_table").begin_object();
-    w.key("state").value(staged_state < 5 ? kStagedStates[staged_state] : "?");
+    w.key("state").value(StagedStateName(staged_state));
     w.key("bytes").value(uint64_t{n.staged_bytes});
     w.key("id").value(uint64_t{n.staged_id});
     w.key("crc32").value(Hex32(n.staged_crc));
@@ -155,13 +160,12 @@ int RunStatus(Args& args) {
   std::printf("state: %s\n", StateText(n.state).c_str());
   std::printf(
       "active table: %s\n",
-      (n.state & 32u)
+      table_active
           ? ("id " + std::to_string(n.active_id) + ", CRC-32 " + Hex32(n.active_crc)).c_str()
           : "none (pass-through)");
   std::printf(
-      "staged table: %s, %u bytes, id %u, CRC-32 %s%s\n",
-      staged_state < 5 ? kStagedStates[staged_state] : "?", n.staged_bytes, n.staged_id,
-      Hex32(n.staged_crc).c_str(),
+      "staged table: %s, %u bytes, id %u, CRC-32 %s%s\n", StagedStateName(staged_state),
+      n.staged_bytes, n.staged_id, Hex32(n.staged_crc).c_str(),
       last != Error::kOk
           ? (std::string(", last error ") + ErrorName(last) + ": " + ErrorText(last)).c_str()
           : "");
@@ -186,7 +190,10 @@ int RunMonitor(Args& args) {
   std::optional<uint8_t> last_nmt;
   for (;;) {
     s->Listen(std::chrono::milliseconds(interval));
-    for (const CanFrame& f : s->TakeEmcy()) std::printf("%s\n", Emcy(f).c_str());
+    for (const CanFrame& f : s->TakeEmcy()) {
+      canopen::Emcy e;
+      if (canopen::DecodeEmcy(f, can.node, &e)) std::printf("%s\n", EmcyText(e).c_str());
+    }
     if (s->nmt_state() != last_nmt && s->nmt_state()) {
       std::printf("heartbeat: %s\n", canopen_client::NmtStateName(*s->nmt_state()).c_str());
       last_nmt = s->nmt_state();

@@ -11,14 +11,14 @@ namespace {
 
 using canopen::ObjectId;
 
-int Control(Args& args, uint8_t command, const char* done) {
+int Control(Args& args, canopen::TableCommand command, const char* done) {
   const CanOptions can = ParseCanOptions(args);
   args.finish();
   auto s = OpenSession(can);
   Require(canopen_client::EnsureWritable(*s));
-  Check(s->Write(ObjectId::kTableControl, command),
-        std::string(command == 1 ? "activation" : "deactivation") + " refused by node " +
-            std::to_string(can.node));
+  Check(s->Write(ObjectId::kTableControl, canopen::Value(command)),
+        std::string(command == canopen::TableCommand::kActivate ? "activation" : "deactivation") +
+            " refused by node " + std::to_string(can.node));
   uint32_t crc = 0, id = 0;
   Check(s->Read(ObjectId::kActiveTableCrc, &crc), "reading the active CRC-32 (0x2104)");
   Check(s->Read(ObjectId::kActiveTableId, &id), "reading the active table id (0x2103)");
@@ -48,8 +48,10 @@ uint32_t AxisMask(const std::string& list) {
 
 }  // namespace
 
-int RunActivate(Args& args) { return Control(args, 1, "activated"); }
-int RunDeactivate(Args& args) { return Control(args, 0, "deactivated"); }
+int RunActivate(Args& args) { return Control(args, canopen::TableCommand::kActivate, "activated"); }
+int RunDeactivate(Args& args) {
+  return Control(args, canopen::TableCommand::kDeactivate, "deactivated");
+}
 
 int RunReference(Args& args) {
   const CanOptions can = ParseCanOptions(args);

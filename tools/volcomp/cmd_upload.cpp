@@ -121,7 +121,7 @@ int RunUpload(Args& args) {
       UploadOnce(s, bytes, crc, quiet);
       std::printf("staged and verified on node %u\n", can.node);
       if (activate) {
-        Check(s.Write(ObjectId::kTableControl, 1), "activating (0x2101 = 1)");
+        Require(canopen_client::WriteTableCommand(s, canopen::TableCommand::kActivate));
         const uint32_t now_active = ReadOr(s, ObjectId::kActiveTableCrc, "the active CRC-32");
         if (now_active != crc)
           throw InputError("activation did not take: active CRC-32 is " + Hex32(now_active));

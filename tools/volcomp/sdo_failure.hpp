@@ -3,6 +3,7 @@
 
 #include <string>
 
+#include "volcomp/canopen/sdo_abort.hpp"
 #include "volcomp/canopen_client/table_staging.hpp"
 #include "volcomp/tools/csv.hpp"
 
@@ -12,7 +13,7 @@ namespace volcomp::tools {
 class SdoFailure : public InputError {
  public:
   SdoFailure(const std::string& message, uint32_t abort_code)
-      : InputError(message), retryable((abort_code >> 16) == 0x0504 || abort_code == 0x05030000) {}
+      : InputError(message), retryable(canopen::IsProtocolAbort(abort_code)) {}
   bool retryable;
 };
 

@@ -88,61 +88,40 @@ bool BoardObjects::writable() const {
 
 uint16_t BoardObjects::device_state() const {
   const ControlTick& e = control_->engine();
-  uint16_t s = 0;
-  if (e.all_referenced()) s |= kStateReferenced;
-  if (e.compensator().engaged()) s |= kStateEngaged;
-  if (control_->fault()) s |= kStateFault;
-  if (writable()) s |= kStateWritable;
-  if (control_->moving()) s |= kStateMoving;
-  if (has_active_) s |= kStateTableActive;
-  if (tables_->staged_state() == StagedState::kVerified) s |= kStateStagedVerified;
-  if (e.compensator().passthrough()) s |= kStatePassthrough;
+  canopen::DeviceState s;
+  s.referenced = e.all_referenced();
+  s.engaged = e.compensator().engaged();
+  s.fault = control_->fault();
+  s.writable = writable();
+  s.moving = control_->moving();
+  s.table_active = has_active_;
+  s.staged_verified = tables_->staged_state() == StagedState::kVerified;
+  s.passthrough = e.compensator().passthrough();
   // Any configuration edit not yet in force (stored and applied at the next reset).
   uint8_t a_bytes[kSettingsBytes], p_bytes[kSettingsBytes];
   SerializeSettings(active_, a_bytes);
   SerializeSettings(pending_, p_bytes);
   for (uint32_t i = 0; i < kSettingsBytes; ++i) {
     if (a_bytes[i] != p_bytes[i]) {
-      s |= kStateSettingsPending;
+      s.settings_pending = true;
       break;
     }
   }
-  return s;
+  return canopen::EncodeDeviceState(s);
 }
 
 uint32_t BoardObjects::table_status() const {
-  const StagedState st = tables_->staged_state();
-  const uint32_t busy = st == StagedState::kReceiving ? 1u : 0u;
-  uint32_t result = 0;  // 0 ok
-  switch (tables_->last_error()) {
-    case Error::kOk:
-      result = 0;
-      break;
-    case Error::kImageBadCrc:
-      result = 3;
-      break;
-    case Error::kConfigAxisMismatch:
-    case Error::kConfigResolutionMismatch:
-    case Error::kConfigTooManyAxes:
-      result = 4;
-      break;
-    case Error::kIoError:
-      result = 5;
-      break;
-    case Error::kImageTooLarge:
-      result = 6;
-      break;
-    default:
-      result = 2;
-      break;  // format error
-  }
-  return busy | (result << 1) | (static_cast<uint32_t>(st) << 8) |
-         (static_cast<uint32_t>(tables_->last_error()) << 16);
+  canopen::TableStatus s;
+  s.staged = tables_->staged_state();
+  s.busy = s.staged == StagedState::kReceiving;
+  s.error = tables_->last_error();
+  s.result = canopen::TableResultOf(s.error);
+  return canopen::EncodeTableStatus(s);
 }
 
 uint32_t BoardObjects::Refuse(uint32_t abort_code) {
   ++refused_;
-  node_->ReportEvent(kEmcyRefused, 0, abort_code);
+  node_->ReportEvent(canopen::kEmcyRefused, 0, abort_code);
   return abort_code;
 }
 
@@ -392,11 +371,12 @@ uint32_t BoardObjects::WriteConfig(const ObjectEntry& e, uint32_t v) {
 uint32_t BoardObjects::TableControl(uint8_t command) {
   last_command_ = command;
   const BoardConfig& board = active_.board;
+  using canopen::TableCommand;
   switch (static_cast<TableCommand>(command)) {
     case TableCommand::kVerify: {
       const Status s = tables_->Verify(board);
       if (!s.ok()) {
-        node_->ReportEvent(kEmcyTableInvalid, canopen::kErrManufacturer,
+        node_->ReportEvent(canopen::kEmcyTableInvalid, canopen::kErrManufacturer,
                            static_cast<uint32_t>(s.error()));
         return canopen::kAbortInvalidValue;
       }

@@ -6,12 +6,18 @@
 #include "volcomp/byte_order.hpp"
 #include "volcomp/canopen/crc16.hpp"
 #include "volcomp/canopen/object_dictionary.hpp"
+#include "volcomp/canopen/sdo_protocol.hpp"
 #include "volcomp/canopen_client/sdo_client.hpp"
+#include "volcomp/canopen_client/table_staging.hpp"
 #include "volcomp/sim/sim_sdo_host.hpp"
 #include "volcomp/table_writer.hpp"
 
 namespace volcomp::sim {
 namespace {
+
+using canopen::ObjectId;
+using canopen::TableCommand;
+namespace sdo = canopen::sdo;
 
 std::vector<uint8_t> BuildGridImage(uint32_t n) {
   std::vector<int16_t> values(size_t{n} * n * n * 3);
@@ -45,7 +51,7 @@ std::vector<uint8_t> BuildGridImage(uint32_t n) {
 }  // namespace
 
 uint64_t IdealBlockDownloadBits(const std::vector<uint8_t>& payload, uint8_t node_id) {
-  const uint32_t rx = 0x600u + node_id, tx = 0x580u + node_id;
+  const uint32_t rx = sdo::kRequestCobBase + node_id, tx = sdo::kResponseCobBase + node_id;
   auto frame = [](uint32_t id, std::initializer_list<uint8_t> bytes) {
     CanFrame f;
     f.id = id;
@@ -54,24 +60,36 @@ uint64_t IdealBlockDownloadBits(const std::vector<uint8_t>& payload, uint8_t nod
     for (uint8_t b : bytes) f.data[i++] = b;
     return f;
   };
+  const uint16_t index = canopen::Entry(ObjectId::kTableData).index;
+  const uint8_t lo = static_cast<uint8_t>(index), hi = static_cast<uint8_t>(index >> 8);
+  constexpr uint8_t kBlock = sdo::kMaxBlockSize;
+  constexpr uint32_t kSeg = sdo::kSegmentBytes;
   const uint32_t size = static_cast<uint32_t>(payload.size());
-  uint64_t bits = CanFrameBits(frame(rx, {0xC6, 0x00, 0x21, 0x00, uint8_t(size), uint8_t(size >> 8),
-                                          uint8_t(size >> 16), uint8_t(size >> 24)}));
-  bits += CanFrameBits(frame(tx, {0xA4, 0x00, 0x21, 0x00, 127}));
-  const uint32_t segments = (size + 6) / 7;
+  uint64_t bits = CanFrameBits(
+      frame(rx, {sdo::Block(sdo::kCcsBlockDownload, sdo::kBlockInitiate, true, true), lo, hi, 0,
+                 uint8_t(size), uint8_t(size >> 8), uint8_t(size >> 16), uint8_t(size >> 24)}));
+  bits += CanFrameBits(frame(
+      tx, {sdo::Block(sdo::kScsBlockDownload, sdo::kBlockInitiate, true), lo, hi, 0, kBlock}));
+  const uint32_t segments = (size + kSeg - 1) / kSeg;
   for (uint32_t s = 0; s < segments; ++s) {
     CanFrame f;
     f.id = rx;
     f.dlc = 8;
-    const uint32_t seq = s % 127 + 1;
-    f.data[0] = static_cast<uint8_t>(seq | (s + 1 == segments ? 0x80 : 0));
-    for (uint32_t i = 0; i < 7 && s * 7 + i < size; ++i) f.data[1 + i] = payload[s * 7 + i];
+    const uint8_t seq = static_cast<uint8_t>(s % kBlock + 1);
+    f.data[0] = sdo::BlockSegment(seq, s + 1 == segments);
+    for (uint32_t i = 0; i < kSeg && s * kSeg + i < size; ++i)
+      f.data[1 + i] = payload[s * kSeg + i];
     bits += CanFrameBits(f);
-    if (seq == 127 || s + 1 == segments) bits += CanFrameBits(frame(tx, {0xA2, uint8_t(seq), 127}));
+    if (seq == kBlock || s + 1 == segments) {
+      bits += CanFrameBits(
+          frame(tx, {sdo::Block(sdo::kScsBlockDownload, sdo::kBlockAck), seq, kBlock}));
+    }
   }
   const uint16_t crc = canopen::Crc16Update(0, payload.data(), payload.size());
-  bits += CanFrameBits(frame(rx, {0xC1, uint8_t(crc), uint8_t(crc >> 8)}));
-  bits += CanFrameBits(frame(tx, {0xA1}));
+  const uint32_t unused = (kSeg - size % kSeg) % kSeg;
+  bits += CanFrameBits(frame(
+      rx, {sdo::BlockEndCommand(sdo::kCcsBlockDownload, unused), uint8_t(crc), uint8_t(crc >> 8)}));
+  bits += CanFrameBits(frame(tx, {sdo::Block(sdo::kScsBlockDownload, sdo::kBlockEnd)}));
   return bits;
 }
 
@@ -92,19 +110,17 @@ UploadBenchResult RunUploadBench(const UploadBenchOptions& options) {
   const uint8_t node = bo.settings.node_id;
   SimSdoHost host(bus, board, pc, node);
   host.Idle(5000000);
-  constexpr uint64_t kWriteTimeoutNs = 2000000000ull;
-  auto write = [&](canopen::ObjectId id, uint32_t v) { return host.Write(id, v, kWriteTimeoutNs); };
+  // The PC tool's staging steps around the timed transfer, which runs event by event.
+  canopen_client::NodeObjects pc_tool(host.Link(), node);
   auto fail = [&](const std::string& what, const canopen_client::SdoResult& res) {
     r.message = what + ": " + res.message;
     return r;
   };
-  auto res = write(canopen::ObjectId::kUnlock, canopen::kUnlockSignature);
-  if (!res.ok) return fail("unlock", res);
-  res = write(canopen::ObjectId::kTableControl, 3);
-  if (!res.ok) return fail("clear", res);
+  auto res = canopen_client::PrepareStaging(pc_tool);
+  if (!res.ok) return fail("staging", res);
 
   uint64_t frames_before = bus.stats().frames;
-  const canopen::ObjectEntry& data = canopen::Entry(canopen::ObjectId::kTableData);
+  const canopen::ObjectEntry& data = canopen::Entry(ObjectId::kTableData);
   canopen_client::SdoClient c(node);
   c.StartDownload(data.index, data.sub, image);
   const uint64_t t0 = bus.now();
@@ -119,22 +135,18 @@ UploadBenchResult RunUploadBench(const UploadBenchOptions& options) {
   r.limit_bytes_s = bytes / r.limit_s;
   r.efficiency = r.limit_s / r.transfer_s;
 
-  res = write(canopen::ObjectId::kTableControl, 4);
+  res = canopen_client::VerifyStaged(pc_tool, r.image_crc);
   if (!res.ok) return fail("verify", res);
   if (options.activate) {
-    res = write(canopen::ObjectId::kReferenceAxes, 0x07);
+    res = pc_tool.Write(ObjectId::kReferenceAxes, 0x07);
     if (!res.ok) return fail("reference", res);
     host.Idle(200000000);
-    res = write(canopen::ObjectId::kTableControl, 1);
+    res = canopen_client::WriteTableCommand(pc_tool, TableCommand::kActivate);
     if (!res.ok) return fail("activate", res);
     r.activated = true;
   }
-  const canopen::ObjectEntry& active = canopen::Entry(canopen::ObjectId::kActiveTableCrc);
-  canopen_client::SdoClient rd(node);
-  rd.StartUpload(active.index, active.sub);
-  host.Run(rd, kWriteTimeoutNs);
-  if (!rd.result().ok || rd.result().data.size() != 4) return fail("read active CRC", rd.result());
-  r.active_crc = LoadLe32(rd.result().data.data());
+  res = pc_tool.Read(ObjectId::kActiveTableCrc, &r.active_crc);
+  if (!res.ok) return fail("read active CRC", res);
   r.ok = true;
   r.message = "ok";
   return r;

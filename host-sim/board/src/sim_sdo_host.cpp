@@ -36,6 +36,23 @@ canopen_client::SdoResult SimSdoHost::Write(canopen::ObjectId id,
   return client.result();
 }
 
+const canopen_client::FrameLink& SimSdoHost::Link() {
+  if (!link_.send) {
+    link_.send = [this](const CanFrame& f) { pc_.Send(f); };
+    link_.receive = [this](uint64_t timeout_us) -> std::optional<CanFrame> {
+      const uint64_t end = bus_.now() + timeout_us * 1000;
+      CanFrame f;
+      while (!pc_.Receive(&f)) {
+        if (bus_.now() >= end) return std::nullopt;
+        StepTo(bus_, board_, std::clamp(NextEventTime(bus_, board_), bus_.now(), end));
+      }
+      return f;
+    };
+    link_.now_us = [this] { return bus_.now() / 1000; };
+  }
+  return link_;
+}
+
 void SimSdoHost::Idle(uint64_t ns) {
   AdvanceInEventOrder(bus_, board_, bus_.now() + ns);
   CanFrame f;

@@ -70,7 +70,7 @@ UploadReport UploadTable(World& world, const std::vector<uint8_t>& image, std::o
 ActivationReport ActivateTable(World& world, uint32_t expected_crc) {
   ActivationReport r;
   NodeObjects node(world.SdoLink(), world.node_id());
-  SdoResult res = Explain(node.Write(ObjectId::kTableControl, 1), "activating (0x2101 = 1)");
+  SdoResult res = canopen_client::WriteTableCommand(node, canopen::TableCommand::kActivate);
   if (res.ok) {
     res = Explain(node.Read(ObjectId::kActiveTableCrc, &r.active_crc),
                   "reading the active CRC-32 (0x2104)");

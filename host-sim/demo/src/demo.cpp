@@ -350,8 +350,8 @@ DemoResult RunDemo(const DemoOptions& o, std::ostream& log) {
     r.activation.device_state = state;
     progress.Line(std::string("active table CRC-32 ") + Hex32(r.activation.active_crc) +
                   "; device state: referenced " +
-                  ((state & firmware::kStateReferenced) ? "yes" : "no") + ", engaged " +
-                  ((state & firmware::kStateEngaged) ? "yes" : "no") +
+                  ((state & canopen::kStateReferenced) ? "yes" : "no") + ", engaged " +
+                  ((state & canopen::kStateEngaged) ? "yes" : "no") +
                   Fmt("   (%.1f s)", Since(t0)));
   }
 
@@ -414,7 +414,7 @@ DemoResult RunDemo(const DemoOptions& o, std::ostream& log) {
   check(r.audit.timing_violations == 0, "pulse timing violations");
   check(r.latency.max_ticks <= 2.0 && r.latency.unmatched == 0, "latency above 2 ticks");
   check(r.reference_agrees, "board and CNC disagree after homing");
-  check(r.activation.ok && (r.activation.device_state & firmware::kStateEngaged) != 0,
+  check(r.activation.ok && (r.activation.device_state & canopen::kStateEngaged) != 0,
         "table not engaged");
   return r;
 }

@@ -2,6 +2,7 @@
 #include "volcomp/canopen_client/can_session.hpp"
 
 #include "volcomp/can_io/logging_transport.hpp"
+#include "volcomp/canopen/node.hpp"
 
 namespace volcomp::canopen_client {
 
@@ -24,8 +25,8 @@ CanSession::CanSession(const std::string& spec,
 
 void CanSession::Observe(const CanFrame& f) {
   if (f.extended || f.rtr) return;
-  if (f.id == 0x700u + node() && f.dlc == 1) nmt_state_ = f.data[0];
-  if (f.id == 0x80u + node() && f.dlc == 8) emcy_.push_back(f);
+  if (f.id == canopen::kHeartbeatCobBase + node() && f.dlc == 1) nmt_state_ = f.data[0];
+  if (f.id == canopen::kEmcyCobBase + node() && f.dlc == 8) emcy_.push_back(f);
 }
 
 void CanSession::Listen(std::chrono::milliseconds duration) {
@@ -46,7 +47,7 @@ std::vector<CanFrame> CanSession::TakeEmcy() {
 
 void CanSession::SendNmt(uint8_t command) {
   CanFrame f;
-  f.id = 0;
+  f.id = canopen::kNmtCobId;
   f.dlc = 2;
   f.data[0] = command;
   f.data[1] = node();
@@ -54,14 +55,14 @@ void CanSession::SendNmt(uint8_t command) {
 }
 
 std::string NmtStateName(uint8_t state) {
-  switch (state) {
-    case 0x00:
+  switch (static_cast<canopen::NmtState>(state)) {
+    case canopen::NmtState::kInitialising:
       return "boot-up";
-    case 0x04:
+    case canopen::NmtState::kStopped:
       return "stopped";
-    case 0x05:
+    case canopen::NmtState::kOperational:
       return "operational";
-    case 0x7F:
+    case canopen::NmtState::kPreOperational:
       return "pre-operational";
     default:
       return "unknown state " + std::to_string(state);

@@ -1,6 +1,8 @@
 // Blocking SDO operations over a frame link.
 #include "volcomp/canopen_client/sdo_runner.hpp"
 
+#include "volcomp/canopen/sdo_protocol.hpp"
+
 namespace volcomp::canopen_client {
 
 const SdoResult& RunToCompletion(SdoClient& client, const FrameLink& link) {
@@ -12,7 +14,7 @@ const SdoResult& RunToCompletion(SdoClient& client, const FrameLink& link) {
     const std::optional<CanFrame> rx = link.receive(10000);
     const uint64_t now = link.now_us();
     if (rx) {
-      if (rx->id == 0x580u + client.node_id()) {
+      if (rx->id == canopen::sdo::kResponseCobBase + client.node_id()) {
         client.OnFrame(*rx, now);
       } else if (link.other) {
         link.other(*rx);

@@ -1,12 +1,15 @@
 // The table-staging steps.
 #include "volcomp/canopen_client/table_staging.hpp"
 
+#include <cstdio>
+
 #include "volcomp/canopen/sdo_abort.hpp"
 #include "volcomp/tools/hex.hpp"
 
 namespace volcomp::canopen_client {
 
 using canopen::ObjectId;
+using canopen::TableCommand;
 using tools::Hex32;
 
 std::string AbortHint(uint32_t abort_code) {
@@ -29,6 +32,34 @@ SdoResult Explain(SdoResult r, const std::string& step) {
   return r;
 }
 
+std::string TableCommandStep(TableCommand command) {
+  const char* what = "";
+  switch (command) {
+    case TableCommand::kDeactivate:
+      what = "deactivating";
+      break;
+    case TableCommand::kActivate:
+      what = "activating";
+      break;
+    case TableCommand::kClear:
+      what = "clearing the staging bank";
+      break;
+    case TableCommand::kVerify:
+      what = "verifying on the board";
+      break;
+  }
+  char object[32];
+  std::snprintf(object, sizeof object, " (0x%04X = %u)",
+                canopen::Entry(ObjectId::kTableControl).index,
+                static_cast<unsigned>(canopen::Value(command)));
+  return what + std::string(object);
+}
+
+SdoResult WriteTableCommand(NodeObjects& node, TableCommand command) {
+  return Explain(node.Write(ObjectId::kTableControl, canopen::Value(command)),
+                 TableCommandStep(command));
+}
+
 SdoResult EnsureWritable(NodeObjects& node) {
   uint32_t writable = 0;
   SdoResult r =
@@ -40,12 +71,11 @@ SdoResult EnsureWritable(NodeObjects& node) {
 SdoResult PrepareStaging(NodeObjects& node) {
   const SdoResult r = EnsureWritable(node);
   if (!r.ok) return r;
-  return Explain(node.Write(ObjectId::kTableControl, 3), "clearing the staging bank (0x2101 = 3)");
+  return WriteTableCommand(node, TableCommand::kClear);
 }
 
 SdoResult VerifyStaged(NodeObjects& node, uint32_t image_crc, uint32_t* staged_crc) {
-  SdoResult r =
-      Explain(node.Write(ObjectId::kTableControl, 4), "verifying on the board (0x2101 = 4)");
+  SdoResult r = WriteTableCommand(node, TableCommand::kVerify);
   if (!r.ok) return r;
   uint32_t staged = 0;
   r = Explain(node.Read(ObjectId::kStagedTableCrc, &staged), "reading the staged CRC-32 (0x2105)");

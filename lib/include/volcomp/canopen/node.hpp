@@ -25,9 +25,11 @@ enum class NmtState : uint8_t {
 
 enum class ResetRequest : uint8_t { kNone, kNode, kCommunication };
 
-/// EMCY code sent when an SDO transfer failed on protocol grounds (timeout, toggle, sequence, CRC;
-/// bytes 3-6 = the abort code).
-inline constexpr uint16_t kEmcySdoTransferFailed = 0xFF11;
+/// COB-IDs of the pre-defined connection set (EMCY and heartbeat: + node-ID; SDO:
+/// sdo_protocol.hpp).
+inline constexpr uint32_t kNmtCobId = 0x000;
+inline constexpr uint32_t kEmcyCobBase = 0x080;
+inline constexpr uint32_t kHeartbeatCobBase = 0x700;
 
 /// Error register (0x1001) bits.
 enum ErrorRegisterBit : uint8_t {

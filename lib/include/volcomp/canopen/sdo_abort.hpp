@@ -33,6 +33,12 @@ enum SdoAbort : uint32_t {
   kAbortNoData = 0x08000024,             // no data available
 };
 
+/// True for the SDO protocol failures (0x0503xxxx toggle, 0x0504xxxx timeout, command, block size,
+/// sequence, CRC, memory): the transfer broke, not the request, so a fresh attempt can succeed.
+constexpr bool IsProtocolAbort(uint32_t code) {
+  return (code >> 16) == 0x0503 || (code >> 16) == 0x0504;
+}
+
 /// Readable text of an abort code ("unknown abort code" for others). Never null.
 const char* SdoAbortText(uint32_t code);
 

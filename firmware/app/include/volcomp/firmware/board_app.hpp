@@ -54,10 +54,6 @@ struct AppOptions {
   canopen::SdoServerConfig sdo;
 };
 
-/// Device-specific EMCY codes for faults (CiA 301 0xFFxx range).
-inline constexpr uint16_t kEmcyEStop = 0xFF01;
-inline constexpr uint16_t kEmcyDriveAlarm = 0xFF02;
-
 template <class StepIo>
 class BoardApp final : private BoardControl {
   static_assert(hal::IsStepIo<StepIo>::value, "StepIo must provide ReadCounters() and Apply()");
@@ -188,7 +184,7 @@ class BoardApp final : private BoardControl {
     if (!view.ok()) {
       if (view.error() != Error::kNotFound && dev_.can != nullptr) {
         uint8_t m[5] = {static_cast<uint8_t>(view.error()), 0, 0, 0, 0};
-        node_.RaiseError(kEmcyTableInvalid, canopen::kErrManufacturer, m);
+        node_.RaiseError(canopen::kEmcyTableInvalid, canopen::kErrManufacturer, m);
       }
       return view.status();
     }
@@ -217,7 +213,8 @@ class BoardApp final : private BoardControl {
     if (fault && !fault_) {
       pending_unreference_.store(true, std::memory_order_release);
       if (dev_.can != nullptr) {
-        node_.RaiseError(estop ? kEmcyEStop : kEmcyDriveAlarm, canopen::kErrManufacturer);
+        node_.RaiseError(estop ? canopen::kEmcyEStop : canopen::kEmcyDriveAlarm,
+                         canopen::kErrManufacturer);
       }
     } else if (!fault && fault_ && dev_.can != nullptr) {
       node_.ClearErrors();

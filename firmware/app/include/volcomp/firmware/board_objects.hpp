@@ -7,11 +7,13 @@
 // is active or the board was unlocked by writing canopen::kUnlockSignature to 0x2110 within the
 // last kUnlockMs milliseconds. Table activation is refused with 0x08000022 unless every axis is
 // referenced and no axis moved within kStillMs. Each refusal and each failed action is counted
-// and reported with an EMCY (code kEmcyRefused / kEmcyTableInvalid, abort code in bytes 3..6).
+// and reported with an EMCY (canopen::kEmcyRefused with the abort code, kEmcyTableInvalid with the
+// error; board_protocol.hpp).
 #pragma once
 
 #include <cstdint>
 
+#include "volcomp/canopen/board_protocol.hpp"
 #include "volcomp/canopen/node.hpp"
 #include "volcomp/canopen/object_values.hpp"
 #include "volcomp/firmware/board_control.hpp"
@@ -22,25 +24,6 @@ namespace volcomp::firmware {
 
 inline constexpr uint32_t kUnlockMs = 60000;
 inline constexpr uint32_t kStillMs = 100;
-inline constexpr uint16_t kEmcyRefused = 0xFF10;       // an action was refused (manufacturer)
-inline constexpr uint16_t kEmcyTableInvalid = 0x6300;  // data set: staged/stored table invalid
-inline constexpr uint16_t kEmcyWriteFailed = 0x5530;   // flash write failed
-
-/// Values of 0x2101 (table control).
-enum class TableCommand : uint8_t { kDeactivate = 0, kActivate = 1, kClear = 3, kVerify = 4 };
-
-/// Bits of 0x2122 (device state).
-enum DeviceStateBit : uint16_t {
-  kStateReferenced = 1u << 0,
-  kStateEngaged = 1u << 1,
-  kStateFault = 1u << 2,
-  kStateWritable = 1u << 3,
-  kStateMoving = 1u << 4,
-  kStateTableActive = 1u << 5,
-  kStateStagedVerified = 1u << 6,
-  kStatePassthrough = 1u << 7,
-  kStateSettingsPending = 1u << 8,
-};
 
 struct IdentityInfo {
   const char* device_name = "volcomp";
@@ -65,7 +48,7 @@ class BoardObjects : public canopen::ObjectValues {
   void set_now_ms(uint32_t now_ms) { now_ms_ = now_ms; }
   bool writable() const;
   uint16_t device_state() const;
-  /// 0x2102 table status word: bit 0 busy, bits 1-7 result, bits 8-15 staged state, 16-31 error.
+  /// 0x2102 table status word (canopen::EncodeTableStatus).
   uint32_t table_status() const;
 
   uint32_t refused_actions() const { return refused_; }

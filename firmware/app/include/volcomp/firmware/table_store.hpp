@@ -10,6 +10,7 @@
 #include <cstdint>
 
 #include "volcomp/board_config.hpp"
+#include "volcomp/canopen/board_protocol.hpp"
 #include "volcomp/firmware/dual_bank_store.hpp"
 #include "volcomp/hal/flash.hpp"
 #include "volcomp/status.hpp"
@@ -17,13 +18,8 @@
 
 namespace volcomp::firmware {
 
-enum class StagedState : uint8_t {
-  kEmpty = 0,      // nothing staged
-  kReceiving = 1,  // an upload is in progress
-  kComplete = 2,   // all bytes received, not verified yet
-  kVerified = 3,   // valid image for this board: may be activated
-  kFailed = 4,     // upload or verification failed (see last_error())
-};
+/// The staging bank's state, as reported in 0x2102.
+using canopen::StagedState;
 
 class TableStore {
  public:

@@ -1,6 +1,7 @@
 // A PC on the simulated bus running SDO client operations against one simulated board, one event
-// at a time in virtual time (the upload benchmark, the fault campaign). Unlike a FrameLink with
-// RunToCompletion, the caller keeps control between events: it can stall the PC or inject faults.
+// at a time in virtual time (the upload benchmark, the fault campaign). With Run() the caller keeps
+// control between events: it can stall the PC or inject faults. Link() is the same PC as a blocking
+// FrameLink, for the PC tool's own sequences (canopen_client/table_staging.hpp) between those.
 #pragma once
 
 #include <cstdint>
@@ -8,6 +9,7 @@
 
 #include "volcomp/canopen/object_dictionary.hpp"
 #include "volcomp/canopen_client/sdo_client.hpp"
+#include "volcomp/canopen_client/sdo_runner.hpp"
 #include "volcomp/sim/simulated_board.hpp"
 
 namespace volcomp::sim {
@@ -28,12 +30,17 @@ class SimSdoHost {
   canopen_client::SdoResult Write(canopen::ObjectId id, uint32_t value, uint64_t timeout_ns);
   /// Advances the board and the bus by `ns`, discarding what the PC receives.
   void Idle(uint64_t ns);
+  /// The PC as a FrameLink: receive() advances the board and the bus event by event until a frame
+  /// reaches the PC or its timeout has passed in virtual time. Valid while this host lives.
+  const canopen_client::FrameLink& Link();
+  uint8_t node() const { return node_; }
 
  private:
   SimBus& bus_;
   SimulatedBoard& board_;
   Endpoint& pc_;
   uint8_t node_;
+  canopen_client::FrameLink link_;
 };
 
 }  // namespace volcomp::sim

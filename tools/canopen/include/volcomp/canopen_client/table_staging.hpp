@@ -14,6 +14,7 @@
 #include <cstdint>
 #include <string>
 
+#include "volcomp/canopen/board_protocol.hpp"
 #include "volcomp/canopen_client/node_objects.hpp"
 
 namespace volcomp::canopen_client {
@@ -24,6 +25,12 @@ std::string AbortHint(uint32_t abort_code);
 
 /// `r` with its message prefixed by `step` ("step: reason; hint") when it failed; unchanged if ok.
 SdoResult Explain(SdoResult r, const std::string& step);
+
+/// What writing `command` to table control does, with the write: "activating (0x2101 = 1)".
+std::string TableCommandStep(canopen::TableCommand command);
+
+/// Writes `command` to table control (0x2101); a failure is Explain()ed with TableCommandStep().
+SdoResult WriteTableCommand(NodeObjects& node, canopen::TableCommand command);
 
 /// Reads write access (0x2111) and unlocks the board (0x2110) if it is off: before every write to
 /// tables or settings (staging, activation, deactivation).
