@@ -43,7 +43,7 @@ Status ValidateAxis(const AxisConfig& a, uint32_t tick_hz) {
 }  // namespace
 
 Status ValidateBoardConfig(const BoardConfig& config) {
-  if (config.tick_hz < 1000 || config.tick_hz > 200000) return Error::kConfigInvalid;
+  if (config.tick_hz < kMinTickHz || config.tick_hz > kMaxTickHz) return Error::kConfigInvalid;
   if (config.pulse_clock_hz < config.tick_hz * 100u) return Error::kConfigInvalid;
   if (config.axis_count < 1 || config.axis_count > table::kMaxAxes) return Error::kConfigInvalid;
   for (uint8_t i = 0; i < config.axis_count; ++i) {
@@ -64,22 +64,6 @@ Status CheckImageMatchesBoard(const table::TableView& image, const BoardConfig& 
     if (img.resolution_e9 != cfg.resolution_e9) return Error::kConfigResolutionMismatch;
   }
   return Status::Ok();
-}
-
-BoardConfig DefaultBoardConfig() {
-  BoardConfig c;
-  c.axis_count = 3;
-  const char names[3] = {'X', 'Y', 'Z'};
-  for (int i = 0; i < 3; ++i) {
-    c.axis[i] = AxisConfig();
-    c.axis[i].name = names[i];
-    c.axis[i].drive.pulse_width_ns = 200;
-    c.axis[i].drive.step_space_ns = 200;
-    c.axis[i].drive.dir_setup_ns = 200;
-    c.axis[i].drive.dir_hold_ns = 200;
-    c.axis[i].drive.max_rate_hz = 2000000;
-  }
-  return c;
 }
 
 }  // namespace volcomp

@@ -1,15 +1,30 @@
 // The object dictionary tables, expanded from od_entries.def.
 #include "volcomp/canopen/object_dictionary.hpp"
 
+#include "volcomp/board_config.hpp"
+#include "volcomp/canopen/node_defaults.hpp"
+
 namespace volcomp::canopen {
 
 const ObjectEntry kObjectEntries[] = {
+#define VOLCOMP_OD_LIMITS(low, high) (low, high, true)
+#define VOLCOMP_OD_NO_LIMITS (0, 0, false)
+#define VOLCOMP_OD_LIMIT_FIELDS(low, high, limited) low, high, limited
 #define VOLCOMP_OD_OBJECT(index, kind, name)
 #define VOLCOMP_OD_ENTRY(id, index, sub, type, access, def, name) \
-  {ObjectId::id, index, sub, DataType::type, Access::access, def, name},
+  {ObjectId::id, index, sub, DataType::type, Access::access, def, name, 0, 0, false},
+#define VOLCOMP_OD_SETTING(id, index, sub, type, limits, def, field, name) \
+  {ObjectId::id, index,                                                    \
+   sub,          DataType::type,                                           \
+   Access::kRw,  static_cast<int64_t>(def),                                \
+   name,         VOLCOMP_OD_LIMIT_FIELDS limits},
 #include "volcomp/canopen/od_entries.def"
 #undef VOLCOMP_OD_OBJECT
 #undef VOLCOMP_OD_ENTRY
+#undef VOLCOMP_OD_SETTING
+#undef VOLCOMP_OD_LIMITS
+#undef VOLCOMP_OD_NO_LIMITS
+#undef VOLCOMP_OD_LIMIT_FIELDS
 };
 const size_t kObjectEntryCount = sizeof(kObjectEntries) / sizeof(kObjectEntries[0]);
 

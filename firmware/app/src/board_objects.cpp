@@ -1,6 +1,9 @@
 // The board's object dictionary values.
 #include "volcomp/firmware/board_objects.hpp"
 
+#include <type_traits>
+#include <utility>
+
 #include "volcomp/byte_order.hpp"
 #include "volcomp/canopen/sdo_abort.hpp"
 
@@ -32,35 +35,65 @@ uint32_t StringLength(const char* s) {
   return n;
 }
 
-// The uint32 field of an axis configuration behind a per-axis object index, or null.
-uint32_t* AxisU32(AxisConfig& a, uint16_t index) {
-  switch (index) {
-    case 0x2012:
-      return &a.resolution_e9;
-    case 0x2016:
-      return &a.max_correction_rate_steps_s;
-    case 0x2017:
-      return &a.max_correction_accel_steps_s2;
-    case 0x2019:
-      return &a.drive.pulse_width_ns;
-    case 0x201A:
-      return &a.drive.step_space_ns;
-    case 0x201B:
-      return &a.drive.dir_setup_ns;
-    case 0x201C:
-      return &a.drive.dir_hold_ns;
-    case 0x201D:
-      return &a.drive.max_rate_hz;
-    case 0x201E:
-      return &a.max_input_rate_hz;
-    default:
-      return nullptr;
+// The configuration entries' fields in BoardSettings, one accessor pair per dictionary entry (null
+// for entries that are not settings), expanded from the bindings in od_entries.def.
+struct FieldAccess {
+  int64_t (*get)(const BoardSettings& s);
+  void (*set)(BoardSettings& s, int64_t value);
+  bool enumerated;  // an enum field: out-of-range values are invalid, not too high or too low
+};
+
+template <class T>
+constexpr int64_t FieldValue(T v) {
+  if constexpr (std::is_enum_v<T>) {
+    return static_cast<int64_t>(static_cast<std::underlying_type_t<T>>(v));
+  } else {
+    return static_cast<int64_t>(v);
   }
 }
 
-// Per-axis configuration objects 0x2010..0x201E, sub 1..6.
-bool IsAxisConfig(const ObjectEntry& e) {
-  return e.index >= 0x2010 && e.index <= 0x201E && e.sub >= 1 && e.sub <= table::kMaxAxes;
+template <class T>
+constexpr void SetField(T& field, int64_t v) {
+  field = static_cast<T>(v);
+}
+
+#define VOLCOMP_OD_OBJECT(index, kind, name)
+#define VOLCOMP_OD_ENTRY(id, index, sub, type, access, def, name) {nullptr, nullptr, false},
+#define VOLCOMP_OD_SETTING(id, index, sub, type, limits, def, field, name) \
+  {[](const BoardSettings& s) { return FieldValue(s.field); },             \
+   [](BoardSettings& s, int64_t v) { SetField(s.field, v); },              \
+   std::is_enum_v<std::remove_reference_t<decltype(std::declval<BoardSettings&>().field)>>},
+constexpr FieldAccess kFields[] = {
+#include "volcomp/canopen/od_entries.def"  // NOLINT(build/include)
+};
+#undef VOLCOMP_OD_OBJECT
+#undef VOLCOMP_OD_ENTRY
+#undef VOLCOMP_OD_SETTING
+static_assert(sizeof(kFields) / sizeof(kFields[0]) == static_cast<size_t>(ObjectId::kCount),
+              "one field access per ObjectId");
+
+const FieldAccess& Field(const ObjectEntry& e) { return kFields[static_cast<size_t>(e.id)]; }
+
+// The value of a write to `e` as a number of its type (sign-extended for the signed types).
+int64_t WrittenValue(const ObjectEntry& e, uint32_t raw) {
+  switch (e.type) {
+    case canopen::DataType::kInteger8:
+      return static_cast<int8_t>(raw);
+    case canopen::DataType::kInteger16:
+      return static_cast<int16_t>(raw);
+    case canopen::DataType::kInteger32:
+      return static_cast<int32_t>(raw);
+    default:
+      return raw;
+  }
+}
+
+// The axis (0-based) of `id` in the per-axis array whose axis-1 entry is `first`, if it is one.
+bool AxisOf(ObjectId id, ObjectId first, uint8_t* axis) {
+  const int d = static_cast<int>(id) - static_cast<int>(first);
+  if (d < 0 || d >= static_cast<int>(table::kMaxAxes)) return false;
+  *axis = static_cast<uint8_t>(d);
+  return true;
 }
 
 }  // namespace
@@ -127,7 +160,10 @@ uint32_t BoardObjects::Refuse(uint32_t abort_code) {
 
 bool BoardObjects::ReadNumber(const ObjectEntry& e, uint32_t* v) const {
   const ControlTick& eng = control_->engine();
-  const BoardSettings& p = pending_;
+  if (const FieldAccess& f = Field(e); f.get != nullptr) {
+    *v = static_cast<uint32_t>(f.get(pending_));
+    return true;
+  }
   switch (e.id) {
     case ObjectId::kDeviceType:
       *v = 0;
@@ -146,18 +182,6 @@ bool BoardObjects::ReadNumber(const ObjectEntry& e, uint32_t* v) const {
     case ObjectId::kRestoreAll:
       *v = 1;
       return true;  // restores on command
-    case ObjectId::kNodeIdConfig:
-      *v = p.node_id;
-      return true;
-    case ObjectId::kBitrateConfig:
-      *v = p.bitrate_kbit;
-      return true;
-    case ObjectId::kTickRateConfig:
-      *v = p.board.tick_hz;
-      return true;
-    case ObjectId::kAxisCountConfig:
-      *v = p.board.axis_count;
-      return true;
     case ObjectId::kTableControl:
       *v = last_command_;
       return true;
@@ -221,50 +245,22 @@ bool BoardObjects::ReadNumber(const ObjectEntry& e, uint32_t* v) const {
     default:
       break;
   }
-  if (IsAxisConfig(e)) {
-    AxisConfig x = p.board.axis[e.sub - 1];
-    switch (e.index) {
-      case 0x2010:
-        *v = static_cast<uint8_t>(x.name);
-        return true;
-      case 0x2011:
-        *v = static_cast<uint8_t>(x.kind);
-        return true;
-      case 0x2013:
-        *v = static_cast<uint8_t>(x.input_format);
-        return true;
-      case 0x2014:
-        *v = static_cast<uint8_t>(x.output_format);
-        return true;
-      case 0x2015:
-        *v = static_cast<uint32_t>(x.max_correction_steps);
-        return true;
-      case 0x2018:
-        *v = static_cast<uint32_t>(x.home_position_steps);
-        return true;
-      default:
-        *v = *AxisU32(x, e.index);
-        return true;
-    }
+  // Live per-axis values; axes that are not configured read 0.
+  uint8_t a = 0;
+  if (AxisOf(e.id, ObjectId::kCommandedPosition1, &a)) {
+    *v = a < eng.axis_count() ? static_cast<uint32_t>(eng.commanded(a)) : 0;
+    return true;
   }
-  if (e.index >= 0x2130 && e.index <= 0x2133 && e.sub >= 1) {
-    const uint8_t a = static_cast<uint8_t>(e.sub - 1);
-    *v = 0;
-    if (a >= eng.axis_count()) return true;  // axes not configured read 0
-    switch (e.index) {
-      case 0x2130:
-        *v = static_cast<uint32_t>(eng.commanded(a));
-        break;
-      case 0x2131:
-        *v = static_cast<uint32_t>(eng.compensator().applied_q8(a));
-        break;
-      case 0x2132:
-        *v = static_cast<uint32_t>(eng.output_position(a));
-        break;
-      default:
-        *v = eng.max_backlog(a);
-        break;
-    }
+  if (AxisOf(e.id, ObjectId::kAppliedCorrection1, &a)) {
+    *v = a < eng.axis_count() ? static_cast<uint32_t>(eng.compensator().applied_q8(a)) : 0;
+    return true;
+  }
+  if (AxisOf(e.id, ObjectId::kOutputPosition1, &a)) {
+    *v = a < eng.axis_count() ? static_cast<uint32_t>(eng.output_position(a)) : 0;
+    return true;
+  }
+  if (AxisOf(e.id, ObjectId::kMaxBacklog1, &a)) {
+    *v = a < eng.axis_count() ? eng.max_backlog(a) : 0;
     return true;
   }
   if (e.access == canopen::Access::kConst) {
@@ -314,57 +310,16 @@ uint32_t BoardObjects::DoRead(const ObjectEntry& e,
   return CopyOut(bytes, canopen::FixedSize(e.type), offset, buf, cap, copied, total);
 }
 
-uint32_t BoardObjects::WriteConfig(const ObjectEntry& e, uint32_t v) {
-  BoardSettings s = pending_;
-  switch (e.id) {
-    case ObjectId::kNodeIdConfig:
-      if (v < 1 || v > 127) return canopen::kAbortInvalidValue;
-      s.node_id = static_cast<uint8_t>(v);
-      break;
-    case ObjectId::kBitrateConfig:
-      s.bitrate_kbit = static_cast<uint16_t>(v);
-      break;
-    case ObjectId::kTickRateConfig:
-      s.board.tick_hz = v;
-      break;
-    case ObjectId::kAxisCountConfig:
-      if (v < 1 || v > table::kMaxAxes) return canopen::kAbortInvalidValue;
-      s.board.axis_count = static_cast<uint8_t>(v);
-      break;
-    default: {
-      if (!IsAxisConfig(e)) return canopen::kAbortReadOnly;
-      AxisConfig& x = s.board.axis[e.sub - 1];
-      const int32_t signed_v = static_cast<int32_t>(v);
-      switch (e.index) {
-        case 0x2010:
-          x.name = static_cast<char>(v);
-          break;
-        case 0x2011:
-          if (v > 1) return canopen::kAbortInvalidValue;
-          x.kind = static_cast<table::AxisKind>(v);
-          break;
-        case 0x2013:
-        case 0x2014:
-          if (v > 2) return canopen::kAbortInvalidValue;
-          (e.index == 0x2013 ? x.input_format : x.output_format) = static_cast<PulseFormat>(v);
-          break;
-        case 0x2015:
-          if (signed_v < 0) return canopen::kAbortValueTooLow;
-          if (signed_v > table::kMaxCorrectionSteps) return canopen::kAbortValueTooHigh;
-          x.max_correction_steps = signed_v;
-          break;
-        case 0x2018:
-          x.home_position_steps = signed_v;
-          break;
-        default:
-          *AxisU32(x, e.index) = v;
-          break;
-      }
-    }
+uint32_t BoardObjects::WriteSetting(const ObjectEntry& e, uint32_t raw) {
+  const FieldAccess& f = Field(e);
+  const int64_t v = WrittenValue(e, raw);
+  if (e.limited && (v < e.low_limit || v > e.high_limit)) {
+    if (f.enumerated) return canopen::kAbortInvalidValue;
+    return v < e.low_limit ? canopen::kAbortValueTooLow : canopen::kAbortValueTooHigh;
   }
-  // Single fields are range-checked here where they can be; the whole configuration is checked
-  // at "store" (0x1010), which refuses an inconsistent set with 0x06090030.
-  pending_ = s;
+  // Single fields are range-checked here; the whole configuration is checked at "store" (0x1010),
+  // which refuses an inconsistent set with 0x06090030.
+  f.set(pending_, v);
   return 0;
 }
 
@@ -446,9 +401,9 @@ uint32_t BoardObjects::DoWrite(const ObjectEntry& e, const uint8_t* data, uint32
     default:
       break;
   }
-  if (e.index >= 0x2000 && e.index <= 0x201E) {
+  if (Field(e).set != nullptr) {
     if (!writable()) return Refuse(canopen::kAbortCannotStore);
-    return WriteConfig(e, v);
+    return WriteSetting(e, v);
   }
   return canopen::kAbortReadOnly;
 }

@@ -44,6 +44,10 @@ struct AxisConfig {
   int32_t home_position_steps = 0;  // machine position assigned at the home (reference) edge
 };
 
+/// Control tick rates ValidateBoardConfig accepts.
+inline constexpr uint32_t kMinTickHz = 1000;
+inline constexpr uint32_t kMaxTickHz = 200000;
+
 struct BoardConfig {
   uint32_t tick_hz = 50000;              // control tick rate
   uint32_t pulse_clock_hz = 1000000000;  // output pulse timer clock (ns resolution in the mock)
@@ -57,7 +61,23 @@ Status ValidateBoardConfig(const BoardConfig& config);
 /// Checks that an image was built for this board: axis count, names, kinds, units per step.
 Status CheckImageMatchesBoard(const table::TableView& image, const BoardConfig& config);
 
-/// A default configuration for three linear axes X, Y, Z at 1 um/step (examples and tests).
-BoardConfig DefaultBoardConfig();
+/// The factory configuration: three linear axes X, Y, Z at 1 um/step, and on every axis drive
+/// timing (200 ns pulses, 2 MHz) that keeps up with the 1 MHz input plus the correction rate. What
+/// a board without stored settings runs with; od_entries.def takes the EDS defaults from it.
+constexpr BoardConfig DefaultBoardConfig() {
+  BoardConfig c;
+  c.axis_count = 3;
+  const char names[3] = {'X', 'Y', 'Z'};
+  for (uint32_t i = 0; i < table::kMaxAxes; ++i) {
+    c.axis[i] = AxisConfig();
+    if (i < 3) c.axis[i].name = names[i];
+    c.axis[i].drive.pulse_width_ns = 200;
+    c.axis[i].drive.step_space_ns = 200;
+    c.axis[i].drive.dir_setup_ns = 200;
+    c.axis[i].drive.dir_hold_ns = 200;
+    c.axis[i].drive.max_rate_hz = 2000000;
+  }
+  return c;
+}
 
 }  // namespace volcomp

@@ -56,6 +56,18 @@ std::string DefaultValue(const ObjectEntry& e, const EdsInfo& info) {
   }
 }
 
+// A limit in the notation of DefaultValue (hex for unsigned types, decimal for signed ones).
+std::string Limit(const ObjectEntry& e, int64_t v) {
+  switch (e.type) {
+    case DataType::kInteger8:
+    case DataType::kInteger16:
+    case DataType::kInteger32:
+      return std::to_string(v);
+    default:
+      return Hex(static_cast<uint32_t>(v), 2 * canopen::FixedSize(e.type));
+  }
+}
+
 void WriteEntry(std::ostream& out,
                 const std::string& section,
                 const ObjectEntry& e,
@@ -64,6 +76,10 @@ void WriteEntry(std::ostream& out,
   out << "ParameterName=" << e.name << "\n";
   out << "ObjectType=0x7\n";
   out << "DataType=" << Hex(static_cast<uint32_t>(e.type), 4) << "\n";
+  if (e.limited) {  // CiA 306: the value range, written only where the dictionary defines one
+    out << "LowLimit=" << Limit(e, e.low_limit) << "\n";
+    out << "HighLimit=" << Limit(e, e.high_limit) << "\n";
+  }
   out << "AccessType=" << AccessName(e.access) << "\n";
   if (e.type != DataType::kDomain) out << "DefaultValue=" << DefaultValue(e, info) << "\n";
   out << "PDOMapping=0\n\n";

@@ -11,6 +11,7 @@
 #include <cstdint>
 
 #include "volcomp/can_frame.hpp"
+#include "volcomp/canopen/node_defaults.hpp"
 #include "volcomp/canopen/object_values.hpp"
 #include "volcomp/canopen/sdo_server.hpp"
 
@@ -99,7 +100,7 @@ class Node : private ObjectValues {
   SdoServer sdo_;
   NmtState state_ = NmtState::kInitialising;
   ResetRequest reset_ = ResetRequest::kNone;
-  uint16_t heartbeat_ms_ = 1000;
+  uint16_t heartbeat_ms_ = kDefaultHeartbeatMs;
   uint32_t last_heartbeat_ms_ = 0;
   uint8_t error_register_ = 0;
   uint32_t history_[8] = {};

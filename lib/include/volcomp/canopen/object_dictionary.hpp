@@ -29,7 +29,7 @@ enum class ObjectKind : uint8_t { kVar = 7, kArray = 8, kRecord = 9 };  // EDS O
 enum class ObjectId : uint16_t {
 #define VOLCOMP_OD_OBJECT(index, kind, name)
 #define VOLCOMP_OD_ENTRY(id, index, sub, type, access, def, name) id,
-#include "volcomp/canopen/od_entries.def"
+#include "volcomp/canopen/od_entries.def"  // NOLINT(build/include)
 #undef VOLCOMP_OD_OBJECT
 #undef VOLCOMP_OD_ENTRY
   kCount
@@ -46,8 +46,11 @@ struct ObjectEntry {
   uint8_t sub;
   DataType type;
   Access access;
-  int64_t default_value;
+  int64_t default_value;  // what a board without stored settings reports
   const char* name;
+  int64_t low_limit;  // writes outside [low_limit, high_limit] are refused (when `limited`)
+  int64_t high_limit;
+  bool limited;
 };
 
 struct ObjectHeader {

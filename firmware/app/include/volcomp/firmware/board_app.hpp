@@ -295,7 +295,7 @@ class BoardApp final : private BoardControl {
   bool started_ = false;
   bool fault_ = false;
   bool write_enable_ = false;
-  bool bus_enable_ = true;
+  bool bus_enable_ = canopen::kDefaultCompensationEnable != 0;
   bool home_level_[table::kMaxAxes] = {};
   Status stored_status_ = Error::kNotFound;
   CanFrame tx_;

@@ -73,7 +73,9 @@ class BoardObjects : public canopen::ObjectValues {
   uint32_t DoEndDomainWrite(bool complete) override;
 
   bool ReadNumber(const canopen::ObjectEntry& e, uint32_t* value) const;
-  uint32_t WriteConfig(const canopen::ObjectEntry& e, uint32_t value);
+  // A configuration entry (bound to a BoardSettings field in od_entries.def): range check, then
+  // the pending copy.
+  uint32_t WriteSetting(const canopen::ObjectEntry& e, uint32_t raw);
   uint32_t TableControl(uint8_t command);
   uint32_t Refuse(uint32_t abort_code);
 

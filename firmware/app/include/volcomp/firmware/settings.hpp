@@ -6,6 +6,7 @@
 #include <cstdint>
 
 #include "volcomp/board_config.hpp"
+#include "volcomp/canopen/node_defaults.hpp"
 #include "volcomp/firmware/dual_bank_store.hpp"
 #include "volcomp/hal/flash.hpp"
 #include "volcomp/status.hpp"
@@ -14,9 +15,9 @@ namespace volcomp::firmware {
 
 struct BoardSettings {
   BoardConfig board = DefaultBoardConfig();
-  uint8_t node_id = 0x10;        // 1..127
-  uint16_t bitrate_kbit = 1000;  // 10..1000
-  uint16_t heartbeat_ms = 1000;  // 0 = off
+  uint8_t node_id = canopen::kDefaultNodeId;             // 1..127
+  uint16_t bitrate_kbit = canopen::kDefaultBitrateKbit;  // 10..1000
+  uint16_t heartbeat_ms = canopen::kDefaultHeartbeatMs;  // 0 = off
 };
 
 /// Range checks of everything in `s` (ValidateBoardConfig plus the node settings).
