@@ -356,10 +356,7 @@ uint32_t BoardObjects::TableControl(uint8_t command) {
       }
       const Result<table::TableView> view = tables_->Activate();
       if (!view.ok()) return Refuse(canopen::kAbortHardware);
-      PreparedTable prepared;
-      if (!prepared.Prepare(*view, board).ok()) return Refuse(canopen::kAbortGeneral);
-      control_->RequestTable(prepared);
-      set_active(view->table_id, view->crc32);
+      if (!control_->ActivateTable(*view).ok()) return Refuse(canopen::kAbortGeneral);
       return 0;
     }
   }

@@ -60,12 +60,20 @@ struct PreparedTable {
 
 class Compensator {
  public:
+  Compensator() = default;
+  // Not copyable: the active table may be this object's own copy (a copy would point into it).
+  Compensator(const Compensator&) = delete;
+  Compensator& operator=(const Compensator&) = delete;
+
   /// Sets axis count and limits from a validated board configuration; resets all state.
   Status Configure(const BoardConfig& config);
 
   /// Makes `table` the active table (copied; the image bytes it points to must stay valid until
   /// the next SetTable/ClearTable). The applied correction moves to the new target within limits.
   void SetTable(const PreparedTable& table, const int32_t* machine_pos_steps);
+  /// SetTable() without the copy: `*table` is used in place and must stay valid and unchanged
+  /// until the next SetTable/UseTable/ClearTable (a board hands tables over in its own slots).
+  void UseTable(const PreparedTable* table, const int32_t* machine_pos_steps);
   /// Drops the active table at once; the applied correction ramps out to zero.
   void ClearTable();
   /// Machine coordinates jumped (re-referencing): restart direction and wrap tracking from
@@ -117,8 +125,8 @@ class Compensator {
   bool engaged() const { return engaged_; }
   /// True when every axis has zero applied correction and is at rest (pure pass-through).
   bool passthrough() const;
-  uint32_t table_id() const { return table_.table_id; }
-  uint32_t table_crc32() const { return table_.crc32; }
+  uint32_t table_id() const { return table_->table_id; }
+  uint32_t table_crc32() const { return table_->crc32; }
   /// Target (the last refresh, clamped) and applied correction of an axis, Q24.8 steps.
   int32_t target_q8(int axis) const { return target_q8_[axis]; }
   int32_t applied_q8(int axis) const {
@@ -153,7 +161,8 @@ class Compensator {
   int32_t last_pos_[table::kMaxAxes] = {};
   bool reverse_[table::kMaxAxes] = {};
   GridLookup::Partial grid_partial_;
-  PreparedTable table_;
+  PreparedTable own_;                   // SetTable()'s copy
+  const PreparedTable* table_ = &own_;  // the active table (own_ or the caller's)
 };
 
 }  // namespace volcomp

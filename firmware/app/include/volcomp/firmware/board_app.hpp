@@ -8,9 +8,13 @@
 //           dictionary of BoardObjects: configuration, table staging, diagnostics).
 //
 // Requests from the main loop reach the tick through atomics: a reference bit mask, an
-// "unreference" flag, and a table hand-over slot (the main loop fills it only while the tick is
-// not reading it; see RequestTable). On the MCU the tick ISR preempts the main loop, never the
-// reverse; on the host both run in one thread.
+// "unreference" flag, and the table hand-over (two prepared-table slots; the tick switches to the
+// one the main loop published, without copying it: table_hand_over.hpp). On the MCU the tick ISR
+// preempts the main loop, never the reverse; on the host both run in one thread.
+//
+// Activation is one sequence, ActivateTable(): prepare the parsed image against the configuration
+// in force, hand it to the tick, mark it active (0x2103 / 0x2104). Power-up (the stored table),
+// ActivateImage() and table control (0x2101 = activate, through BoardControl) all use it.
 //
 // Storage: the table flash holds the dual-bank table store (active image + staging); the settings
 // flash (optional) holds the stored BoardSettings. Start() loads the settings (or the defaults),
@@ -30,6 +34,7 @@
 #include "volcomp/firmware/board_control.hpp"
 #include "volcomp/firmware/board_objects.hpp"
 #include "volcomp/firmware/settings.hpp"
+#include "volcomp/firmware/table_hand_over.hpp"
 #include "volcomp/firmware/table_store.hpp"
 #include "volcomp/hal/can.hpp"
 #include "volcomp/hal/clock.hpp"
@@ -119,15 +124,15 @@ class BoardApp final : private BoardControl {
   void Tick() {
     if (!started_) return;
     const uint64_t t0 = options_.measure_tick_cost ? dev_.clock->NowNs() : 0;
-    const uint8_t cmd = table_cmd_.load(std::memory_order_acquire);
-    if (cmd == kTableSet) {
-      int32_t machine[table::kMaxAxes];
-      for (uint8_t a = 0; a < engine_.axis_count(); ++a) machine[a] = engine_.machine_position(a);
-      engine_.compensator().SetTable(pending_table_, machine);
-      table_cmd_.store(kTableNone, std::memory_order_release);
-    } else if (cmd == kTableClear) {
-      engine_.compensator().ClearTable();
-      table_cmd_.store(kTableNone, std::memory_order_release);
+    const PreparedTable* table = nullptr;
+    if (hand_over_.Take(&table)) {
+      if (table != nullptr) {
+        int32_t machine[table::kMaxAxes];
+        for (uint8_t a = 0; a < engine_.axis_count(); ++a) machine[a] = engine_.machine_position(a);
+        engine_.compensator().UseTable(table, machine);
+      } else {
+        engine_.compensator().ClearTable();
+      }
     }
     const uint8_t refs = pending_reference_.exchange(0, std::memory_order_acquire);
     for (uint8_t a = 0; a < engine_.axis_count(); ++a) {
@@ -160,11 +165,7 @@ class BoardApp final : private BoardControl {
   Status ActivateImage(const uint8_t* image, size_t size) {
     const Result<table::TableView> view = table::ParseImage(image, size);
     if (!view.ok()) return view.status();
-    PreparedTable prepared;
-    VOLCOMP_TRY(prepared.Prepare(*view, engine_.config()));
-    DoRequestTable(prepared);
-    objects_.set_active(view->table_id, view->crc32);
-    return Status::Ok();
+    return ActivateTable(*view);
   }
 
   const ControlTick& engine() const { return engine_; }
@@ -177,8 +178,6 @@ class BoardApp final : private BoardControl {
   bool started() const { return started_; }
 
  private:
-  static constexpr uint8_t kTableNone = 0, kTableSet = 1, kTableClear = 2;
-
   Status ActivateStored() {
     const Result<table::TableView> view = tables_.MountActive(settings_.board);
     if (!view.ok()) {
@@ -188,11 +187,7 @@ class BoardApp final : private BoardControl {
       }
       return view.status();
     }
-    PreparedTable prepared;
-    VOLCOMP_TRY(prepared.Prepare(*view, settings_.board));
-    DoRequestTable(prepared);
-    objects_.set_active(view->table_id, view->crc32);
-    return Status::Ok();
+    return ActivateTable(*view);
   }
 
   uint32_t NowMs() const {
@@ -262,12 +257,20 @@ class BoardApp final : private BoardControl {
   }
 
   // BoardControl.
-  void DoRequestTable(const PreparedTable& table) override {
-    table_cmd_.store(kTableNone, std::memory_order_release);  // the tick stops reading the slot
-    pending_table_ = table;
-    table_cmd_.store(kTableSet, std::memory_order_release);
+  // The activation sequence: prepare against the configuration in force (in the slot the tick does
+  // not use), hand over to the tick, mark active. On error nothing changes.
+  Status DoActivateTable(const table::TableView& view) override {
+    PreparedTable& slot = hand_over_.BeginWrite();
+    const Status s = slot.Prepare(view, engine_.config());
+    if (!s.ok()) {
+      hand_over_.Abandon();
+      return s;
+    }
+    hand_over_.Publish();
+    objects_.set_active(view.table_id, view.crc32);
+    return Status::Ok();
   }
-  void DoRequestClearTable() override { table_cmd_.store(kTableClear, std::memory_order_release); }
+  void DoRequestClearTable() override { hand_over_.PublishClear(); }
   void DoRequestReference(uint8_t mask) override {
     if (!fault_) pending_reference_.fetch_or(mask, std::memory_order_release);
   }
@@ -301,8 +304,7 @@ class BoardApp final : private BoardControl {
   CanFrame tx_;
   bool have_tx_ = false;
   uint32_t max_tick_ns_ = 0;
-  PreparedTable pending_table_;
-  std::atomic<uint8_t> table_cmd_{kTableNone};
+  TableHandOver hand_over_;
   std::atomic<uint8_t> pending_reference_{0};
   std::atomic<bool> pending_unreference_{false};
   std::atomic<bool> enabled_{false};

@@ -7,13 +7,17 @@
 
 #include "volcomp/compensator.hpp"
 #include "volcomp/control_tick.hpp"
+#include "volcomp/status.hpp"
+#include "volcomp/table_image.hpp"
 
 namespace volcomp::firmware {
 
 class BoardControl {
  public:
-  /// Makes `table` the active table at the next tick.
-  void RequestTable(const PreparedTable& table) { DoRequestTable(table); }
+  /// The activation sequence: prepares the parsed image `view` against the configuration in force,
+  /// hands it to the tick (active from the next tick on) and marks it active (0x2103 / 0x2104).
+  /// The image bytes must stay valid and unchanged while it is active. On error nothing changes.
+  [[nodiscard]] Status ActivateTable(const table::TableView& view) { return DoActivateTable(view); }
   /// Drops the active table at the next tick (the correction ramps out).
   void RequestClearTable() { DoRequestClearTable(); }
   /// References the axes in `mask` (bit a = axis a) at the next tick.
@@ -34,7 +38,7 @@ class BoardControl {
   ~BoardControl() = default;
 
  private:
-  virtual void DoRequestTable(const PreparedTable& table) = 0;
+  virtual Status DoActivateTable(const table::TableView& view) = 0;
   virtual void DoRequestClearTable() = 0;
   virtual void DoRequestReference(uint8_t mask) = 0;
   virtual void DoSetBusEnable(bool on) = 0;
