@@ -67,12 +67,14 @@ void Compensator::SetTable(const PreparedTable& table, const int32_t* machine_po
 void Compensator::UseTable(const PreparedTable* table, const int32_t* machine_pos_steps) {
   table_ = table;
   for (int8_t& c : grid_component_of_) c = -1;
-  if (table_->has_grid) {
-    for (int8_t c = 0; c < 3; ++c) grid_component_of_[table_->grid.axis(c)] = c;
+  grid_ = table_->has_grid ? &table_->grid : nullptr;
+  if (grid_ != nullptr) {
+    for (int8_t c = 0; c < 3; ++c) grid_component_of_[grid_->axis(c)] = c;
   }
-  for (uint8_t a = 0; a < axis_count_; ++a) {
-    const int8_t i = table_->axis_table_of[a];
-    wraps_[a] = i >= 0 && table_->axis_table[i].wraps();
+  for (uint8_t a = 0; a < table::kMaxAxes; ++a) {
+    const int8_t i = a < axis_count_ ? table_->axis_table_of[a] : int8_t{-1};
+    axis_lookup_[a] = i >= 0 ? &table_->axis_table[i] : nullptr;
+    wraps_[a] = axis_lookup_[a] != nullptr && axis_lookup_[a]->wraps();
   }
   has_table_ = true;
   UpdateEngaged();
@@ -90,7 +92,7 @@ void Compensator::Rebase(const int32_t* machine_pos_steps) {
   for (uint8_t a = 0; a < axis_count_; ++a) {
     last_pos_[a] = machine_pos_steps[a];
     if (has_table_ && wraps_[a]) {
-      const AxisLookup& t = table_->axis_table[table_->axis_table_of[a]];
+      const AxisLookup& t = *axis_lookup_[a];
       wrap_[a].Init(machine_pos_steps[a], t.origin_steps(), t.period_steps());
     }
   }
@@ -111,29 +113,28 @@ void Compensator::RefreshTargets(const int32_t* machine_pos_steps) {
   }
   // One part per tick; an if-chain, not a switch (a jump table would be an indirect jump, which
   // the static cycle bound of toolchain/cyclemodel refuses).
-  const PreparedTable& table = *table_;
   const uint32_t phase = phase_;
   uint32_t next = phase + 1u;
   if (phase < kGridPhases) {
-    if (table.has_grid) {
+    const GridLookup* grid = grid_;
+    if (grid != nullptr) {
       if (phase == 0) {
-        table.grid.Begin(machine_pos_steps, &grid_partial_);
+        grid->Begin(machine_pos_steps, &grid_partial_);
       } else if (phase == 1) {
-        table.grid.AccumulateZ0(&grid_partial_);
+        grid->AccumulateZ0(&grid_partial_);
       } else {
-        table.grid.FinishZ1(grid_partial_, grid_q8_);
+        grid->FinishZ1(grid_partial_, grid_q8_);
       }
     }
   } else {
     // Axis a: its grid component (from the positions latched in part 0), its AXIS1D table at
     // its current position and direction, clamped: the new target of the axis.
     const uint32_t a = phase - kGridPhases;
+    const AxisLookup* lookup = axis_lookup_[a];
     const int8_t c = grid_component_of_[a];
     int32_t t = c >= 0 ? grid_q8_[c] : 0;
-    const int8_t i = table.axis_table_of[a];
-    if (i >= 0) {
-      t += table.axis_table[i].Lookup(wraps_[a] ? wrap_[a].position() : machine_pos_steps[a],
-                                      reverse_[a]);
+    if (lookup != nullptr) {
+      t += lookup->Lookup(wraps_[a] ? wrap_[a].position() : machine_pos_steps[a], reverse_[a]);
     }
     const int32_t max = max_q8_[a];
     t = t > max ? max : t;

@@ -163,6 +163,9 @@ class Compensator {
   GridLookup::Partial grid_partial_;
   PreparedTable own_;                   // SetTable()'s copy
   const PreparedTable* table_ = &own_;  // the active table (own_ or the caller's)
+  // The active table's lookups, resolved once in UseTable() so the refresh loads one pointer.
+  const GridLookup* grid_ = nullptr;                     // null without a grid
+  const AxisLookup* axis_lookup_[table::kMaxAxes] = {};  // per board axis, null without a table
 };
 
 }  // namespace volcomp

@@ -40,7 +40,7 @@ struct ActivationReport {
 
 ActivationReport ActivateTable(World& world, uint32_t expected_crc);
 
-/// Reads 0x2122 (device state bits, firmware/board_objects.hpp DeviceStateBit).
+/// Reads 0x2122 (device state bits, canopen/board_protocol.hpp DeviceStateBit).
 uint16_t ReadDeviceState(World& world);
 
 }  // namespace volcomp::sim
