@@ -231,7 +231,7 @@ bool BoardObjects::ReadNumber(const ObjectEntry& e, uint32_t* v) const {
       *v = static_cast<uint32_t>(eng.ticks());
       return true;
     case ObjectId::kLostStepChecks:
-      *v = eng.overruns();
+      *v = control_->output_status().overruns;
       return true;
     case ObjectId::kMaxTickCost:
       *v = control_->max_tick_cost_ns();
@@ -280,10 +280,10 @@ bool BoardObjects::ReadNumber(const ObjectEntry& e, uint32_t* v) const {
         *v = static_cast<uint32_t>(eng.compensator().applied_q8(a));
         break;
       case 0x2132:
-        *v = static_cast<uint32_t>(eng.output_position(a));
+        *v = static_cast<uint32_t>(control_->output_status().position_steps[a]);
         break;
       default:
-        *v = eng.max_backlog(a);
+        *v = control_->output_status().max_backlog_steps[a];
         break;
     }
     return true;
