@@ -30,7 +30,8 @@ build/host/tests/bench/core_bench --benchmark_min_time=0.05 2>/dev/null | tail -
 # Cortex-M4F (docs/mcu-target.md): STM32G474 image, lib tests on QEMU mps2-an386, cycle budgets.
 scripts/setup-deps.sh arm
 run_preset arm-m4f
-toolchain/size-report.sh build/arm-m4f/firmware/stm32g4/volcomp_stm32g474.elf >&2
+toolchain/size-report.sh build/arm-m4f/firmware/stm32g4/volcomp_stm32g474.elf \
+  build/arm-m4f/firmware/stm32g4/volcomp_stm32g474_gateway.elf >&2
 echo "== Cortex-M4 cycle table (toolchain/cyclemodel/cm4cost.py)" >&2
 cat build/arm-m4f/tests/target/cycle_budgets.md >&2
 if [[ $fast -eq 0 ]]; then

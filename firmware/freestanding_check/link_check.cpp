@@ -7,6 +7,9 @@
 #include "volcomp/control_tick.hpp"
 #include "volcomp/crc32.hpp"
 #include "volcomp/firmware/board_app.hpp"
+#include "volcomp/firmware/gateway_app.hpp"
+#include "volcomp/firmware/step_dir_io.hpp"
+#include "volcomp/step_output.hpp"
 #include "volcomp/table_image.hpp"
 #include "volcomp/table_writer.hpp"
 
@@ -22,6 +25,15 @@ struct NullStepIo {
 class NullIo final : public volcomp::hal::SlowIo {
   bool DoRead(volcomp::hal::InputLine) override { return false; }
   void DoWrite(volcomp::hal::OutputLine, bool) override {}
+};
+
+class NullCan final : public volcomp::hal::CanPort {
+  volcomp::Status DoSend(const volcomp::CanFrame&) override { return volcomp::Status(); }
+  bool DoReceive(volcomp::CanFrame*) override { return false; }
+};
+
+class NullClock final : public volcomp::hal::Clock {
+  uint64_t DoNowNs() override { return 0; }
 };
 
 class NullFlash final : public volcomp::hal::Flash {
@@ -70,17 +82,32 @@ void __cxa_pure_virtual() {
       }
       uint32_t counters[3] = {1, 2, 3};
       volcomp::PulsePlan plans[3];
-      tick.Run(counters, plans);
+      tick.Run(counters);
+      static volcomp::StepOutput output;
+      if (output.Configure(tick.config()).ok()) output.Plan(tick.targets(), plans);
       sink = plans[0].count + volcomp::ComputeCrc32(image, 8);
     }
   }
   static NullStepIo step_io;
+  static volcomp::firmware::StepDirIo<NullStepIo> tick_io(&step_io);
   static NullIo io;
   static NullFlash flash;
-  static volcomp::firmware::BoardApp<NullStepIo> app({&step_io, &io, &flash});
+  static volcomp::firmware::BoardApp<volcomp::firmware::StepDirIo<NullStepIo>> app(
+      {&tick_io, &io, &flash});
   if (app.Start(volcomp::DefaultBoardConfig()).ok()) {
     app.Poll();
     app.Tick();
+  }
+  // The CAN gateway application (node, CSP gateway, frame routing) links without a runtime too.
+  static NullCan controller, drives;
+  static NullClock clock;
+  static NullFlash gateway_flash;
+  static volcomp::firmware::GatewayApp gateway(
+      {&controller, &drives, &io, &gateway_flash, nullptr, &clock});
+  if (gateway.Start(volcomp::firmware::BoardSettings(), volcomp::gateway::GatewayConfig()).ok()) {
+    gateway.PumpFrames();
+    gateway.Tick();
+    gateway.Poll();
   }
   (void)sink;
   for (;;) {

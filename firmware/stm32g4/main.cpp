@@ -6,12 +6,14 @@
 
 #include "cm4_runtime.hpp"
 #include "volcomp/firmware/board_app.hpp"
+#include "volcomp/firmware/step_dir_io.hpp"
 #include "volcomp/hal/stm32g4/drivers.hpp"
 
 namespace {
 
 using volcomp::stm32g4::StepIo;
-using App = volcomp::firmware::BoardApp<StepIo>;
+using TickIo = volcomp::firmware::StepDirIo<StepIo>;
+using App = volcomp::firmware::BoardApp<TickIo>;
 
 // The reference board: X, Y on 32-bit input timers (TIM2, TIM5), Z on a 16-bit one (TIM3);
 // output timers count at SYSCLK.
@@ -32,9 +34,10 @@ volcomp::stm32g4::StmFlash g_settings(volcomp::stm32g4::layout::kConfigOffset,
 volcomp::stm32g4::StmFdcan g_can;
 volcomp::stm32g4::CycleClock g_clock;
 
-// The application (the tick's data) in CCM SRAM next to the tick code.
+// The application and the step output stage (the tick's data) in CCM SRAM next to the tick code.
+__attribute__((section(".ccm_bss"))) TickIo g_tick_io(&g_step_io);
 __attribute__((section(".ccm_bss")))
-App g_app({&g_step_io, &g_io, &g_tables, &g_settings, &g_can, &g_clock});
+App g_app({&g_tick_io, &g_io, &g_tables, &g_settings, &g_can, &g_clock});
 
 }  // namespace
 

@@ -23,10 +23,11 @@ Result<CorrectionLimiter::Params> CorrectionLimiter::MakeParams(uint32_t tick_hz
   return p;
 }
 
-// The same decisions as LimiterStepReference() (hot_path_reference.cpp), arranged for the
-// Cortex-M4: both braking distances a * m(m+1)/2 the decision may need are formed up front (one
-// MLA, one shift and one UMULL each; m <= max_k <= 65535 where they are used, so m(m+1) < 2^32)
-// and the outcome is selected; the velocity direction is a sign flip instead of a multiply.
+// The same decisions as LimiterStepReference() (tests/reference/src/hot_path_reference.cpp),
+// arranged for the Cortex-M4: both braking distances a * m(m+1)/2 the decision may need are formed
+// up front (one MLA, one shift and one UMULL each; m <= max_k <= 65535 where they are used, so
+// m(m+1) < 2^32) and the outcome is selected; the velocity direction is a sign flip instead of a
+// multiply.
 int64_t CorrectionLimiter::Step(int64_t target_q32) {
   const int64_t e = target_q32 - pos_;
   const bool toward_negative = e < 0;

@@ -61,8 +61,10 @@ Status CspGateway::Configure(const GatewayConfig& config, uint8_t axis_count) {
   axis_count_ = axis_count;
   counters_ = GatewayCounters();
   for (uint8_t a = 0; a < table::kMaxAxes; ++a) {
-    correction_[a] = sent_[a] = at_sync_[a] = last_target_[a] = 0;
-    base_[a] = counter_[a] = 0;
+    correction_[a].store(0, std::memory_order_relaxed);
+    sent_[a] = at_sync_[a] = last_target_[a] = 0;
+    base_[a] = 0;
+    counter_[a].store(0, std::memory_order_relaxed);
     has_target_[a] = false;
   }
   return Status::Ok();
@@ -100,9 +102,9 @@ Route CspGateway::FromController(const CanFrame& in, CanFrame* out) {
       base_[a] = machine;
       has_target_[a] = true;
     }
-    counter_[a] = machine - base_[a];
+    counter_[a].store(machine - base_[a], std::memory_order_relaxed);
     last_target_[a] = target;
-    sent_[a] = correction_[a];
+    sent_[a] = correction_[a].load(std::memory_order_relaxed);
     StoreLe32(out->data + m.offset, Wrap(target) + Wrap(sent_[a]));
     ++counters_.targets_corrected;
   }
@@ -133,8 +135,9 @@ Route CspGateway::FromDrive(const CanFrame& in, CanFrame* out) {
 
 void CspGateway::SetCorrection(uint8_t axis, int32_t machine_steps) {
   if (axis >= axis_count_) return;
-  correction_[axis] =
-      config_.invert[axis] ? static_cast<int32_t>(0u - Wrap(machine_steps)) : machine_steps;
+  correction_[axis].store(
+      config_.invert[axis] ? static_cast<int32_t>(0u - Wrap(machine_steps)) : machine_steps,
+      std::memory_order_relaxed);
 }
 
 }  // namespace volcomp::gateway

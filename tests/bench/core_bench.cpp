@@ -9,6 +9,7 @@
 #include "test_tables.hpp"
 #include "volcomp/control_tick.hpp"
 #include "volcomp/grid_lookup.hpp"
+#include "volcomp/step_output.hpp"
 
 namespace volcomp {
 namespace {
@@ -58,8 +59,10 @@ BENCHMARK_CAPTURE(BM_GridLookup, float32, table::ElementType::kFloat32);
 void BM_ControlTick3Axes(benchmark::State& state) {
   Grid33 grid(table::ElementType::kInt16);
   ControlTick engine;
+  StepOutput output;
   BoardConfig cfg = DefaultBoardConfig();
   engine.Configure(cfg).IgnoreError();
+  output.Configure(cfg).IgnoreError();
   PreparedTable t;
   t.Prepare(*table::ParseImage(grid.img.data(), grid.img.size()), cfg).IgnoreError();
   int32_t zero[3] = {0, 0, 0};
@@ -73,7 +76,8 @@ void BM_ControlTick3Axes(benchmark::State& state) {
     // 10 input steps per tick per axis (500 kHz), reversing every 10000 ticks.
     const uint32_t d = ((++k / 10000) & 1) ? 0xFFFFFFF6u : 10u;
     for (auto& c : counters) c += d;
-    engine.Run(counters, plans);
+    engine.Run(counters);
+    output.Plan(engine.targets(), plans);
     benchmark::DoNotOptimize(plans);
   }
   state.SetItemsProcessed(state.iterations());

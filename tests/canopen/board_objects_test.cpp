@@ -14,6 +14,7 @@
 #include "volcomp/canopen_client/sdo_client.hpp"
 #include "volcomp/canopen_client/table_staging.hpp"
 #include "volcomp/firmware/board_app.hpp"
+#include "volcomp/firmware/step_dir_io.hpp"
 #include "volcomp/hal/mock/mock_devices.hpp"
 #include "volcomp/hal/mock/mock_step_io.hpp"
 #include "volcomp/tools/hex.hpp"
@@ -56,7 +57,8 @@ class Bench : public ::testing::Test {
         settings_(8 * 1024, 2048, 8, &clock_, nullptr),
         can_(&clock_, nullptr, 256),
         step_io_(config_, nullptr),
-        app_({&step_io_, &io_, &tables_, &settings_, &can_, &clock_}) {}
+        tick_io_(&step_io_),
+        app_({&tick_io_, &io_, &tables_, &settings_, &can_, &clock_}) {}
 
   void Boot() {
     ASSERT_TRUE(app_.Start(config_).ok());
@@ -157,7 +159,8 @@ class Bench : public ::testing::Test {
   hal::mock::MockFlash tables_, settings_;
   hal::mock::MockCan can_;
   hal::mock::MockStepIo step_io_;
-  firmware::BoardApp<hal::mock::MockStepIo> app_;
+  firmware::StepDirIo<hal::mock::MockStepIo> tick_io_;
+  firmware::BoardApp<firmware::StepDirIo<hal::mock::MockStepIo>> app_;
   std::vector<CanFrame> sent_;
   std::vector<CanFrame> replies_;  // received through Link(), not yet taken
   int unlock_requests_ = 0;

@@ -9,6 +9,7 @@
 #include <cstdlib>
 
 #include "volcomp/firmware/board_app.hpp"
+#include "volcomp/firmware/step_dir_io.hpp"
 #include "volcomp/hal/mock/mock_devices.hpp"
 #include "volcomp/hal/mock/mock_step_io.hpp"
 
@@ -21,7 +22,9 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   hal::mock::MockFlash settings(8 * 1024, 2048, 8, &clock, nullptr);
   hal::mock::MockCan can(&clock, nullptr, 256);
   hal::mock::MockStepIo step_io(config, nullptr);
-  firmware::BoardApp<hal::mock::MockStepIo> app({&step_io, &io, &tables, &settings, &can, &clock});
+  firmware::StepDirIo<hal::mock::MockStepIo> tick_io(&step_io);
+  firmware::BoardApp<firmware::StepDirIo<hal::mock::MockStepIo>> app(
+      {&tick_io, &io, &tables, &settings, &can, &clock});
   io.SetInput(hal::InputLine::kWriteEnable, true);
   io.SetInput(hal::InputLine::kEnable, true);
   if (!app.Start(config).ok()) std::abort();

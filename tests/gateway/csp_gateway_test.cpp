@@ -1,7 +1,7 @@
 // The CSP gateway logic (lib/csp_gateway): which frames are forwarded untouched, how target and
 // actual positions are corrected (offsets, wrap-around, inverted axes, the SYNC association of
-// feedback), frames for the board itself, and configuration checks. Expected frames are written
-// out byte by byte here.
+// feedback), frames for the board itself, and configuration checks; the control tick's two ends
+// on the gateway (CspInput, CspOutput). Expected frames are written out byte by byte here.
 #include "volcomp/csp_gateway.hpp"
 
 #include <gtest/gtest.h>
@@ -11,6 +11,8 @@
 
 #include "csp_drives.hpp"
 #include "frames.hpp"
+#include "volcomp/board_config.hpp"
+#include "volcomp/csp_stages.hpp"
 
 namespace volcomp {
 namespace {
@@ -261,6 +263,45 @@ TEST(GatewayConfigTest, RejectsInconsistentMappings) {
   bad.map[0].offset = 6;
   EXPECT_FALSE(gw.Configure(bad, 3).ok());
   EXPECT_EQ(gw.config().map[0].offset, 2);
+}
+
+// The tick's ends on the gateway: the input stage reads the commanded positions of the target
+// PDOs (machine direction, from the first target), the output stage puts the tick's corrections
+// into the targets forwarded next (drive direction for an inverted axis).
+TEST(CspStages, InputReadsCommandedPositionsOutputCorrectsTheNextTargets) {
+  GatewayConfig c = ThreeDrives();
+  c.invert[1] = true;
+  CspGateway gw;
+  ASSERT_TRUE(gw.Configure(c, 3).ok());
+  gateway::CspInput input(&gw);
+  gateway::CspOutput output(&gw);
+  BoardConfig board = DefaultBoardConfig();
+  ASSERT_TRUE(output.Configure(board).ok());
+  uint32_t counters[table::kMaxAxes];
+  input.ReadCounters(counters);
+  for (uint32_t v : counters) EXPECT_EQ(v, 0u);  // no target yet
+  CanFrame out;
+  gw.FromController(Pdo(0x201, 0x0F, 1000), &out);
+  gw.FromController(Pdo(0x202, 0x0F, 500), &out);
+  gw.FromController(Pdo(0x201, 0x0F, 1025), &out);
+  gw.FromController(Pdo(0x202, 0x0F, 480), &out);  // inverted axis: -20 drive = +20 machine
+  input.ReadCounters(counters);
+  EXPECT_EQ(counters[0], 25u);
+  EXPECT_EQ(counters[1], 20u);
+  EXPECT_EQ(counters[2], 0u);
+  // A tick: targets = commanded + corrections (machine steps).
+  const int32_t corrections[3] = {7, -3, 0};
+  const int32_t targets[3] = {25 + 7, 20 - 3, 0};
+  output.Apply(targets, corrections);
+  EXPECT_EQ(output.position(0), 32);
+  EXPECT_EQ(output.position(1), 17);
+  gw.FromController(Pdo(0x201, 0x0F, 1030), &out);
+  EXPECT_EQ(CspPdoPosition(out), 1037);
+  gw.FromController(Pdo(0x202, 0x0F, 470), &out);
+  EXPECT_EQ(CspPdoPosition(out), 473);  // -3 machine steps = +3 drive increments
+  // More axes than a board may have are refused.
+  board.axis_count = table::kMaxAxes + 1;
+  EXPECT_EQ(output.Configure(board).error(), Error::kConfigInvalid);
 }
 
 }  // namespace

@@ -1,9 +1,9 @@
-// The board application in gateway mode (firmware/linux GatewayApp) on the mock HAL: a CNC master
+// The board application in gateway mode (firmware/app GatewayApp) on the mock HAL: a CNC master
 // and three CSP drives around it, a table uploaded over the controller bus by block download,
 // referencing and the activation rules, corrected targets and feedback cycle by cycle against a
 // closed-form expectation (a table that is linear in the position, which trilinear interpolation
 // reproduces exactly), e-stop, the board's own frames, and tables persisting in flash files.
-#include "volcomp/fw_linux/gateway_app.hpp"
+#include "volcomp/firmware/gateway_app.hpp"
 
 #include <gtest/gtest.h>
 #include <unistd.h>
@@ -197,7 +197,7 @@ class Machine {
   hal::mock::MockClock clock_;
   hal::mock::MockSlowIo io_;
   hal::mock::MockCan cnc_, drv_;
-  fw_linux::GatewayApp app_;
+  firmware::GatewayApp app_;
   int32_t target_[3];
   int32_t correction_[3] = {};
   bool feedback_ok_ = true;
@@ -386,6 +386,19 @@ TEST(GatewayAppMappingTest, StartRefusesAMappingForMissingAxes) {
   const std::vector<CanFrame> sent = m.drv_.TakeSent();
   ASSERT_EQ(sent.size(), 1u);
   EXPECT_EQ(sent[0], rpdo);
+}
+
+// The gateway has no step outputs: drive pulse timing that a tick could not carry (it would stop a
+// step/dir board, tests/lib/board_app_test.cpp) does not concern it.
+TEST(GatewayAppMappingTest, StepPulseTimingDoesNotConcernTheGateway) {
+  hal::mock::MockClock clock;
+  hal::mock::MockFlash tables(256 * 1024, 2048, 8, &clock, nullptr);
+  Machine m(&tables, nullptr);
+  firmware::BoardSettings s = Settings();
+  for (AxisConfig& ax : s.board.axis) ax.drive.pulse_width_ns = ax.drive.step_space_ns = 15000;
+  EXPECT_TRUE(m.app_.Start(s, Mapping()).ok());
+  EXPECT_TRUE(m.app_.gateway_active());
+  EXPECT_TRUE(m.io_.output(hal::OutputLine::kReady));
 }
 
 // Tables live in files (hal/linux FileFlash): a new process finds the active table.

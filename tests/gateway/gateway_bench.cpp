@@ -7,7 +7,7 @@
 
 #include "csp_drives.hpp"
 #include "volcomp/csp_gateway.hpp"
-#include "volcomp/fw_linux/gateway_app.hpp"
+#include "volcomp/firmware/gateway_app.hpp"
 #include "volcomp/hal/mock/mock_devices.hpp"
 
 namespace volcomp {
@@ -58,7 +58,7 @@ void BM_GatewayAppForward(benchmark::State& state) {
   hal::mock::MockSlowIo io(&clock, nullptr);
   hal::mock::MockFlash tables(64 * 1024, 2048, 8, &clock, nullptr);
   hal::mock::MockCan cnc(&clock, nullptr, 1 << 20), drv(&clock, nullptr, 1 << 20);
-  fw_linux::GatewayApp app({&cnc, &drv, &io, &tables, nullptr, &clock});
+  firmware::GatewayApp app({&cnc, &drv, &io, &tables, nullptr, &clock});
   firmware::BoardSettings s;
   s.board.tick_hz = 1000;
   if (!app.Start(s, Mapping(3)).ok()) state.SkipWithError("start");

@@ -1,11 +1,12 @@
 // The board application on the mock HAL: stored table at boot, referencing by home switches,
 // fault handling, refused images leave the active table untouched, recorded output timeline.
 #include "volcomp/firmware/board_app.hpp"
-#include "volcomp/firmware/table_store.hpp"
 
 #include <gtest/gtest.h>
 
 #include "test_tables.hpp"
+#include "volcomp/firmware/step_dir_io.hpp"
+#include "volcomp/firmware/table_store.hpp"
 #include "volcomp/hal/mock/mock_devices.hpp"
 #include "volcomp/hal/mock/mock_step_io.hpp"
 
@@ -35,7 +36,8 @@ class BoardAppTest : public ::testing::Test {
         io_(&clock_, &timeline_),
         flash_(64 * 1024, 4096, 8, &clock_, &timeline_),
         step_io_(config_, &timeline_),
-        app_({&step_io_, &io_, &flash_}) {}
+        tick_io_(&step_io_),
+        app_({&tick_io_, &io_, &flash_}) {}
 
   // Stores `img` as the active table, as a completed upload and activation would.
   void Store(const testing::AlignedBytes& img) {
@@ -70,7 +72,8 @@ class BoardAppTest : public ::testing::Test {
   hal::mock::MockSlowIo io_;
   hal::mock::MockFlash flash_;
   hal::mock::MockStepIo step_io_;
-  firmware::BoardApp<hal::mock::MockStepIo> app_;
+  firmware::StepDirIo<hal::mock::MockStepIo> tick_io_;
+  firmware::BoardApp<firmware::StepDirIo<hal::mock::MockStepIo>> app_;
 };
 
 TEST_F(BoardAppTest, EmptyFlashRunsPassThrough) {
@@ -173,6 +176,18 @@ TEST_F(BoardAppTest, InvalidConfigurationKeepsFaultAndPassThrough) {
   EXPECT_EQ(app_.Start(bad).error(), Error::kConfigInvalid);
   EXPECT_TRUE(io_.output(OutputLine::kFault));
   EXPECT_FALSE(io_.output(OutputLine::kReady));
+}
+
+TEST_F(BoardAppTest, StepOutputRefusingTheDriveTimingKeepsFault) {
+  // 15 us high + 15 us low per pulse does not fit a 20 us tick: the step output stage refuses.
+  BoardConfig slow = config_;
+  for (AxisConfig& ax : slow.axis) ax.drive.pulse_width_ns = ax.drive.step_space_ns = 15000;
+  EXPECT_EQ(app_.Start(slow).error(), Error::kConfigInvalid);
+  EXPECT_TRUE(io_.output(OutputLine::kFault));
+  EXPECT_FALSE(io_.output(OutputLine::kReady));
+  step_io_.add_steps(0, 10);
+  Run(10);
+  EXPECT_EQ(step_io_.drive(0).position(), 0);  // not started: no pulses
 }
 
 }  // namespace

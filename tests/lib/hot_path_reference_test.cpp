@@ -7,7 +7,7 @@
 //   StepGenerator::Plan()        vs StepGeneratorReference::Plan() (int64 times)
 //   CorrectionLimiter::Step()    vs LimiterStepReference()
 //   WrapTracker::Update()        vs exact modular arithmetic
-#include "volcomp/hot_path_reference.hpp"
+#include "volcomp/reference/hot_path_reference.hpp"
 
 #include <gtest/gtest.h>
 

@@ -2,8 +2,10 @@
 // output = input + correction exactly, no step lost or invented, no drive timing violated,
 // output within two ticks of the input.
 //
-// Input lines are simulated edge by edge through StepDecoder (the hardware counter model);
-// outputs go through MockStepIo into DriveModel checkers. VOLCOMP_LONG_TESTS (cmake option) or
+// The path is ControlTick (input counters to targets) and the step/dir output stage StepOutput
+// (targets to pulse plans). Input lines are simulated edge by edge through StepDecoder (the
+// hardware counter model, tests/reference); outputs go through MockStepIo into DriveModel
+// checkers. VOLCOMP_LONG_TESTS (cmake option) or
 // the environment variable VOLCOMP_ENGINE_STEPS raises the step count (10^8 for the long run).
 #include <gtest/gtest.h>
 
@@ -14,7 +16,8 @@
 #include "test_tables.hpp"
 #include "volcomp/control_tick.hpp"
 #include "volcomp/hal/mock/mock_step_io.hpp"
-#include "volcomp/step_decoder.hpp"
+#include "volcomp/reference/step_decoder.hpp"
+#include "volcomp/step_output.hpp"
 
 namespace volcomp {
 namespace {
@@ -72,6 +75,8 @@ EngineRun RunEngine(PulseFormat in_format,
   }
   ControlTick engine;
   EXPECT_TRUE(engine.Configure(cfg).ok());
+  StepOutput output;
+  EXPECT_TRUE(output.Configure(cfg).ok());
   const uint32_t zero_counters[3] = {0, 0, 0};
   engine.LatchCounters(zero_counters);
   const testing::GridCase grid = SteepGrid(rng);
@@ -140,11 +145,12 @@ EngineRun RunEngine(PulseFormat in_format,
     uint32_t counters[3];
     io.ReadCounters(counters);
     PulsePlan plans[3];
-    engine.Run(counters, plans);
+    engine.Run(counters);
+    output.Plan(engine.targets(), plans);
     io.Apply(plans);
     for (uint8_t a = 0; a < 3; ++a) {
       // Exactness every tick: planned output = input + correction - backlog.
-      EXPECT_EQ(engine.output_position(a) + engine.backlog(a),
+      EXPECT_EQ(output.position(a) + output.backlog(a, engine.target(a)),
                 static_cast<int32_t>(input_pos[a]) + engine.correction_steps(a));
       run.max_abs_correction =
           std::max<int64_t>(run.max_abs_correction, std::abs(engine.correction_steps(a)));
@@ -157,24 +163,25 @@ EngineRun RunEngine(PulseFormat in_format,
     uint32_t counters[3];
     io.ReadCounters(counters);
     PulsePlan plans[3];
-    engine.Run(counters, plans);
+    engine.Run(counters);
+    output.Plan(engine.targets(), plans);
     io.Apply(plans);
     t += tick_ns;
   }
   for (uint8_t a = 0; a < 3; ++a) {
     const auto& drive = io.drive(a);
     EXPECT_EQ(drive.position(), input_pos[a] + engine.correction_steps(a)) << "axis " << int(a);
-    EXPECT_EQ(engine.backlog(a), 0);
+    EXPECT_EQ(output.backlog(a, engine.target(a)), 0);
     EXPECT_EQ(dec[a].errors(), 0u);
     for (const auto& v : drive.violation_log()) ADD_FAILURE() << "axis " << int(a) << ": " << v;
     run.violations += drive.violations();
     run.output_steps += drive.steps();
-    run.max_backlog = std::max(run.max_backlog, engine.max_backlog(a));
+    run.max_backlog = std::max(run.max_backlog, output.max_backlog(a));
   }
   run.ticks = engine.ticks();
   // Latency: a step read at a tick start is emitted within that tick unless the backlog exceeds
   // one tick's capacity, so the backlog never reaching it means <= 2 ticks edge to output.
-  EXPECT_LT(run.max_backlog, engine.generator(0).max_pulses_per_tick());
+  EXPECT_LT(run.max_backlog, output.generator(0).max_pulses_per_tick());
   return run;
 }
 

@@ -55,8 +55,9 @@ class Soak {
   void AdvanceTo(uint64_t t) {
     sim::AdvanceInEventOrder(bus_, *board_, t);
     const ControlTick& e = board_->app().engine();
+    const StepOutput& out = board_->output();
     for (uint8_t a = 0; a < 3; ++a) {
-      ASSERT_EQ(e.output_position(a) + e.backlog(a), input_[a] + e.correction_steps(a));
+      ASSERT_EQ(out.position(a) + out.backlog(a, e.target(a)), input_[a] + e.correction_steps(a));
     }
   }
   canopen_client::SdoResult Sdo(ObjectId id, std::vector<uint8_t> data) {
@@ -172,6 +173,7 @@ TEST(Soak, RandomTrajectoriesActivationsAndReferenceLossWithoutLostSteps) {
   s.stopped_ = true;
   s.AdvanceTo(s.bus_.now() + 200000000);
   const ControlTick& e = s.board_->app().engine();
+  const StepOutput& out = s.board_->output();
   uint64_t violations = 0, output_steps = 0;
   for (uint8_t a = 0; a < 3; ++a) {
     const auto& drive = s.board_->step_io().drive(a);
@@ -179,7 +181,7 @@ TEST(Soak, RandomTrajectoriesActivationsAndReferenceLossWithoutLostSteps) {
     for (const auto& v : drive.violation_log()) ADD_FAILURE() << "axis " << int(a) << ": " << v;
     violations += drive.violations();
     output_steps += drive.steps();
-    EXPECT_EQ(e.backlog(a), 0);
+    EXPECT_EQ(out.backlog(a, e.target(a)), 0);
   }
   EXPECT_EQ(violations, 0u);
   EXPECT_GT(refused, 0u);
@@ -191,7 +193,7 @@ TEST(Soak, RandomTrajectoriesActivationsAndReferenceLossWithoutLostSteps) {
       static_cast<unsigned long long>(s.steps_), static_cast<unsigned long long>(output_steps),
       static_cast<double>(s.bus_.now()) * 1e-9, refused, activated, reference_losses,
       static_cast<unsigned long long>(violations),
-      std::max({e.max_backlog(0), e.max_backlog(1), e.max_backlog(2)}));
+      std::max({out.max_backlog(0), out.max_backlog(1), out.max_backlog(2)}));
 }
 
 }  // namespace

@@ -57,6 +57,42 @@ TEST(Stm32g4Can, BitTimingExactWithSamplePoint) {
   EXPECT_FALSE(ComputeCanBitTiming(170000000u, 0, 875).ok());
 }
 
+TEST(Stm32g4Can, InstancesFromTheMemoryMap) {
+  // RM0440 Table 4 (memory map): FDCAN1 0x4000 6400, FDCAN2 0x4000 6800, FDCAN message RAM
+  // (SRAMCAN) from 0x4000 A400; §44.3.3: 212 words per instance, FDCAN1's part first.
+  const FdcanLayout c1 = FdcanLayoutOf(FdcanInstance::kFdcan1);
+  const FdcanLayout c2 = FdcanLayoutOf(FdcanInstance::kFdcan2);
+  EXPECT_EQ(c1.registers, 0x40006400u);
+  EXPECT_EQ(c2.registers, 0x40006800u);
+  EXPECT_EQ(c1.message_ram, 0x4000A400u);
+  EXPECT_EQ(c2.message_ram, 0x4000A400u + 212u * 4u);  // 0x4000A750
+  // The element layout fills exactly one part: 28 standard filters (1 word), 8 extended filters
+  // (2 words), 2 Rx FIFOs x 3 elements x 18 words, Tx event FIFO 3 x 2 words, 3 Tx buffers x 18
+  // words.
+  EXPECT_EQ(28u + 8u * 2u + 2u * 3u * 18u + 3u * 2u + 3u * 18u, 212u);
+  EXPECT_EQ(fdcan::kRamExtFilter, 28u * 4u);
+  EXPECT_EQ(fdcan::kRamRxFifo0, fdcan::kRamExtFilter + 8u * 2u * 4u);
+  EXPECT_EQ(fdcan::kRamRxFifo1, fdcan::kRamRxFifo0 + 3u * fdcan::kRamElementBytes);
+  EXPECT_EQ(fdcan::kRamTxEvent, fdcan::kRamRxFifo1 + 3u * fdcan::kRamElementBytes);
+  EXPECT_EQ(fdcan::kRamTxBuffer, fdcan::kRamTxEvent + 3u * 2u * 4u);
+  EXPECT_EQ(fdcan::kRamTxBuffer + 3u * fdcan::kRamElementBytes, fdcan::kRamInstanceSize);
+  EXPECT_EQ(fdcan::kRamInstanceSize, 212u * 4u);
+  // The two parts do not overlap and lie in the 1 KB x 3 of SRAMCAN (0x4000 A400 - 0x4000 AFFF).
+  EXPECT_GE(c2.message_ram, c1.message_ram + fdcan::kRamInstanceSize);
+  EXPECT_LE(c2.message_ram + fdcan::kRamInstanceSize, 0x4000B000u);
+  // Pins (AF9): FDCAN1 PA11 RX / PA12 TX, FDCAN2 PB5 RX / PB6 TX, none shared with each other.
+  EXPECT_EQ(c1.rx_port, 0u);
+  EXPECT_EQ(c1.rx_pin, 11u);
+  EXPECT_EQ(c1.tx_port, 0u);
+  EXPECT_EQ(c1.tx_pin, 12u);
+  EXPECT_EQ(c2.rx_port, 1u);
+  EXPECT_EQ(c2.rx_pin, 5u);
+  EXPECT_EQ(c2.tx_port, 1u);
+  EXPECT_EQ(c2.tx_pin, 6u);
+  EXPECT_EQ(c1.af, 9u);
+  EXPECT_EQ(c2.af, 9u);
+}
+
 TEST(Stm32g4Flash, LayoutAndPages) {
   using namespace layout;
   EXPECT_EQ(kTableOffset % kPageBytes, 0u);

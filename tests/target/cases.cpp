@@ -141,11 +141,16 @@ uint32_t BuildTickImage(uint8_t* out, uint32_t capacity) {
   return w.ok() ? *w : 0;
 }
 
-bool StartTickEngine(uint8_t* image, uint32_t capacity, ControlTick& engine, PreparedTable& table) {
+bool StartTickEngine(uint8_t* image,
+                     uint32_t capacity,
+                     ControlTick& engine,
+                     StepOutput& output,
+                     PreparedTable& table) {
   const uint32_t size = BuildTickImage(image, capacity);
   const Result<table::TableView> view = table::ParseImage(image, size);
   const BoardConfig cfg = TickBoardConfig();
-  if (size == 0 || !view.ok() || !engine.Configure(cfg).ok() || !table.Prepare(*view, cfg).ok()) {
+  if (size == 0 || !view.ok() || !engine.Configure(cfg).ok() || !output.Configure(cfg).ok() ||
+      !table.Prepare(*view, cfg).ok()) {
     return false;
   }
   const int32_t zero[3] = {0, 0, 0};

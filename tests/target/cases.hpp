@@ -10,6 +10,7 @@
 
 #include "volcomp/board_config.hpp"
 #include "volcomp/control_tick.hpp"
+#include "volcomp/step_output.hpp"
 #include "volcomp/table_format.hpp"
 #include "volcomp/table_writer.hpp"
 
@@ -89,9 +90,14 @@ BoardConfig TickBoardConfig();
 uint32_t BuildTickImage(uint8_t* out, uint32_t capacity);
 
 /// The control-tick case's engine: builds the tick image into `image` (4-byte aligned, `capacity`
-/// bytes, kept: the table refers to it), configures `engine` for TickBoardConfig(), prepares
-/// `table`, sets it active and enabled, and references every axis. False if any step fails.
-bool StartTickEngine(uint8_t* image, uint32_t capacity, ControlTick& engine, PreparedTable& table);
+/// bytes, kept: the table refers to it), configures `engine` and the step output stage `output`
+/// for TickBoardConfig(), prepares `table`, sets it active and enabled, and references every
+/// axis. False if any step fails.
+bool StartTickEngine(uint8_t* image,
+                     uint32_t capacity,
+                     ControlTick& engine,
+                     StepOutput& output,
+                     PreparedTable& table);
 
 /// Counter increment of tick `i` of the control-tick input pattern (per axis): standstill, steady
 /// 1 MHz input, reversals, single steps and a jump across several cells.

@@ -9,6 +9,7 @@
 #include "volcomp/crc32.hpp"
 #include "volcomp/grid_lookup.hpp"
 #include "volcomp/step_generator.hpp"
+#include "volcomp/step_output.hpp"
 #include "volcomp/table_image.hpp"
 
 namespace volcomp::target {
@@ -187,8 +188,9 @@ void StepGeneratorSection(GoldenSink& sink) {
 
 void ControlTickSection(GoldenSink& sink) {
   static ControlTick engine;
+  static StepOutput output;
   static PreparedTable table;
-  if (!StartTickEngine(g_image, sizeof g_image, engine, table)) {
+  if (!StartTickEngine(g_image, sizeof g_image, engine, output, table)) {
     sink.Put(0xDEADu);
     return;
   }
@@ -196,13 +198,14 @@ void ControlTickSection(GoldenSink& sink) {
   PulsePlan plans[3];
   for (uint32_t i = 0; i < kTickPatternLength; ++i) {
     for (uint32_t a = 0; a < 3; ++a) counters[a] += TickCounterDelta(i, a);
-    engine.Run(counters, plans);
+    engine.Run(counters);
+    output.Plan(engine.targets(), plans);
     for (uint8_t a = 0; a < 3; ++a) {
       PutPlan(sink, plans[a]);
       sink.Put(static_cast<uint32_t>(engine.correction_steps(a)));
       sink.Put(static_cast<uint32_t>(engine.compensator().target_q8(a)));
       sink.Put(static_cast<uint32_t>(engine.compensator().applied_q8(a)));
-      sink.Put(static_cast<uint32_t>(engine.output_position(a)));
+      sink.Put(static_cast<uint32_t>(output.position(a)));
     }
   }
 }

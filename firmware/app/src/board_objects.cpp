@@ -234,7 +234,7 @@ bool BoardObjects::ReadNumber(const ObjectEntry& e, uint32_t* v) const {
       *v = static_cast<uint32_t>(eng.ticks());
       return true;
     case ObjectId::kLostStepChecks:
-      *v = eng.overruns();
+      *v = control_->output_status().overruns;
       return true;
     case ObjectId::kMaxTickCost:
       *v = control_->max_tick_cost_ns();
@@ -256,11 +256,12 @@ bool BoardObjects::ReadNumber(const ObjectEntry& e, uint32_t* v) const {
     return true;
   }
   if (AxisOf(e.id, ObjectId::kOutputPosition1, &a)) {
-    *v = a < eng.axis_count() ? static_cast<uint32_t>(eng.output_position(a)) : 0;
+    *v = a < eng.axis_count() ? static_cast<uint32_t>(control_->output_status().position_steps[a])
+                              : 0;
     return true;
   }
   if (AxisOf(e.id, ObjectId::kMaxBacklog1, &a)) {
-    *v = a < eng.axis_count() ? eng.max_backlog(a) : 0;
+    *v = a < eng.axis_count() ? control_->output_status().max_backlog_steps[a] : 0;
     return true;
   }
   if (e.access == canopen::Access::kConst) {

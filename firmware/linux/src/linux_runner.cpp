@@ -15,7 +15,7 @@
 #include <fstream>
 #include <memory>
 
-#include "volcomp/fw_linux/gateway_app.hpp"
+#include "volcomp/firmware/gateway_app.hpp"
 #include "volcomp/fw_linux/latency_stats.hpp"
 #include "volcomp/hal/linux/fake_gpio.hpp"
 #include "volcomp/hal/linux/file_flash.hpp"
@@ -29,6 +29,9 @@
 namespace volcomp::fw_linux {
 namespace {
 
+using firmware::GatewayApp;
+using firmware::GatewayAppCounters;
+using firmware::GatewayDevices;
 namespace lb = hal::linux_board;
 using hal::socketcan::SocketCanPort;
 

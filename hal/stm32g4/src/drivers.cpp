@@ -300,46 +300,47 @@ const uint8_t* StmFlash::DoMap(uint32_t offset) const {
   return reinterpret_cast<const uint8_t*>(kFlashBase + offset_ + offset);
 }
 
-// ---- FDCAN1 (RM0440 §44.3)
+// ---- FDCAN (RM0440 §44.3)
 // --------------------------------------------------------------------------
-namespace {
-constexpr uintptr_t kCanRam = kSramCanBase;  // FDCAN1 is the first instance
-volatile uint32_t* CanRamWords(uint32_t byte_offset) {
-  return reinterpret_cast<volatile uint32_t*>(kCanRam + byte_offset);
+volatile uint32_t* StmFdcan::RamWords(uint32_t byte_offset) const {
+  return reinterpret_cast<volatile uint32_t*>(layout_.message_ram + byte_offset);
 }
-}  // namespace
 
 Status StmFdcan::Init(uint32_t bitrate) {
   const Result<CanBitTiming> bt = ComputeCanBitTiming(kSysclkHz, bitrate, 875);
   if (!bt.ok()) return bt.status();
+  const uintptr_t base = layout_.registers;
+  // Kernel clock selection and bus clock enable are common to all instances (CCIPR, APB1ENR1).
   Reg(kRccBase, rcc::kCcipr) =
       (Reg(kRccBase, rcc::kCcipr) & ~rcc::kFdcanSelMask) | rcc::kFdcanSelPclk1;
   Reg(kRccBase, rcc::kApb1Enr1) |= rcc::kFdcanEn;
   EnableGpioClocks();
-  ConfigureAfPin({0, 11}, 9);  // PA11 FDCAN1_RX
-  ConfigureAfPin({0, 12}, 9);  // PA12 FDCAN1_TX
-  Reg(kFdcan1Base, fdcan::kCccr) |= fdcan::kCccrInit;
-  SpinUntil(kFdcan1Base, fdcan::kCccr, fdcan::kCccrInit, fdcan::kCccrInit);
-  Reg(kFdcan1Base, fdcan::kCccr) |= fdcan::kCccrCce;
-  Reg(kFdcan1Base, fdcan::kCccr) &= ~fdcan::kCccrFdoe;  // classic CAN frames only
-  Reg(kFdcan1Base, fdcan::kNbtp) = bt->nbtp();
+  ConfigureAfPin({layout_.rx_port, layout_.rx_pin}, layout_.af);
+  ConfigureAfPin({layout_.tx_port, layout_.tx_pin}, layout_.af);
+  Reg(base, fdcan::kCccr) |= fdcan::kCccrInit;
+  SpinUntil(base, fdcan::kCccr, fdcan::kCccrInit, fdcan::kCccrInit);
+  Reg(base, fdcan::kCccr) |= fdcan::kCccrCce;
+  Reg(base, fdcan::kCccr) &= ~fdcan::kCccrFdoe;  // classic CAN frames only
+  Reg(base, fdcan::kNbtp) = bt->nbtp();
   // No filter elements; non-matching standard and extended frames go to Rx FIFO 0 (ANFS = ANFE =
   // 00), remote frames are accepted too (RRFS = RRFE = 0).
-  Reg(kFdcan1Base, fdcan::kRxgfc) = 0;
-  Reg(kFdcan1Base, fdcan::kTxbc) = 0;  // Tx FIFO mode
-  for (uint32_t i = 0; i < fdcan::kRamInstanceSize / 4u; ++i) CanRamWords(0)[i] = 0;
-  Reg(kFdcan1Base, fdcan::kCccr) &= ~(fdcan::kCccrCce | fdcan::kCccrInit);
-  SpinUntil(kFdcan1Base, fdcan::kCccr, fdcan::kCccrInit, 0);
+  Reg(base, fdcan::kRxgfc) = 0;
+  Reg(base, fdcan::kTxbc) = 0;  // Tx FIFO mode
+  for (uint32_t i = 0; i < fdcan::kRamInstanceSize / 4u; ++i) RamWords(0)[i] = 0;
+  Reg(base, fdcan::kCccr) &= ~(fdcan::kCccrCce | fdcan::kCccrInit);
+  SpinUntil(base, fdcan::kCccr, fdcan::kCccrInit, 0);
   return Status::Ok();
 }
 
-bool StmFdcan::bus_off() const { return (Reg(kFdcan1Base, fdcan::kPsr) & fdcan::kPsrBo) != 0; }
+bool StmFdcan::bus_off() const {
+  return (Reg(layout_.registers, fdcan::kPsr) & fdcan::kPsrBo) != 0;
+}
 
 Status StmFdcan::DoSend(const hal::CanFrame& f) {
-  const uint32_t txfqs = Reg(kFdcan1Base, fdcan::kTxfqs);
+  const uint32_t txfqs = Reg(layout_.registers, fdcan::kTxfqs);
   if ((txfqs & fdcan::kTxfqsTfqf) != 0) return Error::kFull;
   const uint32_t put = (txfqs >> 16) & 3u;  // TFQPI
-  volatile uint32_t* e = CanRamWords(fdcan::kRamTxBuffer + put * fdcan::kRamElementBytes);
+  volatile uint32_t* e = RamWords(fdcan::kRamTxBuffer + put * fdcan::kRamElementBytes);
   e[0] = (f.extended ? (1u << 30) | (f.id & 0x1FFFFFFFu) : (f.id & 0x7FFu) << 18) |
          (f.rtr ? 1u << 29 : 0u);
   e[1] = static_cast<uint32_t>(f.dlc) << 16;
@@ -347,15 +348,15 @@ Status StmFdcan::DoSend(const hal::CanFrame& f) {
   __builtin_memcpy(d, f.data, 8);
   e[2] = d[0];
   e[3] = d[1];
-  Reg(kFdcan1Base, fdcan::kTxbar) = 1u << put;
+  Reg(layout_.registers, fdcan::kTxbar) = 1u << put;
   return Status::Ok();
 }
 
 bool StmFdcan::DoReceive(hal::CanFrame* f) {
-  const uint32_t rxf0s = Reg(kFdcan1Base, fdcan::kRxf0s);
+  const uint32_t rxf0s = Reg(layout_.registers, fdcan::kRxf0s);
   if ((rxf0s & 0xFu) == 0) return false;   // F0FL: fill level
   const uint32_t get = (rxf0s >> 8) & 3u;  // F0GI
-  const volatile uint32_t* e = CanRamWords(fdcan::kRamRxFifo0 + get * fdcan::kRamElementBytes);
+  const volatile uint32_t* e = RamWords(fdcan::kRamRxFifo0 + get * fdcan::kRamElementBytes);
   const uint32_t r0 = e[0], r1 = e[1];
   f->extended = (r0 & (1u << 30)) != 0;
   f->rtr = (r0 & (1u << 29)) != 0;
@@ -364,7 +365,7 @@ bool StmFdcan::DoReceive(hal::CanFrame* f) {
   f->dlc = static_cast<uint8_t>(dlc > 8 ? 8 : dlc);
   const uint32_t d[2] = {e[2], e[3]};
   __builtin_memcpy(f->data, d, 8);
-  Reg(kFdcan1Base, fdcan::kRxf0a) = get;
+  Reg(layout_.registers, fdcan::kRxf0a) = get;
   return true;
 }
 

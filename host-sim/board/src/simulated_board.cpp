@@ -15,9 +15,9 @@ SimulatedBoard::SimulatedBoard(SimBus& bus, const SimulatedBoardOptions& options
           options.settings_flash_bytes, options.flash_sector_bytes, 8, &clock_, nullptr),
       can_(endpoint_, 64) {
   step_io_ = std::make_unique<hal::mock::MockStepIo>(options.settings.board, nullptr);
-  app_ = std::make_unique<firmware::BoardApp<hal::mock::MockStepIo>>(
-      firmware::BoardApp<hal::mock::MockStepIo>::Devices{step_io_.get(), &io_, &table_flash_,
-                                                         &settings_flash_, &can_, &clock_});
+  tick_io_ = std::make_unique<TickIo>(step_io_.get());
+  app_ = std::make_unique<App>(
+      App::Devices{tick_io_.get(), &io_, &table_flash_, &settings_flash_, &can_, &clock_});
   tick_ns_ = 1000000000ull / options.settings.board.tick_hz;
 }
 

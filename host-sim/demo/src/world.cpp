@@ -114,7 +114,7 @@ void World::AfterTick(uint64_t t_ns) {
     audit_.output_steps += p.count;
     latency_.EndOfTick(a, t_ns, output_[a] - correction);
     const int64_t drive = board_->step_io().drive(a).position();
-    if (drive != output_[a] || drive != static_cast<int64_t>(engine.output_position(a))) {
+    if (drive != output_[a] || drive != static_cast<int64_t>(board_->output().position(a))) {
       ++audit_.tick_mismatches;
     }
   }
@@ -156,7 +156,7 @@ bool World::CheckAtRest() {
   for (uint8_t a = 0; a < 3; ++a) {
     const int64_t expected = cnc_->count(a) + engine.correction_steps(a);
     const int64_t drive = board_->step_io().drive(a).position();
-    const int64_t owed = engine.backlog(a);
+    const int64_t owed = board_->output().backlog(a, engine.target(a));
     audit_.lost_steps += static_cast<uint64_t>(std::llabs(drive - expected));
     audit_.owed_at_rest += static_cast<uint64_t>(std::llabs(owed));
     ok = ok && drive == expected;
@@ -167,14 +167,14 @@ bool World::CheckAtRest() {
 
 StepAudit World::Audit() const {
   StepAudit a = audit_;
-  const ControlTick& engine = board_->app().engine();
+  const StepOutput& output = board_->output();
   a.timing_violations = 0;
   a.max_backlog = 0;
   for (uint8_t i = 0; i < 3; ++i) {
     a.timing_violations += board_->step_io().drive(i).violations();
-    a.max_backlog = std::max(a.max_backlog, engine.max_backlog(i));
+    a.max_backlog = std::max(a.max_backlog, output.max_backlog(i));
   }
-  a.overruns = engine.overruns();
+  a.overruns = output.overruns();
   return a;
 }
 

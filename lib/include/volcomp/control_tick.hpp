@@ -1,13 +1,15 @@
-// The per-tick data path of the board, as pure logic:
+// The per-tick data path of the board from the input stage's counters to the target positions, as
+// pure logic:
 //
 //   input counters -> commanded position -> (+ reference offset) machine position
-//     -> compensator (lookup, clamp, rate limit) -> output target = commanded + correction
-//     -> step generators -> one PulsePlan per axis
+//     -> compensator (lookup, clamp, rate limit) -> target = commanded + applied correction
 //
-// Output position = input position + applied correction, exactly: the generators never drop or add
-// a step; whatever does not fit a tick's timing stays as backlog for the next. Latency: an input
-// step counted before tick k's counter read is planned in tick k (<= 2 ticks from edge to output
-// while the backlog stays within one tick's pulse capacity; backlog() shows it).
+// The targets (and the corrections in them) go to one output stage: StepOutput (step/dir pulses,
+// step_output.hpp) or the CSP gateway's CspOutput (corrected CAN setpoints, csp_stages.hpp). The
+// input counters come from the matching input stage: hardware step counters or the commanded
+// positions of the controller's target PDOs (CspInput). Target = input position + applied
+// correction, exactly, every tick; an input step counted before tick k's counter read is in tick
+// k's target.
 //
 // Run() is the tick ISR's body: no division, no allocation, O(axes). Everything else is for the
 // control context between ticks.
@@ -18,7 +20,7 @@
 #include "volcomp/board_config.hpp"
 #include "volcomp/compensator.hpp"
 #include "volcomp/status.hpp"
-#include "volcomp/step_generator.hpp"
+#include "volcomp/table_format.hpp"
 
 namespace volcomp {
 
@@ -32,9 +34,11 @@ class ControlTick {
   /// start-up when the hardware counters hold arbitrary values.
   void LatchCounters(const uint32_t* input_counters);
 
-  /// One tick: `input_counters[a]` is the raw hardware counter of axis a (wrapping at its
-  /// configured width); fills `plans[a]` for every configured axis.
-  void Run(const uint32_t* input_counters, PulsePlan* plans);
+  /// One tick: `input_counters[a]` is the raw input counter of axis a (wrapping at its configured
+  /// width); sets commanded, correction and target of every configured axis. Always inlined
+  /// (below): the tick routine that calls it and then its output stage is one function, one
+  /// prologue.
+  inline void Run(const uint32_t* input_counters);
 
   /// Declares axis `a` referenced now: its machine position becomes the configured home position.
   void Reference(uint8_t axis);
@@ -50,25 +54,21 @@ class ControlTick {
 
   int32_t commanded(uint8_t a) const { return commanded_[a]; }
   int32_t machine_position(uint8_t a) const { return machine_[a]; }
+  /// Whole-step correction applied in the last tick (the compensator's output).
   int32_t correction_steps(uint8_t a) const { return correction_[a]; }
-  int32_t output_target(uint8_t a) const { return target_[a]; }
-  int32_t output_position(uint8_t a) const { return generator_[a].position(); }
-  /// Steps still owed to the drive after the last tick (0 when caught up).
-  int32_t backlog(uint8_t a) const { return generator_[a].backlog(target_[a]); }
-  /// Largest |backlog| seen since Configure(), per axis.
-  uint32_t max_backlog(uint8_t a) const { return max_backlog_[a]; }
+  /// Target position of the last tick: commanded + correction_steps (wrapping int32).
+  int32_t target(uint8_t a) const { return target_[a]; }
+  /// All axes' targets and corrections of the last tick (what the output stages take).
+  const int32_t* targets() const { return target_; }
+  const int32_t* corrections() const { return correction_; }
   uint64_t ticks() const { return ticks_; }
   /// Ticks since an input step was last counted on any axis (saturates).
   uint32_t idle_ticks() const { return idle_ticks_; }
-  /// Ticks whose owed steps exceeded one tick's pulse capacity (the latency bound was at risk).
-  uint32_t overruns() const { return overruns_; }
-  const StepGenerator& generator(uint8_t a) const { return generator_[a]; }
 
  private:
   BoardConfig config_;
   uint8_t axis_count_ = 0;
   Compensator compensator_;
-  StepGenerator generator_[table::kMaxAxes];
   uint32_t last_counter_[table::kMaxAxes] = {};
   uint8_t counter_shift_[table::kMaxAxes] = {};  // 32 - counter bits
   int32_t commanded_[table::kMaxAxes] = {};
@@ -77,10 +77,40 @@ class ControlTick {
   int32_t machine_[table::kMaxAxes] = {};
   int32_t correction_[table::kMaxAxes] = {};
   int32_t target_[table::kMaxAxes] = {};
-  uint32_t max_backlog_[table::kMaxAxes] = {};
   uint64_t ticks_ = 0;
   uint32_t idle_ticks_ = 0xFFFFFFFFu;
-  uint32_t overruns_ = 0;
 };
+
+__attribute__((always_inline)) inline void ControlTick::Run(const uint32_t* input_counters) {
+  // Two walks over the axes around the compensator's target refresh (Compensator::Tick() in its
+  // three steps, fused with the counter and target work of each axis). The axis count stays in a
+  // register across the calls.
+  const uint32_t n = axis_count_;
+  uint32_t moved = 0;
+  for (uint32_t a = 0; a < n; ++a) {
+    const uint32_t raw = input_counters[a];
+    // Sign-extend the counter difference from the counter width (16 or 32 bits).
+    const uint32_t shift = counter_shift_[a];
+    const uint32_t diff = (raw - last_counter_[a]) << shift;
+    last_counter_[a] = raw;
+    moved |= diff;
+    const uint32_t commanded = static_cast<uint32_t>(commanded_[a]) +
+                               static_cast<uint32_t>(static_cast<int32_t>(diff) >> shift);
+    commanded_[a] = static_cast<int32_t>(commanded);
+    const int32_t machine =
+        static_cast<int32_t>(commanded + static_cast<uint32_t>(reference_offset_[a]));
+    machine_[a] = machine;
+    compensator_.SenseAxis(static_cast<uint8_t>(a), machine);
+  }
+  compensator_.RefreshTargets(machine_);
+  for (uint32_t a = 0; a < n; ++a) {
+    const int32_t correction = compensator_.ApplyAxis(static_cast<uint8_t>(a));
+    correction_[a] = correction;
+    target_[a] = static_cast<int32_t>(static_cast<uint32_t>(commanded_[a]) +
+                                      static_cast<uint32_t>(correction));
+  }
+  idle_ticks_ = moved != 0 ? 0u : idle_ticks_ + (idle_ticks_ != 0xFFFFFFFFu ? 1u : 0u);
+  ++ticks_;
+}
 
 }  // namespace volcomp

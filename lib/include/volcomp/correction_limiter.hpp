@@ -6,8 +6,8 @@
 // configured rate, and its change never exceeds the configured acceleration. The largest k toward
 // the target is taken for which braking a*k*(k+1)/2 still stops at the target, so a fixed target
 // is reached without overshoot; a residue below one acceleration step is taken in one tick.
-// Integer only, no division per tick. LimiterStepReference() (hot_path_reference.hpp) is the clear
-// version; Step() decides identically.
+// Integer only, no division per tick. LimiterStepReference() (tests/reference,
+// hot_path_reference.hpp) is the clear version; Step() decides identically.
 #pragma once
 
 #include <cstdint>

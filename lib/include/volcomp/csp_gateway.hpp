@@ -27,13 +27,17 @@
 //   kLatest  the correction added to the last target forwarded (drives without SYNC).
 //
 // The correction itself comes from the control tick (SetCorrection: the compensator's output for
-// the commanded position that InputCounter() reports). Per frame: a scan of at most kMaxPdoMaps
-// entries, no division, no allocation.
+// the commanded position that InputCounter() reports; csp_stages.hpp holds the tick's two ends).
+// Per frame: a scan of at most kMaxPdoMaps entries, no division, no allocation.
 //
-// Thread-safety: none; call everything from one context (the main loop on Linux; on an MCU the
-// CAN interrupt and the tick must not preempt each other inside these calls).
+// Thread-safety: Configure, FromController and FromDrive from one context (the main loop, or the
+// CAN interrupt). The control tick's two calls, InputCounter() and SetCorrection(), may preempt
+// them (the tick ISR on an MCU): each axis's commanded counter and correction is one atomic word,
+// so the tick reads either the previous or the new commanded position of an axis, and a target
+// being forwarded gets either the previous or the new correction, never a mix.
 #pragma once
 
+#include <atomic>
 #include <cstdint>
 
 #include "volcomp/can_frame.hpp"
@@ -112,7 +116,9 @@ class CspGateway {
 
   /// The commanded position of `axis` in machine direction, relative to the first target seen
   /// (0 before it), as a wrapping 32-bit counter: what the control tick reads as its input.
-  uint32_t InputCounter(uint8_t axis) const { return counter_[axis]; }
+  uint32_t InputCounter(uint8_t axis) const {
+    return counter_[axis].load(std::memory_order_relaxed);
+  }
   /// True once a target for `axis` was forwarded.
   bool has_target(uint8_t axis) const { return has_target_[axis]; }
   /// The last target received for `axis` (drive increments, uncorrected).
@@ -132,12 +138,12 @@ class CspGateway {
   GatewayConfig config_;
   uint8_t axis_count_ = 0;
   GatewayCounters counters_;
-  int32_t correction_[table::kMaxAxes] = {};  // drive increments for the next target
-  int32_t sent_[table::kMaxAxes] = {};        // added to the last forwarded target
-  int32_t at_sync_[table::kMaxAxes] = {};     // sent_ at the last SYNC
+  std::atomic<int32_t> correction_[table::kMaxAxes] = {};  // drive increments, next target
+  int32_t sent_[table::kMaxAxes] = {};                     // added to the last forwarded target
+  int32_t at_sync_[table::kMaxAxes] = {};                  // sent_ at the last SYNC
   int32_t last_target_[table::kMaxAxes] = {};
   uint32_t base_[table::kMaxAxes] = {};  // machine-direction value of the first target
-  uint32_t counter_[table::kMaxAxes] = {};
+  std::atomic<uint32_t> counter_[table::kMaxAxes] = {};
   bool has_target_[table::kMaxAxes] = {};
 };
 

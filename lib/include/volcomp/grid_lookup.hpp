@@ -10,10 +10,13 @@
 // Two implementations of the same arithmetic:
 //   Interpolate<Loader>()  the clear reference: one template for every element type, written as
 //                          the definition reads.
-//   Lookup()               the hot path: per element type, corner rows loaded together and the
-//                          components accumulated in registers (the Cortex-M4 cycle budget in
-//                          docs/mcu-target.md is for this one). Bit-identical to the reference:
-//                          tests/target checks it on the host and on the Cortex-M4 (QEMU).
+//   the kernels            the hot path, written once over an element kernel (grid_lookup.cpp:
+//                          int16, int32, float32): corner rows loaded together and the components
+//                          accumulated in registers. The control tick runs them in three parts,
+//                          Begin() / AccumulateZ0() / FinishZ1(), one per tick; Lookup() runs the
+//                          same parts back to back (the PC tool's evaluation, the cycle bench).
+//                          Bit-identical to the reference: tests/target checks it on the host and
+//                          on the Cortex-M4 (QEMU).
 //
 // Accuracy (tests/lib/grid_lookup_test.cpp measures it): int16/int32 tables are within 1 LSB of
 // the Q8 output (2^-8 step) of the exact real-valued trilinear interpolation; float32 tables
@@ -30,23 +33,26 @@
 
 namespace volcomp {
 
+namespace grid_kernel {
+struct Int16;  // the element kernels (grid_lookup.cpp)
+struct Int32;
+struct Float32;
+}  // namespace grid_kernel
+
 class GridLookup {
  public:
   /// Prepares for `grid` (which must be present and valid); the image must outlive the lookup.
   Status Init(const table::Grid3View& grid);
 
-  /// Correction at `pos_steps` (indexed by board axis; only axis(0..2) are read), Q24.8 steps.
+  /// Correction at `pos_steps` (indexed by board axis; only axis(0..2) are read), Q24.8 steps:
+  /// the three parts below in one call.
   void Lookup(const int32_t* pos_steps, int32_t out_q8[3]) const {
-    switch (type_) {
-      case table::ElementType::kInt16:
-        LookupInt16(pos_steps, out_q8);
-        break;
-      case table::ElementType::kInt32:
-        LookupInt32(pos_steps, out_q8);
-        break;
-      case table::ElementType::kFloat32:
-        LookupFloat32(pos_steps, out_q8);
-        break;
+    if (type_ == table::ElementType::kInt16) {
+      LookupAs<grid_kernel::Int16>(pos_steps, out_q8);
+    } else if (type_ == table::ElementType::kInt32) {
+      LookupAs<grid_kernel::Int32>(pos_steps, out_q8);
+    } else {
+      LookupAs<grid_kernel::Float32>(pos_steps, out_q8);
     }
   }
 
@@ -54,15 +60,10 @@ class GridLookup {
   template <class Loader>
   void Interpolate(const int32_t* pos_steps, int32_t out_q8[3]) const;
 
-  /// The hot-path kernels Lookup() dispatches to (public for the cycle bench).
-  void LookupInt16(const int32_t* pos_steps, int32_t out_q8[3]) const;
-  void LookupInt32(const int32_t* pos_steps, int32_t out_q8[3]) const;
-  void LookupFloat32(const int32_t* pos_steps, int32_t out_q8[3]) const;
-
   /// The same lookup in three parts, for spreading it over control ticks (the compensator does
   /// one part per tick): Begin() locates the cell and forms the y-level weights, AccumulateZ0()
   /// adds the four corners of the lower z level, FinishZ1() the upper four and writes the result.
-  /// Same arithmetic in the same order as Lookup(): the result is bit-identical.
+  /// Lookup() is these three in sequence: the result is bit-identical.
   struct Partial {
     const uint8_t* corner = nullptr;  // the cell's first corner (x0, y0, z0)
     uint32_t xy[4] = {};              // x0y0, x1y0, x0y1, x1y1: Q0.32, or float bits (float32)
@@ -76,7 +77,25 @@ class GridLookup {
   uint8_t axis(int d) const { return axis_[d]; }
   table::ElementType element_type() const { return type_; }
 
+  /// Lookup() for one element kernel (instantiated in grid_lookup.cpp for the three; public so
+  /// that the cycle bench can time each).
+  template <class K>
+  void LookupAs(const int32_t* pos_steps, int32_t out_q8[3]) const;
+
  private:
+  // The kernels' building blocks (grid_lookup.cpp), over an element kernel K.
+  const uint8_t* Locate(const int32_t* pos_steps, uint32_t node_bytes, LatticeCell cell[3]) const;
+  template <class K>
+  void BeginAs(const LatticeCell c[3], Partial* s) const;
+  template <class K, class Levels, class L, class Acc>
+  void SumLower(const uint8_t* p, const Levels& xy, L tz, Acc& a0, Acc& a1, Acc& a2) const;
+  template <class K, class Levels, class L, class Acc>
+  void SumUpper(const uint8_t* p, const Levels& xy, L tz, Acc& a0, Acc& a1, Acc& a2) const;
+  template <class K>
+  void AccumulateZ0As(Partial* s) const;
+  template <class K>
+  void FinishZ1As(const Partial& s, int32_t out_q8[3]) const;
+
   // One lattice dimension: the board axis it reads, then the locator constants.
   struct Dim {
     uint32_t axis;

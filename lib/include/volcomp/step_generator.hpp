@@ -15,9 +15,10 @@
 //   output each step is one edge and `width` is unused; for CW/CCW the "direction" is which line
 //   pulses and the same setup/hold apply between lines.
 //
-// Hot path: no division (reciprocals of the counts are precomputed), O(1) per tick, int32 time
-// arithmetic (times relative to the tick start, floored at -2^30 by one SSAT; the clear int64
-// version is StepGeneratorReference in hot_path_reference.hpp and plans bit-identically).
+// Hot path: no division (the reciprocals of the pulse counts are one constant table, generated at
+// compile time and shared by every axis's generator), O(1) per tick, int32 time arithmetic (times
+// relative to the tick start, floored at -2^30 by one SSAT; the clear int64 version is
+// StepGeneratorReference in tests/reference and plans bit-identically).
 #pragma once
 
 #include <cstdint>
@@ -106,7 +107,7 @@ class StepGenerator {
   uint32_t hold_ = 0;
   uint32_t max_per_tick_ = 0;
   InvariantDivider by_min_period_;
-  uint32_t recip_count_[kMaxPulsesPerTick + 1] = {};  // floor((2^32 - 1) / n)
+  const uint32_t* reciprocals_ = nullptr;  // the shared table (step_generator.cpp)
 };
 
 }  // namespace volcomp

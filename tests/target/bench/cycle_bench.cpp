@@ -11,11 +11,27 @@
 #include "semihost.hpp"
 #include "volcomp/control_tick.hpp"
 #include "volcomp/grid_lookup.hpp"
+#include "volcomp/step_output.hpp"
 #include "volcomp/table_image.hpp"
 
 extern "C" __attribute__((noinline, section(".text.volcomp_bench_mark"))) void
 volcomp_bench_mark() {
   __asm volatile("" ::: "memory");
+}
+
+// The tick's data path of a step/dir board as BoardApp::Tick() runs it between reading the
+// counters and StepIo::Apply(): ControlTick::Run() (counters to targets), then the step output
+// stage's planning (targets to pulse plans). One call per tick: the control_tick_3axes row.
+// (No sibling call: the cycle model prices the two calls as calls.)
+extern "C" __attribute__((noinline,
+                          optimize("no-optimize-sibling-calls"),
+                          section(".text.volcomp_bench_tick"))) void
+volcomp_bench_tick(volcomp::ControlTick* engine,
+                   volcomp::StepOutput* output,
+                   const uint32_t* counters,
+                   volcomp::PulsePlan* plans) {
+  engine->Run(counters);
+  output->Plan(engine->targets(), plans);
 }
 
 namespace volcomp::target {
@@ -33,20 +49,21 @@ void Scenario(const char* name, const char* symbol) {
   volcomp_bench_mark();
 }
 
-// The hot-path kernel of each element type (GridLookup::Lookup dispatches to these).
+// The whole lookup of each element type (GridLookup::Lookup dispatches to these: the three parts
+// the tick spreads over ticks, run back to back).
 template <class Loader>
 const char* KernelSymbol();
 template <>
 const char* KernelSymbol<LoadInt16>() {
-  return "_ZNK7volcomp10GridLookup11LookupInt16E";
+  return "_ZNK7volcomp10GridLookup8LookupAsINS_11grid_kernel5Int16E";
 }
 template <>
 const char* KernelSymbol<LoadInt32>() {
-  return "_ZNK7volcomp10GridLookup11LookupInt32E";
+  return "_ZNK7volcomp10GridLookup8LookupAsINS_11grid_kernel5Int32E";
 }
 template <>
 const char* KernelSymbol<LoadFloat32>() {
-  return "_ZNK7volcomp10GridLookup13LookupFloat32E";
+  return "_ZNK7volcomp10GridLookup8LookupAsINS_11grid_kernel7Float32E";
 }
 
 template <class Loader>
@@ -160,17 +177,18 @@ int BenchHandLookup(const GridCaseSpec& c, const char* name, const char* symbol,
 
 int BenchTick() {
   static ControlTick engine;
+  static StepOutput output;
   static PreparedTable table;
-  if (!StartTickEngine(g_image, sizeof g_image, engine, table)) {
+  if (!StartTickEngine(g_image, sizeof g_image, engine, output, table)) {
     semihost::Write("bench: tick image or engine setup invalid\n");
     return 1;
   }
   uint32_t counters[3] = {0, 0, 0};
   PulsePlan plans[3];
-  // The whole tick, then the same pattern again with the tick's parts as their own rows (each
-  // call of the part inside the tick is one sample).
+  // The tick's data path (ControlTick::Run and the step output stage), then the same pattern
+  // again with its parts as their own rows (each call of the part inside the tick is one sample).
   const char* const kRuns[][2] = {
-      {"control_tick_3axes", "_ZN7volcomp11ControlTick3Run"},
+      {"control_tick_3axes", "volcomp_bench_tick"},
       {"tick_part_refresh", "_ZN7volcomp11Compensator14RefreshTargets"},
       {"tick_part_limiter", "_ZN7volcomp17CorrectionLimiter4Step"},
       {"tick_part_step_generator", "_ZN7volcomp13StepGenerator8PlanTick"},
@@ -179,7 +197,7 @@ int BenchTick() {
     Scenario(run[0], run[1]);
     for (uint32_t i = 0; i < kTickPatternLength; ++i) {
       for (uint32_t a = 0; a < 3; ++a) counters[a] += TickCounterDelta(i, a);
-      engine.Run(counters, plans);
+      volcomp_bench_tick(&engine, &output, counters, plans);
     }
   }
   if (!engine.compensator().engaged()) {

@@ -1,4 +1,4 @@
-// Hand-scheduled Thumb-2 forms of GridLookup::LookupInt16 and LookupFloat32 (bench only, not
+// Hand-scheduled Thumb-2 forms of the int16 and float32 GridLookup::Lookup() (bench only, not
 // product code).
 //
 // Purpose: a measured floor for the 3-component lookup under the cycle model. Each does the same
@@ -41,8 +41,8 @@ bool PrepareHandLookup(const table::Grid3View& grid, HandLookupConstants* k);
 
 }  // namespace volcomp::target
 
-/// The kernels: out_q8[c] as GridLookup::LookupInt16 / LookupFloat32(pos_steps, out_q8) computes
-/// it.
+/// The kernels: out_q8[c] as GridLookup::Lookup(pos_steps, out_q8) computes it for an int16 /
+/// float32 grid.
 extern "C" void volcomp_hand_lookup_int16(const volcomp::target::HandLookupConstants* k,
                                           const int32_t* pos_steps,
                                           int32_t* out_q8);

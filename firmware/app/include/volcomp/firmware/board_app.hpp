@@ -1,8 +1,9 @@
 // The board application: wires the core (lib/) to the HAL and owns the two execution contexts.
 //
 //   Tick()  the control tick (timer ISR at BoardConfig::tick_hz): apply requests handed over by
-//           the main loop (table switch, references), latch input counters, run the data path
-//           (ControlTick), program the output timers. Nothing else.
+//           the main loop (table switch, references), read the input stage's counters, run the
+//           data path (ControlTick) to the targets, hand them to the output stage (step/dir
+//           pulses or CAN setpoints). Nothing else.
 //   Poll()  the main loop: slow lines (home switches, enable, e-stop, drive alarm, write enable),
 //           status outputs, and the CANopen node (NMT, heartbeat, EMCY, SDO with the object
 //           dictionary of BoardObjects: configuration, table staging, diagnostics).
@@ -21,7 +22,8 @@
 // mounts the tables and activates the stored image if it is intact and made for this board;
 // otherwise the board runs as pure pass-through and reports why (stored_table_status()).
 //
-// StepIo is a static interface (volcomp/hal/step_io.hpp): no virtual call on the tick path.
+// Io is the tick's two ends as one static type (tick_io.hpp): StepDirIo<StepIo> for a step/dir
+// board, CspIo for a CAN gateway (see gateway_app.hpp). No virtual call on the tick path.
 #pragma once
 
 #include <atomic>
@@ -36,11 +38,11 @@
 #include "volcomp/firmware/settings.hpp"
 #include "volcomp/firmware/table_hand_over.hpp"
 #include "volcomp/firmware/table_store.hpp"
+#include "volcomp/firmware/tick_io.hpp"
 #include "volcomp/hal/can.hpp"
 #include "volcomp/hal/clock.hpp"
 #include "volcomp/hal/flash.hpp"
 #include "volcomp/hal/slow_io.hpp"
-#include "volcomp/hal/step_io.hpp"
 #include "volcomp/status.hpp"
 #include "volcomp/table_image.hpp"
 
@@ -59,13 +61,14 @@ struct AppOptions {
   canopen::SdoServerConfig sdo;
 };
 
-template <class StepIo>
+template <class Io>
 class BoardApp final : private BoardControl {
-  static_assert(hal::IsStepIo<StepIo>::value, "StepIo must provide ReadCounters() and Apply()");
+  static_assert(IsTickIo<Io>::value,
+                "Io must provide Configure(), ReadCounters(), Output() and output_status()");
 
  public:
   struct Devices {
-    StepIo* step_io = nullptr;
+    Io* tick_io = nullptr;  // the input and output stage (tick_io.hpp)
     hal::SlowIo* io = nullptr;
     hal::Flash* table_flash = nullptr;     // dual-bank table store
     hal::Flash* settings_flash = nullptr;  // optional: stored settings
@@ -92,13 +95,14 @@ class BoardApp final : private BoardControl {
     }
     Status s = ValidateSettings(settings_);
     if (s.ok()) s = engine_.Configure(settings_.board);
+    if (s.ok()) s = dev_.tick_io->Configure(settings_.board);
     started_ = s.ok();
     dev_.io->Write(hal::OutputLine::kReady, started_);
     dev_.io->Write(hal::OutputLine::kFault, !started_);
     if (!started_) return s;
     objects_.SetSettings(settings_);
     uint32_t counters[table::kMaxAxes];
-    dev_.step_io->ReadCounters(counters);
+    dev_.tick_io->ReadCounters(counters);
     engine_.LatchCounters(counters);
     for (uint8_t a = 0; a < table::kMaxAxes; ++a) home_level_[a] = dev_.io->Read(hal::HomeLine(a));
     const uint32_t bank =
@@ -142,9 +146,9 @@ class BoardApp final : private BoardControl {
     engine_.compensator().SetEnabled(enabled_.load(std::memory_order_relaxed));
     engine_.compensator().SetFault(fault_flag_.load(std::memory_order_relaxed));
     uint32_t counters[table::kMaxAxes];
-    dev_.step_io->ReadCounters(counters);
-    engine_.Run(counters, plans_);
-    dev_.step_io->Apply(plans_);
+    dev_.tick_io->ReadCounters(counters);
+    engine_.Run(counters);
+    dev_.tick_io->Output(engine_);
     if (options_.measure_tick_cost) {
       const uint64_t dt = dev_.clock->NowNs() - t0;
       if (dt > max_tick_ns_)
@@ -170,6 +174,8 @@ class BoardApp final : private BoardControl {
 
   const ControlTick& engine() const { return engine_; }
   ControlTick& engine() { return engine_; }
+  /// The input and output stage (e.g. StepDirIo::output() for the step generators).
+  const Io& tick_io() const { return *dev_.tick_io; }
   const canopen::Node& node() const { return node_; }
   const TableStore& tables() const { return tables_; }
   const BoardObjects& objects() const { return objects_; }
@@ -277,6 +283,7 @@ class BoardApp final : private BoardControl {
   void DoSetBusEnable(bool on) override { bus_enable_ = on; }
   bool DoBusEnable() const override { return bus_enable_; }
   const ControlTick& DoEngine() const override { return engine_; }
+  OutputStatus DoOutputStatus() const override { return dev_.tick_io->output_status(); }
   bool DoMoving() const override {
     const uint64_t still_ticks = uint64_t{kStillMs} * engine_.config().tick_hz / 1000u;
     return engine_.idle_ticks() < still_ticks;
@@ -294,7 +301,6 @@ class BoardApp final : private BoardControl {
   SettingsStore settings_store_;
   canopen::Node node_;
   BoardObjects objects_;
-  PulsePlan plans_[table::kMaxAxes];
   bool started_ = false;
   bool fault_ = false;
   bool write_enable_ = false;

@@ -9,6 +9,7 @@
 #include "volcomp/control_tick.hpp"
 #include "volcomp/status.hpp"
 #include "volcomp/table_image.hpp"
+#include "volcomp/firmware/tick_io.hpp"
 
 namespace volcomp::firmware {
 
@@ -27,6 +28,8 @@ class BoardControl {
   bool bus_enable() const { return DoBusEnable(); }
   /// The data path, for reading state (positions, corrections, counters).
   const ControlTick& engine() const { return DoEngine(); }
+  /// The output stage's counters (output positions, backlog).
+  OutputStatus output_status() const { return DoOutputStatus(); }
   /// True while any axis moved within the last `ms` milliseconds.
   bool moving() const { return DoMoving(); }
   bool fault() const { return DoFault(); }
@@ -44,6 +47,7 @@ class BoardControl {
   virtual void DoSetBusEnable(bool on) = 0;
   virtual bool DoBusEnable() const = 0;
   virtual const ControlTick& DoEngine() const = 0;
+  virtual OutputStatus DoOutputStatus() const = 0;
   virtual bool DoMoving() const = 0;
   virtual bool DoFault() const = 0;
   virtual bool DoWriteEnableInput() const = 0;

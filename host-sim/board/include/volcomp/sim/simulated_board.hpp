@@ -12,10 +12,12 @@
 #include <vector>
 
 #include "volcomp/firmware/board_app.hpp"
+#include "volcomp/firmware/step_dir_io.hpp"
 #include "volcomp/hal/mock/mock_devices.hpp"
 #include "volcomp/hal/mock/mock_step_io.hpp"
 #include "volcomp/sim/sim_bus.hpp"
 #include "volcomp/sim/sim_bus_can_port.hpp"
+#include "volcomp/step_output.hpp"
 
 namespace volcomp::sim {
 
@@ -33,6 +35,9 @@ struct SimulatedBoardOptions {
 
 class SimulatedBoard {
  public:
+  using TickIo = firmware::StepDirIo<hal::mock::MockStepIo>;
+  using App = firmware::BoardApp<TickIo>;
+
   SimulatedBoard(SimBus& bus, const SimulatedBoardOptions& options);
   ~SimulatedBoard();
 
@@ -46,8 +51,10 @@ class SimulatedBoard {
   /// Writes the flash images to `flash_dir` (no-op without one).
   void SaveFlash() const;
 
-  firmware::BoardApp<hal::mock::MockStepIo>& app() { return *app_; }
+  App& app() { return *app_; }
   hal::mock::MockStepIo& step_io() { return *step_io_; }
+  /// The step/dir output stage (output positions, backlog).
+  const StepOutput& output() const { return tick_io_->output(); }
   hal::mock::MockSlowIo& io() { return io_; }
   /// The table flash (fault injection, e.g. InjectPowerLossAfter; its raw() content).
   hal::mock::MockFlash& table_flash() { return table_flash_; }
@@ -65,7 +72,8 @@ class SimulatedBoard {
   hal::mock::MockFlash settings_flash_;
   SimBusCanPort can_;
   std::unique_ptr<hal::mock::MockStepIo> step_io_;
-  std::unique_ptr<firmware::BoardApp<hal::mock::MockStepIo>> app_;
+  std::unique_ptr<TickIo> tick_io_;
+  std::unique_ptr<App> app_;
   uint64_t now_ns_ = 0;
   uint64_t tick_ns_ = 20000;
   uint64_t next_tick_ns_ = 0;

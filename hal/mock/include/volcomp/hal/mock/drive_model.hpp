@@ -18,7 +18,6 @@
 #include <vector>
 
 #include "volcomp/board_config.hpp"
-#include "volcomp/step_decoder.hpp"
 
 namespace volcomp::hal::mock {
 

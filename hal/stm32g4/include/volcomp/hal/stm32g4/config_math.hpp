@@ -5,6 +5,7 @@
 
 #include <cstdint>
 
+#include "volcomp/hal/stm32g4/registers.hpp"
 #include "volcomp/status.hpp"
 #include "volcomp/step_generator.hpp"
 
@@ -45,6 +46,35 @@ struct CanBitTiming {
 Result<CanBitTiming> ComputeCanBitTiming(uint32_t kernel_hz,
                                          uint32_t bitrate,
                                          uint32_t sample_permille);
+
+// ---- FDCAN instances (RM0440 §2.2.2 memory map, §44.3.3 message RAM) ----------------------------
+/// The FDCAN instances the reference board uses: FDCAN1 on the controller's bus (the board's
+/// CANopen node; in gateway mode also the CNC side), FDCAN2 on the drives' bus (gateway mode).
+enum class FdcanInstance : uint8_t { kFdcan1 = 0, kFdcan2 = 1 };
+
+/// Where an instance lives and which pins carry it.
+struct FdcanLayout {
+  uintptr_t registers = 0;    // register block
+  uintptr_t message_ram = 0;  // its part of the shared message RAM (fdcan::kRamInstanceSize bytes)
+  uint8_t rx_port = 0, rx_pin = 0;  // port 0 = A, 1 = B, ...
+  uint8_t tx_port = 0, tx_pin = 0;
+  uint8_t af = 0;  // alternate function of both pins
+};
+
+/// FDCAN1: registers 0x40006400, message RAM 0x4000A400, PA11 RX / PA12 TX (AF9). FDCAN2:
+/// registers 0x40006800, message RAM 0x4000A750 (the second 212-word part), PB5 RX / PB6 TX (AF9,
+/// STM32G474 datasheet alternate-function table; PB12/PB13 are taken by home inputs).
+constexpr FdcanLayout FdcanLayoutOf(FdcanInstance instance) {
+  const uint32_t n = static_cast<uint32_t>(instance);
+  const bool first = instance == FdcanInstance::kFdcan1;
+  return {kFdcan1Base + 0x400u * n,
+          kSramCanBase + fdcan::kRamInstanceSize * n,
+          static_cast<uint8_t>(first ? 0 : 1),
+          static_cast<uint8_t>(first ? 11 : 5),
+          static_cast<uint8_t>(first ? 0 : 1),
+          static_cast<uint8_t>(first ? 12 : 6),
+          9};
+}
 
 // ---- Flash layout of the reference board (RM0440 §3.3.1: dual-bank mode, 2 KB pages) ------------
 namespace layout {

@@ -4,7 +4,8 @@
 //                timer's trigger output (ReadCounters / Apply: the static StepIo interface).
 //   StmSlowIo    GPIO lines (hal::SlowIo).
 //   StmFlash     a region of main flash (hal::Flash): 2 KB page erase, double-word programming.
-//   StmFdcan     FDCAN1 in classic CAN mode (hal::CanPort), Rx FIFO 0, Tx FIFO queue.
+//   StmFdcan     an FDCAN instance (FDCAN1 or FDCAN2) in classic CAN mode (hal::CanPort), Rx FIFO
+//                0, Tx FIFO queue.
 //   CycleClock   monotonic time from the DWT cycle counter (hal::Clock).
 //   Iwdg         the independent watchdog.
 // Clock tree and tick timer setup are free functions. Everything here is for the main loop except
@@ -92,15 +93,22 @@ class StmFlash final : public hal::Flash {
 
 class StmFdcan final : public hal::CanPort {
  public:
-  /// FDCAN1 on PA11 (RX) / PA12 (TX), kernel clock PCLK1, classic CAN at `bitrate`; every frame
-  /// is accepted into Rx FIFO 0 (filtering is the protocol's job). kConfigInvalid if the bit rate
-  /// is not reachable.
+  /// The instance's registers, message RAM part and pins: FdcanLayoutOf() (config_math.hpp).
+  explicit StmFdcan(FdcanInstance instance = FdcanInstance::kFdcan1)
+      : layout_(FdcanLayoutOf(instance)) {}
+  /// The instance on its pins (FDCAN1: PA11 RX / PA12 TX; FDCAN2: PB5 / PB6), kernel clock PCLK1
+  /// (shared by all instances), classic CAN at `bitrate`; every frame is accepted into Rx FIFO 0
+  /// (filtering is the protocol's job). kConfigInvalid if the bit rate is not reachable. Polled:
+  /// Rx FIFO 0 holds 3 frames, so the caller must receive at least every 3 frame times.
   Status Init(uint32_t bitrate);
   bool bus_off() const;
 
  private:
   Status DoSend(const hal::CanFrame& frame) override;
   bool DoReceive(hal::CanFrame* frame) override;
+  volatile uint32_t* RamWords(uint32_t byte_offset) const;
+
+  FdcanLayout layout_;
 };
 
 class CycleClock final : public hal::Clock {

@@ -20,9 +20,10 @@ inline constexpr uintptr_t kTim4Base = 0x40000800u;
 inline constexpr uintptr_t kTim5Base = 0x40000C00u;
 inline constexpr uintptr_t kTim6Base = 0x40001000u;
 inline constexpr uintptr_t kIwdgBase = 0x40003000u;
-inline constexpr uintptr_t kFdcan1Base = 0x40006400u;
+inline constexpr uintptr_t kFdcan1Base = 0x40006400u;  // FDCAN2 0x40006800, FDCAN3 0x40006C00
+inline constexpr uintptr_t kFdcan2Base = 0x40006800u;
 inline constexpr uintptr_t kPwrBase = 0x40007000u;
-inline constexpr uintptr_t kSramCanBase = 0x4000A400u;  // FDCAN message RAM
+inline constexpr uintptr_t kSramCanBase = 0x4000A400u;  // FDCAN message RAM (SRAMCAN), shared
 inline constexpr uintptr_t kTim1Base = 0x40012C00u;
 inline constexpr uintptr_t kTim8Base = 0x40013400u;
 inline constexpr uintptr_t kTim15Base = 0x40014000u;
@@ -127,7 +128,8 @@ inline constexpr uint32_t kKr = 0x00, kPr = 0x04, kRlr = 0x08, kSr = 0x0C, kWinr
 inline constexpr uint32_t kKeyStart = 0xCCCC, kKeyRefresh = 0xAAAA, kKeyAccess = 0x5555;
 }  // namespace iwdg
 
-// ---- FDCAN (§44.4)
+// ---- FDCAN (§44.4; one register block per instance, 0x400 apart; the message RAM is shared,
+// one 0x350-byte part per instance in instance order, §44.3.3)
 // -------------------------------------------------------------------------------
 namespace fdcan {
 inline constexpr uint32_t kCccr = 0x018, kNbtp = 0x01C, kEcr = 0x040, kPsr = 0x044, kIr = 0x050,

@@ -1,37 +1,40 @@
-// The board application in CAN gateway mode, independent of Linux: the CiA 301 node (BoardApp with
-// its object dictionary, table store and activation rules) on the controller's bus, and the CiA 402
-// CSP gateway (CspGateway) between the controller's bus and the drives' bus, with the correction
-// computed by the same ControlTick / Compensator as in step/dir mode (GatewayStepIo feeds it the
-// commanded positions from the target PDOs).
+// The board application in CAN gateway mode: the CiA 301 node (BoardApp with its object
+// dictionary, table store and activation rules) on the controller's bus, and the CiA 402 CSP
+// gateway (CspGateway) between the controller's bus and the drives' bus, with the correction
+// computed by the same ControlTick / Compensator as in step/dir mode: BoardApp<CspIo>, whose input
+// stage is the commanded positions from the target PDOs and whose output stage is the correction
+// of the forwarded targets (csp_io.hpp).
 //
 //   OnControllerFrame()  a frame received on the controller side: forwarded to the drives with
 //                        corrected targets; NMT and the board's own SDO requests also go to the
 //                        node (its answers are sent on the controller side).
 //   OnDriveFrame()       a frame received on the drive side: forwarded with corrected actuals.
-//   Tick()               the control tick (BoardSettings::board.tick_hz): ControlTick, then the
-//                        new corrections go to the gateway.
+//   Tick()               the control tick (BoardSettings::board.tick_hz): BoardApp::Tick(), whose
+//                        output stage hands the new corrections to the gateway.
 //   Poll()               the main loop: slow lines and the node (SDO, NMT, heartbeat, EMCY).
 //
 // Without a drive port (`drives` null) the board is a plain CANopen node (no forwarding).
-// Hosted C++17 (a small heap use at construction only); the devices are HAL interfaces, so tests
-// run it on the mock HAL and volcomp-fw-linux on SocketCAN, files and GPIO.
+// Freestanding (no heap: the node's frame queue is a fixed ring inside the object); the devices
+// are HAL interfaces, so tests run it on the mock HAL, volcomp-fw-linux on SocketCAN, files and
+// GPIO, and the STM32G474 gateway image on FDCAN1 / FDCAN2.
 //
-// Thread-safety: everything from one thread (the Linux main loop); Tick() and Poll() must not
-// run concurrently.
+// Thread-safety: OnControllerFrame, OnDriveFrame, PumpFrames and Poll from one context (the main
+// loop). Tick() either from the same thread (Linux) or from the tick ISR, which may preempt the
+// main loop but is never preempted by it (MCU): the tick touches only BoardApp's tick data and the
+// gateway's per-axis atomic words (csp_gateway.hpp).
 #pragma once
 
 #include <cstdint>
-#include <memory>
 
 #include "volcomp/csp_gateway.hpp"
 #include "volcomp/firmware/board_app.hpp"
-#include "volcomp/fw_linux/gateway_step_io.hpp"
+#include "volcomp/firmware/csp_io.hpp"
 #include "volcomp/hal/can.hpp"
 #include "volcomp/hal/clock.hpp"
 #include "volcomp/hal/flash.hpp"
 #include "volcomp/hal/slow_io.hpp"
 
-namespace volcomp::fw_linux {
+namespace volcomp::firmware {
 
 struct GatewayDevices {
   hal::CanPort* controller = nullptr;    // CNC side (required): the board's node lives here
@@ -52,19 +55,18 @@ struct GatewayAppCounters {
 
 class GatewayApp {
  public:
-  using App = firmware::BoardApp<GatewayStepIo>;
+  using App = BoardApp<CspIo>;
 
   explicit GatewayApp(const GatewayDevices& devices);
-  ~GatewayApp();
   GatewayApp(const GatewayApp&) = delete;
   GatewayApp& operator=(const GatewayApp&) = delete;
 
   /// Starts the board (stored settings override `defaults`) and the gateway with `gateway`
   /// (own_node_id is taken from the settings in force). kConfigInvalid when the settings or the
   /// gateway mapping are invalid for the axis count in force.
-  Status Start(const firmware::BoardSettings& defaults,
+  Status Start(const BoardSettings& defaults,
                const gateway::GatewayConfig& gateway,
-               const firmware::AppOptions& options = firmware::AppOptions());
+               const AppOptions& options = AppOptions());
 
   gateway::Route OnControllerFrame(const CanFrame& frame);
   gateway::Route OnDriveFrame(const CanFrame& frame);
@@ -75,28 +77,48 @@ class GatewayApp {
   /// runner calls OnControllerFrame / OnDriveFrame itself to time each frame).
   void PumpFrames();
 
-  App& app() { return *app_; }
-  const App& app() const { return *app_; }
+  App& app() { return app_; }
+  const App& app() const { return app_; }
   const gateway::CspGateway& gateway() const { return gateway_; }
   const GatewayAppCounters& counters() const { return counters_; }
   bool gateway_active() const { return devices_.drives != nullptr && gateway_ok_; }
   /// True when frames for the node are waiting (call Poll() soon for a prompt SDO answer).
-  bool node_pending() const;
+  bool node_pending() const { return !node_port_.empty(); }
 
  private:
-  class NodePort;
+  // The node's CAN port: frames for the node are queued here by OnControllerFrame (a fixed ring);
+  // what the node sends goes out on the controller port.
+  class NodePort final : public hal::CanPort {
+   public:
+    explicit NodePort(hal::CanPort* controller) : controller_(controller) {}
+    bool Push(const CanFrame& f);
+    bool empty() const { return count_ == 0; }
+
+   private:
+    static constexpr uint32_t kCapacity = 256;
+    Status DoSend(const CanFrame& frame) override;
+    bool DoReceive(CanFrame* frame) override;
+
+    hal::CanPort* controller_;
+    CanFrame ring_[kCapacity];
+    uint32_t head_ = 0;
+    uint32_t count_ = 0;
+  };
+
   void SyncGatewayWithSettings();
 
+  // Construction order matters: the tick I/O and the node port exist before the app that uses
+  // them.
   GatewayDevices devices_;
   gateway::CspGateway gateway_;
   gateway::GatewayConfig gateway_config_;
   bool gateway_ok_ = false;
   uint8_t gateway_node_id_ = 0;
   uint8_t gateway_axes_ = 0;
-  GatewayStepIo step_io_;
-  std::unique_ptr<NodePort> node_port_;
-  std::unique_ptr<App> app_;
+  CspIo tick_io_;
+  NodePort node_port_;
+  App app_;
   GatewayAppCounters counters_;
 };
 
-}  // namespace volcomp::fw_linux
+}  // namespace volcomp::firmware

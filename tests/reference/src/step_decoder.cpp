@@ -1,5 +1,5 @@
 // Step input decoding.
-#include "volcomp/step_decoder.hpp"
+#include "volcomp/reference/step_decoder.hpp"
 
 namespace volcomp {
 

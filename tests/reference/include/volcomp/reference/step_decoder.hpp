@@ -1,9 +1,10 @@
 // Software model of a step-input counter: decodes step+dir, CW/CCW or A/B quadrature line levels.
 //
 // On the MCU a timer in encoder / clock+direction mode does this in hardware; this class is the
-// same logic for the mock HAL, the simulator and tests, and the reference the hardware is checked
-// against. Feed it the levels of the two input lines after every change (or at any sample rate at
-// which each line changes at most once between samples).
+// same logic in software (the reference library, tests/reference), for tests that drive the tick
+// from simulated input lines, and the reference the hardware is checked against. Feed it the levels
+// of the two input lines after every change (or at any sample rate at which each line changes at
+// most once between samples).
 //   step+dir:   a = STEP, b = DIR; a rising edge of STEP counts +1 if DIR is high, else -1
 //               (inverted when invert_dir).
 //   CW/CCW:     a = CW, b = CCW; a rising edge on CW counts +1, on CCW -1.

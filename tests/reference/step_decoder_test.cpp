@@ -1,5 +1,5 @@
 // Input decoders for step+dir, CW/CCW and quadrature.
-#include "volcomp/step_decoder.hpp"
+#include "volcomp/reference/step_decoder.hpp"
 
 #include <gtest/gtest.h>
 

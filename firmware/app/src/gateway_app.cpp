@@ -1,51 +1,35 @@
 // The board application in CAN gateway mode.
-#include "volcomp/fw_linux/gateway_app.hpp"
+#include "volcomp/firmware/gateway_app.hpp"
 
-namespace volcomp::fw_linux {
+namespace volcomp::firmware {
 
-// The node's CAN port: frames for the node are queued here by OnControllerFrame (bounded ring, no
-// allocation after construction); what the node sends goes out on the controller port.
-class GatewayApp::NodePort final : public hal::CanPort {
- public:
-  explicit NodePort(hal::CanPort* controller) : controller_(controller) {}
-  bool Push(const CanFrame& f) {
-    if (count_ == kCapacity) return false;
-    ring_[(head_ + count_) % kCapacity] = f;
-    ++count_;
-    return true;
-  }
-  bool empty() const { return count_ == 0; }
+bool GatewayApp::NodePort::Push(const CanFrame& f) {
+  if (count_ == kCapacity) return false;
+  ring_[(head_ + count_) % kCapacity] = f;
+  ++count_;
+  return true;
+}
 
- private:
-  static constexpr uint32_t kCapacity = 256;
-  Status DoSend(const CanFrame& frame) override { return controller_->Send(frame); }
-  bool DoReceive(CanFrame* frame) override {
-    if (count_ == 0) return false;
-    *frame = ring_[head_];
-    head_ = (head_ + 1) % kCapacity;
-    --count_;
-    return true;
-  }
+Status GatewayApp::NodePort::DoSend(const CanFrame& frame) { return controller_->Send(frame); }
 
-  hal::CanPort* controller_;
-  CanFrame ring_[kCapacity];
-  uint32_t head_ = 0;
-  uint32_t count_ = 0;
-};
+bool GatewayApp::NodePort::DoReceive(CanFrame* frame) {
+  if (count_ == 0) return false;
+  *frame = ring_[head_];
+  head_ = (head_ + 1) % kCapacity;
+  --count_;
+  return true;
+}
 
 GatewayApp::GatewayApp(const GatewayDevices& devices)
     : devices_(devices),
-      step_io_(&gateway_),
-      node_port_(std::make_unique<NodePort>(devices.controller)),
-      app_(std::make_unique<App>(App::Devices{&step_io_, devices.io, devices.table_flash,
-                                              devices.settings_flash, node_port_.get(),
-                                              devices.clock})) {}
+      tick_io_(&gateway_),
+      node_port_(devices.controller),
+      app_(App::Devices{&tick_io_, devices.io, devices.table_flash, devices.settings_flash,
+                        &node_port_, devices.clock}) {}
 
-GatewayApp::~GatewayApp() = default;
-
-Status GatewayApp::Start(const firmware::BoardSettings& defaults,
+Status GatewayApp::Start(const BoardSettings& defaults,
                          const gateway::GatewayConfig& gateway,
-                         const firmware::AppOptions& options) {
+                         const AppOptions& options) {
   if (devices_.controller == nullptr || devices_.io == nullptr || devices_.table_flash == nullptr ||
       devices_.clock == nullptr) {
     return Error::kInvalidArgument;
@@ -53,7 +37,7 @@ Status GatewayApp::Start(const firmware::BoardSettings& defaults,
   gateway_config_ = gateway;
   gateway_ok_ = false;
   gateway_node_id_ = gateway_axes_ = 0;
-  VOLCOMP_TRY(app_->Start(defaults, options));
+  VOLCOMP_TRY(app_.Start(defaults, options));
   SyncGatewayWithSettings();
   return gateway_ok_ || devices_.drives == nullptr ? Status::Ok() : Status(Error::kConfigInvalid);
 }
@@ -62,8 +46,8 @@ Status GatewayApp::Start(const firmware::BoardSettings& defaults,
 // and the axis count (mapped axes must exist). Settings change only at a node reset, so this
 // reconfigures (and restarts the commanded positions) only then.
 void GatewayApp::SyncGatewayWithSettings() {
-  const uint8_t node = app_->settings().node_id;
-  const uint8_t axes = app_->engine().axis_count();
+  const uint8_t node = app_.settings().node_id;
+  const uint8_t axes = app_.engine().axis_count();
   if (node == gateway_node_id_ && axes == gateway_axes_) return;
   gateway_node_id_ = node;
   gateway_axes_ = axes;
@@ -72,19 +56,17 @@ void GatewayApp::SyncGatewayWithSettings() {
   gateway_ok_ = gateway_.Configure(c, axes).ok();
 }
 
-bool GatewayApp::node_pending() const { return !node_port_->empty(); }
-
 gateway::Route GatewayApp::OnControllerFrame(const CanFrame& frame) {
   CanFrame out = frame;
   gateway::Route route = gateway::Route::kForward;
   if (gateway_ok_) {
     route = gateway_.FromController(frame, &out);
-  } else if (!frame.extended && frame.id == 0x600u + app_->settings().node_id) {
+  } else if (!frame.extended && frame.id == 0x600u + app_.settings().node_id) {
     route = gateway::Route::kLocal;
   }
   // The node needs NMT commands and its own SDO requests; nothing else reaches it.
   if (!frame.extended && !frame.rtr && (frame.id == 0 || route == gateway::Route::kLocal)) {
-    if (!node_port_->Push(frame)) ++counters_.node_overruns;
+    if (!node_port_.Push(frame)) ++counters_.node_overruns;
   }
   if (route == gateway::Route::kForward && devices_.drives != nullptr) {
     if (devices_.drives->Send(out).ok()) {
@@ -110,17 +92,10 @@ gateway::Route GatewayApp::OnDriveFrame(const CanFrame& frame) {
   return route;
 }
 
-void GatewayApp::Tick() {
-  app_->Tick();
-  if (!gateway_ok_) return;
-  const ControlTick& engine = app_->engine();
-  for (uint8_t a = 0; a < engine.axis_count(); ++a) {
-    gateway_.SetCorrection(a, engine.correction_steps(a));
-  }
-}
+void GatewayApp::Tick() { app_.Tick(); }
 
 void GatewayApp::Poll() {
-  app_->Poll();
+  app_.Poll();
   SyncGatewayWithSettings();
 }
 
@@ -131,4 +106,4 @@ void GatewayApp::PumpFrames() {
   while (devices_.drives->Receive(&f)) OnDriveFrame(f);
 }
 
-}  // namespace volcomp::fw_linux
+}  // namespace volcomp::firmware

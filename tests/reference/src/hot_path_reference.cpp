@@ -1,5 +1,5 @@
 // The clear reference versions of the optimised tick routines (see hot_path_reference.hpp).
-#include "volcomp/hot_path_reference.hpp"
+#include "volcomp/reference/hot_path_reference.hpp"
 
 namespace volcomp {
 namespace {

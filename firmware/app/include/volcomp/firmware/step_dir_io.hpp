@@ -1,0 +1,55 @@
+// Tick I/O of a step/dir board (tick_io.hpp): the hardware input step counters in, the step/dir
+// output stage (StepOutput: one pulse plan per axis and tick) out through the HAL's StepIo
+// (hal/step_io.hpp: ReadCounters, Apply). Static, no virtual call; Output() is part of the tick
+// ISR (on the STM32G474 the object lives in CCM SRAM next to BoardApp).
+#pragma once
+
+#include <cstdint>
+
+#include "volcomp/board_config.hpp"
+#include "volcomp/control_tick.hpp"
+#include "volcomp/firmware/tick_io.hpp"
+#include "volcomp/hal/step_io.hpp"
+#include "volcomp/status.hpp"
+#include "volcomp/step_generator.hpp"
+#include "volcomp/step_output.hpp"
+#include "volcomp/table_format.hpp"
+
+namespace volcomp::firmware {
+
+template <class StepIo>
+class StepDirIo {
+  static_assert(hal::IsStepIo<StepIo>::value, "StepIo must provide ReadCounters() and Apply()");
+
+ public:
+  explicit StepDirIo(StepIo* step_io) : step_io_(step_io) {}
+
+  Status Configure(const BoardConfig& config) { return output_.Configure(config); }
+  void ReadCounters(uint32_t* counters) { step_io_->ReadCounters(counters); }
+  void Output(const ControlTick& tick) {
+    output_.Plan(tick.targets(), plans_);
+    step_io_->Apply(plans_);
+  }
+  OutputStatus output_status() const {
+    OutputStatus s;
+    for (uint8_t a = 0; a < output_.axis_count(); ++a) {
+      s.position_steps[a] = output_.position(a);
+      s.max_backlog_steps[a] = output_.max_backlog(a);
+    }
+    s.overruns = output_.overruns();
+    return s;
+  }
+
+  /// The output stage (positions, backlog, generators).
+  const StepOutput& output() const { return output_; }
+  /// The plans of the last tick (what went to StepIo::Apply).
+  const PulsePlan& plan(uint8_t a) const { return plans_[a]; }
+  StepIo& step_io() { return *step_io_; }
+
+ private:
+  StepIo* step_io_;
+  StepOutput output_;
+  PulsePlan plans_[table::kMaxAxes];
+};
+
+}  // namespace volcomp::firmware

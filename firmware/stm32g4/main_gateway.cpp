@@ -1,0 +1,82 @@
+// STM32G474 reference board as a CiA 402 CSP gateway (docs/mcu-target.md, "Gateway image"): the
+// freestanding GatewayApp between the controller's bus on FDCAN1 and the drives' bus on FDCAN2.
+//   tick    TIM6 update interrupt at BoardConfig::tick_hz (highest priority): GatewayApp::Tick()
+//           (ControlTick to the corrections, which the CSP output stage hands to the gateway)
+//   main    frames of both buses (forwarded with corrected target / actual positions), then
+//           GatewayApp::Poll() (slow lines, the CANopen node), watchdog refresh
+// No step inputs or outputs: the commanded positions come from the controller's target PDOs. The
+// tick path and the application object run from CCM SRAM (stm32g474re.ld), as in the step/dir
+// image.
+#include <cstdint>
+
+#include "cm4_runtime.hpp"
+#include "volcomp/csp_gateway.hpp"
+#include "volcomp/firmware/gateway_app.hpp"
+#include "volcomp/hal/stm32g4/drivers.hpp"
+
+namespace {
+
+namespace stm32g4 = volcomp::stm32g4;
+namespace gateway = volcomp::gateway;
+
+// Three linear axes; the drives are CiA 402 nodes 1..3 with the usual CSP PDO mapping: RPDO1
+// 0x200 + n = controlword + target position 0x607A at byte 2, TPDO1 0x180 + n = statusword +
+// position actual value 0x6064 at byte 2. The mapping is part of the image (the Linux board reads
+// it from its configuration file).
+volcomp::firmware::BoardSettings BoardDefaults() {
+  volcomp::firmware::BoardSettings s;
+  s.board = volcomp::DefaultBoardConfig();
+  s.board.pulse_clock_hz = stm32g4::kSysclkHz;
+  return s;
+}
+
+gateway::GatewayConfig DriveMapping(uint8_t axes) {
+  gateway::GatewayConfig c;
+  for (uint8_t a = 0; a < axes; ++a) {
+    c.map[c.map_count++] = {static_cast<uint16_t>(0x201u + a), gateway::PdoField::kTargetPosition,
+                            2, a};
+    c.map[c.map_count++] = {static_cast<uint16_t>(0x181u + a), gateway::PdoField::kActualPosition,
+                            2, a};
+  }
+  return c;
+}
+
+stm32g4::StmSlowIo g_io;
+stm32g4::StmFlash g_tables(stm32g4::layout::kTableOffset, stm32g4::layout::kTableBytes);
+stm32g4::StmFlash g_settings(stm32g4::layout::kConfigOffset, stm32g4::layout::kConfigBytes);
+stm32g4::StmFdcan g_controller(stm32g4::FdcanInstance::kFdcan1);
+stm32g4::StmFdcan g_drives(stm32g4::FdcanInstance::kFdcan2);
+stm32g4::CycleClock g_clock;
+
+// The application (the tick's data) in CCM SRAM next to the tick code.
+__attribute__((section(".ccm_bss")))
+volcomp::firmware::GatewayApp g_app({&g_controller, &g_drives, &g_io, &g_tables, &g_settings,
+                                     &g_clock});
+
+}  // namespace
+
+// The control tick (vector TIM6_DAC), placed in CCM SRAM through its section name.
+extern "C" __attribute__((section(".volcomp_hot.tick_isr"))) void volcomp_tick_isr() {
+  stm32g4::TickTimerAcknowledge();
+  g_app.Tick();
+}
+
+int main() {
+  if (!stm32g4::ConfigureSystemClock().ok()) volcomp_runtime_panic();
+  g_clock.Init();
+  g_io.Init();
+  const volcomp::firmware::BoardSettings defaults = BoardDefaults();
+  volcomp::firmware::AppOptions options;
+  options.table_bank_size = stm32g4::layout::kTableBankBytes;
+  // A bad configuration leaves the board in pass-through with FAULT set; keep serving CAN.
+  if (g_controller.Init(1000000u).ok() && g_drives.Init(1000000u).ok()) {
+    g_app.Start(defaults, DriveMapping(defaults.board.axis_count), options).IgnoreError();
+  }
+  stm32g4::Iwdg::Start(100);
+  stm32g4::StartTickTimer(defaults.board.tick_hz, 0).IgnoreError();
+  for (;;) {
+    g_app.PumpFrames();
+    g_app.Poll();
+    stm32g4::Iwdg::Refresh();
+  }
+}
