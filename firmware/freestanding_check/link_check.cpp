@@ -13,6 +13,7 @@
 namespace {
 
 struct NullStepIo {
+  volcomp::Status Configure(const volcomp::BoardConfig&) { return volcomp::Status::Ok(); }
   void ReadCounters(uint32_t* counters) {
     for (int i = 0; i < 6; ++i) counters[i] = 0;
   }

@@ -19,6 +19,10 @@ class GatewayApp::NodePort final : public hal::CanPort {
  private:
   static constexpr uint32_t kCapacity = 256;
   Status DoSend(const CanFrame& frame) override { return controller_->Send(frame); }
+  // The node's bit rate is the controller bus's.
+  Status DoSetBitrate(uint32_t bitrate_bps) override {
+    return controller_->SetBitrate(bitrate_bps);
+  }
   bool DoReceive(CanFrame* frame) override {
     if (count_ == 0) return false;
     *frame = ring_[head_];
@@ -39,7 +43,7 @@ GatewayApp::GatewayApp(const GatewayDevices& devices)
       node_port_(std::make_unique<NodePort>(devices.controller)),
       app_(std::make_unique<App>(App::Devices{&step_io_, devices.io, devices.table_flash,
                                               devices.settings_flash, node_port_.get(),
-                                              devices.clock})) {}
+                                              devices.clock, devices.tick_timer})) {}
 
 GatewayApp::~GatewayApp() = default;
 

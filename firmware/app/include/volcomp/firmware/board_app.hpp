@@ -17,6 +17,19 @@
 // mounts the tables and activates the stored image if it is intact and made for this board;
 // otherwise the board runs as pure pass-through and reports why (stored_table_status()).
 //
+// The configuration in force has one owner: Start() (power-on, and every NMT reset node) applies
+// the settings it loaded to the hardware as well as to the data path, in an order that never lets
+// the tick run at a period ControlTick was not configured for: stop the tick timer, step I/O
+// formats and counter widths, ControlTick, the tick timer's rate, the CAN bit rate; the timer
+// starts again once everything is in place. Stored settings the hardware refuses (a tick rate or
+// bit rate the timer or CAN controller cannot produce exactly, a pulse format it cannot do) give
+// way to the factory defaults, so the board stays reachable; the refusal stays visible: FAULT
+// output, EMCY kEmcyConfigRefused (frame bytes 3-4: error code, byte 5: ConfigPart),
+// config_status().
+// A CAN port that cannot set the bit rate itself and finds the interface at another rate
+// (SocketCAN) reports kCanBitrateMismatch the same way, without falling back: it communicates at
+// the interface's rate.
+//
 // StepIo is a static interface (volcomp/hal/step_io.hpp): no virtual call on the tick path.
 #pragma once
 
@@ -36,6 +49,7 @@
 #include "volcomp/hal/flash.hpp"
 #include "volcomp/hal/slow_io.hpp"
 #include "volcomp/hal/step_io.hpp"
+#include "volcomp/hal/tick_timer.hpp"
 #include "volcomp/status.hpp"
 #include "volcomp/table_image.hpp"
 
@@ -57,10 +71,22 @@ struct AppOptions {
 /// Device-specific EMCY codes for faults (CiA 301 0xFFxx range).
 inline constexpr uint16_t kEmcyEStop = 0xFF01;
 inline constexpr uint16_t kEmcyDriveAlarm = 0xFF02;
+inline constexpr uint16_t kEmcyConfigRefused = 0xFF03;  // the hardware refused stored settings
+
+/// Which device refused the configuration (config_refused_by(); EMCY kEmcyConfigRefused byte 5).
+enum class ConfigPart : uint8_t {
+  kNone = 0,
+  kSettings = 1,    // the settings themselves (ValidateSettings)
+  kStepIo = 2,      // step I/O: pulse format, counter width, pulse clock or tick length
+  kDataPath = 3,    // ControlTick
+  kTickTimer = 4,   // the tick rate
+  kCanBitrate = 5,  // the CAN bit rate
+};
 
 template <class StepIo>
 class BoardApp final : private BoardControl {
-  static_assert(hal::IsStepIo<StepIo>::value, "StepIo must provide ReadCounters() and Apply()");
+  static_assert(hal::IsStepIo<StepIo>::value,
+                "StepIo must provide Configure(), ReadCounters() and Apply()");
 
  public:
   struct Devices {
@@ -70,14 +96,21 @@ class BoardApp final : private BoardControl {
     hal::Flash* settings_flash = nullptr;  // optional: stored settings
     hal::CanPort* can = nullptr;           // optional: the CANopen node
     hal::Clock* clock = nullptr;           // required with `can` (timeouts, heartbeat)
+    hal::TickTimer* tick_timer = nullptr;  // optional: the timer that calls Tick() (without it
+                                           // the caller ticks at settings().board.tick_hz)
   };
 
   explicit BoardApp(const Devices& devices)
       : dev_(devices), objects_(this, &tables_, &settings_store_, &node_, AppOptions().identity) {}
 
-  /// Starts with the stored settings, or `defaults` when none are stored. Fails only for an
-  /// invalid configuration (the board then stays in pass-through with kFault set).
+  /// Starts with the stored settings, or `defaults` when none are stored (or the hardware refuses
+  /// them: see config_status()), applied to the devices and the data path. Fails only when
+  /// `defaults` are invalid or refused by the hardware (the board then stays in pass-through with
+  /// kFault set and the tick stopped).
   Status Start(const BoardSettings& defaults, const AppOptions& options = AppOptions()) {
+    // No tick while the data path is reconfigured (a node reset calls this while running).
+    started_ = false;
+    if (dev_.tick_timer != nullptr) dev_.tick_timer->Stop();
     defaults_ = defaults;
     options_ = options;
     objects_ = BoardObjects(this, &tables_, &settings_store_, &node_, options.identity);
@@ -89,11 +122,16 @@ class BoardApp final : private BoardControl {
         settings_ = settings_store_.Load(defaults);
       }
     }
-    Status s = ValidateSettings(settings_);
-    if (s.ok()) s = engine_.Configure(settings_.board);
+    config_status_ = ApplySettings(settings_, &config_refused_by_);
+    Status s = Fatal(config_status_);
+    if (!s.ok() && dev_.settings_flash != nullptr) {
+      settings_ = defaults;  // stored settings this hardware cannot run: the factory defaults
+      ConfigPart part = ConfigPart::kNone;
+      s = Fatal(ApplySettings(settings_, &part));
+    }
     started_ = s.ok();
     dev_.io->Write(hal::OutputLine::kReady, started_);
-    dev_.io->Write(hal::OutputLine::kFault, !started_);
+    dev_.io->Write(hal::OutputLine::kFault, !started_ || !config_status_.ok());
     if (!started_) return s;
     objects_.SetSettings(settings_);
     uint32_t counters[table::kMaxAxes];
@@ -107,6 +145,23 @@ class BoardApp final : private BoardControl {
     if (dev_.can != nullptr) {
       node_.Start(settings_.node_id, &objects_, NowMs(), options.sdo);
       node_.set_heartbeat_ms(settings_.heartbeat_ms);
+      if (!config_status_.ok()) {
+        const uint16_t code = static_cast<uint16_t>(config_status_.error());
+        const uint8_t m[5] = {static_cast<uint8_t>(code), static_cast<uint8_t>(code >> 8),
+                              static_cast<uint8_t>(config_refused_by_), 0, 0};
+        const bool bus = config_refused_by_ == ConfigPart::kCanBitrate;
+        node_.RaiseError(kEmcyConfigRefused,
+                         bus ? canopen::kErrCommunication : canopen::kErrManufacturer, m);
+      }
+    }
+    if (dev_.tick_timer != nullptr) {
+      const Status t = dev_.tick_timer->Start();
+      if (!t.ok()) {
+        started_ = false;
+        dev_.io->Write(hal::OutputLine::kReady, false);
+        dev_.io->Write(hal::OutputLine::kFault, true);
+        return t;
+      }
     }
     Poll();
     return Status::Ok();
@@ -178,10 +233,40 @@ class BoardApp final : private BoardControl {
   const BoardObjects& objects() const { return objects_; }
   const BoardSettings& settings() const { return settings_; }
   Status stored_table_status() const { return stored_status_; }
+  /// Ok, or why the hardware refused the loaded settings (the board then runs the factory
+  /// defaults, except for kCanBitrateMismatch) and which device refused them.
+  Status config_status() const { return config_status_; }
+  ConfigPart config_refused_by() const { return config_refused_by_; }
   bool started() const { return started_; }
 
  private:
   static constexpr uint8_t kTableNone = 0, kTableSet = 1, kTableClear = 2;
+
+  // Applies `s` with the tick stopped, in the order the tick needs; the first refusal is returned
+  // and its device named in *part. A bit-rate mismatch the port reports (it runs at the
+  // interface's rate) still leaves everything else applied.
+  Status ApplySettings(const BoardSettings& s, ConfigPart* part) {
+    *part = ConfigPart::kSettings;
+    VOLCOMP_TRY(ValidateSettings(s));
+    *part = ConfigPart::kStepIo;
+    VOLCOMP_TRY(dev_.step_io->Configure(s.board));
+    *part = ConfigPart::kDataPath;
+    VOLCOMP_TRY(engine_.Configure(s.board));
+    if (dev_.tick_timer != nullptr) {
+      *part = ConfigPart::kTickTimer;
+      VOLCOMP_TRY(dev_.tick_timer->SetRate(s.board.tick_hz));
+    }
+    if (dev_.can != nullptr) {
+      *part = ConfigPart::kCanBitrate;
+      VOLCOMP_TRY(dev_.can->SetBitrate(uint32_t{s.bitrate_kbit} * 1000u));
+    }
+    *part = ConfigPart::kNone;
+    return Status::Ok();
+  }
+  // A refusal the board cannot run with (a mismatch report is not one).
+  static Status Fatal(Status s) {
+    return s.error() == Error::kCanBitrateMismatch ? Status::Ok() : s;
+  }
 
   Status ActivateStored() {
     const Result<table::TableView> view = tables_.MountActive(settings_.board);
@@ -229,7 +314,7 @@ class BoardApp final : private BoardControl {
                    std::memory_order_relaxed);
     write_enable_ = io.Read(hal::InputLine::kWriteEnable);
     io.Write(hal::OutputLine::kCompensating, engine_.compensator().engaged());
-    io.Write(hal::OutputLine::kFault, fault);
+    io.Write(hal::OutputLine::kFault, fault || !config_status_.ok());
   }
 
   void PollCan() {
@@ -301,6 +386,8 @@ class BoardApp final : private BoardControl {
   bool bus_enable_ = true;
   bool home_level_[table::kMaxAxes] = {};
   Status stored_status_ = Error::kNotFound;
+  Status config_status_;
+  ConfigPart config_refused_by_ = ConfigPart::kNone;
   CanFrame tx_;
   bool have_tx_ = false;
   uint32_t max_tick_ns_ = 0;

@@ -17,6 +17,9 @@ class GatewayStepIo {
  public:
   explicit GatewayStepIo(const gateway::CspGateway* gateway) : gateway_(gateway) {}
 
+  /// Nothing to set up: no step lines (the gateway follows the axis count in force itself).
+  Status Configure(const BoardConfig& /*config*/) { return Status::Ok(); }
+
   void ReadCounters(uint32_t* counters) {
     for (uint8_t a = 0; a < table::kMaxAxes; ++a) counters[a] = gateway_->InputCounter(a);
   }
