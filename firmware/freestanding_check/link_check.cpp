@@ -16,6 +16,7 @@
 namespace {
 
 struct NullStepIo {
+  volcomp::Status Configure(const volcomp::BoardConfig&) { return volcomp::Status::Ok(); }
   void ReadCounters(uint32_t* counters) {
     for (int i = 0; i < 6; ++i) counters[i] = 0;
   }
@@ -30,6 +31,14 @@ class NullIo final : public volcomp::hal::SlowIo {
 class NullCan final : public volcomp::hal::CanPort {
   volcomp::Status DoSend(const volcomp::CanFrame&) override { return volcomp::Status(); }
   bool DoReceive(volcomp::CanFrame*) override { return false; }
+  volcomp::Status DoSetBitrate(uint32_t) override { return volcomp::Status(); }
+};
+
+class NullTickTimer final : public volcomp::hal::TickTimer {
+  volcomp::Status DoSetRate(uint32_t) override { return volcomp::Status(); }
+  volcomp::Status DoStart() override { return volcomp::Status(); }
+  void DoStop() override {}
+  uint32_t DoRateHz() const override { return 0; }
 };
 
 class NullClock final : public volcomp::hal::Clock {
@@ -102,8 +111,9 @@ void __cxa_pure_virtual() {
   static NullCan controller, drives;
   static NullClock clock;
   static NullFlash gateway_flash;
+  static NullTickTimer tick_timer;
   static volcomp::firmware::GatewayApp gateway(
-      {&controller, &drives, &io, &gateway_flash, nullptr, &clock});
+      {&controller, &drives, &io, &gateway_flash, nullptr, &clock, &tick_timer});
   if (gateway.Start(volcomp::firmware::BoardSettings(), volcomp::gateway::GatewayConfig()).ok()) {
     gateway.PumpFrames();
     gateway.Tick();

@@ -1,6 +1,9 @@
 // STM32G474 reference board: the board application on the register-level HAL.
 //   tick    TIM6 update interrupt at BoardConfig::tick_hz (highest priority): BoardApp::Tick()
 //   main    BoardApp::Poll() in a loop (slow lines, CANopen), watchdog refresh
+// main() only creates the devices: BoardApp::Start applies the configuration in force (stored
+// settings, else the factory defaults below) to the step I/O timers, TIM6 and FDCAN, and does so
+// again at every NMT reset node.
 // The tick path and the application object run from CCM SRAM (stm32g474re.ld).
 #include <cstdint>
 
@@ -19,9 +22,7 @@ using App = volcomp::firmware::BoardApp<TickIo>;
 // output timers count at SYSCLK.
 volcomp::firmware::BoardSettings BoardDefaults() {
   volcomp::firmware::BoardSettings s;
-  s.board = volcomp::DefaultBoardConfig();
-  s.board.pulse_clock_hz = volcomp::stm32g4::kSysclkHz;
-  s.board.axis[2].input_counter_bits = 16;
+  s.board = volcomp::stm32g4::ReferenceBoardConfig();
   return s;
 }
 
@@ -33,11 +34,12 @@ volcomp::stm32g4::StmFlash g_settings(volcomp::stm32g4::layout::kConfigOffset,
                                       volcomp::stm32g4::layout::kConfigBytes);
 volcomp::stm32g4::StmFdcan g_can;
 volcomp::stm32g4::CycleClock g_clock;
+volcomp::stm32g4::StmTickTimer g_tick(/*irq_priority=*/0);
 
 // The application and the step output stage (the tick's data) in CCM SRAM next to the tick code.
 __attribute__((section(".ccm_bss"))) TickIo g_tick_io(&g_step_io);
 __attribute__((section(".ccm_bss")))
-App g_app({&g_tick_io, &g_io, &g_tables, &g_settings, &g_can, &g_clock});
+App g_app({&g_tick_io, &g_io, &g_tables, &g_settings, &g_can, &g_clock, &g_tick});
 
 }  // namespace
 
@@ -51,15 +53,12 @@ int main() {
   if (!volcomp::stm32g4::ConfigureSystemClock().ok()) volcomp_runtime_panic();
   g_clock.Init();
   g_io.Init();
-  const volcomp::firmware::BoardSettings defaults = BoardDefaults();
   volcomp::firmware::AppOptions options;
   options.table_bank_size = volcomp::stm32g4::layout::kTableBankBytes;
-  // A bad configuration leaves the board in pass-through with FAULT set; keep serving CAN.
-  if (g_step_io.Init(defaults.board).ok() && g_can.Init(1000000u).ok()) {
-    g_app.Start(defaults, options).IgnoreError();  // status is reported on the FAULT line
-  }
+  // Stored settings the hardware refuses give way to the defaults (FAULT line, EMCY); defaults it
+  // refuses leave the board stopped with FAULT set.
+  g_app.Start(BoardDefaults(), options).IgnoreError();  // reported on the FAULT line and EMCY
   volcomp::stm32g4::Iwdg::Start(100);
-  volcomp::stm32g4::StartTickTimer(defaults.board.tick_hz, 0).IgnoreError();
   for (;;) {
     g_app.Poll();
     volcomp::stm32g4::Iwdg::Refresh();

@@ -4,9 +4,12 @@
 //           (ControlTick to the corrections, which the CSP output stage hands to the gateway)
 //   main    frames of both buses (forwarded with corrected target / actual positions), then
 //           GatewayApp::Poll() (slow lines, the CANopen node), watchdog refresh
-// No step inputs or outputs: the commanded positions come from the controller's target PDOs. The
-// tick path and the application object run from CCM SRAM (stm32g474re.ld), as in the step/dir
-// image.
+// No step inputs or outputs: the commanded positions come from the controller's target PDOs.
+// main() only creates the devices: BoardApp::Start applies the configuration in force (stored
+// settings, else the factory defaults below) to TIM6 and to FDCAN1 (the node's bit rate), and does
+// so again at every NMT reset node. The drives' bus rate is not a board setting (the drives are
+// configured for it): FDCAN2 runs at kDriveBitrate. The tick path and the application object run
+// from CCM SRAM (stm32g474re.ld), as in the step/dir image.
 #include <cstdint>
 
 #include "cm4_runtime.hpp"
@@ -30,6 +33,9 @@ volcomp::firmware::BoardSettings BoardDefaults() {
   return s;
 }
 
+// The drives' bus (FDCAN2).
+constexpr uint32_t kDriveBitrate = 1000000u;
+
 gateway::GatewayConfig DriveMapping(uint8_t axes) {
   gateway::GatewayConfig c;
   for (uint8_t a = 0; a < axes; ++a) {
@@ -47,11 +53,12 @@ stm32g4::StmFlash g_settings(stm32g4::layout::kConfigOffset, stm32g4::layout::kC
 stm32g4::StmFdcan g_controller(stm32g4::FdcanInstance::kFdcan1);
 stm32g4::StmFdcan g_drives(stm32g4::FdcanInstance::kFdcan2);
 stm32g4::CycleClock g_clock;
+stm32g4::StmTickTimer g_tick(/*irq_priority=*/0);
 
 // The application (the tick's data) in CCM SRAM next to the tick code.
 __attribute__((section(".ccm_bss")))
 volcomp::firmware::GatewayApp g_app({&g_controller, &g_drives, &g_io, &g_tables, &g_settings,
-                                     &g_clock});
+                                     &g_clock, &g_tick});
 
 }  // namespace
 
@@ -68,12 +75,12 @@ int main() {
   const volcomp::firmware::BoardSettings defaults = BoardDefaults();
   volcomp::firmware::AppOptions options;
   options.table_bank_size = stm32g4::layout::kTableBankBytes;
-  // A bad configuration leaves the board in pass-through with FAULT set; keep serving CAN.
-  if (g_controller.Init(1000000u).ok() && g_drives.Init(1000000u).ok()) {
+  // Stored settings the hardware refuses give way to the defaults (FAULT line, EMCY); defaults it
+  // refuses leave the board stopped with FAULT set.
+  if (g_drives.Init(kDriveBitrate).ok()) {
     g_app.Start(defaults, DriveMapping(defaults.board.axis_count), options).IgnoreError();
   }
   stm32g4::Iwdg::Start(100);
-  stm32g4::StartTickTimer(defaults.board.tick_hz, 0).IgnoreError();
   for (;;) {
     g_app.PumpFrames();
     g_app.Poll();

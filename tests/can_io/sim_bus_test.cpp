@@ -282,6 +282,48 @@ TEST(CanIoSimBus, CanPortAdapter) {
   EXPECT_TRUE(port.Send(Frame(0x182)).ok());
 }
 
+// A node whose controller runs at another bit rate is off the bus (ISO 11898-1 error handling:
+// transmit error counter +8 per failed transmission, bus-off at 256).
+TEST(CanIoSimBus, AnEndpointAtAnotherBitRateIsOffTheBus) {
+  SimBus bus(1000000);
+  SimBusCanPort node(bus.Attach("node"));
+  Endpoint& pc = bus.Attach("pc");
+  hal::CanPort& port = node;
+  ASSERT_TRUE(port.SetBitrate(1000000).ok());  // the bus's rate: on the bus
+  EXPECT_TRUE(port.Send(Frame(0x701, {0x00})).ok());
+  pc.Send(Frame(0x610, {1}));
+  bus.RunUntilIdle();
+  EXPECT_EQ(Drain(pc).size(), 1u);
+  EXPECT_EQ(node.endpoint().rx_pending(), 1u);
+
+  ASSERT_TRUE(port.SetBitrate(500000).ok());    // a controller cannot know the bus's rate
+  EXPECT_EQ(node.endpoint().rx_pending(), 0u);  // re-initialised: queues emptied
+  pc.Send(Frame(0x610, {2}));
+  EXPECT_TRUE(port.Send(Frame(0x701, {0x00})).ok());
+  std::vector<FrameRecord> records;
+  bus.SetMonitor([&](const FrameRecord& r) { records.push_back(r); });
+  bus.RunUntilIdle();
+  EXPECT_EQ(node.endpoint().rx_pending(), 0u);  // hears nothing
+  EXPECT_EQ(node.endpoint().stats().rate_errors, 1u + 32u);
+  EXPECT_TRUE(Drain(pc).empty());  // nothing it sends arrives
+  EXPECT_EQ(bus.stats().bitrate_errors, 32u);
+  EXPECT_EQ(node.endpoint().tx_errors(), 256u);
+  EXPECT_TRUE(node.endpoint().bus_off());
+  EXPECT_EQ(node.endpoint().tx_pending(), 0u);
+  // Each attempt: SOF, error flag, delimiter, intermission.
+  for (const FrameRecord& r : records) {
+    if (r.sender != node.endpoint().index()) continue;
+    EXPECT_EQ(r.idle_ns - r.start_ns, (1u + 6u + 8u + 3u) * 1000u);
+  }
+  EXPECT_EQ(port.Send(Frame(0x701, {0x00})).error(), Error::kIoError);  // bus-off
+  // Set up again at the bus's rate: back on the bus.
+  ASSERT_TRUE(port.SetBitrate(1000000).ok());
+  EXPECT_FALSE(node.endpoint().bus_off());
+  EXPECT_TRUE(port.Send(Frame(0x701, {0x00})).ok());
+  bus.RunUntilIdle();
+  EXPECT_EQ(Drain(pc).size(), 1u);
+}
+
 TEST(CanIoSimBus, RealtimePacing) {
   SimBus bus(1000000);
   Endpoint& a = bus.Attach("a");

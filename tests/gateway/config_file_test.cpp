@@ -31,13 +31,14 @@ const char kMinimal[] =
     "tables = /tmp/t.bin\n";
 
 std::string Error(const std::string& text) {
-  LinuxBoardConfig c;
-  return ParseConfig(text, "test.conf", &c);
+  const Expected<LinuxBoardConfig, ConfigError> r = ParseConfig(text, "test.conf");
+  return r.ok() ? "" : r.error().ToString();
 }
 
 TEST(ConfigFileTest, TheShippedExampleIsValid) {
-  LinuxBoardConfig c;
-  ASSERT_EQ(LoadConfigFile(SourceDir() + "/firmware/linux/volcomp-fw-linux.conf", &c), "");
+  const auto r = LoadConfigFile(SourceDir() + "/firmware/linux/volcomp-fw-linux.conf");
+  ASSERT_TRUE(r.ok()) << r.error().ToString();
+  const LinuxBoardConfig& c = *r;
   EXPECT_EQ(c.settings.node_id, 16);
   EXPECT_EQ(c.settings.board.tick_hz, 1000u);
   EXPECT_EQ(c.settings.board.axis_count, 3);
@@ -64,8 +65,9 @@ TEST(ConfigFileTest, TheShippedExampleIsValid) {
 }
 
 TEST(ConfigFileTest, MinimalFileGetsTheDefaults) {
-  LinuxBoardConfig c;
-  ASSERT_EQ(ParseConfig(kMinimal, "test.conf", &c), "");
+  const auto r = ParseConfig(kMinimal, "test.conf");
+  ASSERT_TRUE(r.ok()) << r.error().ToString();
+  const LinuxBoardConfig& c = *r;
   EXPECT_EQ(c.settings.node_id, 0x10);
   EXPECT_EQ(c.settings.board.tick_hz, 1000u);
   EXPECT_EQ(c.settings.board.axis_count, 2);
@@ -81,10 +83,13 @@ TEST(ConfigFileTest, MinimalFileGetsTheDefaults) {
 }
 
 TEST(ConfigFileTest, FormatParsesBackToTheSameConfiguration) {
-  LinuxBoardConfig a, b;
-  ASSERT_EQ(LoadConfigFile(SourceDir() + "/firmware/linux/volcomp-fw-linux.conf", &a), "");
+  const auto loaded_a = LoadConfigFile(SourceDir() + "/firmware/linux/volcomp-fw-linux.conf");
+  ASSERT_TRUE(loaded_a.ok()) << loaded_a.error().ToString();
+  const LinuxBoardConfig& a = *loaded_a;
   const std::string text = FormatConfig(a);
-  ASSERT_EQ(ParseConfig(text, "formatted", &b), "") << text;
+  const auto parsed_b = ParseConfig(text, "formatted");
+  ASSERT_TRUE(parsed_b.ok()) << parsed_b.error().ToString() << "\n" << text;
+  const LinuxBoardConfig& b = *parsed_b;
   EXPECT_EQ(FormatConfig(b), text);
   firmware::BoardSettings sa = a.settings, sb = b.settings;
   uint8_t ra[firmware::kSettingsBytes], rb[firmware::kSettingsBytes];
@@ -142,8 +147,23 @@ TEST(ConfigFileTest, MistakesAreNamedWithTheirLine) {
   }
 }
 
+TEST(ConfigFileTest, ErrorsCarryTheirSourceAndLine) {
+  auto r = ParseConfig("[board]\nnode_id = 200\n", "test.conf");
+  ASSERT_FALSE(r.ok());
+  EXPECT_EQ(r.error().source, "test.conf");
+  EXPECT_EQ(r.error().line, 2);
+  EXPECT_EQ(r.error().message, "node_id: value above 127");
+  r = ParseConfig("[board]\naxes = X\n[axis X]\nunits_per_step = 1\n[flash]\ntables = t\n", "a");
+  ASSERT_FALSE(r.ok());
+  EXPECT_EQ(r.error().line, 0);  // about the file, not a line
+  EXPECT_EQ(r.error().ToString(), "a: [can] controller = IFACE is required");
+  r = LoadConfigFile("/nonexistent-dir/volcomp.conf");
+  ASSERT_FALSE(r.ok());
+  EXPECT_EQ(r.error().ToString(),
+            "/nonexistent-dir/volcomp.conf: cannot read the configuration file");
+}
+
 TEST(ConfigFileTest, CommentsNumbersAndBooleans) {
-  LinuxBoardConfig c;
   const std::string text =
       "; a comment line\n"
       "[board]\n"
@@ -162,7 +182,9 @@ TEST(ConfigFileTest, CommentsNumbersAndBooleans) {
       "[gpio]\n"
       "backend = fake:/tmp/state#1\n"  // '#' not after a space: kept
       "enable = gpiochip0:5\n";
-  ASSERT_EQ(ParseConfig(text, "t", &c), "");
+  const auto r = ParseConfig(text, "t");
+  ASSERT_TRUE(r.ok()) << r.error().ToString();
+  const LinuxBoardConfig& c = *r;
   EXPECT_EQ(c.gateway.sync_cob_id, 0x81);
   EXPECT_EQ(c.gateway.feedback, gateway::FeedbackMode::kLatest);
   EXPECT_EQ(c.fake_state_file, "/tmp/state#1");

@@ -421,7 +421,7 @@ TEST(GatewayAppFilesTest, ActiveTableSurvivesARestart) {
   const testing::AlignedBytes img = LinearTable(35);
   {
     hal::linux_board::FileFlash tables;
-    ASSERT_EQ(tables.Open(dir + "/tables.bin", fo), "");
+    ASSERT_TRUE(tables.Open(dir + "/tables.bin", fo).ok());
     Machine m(&tables, nullptr);
     ASSERT_TRUE(m.Start().ok());
     EXPECT_EQ(m.app_.app().stored_table_status().error(), Error::kNotFound);
@@ -430,7 +430,7 @@ TEST(GatewayAppFilesTest, ActiveTableSurvivesARestart) {
   }
   {
     hal::linux_board::FileFlash tables;
-    ASSERT_EQ(tables.Open(dir + "/tables.bin", fo), "");
+    ASSERT_TRUE(tables.Open(dir + "/tables.bin", fo).ok());
     Machine m(&tables, nullptr);
     ASSERT_TRUE(m.Start().ok());
     EXPECT_TRUE(m.app_.app().stored_table_status().ok());

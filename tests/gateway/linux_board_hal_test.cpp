@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 #include <signal.h>
 #include <sys/stat.h>
+#include <sys/timerfd.h>
 #include <unistd.h>
 
 #include <cstdio>
@@ -62,7 +63,7 @@ TEST(FileFlashTest, NewFileIsErasedAndProgramOnlyClearsBits) {
   TempDir dir;
   const std::string path = dir.file("flash.bin");
   FileFlash flash;
-  ASSERT_EQ(flash.Open(path, SmallFlash()), "");
+  ASSERT_TRUE(flash.Open(path, SmallFlash()).ok());
   EXPECT_EQ(flash.size(), 16384u);
   const std::vector<uint8_t> file = ReadFile(path);
   ASSERT_EQ(file.size(), 16384u);
@@ -90,7 +91,7 @@ TEST(FileFlashTest, NewFileIsErasedAndProgramOnlyClearsBits) {
   for (uint32_t i = 4096; i < 8192; ++i) ASSERT_EQ(flash.Map(i)[0], 0xFF);
   EXPECT_EQ(flash.Map(0)[0], 0x0F);
   // Everything reaches the file, in order.
-  EXPECT_EQ(flash.Flush(), "");
+  EXPECT_TRUE(flash.Flush().ok());
   EXPECT_EQ(flash.counters().written, 4u);  // 3 programs and 1 erase (the refused one is not)
   const std::vector<uint8_t> after = ReadFile(path);
   EXPECT_EQ(after[0], 0x0F);
@@ -103,20 +104,23 @@ TEST(FileFlashTest, ContentSurvivesReopenAndWrongSizeIsRefused) {
   const uint8_t data[16] = {0xDE, 0xAD, 0xBE, 0xEF, 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11};
   {
     FileFlash flash;
-    ASSERT_EQ(flash.Open(path, SmallFlash()), "");
+    ASSERT_TRUE(flash.Open(path, SmallFlash()).ok());
     ASSERT_TRUE(flash.Program(8192, data, 16).ok());
   }
   {
     FileFlash flash;
-    ASSERT_EQ(flash.Open(path, SmallFlash()), "");
+    ASSERT_TRUE(flash.Open(path, SmallFlash()).ok());
     EXPECT_EQ(std::vector<uint8_t>(flash.Map(8192), flash.Map(8192) + 16),
               std::vector<uint8_t>(data, data + 16));
   }
   FileFlash::Options other = SmallFlash();
   other.size = 32768;
   FileFlash flash;
-  const std::string why = flash.Open(path, other);
+  const Expected<void> opened = flash.Open(path, other);
+  ASSERT_FALSE(opened.ok());
+  const std::string why = opened.error().message;
   EXPECT_NE(why.find("size is 16384 bytes, expected 32768"), std::string::npos) << why;
+  EXPECT_EQ(opened.error().code, Error::kConfigInvalid);
   EXPECT_FALSE(flash.is_open());
 }
 
@@ -126,7 +130,7 @@ TEST(FileFlashTest, WriteThroughModeWritesBeforeReturning) {
   FileFlash::Options o = SmallFlash();
   o.background = false;
   FileFlash flash;
-  ASSERT_EQ(flash.Open(path, o), "");
+  ASSERT_TRUE(flash.Open(path, o).ok());
   const uint8_t a[8] = {1, 2, 3, 4, 5, 6, 7, 8};
   ASSERT_TRUE(flash.Program(64, a, 8).ok());
   EXPECT_EQ(flash.counters().written, 1u);
@@ -139,7 +143,7 @@ TEST(FileFlashTest, ManyQueuedOperationsLandInOrder) {
   TempDir dir;
   const std::string path = dir.file("flash.bin");
   FileFlash flash;
-  ASSERT_EQ(flash.Open(path, SmallFlash()), "");
+  ASSERT_TRUE(flash.Open(path, SmallFlash()).ok());
   // The same sector erased and programmed over and over: only the order gives the final bytes.
   uint8_t expect[16] = {};
   for (int round = 0; round < 40; ++round) {
@@ -158,11 +162,13 @@ TEST(FileFlashTest, OneProcessAtATime) {
   TempDir dir;
   const std::string path = dir.file("flash.bin");
   FileFlash first, second;
-  ASSERT_EQ(first.Open(path, SmallFlash()), "");
-  const std::string why = second.Open(path, SmallFlash());
-  EXPECT_NE(why.find("in use"), std::string::npos) << why;
+  ASSERT_TRUE(first.Open(path, SmallFlash()).ok());
+  const Expected<void> opened = second.Open(path, SmallFlash());
+  ASSERT_FALSE(opened.ok());
+  EXPECT_NE(opened.error().message.find("in use"), std::string::npos) << opened.error().message;
+  EXPECT_EQ(opened.error().code, Error::kBusy);
   first.Close();
-  EXPECT_EQ(second.Open(path, SmallFlash()), "");
+  EXPECT_TRUE(second.Open(path, SmallFlash()).ok());
 }
 
 TEST(FileFlashTest, BadGeometryAndDirectoryAreReported) {
@@ -170,33 +176,39 @@ TEST(FileFlashTest, BadGeometryAndDirectoryAreReported) {
   FileFlash flash;
   FileFlash::Options o = SmallFlash();
   o.sector_size = 3000;
-  EXPECT_NE(flash.Open(dir.file("x.bin"), o), "");
-  EXPECT_NE(flash.Open("/nonexistent-dir/flash.bin", SmallFlash()).find("cannot create"),
-            std::string::npos);
+  EXPECT_EQ(flash.Open(dir.file("x.bin"), o).error().code, Error::kInvalidArgument);
+  const Expected<void> opened = flash.Open("/nonexistent-dir/flash.bin", SmallFlash());
+  ASSERT_FALSE(opened.ok());
+  EXPECT_NE(opened.error().message.find("cannot create"), std::string::npos);
 }
 
 TEST(GpioLineSpecTest, ParsesAndFormats) {
   GpioLineSpec s;
-  ASSERT_EQ(ParseGpioLineSpec("gpiochip0:17 active-low pull-up", &s), "");
+  auto parse = [&s](const std::string& text) {
+    const Expected<GpioLineSpec> r = ParseGpioLineSpec(text);
+    if (r.ok()) s = *r;
+    return r.ok();
+  };
+  ASSERT_TRUE(parse("gpiochip0:17 active-low pull-up"));
   EXPECT_TRUE(s.used);
   EXPECT_EQ(s.chip, "gpiochip0");
   EXPECT_EQ(s.offset, 17u);
   EXPECT_TRUE(s.active_low);
   EXPECT_EQ(s.bias, Bias::kPullUp);
   EXPECT_EQ(FormatGpioLineSpec(s), "gpiochip0:17 active-low pull-up");
-  ASSERT_EQ(ParseGpioLineSpec("/dev/gpiochip1:3", &s), "");
+  ASSERT_TRUE(parse("/dev/gpiochip1:3"));
   EXPECT_EQ(s.chip, "/dev/gpiochip1");
   EXPECT_EQ(s.offset, 3u);
   EXPECT_FALSE(s.active_low);
-  ASSERT_EQ(ParseGpioLineSpec("ESTOP_IN bias-disable", &s), "");
+  ASSERT_TRUE(parse("ESTOP_IN bias-disable"));
   EXPECT_TRUE(s.chip.empty());
   EXPECT_EQ(s.line_name, "ESTOP_IN");
   EXPECT_EQ(s.bias, Bias::kDisable);
-  EXPECT_NE(ParseGpioLineSpec("gpiochip0:x", &s), "");
-  EXPECT_NE(ParseGpioLineSpec(":4", &s), "");
-  EXPECT_NE(ParseGpioLineSpec("gpiochip0:4 open-drain", &s), "");
-  EXPECT_NE(ParseGpioLineSpec("gpiochip0:4 pull-up pull-down", &s), "");
-  EXPECT_NE(ParseGpioLineSpec("   ", &s), "");
+  EXPECT_FALSE(parse("gpiochip0:x"));
+  EXPECT_FALSE(parse(":4"));
+  EXPECT_FALSE(parse("gpiochip0:4 open-drain"));
+  EXPECT_FALSE(parse("gpiochip0:4 pull-up pull-down"));
+  EXPECT_FALSE(parse("   "));
   InputLine in;
   EXPECT_TRUE(InputLineFromName("drive_alarm", &in));
   EXPECT_EQ(in, InputLine::kDriveAlarm);
@@ -216,11 +228,11 @@ TEST(FakeGpioTest, StateFileDrivesInputsAndReceivesOutputs) {
     f << "# bench\nestop=1\nhome1 = 1   # switch pressed\nwrite_enable=0\n";
   }
   FakeGpio gpio(path);
-  ASSERT_EQ(gpio.Open(GpioConfig()), "");
+  ASSERT_TRUE(gpio.Open(GpioConfig()).ok());
   gpio.SetInput(InputLine::kEnable, true);       // not named in the file: the memory value counts
   gpio.SetInput(InputLine::kWriteEnable, true);  // named in the file: the file wins
   bool levels[kInputLineCount];
-  ASSERT_EQ(gpio.ReadInputs(levels), "");
+  ASSERT_TRUE(gpio.ReadInputs(levels).ok());
   EXPECT_TRUE(levels[static_cast<int>(InputLine::kEStop)]);
   EXPECT_TRUE(levels[static_cast<int>(HomeLine(1))]);
   EXPECT_FALSE(levels[static_cast<int>(HomeLine(0))]);
@@ -228,17 +240,17 @@ TEST(FakeGpioTest, StateFileDrivesInputsAndReceivesOutputs) {
   EXPECT_FALSE(levels[static_cast<int>(InputLine::kWriteEnable)]);
   // The file is re-read only when it changes.
   const uint32_t reads = gpio.file_reads();
-  ASSERT_EQ(gpio.ReadInputs(levels), "");
+  ASSERT_TRUE(gpio.ReadInputs(levels).ok());
   EXPECT_EQ(gpio.file_reads(), reads);
   {
     std::ofstream f(path, std::ios::trunc);
     f << "estop=0\n";  // another size: seen even within the same mtime tick
   }
-  ASSERT_EQ(gpio.ReadInputs(levels), "");
+  ASSERT_TRUE(gpio.ReadInputs(levels).ok());
   EXPECT_FALSE(levels[static_cast<int>(InputLine::kEStop)]);
   EXPECT_FALSE(levels[static_cast<int>(HomeLine(1))]);
   // Outputs go to PATH.out.
-  ASSERT_EQ(gpio.WriteOutput(OutputLine::kFault, true), "");
+  ASSERT_TRUE(gpio.WriteOutput(OutputLine::kFault, true).ok());
   std::ifstream out(path + ".out");
   std::stringstream text;
   text << out.rdbuf();
@@ -249,13 +261,14 @@ TEST(FakeGpioTest, StateFileDrivesInputsAndReceivesOutputs) {
     std::ofstream f(path, std::ios::trunc);
     f << "estop=1\nestpo=1\n";
   }
-  const std::string why = gpio.ReadInputs(levels);
-  EXPECT_NE(why.find(":2:"), std::string::npos) << why;
+  const Expected<void> read = gpio.ReadInputs(levels);
+  ASSERT_FALSE(read.ok());
+  EXPECT_NE(read.error().message.find(":2:"), std::string::npos) << read.error().message;
 }
 
 TEST(LinuxSlowIoTest, DebouncesAndIsFailSafeForStopInputs) {
   FakeGpio gpio;
-  ASSERT_EQ(gpio.Open(GpioConfig()), "");
+  ASSERT_TRUE(gpio.Open(GpioConfig()).ok());
   LinuxSlowIo::Options o;
   o.debounce_ms = 5;
   LinuxSlowIo io(&gpio, o);
@@ -311,20 +324,24 @@ TEST(GpiodBackendTest, NamesTheMissingChip) {
   ASSERT_NE(gpio, nullptr);
   EXPECT_NE(gpio->Describe().find("libgpiod 1."), std::string::npos) << gpio->Describe();
   GpioConfig c;
-  ASSERT_EQ(ParseGpioLineSpec("volcomp-no-such-chip:3", &c.input[7]), "");
-  const std::string why = gpio->Open(c);
+  const Expected<GpioLineSpec> spec = ParseGpioLineSpec("volcomp-no-such-chip:3");
+  ASSERT_TRUE(spec.ok());
+  c.input[7] = *spec;
+  const Expected<void> opened = gpio->Open(c);
+  ASSERT_FALSE(opened.ok());
+  const std::string why = opened.error().message;
   EXPECT_NE(why.find("estop"), std::string::npos) << why;
   EXPECT_NE(why.find("volcomp-no-such-chip"), std::string::npos) << why;
   // Nothing configured: nothing requested, every input reads inactive.
-  EXPECT_EQ(gpio->Open(GpioConfig()), "");
+  EXPECT_TRUE(gpio->Open(GpioConfig()).ok());
   bool levels[kInputLineCount] = {true, true, true, true, true, true, true, true, true, true};
-  EXPECT_EQ(gpio->ReadInputs(levels), "");
+  EXPECT_TRUE(gpio->ReadInputs(levels).ok());
   for (bool l : levels) EXPECT_FALSE(l);
 }
 
 TEST(ShutdownSignalTest, SigtermArrivesOnTheFd) {
   ShutdownSignal sig;
-  ASSERT_EQ(sig.Open(), "");
+  ASSERT_TRUE(sig.Open().ok());
   EXPECT_EQ(sig.Take(), 0);
   ASSERT_EQ(kill(getpid(), SIGTERM), 0);  // blocked: it stays pending for the signalfd
   EXPECT_EQ(sig.Take(), SIGTERM);
@@ -334,13 +351,43 @@ TEST(ShutdownSignalTest, SigtermArrivesOnTheFd) {
 
 TEST(TickTimerTest, CountsExpirations) {
   TickTimer timer;
-  EXPECT_NE(timer.Start(10), "");
-  ASSERT_EQ(timer.Start(1000000), "");  // 1 ms
+  hal::TickTimer& tick = timer;
+  EXPECT_EQ(tick.SetRate(1000).error(), Error::kNotReady);  // not open
+  ASSERT_TRUE(timer.Open().ok());
   EXPECT_GE(timer.fd(), 0);
+  EXPECT_EQ(tick.SetRate(100000000).error(), Error::kConfigInvalid);  // a 10 ns period
+  EXPECT_EQ(tick.Start().error(), Error::kNotReady);                  // no rate yet
+  ASSERT_TRUE(tick.SetRate(1000).ok());                               // 1 ms
+  EXPECT_EQ(timer.period_ns(), 1000000u);
+  ASSERT_TRUE(tick.Start().ok());
+  EXPECT_EQ(tick.SetRate(2000).error(), Error::kBusy);  // the rate changes only while stopped
   usleep(5000);
   EXPECT_GE(timer.Take(), 1u);  // at least one period passed
   timer.Close();
   EXPECT_EQ(timer.Take(), 0u);
+}
+
+TEST(TickTimerTest, StopDiscardsAndARestartRunsAtTheNewRate) {
+  TickTimer timer;
+  hal::TickTimer& tick = timer;
+  ASSERT_TRUE(timer.Open().ok());
+  const int fd = timer.fd();
+  ASSERT_TRUE(tick.SetRate(10000).ok());
+  ASSERT_TRUE(tick.Start().ok());
+  usleep(3000);
+  tick.Stop();
+  EXPECT_EQ(timer.Take(), 0u);  // expirations before Stop() are gone
+  usleep(2000);
+  EXPECT_EQ(timer.Take(), 0u);  // stopped
+  ASSERT_TRUE(tick.SetRate(2000).ok());
+  ASSERT_TRUE(tick.Start().ok());
+  EXPECT_EQ(timer.fd(), fd);  // the event loop keeps watching the same fd
+  EXPECT_EQ(timer.starts(), 2u);
+  // The kernel's own view of the armed period (independent of period_ns()).
+  itimerspec spec{};
+  ASSERT_EQ(timerfd_gettime(timer.fd(), &spec), 0);
+  EXPECT_EQ(spec.it_interval.tv_sec, 0);
+  EXPECT_EQ(spec.it_interval.tv_nsec, 500000);
 }
 
 }  // namespace

@@ -122,5 +122,31 @@ TEST(model_grid, SpacingMustBeWholeSteps) {
   EXPECT_THROW(MakeGridSpec(o, {19.9998, 9.9999, 9.9999}), std::invalid_argument);
 }
 
+// Each refusal says which check refused, as a type the command line can act on (the hint of
+// `volcomp build`: --max-correction-um for the bound only).
+TEST(model_grid, RefusalsAreTyped) {
+  const Model m = S500Model();
+  const InverseMap inverse = [&m](const Vec3& t) { return SolveCommand(m, t).command_mm; };
+  auto kind_of = [&](const GridBuildOptions& o, const ForwardMap* forward) {
+    try {
+      BuildCorrectionGrid(o, inverse, forward);
+    } catch (const GridBuildError& e) {
+      return static_cast<int>(e.kind());
+    }
+    return -1;
+  };
+  GridBuildOptions o = S500Grid();
+  o.max_correction_um = 50;
+  EXPECT_EQ(kind_of(o, nullptr), static_cast<int>(GridRefusal::kCorrectionBound));
+  o = S500Grid();
+  o.max_interp_error_um = 1e-9;
+  o.max_nodes = 20000;
+  EXPECT_EQ(kind_of(o, nullptr), static_cast<int>(GridRefusal::kInterpolationTarget));
+  // A forward map the inverse does not invert (the identity) misses every target.
+  const ForwardMap identity = [](const Vec3& p) { return p; };
+  o = S500Grid();
+  EXPECT_EQ(kind_of(o, &identity), static_cast<int>(GridRefusal::kInverseResidual));
+}
+
 }  // namespace
 }  // namespace volcomp::model

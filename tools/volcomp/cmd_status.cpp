@@ -86,6 +86,12 @@ std::string EmcyText(const canopen::Emcy& e) {
   std::snprintf(b, sizeof b, "EMCY 0x%04X register 0x%02X data %02X %02X %02X %02X %02X", e.code,
                 e.error_register, e.data[0], e.data[1], e.data[2], e.data[3], e.data[4]);
   std::string s = b;
+  if (e.code == canopen::kEmcyEStop) s += " (e-stop)";
+  if (e.code == canopen::kEmcyDriveAlarm) s += " (drive alarm)";
+  if (e.code == canopen::kEmcyConfigRefused) {
+    s += std::string(" (settings refused by the ") + canopen::ConfigPartName(e.config_part()) +
+         ": " + ErrorName(e.config_error()) + ")";
+  }
   if (e.code == canopen::kEmcyRefused)
     s += " (refused action: abort " + Hex32(e.abort_code()) + ")";
   if (e.code == canopen::kEmcyTableInvalid)

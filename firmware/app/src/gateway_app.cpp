@@ -12,6 +12,11 @@ bool GatewayApp::NodePort::Push(const CanFrame& f) {
 
 Status GatewayApp::NodePort::DoSend(const CanFrame& frame) { return controller_->Send(frame); }
 
+// The node's bit rate is the controller bus's.
+Status GatewayApp::NodePort::DoSetBitrate(uint32_t bitrate_bps) {
+  return controller_->SetBitrate(bitrate_bps);
+}
+
 bool GatewayApp::NodePort::DoReceive(CanFrame* frame) {
   if (count_ == 0) return false;
   *frame = ring_[head_];
@@ -25,7 +30,7 @@ GatewayApp::GatewayApp(const GatewayDevices& devices)
       tick_io_(&gateway_),
       node_port_(devices.controller),
       app_(App::Devices{&tick_io_, devices.io, devices.table_flash, devices.settings_flash,
-                        &node_port_, devices.clock}) {}
+                        &node_port_, devices.clock, devices.tick_timer}) {}
 
 Status GatewayApp::Start(const BoardSettings& defaults,
                          const gateway::GatewayConfig& gateway,

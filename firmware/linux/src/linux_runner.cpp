@@ -13,29 +13,24 @@
 #include <cstdio>
 #include <cstring>
 #include <fstream>
-#include <memory>
+#include <optional>
+#include <string>
 
 #include "volcomp/firmware/gateway_app.hpp"
 #include "volcomp/fw_linux/latency_stats.hpp"
-#include "volcomp/hal/linux/fake_gpio.hpp"
-#include "volcomp/hal/linux/file_flash.hpp"
-#include "volcomp/hal/linux/gpiod_backend.hpp"
-#include "volcomp/hal/linux/linux_slow_io.hpp"
+#include "volcomp/fw_linux/linux_board.hpp"
 #include "volcomp/hal/linux/monotonic_clock.hpp"
 #include "volcomp/hal/linux/shutdown_signal.hpp"
 #include "volcomp/hal/linux/socketcan_port.hpp"
-#include "volcomp/hal/linux/tick_timer.hpp"
 
 namespace volcomp::fw_linux {
 namespace {
 
 using firmware::GatewayApp;
 using firmware::GatewayAppCounters;
-using firmware::GatewayDevices;
 namespace lb = hal::linux_board;
 using hal::socketcan::SocketCanPort;
 
-constexpr uint64_t kMaxCatchUpTicks = 10;
 constexpr int kFrameBudget = 64;  // frames per port per loop pass (keeps the tick on time)
 
 uint64_t RealtimeNs() {
@@ -61,12 +56,19 @@ struct Direction {
 class Runner {
  public:
   Runner(const LinuxBoardConfig& config, const RunOptions& options)
-      : config_(config), options_(options) {}
+      : config_(config), options_(options), board_(config, BoardOptions()) {}
 
   int Run();
 
  private:
+  LinuxBoard::Options BoardOptions() {
+    LinuxBoard::Options o;
+    o.bus_detail = [this] { return DescribeBitrate(controller_, config_.controller_iface); };
+    return o;
+  }
   bool Open();
+  void LogStart();
+  std::string DescribeBitrate(const SocketCanPort& port, const std::string& iface) const;
   void DrainController();
   void DrainDrives();
   void OnTimer();
@@ -82,112 +84,35 @@ class Runner {
   const LinuxBoardConfig& config_;
   RunOptions options_;
   lb::ShutdownSignal signal_;
-  lb::TickTimer timer_;
   lb::MonotonicClock clock_;
   SocketCanPort controller_;
   SocketCanPort drives_;
   bool have_drives_ = false;
-  lb::FileFlash tables_;
-  lb::FileFlash settings_;
-  bool have_settings_ = false;
-  std::unique_ptr<lb::GpioBackend> gpio_;
-  std::unique_ptr<lb::LinuxSlowIo> io_;
-  std::unique_ptr<GatewayApp> app_;
+  LinuxBoard board_;
+  GatewayApp* app_ = nullptr;
   Direction to_drives_, to_controller_;
-  uint64_t ticks_ = 0, late_ticks_ = 0, skipped_ticks_ = 0, max_tick_ns_ = 0;
-  uint64_t next_io_ns_ = 0, stop_at_ns_ = 0, started_ns_ = 0;
+  uint64_t stop_at_ns_ = 0, started_ns_ = 0;
   int stop_signal_ = 0;
   bool stop_ = false;
 };
 
 bool Runner::Open() {
-  std::string why = signal_.Open();
-  if (!why.empty()) {
-    std::fprintf(stderr, "volcomp-fw-linux: %s\n", why.c_str());
+  auto fail = [](const std::string& what) {
+    std::fprintf(stderr, "volcomp-fw-linux: %s\n", what.c_str());
     return false;
-  }
-  if (!controller_.Open(config_.controller_iface, PortOptions()).ok()) {
-    std::fprintf(stderr, "volcomp-fw-linux: controller side: %s\n",
-                 controller_.last_error().c_str());
-    return false;
-  }
+  };
+  Expected<void> opened = signal_.Open();
+  if (!opened.ok()) return fail(opened.error().message);
+  opened = controller_.Open(config_.controller_iface, PortOptions());
+  if (!opened.ok()) return fail("controller side: " + opened.error().message);
   have_drives_ = !config_.drives_iface.empty();
-  if (have_drives_ && !drives_.Open(config_.drives_iface, PortOptions()).ok()) {
-    std::fprintf(stderr, "volcomp-fw-linux: drive side: %s\n", drives_.last_error().c_str());
-    return false;
+  if (have_drives_) {
+    opened = drives_.Open(config_.drives_iface, PortOptions());
+    if (!opened.ok()) return fail("drive side: " + opened.error().message);
   }
-  lb::FileFlash::Options fo;
-  fo.size = 2 * config_.table_bank_bytes;
-  fo.sector_size = config_.sector_bytes;
-  fo.sync = config_.flash_sync;
-  fo.background = config_.flash_write_behind;
-  why = tables_.Open(config_.table_file, fo);
-  if (!why.empty()) {
-    std::fprintf(stderr, "volcomp-fw-linux: %s\n", why.c_str());
-    return false;
-  }
-  have_settings_ = !config_.settings_file.empty();
-  if (have_settings_) {
-    fo.size = 2 * config_.sector_bytes;
-    why = settings_.Open(config_.settings_file, fo);
-    if (!why.empty()) {
-      std::fprintf(stderr, "volcomp-fw-linux: %s\n", why.c_str());
-      return false;
-    }
-  }
-  switch (config_.gpio_backend) {
-    case GpioBackendKind::kNone:
-      gpio_ = std::make_unique<lb::FakeGpio>();
-      break;
-    case GpioBackendKind::kFake:
-      gpio_ = std::make_unique<lb::FakeGpio>(config_.fake_state_file);
-      break;
-    case GpioBackendKind::kGpiod:
-      gpio_ = lb::MakeGpiodBackend();
-      if (gpio_ == nullptr) {
-        std::fprintf(stderr,
-                     "volcomp-fw-linux: [gpio] backend = gpiod, but this build has no libgpiod "
-                     "(install libgpiod-dev and rebuild, or use backend = fake)\n");
-        return false;
-      }
-      break;
-  }
-  why = gpio_->Open(config_.gpio);
-  if (!why.empty()) {
-    std::fprintf(stderr, "volcomp-fw-linux: %s\n", why.c_str());
-    return false;
-  }
-  lb::LinuxSlowIo::Options io;
-  io.debounce_ms = config_.debounce_ms;
-  io_ = std::make_unique<lb::LinuxSlowIo>(gpio_.get(), io);
-  io_->Refresh(clock_.NowNs());
-
-  GatewayDevices dev;
-  dev.controller = &controller_;
-  dev.drives = have_drives_ ? &drives_ : nullptr;
-  dev.io = io_.get();
-  dev.table_flash = &tables_;
-  dev.settings_flash = have_settings_ ? &settings_ : nullptr;
-  dev.clock = &clock_;
-  app_ = std::make_unique<GatewayApp>(dev);
-  firmware::AppOptions ao;
-  ao.use_enable_input = config_.enable_input;
-  ao.table_bank_size = config_.table_bank_bytes;
-  ao.settings_bank_size = config_.sector_bytes;
-  ao.measure_tick_cost = true;
-  ao.identity.hardware_version = "linux";
-  ao.identity.serial_number = config_.serial_number;
-  const Status s = app_->Start(config_.settings, config_.gateway, ao);
-  if (!s.ok()) {
-    std::fprintf(stderr, "volcomp-fw-linux: start failed: %s (%s)\n", s.name(),
-                 ErrorText(s.error()));
-    return false;
-  }
-  why = timer_.Start(1000000000ull / app_->app().settings().board.tick_hz);
-  if (!why.empty()) {
-    std::fprintf(stderr, "volcomp-fw-linux: %s\n", why.c_str());
-    return false;
-  }
+  opened = board_.Open(&controller_, have_drives_ ? &drives_ : nullptr);
+  if (!opened.ok()) return fail(opened.error().message);
+  app_ = &board_.app();
   // Real-time scheduling last, once everything is allocated.
   if (config_.lock_memory && mlockall(MCL_CURRENT | MCL_FUTURE) != 0) {
     std::fprintf(stderr, "volcomp-fw-linux: warning: mlockall: %s (needs CAP_IPC_LOCK)\n",
@@ -203,18 +128,35 @@ bool Runner::Open() {
                    config_.realtime_priority, std::strerror(errno));
     }
   }
-  const Status stored = app_->app().stored_table_status();
+  LogStart();
+  return true;
+}
+
+// What the controller port found when the board applied its bit rate.
+std::string Runner::DescribeBitrate(const SocketCanPort& port, const std::string& iface) const {
+  const SocketCanPort::BitrateCheck& b = port.bitrate_check();
+  if (!b.interface_bps) return iface + " reports no bit rate to compare: " + b.note;
+  if (*b.interface_bps == b.configured_bps) {
+    return iface + " runs at " + std::to_string(*b.interface_bps / 1000u) + " kbit/s";
+  }
+  return port.last_failure() ? port.last_failure()->message : iface + ": bit rate mismatch";
+}
+
+void Runner::LogStart() {
+  const GatewayApp::App& app = app_->app();
+  const Status stored = app.stored_table_status();
   std::fprintf(stderr,
                "volcomp-fw-linux: node 0x%02X on %s, %s%s, %u axes, tick %u Hz, gpio %s, stored "
                "table: %s\n",
-               app_->app().settings().node_id, config_.controller_iface.c_str(),
+               app.settings().node_id, config_.controller_iface.c_str(),
                have_drives_ ? "gateway to " : "no gateway",
                have_drives_ ? config_.drives_iface.c_str() : "",
-               unsigned{app_->app().engine().axis_count()}, app_->app().settings().board.tick_hz,
+               unsigned{app.engine().axis_count()}, app.settings().board.tick_hz,
                config_.gpio_backend == GpioBackendKind::kNone ? "none (inputs inactive)"
-                                                              : gpio_->Describe().c_str(),
+                                                              : board_.gpio().Describe().c_str(),
                stored.ok() ? "active" : ErrorText(stored.error()));
-  return true;
+  std::fprintf(stderr, "volcomp-fw-linux: configuration in force: %s\n",
+               board_.DescribeConfigInForce().c_str());
 }
 
 void Runner::DrainController() {
@@ -263,24 +205,8 @@ void Runner::DrainDrives() {
 }
 
 void Runner::OnTimer() {
-  const uint64_t n = timer_.Take();
-  if (n == 0) return;
-  if (n > 1) late_ticks_ += n - 1;
-  const uint64_t run = n < kMaxCatchUpTicks ? n : kMaxCatchUpTicks;
-  skipped_ticks_ += n - run;
-  for (uint64_t i = 0; i < run; ++i) {
-    const uint64_t t0 = clock_.NowNs();
-    app_->Tick();
-    const uint64_t dt = clock_.NowNs() - t0;
-    max_tick_ns_ = dt > max_tick_ns_ ? dt : max_tick_ns_;
-  }
-  ticks_ += run;
+  board_.OnTimer();
   const uint64_t now = clock_.NowNs();
-  if (now >= next_io_ns_) {
-    io_->Refresh(now);
-    next_io_ns_ = now + uint64_t{config_.io_poll_ms} * 1000000u;
-  }
-  app_->Poll();
   // Frames deferred by ENOBUFS pacing: flush them (Service() also reads waiting frames into the
   // port's queue, whose kernel timestamps are then unknown).
   if (controller_.pending_tx() != 0) {
@@ -295,12 +221,7 @@ void Runner::OnTimer() {
 }
 
 void Runner::Shutdown() {
-  // Outputs inactive: the board is no longer compensating or ready.
-  io_->Write(hal::OutputLine::kCompensating, false);
-  io_->Write(hal::OutputLine::kReady, false);
-  // Everything the stores wrote reaches the files before the process ends.
-  tables_.Flush();
-  if (have_settings_) settings_.Flush();
+  board_.Shutdown();
   for (int i = 0;
        i < 100 && (controller_.pending_tx() != 0 || (have_drives_ && drives_.pending_tx() != 0));
        ++i) {
@@ -313,14 +234,15 @@ void Runner::Shutdown() {
 void Runner::Report() {
   const gateway::GatewayCounters& g = app_->gateway().counters();
   const GatewayAppCounters& a = app_->counters();
+  const TickCounters& t = board_.tick_counters();
   const double run_s = static_cast<double>(clock_.NowNs() - started_ns_) * 1e-9;
-  std::fprintf(
-      stderr,
-      "volcomp-fw-linux: stopped%s after %.1f s: %llu ticks (%llu late, %llu skipped), "
-      "longest tick %llu ns\n",
-      stop_signal_ != 0 ? " by signal" : "", run_s, static_cast<unsigned long long>(ticks_),
-      static_cast<unsigned long long>(late_ticks_), static_cast<unsigned long long>(skipped_ticks_),
-      static_cast<unsigned long long>(max_tick_ns_));
+  std::fprintf(stderr,
+               "volcomp-fw-linux: stopped%s after %.1f s: %llu ticks (%llu late, %llu skipped), "
+               "longest tick %llu ns\n",
+               stop_signal_ != 0 ? " by signal" : "", run_s,
+               static_cast<unsigned long long>(t.ticks), static_cast<unsigned long long>(t.late),
+               static_cast<unsigned long long>(t.skipped),
+               static_cast<unsigned long long>(t.max_tick_ns));
   std::fprintf(stderr,
                "  frames: %u from controller (%u to drives, %u for the node, %u SYNC), %u from "
                "drives (%u to controller, %u conflicts); targets corrected %u, actuals corrected "
@@ -328,12 +250,13 @@ void Runner::Report() {
                g.from_controller, a.forwarded_to_drives, g.local, g.syncs, g.from_drives,
                a.forwarded_to_controller, g.conflicts, g.targets_corrected, g.actuals_corrected,
                g.short_pdos, a.send_failures);
-  const lb::FileFlash::Counters fc = tables_.counters();
+  const lb::FileFlash::Counters fc = board_.tables().counters();
+  const std::optional<Failure> flash_error = board_.tables().write_error();
   std::fprintf(stderr, "  table flash: %llu erases, %llu programs, most queued %llu%s%s\n",
                static_cast<unsigned long long>(fc.erases),
                static_cast<unsigned long long>(fc.programs),
-               static_cast<unsigned long long>(fc.max_queued),
-               tables_.last_error().empty() ? "" : "; error: ", tables_.last_error().c_str());
+               static_cast<unsigned long long>(fc.max_queued), flash_error ? "; error: " : "",
+               flash_error ? flash_error->message.c_str() : "");
   if (have_drives_ && options_.measure_latency) {
     std::fprintf(stderr, "  latency controller->drives, kernel rx -> forwarded write: %s\n",
                  to_drives_.kernel_to_write.Summary().c_str());
@@ -351,8 +274,8 @@ void Runner::Report() {
            ",\"in_process\":" + d.in_process.Json() +
            ",\"unstamped\":" + std::to_string(d.unstamped) + "}";
   };
-  f << "{\"run_s\":" << run_s << ",\"ticks\":" << ticks_ << ",\"late_ticks\":" << late_ticks_
-    << ",\"skipped_ticks\":" << skipped_ticks_ << ",\"max_tick_ns\":" << max_tick_ns_
+  f << "{\"run_s\":" << run_s << ",\"ticks\":" << t.ticks << ",\"late_ticks\":" << t.late
+    << ",\"skipped_ticks\":" << t.skipped << ",\"max_tick_ns\":" << t.max_tick_ns
     << ",\"from_controller\":" << g.from_controller << ",\"from_drives\":" << g.from_drives
     << ",\"forwarded_to_drives\":" << a.forwarded_to_drives
     << ",\"forwarded_to_controller\":" << a.forwarded_to_controller << ",\"local\":" << g.local
@@ -382,7 +305,7 @@ int Runner::Run() {
     return epoll_ctl(ep, EPOLL_CTL_ADD, fd, &ev) == 0;
   };
   if (!watch(controller_.fd(), kController) || (have_drives_ && !watch(drives_.fd(), kDrives)) ||
-      !watch(timer_.fd(), kTimer) || !watch(signal_.fd(), kSignal)) {
+      !watch(board_.tick_timer().fd(), kTimer) || !watch(signal_.fd(), kSignal)) {
     std::fprintf(stderr, "volcomp-fw-linux: epoll_ctl: %s\n", std::strerror(errno));
     close(ep);
     return 1;

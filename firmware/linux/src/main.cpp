@@ -69,12 +69,12 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "volcomp-fw-linux: --config FILE is required\n%s", kUsage);
     return 2;
   }
-  volcomp::fw_linux::LinuxBoardConfig config;
-  const std::string why = volcomp::fw_linux::LoadConfigFile(config_path, &config);
-  if (!why.empty()) {
-    std::fprintf(stderr, "volcomp-fw-linux: %s\n", why.c_str());
+  const auto loaded = volcomp::fw_linux::LoadConfigFile(config_path);
+  if (!loaded.ok()) {
+    std::fprintf(stderr, "volcomp-fw-linux: %s\n", loaded.error().ToString().c_str());
     return 2;
   }
+  const volcomp::fw_linux::LinuxBoardConfig& config = *loaded;
   if (check) {
     std::printf("%s", volcomp::fw_linux::FormatConfig(config).c_str());
     return 0;

@@ -12,25 +12,27 @@
 
 namespace volcomp::hal::linux_board {
 
-std::string FakeGpio::Open(const GpioConfig& /*config*/) {
+Expected<void> FakeGpio::Open(const GpioConfig& /*config*/) {
   mtime_ns_ = file_size_ = -1;
   for (int i = 0; i < kInputLineCount; ++i) file_has_[i] = false;
-  if (path_.empty()) return "";
-  const std::string why = LoadFile();
-  if (!why.empty()) return why;
+  if (path_.empty()) return Expected<void>::Ok();
+  const Expected<void> loaded = LoadFile();
+  if (!loaded.ok()) return loaded;
   return SaveOutputs();
 }
 
-std::string FakeGpio::LoadFile() {
+Expected<void> FakeGpio::LoadFile() {
   struct stat st {};
   if (::stat(path_.c_str(), &st) != 0) {
-    if (errno != ENOENT) return "fake gpio " + path_ + ": " + std::strerror(errno);
+    if (errno != ENOENT) {
+      return Fail(Error::kIoError, "fake gpio " + path_ + ": " + std::strerror(errno));
+    }
     for (int i = 0; i < kInputLineCount; ++i) file_has_[i] = false;
     mtime_ns_ = file_size_ = -1;
-    return "";
+    return Expected<void>::Ok();
   }
   const int64_t mtime = static_cast<int64_t>(st.st_mtim.tv_sec) * 1000000000 + st.st_mtim.tv_nsec;
-  if (mtime == mtime_ns_ && st.st_size == file_size_) return "";
+  if (mtime == mtime_ns_ && st.st_size == file_size_) return Expected<void>::Ok();
   mtime_ns_ = mtime;
   file_size_ = st.st_size;
   ++file_reads_;
@@ -50,8 +52,8 @@ std::string FakeGpio::LoadFile() {
     if (eq != std::string::npos) std::istringstream(line.substr(eq + 1)) >> value;
     InputLine which;
     if (!InputLineFromName(name, &which) || (value != "0" && value != "1")) {
-      return "fake gpio " + path_ + ":" + std::to_string(number) + ": expected <input>=0|1, got '" +
-             line + "'";
+      return Fail(Error::kInvalidArgument, "fake gpio " + path_ + ":" + std::to_string(number) +
+                                               ": expected <input>=0|1, got '" + line + "'");
     }
     has[static_cast<int>(which)] = true;
     level[static_cast<int>(which)] = value == "1";
@@ -60,24 +62,23 @@ std::string FakeGpio::LoadFile() {
     file_has_[i] = has[i];
     from_file_[i] = level[i];
   }
-  return "";
+  return Expected<void>::Ok();
 }
 
-std::string FakeGpio::ReadInputs(bool* levels) {
-  const std::string why = path_.empty() ? "" : LoadFile();
+Expected<void> FakeGpio::ReadInputs(bool* levels) {
+  Expected<void> loaded = path_.empty() ? Expected<void>::Ok() : LoadFile();
   for (int i = 0; i < kInputLineCount; ++i) levels[i] = file_has_[i] ? from_file_[i] : memory_[i];
-  return why;
+  return loaded;
 }
 
-std::string FakeGpio::WriteOutput(OutputLine line, bool active) {
+Expected<void> FakeGpio::WriteOutput(OutputLine line, bool active) {
   const int i = static_cast<int>(line);
-  if (i < 0 || i >= kOutputLineCount) return "";
-  if (out_[i] == active) return "";
+  if (i < 0 || i >= kOutputLineCount || out_[i] == active) return Expected<void>::Ok();
   out_[i] = active;
-  return path_.empty() ? "" : SaveOutputs();
+  return path_.empty() ? Expected<void>::Ok() : SaveOutputs();
 }
 
-std::string FakeGpio::SaveOutputs() const {
+Expected<void> FakeGpio::SaveOutputs() const {
   const std::string out = path_ + ".out";
   const std::string tmp = out + ".tmp";
   {
@@ -85,12 +86,12 @@ std::string FakeGpio::SaveOutputs() const {
     for (int i = 0; i < kOutputLineCount; ++i) {
       f << OutputLineName(static_cast<OutputLine>(i)) << "=" << (out_[i] ? 1 : 0) << "\n";
     }
-    if (!f) return "fake gpio " + tmp + ": cannot write";
+    if (!f) return Fail(Error::kIoError, "fake gpio " + tmp + ": cannot write");
   }
   if (std::rename(tmp.c_str(), out.c_str()) != 0) {
-    return "fake gpio " + out + ": " + std::strerror(errno);
+    return Fail(Error::kIoError, "fake gpio " + out + ": " + std::strerror(errno));
   }
-  return "";
+  return Expected<void>::Ok();
 }
 
 std::string FakeGpio::Describe() const {

@@ -13,8 +13,8 @@
 namespace volcomp::hal::linux_board {
 namespace {
 
-std::string Why(const std::string& path, const char* what) {
-  return "flash file " + path + ": " + what + ": " + std::strerror(errno);
+Unexpected<Failure> Why(const std::string& path, const char* what) {
+  return Fail(Error::kIoError, "flash file " + path + ": " + what + ": " + std::strerror(errno));
 }
 
 bool WriteAll(int fd, const uint8_t* p, size_t n, off_t at) {
@@ -36,56 +36,59 @@ std::string DirOf(const std::string& path) {
 }
 
 // Creates `path` at `size` bytes of 0xFF: temporary file, fsync, rename, fsync of the directory.
-std::string CreateErased(const std::string& path, uint32_t size) {
+Expected<void> CreateErased(const std::string& path, uint32_t size) {
   const std::string tmp = path + ".tmp";
   const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
   if (fd < 0) return Why(tmp, "cannot create");
   const std::vector<uint8_t> erased(size, 0xFF);
-  const bool ok = WriteAll(fd, erased.data(), erased.size(), 0) && ::fsync(fd) == 0;
-  const std::string why = ok ? "" : Why(tmp, "cannot write");
-  ::close(fd);
-  if (!ok) {
+  if (!WriteAll(fd, erased.data(), erased.size(), 0) || ::fsync(fd) != 0) {
+    const Unexpected<Failure> why = Why(tmp, "cannot write");
+    ::close(fd);
     ::unlink(tmp.c_str());
     return why;
   }
+  ::close(fd);
   if (::rename(tmp.c_str(), path.c_str()) != 0) return Why(path, "cannot rename into place");
   const int dir = ::open(DirOf(path).c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
   if (dir >= 0) {
     ::fsync(dir);
     ::close(dir);
   }
-  return "";
+  return Expected<void>::Ok();
 }
 
 }  // namespace
 
-std::string FileFlash::Open(const std::string& path, const Options& options) {
+Expected<void> FileFlash::Open(const std::string& path, const Options& options) {
   Close();
   if (options.size == 0 || options.sector_size == 0 || options.program_unit == 0 ||
       options.size % options.sector_size != 0 || options.sector_size % options.program_unit != 0) {
-    return "flash file " + path +
-           ": size must be a multiple of the sector size, and the sector "
-           "size a multiple of the program unit";
+    return Fail(Error::kInvalidArgument, "flash file " + path +
+                                             ": size must be a multiple of the sector size, and "
+                                             "the sector size a multiple of the program unit");
   }
   options_ = options;
   path_ = path;
   struct stat st {};
   if (::stat(path.c_str(), &st) != 0) {
     if (errno != ENOENT) return Why(path, "cannot stat");
-    const std::string why = CreateErased(path, options.size);
-    if (!why.empty()) return why;
+    const Expected<void> created = CreateErased(path, options.size);
+    if (!created.ok()) return Fail(created.error());
   } else if (!S_ISREG(st.st_mode)) {
-    return "flash file " + path + ": not a regular file";
+    return Fail(Error::kConfigInvalid, "flash file " + path + ": not a regular file");
   } else if (static_cast<uint64_t>(st.st_size) != options.size) {
-    return "flash file " + path + ": size is " + std::to_string(st.st_size) + " bytes, expected " +
-           std::to_string(options.size) + " (another layout; move it away to start empty)";
+    return Fail(Error::kConfigInvalid, "flash file " + path + ": size is " +
+                                           std::to_string(st.st_size) + " bytes, expected " +
+                                           std::to_string(options.size) +
+                                           " (another layout; move it away to start empty)");
   }
   fd_ = ::open(path.c_str(), O_RDWR | O_CLOEXEC);
   if (fd_ < 0) return Why(path, "cannot open");
   if (::flock(fd_, LOCK_EX | LOCK_NB) != 0) {
-    const std::string why = errno == EWOULDBLOCK
-                                ? "flash file " + path + ": in use by another process"
-                                : Why(path, "cannot lock");
+    const Unexpected<Failure> why =
+        errno == EWOULDBLOCK
+            ? Fail(Error::kBusy, "flash file " + path + ": in use by another process")
+            : Why(path, "cannot lock");
     Close();
     return why;
   }
@@ -95,7 +98,7 @@ std::string FileFlash::Open(const std::string& path, const Options& options) {
     const ssize_t r = ::pread(fd_, bytes() + done, options.size - done, static_cast<off_t>(done));
     if (r < 0 && errno == EINTR) continue;
     if (r <= 0) {
-      const std::string why = Why(path, "cannot read");
+      const Unexpected<Failure> why = Why(path, "cannot read");
       Close();
       return why;
     }
@@ -104,12 +107,12 @@ std::string FileFlash::Open(const std::string& path, const Options& options) {
   {
     std::lock_guard<std::mutex> lock(mutex_);
     counters_ = Counters();
-    error_.clear();
+    error_.reset();
     queue_.clear();
     stop_ = busy_ = false;
   }
   if (options.background) writer_ = std::thread([this] { WriterLoop(); });
-  return "";
+  return Expected<void>::Ok();
 }
 
 void FileFlash::Close() {
@@ -125,10 +128,11 @@ void FileFlash::Close() {
   fd_ = -1;
 }
 
-std::string FileFlash::Flush() {
+Expected<void> FileFlash::Flush() {
   std::unique_lock<std::mutex> lock(mutex_);
   idle_.wait(lock, [this] { return (queue_.empty() && !busy_) || !writer_.joinable(); });
-  return error_;
+  if (error_) return Fail(*error_);
+  return Expected<void>::Ok();
 }
 
 FileFlash::Counters FileFlash::counters() const {
@@ -136,17 +140,17 @@ FileFlash::Counters FileFlash::counters() const {
   return counters_;
 }
 
-std::string FileFlash::last_error() const {
+std::optional<Failure> FileFlash::write_error() const {
   std::lock_guard<std::mutex> lock(mutex_);
   return error_;
 }
 
-std::string FileFlash::WriteOp(const uint8_t* data, uint32_t size, uint32_t offset) {
+Expected<void> FileFlash::WriteOp(const uint8_t* data, uint32_t size, uint32_t offset) {
   if (!WriteAll(fd_, data, size, static_cast<off_t>(offset)) ||
       (options_.sync && ::fdatasync(fd_) != 0)) {
     return Why(path_, "write failed");
   }
-  return "";
+  return Expected<void>::Ok();
 }
 
 void FileFlash::WriterLoop() {
@@ -157,14 +161,15 @@ void FileFlash::WriterLoop() {
     Op op = std::move(queue_.front());
     queue_.pop_front();
     busy_ = true;
-    const bool failed = !error_.empty();
+    const bool failed = error_.has_value();
     lock.unlock();
-    const std::string why =
-        failed ? "" : WriteOp(op.bytes.data(), static_cast<uint32_t>(op.bytes.size()), op.offset);
+    const Expected<void> written =
+        failed ? Expected<void>::Ok()
+               : WriteOp(op.bytes.data(), static_cast<uint32_t>(op.bytes.size()), op.offset);
     lock.lock();
     busy_ = false;
-    if (!why.empty() && error_.empty()) error_ = why;
-    if (why.empty() && !failed) ++counters_.written;
+    if (!written.ok() && !error_) error_ = written.error();
+    if (written.ok() && !failed) ++counters_.written;
     if (queue_.empty()) idle_.notify_all();
   }
   idle_.notify_all();
@@ -172,10 +177,10 @@ void FileFlash::WriterLoop() {
 
 Status FileFlash::Submit(uint32_t offset, uint32_t size) {
   if (!options_.background) {
-    const std::string why = WriteOp(bytes() + offset, size, offset);
+    const Expected<void> written = WriteOp(bytes() + offset, size, offset);
     std::lock_guard<std::mutex> lock(mutex_);
-    if (!why.empty()) {
-      if (error_.empty()) error_ = why;
+    if (!written.ok()) {
+      if (!error_) error_ = written.error();
       return Error::kIoError;
     }
     ++counters_.written;
@@ -194,7 +199,7 @@ Status FileFlash::DoErase(uint32_t offset) {
   if (fd_ < 0) return Error::kNotReady;
   {
     std::lock_guard<std::mutex> lock(mutex_);
-    if (!error_.empty()) return Error::kIoError;
+    if (error_) return Error::kIoError;
     ++counters_.erases;
   }
   std::memset(bytes() + offset, 0xFF, options_.sector_size);
@@ -206,7 +211,7 @@ Status FileFlash::DoProgram(uint32_t offset, const uint8_t* data, uint32_t size)
   uint8_t* dst = bytes() + offset;
   {
     std::lock_guard<std::mutex> lock(mutex_);
-    bool refused = !error_.empty();
+    bool refused = error_.has_value();
     for (uint32_t i = 0; i < size && !refused; ++i) {
       refused = (dst[i] & data[i]) != data[i];  // NOR: programming cannot set a bit
     }

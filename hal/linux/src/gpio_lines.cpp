@@ -24,17 +24,18 @@ bool ParseOffset(const std::string& s, unsigned* out) {
 
 }  // namespace
 
-std::string ParseGpioLineSpec(const std::string& text, GpioLineSpec* out) {
+Expected<GpioLineSpec> ParseGpioLineSpec(const std::string& text) {
+  auto bad = [](const std::string& why) { return Fail(Error::kInvalidArgument, why); };
   std::istringstream in(text);
   std::string where;
-  if (!(in >> where)) return "empty line spec (expected CHIP:OFFSET or a line name)";
+  if (!(in >> where)) return bad("empty line spec (expected CHIP:OFFSET or a line name)");
   GpioLineSpec spec;
   spec.used = true;
   const size_t colon = where.rfind(':');
   if (colon != std::string::npos) {
     spec.chip = where.substr(0, colon);
     if (spec.chip.empty() || !ParseOffset(where.substr(colon + 1), &spec.offset)) {
-      return "bad line '" + where + "' (expected CHIP:OFFSET, e.g. gpiochip0:17)";
+      return bad("bad line '" + where + "' (expected CHIP:OFFSET, e.g. gpiochip0:17)");
     }
   } else {
     spec.line_name = where;
@@ -53,15 +54,14 @@ std::string ParseGpioLineSpec(const std::string& text, GpioLineSpec* out) {
     } else if (flag == "bias-disable") {
       bias = Bias::kDisable;
     } else {
-      return "unknown line flag '" + flag +
-             "' (expected active-low, pull-up, pull-down or bias-disable)";
+      return bad("unknown line flag '" + flag +
+                 "' (expected active-low, pull-up, pull-down or bias-disable)");
     }
-    if (have_bias) return "more than one bias flag";
+    if (have_bias) return bad("more than one bias flag");
     have_bias = true;
     spec.bias = bias;
   }
-  *out = spec;
-  return "";
+  return spec;
 }
 
 std::string FormatGpioLineSpec(const GpioLineSpec& spec) {

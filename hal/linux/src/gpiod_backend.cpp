@@ -14,23 +14,23 @@ class GpiodBackend final : public GpioBackend {
  public:
   ~GpiodBackend() override { Release(); }
 
-  std::string Open(const GpioConfig& config) override {
+  Expected<void> Open(const GpioConfig& config) override {
     Release();
     for (int i = 0; i < kInputLineCount; ++i) {
-      const std::string why = Request(config.input[i], config.consumer, false,
-                                      InputLineName(static_cast<InputLine>(i)), &in_[i]);
-      if (!why.empty()) return why;
+      const Expected<void> r = Request(config.input[i], config.consumer, false,
+                                       InputLineName(static_cast<InputLine>(i)), &in_[i]);
+      if (!r.ok()) return r;
     }
     for (int i = 0; i < kOutputLineCount; ++i) {
-      const std::string why = Request(config.output[i], config.consumer, true,
-                                      OutputLineName(static_cast<OutputLine>(i)), &out_[i]);
-      if (!why.empty()) return why;
+      const Expected<void> r = Request(config.output[i], config.consumer, true,
+                                       OutputLineName(static_cast<OutputLine>(i)), &out_[i]);
+      if (!r.ok()) return r;
     }
-    return "";
+    return Expected<void>::Ok();
   }
 
-  std::string ReadInputs(bool* levels) override {
-    std::string why;
+  Expected<void> ReadInputs(bool* levels) override {
+    Expected<void> result = Expected<void>::Ok();
     for (int i = 0; i < kInputLineCount; ++i) {
       if (in_[i].line == nullptr) {
         levels[i] = false;
@@ -38,23 +38,24 @@ class GpiodBackend final : public GpioBackend {
       }
       const int v = gpiod_line_get_value(in_[i].line);
       if (v < 0) {
-        why = std::string("gpio ") + InputLineName(static_cast<InputLine>(i)) +
-              ": read failed: " + std::strerror(errno);
+        result =
+            Fail(Error::kIoError, std::string("gpio ") + InputLineName(static_cast<InputLine>(i)) +
+                                      ": read failed: " + std::strerror(errno));
         continue;
       }
       levels[i] = v != 0;
     }
-    return why;
+    return result;
   }
 
-  std::string WriteOutput(OutputLine line, bool active) override {
+  Expected<void> WriteOutput(OutputLine line, bool active) override {
     const int i = static_cast<int>(line);
-    if (i < 0 || i >= kOutputLineCount || out_[i].line == nullptr) return "";
+    if (i < 0 || i >= kOutputLineCount || out_[i].line == nullptr) return Expected<void>::Ok();
     if (gpiod_line_set_value(out_[i].line, active ? 1 : 0) != 0) {
-      return std::string("gpio ") + OutputLineName(line) +
-             ": write failed: " + std::strerror(errno);
+      return Fail(Error::kIoError, std::string("gpio ") + OutputLineName(line) +
+                                       ": write failed: " + std::strerror(errno));
     }
-    return "";
+    return Expected<void>::Ok();
   }
 
   std::string Describe() const override {
@@ -68,31 +69,33 @@ class GpiodBackend final : public GpioBackend {
     bool found = false;          // line from gpiod_line_find (owns its chip)
   };
 
-  static std::string Request(const GpioLineSpec& spec,
-                             const std::string& consumer,
-                             bool output,
-                             const char* what,
-                             Held* held) {
-    if (!spec.used) return "";
+  static Expected<void> Request(const GpioLineSpec& spec,
+                                const std::string& consumer,
+                                bool output,
+                                const char* what,
+                                Held* held) {
+    if (!spec.used) return Expected<void>::Ok();
     const std::string where = FormatGpioLineSpec(spec);
+    auto fail = [&](Error code, const std::string& why) {
+      return Fail(code, std::string("gpio ") + what + " (" + where + "): " + why);
+    };
     if (spec.chip.empty()) {
       errno = 0;
       held->line = gpiod_line_find(spec.line_name.c_str());
       if (held->line == nullptr) {
-        return std::string("gpio ") + what + " (" + where +
-               "): " + (errno != 0 ? std::strerror(errno) : "no line with this name");
+        return fail(Error::kNotFound, errno != 0 ? std::strerror(errno) : "no line with this name");
       }
       held->found = true;
     } else {
       held->chip = gpiod_chip_open_lookup(spec.chip.c_str());
       if (held->chip == nullptr) {
-        return std::string("gpio ") + what + " (" + where + "): cannot open chip '" + spec.chip +
-               "': " + std::strerror(errno);
+        return fail(Error::kNotFound,
+                    "cannot open chip '" + spec.chip + "': " + std::strerror(errno));
       }
       held->line = gpiod_chip_get_line(held->chip, spec.offset);
       if (held->line == nullptr) {
-        return std::string("gpio ") + what + " (" + where + "): no line " +
-               std::to_string(spec.offset) + " on " + spec.chip + ": " + std::strerror(errno);
+        return fail(Error::kNotFound, "no line " + std::to_string(spec.offset) + " on " +
+                                          spec.chip + ": " + std::strerror(errno));
       }
     }
     int flags = spec.active_low ? GPIOD_LINE_REQUEST_FLAG_ACTIVE_LOW : 0;
@@ -102,12 +105,12 @@ class GpiodBackend final : public GpioBackend {
     const int r = output ? gpiod_line_request_output_flags(held->line, consumer.c_str(), flags, 0)
                          : gpiod_line_request_input_flags(held->line, consumer.c_str(), flags);
     if (r != 0) {
-      const std::string why = std::string("gpio ") + what + " (" + where +
-                              "): request failed: " + std::strerror(errno) +
-                              (errno == EBUSY ? " (line in use: see gpioinfo)" : "");
-      return why;
+      const bool busy = errno == EBUSY;
+      return fail(busy ? Error::kBusy : Error::kIoError,
+                  std::string("request failed: ") + std::strerror(errno) +
+                      (busy ? " (line in use: see gpioinfo)" : ""));
     }
-    return "";
+    return Expected<void>::Ok();
   }
 
   void Release() {

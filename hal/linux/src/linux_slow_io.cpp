@@ -4,10 +4,10 @@
 namespace volcomp::hal::linux_board {
 
 void LinuxSlowIo::Refresh(uint64_t now_ns) {
-  const std::string why = backend_->ReadInputs(raw_);
-  if (!why.empty()) {
+  const Expected<void> read = backend_->ReadInputs(raw_);
+  if (!read.ok()) {
     ++errors_;
-    last_error_ = why;
+    last_failure_ = read.error();
   }
   if (!primed_) {  // the first reading has no history to debounce against
     for (int i = 0; i < kInputLineCount; ++i) stable_[i] = raw_[i];
@@ -39,10 +39,10 @@ void LinuxSlowIo::DoWrite(OutputLine line, bool level) {
   const int i = static_cast<int>(line);
   if (i < 0 || i >= kOutputLineCount) return;
   if (out_written_[i] && out_[i] == level) return;
-  const std::string why = backend_->WriteOutput(line, level);
-  if (!why.empty()) {
+  const Expected<void> written = backend_->WriteOutput(line, level);
+  if (!written.ok()) {
     ++errors_;
-    last_error_ = why;
+    last_failure_ = written.error();
     return;  // retried at the next Write()
   }
   out_[i] = level;

@@ -6,25 +6,28 @@
 
 #include <cerrno>
 #include <cstring>
+#include <string>
 
 namespace volcomp::hal::linux_board {
 
-std::string ShutdownSignal::Open() {
+Expected<void> ShutdownSignal::Open() {
   Close();
   sigset_t set;
   sigemptyset(&set);
   sigaddset(&set, SIGINT);
   sigaddset(&set, SIGTERM);
   sigaddset(&set, SIGHUP);
-  if (pthread_sigmask(SIG_BLOCK, &set, &old_mask_) != 0) return "pthread_sigmask failed";
+  if (pthread_sigmask(SIG_BLOCK, &set, &old_mask_) != 0) {
+    return Fail(Error::kIoError, "pthread_sigmask failed");
+  }
   mask_saved_ = true;
   fd_ = signalfd(-1, &set, SFD_NONBLOCK | SFD_CLOEXEC);
   if (fd_ < 0) {
     const std::string why = std::string("signalfd: ") + std::strerror(errno);
     Close();
-    return why;
+    return Fail(Error::kIoError, why);
   }
-  return "";
+  return Expected<void>::Ok();
 }
 
 void ShutdownSignal::Close() {

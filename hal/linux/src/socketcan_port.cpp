@@ -3,13 +3,33 @@
 
 namespace volcomp::hal::socketcan {
 
-Status SocketCanPort::Open(const std::string& iface, const Options& options) {
+Expected<void> SocketCanPort::Open(const std::string& iface, const Options& options) {
   options_ = options;
   tx_.clear();
   rx_.clear();
   state_ = BusState::kErrorActive;
-  last_error_ = socket_.Open(iface, options.socket);
-  return last_error_.empty() ? Status::Ok() : Status(Error::kIoError);
+  last_failure_.reset();
+  return socket_.Open(iface, options.socket);
+}
+
+Status SocketCanPort::DoSetBitrate(uint32_t bitrate_bps) {
+  bitrate_check_ = BitrateCheck();
+  bitrate_check_.configured_bps = bitrate_bps;
+  if (!socket_.is_open()) return Error::kNotReady;
+  const Expected<uint32_t> rate = ReadCanBitrate(socket_.iface());
+  if (!rate.ok()) {
+    bitrate_check_.note = rate.error().message;
+    return Status::Ok();  // nothing to compare with (see bitrate_check())
+  }
+  bitrate_check_.interface_bps = *rate;
+  if (*rate == bitrate_bps) return Status::Ok();
+  last_failure_ =
+      Failure{Error::kCanBitrateMismatch,
+              "socketcan: " + socket_.iface() + " runs at " + std::to_string(*rate) +
+                  " bit/s, the configuration in force asks for " + std::to_string(bitrate_bps) +
+                  " bit/s (set it with `ip link set " + socket_.iface() + " type can bitrate " +
+                  std::to_string(bitrate_bps) + "`, or store the interface's rate)"};
+  return Error::kCanBitrateMismatch;
 }
 
 void SocketCanPort::Service() {
@@ -23,7 +43,7 @@ void SocketCanPort::Service() {
     const auto r = socket_.Read(&frame, &info, &is_error, &err);
     if (r != SocketCanSocket::IoResult::kOk) {
       if (r == SocketCanSocket::IoResult::kError) {
-        last_error_ = SocketCanErrorText("read", err);
+        last_failure_ = Failure{Error::kIoError, SocketCanErrorText("read", err)};
       }
       return;
     }
@@ -57,7 +77,9 @@ bool SocketCanPort::DoReceive(CanFrame* frame) {
     int err = 0;
     const auto r = socket_.Read(&f, &info, &is_error, &err);
     if (r != SocketCanSocket::IoResult::kOk) {
-      if (r == SocketCanSocket::IoResult::kError) last_error_ = SocketCanErrorText("read", err);
+      if (r == SocketCanSocket::IoResult::kError) {
+        last_failure_ = Failure{Error::kIoError, SocketCanErrorText("read", err)};
+      }
       return false;
     }
     if (is_error) {
@@ -88,7 +110,7 @@ void SocketCanPort::Flush() {
       // A hard error (interface down, ...): drop this frame so one bad state cannot wedge the
       // queue, and keep the reason for diagnostics.
       ++counters_.tx_dropped;
-      last_error_ = SocketCanErrorText("write", err);
+      last_failure_ = Failure{Error::kIoError, SocketCanErrorText("write", err)};
     } else {
       ++counters_.tx_frames;
     }
@@ -98,7 +120,8 @@ void SocketCanPort::Flush() {
 
 void SocketCanPort::OnError(const CanErrorInfo& info) {
   ++counters_.error_frames;
-  last_error_ = "socketcan: " + socket_.iface() + ": " + DescribeError(info);
+  last_failure_ =
+      Failure{Error::kIoError, "socketcan: " + socket_.iface() + ": " + DescribeError(info)};
   if (info.state_changed) state_ = info.state;
   if (!info.bus_off) return;
   ++counters_.bus_off;
@@ -108,11 +131,11 @@ void SocketCanPort::OnError(const CanErrorInfo& info) {
     return;
   }
   last_restart_ = now;
-  const std::string why = RequestCanRestart(socket_.iface());
-  if (why.empty()) {
+  const Expected<void> restart = RequestCanRestart(socket_.iface());
+  if (restart.ok()) {
     ++counters_.restarts;
   } else {
-    last_error_ += "; restart failed: " + why;
+    last_failure_->message += "; restart failed: " + restart.error().message;
   }
 }
 

@@ -151,18 +151,18 @@ void SocketCanSocket::Close() {
   fd_ = -1;
 }
 
-std::string SocketCanSocket::Open(const std::string& iface, const Options& options) {
+Expected<void> SocketCanSocket::Open(const std::string& iface, const Options& options) {
   Close();
   if (iface.empty() || iface.size() >= IFNAMSIZ) {
-    return "socketcan: bad interface name '" + iface + "' (1.." + std::to_string(IFNAMSIZ - 1) +
-           " characters)";
+    return Fail(Error::kInvalidArgument, "socketcan: bad interface name '" + iface + "' (1.." +
+                                             std::to_string(IFNAMSIZ - 1) + " characters)");
   }
   const int fd = ::socket(PF_CAN, SOCK_RAW | SOCK_NONBLOCK | SOCK_CLOEXEC, CAN_RAW);
-  if (fd < 0) return SocketCanErrorText("socket(AF_CAN)", errno);
+  if (fd < 0) return Fail(Error::kIoError, SocketCanErrorText("socket(AF_CAN)", errno));
   auto fail = [fd](const std::string& what) {
     const int err = errno;
     ::close(fd);
-    return SocketCanErrorText(what, err);
+    return Fail(Error::kIoError, SocketCanErrorText(what, err));
   };
   const unsigned index = ::if_nametoindex(iface.c_str());
   if (index == 0) return fail("interface '" + iface + "'");
@@ -200,7 +200,7 @@ std::string SocketCanSocket::Open(const std::string& iface, const Options& optio
   }
   fd_ = fd;
   iface_ = iface;
-  return "";
+  return Expected<void>::Ok();
 }
 
 SocketCanSocket::IoResult SocketCanSocket::Write(const CanFrame& frame, int* err) {

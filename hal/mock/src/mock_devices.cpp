@@ -1,4 +1,4 @@
-// Mock slow I/O, flash and CAN.
+// Mock slow I/O, flash, CAN and tick timer.
 #include "volcomp/hal/mock/mock_devices.hpp"
 
 #include <cstring>
@@ -83,6 +83,32 @@ bool MockCan::DoReceive(CanFrame* frame) {
   *frame = rx_.front();
   rx_.pop_front();
   return true;
+}
+
+Status MockCan::DoSetBitrate(uint32_t bitrate_bps) {
+  if (!refuse_.ok()) return refuse_;
+  bitrate_bps_ = bitrate_bps;
+  ++bitrate_changes_;
+  return Status::Ok();
+}
+
+Status MockTickTimer::DoSetRate(uint32_t tick_hz) {
+  if (running_) return Error::kBusy;
+  if (refuse_above_hz_ != 0 && tick_hz > refuse_above_hz_) return Error::kConfigInvalid;
+  rate_hz_ = tick_hz;
+  return Status::Ok();
+}
+
+Status MockTickTimer::DoStart() {
+  if (rate_hz_ == 0) return Error::kNotReady;
+  running_ = true;
+  ++starts_;
+  return Status::Ok();
+}
+
+void MockTickTimer::DoStop() {
+  if (running_) ++stops_;
+  running_ = false;
 }
 
 }  // namespace volcomp::hal::mock

@@ -3,6 +3,15 @@
 
 namespace volcomp::hal::mock {
 
+namespace {
+bool SameDrive(const AxisConfig& a, const AxisConfig& b) {
+  const DriveTiming &x = a.drive, &y = b.drive;
+  return a.output_format == b.output_format && x.pulse_width_ns == y.pulse_width_ns &&
+         x.step_space_ns == y.step_space_ns && x.dir_setup_ns == y.dir_setup_ns &&
+         x.dir_hold_ns == y.dir_hold_ns && x.max_rate_hz == y.max_rate_hz;
+}
+}  // namespace
+
 MockStepIo::MockStepIo(const BoardConfig& config, Timeline* timeline)
     : config_(config), timeline_(timeline) {
   for (uint8_t a = 0; a < config.axis_count; ++a) {
@@ -13,6 +22,32 @@ MockStepIo::MockStepIo(const BoardConfig& config, Timeline* timeline)
     line_b_[a] = ax.output_format == PulseFormat::kStepDir;
   }
   last_plans_.resize(config.axis_count);
+}
+
+Status MockStepIo::Configure(const BoardConfig& config) {
+  if (config.axis_count > table::kMaxAxes || config.pulse_clock_hz == 0) {
+    return Error::kConfigInvalid;
+  }
+  for (uint8_t a = 0; a < config.axis_count; ++a) {
+    const AxisConfig& ax = config.axis[a];
+    counter_mask_[a] =
+        ax.input_counter_bits >= 32 ? 0xFFFFFFFFu : ((1u << ax.input_counter_bits) - 1u);
+    counters_[a] &= counter_mask_[a];
+    if (a < drives_.size() && a < config_.axis_count && SameDrive(ax, config_.axis[a])) continue;
+    auto drive = std::make_unique<DriveModel>(ax.output_format, ax.drive);
+    if (a < drives_.size()) {
+      drives_[a] = std::move(drive);
+    } else {
+      drives_.push_back(std::move(drive));
+    }
+    line_a_[a] = false;
+    line_b_[a] = ax.output_format == PulseFormat::kStepDir;
+    quad_phase_[a] = 0;
+  }
+  config_ = config;
+  last_plans_.assign(config.axis_count, PulsePlan());
+  ++configures_;
+  return Status::Ok();
 }
 
 void MockStepIo::ReadCounters(uint32_t* counters) const {

@@ -58,6 +58,53 @@ Result<CanBitTiming> ComputeCanBitTiming(uint32_t kernel_hz,
   return best;
 }
 
+Result<TickTimerSettings> ComputeTickTimer(uint32_t timer_clock_hz, uint32_t tick_hz) {
+  if (tick_hz == 0 || timer_clock_hz % tick_hz != 0) return Error::kConfigInvalid;
+  const uint32_t clocks = timer_clock_hz / tick_hz;
+  // The smallest divider that brings the period within 16 bits and divides it exactly.
+  for (uint32_t div = (clocks + 0xFFFFu) / 0x10000u; div <= 0x10000u; ++div) {
+    if (clocks % div != 0) continue;
+    if (clocks / div < 2) break;  // ARR = 0 stops the counter
+    TickTimerSettings t;
+    t.psc = div - 1u;
+    t.arr = clocks / div - 1u;
+    return t;
+  }
+  return Error::kConfigInvalid;
+}
+
+BoardConfig ReferenceBoardConfig() {
+  BoardConfig c = DefaultBoardConfig();
+  c.pulse_clock_hz = kSysclkHz;
+  for (uint8_t a = 0; a < kStepAxes; ++a) c.axis[a].input_counter_bits = kInputCounterBits[a];
+  return c;
+}
+
+Result<StepIoSetup> PlanStepIo(const BoardConfig& config, uint32_t timer_clock_hz) {
+  if (config.axis_count > kStepAxes || config.pulse_clock_hz != timer_clock_hz ||
+      config.tick_hz == 0 || timer_clock_hz % config.tick_hz != 0) {
+    return Error::kConfigInvalid;
+  }
+  StepIoSetup s;
+  s.axes = config.axis_count;
+  s.tick_clocks = timer_clock_hz / config.tick_hz;
+  for (uint8_t a = 0; a < s.axes; ++a) {
+    const AxisConfig& ax = config.axis[a];
+    if (ax.input_counter_bits != kInputCounterBits[a]) return Error::kConfigInvalid;
+    if (ax.output_format == PulseFormat::kQuadrature) return Error::kConfigInvalid;
+    const Result<PulseTiming> t = PulseTiming::FromDrive(ax, config.tick_hz, timer_clock_hz);
+    if (!t.ok()) return t.status();
+    // The longest first period of a plan: a rise just before the tick ends plus the pulse width.
+    if (uint64_t{t->tick} + t->width > (uint64_t{1} << kOutputTimerBits)) {
+      return Error::kConfigInvalid;
+    }
+    s.input_format[a] = ax.input_format;
+    s.invert_input_dir[a] = ax.invert_input_dir;
+    s.cw_ccw_output[a] = ax.output_format == PulseFormat::kCwCcw;
+  }
+  return s;
+}
+
 Result<PulseTimerSettings> PlanToTimer(const PulsePlan& plan,
                                        uint32_t tick,
                                        uint32_t counter_bits) {

@@ -17,12 +17,12 @@ struct InputTimer {
   Pin ti1;  // direction (step/dir), CCW (cw/ccw) or A (quadrature)
   Pin ti2;  // step (step/dir), CW (cw/ccw) or B (quadrature)
   uint8_t af;
-  uint8_t bits;
 };
+// Counter widths: kInputCounterBits (config_math.hpp).
 constexpr InputTimer kInput[StepIo::kAxes] = {
-    {kTim2Base, {0, 15}, {1, 3}, 1, 32},  // X: TIM2 CH1 PA15, CH2 PB3 (AF1), 32-bit
-    {kTim5Base, {0, 0}, {0, 1}, 2, 32},   // Y: TIM5 CH1 PA0, CH2 PA1 (AF2), 32-bit
-    {kTim3Base, {0, 6}, {0, 7}, 2, 16},   // Z: TIM3 CH1 PA6, CH2 PA7 (AF2), 16-bit
+    {kTim2Base, {0, 15}, {1, 3}, 1},  // X: TIM2 CH1 PA15, CH2 PB3 (AF1), 32-bit
+    {kTim5Base, {0, 0}, {0, 1}, 2},   // Y: TIM5 CH1 PA0, CH2 PA1 (AF2), 32-bit
+    {kTim3Base, {0, 6}, {0, 7}, 2},   // Z: TIM3 CH1 PA6, CH2 PA7 (AF2), 16-bit
 };
 
 struct OutputTimer {
@@ -122,48 +122,68 @@ void ConfigureOutputPin(Pin p, bool level) {
 
 // ---- Tick timer
 // -------------------------------------------------------------------------------------
-Status StartTickTimer(uint32_t tick_hz, uint32_t irq_priority) {
-  if (tick_hz == 0 || kSysclkHz % tick_hz != 0) return Error::kConfigInvalid;
+namespace {
+constexpr uint32_t kTim6Irq = 54;  // TIM6_DAC (RM0440 Table 97, vector table)
+}  // namespace
+
+Status StmTickTimer::DoSetRate(uint32_t tick_hz) {
+  if (running_) return Error::kBusy;
+  const Result<TickTimerSettings> t = ComputeTickTimer(kSysclkHz, tick_hz);
+  if (!t.ok()) return t.status();
   Reg(kRccBase, rcc::kApb1Enr1) |= rcc::kTim6En;
-  Reg(kTim6Base, tim::kPsc) = 0;
-  Reg(kTim6Base, tim::kArr) = kSysclkHz / tick_hz - 1u;
+  Reg(kTim6Base, tim::kCr1) = 0;
+  Reg(kTim6Base, tim::kPsc) = t->psc;
+  Reg(kTim6Base, tim::kArr) = t->arr;
   Reg(kTim6Base, tim::kCr2) = tim::kCr2MmsUpdate;
+  rate_hz_ = tick_hz;
+  return Status::Ok();
+}
+
+Status StmTickTimer::DoStart() {
+  if (rate_hz_ == 0) return Error::kNotReady;
+  // UG loads PSC/ARR; its update flag is cleared before the interrupt is enabled.
   Reg(kTim6Base, tim::kEgr) = tim::kEgrUg;
   Reg(kTim6Base, tim::kSr) = 0;
   Reg(kTim6Base, tim::kDier) = tim::kDierUie;
-  constexpr uint32_t kTim6Irq = 54;  // TIM6_DAC (RM0440 Table 97, vector table)
   auto* ipr = reinterpret_cast<volatile uint8_t*>(scb::kNvicIpr);
-  ipr[kTim6Irq] = static_cast<uint8_t>(irq_priority << 4);
+  ipr[kTim6Irq] = static_cast<uint8_t>(irq_priority_ << 4);
   Reg(scb::kNvicIser, 4u * (kTim6Irq / 32u)) = 1u << (kTim6Irq % 32u);
   Reg(kTim6Base, tim::kCr1) = tim::kCr1Cen;
+  running_ = true;
   return Status::Ok();
+}
+
+void StmTickTimer::DoStop() {
+  Reg(kTim6Base, tim::kCr1) = 0;
+  Reg(kTim6Base, tim::kDier) = 0;
+  Reg(kTim6Base, tim::kSr) = 0;
+  Reg(scb::kNvicIcpr, 4u * (kTim6Irq / 32u)) = 1u << (kTim6Irq % 32u);  // drop a pending tick
+  __asm volatile("dsb\n isb" ::: "memory");  // no tick ISR begins after this returns
+  running_ = false;
 }
 
 void TickTimerAcknowledge() { Reg(kTim6Base, tim::kSr) = ~tim::kSrUif; }
 
 // ---- Step I/O
 // -------------------------------------------------------------------------------------
-Status StepIo::Init(const BoardConfig& config) {
-  if (config.pulse_clock_hz != kSysclkHz || config.tick_hz == 0) return Error::kConfigInvalid;
-  axes_ = config.axis_count < kAxes ? config.axis_count : kAxes;
-  tick_clocks_ = kSysclkHz / config.tick_hz;
+Status StepIo::Configure(const BoardConfig& config) {
+  const Result<StepIoSetup> setup = PlanStepIo(config, kSysclkHz);
+  if (!setup.ok()) return setup.status();
+  axes_ = setup->axes;
+  tick_clocks_ = setup->tick_clocks;
   Reg(kRccBase, rcc::kApb1Enr1) |= rcc::kTim2En | rcc::kTim3En | rcc::kTim5En;
   Reg(kRccBase, rcc::kApb2Enr) |= rcc::kTim1En | rcc::kTim8En | rcc::kTim15En;
   EnableGpioClocks();
   for (uint8_t a = 0; a < axes_; ++a) {
-    const AxisConfig& ax = config.axis[a];
     const InputTimer& in = kInput[a];
-    if (ax.input_counter_bits != in.bits) return Error::kConfigInvalid;
-    if (ax.output_format == PulseFormat::kQuadrature)
-      return Error::kConfigInvalid;  // quadrature output: not on this board
     uint32_t sms = tim::kSmsClockDirectionX1;
-    if (ax.input_format == PulseFormat::kCwCcw) sms = tim::kSmsDirectionalClockX1;
-    if (ax.input_format == PulseFormat::kQuadrature) sms = tim::kSmsQuadratureX4;
+    if (setup->input_format[a] == PulseFormat::kCwCcw) sms = tim::kSmsDirectionalClockX1;
+    if (setup->input_format[a] == PulseFormat::kQuadrature) sms = tim::kSmsQuadratureX4;
     Reg(in.base, tim::kCr1) = 0;
     Reg(in.base, tim::kCcmr1) = tim::IcDirect(0, 3) | tim::IcDirect(1, 3);  // filter: 8 clocks
     // Clock on the rising STEP edge; the direction polarity selects which level counts up.
-    Reg(in.base, tim::kCcer) = ax.invert_input_dir ? tim::CcP(1) : 0u;
-    Reg(in.base, tim::kArr) = in.bits == 32 ? 0xFFFFFFFFu : 0xFFFFu;
+    Reg(in.base, tim::kCcer) = setup->invert_input_dir[a] ? tim::CcP(1) : 0u;
+    Reg(in.base, tim::kArr) = kInputCounterBits[a] == 32 ? 0xFFFFFFFFu : 0xFFFFu;
     Reg(in.base, tim::kSmcr) = tim::Sms(sms);
     Reg(in.base, tim::kCnt) = 0;
     Reg(in.base, tim::kCr1) = tim::kCr1Cen;
@@ -171,7 +191,7 @@ Status StepIo::Init(const BoardConfig& config) {
     ConfigureAfPin(in.ti2, in.af);
 
     const OutputTimer& out = kOutput[a];
-    cw_ccw_[a] = ax.output_format == PulseFormat::kCwCcw;
+    cw_ccw_[a] = setup->cw_ccw_output[a];
     Reg(out.base, tim::kCr1) = tim::kCr1Opm | tim::kCr1Arpe;
     Reg(out.base, tim::kPsc) = 0;
     Reg(out.base, tim::kRcr) = 0;
@@ -193,7 +213,7 @@ void StepIo::ReadCounters(uint32_t* counters) {
 
 void StepIo::Apply(const PulsePlan* plans) {
   for (uint8_t a = 0; a < axes_; ++a) {
-    const Result<PulseTimerSettings> s = PlanToTimer(plans[a], tick_clocks_, 16);
+    const Result<PulseTimerSettings> s = PlanToTimer(plans[a], tick_clocks_, kOutputTimerBits);
     if (!s.ok()) {
       ++rejected_;
       continue;
@@ -307,7 +327,7 @@ volatile uint32_t* StmFdcan::RamWords(uint32_t byte_offset) const {
 }
 
 Status StmFdcan::Init(uint32_t bitrate) {
-  const Result<CanBitTiming> bt = ComputeCanBitTiming(kSysclkHz, bitrate, 875);
+  const Result<CanBitTiming> bt = ComputeCanBitTiming(kSysclkHz, bitrate, kCanSamplePointPermille);
   if (!bt.ok()) return bt.status();
   const uintptr_t base = layout_.registers;
   // Kernel clock selection and bus clock enable are common to all instances (CCIPR, APB1ENR1).

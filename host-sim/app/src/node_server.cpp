@@ -52,6 +52,9 @@ NodeOptions Parse(const std::vector<std::string>& a) {
       o.iface = value(i);
     } else if (a[i] == "--bitrate") {
       o.bitrate = static_cast<uint32_t>(std::stoul(value(i)));
+      if (o.bitrate % 1000 != 0 || o.bitrate < 10000 || o.bitrate > 1000000) {
+        throw std::runtime_error("--bitrate must be a whole kbit/s from 10000 to 1000000");
+      }
     } else if (a[i] == "--node") {
       const unsigned long n = std::stoul(value(i));
       if (n < 1 || n > 127) throw std::runtime_error("--node must be 1..127");
@@ -78,6 +81,7 @@ int RunNodeServer(const std::vector<std::string>& args) {
   SimBus bus(o.bitrate);
   SimulatedBoardOptions bo;
   bo.settings.node_id = o.node;
+  bo.settings.bitrate_kbit = static_cast<uint16_t>(o.bitrate / 1000);  // factory default
   bo.flash_dir = o.flash_dir;
   bo.write_enable_input = o.write_enable;
   SimulatedBoard board(bus, bo);
@@ -104,6 +108,21 @@ int RunNodeServer(const std::vector<std::string>& args) {
       break;
   }
   if (!board.Start().ok()) throw std::runtime_error("the firmware did not start (configuration)");
+  const Status config = board.app().config_status();
+  if (!config.ok()) {
+    std::fprintf(stderr,
+                 "volcomp-sim node: the stored settings were refused (%s): running the "
+                 "factory defaults\n",
+                 ErrorText(config.error()));
+  }
+  const uint32_t board_bps = uint32_t{board.app().settings().bitrate_kbit} * 1000u;
+  if (board_bps != o.bitrate) {
+    std::fprintf(stderr,
+                 "volcomp-sim node: warning: the board's stored bit rate is %u kbit/s, the bus "
+                 "runs at %u kbit/s: the node is off the bus (restore with 0x1011 needs the "
+                 "bus at %u kbit/s: --bitrate %u)\n",
+                 board_bps / 1000u, o.bitrate / 1000u, board_bps / 1000u, board_bps);
+  }
   std::signal(SIGINT, OnSignal);
   std::signal(SIGTERM, OnSignal);
   std::printf("volcomp-sim node %u on a simulated %.0f kbit/s bus, clients: %s\n", o.node,

@@ -16,9 +16,8 @@ SimulatedBoard::SimulatedBoard(SimBus& bus, const SimulatedBoardOptions& options
       can_(endpoint_, 64) {
   step_io_ = std::make_unique<hal::mock::MockStepIo>(options.settings.board, nullptr);
   tick_io_ = std::make_unique<TickIo>(step_io_.get());
-  app_ = std::make_unique<App>(
-      App::Devices{tick_io_.get(), &io_, &table_flash_, &settings_flash_, &can_, &clock_});
-  tick_ns_ = 1000000000ull / options.settings.board.tick_hz;
+  app_ = std::make_unique<App>(App::Devices{tick_io_.get(), &io_, &table_flash_, &settings_flash_,
+                                            &can_, &clock_, &tick_timer_});
 }
 
 SimulatedBoard::~SimulatedBoard() = default;
@@ -55,9 +54,20 @@ Status SimulatedBoard::Start() {
   firmware::AppOptions app;
   app.identity.hardware_version = "simulator";
   const Status s = app_->Start(options_.settings, app);
-  next_tick_ns_ = now_ns_;
   next_poll_ns_ = now_ns_;
+  FollowTickTimer();
   return s;
+}
+
+void SimulatedBoard::FollowTickTimer() {
+  if (!tick_timer_.running()) {
+    next_tick_ns_ = UINT64_MAX;
+    return;
+  }
+  if (tick_timer_.starts() == timer_starts_seen_) return;
+  timer_starts_seen_ = tick_timer_.starts();
+  tick_ns_ = 1000000000ull / tick_timer_.rate_hz();
+  next_tick_ns_ = now_ns_;  // the first tick at the start, the next one a period later
 }
 
 uint64_t SimulatedBoard::NextEventTime() const {
@@ -75,8 +85,9 @@ void SimulatedBoard::AdvanceTo(uint64_t t_ns) {
     } else {
       now_ns_ = next_poll_ns_;
       clock_.Set(now_ns_);
-      app_->Poll();
+      app_->Poll();  // an NMT reset node restarts the tick timer here
       next_poll_ns_ += options_.poll_period_ns;
+      FollowTickTimer();
     }
   }
   now_ns_ = t_ns;

@@ -33,9 +33,18 @@ uint64_t ArbitrationKey(const CanFrame& f) {
 }
 
 bool Endpoint::Send(const CanFrame& frame) {
-  if (!frame.valid()) return false;
+  if (!frame.valid() || bus_off_) return false;
   tx_.push_back({frame, false});
   return true;
+}
+
+void Endpoint::set_bitrate(uint32_t bitrate_bps) {
+  if (bitrate_bps == bitrate_) return;
+  bitrate_ = bitrate_bps;
+  tx_.clear();
+  rx_.clear();
+  tx_errors_ = 0;
+  bus_off_ = false;
 }
 
 bool Endpoint::Receive(CanFrame* frame) {
@@ -120,11 +129,18 @@ void SimBus::StartNext() {
   t.record.sender = winner->index_;
   t.record.start_ns = now_;
   t.record.bits = CanFrameBits(queued.frame);
-  if (fault_hook_ && !queued.retransmission) t.fault = fault_hook_(queued.frame, *winner);
+  t.wrong_rate = !AtBusRate(*winner);
+  if (fault_hook_ && !queued.retransmission && !t.wrong_rate) {
+    t.fault = fault_hook_(queued.frame, *winner);
+  }
   t.record.fault = t.fault.action;
   uint64_t bits = t.record.bits;
   uint64_t eof_bits = bits - 3;
-  if (t.fault.action == FaultAction::kDestroy) {
+  if (t.wrong_rate) {
+    // The receivers see a bit error right after SOF: 6-bit error flag, 8-bit delimiter.
+    eof_bits = 1 + 6 + 8;
+    bits = eof_bits + 3;
+  } else if (t.fault.action == FaultAction::kDestroy) {
     // Error detected at the CRC delimiter (bits - 12 into the frame), then a 6-bit error flag,
     // 8-bit error delimiter and the 3-bit intermission.
     eof_bits = bits - 12 + 6 + 8;
@@ -142,6 +158,18 @@ void SimBus::Deliver() {
   Transmission& t = *current_;
   t.delivered = true;
   Endpoint& sender = *endpoints_[t.record.sender];
+  if (t.wrong_rate) {
+    ++stats_.bitrate_errors;
+    ++sender.stats_.rate_errors;
+    sender.tx_errors_ += 8;
+    if (sender.tx_errors_ >= 256) {
+      sender.bus_off_ = true;
+      sender.tx_.clear();
+    } else {
+      sender.tx_.push_front({t.record.frame, false});  // automatic retransmission
+    }
+    return;
+  }
   const CanFrame* to_deliver = &t.record.frame;
   switch (t.fault.action) {
     case FaultAction::kDestroy:
@@ -169,6 +197,10 @@ void SimBus::Deliver() {
   for (size_t i = 0; i < endpoints_.size(); ++i) {
     if (i == t.record.sender) continue;
     Endpoint& ep = *endpoints_[i];
+    if (!AtBusRate(ep)) {
+      ++ep.stats_.rate_errors;
+      continue;
+    }
     ++ep.stats_.received;
     if (ep.on_receive_) {
       ep.on_receive_(frame, now_);

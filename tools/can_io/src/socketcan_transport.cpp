@@ -13,8 +13,8 @@ using Clock = std::chrono::steady_clock;
 
 SocketCanTransport::SocketCanTransport(const std::string& iface, const SocketCanOptions& options)
     : options_(options) {
-  const std::string error = socket_.Open(iface, options.socket);
-  if (!error.empty()) throw std::runtime_error(error);
+  const Expected<void> opened = socket_.Open(iface, options.socket);
+  if (!opened.ok()) throw std::runtime_error(opened.error().message);
 }
 
 void SocketCanTransport::Send(const CanFrame& frame) {
@@ -95,10 +95,11 @@ void SocketCanTransport::OnError(const CanErrorInfo& info) {
   }
   events_.push_back({kind, text});
   if (info.bus_off && options_.restart_on_bus_off) {
-    const std::string why = hal::socketcan::RequestCanRestart(socket_.iface());
+    const Expected<void> restart = hal::socketcan::RequestCanRestart(socket_.iface());
     events_.push_back(
         {BusEvent::Kind::kBusOff,
-         description() + (why.empty() ? ": restart requested" : ": restart failed: " + why)});
+         description() + (restart.ok() ? ": restart requested"
+                                       : ": restart failed: " + restart.error().message)});
   }
 }
 

@@ -210,21 +210,39 @@ std::string DescribeModel(const Model& m) {
   return s;
 }
 
-int RunGridBuild(GridCommand& command,
-                 const InverseMap& inverse,
-                 const ForwardMap* forward,
-                 const std::map<std::string, std::string>& info,
-                 std::ostream& out) {
-  GridBuildResult r;
+namespace {
+
+// The grid, or the builder's refusal as the command line's error: a lattice that cannot be laid
+// out is a usage error, data the checks refuse an input error (naming the option that moves the
+// bound when the correction bound refused).
+GridBuildResult BuildGrid(const GridBuildOptions& options,
+                          const InverseMap& inverse,
+                          const ForwardMap* forward) {
   try {
-    r = BuildCorrectionGrid(command.grid, inverse, forward);
+    return BuildCorrectionGrid(options, inverse, forward);
   } catch (const std::invalid_argument& e) {
     throw UsageError(e.what());
+  } catch (const GridBuildError& e) {
+    const bool bound = e.kind() == GridRefusal::kCorrectionBound;
+    throw InputError(std::string(e.what()) + (bound ? " (--max-correction-um)" : ""));
   } catch (const std::runtime_error& e) {
-    throw InputError(
-        std::string(e.what()) +
-        (std::string(e.what()).find("bound") != std::string::npos ? " (--max-correction-um)" : ""));
+    throw InputError(e.what());
   }
+}
+
+// What went into the image file, for the report.
+struct WrittenImage {
+  std::size_t bytes = 0;
+  uint8_t frac_bits = 0;  // 0 for float32
+  const char* element = "";
+  std::array<double, 3> lsb_um = {0, 0, 0};  // 0 for float32
+};
+
+// Completes the image request from the grid (corrections, INFO entries, fraction bits) and writes
+// the image file.
+WrittenImage WriteGridImage(GridCommand& command,
+                            const GridBuildResult& r,
+                            const std::map<std::string, std::string>& info) {
   image::ImageRequest& req = command.request;
   req.grid = ToGridCorrections(r.grid, req.axes);
   for (const auto& [k, v] : info) req.info.emplace(k, v);
@@ -238,80 +256,99 @@ int RunGridBuild(GridCommand& command,
   if (!req.frac_bits && req.element != table::ElementType::kFloat32) {
     req.frac_bits = image::ChooseFracBits(req);
   }
-  const uint8_t frac = req.element == table::ElementType::kFloat32 ? 0 : *req.frac_bits;
+  WrittenImage w;
+  w.frac_bits = req.element == table::ElementType::kFloat32 ? 0 : *req.frac_bits;
   const std::vector<uint8_t> bytes = image::BuildImage(req);
   image::WriteFileBytes(command.output, bytes);
-
-  const char* element = req.element == table::ElementType::kInt16   ? "int16"
-                        : req.element == table::ElementType::kInt32 ? "int32"
-                                                                    : "float32";
-  std::array<double, 3> lsb_um;
+  w.bytes = bytes.size();
+  w.element = req.element == table::ElementType::kInt16   ? "int16"
+              : req.element == table::ElementType::kInt32 ? "int32"
+                                                          : "float32";
   for (std::size_t a = 0; a < 3; ++a) {
-    lsb_um[a] = req.element == table::ElementType::kFloat32 ? 0.0 : LsbUm(req.axes[a], frac);
+    w.lsb_um[a] =
+        req.element == table::ElementType::kFloat32 ? 0.0 : LsbUm(req.axes[a], w.frac_bits);
   }
-  if (command.json) {
-    tools::JsonWriter w(out);
+  return w;
+}
+
+// Everything a report shows.
+struct GridReport {
+  const GridCommand& command;
+  const GridBuildResult& r;
+  bool checked_inverse;  // a forward map checked the inverse at the nodes
+  const std::map<std::string, std::string>& info;
+  const WrittenImage& img;
+};
+
+void ReportGridJson(const GridReport& report, std::ostream& out) {
+  const auto& [command, r, checked_inverse, info, img] = report;
+  const GridSpec& g = r.grid.axes;
+  tools::JsonWriter w(out);
+  w.begin_object();
+  w.key("image").value(command.output);
+  w.key("bytes").value(static_cast<uint64_t>(img.bytes));
+  w.key("source").begin_object();
+  for (const auto& [k, v] : info) w.key(k).value(v);
+  w.end_object();
+  w.key("lattice").begin_array();
+  for (std::size_t a = 0; a < 3; ++a) {
     w.begin_object();
-    w.key("image").value(command.output);
-    w.key("bytes").value(static_cast<uint64_t>(bytes.size()));
-    w.key("source").begin_object();
-    for (const auto& [k, v] : info) w.key(k).value(v);
+    w.key("axis").value(std::string(1, "XYZ"[a]));
+    w.key("origin_mm").value(g[a].origin_mm);
+    w.key("spacing_mm").value(g[a].spacing_mm);
+    w.key("nodes").value(g[a].nodes);
+    w.key("spacing_steps").value(command.request.grid->lattice[a].spacing_steps);
     w.end_object();
-    w.key("lattice").begin_array();
-    for (std::size_t a = 0; a < 3; ++a) {
-      w.begin_object();
-      w.key("axis").value(std::string(1, "XYZ"[a]));
-      w.key("origin_mm").value(g[a].origin_mm);
-      w.key("spacing_mm").value(g[a].spacing_mm);
-      w.key("nodes").value(g[a].nodes);
-      w.key("spacing_steps").value(req.grid->lattice[a].spacing_steps);
-      w.end_object();
-    }
-    w.end_array();
-    w.key("max_correction_um").value(r.stats.max_correction_um);
-    w.key("max_correction_at_mm").begin_array();
-    for (int a = 0; a < 3; ++a) w.value(r.stats.max_correction_at_mm[a]);
-    w.end_array();
-    if (forward != nullptr) w.key("max_inverse_residual_um").value(r.stats.max_residual_um);
-    w.key("interpolation").begin_object();
-    w.key("max_um").value(r.interpolation.max_um);
-    w.key("rms_um").value(r.interpolation.rms_um);
-    w.key("samples").value(static_cast<uint64_t>(r.interpolation.samples));
-    w.key("worst_at_mm").begin_array();
-    for (int a = 0; a < 3; ++a) w.value(r.interpolation.worst_at_mm[a]);
-    w.end_array();
-    w.end_object();
-    w.key("spacings_tried").begin_array();
-    for (const auto& t : r.tried) {
-      w.begin_object();
-      w.key("spacing_mm").begin_array();
-      for (double h : t.first) w.value(h);
-      w.end_array();
-      w.key("max_um").value(t.second);
-      w.end_object();
-    }
-    w.end_array();
-    w.key("element").value(element);
-    w.key("frac_bits").value(static_cast<unsigned>(frac));
-    w.key("lsb_um").begin_array();
-    for (double l : lsb_um) w.value(l);
-    w.end_array();
-    w.end_object();
-    out << "\n";
-    return 0;
   }
+  w.end_array();
+  w.key("max_correction_um").value(r.stats.max_correction_um);
+  w.key("max_correction_at_mm").begin_array();
+  for (int a = 0; a < 3; ++a) w.value(r.stats.max_correction_at_mm[a]);
+  w.end_array();
+  if (checked_inverse) w.key("max_inverse_residual_um").value(r.stats.max_residual_um);
+  w.key("interpolation").begin_object();
+  w.key("max_um").value(r.interpolation.max_um);
+  w.key("rms_um").value(r.interpolation.rms_um);
+  w.key("samples").value(static_cast<uint64_t>(r.interpolation.samples));
+  w.key("worst_at_mm").begin_array();
+  for (int a = 0; a < 3; ++a) w.value(r.interpolation.worst_at_mm[a]);
+  w.end_array();
+  w.end_object();
+  w.key("spacings_tried").begin_array();
+  for (const auto& t : r.tried) {
+    w.begin_object();
+    w.key("spacing_mm").begin_array();
+    for (double h : t.first) w.value(h);
+    w.end_array();
+    w.key("max_um").value(t.second);
+    w.end_object();
+  }
+  w.end_array();
+  w.key("element").value(img.element);
+  w.key("frac_bits").value(static_cast<unsigned>(img.frac_bits));
+  w.key("lsb_um").begin_array();
+  for (double l : img.lsb_um) w.value(l);
+  w.end_array();
+  w.end_object();
+  out << "\n";
+}
+
+void ReportGridText(const GridReport& report, std::ostream& out) {
+  const auto& [command, r, checked_inverse, info, img] = report;
+  const GridSpec& g = r.grid.axes;
   for (const auto& [k, v] : info) out << "  " << k << ": " << v << "\n";
   for (std::size_t a = 0; a < 3; ++a) {
     out << "  lattice "
         << "XYZ"[a] << ": " << Num(g[a].origin_mm) << " .. " << Num(g[a].end_mm())
-        << " mm, spacing " << Num(g[a].spacing_mm) << " mm (" << req.grid->lattice[a].spacing_steps
-        << " steps), " << g[a].nodes << " nodes\n";
+        << " mm, spacing " << Num(g[a].spacing_mm) << " mm ("
+        << command.request.grid->lattice[a].spacing_steps << " steps), " << g[a].nodes
+        << " nodes\n";
   }
   out << "  largest correction: " << Fixed(r.stats.max_correction_um, 3) << " µm at ("
       << Num(r.stats.max_correction_at_mm.x) << ", " << Num(r.stats.max_correction_at_mm.y) << ", "
       << Num(r.stats.max_correction_at_mm.z) << ") mm (bound "
       << Num(command.grid.max_correction_um) << " µm)\n";
-  if (forward != nullptr) {
+  if (checked_inverse) {
     out << "  inverse at the nodes: worst residual " << Num(r.stats.max_residual_um, 3)
         << " µm (limit " << Num(command.grid.max_residual_um) << " µm)\n";
   }
@@ -328,12 +365,30 @@ int RunGridBuild(GridCommand& command,
       << " samples (worst at " << Num(r.interpolation.worst_at_mm.x) << ", "
       << Num(r.interpolation.worst_at_mm.y) << ", " << Num(r.interpolation.worst_at_mm.z)
       << " mm)\n";
-  out << "  elements: " << element;
-  if (req.element != table::ElementType::kFloat32) {
-    out << ", " << static_cast<unsigned>(frac) << " fraction bits, LSB " << Num(lsb_um[0], 3) << "/"
-        << Num(lsb_um[1], 3) << "/" << Num(lsb_um[2], 3) << " µm";
+  out << "  elements: " << img.element;
+  if (command.request.element != table::ElementType::kFloat32) {
+    out << ", " << static_cast<unsigned>(img.frac_bits) << " fraction bits, LSB "
+        << Num(img.lsb_um[0], 3) << "/" << Num(img.lsb_um[1], 3) << "/" << Num(img.lsb_um[2], 3)
+        << " µm";
   }
-  out << "\n  wrote " << command.output << " (" << bytes.size() << " bytes)\n";
+  out << "\n  wrote " << command.output << " (" << img.bytes << " bytes)\n";
+}
+
+}  // namespace
+
+int RunGridBuild(GridCommand& command,
+                 const InverseMap& inverse,
+                 const ForwardMap* forward,
+                 const std::map<std::string, std::string>& info,
+                 std::ostream& out) {
+  const GridBuildResult r = BuildGrid(command.grid, inverse, forward);
+  const WrittenImage img = WriteGridImage(command, r, info);
+  const GridReport report{command, r, forward != nullptr, info, img};
+  if (command.json) {
+    ReportGridJson(report, out);
+  } else {
+    ReportGridText(report, out);
+  }
   return 0;
 }
 

@@ -246,23 +246,24 @@ GridBuildResult BuildCorrectionGrid(const GridBuildOptions& options,
                    last.first[1], last.first[2]);
         msg += Fmt(" %.4g µm", last.second);
       }
-      throw std::runtime_error(msg);
+      throw GridBuildError(GridRefusal::kInterpolationTarget, msg);
     }
   }
   const GridSampleStats& s = result.stats;
   if (s.max_correction_um > options.max_correction_um) {
-    throw std::runtime_error(Fmt("correction of %.1f µm at (%.6g, %.6g, %.6g) mm",
-                                 s.max_correction_um, s.max_correction_at_mm.x,
-                                 s.max_correction_at_mm.y, s.max_correction_at_mm.z) +
-                             Fmt(" exceeds the configured bound of %.1f µm; check the input "
-                                 "units or raise the bound",
-                                 options.max_correction_um));
+    throw GridBuildError(
+        GridRefusal::kCorrectionBound,
+        Fmt("correction of %.1f µm at (%.6g, %.6g, %.6g) mm", s.max_correction_um,
+            s.max_correction_at_mm.x, s.max_correction_at_mm.y, s.max_correction_at_mm.z) +
+            Fmt(" exceeds the configured bound of %.1f µm; check the input "
+                "units or raise the bound",
+                options.max_correction_um));
   }
   if (forward != nullptr && s.max_residual_um > options.max_residual_um) {
-    throw std::runtime_error(
-        Fmt("the inverse misses its target by %.4g µm at some node (limit "
-            "%.4g µm)",
-            s.max_residual_um, options.max_residual_um));
+    throw GridBuildError(GridRefusal::kInverseResidual,
+                         Fmt("the inverse misses its target by %.4g µm at some node (limit "
+                             "%.4g µm)",
+                             s.max_residual_um, options.max_residual_um));
   }
   return result;
 }

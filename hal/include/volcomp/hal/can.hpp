@@ -1,6 +1,8 @@
 // A CAN controller port (classic CAN 2.0A/B, 8-byte frames). Send() queues a frame for
-// transmission and never blocks; Receive() pops the next received frame if any. Per-frame use
-// from the main loop; backends: mock (tests, simulated bus), SocketCAN, SLCAN, FDCAN (MCU).
+// transmission and never blocks; Receive() pops the next received frame if any. SetBitrate()
+// applies the bit rate of the configuration in force (the board application calls it at start and
+// at every node reset). Main-loop use only; backends: mock (tests), the simulated bus, SocketCAN,
+// FDCAN (MCU).
 #pragma once
 
 #include <cstdint>
@@ -21,6 +23,15 @@ class CanPort {
   }
   /// Pops the next received frame into *frame; false when none is waiting.
   bool Receive(CanFrame* frame) { return DoReceive(frame); }
+  /// Runs the controller at `bitrate_bps` bit/s (re-initialising it: frames queued or being
+  /// received are lost, as at a CANopen reset). kInvalidArgument for 0; kConfigInvalid when the
+  /// controller cannot produce that rate exactly (the previous rate stays); kCanBitrateMismatch
+  /// when the port cannot set the rate itself and the interface runs at another one (SocketCAN:
+  /// the rate belongs to the network interface).
+  Status SetBitrate(uint32_t bitrate_bps) {
+    if (bitrate_bps == 0) return Error::kInvalidArgument;
+    return DoSetBitrate(bitrate_bps);
+  }
 
  protected:
   ~CanPort() = default;  // not deletable through the interface (no heap in firmware)
@@ -28,6 +39,7 @@ class CanPort {
  private:
   virtual Status DoSend(const CanFrame& frame) = 0;
   virtual bool DoReceive(CanFrame* frame) = 0;
+  virtual Status DoSetBitrate(uint32_t bitrate_bps) = 0;
 };
 
 }  // namespace volcomp::hal

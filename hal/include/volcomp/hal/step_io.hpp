@@ -1,6 +1,13 @@
 // Step I/O: the hardware end of the per-tick data path. A static interface (no virtual calls on
 // the tick path): the board application is a template over a StepIo type that provides
 //
+//   volcomp::Status Configure(const volcomp::BoardConfig& config);
+//       Set up the input counters and output timers for `config` (pulse formats, counter widths,
+//       pulse clock, tick length). Main loop only, while the tick is stopped (the board
+//       application calls it at start and at every node reset, before it configures the data
+//       path). kConfigInvalid when the hardware cannot do what `config` asks (then the previous
+//       setup may be partly changed: the board application does not tick until a Configure()
+//       succeeds).
 //   void ReadCounters(uint32_t* counters);
 //       Latch the input step counters of all configured axes (hardware: timers in encoder or
 //       clock+direction mode; counters wrap at their width, see AxisConfig::input_counter_bits).
@@ -8,12 +15,16 @@
 //       Program the output pulse timers with this tick's plans (one per axis); times in the plan
 //       are pulse-clock units from the start of the tick being planned.
 //
-// Both are called from the control tick only. IsStepIo<T> checks the shape at compile time.
+// ReadCounters and Apply are called from the control tick only (and ReadCounters from the main
+// loop while the tick is stopped, to latch the counters at start). IsStepIo<T> checks the shape at
+// compile time.
 #pragma once
 
 #include <cstdint>
 #include <type_traits>
 
+#include "volcomp/board_config.hpp"
+#include "volcomp/status.hpp"
 #include "volcomp/step_generator.hpp"
 
 namespace volcomp::hal {
@@ -25,7 +36,8 @@ template <typename T>
 struct IsStepIo<
     T,
     std::void_t<decltype(std::declval<T&>().ReadCounters(static_cast<uint32_t*>(nullptr))),
-                decltype(std::declval<T&>().Apply(static_cast<const PulsePlan*>(nullptr)))>>
-    : std::true_type {};
+                decltype(std::declval<T&>().Apply(static_cast<const PulsePlan*>(nullptr))),
+                decltype(static_cast<Status>(std::declval<T&>().Configure(
+                    std::declval<const BoardConfig&>())))>> : std::true_type {};
 
 }  // namespace volcomp::hal

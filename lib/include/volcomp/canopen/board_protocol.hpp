@@ -160,10 +160,33 @@ constexpr TableStatus DecodeTableStatus(uint32_t v) {
 inline constexpr uint16_t kEmcyErrorReset = 0x0000;         // all errors cleared
 inline constexpr uint16_t kEmcyEStop = 0xFF01;              // e-stop input (until cleared)
 inline constexpr uint16_t kEmcyDriveAlarm = 0xFF02;         // drive alarm input (until cleared)
+inline constexpr uint16_t kEmcyConfigRefused = 0xFF03;      // settings refused: error, ConfigPart
 inline constexpr uint16_t kEmcyRefused = 0xFF10;            // a request was refused: the abort code
 inline constexpr uint16_t kEmcySdoTransferFailed = 0xFF11;  // SDO protocol failure: the abort code
 inline constexpr uint16_t kEmcyTableInvalid = 0x6300;       // staged/stored table invalid: error
 inline constexpr uint16_t kEmcyWriteFailed = 0x5530;        // flash write failed
+
+/// Which part of the board refused the settings loaded at start or at a node reset
+/// (kEmcyConfigRefused byte 5). The board then runs the factory defaults, except for a bit-rate
+/// mismatch it can only report (kCanBitrate with kCanBitrateMismatch).
+enum class ConfigPart : uint8_t {
+  kNone = 0,
+  kSettings = 1,    // the settings themselves (ValidateSettings)
+  kTickIo = 2,      // the tick's input/output stage: step I/O hardware (pulse format, counter
+                    // width, pulse clock or tick length) and step generators, or the CSP stages
+  kDataPath = 3,    // ControlTick
+  kTickTimer = 4,   // the tick rate
+  kCanBitrate = 5,  // the CAN bit rate
+  kCount = 6,
+};
+
+/// Readable names of the parts, kNone first (reports).
+inline constexpr const char* kConfigPartNames[] = {"none",      "settings",   "tick I/O",
+                                                   "data path", "tick timer", "CAN bit rate"};
+
+constexpr const char* ConfigPartName(ConfigPart p) {
+  return p < ConfigPart::kCount ? kConfigPartNames[static_cast<int>(p)] : "?";
+}
 
 struct Emcy {
   uint16_t code = 0;
@@ -174,7 +197,18 @@ struct Emcy {
   uint32_t abort_code() const { return LoadLe32(data); }
   /// Byte 3: the volcomp error of kEmcyTableInvalid.
   Error error() const { return static_cast<Error>(data[0]); }
+  /// Bytes 3-4 as LE16: the volcomp error of kEmcyConfigRefused.
+  Error config_error() const { return static_cast<Error>(LoadLe16(data)); }
+  /// Byte 5: the part that refused the settings (kEmcyConfigRefused).
+  ConfigPart config_part() const { return static_cast<ConfigPart>(data[2]); }
 };
+
+/// The manufacturer bytes of kEmcyConfigRefused: `error` (LE16) and the refusing `part`.
+inline void EncodeConfigRefused(Error error, ConfigPart part, uint8_t data[5]) {
+  StoreLe16(data, static_cast<uint16_t>(error));
+  data[2] = static_cast<uint8_t>(part);
+  data[3] = data[4] = 0;
+}
 
 inline CanFrame EncodeEmcy(uint8_t node_id, const Emcy& e) {
   CanFrame f;

@@ -22,6 +22,19 @@
 // mounts the tables and activates the stored image if it is intact and made for this board;
 // otherwise the board runs as pure pass-through and reports why (stored_table_status()).
 //
+// The configuration in force has one owner: Start() (power-on, and every NMT reset node) applies
+// the settings it loaded to the hardware as well as to the data path, in an order that never lets
+// the tick run at a period ControlTick was not configured for: stop the tick timer, the tick I/O
+// (step I/O formats and counter widths, then the step generators), ControlTick, the tick timer's
+// rate, the CAN bit rate; the timer starts again once everything is in place. Stored settings the
+// hardware refuses (a tick rate or bit rate the timer or CAN controller cannot produce exactly, a
+// pulse format it cannot do) give way to the factory defaults, so the board stays reachable; the
+// refusal stays visible: FAULT output, EMCY canopen::kEmcyConfigRefused (frame bytes 3-4: error
+// code, byte 5: canopen::ConfigPart; board_protocol.hpp), config_status().
+// A CAN port that cannot set the bit rate itself and finds the interface at another rate
+// (SocketCAN) reports kCanBitrateMismatch the same way, without falling back: it communicates at
+// the interface's rate.
+//
 // Io is the tick's two ends as one static type (tick_io.hpp): StepDirIo<StepIo> for a step/dir
 // board, CspIo for a CAN gateway (see gateway_app.hpp). No virtual call on the tick path.
 #pragma once
@@ -30,6 +43,7 @@
 #include <cstdint>
 
 #include "volcomp/board_config.hpp"
+#include "volcomp/canopen/board_protocol.hpp"
 #include "volcomp/canopen/node.hpp"
 #include "volcomp/compensator.hpp"
 #include "volcomp/control_tick.hpp"
@@ -43,6 +57,7 @@
 #include "volcomp/hal/clock.hpp"
 #include "volcomp/hal/flash.hpp"
 #include "volcomp/hal/slow_io.hpp"
+#include "volcomp/hal/tick_timer.hpp"
 #include "volcomp/status.hpp"
 #include "volcomp/table_image.hpp"
 
@@ -74,14 +89,21 @@ class BoardApp final : private BoardControl {
     hal::Flash* settings_flash = nullptr;  // optional: stored settings
     hal::CanPort* can = nullptr;           // optional: the CANopen node
     hal::Clock* clock = nullptr;           // required with `can` (timeouts, heartbeat)
+    hal::TickTimer* tick_timer = nullptr;  // optional: the timer that calls Tick() (without it
+                                           // the caller ticks at settings().board.tick_hz)
   };
 
   explicit BoardApp(const Devices& devices)
       : dev_(devices), objects_(this, &tables_, &settings_store_, &node_, AppOptions().identity) {}
 
-  /// Starts with the stored settings, or `defaults` when none are stored. Fails only for an
-  /// invalid configuration (the board then stays in pass-through with kFault set).
+  /// Starts with the stored settings, or `defaults` when none are stored (or the hardware refuses
+  /// them: see config_status()), applied to the devices and the data path. Fails only when
+  /// `defaults` are invalid or refused by the hardware (the board then stays in pass-through with
+  /// kFault set and the tick stopped).
   Status Start(const BoardSettings& defaults, const AppOptions& options = AppOptions()) {
+    // No tick while the data path is reconfigured (a node reset calls this while running).
+    started_ = false;
+    if (dev_.tick_timer != nullptr) dev_.tick_timer->Stop();
     defaults_ = defaults;
     options_ = options;
     objects_ = BoardObjects(this, &tables_, &settings_store_, &node_, options.identity);
@@ -93,12 +115,16 @@ class BoardApp final : private BoardControl {
         settings_ = settings_store_.Load(defaults);
       }
     }
-    Status s = ValidateSettings(settings_);
-    if (s.ok()) s = engine_.Configure(settings_.board);
-    if (s.ok()) s = dev_.tick_io->Configure(settings_.board);
+    config_status_ = ApplySettings(settings_, &config_refused_by_);
+    Status s = Fatal(config_status_);
+    if (!s.ok() && dev_.settings_flash != nullptr) {
+      settings_ = defaults;  // stored settings this hardware cannot run: the factory defaults
+      canopen::ConfigPart part = canopen::ConfigPart::kNone;
+      s = Fatal(ApplySettings(settings_, &part));
+    }
     started_ = s.ok();
     dev_.io->Write(hal::OutputLine::kReady, started_);
-    dev_.io->Write(hal::OutputLine::kFault, !started_);
+    dev_.io->Write(hal::OutputLine::kFault, !started_ || !config_status_.ok());
     if (!started_) return s;
     objects_.SetSettings(settings_);
     uint32_t counters[table::kMaxAxes];
@@ -112,6 +138,22 @@ class BoardApp final : private BoardControl {
     if (dev_.can != nullptr) {
       node_.Start(settings_.node_id, &objects_, NowMs(), options.sdo);
       node_.set_heartbeat_ms(settings_.heartbeat_ms);
+      if (!config_status_.ok()) {
+        uint8_t m[5];
+        canopen::EncodeConfigRefused(config_status_.error(), config_refused_by_, m);
+        const bool bus = config_refused_by_ == canopen::ConfigPart::kCanBitrate;
+        node_.RaiseError(canopen::kEmcyConfigRefused,
+                         bus ? canopen::kErrCommunication : canopen::kErrManufacturer, m);
+      }
+    }
+    if (dev_.tick_timer != nullptr) {
+      const Status t = dev_.tick_timer->Start();
+      if (!t.ok()) {
+        started_ = false;
+        dev_.io->Write(hal::OutputLine::kReady, false);
+        dev_.io->Write(hal::OutputLine::kFault, true);
+        return t;
+      }
     }
     Poll();
     return Status::Ok();
@@ -181,9 +223,40 @@ class BoardApp final : private BoardControl {
   const BoardObjects& objects() const { return objects_; }
   const BoardSettings& settings() const { return settings_; }
   Status stored_table_status() const { return stored_status_; }
+  /// Ok, or why the hardware refused the loaded settings (the board then runs the factory
+  /// defaults, except for kCanBitrateMismatch) and which device refused them.
+  Status config_status() const { return config_status_; }
+  canopen::ConfigPart config_refused_by() const { return config_refused_by_; }
   bool started() const { return started_; }
 
  private:
+  // Applies `s` with the tick stopped, in the order the tick needs; the first refusal is returned
+  // and its device named in *part. A bit-rate mismatch the port reports (it runs at the
+  // interface's rate) still leaves everything else applied.
+  Status ApplySettings(const BoardSettings& s, canopen::ConfigPart* part) {
+    using canopen::ConfigPart;
+    *part = ConfigPart::kSettings;
+    VOLCOMP_TRY(ValidateSettings(s));
+    *part = ConfigPart::kTickIo;
+    VOLCOMP_TRY(dev_.tick_io->Configure(s.board));
+    *part = ConfigPart::kDataPath;
+    VOLCOMP_TRY(engine_.Configure(s.board));
+    if (dev_.tick_timer != nullptr) {
+      *part = ConfigPart::kTickTimer;
+      VOLCOMP_TRY(dev_.tick_timer->SetRate(s.board.tick_hz));
+    }
+    if (dev_.can != nullptr) {
+      *part = ConfigPart::kCanBitrate;
+      VOLCOMP_TRY(dev_.can->SetBitrate(uint32_t{s.bitrate_kbit} * 1000u));
+    }
+    *part = ConfigPart::kNone;
+    return Status::Ok();
+  }
+  // A refusal the board cannot run with (a mismatch report is not one).
+  static Status Fatal(Status s) {
+    return s.error() == Error::kCanBitrateMismatch ? Status::Ok() : s;
+  }
+
   Status ActivateStored() {
     const Result<table::TableView> view = tables_.MountActive(settings_.board);
     if (!view.ok()) {
@@ -227,7 +300,7 @@ class BoardApp final : private BoardControl {
                    std::memory_order_relaxed);
     write_enable_ = io.Read(hal::InputLine::kWriteEnable);
     io.Write(hal::OutputLine::kCompensating, engine_.compensator().engaged());
-    io.Write(hal::OutputLine::kFault, fault);
+    io.Write(hal::OutputLine::kFault, fault || !config_status_.ok());
   }
 
   void PollCan() {
@@ -307,6 +380,8 @@ class BoardApp final : private BoardControl {
   bool bus_enable_ = canopen::kDefaultCompensationEnable != 0;
   bool home_level_[table::kMaxAxes] = {};
   Status stored_status_ = Error::kNotFound;
+  Status config_status_;
+  canopen::ConfigPart config_refused_by_ = canopen::ConfigPart::kNone;
   CanFrame tx_;
   bool have_tx_ = false;
   uint32_t max_tick_ns_ = 0;

@@ -19,6 +19,7 @@ class CspIo {
  public:
   explicit CspIo(gateway::CspGateway* gateway) : input_(gateway), output_(gateway) {}
 
+  /// No step hardware: the output stage only (the gateway's PDO mapping is GatewayApp's).
   Status Configure(const BoardConfig& config) { return output_.Configure(config); }
   void ReadCounters(uint32_t* counters) { input_.ReadCounters(counters); }
   void Output(const ControlTick& tick) { output_.Apply(tick.targets(), tick.corrections()); }

@@ -33,6 +33,7 @@
 #include "volcomp/hal/clock.hpp"
 #include "volcomp/hal/flash.hpp"
 #include "volcomp/hal/slow_io.hpp"
+#include "volcomp/hal/tick_timer.hpp"
 
 namespace volcomp::firmware {
 
@@ -43,6 +44,8 @@ struct GatewayDevices {
   hal::Flash* table_flash = nullptr;     // required: the dual-bank table store
   hal::Flash* settings_flash = nullptr;  // optional: settings stored with 0x1010
   hal::Clock* clock = nullptr;           // required
+  hal::TickTimer* tick_timer = nullptr;  // optional: the timer that calls Tick() (the board
+                                         // application sets its rate: BoardApp::Devices)
 };
 
 /// Counters of the glue (the gateway's own counters are in gateway().counters()).
@@ -97,6 +100,7 @@ class GatewayApp {
    private:
     static constexpr uint32_t kCapacity = 256;
     Status DoSend(const CanFrame& frame) override;
+    Status DoSetBitrate(uint32_t bitrate_bps) override;
     bool DoReceive(CanFrame* frame) override;
 
     hal::CanPort* controller_;

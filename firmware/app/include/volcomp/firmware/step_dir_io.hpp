@@ -1,7 +1,7 @@
 // Tick I/O of a step/dir board (tick_io.hpp): the hardware input step counters in, the step/dir
 // output stage (StepOutput: one pulse plan per axis and tick) out through the HAL's StepIo
-// (hal/step_io.hpp: ReadCounters, Apply). Static, no virtual call; Output() is part of the tick
-// ISR (on the STM32G474 the object lives in CCM SRAM next to BoardApp).
+// (hal/step_io.hpp: Configure, ReadCounters, Apply). Static, no virtual call; Output() is part of
+// the tick ISR (on the STM32G474 the object lives in CCM SRAM next to BoardApp).
 #pragma once
 
 #include <cstdint>
@@ -19,12 +19,18 @@ namespace volcomp::firmware {
 
 template <class StepIo>
 class StepDirIo {
-  static_assert(hal::IsStepIo<StepIo>::value, "StepIo must provide ReadCounters() and Apply()");
+  static_assert(hal::IsStepIo<StepIo>::value,
+                "StepIo must provide Configure(), ReadCounters() and Apply()");
 
  public:
   explicit StepDirIo(StepIo* step_io) : step_io_(step_io) {}
 
-  Status Configure(const BoardConfig& config) { return output_.Configure(config); }
+  /// The step I/O hardware first (formats, counter widths, pulse clock, tick length: what the
+  /// board cannot do is refused there), then the step generators of the output stage.
+  Status Configure(const BoardConfig& config) {
+    VOLCOMP_TRY(step_io_->Configure(config));
+    return output_.Configure(config);
+  }
   void ReadCounters(uint32_t* counters) { step_io_->ReadCounters(counters); }
   void Output(const ControlTick& tick) {
     output_.Plan(tick.targets(), plans_);

@@ -2,8 +2,11 @@
 // call on the tick path). A tick I/O type provides
 //
 //   Status Configure(const BoardConfig& config);
-//       Start() (main loop, tick stopped): prepares the output stage for `config`, which
-//       ValidateBoardConfig() accepted; an error leaves the board in pass-through with kFault.
+//       Start() (main loop, tick stopped, at power-on and every node reset): sets up the input
+//       and output hardware (step I/O) and then the output stage for `config`, which
+//       ValidateSettings() accepted, before ControlTick is configured. An error (kConfigInvalid:
+//       the hardware cannot do what `config` asks) is a refusal of canopen::ConfigPart::kTickIo:
+//       BoardApp falls back to the factory defaults, or stays in pass-through with kFault.
 //   void ReadCounters(uint32_t* counters);
 //       The input stage, from the tick (and once at Start()): the raw input counter of every
 //       configured axis, wrapping at AxisConfig::input_counter_bits (the hardware step counters,

@@ -27,6 +27,7 @@
 
 #include "volcomp/csp_gateway.hpp"
 #include "volcomp/firmware/settings.hpp"
+#include "volcomp/hal/linux/expected.hpp"
 #include "volcomp/hal/linux/gpio_lines.hpp"
 
 namespace volcomp::fw_linux {
@@ -62,11 +63,20 @@ struct LinuxBoardConfig {
   bool lock_memory = false;        // mlockall: no page faults on the forwarding path
 };
 
-/// Parses `text` (named `source` in messages) into *out, starting from the defaults, and checks the
-/// result. Returns "" or "source:line: what is wrong" / "source: what is wrong".
-std::string ParseConfig(const std::string& text, const std::string& source, LinuxBoardConfig* out);
+/// Why a configuration file was refused: where, and what is wrong there.
+struct ConfigError {
+  std::string source;   // the file (or the name given to ParseConfig)
+  int line = 0;         // 1-based line; 0 when the problem is not on one line
+  std::string message;  // e.g. "node_id: value above 127"
+  /// "source:line: message", or "source: message" without a line.
+  std::string ToString() const;
+};
+
+/// Parses `text` (named `source` in errors), starting from the defaults, and checks the result.
+Expected<LinuxBoardConfig, ConfigError> ParseConfig(const std::string& text,
+                                                    const std::string& source);
 /// Reads and parses a file.
-std::string LoadConfigFile(const std::string& path, LinuxBoardConfig* out);
+Expected<LinuxBoardConfig, ConfigError> LoadConfigFile(const std::string& path);
 /// The effective configuration as text in the file's own format (--check-config).
 std::string FormatConfig(const LinuxBoardConfig& config);
 

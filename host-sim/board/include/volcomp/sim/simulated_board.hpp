@@ -1,6 +1,10 @@
 // The real board application (firmware/app BoardApp) on the mock HAL, attached to a simulated CAN
-// bus, advanced in virtual time: the control tick at the configured rate and a main-loop pass
-// every `poll_period_ns` (the node's response latency).
+// bus, advanced in virtual time: the control tick and a main-loop pass every `poll_period_ns` (the
+// node's response latency). The tick is the board's tick timer (a MockTickTimer): it ticks while
+// the firmware keeps the timer running, at the rate the firmware programmed (the rate of the
+// configuration in force, which a node reset may change), with the period 1e9 / rate ns
+// (truncated) from the moment the timer was started. The bus endpoint runs at the bit rate the
+// firmware set (at another rate than the bus's the board is off the bus: sim_bus.hpp).
 //
 // Flash is kept in memory and can be loaded from / saved to files, so a simulated board keeps its
 // tables and settings across runs (`volcomp-sim node --flash-dir DIR`).
@@ -56,6 +60,9 @@ class SimulatedBoard {
   /// The step/dir output stage (output positions, backlog).
   const StepOutput& output() const { return tick_io_->output(); }
   hal::mock::MockSlowIo& io() { return io_; }
+  const hal::mock::MockTickTimer& tick_timer() const { return tick_timer_; }
+  /// The tick period the board runs at now (0 while the tick timer is stopped).
+  uint64_t tick_period_ns() const { return tick_timer_.running() ? tick_ns_ : 0; }
   /// The table flash (fault injection, e.g. InjectPowerLossAfter; its raw() content).
   hal::mock::MockFlash& table_flash() { return table_flash_; }
   Endpoint& endpoint() { return endpoint_; }
@@ -63,6 +70,8 @@ class SimulatedBoard {
 
  private:
   void LoadFlash();
+  // Follows the tick timer after the firmware ran: a (re)start schedules the next tick.
+  void FollowTickTimer();
 
   SimulatedBoardOptions options_;
   Endpoint& endpoint_;
@@ -71,12 +80,14 @@ class SimulatedBoard {
   hal::mock::MockFlash table_flash_;
   hal::mock::MockFlash settings_flash_;
   SimBusCanPort can_;
+  hal::mock::MockTickTimer tick_timer_;
+  uint32_t timer_starts_seen_ = 0;
   std::unique_ptr<hal::mock::MockStepIo> step_io_;
   std::unique_ptr<TickIo> tick_io_;
   std::unique_ptr<App> app_;
   uint64_t now_ns_ = 0;
-  uint64_t tick_ns_ = 20000;
-  uint64_t next_tick_ns_ = 0;
+  uint64_t tick_ns_ = 0;
+  uint64_t next_tick_ns_ = UINT64_MAX;  // no tick while the timer is stopped
   uint64_t next_poll_ns_ = 0;
 };
 

@@ -13,6 +13,14 @@
 //     transmits it twice, as after an error in the last EOF bit), corrupt (receivers get another
 //     frame: a bit flip no CRC caught), destroy (an error frame: the transmission ends after the
 //     CRC delimiter plus 6+8 error-flag/delimiter bits, nobody receives it, the sender retries).
+//   * An endpoint whose controller runs at another bit rate than the bus (Endpoint::set_bitrate)
+//     is off the bus, as a real node would be: it receives nothing (each frame it misses is
+//     counted), and each frame it sends ends in an error frame right after the start of frame
+//     (SOF + 6 + 8 error-flag/delimiter bits + intermission), received by nobody; its transmit
+//     error counter grows by 8 per error (ISO 11898-1) and at 256 it is bus-off: its queue is
+//     discarded and Send() refuses frames until the controller is set up again (set_bitrate).
+//     Simplification: it does not destroy the other nodes' frames while it receives them (a real
+//     error-active node at the wrong rate would, until it turns error-passive).
 //
 // Virtual time only moves in RunUntil(); NextEventTime() tells when something happens next, so a
 // caller can run in pure virtual time (benchmarks) or pace it to the wall clock (RealtimeClock).
@@ -62,7 +70,8 @@ struct BusStats {
   uint64_t duplicated = 0;
   uint64_t corrupted = 0;
   uint64_t destroyed = 0;
-  uint64_t rx_overruns = 0;  // frames lost because a receive queue was full
+  uint64_t rx_overruns = 0;     // frames lost because a receive queue was full
+  uint64_t bitrate_errors = 0;  // error frames caused by an endpoint at another bit rate
 };
 
 class SimBus;
@@ -71,15 +80,16 @@ class Endpoint {
  public:
   using ReceiveCallback = std::function<void(const CanFrame& frame, uint64_t t_ns)>;
   struct Stats {
-    uint64_t sent = 0;      // frames transmitted successfully (duplicates counted once)
-    uint64_t received = 0;  // frames delivered to this endpoint
+    uint64_t sent = 0;         // frames transmitted successfully (duplicates counted once)
+    uint64_t received = 0;     // frames delivered to this endpoint
+    uint64_t rate_errors = 0;  // frames it could not send or receive: its bit rate is wrong
   };
 
   const std::string& name() const { return name_; }
   size_t index() const { return index_; }
 
   /// Queues a frame for transmission at the bus's current time (advance the bus to your time
-  /// first). Invalid frames are ignored and return false.
+  /// first). Invalid frames, and every frame while bus-off, are refused (false).
   bool Send(const CanFrame& frame);
   /// Pops the next received frame (when no callback is set).
   bool Receive(CanFrame* frame);
@@ -91,6 +101,15 @@ class Endpoint {
   size_t tx_pending() const { return tx_.size(); }
   size_t rx_pending() const { return rx_.size(); }
   const Stats& stats() const { return stats_; }
+
+  /// The bit rate this endpoint's controller runs at (0 = the bus's rate, the default). Setting
+  /// another rate than the current one re-initialises the controller: both queues are emptied
+  /// and the error counter and bus-off state reset.
+  void set_bitrate(uint32_t bitrate_bps);
+  uint32_t bitrate() const { return bitrate_; }
+  /// Transmit error counter (ISO 11898-1 rule: +8 per transmit error) and bus-off state.
+  uint32_t tx_errors() const { return tx_errors_; }
+  bool bus_off() const { return bus_off_; }
 
  private:
   friend class SimBus;
@@ -107,6 +126,9 @@ class Endpoint {
   size_t rx_capacity_ = 0;
   ReceiveCallback on_receive_;
   Stats stats_;
+  uint32_t bitrate_ = 0;
+  uint32_t tx_errors_ = 0;
+  bool bus_off_ = false;
 };
 
 class SimBus {
@@ -150,8 +172,12 @@ class SimBus {
     FrameRecord record;
     FaultDecision fault;
     bool delivered = false;
+    bool wrong_rate = false;  // sent by an endpoint at another bit rate: an error frame
   };
   bool AnyQueued() const;
+  bool AtBusRate(const Endpoint& endpoint) const {
+    return endpoint.bitrate_ == 0 || endpoint.bitrate_ == bitrate_;
+  }
   void Step();
   void StartNext();
   void Deliver();

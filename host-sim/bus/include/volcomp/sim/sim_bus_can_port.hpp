@@ -1,7 +1,10 @@
 // A volcomp::hal::CanPort on a SimBus endpoint, so the firmware (which talks to a CanPort, like
 // MockCan) can sit on the simulated bus. Send() queues on the endpoint (kFull beyond
-// `tx_capacity` frames waiting, like a controller's transmit mailboxes/FIFO); Receive() pops the
-// endpoint's receive queue. Thread-safety: the bus's thread only.
+// `tx_capacity` frames waiting, like a controller's transmit mailboxes/FIFO; kIoError while the
+// endpoint is bus-off); Receive() pops the endpoint's receive queue. SetBitrate() sets the
+// endpoint's controller to that rate and accepts every rate, as a CAN controller does: it cannot
+// know the bus's rate. At another rate than the bus's the endpoint is off the bus (sim_bus.hpp).
+// Thread-safety: the bus's thread only.
 #pragma once
 
 #include <cstddef>
@@ -22,10 +25,13 @@ class SimBusCanPort final : public hal::CanPort {
  private:
   Status DoSend(const CanFrame& frame) override {
     if (endpoint_.tx_pending() >= tx_capacity_) return Error::kFull;
-    endpoint_.Send(frame);
-    return Status::Ok();
+    return endpoint_.Send(frame) ? Status::Ok() : Status(Error::kIoError);
   }
   bool DoReceive(CanFrame* frame) override { return endpoint_.Receive(frame); }
+  Status DoSetBitrate(uint32_t bitrate_bps) override {
+    endpoint_.set_bitrate(bitrate_bps);
+    return Status::Ok();
+  }
 
   Endpoint& endpoint_;
   size_t tx_capacity_;

@@ -12,6 +12,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -104,9 +105,28 @@ struct GridBuildResult {
 /// steps; throws std::invalid_argument with the reason (e.g. spacing not a whole number of steps).
 GridSpec MakeGridSpec(const GridBuildOptions& options, const std::array<double, 3>& spacing_mm);
 
+/// Why BuildCorrectionGrid refused the data.
+enum class GridRefusal : uint8_t {
+  kCorrectionBound,      // a node's correction exceeds max_correction_um
+  kInverseResidual,      // an inverse misses its target by more than max_residual_um
+  kInterpolationTarget,  // no spacing within the node limits reaches max_interp_error_um
+};
+
+/// BuildCorrectionGrid's refusal: what() says what and where, kind() which check refused.
+class GridBuildError : public std::runtime_error {
+ public:
+  GridBuildError(GridRefusal kind, const std::string& what)
+      : std::runtime_error(what), kind_(kind) {}
+  GridRefusal kind() const { return kind_; }
+
+ private:
+  GridRefusal kind_;
+};
+
 /// Builds the grid: explicit spacing, or the automatic choice, then the checks. Throws
-/// std::runtime_error when a node's correction exceeds the bound, an inverse misses its target by
-/// more than max_residual_um, or no spacing within the node limits reaches max_interp_error_um.
+/// GridBuildError when a node's correction exceeds the bound, an inverse misses its target by
+/// more than max_residual_um, or no spacing within the node limits reaches max_interp_error_um;
+/// std::invalid_argument (MakeGridSpec) for a lattice that cannot be laid out.
 GridBuildResult BuildCorrectionGrid(const GridBuildOptions& options,
                                     const InverseMap& inverse,
                                     const ForwardMap* forward = nullptr);

@@ -25,9 +25,9 @@ class FakeGpio final : public GpioBackend {
  public:
   explicit FakeGpio(std::string state_file = "") : path_(std::move(state_file)) {}
 
-  std::string Open(const GpioConfig& config) override;
-  std::string ReadInputs(bool* levels) override;
-  std::string WriteOutput(OutputLine line, bool active) override;
+  Expected<void> Open(const GpioConfig& config) override;
+  Expected<void> ReadInputs(bool* levels) override;
+  Expected<void> WriteOutput(OutputLine line, bool active) override;
   std::string Describe() const override;
 
   /// Sets an input in memory (overridden by the state file's value when it names the line).
@@ -37,8 +37,8 @@ class FakeGpio final : public GpioBackend {
   uint32_t file_reads() const { return file_reads_; }
 
  private:
-  std::string LoadFile();
-  std::string SaveOutputs() const;
+  Expected<void> LoadFile();
+  Expected<void> SaveOutputs() const;
 
   std::string path_;
   bool memory_[kInputLineCount] = {};

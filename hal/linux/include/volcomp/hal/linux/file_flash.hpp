@@ -22,8 +22,8 @@
 // run in order on a writer thread, so the caller (the gateway's event loop, which must keep
 // forwarding frames during a table upload) never waits for the disk; fdatasync on an SD card can
 // take tens of milliseconds. Flush() and Close() wait until everything queued is on disk. A write
-// error is sticky: every later Erase/Program fails with kIoError. Without `background` each
-// operation is written (and synced) before it returns.
+// error is sticky: every later Erase/Program fails with kIoError (write_error() says why). Without
+// `background` each operation is written (and synced) before it returns.
 //
 // Thread-safety: the hal::Flash interface from one thread (the firmware's main loop); the writer
 // thread is internal.
@@ -33,11 +33,13 @@
 #include <cstdint>
 #include <deque>
 #include <mutex>
+#include <optional>
 #include <string>
 #include <thread>
 #include <vector>
 
 #include "volcomp/hal/flash.hpp"
+#include "volcomp/hal/linux/expected.hpp"
 
 namespace volcomp::hal::linux_board {
 
@@ -63,17 +65,19 @@ class FileFlash final : public Flash {
   FileFlash(const FileFlash&) = delete;
   FileFlash& operator=(const FileFlash&) = delete;
 
-  /// Opens (or creates) `path`. Returns "" or a message naming the file and the cause.
-  std::string Open(const std::string& path, const Options& options);
+  /// Opens (or creates) `path`. Failures name the file and the cause: kInvalidArgument (geometry),
+  /// kBusy (another process holds the file), kConfigInvalid (a file of another size or kind),
+  /// kIoError (the system refused).
+  Expected<void> Open(const std::string& path, const Options& options);
   /// Waits for queued writes, then closes the file (and releases the lock).
   void Close();
-  /// Waits until every operation so far is written (and synced). Returns "" or the write error.
-  std::string Flush();
+  /// Waits until every operation so far is written (and synced); the write error if one happened.
+  Expected<void> Flush();
   bool is_open() const { return fd_ >= 0; }
   const std::string& path() const { return path_; }
   Counters counters() const;
-  /// The write error ("" when none).
-  std::string last_error() const;
+  /// The sticky write error, if any.
+  std::optional<Failure> write_error() const;
 
  private:
   struct Op {
@@ -91,7 +95,7 @@ class FileFlash final : public Flash {
   uint8_t* bytes() { return reinterpret_cast<uint8_t*>(storage_.data()); }
   const uint8_t* bytes() const { return reinterpret_cast<const uint8_t*>(storage_.data()); }
   Status Submit(uint32_t offset, uint32_t size);
-  std::string WriteOp(const uint8_t* data, uint32_t size, uint32_t offset);
+  Expected<void> WriteOp(const uint8_t* data, uint32_t size, uint32_t offset);
   void WriterLoop();
 
   Options options_;
@@ -104,7 +108,7 @@ class FileFlash final : public Flash {
   std::deque<Op> queue_;
   bool busy_ = false;  // the writer holds an operation
   bool stop_ = false;
-  std::string error_;  // sticky write error
+  std::optional<Failure> error_;  // sticky write error
   Counters counters_;
   std::thread writer_;
 };

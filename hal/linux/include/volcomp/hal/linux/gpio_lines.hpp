@@ -16,6 +16,7 @@
 #include <cstdint>
 #include <string>
 
+#include "volcomp/hal/linux/expected.hpp"
 #include "volcomp/hal/slow_io.hpp"
 
 namespace volcomp::hal::linux_board {
@@ -40,8 +41,8 @@ struct GpioConfig {
   std::string consumer = "volcomp";  // shown by gpioinfo
 };
 
-/// Parses a line spec (see above). Returns "" or what is wrong with `text`.
-std::string ParseGpioLineSpec(const std::string& text, GpioLineSpec* out);
+/// Parses a line spec (see above); kInvalidArgument saying what is wrong with `text`.
+Expected<GpioLineSpec> ParseGpioLineSpec(const std::string& text);
 /// The spec back as text ("gpiochip0:17 active-low pull-up").
 std::string FormatGpioLineSpec(const GpioLineSpec& spec);
 
@@ -54,13 +55,13 @@ bool OutputLineFromName(const std::string& name, OutputLine* line);
 class GpioBackend {
  public:
   virtual ~GpioBackend() = default;
-  /// Requests the configured lines. Returns "" or a message naming the line and the cause.
-  virtual std::string Open(const GpioConfig& config) = 0;
-  /// Reads every input into levels[0 .. kInputLineCount) (unconfigured lines: false). Returns ""
-  /// or the error (levels then keep their previous values).
-  virtual std::string ReadInputs(bool* levels) = 0;
-  /// Drives an output (unconfigured outputs are ignored). Returns "" or the error.
-  virtual std::string WriteOutput(OutputLine line, bool active) = 0;
+  /// Requests the configured lines; a failure names the line and the cause.
+  virtual Expected<void> Open(const GpioConfig& config) = 0;
+  /// Reads every input into levels[0 .. kInputLineCount) (unconfigured lines: false). On a
+  /// failure the lines that could not be read keep their previous values.
+  virtual Expected<void> ReadInputs(bool* levels) = 0;
+  /// Drives an output (unconfigured outputs are ignored).
+  virtual Expected<void> WriteOutput(OutputLine line, bool active) = 0;
   /// "libgpiod 1.6.3", "fake", ...
   virtual std::string Describe() const = 0;
 };

@@ -8,13 +8,14 @@
 // Read() returns the debounced level (no system call); Write() drives the output when its level
 // changes.
 //
-// Backend errors are counted and kept (last_error()); a line that cannot be read keeps its level.
+// Backend failures are counted and the last one kept (last_failure()); a line that cannot be read
+// keeps its level.
 //
 // Thread-safety: one thread (the main loop), like every hal::SlowIo.
 #pragma once
 
 #include <cstdint>
-#include <string>
+#include <optional>
 
 #include "volcomp/hal/linux/gpio_lines.hpp"
 #include "volcomp/hal/slow_io.hpp"
@@ -39,7 +40,7 @@ class LinuxSlowIo final : public SlowIo {
   /// The level last written to an output.
   bool output(OutputLine line) const { return out_[static_cast<int>(line)]; }
   uint64_t errors() const { return errors_; }
-  const std::string& last_error() const { return last_error_; }
+  const std::optional<Failure>& last_failure() const { return last_failure_; }
 
  private:
   bool DoRead(InputLine line) override { return stable_[static_cast<int>(line)]; }
@@ -59,7 +60,7 @@ class LinuxSlowIo final : public SlowIo {
   bool out_[kOutputLineCount] = {};
   bool out_written_[kOutputLineCount] = {};
   uint64_t errors_ = 0;
-  std::string last_error_;
+  std::optional<Failure> last_failure_;
 };
 
 }  // namespace volcomp::hal::linux_board

@@ -8,7 +8,7 @@
 
 #include <signal.h>
 
-#include <string>
+#include "volcomp/hal/linux/expected.hpp"
 
 namespace volcomp::hal::linux_board {
 
@@ -19,8 +19,9 @@ class ShutdownSignal {
   ShutdownSignal(const ShutdownSignal&) = delete;
   ShutdownSignal& operator=(const ShutdownSignal&) = delete;
 
-  /// Blocks SIGINT, SIGTERM and SIGHUP and opens the signalfd; "" or the reason it failed.
-  std::string Open();
+  /// Blocks SIGINT, SIGTERM and SIGHUP and opens the signalfd; kIoError with the reason when it
+  /// cannot (the mask is restored then).
+  Expected<void> Open();
   /// Closes the fd and restores the previous signal mask.
   void Close();
   int fd() const { return fd_; }

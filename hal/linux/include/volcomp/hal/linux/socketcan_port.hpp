@@ -9,12 +9,20 @@
 // `restart_interval`). While bus-off, Send() keeps queueing (kFull once the queue is full), so the
 // traffic resumes after a restart.
 //
+// Bit rate: it belongs to the network interface (`ip link set IFACE type can bitrate N`, which
+// needs CAP_NET_ADMIN), so SetBitrate() cannot set it: it reads the interface's rate from the
+// kernel (ReadCanBitrate) and compares. Same rate: Ok. Another rate: kCanBitrateMismatch, and
+// last_failure() names both; the port keeps working at the interface's rate. No rate to compare
+// (virtual interfaces such as vcan have none, or the query failed): Ok, and bitrate_check() says
+// why nothing was compared.
+//
 // Thread-safety: main-loop use from one thread, like every CanPort.
 #pragma once
 
 #include <chrono>
 #include <cstdint>
 #include <deque>
+#include <optional>
 #include <string>
 
 #include "volcomp/hal/can.hpp"
@@ -44,9 +52,16 @@ class SocketCanPort final : public CanPort {
   SocketCanPort() = default;
   ~SocketCanPort() = default;
 
-  /// Opens and binds the socket. kIoError when it fails; last_error() says why.
-  Status Open(const std::string& iface, const Options& options);
-  Status Open(const std::string& iface) { return Open(iface, Options()); }
+  /// What the last SetBitrate() found.
+  struct BitrateCheck {
+    uint32_t configured_bps = 0;            // 0: SetBitrate() not called yet
+    std::optional<uint32_t> interface_bps;  // the interface's rate, when the kernel reports one
+    std::string note;                       // why nothing was compared (no interface rate)
+  };
+
+  /// Opens and binds the socket; a failure names the interface and the cause.
+  Expected<void> Open(const std::string& iface, const Options& options);
+  Expected<void> Open(const std::string& iface) { return Open(iface, Options()); }
   bool is_open() const { return socket_.is_open(); }
   /// Flushes queued frames and reads pending error frames (call from the main loop when idle).
   void Service();
@@ -54,13 +69,15 @@ class SocketCanPort final : public CanPort {
   BusState bus_state() const { return state_; }
   const Counters& counters() const { return counters_; }
   size_t pending_tx() const { return tx_.size(); }
-  /// The last error text (open failure, write error, restart failure, error frame).
-  const std::string& last_error() const { return last_error_; }
+  /// The last problem seen (write error, restart failure, error frame, bit-rate mismatch).
+  const std::optional<Failure>& last_failure() const { return last_failure_; }
+  const BitrateCheck& bitrate_check() const { return bitrate_check_; }
   int fd() const { return socket_.fd(); }
 
  private:
   Status DoSend(const CanFrame& frame) override;
   bool DoReceive(CanFrame* frame) override;
+  Status DoSetBitrate(uint32_t bitrate_bps) override;
   void Flush();
   void OnError(const CanErrorInfo& info);
 
@@ -73,7 +90,8 @@ class SocketCanPort final : public CanPort {
   Clock::time_point last_restart_{};
   BusState state_ = BusState::kErrorActive;
   Counters counters_;
-  std::string last_error_;
+  std::optional<Failure> last_failure_;
+  BitrateCheck bitrate_check_;
 };
 
 }  // namespace volcomp::hal::socketcan

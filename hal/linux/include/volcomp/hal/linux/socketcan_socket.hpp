@@ -1,7 +1,8 @@
 // A Linux SocketCAN raw socket (CAN_RAW, classic frames): the one SocketCAN implementation that
 // both the firmware's Linux backend (SocketCanPort) and the PC tool's transport (tools/can_io)
-// use. Hosted C++17, Linux only. Never throws: failures come back as readable strings or as
-// IoResult + errno, so each caller maps them to its own error style (Status or exceptions).
+// use. Hosted C++17, Linux only. Never throws: failures come back as Expected (an error code and
+// a readable message) or as IoResult + errno, so each caller maps them to its own error style
+// (Status or, at a command line, exceptions).
 //
 // The socket is non-blocking; callers wait with poll() on fd() (or WaitReadable/WaitWritable).
 // Error frames (CAN_ERR_FLAG) are enabled by default and decoded into CanErrorInfo.
@@ -16,6 +17,7 @@
 #include <vector>
 
 #include "volcomp/can_frame.hpp"
+#include "volcomp/hal/linux/expected.hpp"
 
 namespace volcomp::hal::socketcan {
 
@@ -77,10 +79,10 @@ class SocketCanSocket {
   SocketCanSocket(const SocketCanSocket&) = delete;
   SocketCanSocket& operator=(const SocketCanSocket&) = delete;
 
-  /// Opens a non-blocking CAN_RAW socket bound to `iface`. Returns "" on success, otherwise a
-  /// message that names the cause, e.g. "socketcan: address family not supported: this kernel
-  /// has no CAN support (...)" or "socketcan: no such interface 'can9'".
-  std::string Open(const std::string& iface, const Options& options);
+  /// Opens a non-blocking CAN_RAW socket bound to `iface`. A failure's message names the cause,
+  /// e.g. "socketcan: address family not supported: this kernel has no CAN support (...)" or
+  /// "socketcan: no such interface 'can9'" (kInvalidArgument for a bad name, else kIoError).
+  Expected<void> Open(const std::string& iface, const Options& options);
   void Close();
   bool is_open() const { return fd_ >= 0; }
   int fd() const { return fd_; }
@@ -103,8 +105,18 @@ class SocketCanSocket {
 
 /// Asks the kernel to restart a bus-off CAN controller now (rtnetlink, IFLA_CAN_RESTART; what
 /// `ip link set IFACE type can restart` does). Needs CAP_NET_ADMIN; fails on virtual interfaces
-/// (vcan) and on controllers that are not bus-off. Returns "" on success or the reason.
-std::string RequestCanRestart(const std::string& iface);
+/// (vcan) and on controllers that are not bus-off.
+Expected<void> RequestCanRestart(const std::string& iface);
+
+/// The bit rate (bit/s) the kernel runs a CAN interface at (rtnetlink RTM_GETLINK,
+/// IFLA_CAN_BITTIMING; unprivileged). An unprivileged process cannot set it (`ip link set IFACE
+/// type can bitrate N` needs CAP_NET_ADMIN), only compare it. kNotFound when the interface does
+/// not exist or reports no bit timing (virtual interfaces: vcan, vxcan); kIoError when the query
+/// fails.
+Expected<uint32_t> ReadCanBitrate(const std::string& iface);
+/// The bit rate in a kernel answer to RTM_GETLINK (`size` bytes of netlink messages): kNotFound
+/// when it carries none (or 0), kIoError for a netlink error message. Pure.
+Expected<uint32_t> ParseLinkBitrate(const uint8_t* message, size_t size);
 
 /// "socketcan: <what>: <strerror>" with hints for the common errno values.
 std::string SocketCanErrorText(const std::string& what, int err);

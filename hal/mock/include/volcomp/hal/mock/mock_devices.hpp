@@ -1,5 +1,6 @@
-// Mock clock, slow I/O, flash and CAN port for tests and the simulator. Each records what the
-// firmware did into an optional Timeline and lets the test drive the inputs.
+// Mock clock, slow I/O, flash, CAN port and tick timer for tests and the simulator. Each records
+// what the firmware did into an optional Timeline (or its own counters) and lets the test drive
+// the inputs.
 #pragma once
 
 #include <cstdint>
@@ -11,6 +12,7 @@
 #include "volcomp/hal/flash.hpp"
 #include "volcomp/hal/mock/timeline.hpp"
 #include "volcomp/hal/slow_io.hpp"
+#include "volcomp/hal/tick_timer.hpp"
 
 namespace volcomp::hal::mock {
 
@@ -87,6 +89,7 @@ class MockFlash : public Flash {
 };
 
 /// A CAN port whose transmitted frames are recorded and whose received frames the test injects.
+/// SetBitrate() records the rate (every rate is accepted unless the test makes it refuse).
 class MockCan : public CanPort {
  public:
   MockCan(MockClock* clock, Timeline* timeline, size_t tx_capacity = 64)
@@ -95,16 +98,49 @@ class MockCan : public CanPort {
   /// Frames sent since the last TakeSent().
   std::vector<CanFrame> TakeSent();
   size_t pending_tx() const { return tx_.size(); }
+  /// The bit rate last applied (0 = never), and how many times one was applied.
+  uint32_t bitrate_bps() const { return bitrate_bps_; }
+  uint32_t bitrate_changes() const { return bitrate_changes_; }
+  /// Makes the next SetBitrate() calls fail with `status` (Ok: accept again).
+  void RefuseBitrate(Status status) { refuse_ = status; }
 
  private:
   Status DoSend(const CanFrame& frame) override;
   bool DoReceive(CanFrame* frame) override;
+  Status DoSetBitrate(uint32_t bitrate_bps) override;
 
   MockClock* clock_;
   Timeline* timeline_;
   size_t tx_capacity_;
   std::deque<CanFrame> rx_;
   std::vector<CanFrame> tx_;
+  uint32_t bitrate_bps_ = 0;
+  uint32_t bitrate_changes_ = 0;
+  Status refuse_;
+};
+
+/// A tick timer that only records: the test (or the simulated board, which ticks the firmware at
+/// rate_hz() while running()) plays the hardware. Any rate is accepted unless the test makes it
+/// refuse; starts() counts Start() calls so a caller sees a restart.
+class MockTickTimer : public TickTimer {
+ public:
+  bool running() const { return running_; }
+  uint32_t starts() const { return starts_; }
+  uint32_t stops() const { return stops_; }
+  /// Makes SetRate() refuse rates above `max_hz` with kConfigInvalid (0 = accept every rate).
+  void RefuseAbove(uint32_t max_hz) { refuse_above_hz_ = max_hz; }
+
+ private:
+  Status DoSetRate(uint32_t tick_hz) override;
+  Status DoStart() override;
+  void DoStop() override;
+  uint32_t DoRateHz() const override { return rate_hz_; }
+
+  uint32_t rate_hz_ = 0;
+  uint32_t refuse_above_hz_ = 0;
+  bool running_ = false;
+  uint32_t starts_ = 0;
+  uint32_t stops_ = 0;
 };
 
 }  // namespace volcomp::hal::mock

@@ -1,6 +1,10 @@
 // Mock step I/O: input counters set by the test (or by decoders fed with simulated lines) and
 // output plans expanded into line edges that go to a DriveModel per axis and, optionally, to a
 // Timeline. Satisfies the StepIo static interface (volcomp/hal/step_io.hpp).
+//
+// The drive models stand for the drives wired to the outputs: Configure() keeps an axis's model
+// (its position and history) while the axis's output format and drive timing stay the same, and
+// starts a fresh one for an axis whose format or timing changed.
 #pragma once
 
 #include <cstdint>
@@ -21,6 +25,7 @@ class MockStepIo {
   MockStepIo(const BoardConfig& config, Timeline* timeline);
 
   // StepIo interface.
+  Status Configure(const BoardConfig& config);
   void ReadCounters(uint32_t* counters) const;
   void Apply(const PulsePlan* plans);
 
@@ -35,6 +40,9 @@ class MockStepIo {
   const DriveModel& drive(uint8_t axis) const { return *drives_[axis]; }
   const std::vector<PulsePlan>& last_plans() const { return last_plans_; }
   uint64_t ticks_applied() const { return ticks_; }
+  /// The configuration last applied (the constructor's until Configure()).
+  const BoardConfig& config() const { return config_; }
+  uint32_t configure_count() const { return configures_; }
 
  private:
   void Edge(uint8_t axis, uint64_t t, bool line_b, bool level);
@@ -50,6 +58,7 @@ class MockStepIo {
   uint8_t quad_phase_[6] = {};
   std::vector<PulsePlan> last_plans_;
   uint64_t ticks_ = 0;
+  uint32_t configures_ = 0;
 };
 
 }  // namespace volcomp::hal::mock

@@ -1,15 +1,21 @@
 // Pure computations behind the STM32G474 drivers (no register access, host-tested in
-// tests/stm32g4/): PLL and flash wait states, FDCAN bit timing, the flash layout, and the timer
-// settings that execute one PulsePlan.
+// tests/stm32g4/): PLL and flash wait states, FDCAN bit timing and instances, the tick timer's
+// period, the step I/O timer setup for a board configuration, the flash layout, and the timer
+// settings that execute one PulsePlan. The drivers program exactly what these return, so the
+// configuration path (settings in force -> register values) is checked on the host.
 #pragma once
 
 #include <cstdint>
 
+#include "volcomp/board_config.hpp"
 #include "volcomp/hal/stm32g4/registers.hpp"
 #include "volcomp/status.hpp"
 #include "volcomp/step_generator.hpp"
 
 namespace volcomp::stm32g4 {
+
+/// SYSCLK = HCLK = PCLK1 = PCLK2: the clock of every timer and of FDCAN (ConfigureSystemClock).
+inline constexpr uint32_t kSysclkHz = 170000000u;
 
 // ---- System clock (RM0440 §7.2.4 PLL, §3.3.3 Table 9 wait states)
 // --------------------------------
@@ -40,6 +46,9 @@ struct CanBitTiming {
     return ((sjw - 1u) << 25) | ((prescaler - 1u) << 16) | ((tseg1 - 1u) << 8) | (tseg2 - 1u);
   }
 };
+
+/// The sample point StmFdcan asks for (CiA 301 recommends 87.5 %).
+inline constexpr uint32_t kCanSamplePointPermille = 875;
 
 /// Exact bit rate from `kernel_hz` with the sample point closest to `sample_permille` (e.g. 875),
 /// 8..25 time quanta per bit; kConfigInvalid when the rate is not reachable exactly.
@@ -75,6 +84,48 @@ constexpr FdcanLayout FdcanLayoutOf(FdcanInstance instance) {
           static_cast<uint8_t>(first ? 12 : 6),
           9};
 }
+
+// ---- Tick timer (TIM6, a basic timer with 16-bit PSC and ARR; RM0440 §29) ----------------------
+struct TickTimerSettings {
+  uint32_t psc = 0;  // prescaler register: divider - 1
+  uint32_t arr = 0;  // auto-reload register: period - 1, in prescaled clocks
+  /// Timer clocks per tick: (psc + 1) * (arr + 1).
+  uint32_t clocks() const { return (psc + 1u) * (arr + 1u); }
+};
+
+/// PSC and ARR giving exactly `tick_hz` update events per second from `timer_clock_hz`: the
+/// smallest prescaler (finest period resolution) whose ARR fits 16 bits. kConfigInvalid when no
+/// exact pair exists (the timer clock is not a whole multiple of the rate, or the period needs
+/// more than 16 + 16 bits).
+Result<TickTimerSettings> ComputeTickTimer(uint32_t timer_clock_hz, uint32_t tick_hz);
+
+// ---- Step input and output timers of the reference board (pin table: docs/mcu-target.md) -------
+inline constexpr uint8_t kStepAxes = 3;
+/// Width of each axis's input counter as wired: TIM2 (X) and TIM5 (Y) 32-bit, TIM3 (Z) 16-bit.
+inline constexpr uint8_t kInputCounterBits[kStepAxes] = {32, 32, 16};
+/// Counter width of the output timers TIM1, TIM8, TIM15.
+inline constexpr uint32_t kOutputTimerBits = 16;
+
+/// The reference board's factory configuration: DefaultBoardConfig() with the output timers'
+/// clock (SYSCLK) as pulse clock and the counter widths as wired.
+BoardConfig ReferenceBoardConfig();
+
+/// What StepIo::Configure programs for a board configuration.
+struct StepIoSetup {
+  uint8_t axes = 0;
+  uint32_t tick_clocks = 0;  // output timer clocks per tick (the PulsePlan time base)
+  PulseFormat input_format[kStepAxes] = {};
+  bool invert_input_dir[kStepAxes] = {};
+  bool cw_ccw_output[kStepAxes] = {};
+};
+
+/// Checks that the board can do what `config` asks and returns the setup. kConfigInvalid when:
+/// more than kStepAxes axes; an axis's input_counter_bits differs from its timer's width;
+/// quadrature output (not wired on this board); pulse_clock_hz != timer_clock_hz (the output
+/// timers count at SYSCLK); the tick is not a whole number of timer clocks; or a tick's pulse
+/// plans may not fit the 16-bit output timers (tick + pulse width above 65536 clocks: below about
+/// 2.6 kHz at 170 MHz).
+Result<StepIoSetup> PlanStepIo(const BoardConfig& config, uint32_t timer_clock_hz);
 
 // ---- Flash layout of the reference board (RM0440 §3.3.1: dual-bank mode, 2 KB pages) ------------
 namespace layout {

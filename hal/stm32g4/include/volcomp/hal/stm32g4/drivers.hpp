@@ -1,15 +1,19 @@
 // STM32G474 backends of the volcomp HAL, register level (registers.hpp, RM0440):
 //   StepIo       input counters in timer encoder / clock+direction modes, pulse outputs from
 //                timers in PWM mode 2 + one-pulse mode + repetition counter, started by the tick
-//                timer's trigger output (ReadCounters / Apply: the static StepIo interface).
+//                timer's trigger output (Configure / ReadCounters / Apply: the static StepIo
+//                interface).
+//   StmTickTimer TIM6, the control tick (hal::TickTimer): update interrupt and TRGO.
 //   StmSlowIo    GPIO lines (hal::SlowIo).
 //   StmFlash     a region of main flash (hal::Flash): 2 KB page erase, double-word programming.
 //   StmFdcan     an FDCAN instance (FDCAN1 or FDCAN2) in classic CAN mode (hal::CanPort), Rx FIFO
 //                0, Tx FIFO queue.
 //   CycleClock   monotonic time from the DWT cycle counter (hal::Clock).
 //   Iwdg         the independent watchdog.
-// Clock tree and tick timer setup are free functions. Everything here is for the main loop except
-// StepIo::ReadCounters/Apply, which the tick ISR calls (and which live in CCM SRAM).
+// The board application configures StepIo, StmTickTimer and StmFdcan from the settings in force
+// (BoardApp::Start); each programs what config_math computes for them. The clock tree setup is a
+// free function. Everything here is for the main loop except StepIo::ReadCounters/Apply and
+// TickTimerAcknowledge, which the tick ISR calls (and which live in CCM SRAM).
 #pragma once
 
 #include <cstdint>
@@ -20,11 +24,10 @@
 #include "volcomp/hal/flash.hpp"
 #include "volcomp/hal/slow_io.hpp"
 #include "volcomp/hal/stm32g4/config_math.hpp"
+#include "volcomp/hal/tick_timer.hpp"
 #include "volcomp/step_generator.hpp"
 
 namespace volcomp::stm32g4 {
-
-inline constexpr uint32_t kSysclkHz = 170000000u;
 
 /// HSI16 -> PLL (M=4, N=85, R=2) -> 170 MHz SYSCLK, Range 1 boost mode, 4 flash wait states with
 /// prefetch and caches, APB1 = APB2 = 170 MHz (RM0440 §7.2.7 clock switching sequence above
@@ -41,18 +44,34 @@ void ConfigureAfPin(Pin p, uint32_t af);
 void ConfigureInputPin(Pin p, bool pull_up);
 void ConfigureOutputPin(Pin p, bool level);
 
-/// Timer tick at `tick_hz` (TIM6, update interrupt and TRGO = update); the ISR calls
-/// TickTimerAcknowledge() first. Starts counting.
-Status StartTickTimer(uint32_t tick_hz, uint32_t irq_priority);
+/// The control tick: TIM6 update interrupt (vector TIM6_DAC) at the programmed rate, TRGO =
+/// update (it starts the output timers). The ISR calls TickTimerAcknowledge() first. SetRate()
+/// programs PSC/ARR from ComputeTickTimer(kSysclkHz, tick_hz): kConfigInvalid for a rate SYSCLK
+/// cannot produce exactly.
+class StmTickTimer final : public hal::TickTimer {
+ public:
+  explicit StmTickTimer(uint32_t irq_priority) : irq_priority_(irq_priority) {}
+
+ private:
+  Status DoSetRate(uint32_t tick_hz) override;
+  Status DoStart() override;
+  void DoStop() override;
+  uint32_t DoRateHz() const override { return rate_hz_; }
+
+  uint32_t irq_priority_;
+  uint32_t rate_hz_ = 0;
+  bool running_ = false;
+};
 void TickTimerAcknowledge();
 
 /// Step inputs and outputs of up to three axes (X, Y, Z; see docs/mcu-target.md for pins).
 class StepIo {
  public:
-  static constexpr uint8_t kAxes = 3;
-  /// Configures input and output timers for `config` (formats, counter widths); the output
-  /// timers count at SYSCLK, so config.pulse_clock_hz must equal kSysclkHz.
-  Status Init(const BoardConfig& config);
+  static constexpr uint8_t kAxes = kStepAxes;
+  /// Configures input and output timers for `config` as PlanStepIo(config, kSysclkHz) describes
+  /// (formats, counter widths; the output timers count at SYSCLK). kConfigInvalid, with nothing
+  /// changed, for what this board cannot do (see PlanStepIo).
+  Status Configure(const BoardConfig& config);
   void ReadCounters(uint32_t* counters);
   void Apply(const PulsePlan* plans);
   /// Plans the hardware could not execute (0 in a correct configuration).
@@ -97,15 +116,19 @@ class StmFdcan final : public hal::CanPort {
   explicit StmFdcan(FdcanInstance instance = FdcanInstance::kFdcan1)
       : layout_(FdcanLayoutOf(instance)) {}
   /// The instance on its pins (FDCAN1: PA11 RX / PA12 TX; FDCAN2: PB5 / PB6), kernel clock PCLK1
-  /// (shared by all instances), classic CAN at `bitrate`; every frame is accepted into Rx FIFO 0
-  /// (filtering is the protocol's job). kConfigInvalid if the bit rate is not reachable. Polled:
-  /// Rx FIFO 0 holds 3 frames, so the caller must receive at least every 3 frame times.
+  /// (shared by all instances), classic CAN at `bitrate` with the bit timing of
+  /// ComputeCanBitTiming(kSysclkHz, bitrate, kCanSamplePointPermille); every frame is accepted
+  /// into Rx FIFO 0 (filtering is the protocol's job). kConfigInvalid, with nothing changed, if
+  /// the bit rate is not reachable exactly. SetBitrate() is Init() (it re-initialises the
+  /// controller). Polled: Rx FIFO 0 holds 3 frames, so the caller must receive at least every 3
+  /// frame times.
   Status Init(uint32_t bitrate);
   bool bus_off() const;
 
  private:
   Status DoSend(const hal::CanFrame& frame) override;
   bool DoReceive(hal::CanFrame* frame) override;
+  Status DoSetBitrate(uint32_t bitrate_bps) override { return Init(bitrate_bps); }
   volatile uint32_t* RamWords(uint32_t byte_offset) const;
 
   FdcanLayout layout_;
