@@ -15,7 +15,7 @@ namespace {
 
 using metrology::testing::RepoPath;
 
-// Runs a command with std::cout/std::cerr captured.
+// Runs a command with its option table, std::cout/std::cerr captured; exceptions propagate.
 struct CmdResult {
   int code = -1;
   std::string out, err;
@@ -27,7 +27,9 @@ CmdResult Invoke(int (*cmd)(Args&), std::vector<std::string> argv) {
   auto* old_out = std::cout.rdbuf(out.rdbuf());
   auto* old_err = std::cerr.rdbuf(err.rdbuf());
   try {
-    Args a(std::move(argv));
+    const Command* c = FindCommand(cmd);
+    if (c == nullptr) throw std::logic_error("command not in the table");
+    Args a(std::move(argv), &c->options);
     r.code = cmd(a);
   } catch (...) {
     std::cout.rdbuf(old_out);
