@@ -66,7 +66,8 @@ TEST(MetrologyCli, EvaluatePositioningGostExampleWithReport) {
   EXPECT_EQ(r.code, 0);
   EXPECT_NE(r.out.find("A       = 18.00"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("R_max   = 13.49"), std::string::npos) << r.out;
-  EXPECT_TRUE(std::filesystem::exists(dir + "/positioning.html"));
+  EXPECT_TRUE(std::filesystem::exists(dir + "/positioning_gost27843_example_long.html"));
+  EXPECT_TRUE(std::filesystem::exists(dir + "/positioning_gost27843_example_long.json"));
   std::filesystem::remove_all(dir);
 }
 
@@ -96,7 +97,8 @@ TEST(MetrologyCli, EvaluateDiagonalSample) {
   EXPECT_EQ(r.code, 0);
   EXPECT_NE(r.out.find("body diagonals (4):  E_d = "), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("face XY Z200 (2)"), std::string::npos) << r.out;
-  EXPECT_TRUE(std::filesystem::exists(dir + "/diagonal.html"));
+  EXPECT_TRUE(
+      std::filesystem::exists(dir + "/diagonal_NPP_PNP_PPN_PPP_XY_PN_Z200_XY_PP_Z200.html"));
   std::filesystem::remove_all(dir);
 }
 
