@@ -262,5 +262,52 @@ TEST(MetrologyWorkflow, ImplausibleMagnitudeIsWarnedInStderrAndTheReport) {
             std::string::npos);
 }
 
+// The before/after page: every deviation scaled by 0.1 after the compensation scales every
+// positioning parameter by 0.1, so each reduction is 90.0 %; a result without a partner is named.
+TEST(MetrologyWorkflow, ReportCompareShowsReductions) {
+  Scratch s("compare");
+  for (const char* axis : {"X", "Y"}) {
+    const std::string csv = s / (std::string(axis) + ".csv");
+    ASSERT_EQ(Volcomp({"program", "positioning", "--axis", axis, "--end", "390", "--pitch", "5",
+                       "-o", s / "p.ngc", "--targets-csv", csv, "--force"})
+                  .code,
+              0);
+    const std::string tmpl = Read(csv);
+    Write(csv, Fill(tmpl, Reading, {{"air temperature C", "20.1"}}));
+    ASSERT_EQ(
+        Volcomp({"evaluate", "positioning", csv, "--standard", "both", "--report", s / "before"})
+            .code,
+        0);
+    if (std::string(axis) == "Y") continue;  // Y is not measured after
+    Write(
+        csv,
+        Fill(tmpl, [](double t, const std::string& d, int run) { return 0.1 * Reading(t, d, run); },
+             {{"air temperature C", "20.6"}}));
+    ASSERT_EQ(
+        Volcomp({"evaluate", "positioning", csv, "--standard", "both", "--report", s / "after"})
+            .code,
+        0);
+  }
+  const Result r = Volcomp({"report", "compare", s / "before", s / "after", "-o", s / "cmp"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.err.find("positioning_Y (" + (s / "before/positioning_Y.json") +
+                       "): no after result of that name"),
+            std::string::npos)
+      << r.err;
+  std::istringstream lines(r.out);
+  int rows = 0;
+  for (std::string line; std::getline(lines, line);) {
+    if (line.find(" -> ") == std::string::npos) continue;
+    ++rows;
+    if (line.find("B̄") != std::string::npos || line.find("0.00 ->") != std::string::npos) continue;
+    EXPECT_NE(line.find("90.0 %"), std::string::npos) << line;
+  }
+  EXPECT_EQ(rows, 9 + 12);  // GOST 27843 and ISO 230-2 parameters
+  const std::string html = Read(s / "cmp/compare.html");
+  EXPECT_NE(html.find("<td>air temperature C</td><td>20.1</td><td>20.6</td>"), std::string::npos);
+  EXPECT_EQ(Volcomp({"report", "compare", s / "before", s / "nothing", "-o", s / "c2"}).code,
+            kExitFailed);
+}
+
 }  // namespace
 }  // namespace volcomp::tools

@@ -83,7 +83,7 @@ TEST(VolcompHelp, OptionsUsedInTheSourcesAreDeclared) {
   for (const char* f :
        {"build_axis", "build_grid", "build_kmtpp", "build_model", "build_tracker",
         "evaluate_diagonal", "evaluate_positioning", "evaluate_rotary", "inspect", "lookup",
-        "model_eval", "program", "sdo", "status", "table_control", "upload"}) {
+        "model_eval", "program", "report_compare", "sdo", "status", "table_control", "upload"}) {
     files.push_back(std::string("tools/volcomp/cmd_") + f + ".cpp");
   }
   int literals = 0;
@@ -107,6 +107,7 @@ TEST(VolcompHelp, ToolHelpAndExitCodes) {
   auto r = RunCli({"help"});
   EXPECT_EQ(r.code, kExitOk);
   EXPECT_NE(r.out.find("3 communication"), std::string::npos);
+  EXPECT_NE(r.out.find("report compare"), std::string::npos);
   EXPECT_EQ(RunCli({}).code, kExitUsage);
   r = RunCli({"frobnicate"});
   EXPECT_EQ(r.code, kExitUsage);

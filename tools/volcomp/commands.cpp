@@ -242,6 +242,13 @@ const std::vector<Command>& Commands() {
        "the high end of Z is -X-Y+Z. With --box, -o FILE.ngc writes FILE_NNN.ngc, FILE_PNN.ngc,\n"
        "FILE_NPN.ngc and FILE_PPN.ngc (start corners -X-Y-Z, +X-Y-Z, -X+Y-Z, +X+Y-Z) and\n"
        "--targets-csv one template for all four, which `evaluate diagonal` reads."},
+      {"report compare",
+       "before/after page: positioning and diagonal results with reductions",
+       "BEFORE AFTER",
+       {{"--output", "-o", "DIR", nullptr, nullptr, "directory for compare.html (required)"}},
+       RunReportCompare,
+       "BEFORE and AFTER are report directories written by `evaluate ... --report DIR` (or\n"
+       "single .json results of it); results are paired by name (axis, diagonals)."},
       {"build model", "GRID3 image from the 21-parameter error model (inverse map)", "",
        Join({kModelOptions, kGridOptions}), RunBuildModel, kGridNotes},
       {"build tracker", "GRID3 image from laser-tracker axis lines (dissertation ch. 2 methods)",

@@ -67,6 +67,7 @@ int RunEvaluateDiagonal(Args& args);
 int RunEvaluateRotary(Args& args);
 int RunProgramPositioning(Args& args);
 int RunProgramDiagonal(Args& args);
+int RunReportCompare(Args& args);
 // Table builders: cmd_build_model/tracker/kmtpp/axis.cpp, cmd_model_eval.cpp.
 int RunBuildModel(Args& args);
 int RunBuildTracker(Args& args);
