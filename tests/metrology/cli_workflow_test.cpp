@@ -214,6 +214,16 @@ TEST(MetrologyWorkflow, TestConditionsReachTheReports) {
   EXPECT_NE(html.find("XL-80 #1234"), std::string::npos);
   const std::string json = Read(s / "r/positioning_X.json");
   EXPECT_NE(json.find("\"material temperature C\": \"20.9\""), std::string::npos) << json;
+
+  // The same for a rotary error-motion record.
+  Write(s / "spindle.csv", "# machine: MILL-7\n# instrument: capacitive probes\n" +
+                               Read(RepoPath("samples/metrology/spindle_error_motion.csv")));
+  const Result rot = Volcomp({"evaluate", "rotary", s / "spindle.csv", "--report", s / "r"});
+  ASSERT_EQ(rot.code, 0) << rot.err;
+  EXPECT_NE(rot.out.find("conditions: machine MILL-7; instrument capacitive probes"),
+            std::string::npos);
+  EXPECT_NE(Read(s / "r/rotary_spindle.json").find("\"instrument\": \"capacitive probes\""),
+            std::string::npos);
 }
 
 // ';' separated with decimal commas (Russian/European Excel) evaluates like the plain file.

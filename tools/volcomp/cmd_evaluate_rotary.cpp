@@ -8,6 +8,7 @@
 #include "volcomp/metrology/rotary_data.hpp"
 #include "volcomp/metrology/rotary_eval.hpp"
 #include "volcomp/metrology/rotary_report.hpp"
+#include "volcomp/metrology/test_conditions.hpp"
 #include "volcomp/tools/json.hpp"
 
 namespace volcomp::tools {
@@ -67,8 +68,10 @@ int RunEvaluateRotary(Args& args) {
     throw UsageError("--face-radius-mm must be positive");
   }
 
-  const m::RotaryRecord rec = m::ReadRotaryCsv(m::ReadCsvArgument(files[0]));
-  const m::RotaryEvaluation ev = m::EvaluateRotary(rec, o);
+  const CsvTable table = m::ReadCsvArgument(files[0]);
+  const m::RotaryRecord rec = m::ReadRotaryCsv(table);
+  m::RotaryEvaluation ev = m::EvaluateRotary(rec, o);
+  ev.conditions = m::ConditionsFromPreamble(table);
   std::optional<m::ReversalResult> rev;
   if (reversal_file) {
     const m::RotaryRecord rec2 = m::ReadRotaryCsv(m::ReadCsvArgument(*reversal_file));
