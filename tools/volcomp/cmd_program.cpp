@@ -108,6 +108,15 @@ std::string WithToken(const std::string& path, const std::string& token) {
   return path.substr(0, dot) + "_" + token + path.substr(dot);
 }
 
+// Before anything is written: the template must not be the program, nor hold readings.
+void CheckTemplatePath(const std::optional<std::string>& targets_csv,
+                       const std::string& out,
+                       bool force) {
+  if (!targets_csv) return;
+  if (*targets_csv == out) throw UsageError("--targets-csv and -o name the same file");
+  m::RefuseToOverwriteReadings(*targets_csv, force);
+}
+
 }  // namespace
 
 int RunProgramPositioning(Args& args) {
@@ -142,16 +151,7 @@ int RunProgramPositioning(Args& args) {
     throw UsageError("--cycle must be linear or pilgrim");
   if (!(g.feed > 0.0) || g.dwell_s < 0.0)
     throw UsageError("--feed must be positive, --dwell-s ≥ 0");
-  if (targets_csv && *targets_csv == out) {
-    throw UsageError("--targets-csv and -o name the same file");
-  }
-  if (targets_csv && !force) {
-    if (const auto risk = m::ReadingsAtRisk(*targets_csv)) {  // before writing anything
-      throw InputError(*risk +
-                       "; not overwritten (give --force to replace it, or another "
-                       "--targets-csv name)");
-    }
-  }
+  CheckTemplatePath(targets_csv, out, force);
   std::vector<double> targets;
   std::vector<m::CycleMove> moves;
   try {
@@ -213,13 +213,7 @@ int RunProgramDiagonal(Args& args) {
   }
   if (!(g.feed > 0.0) || g.dwell_s < 0.0)
     throw UsageError("--feed must be positive, --dwell-s ≥ 0");
-  if (targets_csv && !force) {
-    if (const auto risk = m::ReadingsAtRisk(*targets_csv)) {  // before writing anything
-      throw InputError(*risk +
-                       "; not overwritten (give --force to replace it, or another "
-                       "--targets-csv name)");
-    }
-  }
+  CheckTemplatePath(targets_csv, out, force);
 
   std::vector<DiagonalProgram> programs;
   if (box) {

@@ -69,17 +69,20 @@ std::optional<std::string> ReadingsAtRisk(const std::string& path) {
   return std::nullopt;
 }
 
+void RefuseToOverwriteReadings(const std::string& path, bool force) {
+  if (force) return;
+  if (const auto risk = ReadingsAtRisk(path)) {
+    throw tools::InputError(*risk +
+                            "; not overwritten (give --force to replace it, or another "
+                            "--targets-csv name)");
+  }
+}
+
 void WriteTemplate(const std::string& text,
                    const std::string& path,
                    bool force,
                    std::ostream& out) {
-  if (!force) {
-    if (const auto risk = ReadingsAtRisk(path)) {
-      throw tools::InputError(*risk +
-                              "; not overwritten (give --force to replace it, or another "
-                              "--targets-csv name)");
-    }
-  }
+  RefuseToOverwriteReadings(path, force);
   WriteTextOutput(text, path, out);
 }
 

@@ -30,8 +30,12 @@ std::string TemplateRows(const std::vector<CycleMove>& moves, const std::string&
 /// is not a readings template; nullopt when it does not exist or is an empty template.
 std::optional<std::string> ReadingsAtRisk(const std::string& path);
 
-/// Writes `text` to `path` unless ReadingsAtRisk(path) and not `force`: then tools::InputError
-/// saying so and naming --force. `path` "-" writes to `out`.
+/// Throws tools::InputError saying why and naming --force when ReadingsAtRisk(path) and not
+/// `force`; commands call it before they write anything.
+void RefuseToOverwriteReadings(const std::string& path, bool force);
+
+/// Writes `text` to `path` after RefuseToOverwriteReadings(path, force). `path` "-" writes to
+/// `out`.
 void WriteTemplate(const std::string& text, const std::string& path, bool force, std::ostream& out);
 
 }  // namespace volcomp::metrology
