@@ -195,19 +195,6 @@ std::optional<long long> Args::integer(const std::string& name) {
   return d;
 }
 
-bool Args::given(const std::string& name) const {
-  if (spec_ != nullptr) {
-    for (const OptionSpec& o : *spec_) {
-      if (IsOptionName(o, name)) return !Occurrences(o).empty();
-    }
-    throw std::logic_error("option " + name + " is not declared in the command's option table");
-  }
-  for (std::size_t i = 0; i < args_.size() && !AfterEnd(i); ++i) {
-    if (args_[i] == name || args_[i].rfind(name + "=", 0) == 0) return true;
-  }
-  return false;
-}
-
 std::vector<std::string> Args::positionals() {
   std::vector<std::string> out;
   for (std::size_t i = 0; i < args_.size(); ++i) {

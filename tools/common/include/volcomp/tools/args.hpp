@@ -65,8 +65,6 @@ class Args {
   /// Numeric option helpers (UsageError on a bad number).
   std::optional<double> number(const std::string& name);
   std::optional<long long> integer(const std::string& name);
-  /// True when the option was given on the command line (not merely defaulted).
-  bool given(const std::string& name) const;
   /// Remaining non-option arguments, in order; consumes them.
   std::vector<std::string> positionals();
   /// Throws UsageError naming the first unconsumed argument.
