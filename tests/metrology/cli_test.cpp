@@ -15,7 +15,7 @@ namespace {
 
 using metrology::testing::RepoPath;
 
-// Runs a command with std::cout/std::cerr captured.
+// Runs a command with its option table, std::cout/std::cerr captured; exceptions propagate.
 struct CmdResult {
   int code = -1;
   std::string out, err;
@@ -27,7 +27,9 @@ CmdResult Invoke(int (*cmd)(Args&), std::vector<std::string> argv) {
   auto* old_out = std::cout.rdbuf(out.rdbuf());
   auto* old_err = std::cerr.rdbuf(err.rdbuf());
   try {
-    Args a(std::move(argv));
+    const Command* c = FindCommand(cmd);
+    if (c == nullptr) throw std::logic_error("command not in the table");
+    Args a(std::move(argv), &c->options);
     r.code = cmd(a);
   } catch (...) {
     std::cout.rdbuf(old_out);
@@ -64,7 +66,8 @@ TEST(MetrologyCli, EvaluatePositioningGostExampleWithReport) {
   EXPECT_EQ(r.code, 0);
   EXPECT_NE(r.out.find("A       = 18.00"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("R_max   = 13.49"), std::string::npos) << r.out;
-  EXPECT_TRUE(std::filesystem::exists(dir + "/positioning.html"));
+  EXPECT_TRUE(std::filesystem::exists(dir + "/positioning_gost27843_example_long.html"));
+  EXPECT_TRUE(std::filesystem::exists(dir + "/positioning_gost27843_example_long.json"));
   std::filesystem::remove_all(dir);
 }
 
@@ -94,7 +97,8 @@ TEST(MetrologyCli, EvaluateDiagonalSample) {
   EXPECT_EQ(r.code, 0);
   EXPECT_NE(r.out.find("body diagonals (4):  E_d = "), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("face XY Z200 (2)"), std::string::npos) << r.out;
-  EXPECT_TRUE(std::filesystem::exists(dir + "/diagonal.html"));
+  EXPECT_TRUE(
+      std::filesystem::exists(dir + "/diagonal_NPP_PNP_PPN_PPP_XY_PN_Z200_XY_PP_Z200.html"));
   std::filesystem::remove_all(dir);
 }
 

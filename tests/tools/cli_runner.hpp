@@ -7,7 +7,6 @@
 #include <vector>
 
 #include "commands.hpp"
-#include "volcomp/tools/csv.hpp"
 
 namespace volcomp::testing {
 
@@ -17,7 +16,8 @@ struct CliResult {
   std::string err;
 };
 
-/// Runs `volcomp WORDS...` like main() does (the same command table and error mapping).
+/// Runs `volcomp WORDS...` exactly as main() does (tools::RunCommandLine: the same command
+/// table, option tables, help and exit codes).
 inline CliResult RunCli(const std::vector<std::string>& words, const std::string& stdin_text = "") {
   CliResult r;
   std::istringstream in(stdin_text);
@@ -25,33 +25,7 @@ inline CliResult RunCli(const std::vector<std::string>& words, const std::string
   auto* old_in = std::cin.rdbuf(in.rdbuf());
   auto* old_out = std::cout.rdbuf(out.rdbuf());
   auto* old_err = std::cerr.rdbuf(err.rdbuf());
-  const tools::Command* found = nullptr;
-  size_t used = 0;
-  for (const tools::Command& c : tools::Commands()) {
-    std::istringstream name(c.name);
-    std::vector<std::string> parts;
-    for (std::string p; name >> p;) parts.push_back(p);
-    if (parts.size() <= words.size() && parts.size() > used &&
-        std::equal(parts.begin(), parts.end(), words.begin())) {
-      found = &c;
-      used = parts.size();
-    }
-  }
-  if (found == nullptr) {
-    r.code = 2;
-  } else {
-    tools::Args args(
-        std::vector<std::string>(words.begin() + static_cast<long>(used), words.end()));
-    try {
-      r.code = found->run(args);
-    } catch (const tools::UsageError& e) {
-      std::cerr << e.what();
-      r.code = 2;
-    } catch (const std::exception& e) {
-      std::cerr << e.what();
-      r.code = 1;
-    }
-  }
+  r.code = tools::RunCommandLine(words);
   std::cin.rdbuf(old_in);
   std::cout.rdbuf(old_out);
   std::cerr.rdbuf(old_err);

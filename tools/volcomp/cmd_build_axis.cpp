@@ -65,6 +65,7 @@ int RunBuildAxis(Args& args) {
   std::cout << "volcomp build axis\n";
   for (std::size_t i = 0; i < inputs.size(); ++i) {
     const model::PositioningData data = model::LoadPositioningCsv(inputs[i].path);
+    for (const auto& w : data.warnings) std::cerr << "warning: " << w << "\n";
     const bool rotary = req.axes[i].kind == table::AxisKind::kRotary;
     if (data.rotary != rotary) {
       throw InputError(inputs[i].path + ": axis " + std::string(1, inputs[i].name) +

@@ -15,6 +15,7 @@
 #include "commands.hpp"
 #include "volcomp/image/axis_units.hpp"
 #include "volcomp/image/image_builder.hpp"
+#include "volcomp/model/build_cli.hpp"
 #include "volcomp/tools/csv.hpp"
 
 namespace volcomp::tools {
@@ -83,29 +84,7 @@ int RunBuildGrid(Args& args) {
   image::ImageRequest req;
   req.axes = image::MakeAxisDefs(names, args.value("--resolution-nm").value_or(""),
                                  args.value("--steps-per-unit").value_or(""));
-  const std::string element = args.value("--element").value_or("int16");
-  if (element == "int16") {
-    req.element = table::ElementType::kInt16;
-  } else if (element == "int32") {
-    req.element = table::ElementType::kInt32;
-  } else if (element == "float32") {
-    req.element = table::ElementType::kFloat32;
-  } else {
-    throw UsageError("--element must be int16, int32 or float32");
-  }
-  if (auto f = args.integer("--frac-bits")) {
-    if (*f < 0 || *f > 8) throw UsageError("--frac-bits must be 0..8");
-    req.frac_bits = static_cast<uint8_t>(*f);
-  }
-  if (auto id = args.integer("--table-id")) {
-    if (*id < 0 || *id > 0xFFFFFFFFll) throw UsageError("--table-id must be 0..4294967295");
-    req.table_id = static_cast<uint32_t>(*id);
-  }
-  for (const std::string& kv : args.values("--info")) {
-    const size_t eq = kv.find('=');
-    if (eq == std::string::npos || eq == 0) throw UsageError("--info takes KEY=VALUE");
-    req.info[kv.substr(0, eq)] = kv.substr(eq + 1);
-  }
+  model::cli::ParseImageOptions(args, &req);
   args.finish();
 
   const CsvTable csv = CsvTable::ParseFile(csv_path);

@@ -1,5 +1,6 @@
 // `volcomp evaluate diagonal`: ISO 230-6 diagonal displacement test evaluation.
 #include <iostream>
+#include <sstream>
 
 #include "commands.hpp"
 #include "volcomp/metrology/cli_support.hpp"
@@ -23,19 +24,23 @@ int RunEvaluateDiagonal(Args& args) {
   go.allow_few_approaches = allow_few;
   const m::DiagonalEvaluation ev = m::EvaluateDiagonals(table, go);
   m::PrintWarnings(std::cerr, ev.warnings);
-  if (json) {
-    JsonWriter j(std::cout);
+  std::ostringstream json_text;
+  {
+    JsonWriter j(json_text);
     m::WriteDiagonalJson(j, ev);
-    std::cout << "\n";
+  }
+  json_text << "\n";
+  if (json) {
+    std::cout << json_text.str();
   } else {
     m::WriteDiagonalText(std::cout, ev);
   }
   if (report_dir) {
     report::HtmlPage page("ISO 230-6 diagonal displacement test");
     m::AddDiagonalSections(&page, ev);
-    std::cerr << "report written to " << m::WriteReport(page, *report_dir, "diagonal.html") << "\n";
+    m::WriteReport(page, json_text.str(), *report_dir, m::DiagonalReportName(ev), std::cerr);
   }
-  return 0;
+  return kExitOk;
 }
 
 }  // namespace volcomp::tools

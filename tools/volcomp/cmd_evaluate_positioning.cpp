@@ -1,6 +1,7 @@
 // `volcomp evaluate positioning`: GOST 27843-88 / ISO 230-2:2014 positioning test evaluation.
 #include <iostream>
 #include <optional>
+#include <sstream>
 #include <vector>
 
 #include "commands.hpp"
@@ -9,6 +10,8 @@
 #include "volcomp/metrology/positioning_csv.hpp"
 #include "volcomp/metrology/positioning_eval.hpp"
 #include "volcomp/metrology/positioning_report.hpp"
+#include "volcomp/metrology/reading_checks.hpp"
+#include "volcomp/metrology/test_conditions.hpp"
 #include "volcomp/tools/json.hpp"
 
 namespace volcomp::tools {
@@ -18,8 +21,8 @@ namespace m = volcomp::metrology;
 int RunEvaluatePositioning(Args& args) {
   const bool json = args.flag("--json");
   const auto report_dir = args.value("--report");
-  const std::string standard = args.value("--standard").value_or("gost27843");
-  const std::string sigma = args.value("--sigma").value_or("formula");
+  const std::string standard = args.value("--standard").value();
+  const std::string sigma = args.value("--sigma").value();
   const auto axis_length = args.number("--axis-length-mm");
   const bool allow_few = args.flag("--allow-few-runs");
   const auto files = args.positionals();
@@ -46,15 +49,20 @@ int RunEvaluatePositioning(Args& args) {
   if (axis_length && !(*axis_length > 0.0)) throw UsageError("--axis-length-mm must be positive");
 
   const CsvTable table = m::ReadCsvArgument(files[0]);
+  const m::TestConditions conditions = m::ConditionsFromPreamble(table);
   const m::PositioningData data = m::ReadPositioningCsv(table);
   m::GroupingOptions go;
   go.allow_few_approaches = allow_few;
   const m::PositioningSet set = m::GroupReadings(data, go);
+  m::ReadingCheckOptions checks;
+  checks.travel = axis_length;
+  const std::vector<std::string> reading_warnings = m::CheckReadings(data, set, checks);
 
   std::vector<m::PositioningResult> results;
   for (const m::Standard s : standards) {
     eo.standard = s;
     m::PositioningResult r = m::EvaluatePositioning(set, eo);
+    for (const auto& w : reading_warnings) r.warnings.push_back(w);
     for (const auto& w : m::CheckPositionCount(set, s, axis_length)) r.warnings.push_back(w);
     for (const auto& w : m::CheckCardinalAngles(set)) r.warnings.push_back(w);
     results.push_back(std::move(r));
@@ -70,20 +78,30 @@ int RunEvaluatePositioning(Args& args) {
   }
   m::PrintWarnings(std::cerr, all_warnings);
 
-  if (json) {
-    JsonWriter j(std::cout);
+  const auto axis = conditions.Find("axis");
+  const std::string name =
+      "positioning_" + (axis ? m::SafeName(*axis) : m::SourceStem(table.source()));
+  std::ostringstream json_text;
+  {
+    JsonWriter j(json_text);
     j.begin_object();
     j.key("command").value("evaluate positioning");
+    j.key("name").value(name);
     j.key("source").value(table.source());
+    m::WriteConditionsJson(j, conditions);
     j.key("positions").value(static_cast<int64_t>(set.positions.size()));
     j.key("evaluations").begin_array();
     for (const auto& r : results) m::WritePositioningJson(j, r);
     j.end_array();
     j.end_object();
-    std::cout << "\n";
+  }
+  json_text << "\n";
+  if (json) {
+    std::cout << json_text.str();
   } else {
-    std::cout << "positioning test: " << table.source() << "\n"
-              << (set.kind == m::AxisKind::kLinear ? "linear" : "rotary") << " axis, "
+    std::cout << "positioning test: " << table.source() << "\n";
+    if (!conditions.empty()) std::cout << "conditions: " << m::ConditionsText(conditions) << "\n";
+    std::cout << (set.kind == m::AxisKind::kLinear ? "linear" : "rotary") << " axis, "
               << set.positions.size()
               << " target positions, directions: " << (set.has_up ? "↑" : "")
               << (set.has_down ? "↓" : "") << "\n\n";
@@ -93,14 +111,15 @@ int RunEvaluatePositioning(Args& args) {
     }
   }
   if (report_dir) {
-    report::HtmlPage page("Positioning test: " + table.source());
+    report::HtmlPage page("Positioning test" + (axis ? " of axis " + *axis : std::string()) + ": " +
+                          table.source());
     page.Paragraph(std::string(set.kind == m::AxisKind::kLinear ? "Linear" : "Rotary") + " axis, " +
                    std::to_string(set.positions.size()) + " target positions.");
+    m::AddConditionsSection(&page, conditions);
     for (const auto& r : results) m::AddPositioningSection(&page, r);
-    const std::string path = m::WriteReport(page, *report_dir, "positioning.html");
-    std::cerr << "report written to " << path << "\n";
+    m::WriteReport(page, json_text.str(), *report_dir, name, std::cerr);
   }
-  return 0;
+  return kExitOk;
 }
 
 }  // namespace volcomp::tools

@@ -1,12 +1,14 @@
 // `volcomp evaluate rotary`: ISO 230-7 error motions of a spindle or rotary axis.
 #include <iostream>
 #include <optional>
+#include <sstream>
 
 #include "commands.hpp"
 #include "volcomp/metrology/cli_support.hpp"
 #include "volcomp/metrology/rotary_data.hpp"
 #include "volcomp/metrology/rotary_eval.hpp"
 #include "volcomp/metrology/rotary_report.hpp"
+#include "volcomp/metrology/test_conditions.hpp"
 #include "volcomp/tools/json.hpp"
 
 namespace volcomp::tools {
@@ -35,7 +37,7 @@ int RunEvaluateRotary(Args& args) {
   const bool json = args.flag("--json");
   const auto report_dir = args.value("--report");
   m::RotaryOptions o;
-  const std::string sensitive = args.value("--sensitive").value_or("rotating");
+  const std::string sensitive = args.value("--sensitive").value();
   if (sensitive == "rotating") {
     o.sensitive = m::SensitiveDirection::kRotating;
   } else if (sensitive == "fixed") {
@@ -53,8 +55,8 @@ int RunEvaluateRotary(Args& args) {
   o.face_radius_mm = args.number("--face-radius-mm");
   o.min_zone = args.flag("--min-zone");
   const auto reversal_file = args.value("--reversal");
-  const std::string reversal_channel = args.value("--reversal-channel").value_or("x_um");
-  const std::string procedure = args.value("--reversal-procedure").value_or("P");
+  const std::string reversal_channel = args.value("--reversal-channel").value();
+  const std::string procedure = args.value("--reversal-procedure").value();
   const auto files = args.positionals();
   args.finish();
   if (files.size() != 1) throw UsageError("give exactly one data file (or - for stdin)");
@@ -66,8 +68,10 @@ int RunEvaluateRotary(Args& args) {
     throw UsageError("--face-radius-mm must be positive");
   }
 
-  const m::RotaryRecord rec = m::ReadRotaryCsv(m::ReadCsvArgument(files[0]));
-  const m::RotaryEvaluation ev = m::EvaluateRotary(rec, o);
+  const CsvTable table = m::ReadCsvArgument(files[0]);
+  const m::RotaryRecord rec = m::ReadRotaryCsv(table);
+  m::RotaryEvaluation ev = m::EvaluateRotary(rec, o);
+  ev.conditions = m::ConditionsFromPreamble(table);
   std::optional<m::ReversalResult> rev;
   if (reversal_file) {
     const m::RotaryRecord rec2 = m::ReadRotaryCsv(m::ReadCsvArgument(*reversal_file));
@@ -88,19 +92,24 @@ int RunEvaluateRotary(Args& args) {
         procedure == "P" ? m::ReversalProcedure::kP : m::ReversalProcedure::kS);
   }
   m::PrintWarnings(std::cerr, ev.warnings);
-  if (json) {
-    JsonWriter j(std::cout);
+  std::ostringstream json_text;
+  {
+    JsonWriter j(json_text);
     m::WriteRotaryJson(j, ev, rev);
-    std::cout << "\n";
+  }
+  json_text << "\n";
+  if (json) {
+    std::cout << json_text.str();
   } else {
     m::WriteRotaryText(std::cout, ev, rev);
   }
   if (report_dir) {
     report::HtmlPage page("ISO 230-7 error motion");
     m::AddRotarySections(&page, ev, rev);
-    std::cerr << "report written to " << m::WriteReport(page, *report_dir, "rotary.html") << "\n";
+    m::WriteReport(page, json_text.str(), *report_dir, "rotary_" + m::SourceStem(rec.source),
+                   std::cerr);
   }
-  return 0;
+  return kExitOk;
 }
 
 }  // namespace volcomp::tools

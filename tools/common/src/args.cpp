@@ -1,30 +1,139 @@
 // Command-line option parsing.
 #include "volcomp/tools/args.hpp"
 
+#include <cerrno>
+#include <cstdlib>
+
 #include "volcomp/tools/csv.hpp"
 
 namespace volcomp::tools {
 namespace {
+
 bool Matches(const std::string& arg, const std::string& name, const std::string& alias) {
   return arg == name || (!alias.empty() && arg == alias);
 }
+
+bool IsOptionName(const OptionSpec& o, const std::string& word) {
+  return word == o.name || (o.alias != nullptr && word == o.alias);
+}
+
 }  // namespace
 
-bool Args::flag(const std::string& name, const std::string& alias) {
-  bool found = false;
+bool IsNumberWord(const std::string& word) {
+  if (ParseDouble(word)) return true;
+  // Integers in any base strtoll accepts ("-0x10", "0755"), as `sdo write` values are.
+  if (word.empty()) return false;
+  errno = 0;
+  char* end = nullptr;
+  (void)std::strtoll(word.c_str(), &end, 0);
+  return end == word.c_str() + word.size() && errno == 0;
+}
+
+Args::Args(std::vector<std::string> args) : args_(std::move(args)), used_(args_.size()) {
   for (std::size_t i = 0; i < args_.size(); ++i) {
+    if (args_[i] == "--") {
+      end_of_options_ = i;
+      used_[i] = true;
+      break;
+    }
+  }
+}
+
+Args::Args(std::vector<std::string> args, const std::vector<OptionSpec>* spec)
+    : args_(std::move(args)), used_(args_.size()), spec_(spec), words_(args_.size()) {
+  std::vector<int> count(spec_->size(), 0);
+  for (std::size_t i = 0; i < args_.size(); ++i) {
+    const std::string& w = args_[i];
+    if (end_of_options_ < i) continue;  // positional after "--"
+    if (w == "--") {
+      words_[i].kind = Kind::kEndOfOptions;
+      end_of_options_ = i;
+      used_[i] = true;
+      continue;
+    }
+    if (w.size() < 2 || w[0] != '-' || IsNumberWord(w)) continue;  // positional
+    const std::size_t eq = w.rfind("--", 0) == 0 ? w.find('=') : std::string::npos;
+    const std::string name = w.substr(0, eq);
+    std::size_t k = 0;
+    while (k < spec_->size() && !IsOptionName((*spec_)[k], name)) ++k;
+    if (k == spec_->size()) throw UsageError("unknown option \"" + name + "\"");
+    const OptionSpec& o = (*spec_)[k];
+    if (++count[k] > 1 && !o.repeatable) {
+      throw UsageError(std::string("option ") + o.name + " is given twice");
+    }
+    words_[i].kind = Kind::kOption;
+    words_[i].option = k;
+    if (o.value == nullptr) {
+      if (eq != std::string::npos) {
+        throw UsageError(std::string("option ") + o.name + " takes no value");
+      }
+      continue;
+    }
+    if (eq != std::string::npos) {
+      words_[i].value = w.substr(eq + 1);
+      continue;
+    }
+    if (i + 1 >= args_.size() || args_[i + 1] == "--") {
+      throw UsageError(std::string("option ") + o.name + " needs a value (" + o.value + ")");
+    }
+    words_[i].value = args_[i + 1];
+    words_[++i].kind = Kind::kOptionValue;
+  }
+}
+
+const OptionSpec* Args::Declared(const std::string& name, bool want_value) const {
+  for (const OptionSpec& o : *spec_) {
+    if (!IsOptionName(o, name)) continue;
+    if ((o.value != nullptr) != want_value) {
+      throw std::logic_error("option " + name +
+                             (want_value ? " is declared as a flag" : " is declared with a value"));
+    }
+    return &o;
+  }
+  throw std::logic_error("option " + name + " is not declared in the command's option table");
+}
+
+std::vector<std::size_t> Args::Occurrences(const OptionSpec& o) const {
+  std::vector<std::size_t> out;
+  for (std::size_t i = 0; i < words_.size(); ++i) {
+    if (words_[i].kind == Kind::kOption && &(*spec_)[words_[i].option] == &o) out.push_back(i);
+  }
+  return out;
+}
+
+bool Args::flag(const std::string& name, const std::string& alias) {
+  if (spec_ != nullptr) {
+    const auto occ = Occurrences(*Declared(name, false));
+    for (std::size_t i : occ) used_[i] = true;
+    return !occ.empty();
+  }
+  bool found = false;
+  for (std::size_t i = 0; i < args_.size() && !AfterEnd(i); ++i) {
     if (!used_[i] && Matches(args_[i], name, alias)) used_[i] = found = true;
   }
   return found;
 }
 
 std::optional<std::string> Args::value(const std::string& name, const std::string& alias) {
+  if (spec_ != nullptr) {
+    const OptionSpec& o = *Declared(name, true);
+    std::optional<std::string> result;
+    for (std::size_t i : Occurrences(o)) {
+      used_[i] = true;
+      if (i + 1 < words_.size() && words_[i + 1].kind == Kind::kOptionValue) used_[i + 1] = true;
+      result = words_[i].value;
+    }
+    if (!result && o.default_value != nullptr) result = o.default_value;
+    return result;
+  }
   std::optional<std::string> result;
-  for (std::size_t i = 0; i < args_.size(); ++i) {
+  for (std::size_t i = 0; i < args_.size() && !AfterEnd(i); ++i) {
     if (used_[i]) continue;
     const std::string& a = args_[i];
     if (Matches(a, name, alias)) {
-      if (i + 1 >= args_.size()) throw UsageError("option " + a + " needs a value");
+      if (i + 1 >= args_.size() || i + 1 == end_of_options_) {
+        throw UsageError("option " + a + " needs a value");
+      }
       used_[i] = used_[i + 1] = true;
       result = args_[++i];
     } else if (a.rfind(name + "=", 0) == 0) {
@@ -40,10 +149,20 @@ std::optional<std::string> Args::value(const std::string& name, const std::strin
 
 std::vector<std::string> Args::values(const std::string& name) {
   std::vector<std::string> out;
-  for (std::size_t i = 0; i < args_.size(); ++i) {
+  if (spec_ != nullptr) {
+    for (std::size_t i : Occurrences(*Declared(name, true))) {
+      used_[i] = true;
+      if (i + 1 < words_.size() && words_[i + 1].kind == Kind::kOptionValue) used_[i + 1] = true;
+      out.push_back(words_[i].value);
+    }
+    return out;
+  }
+  for (std::size_t i = 0; i < args_.size() && !AfterEnd(i); ++i) {
     if (used_[i]) continue;
     if (args_[i] == name) {
-      if (i + 1 >= args_.size()) throw UsageError("option " + name + " needs a value");
+      if (i + 1 >= args_.size() || i + 1 == end_of_options_) {
+        throw UsageError("option " + name + " needs a value");
+      }
       used_[i] = used_[i + 1] = true;
       out.push_back(args_[++i]);
     } else if (args_[i].rfind(name + "=", 0) == 0) {
@@ -80,16 +199,25 @@ std::vector<std::string> Args::positionals() {
   std::vector<std::string> out;
   for (std::size_t i = 0; i < args_.size(); ++i) {
     if (used_[i]) continue;
-    if (args_[i].size() > 1 && args_[i][0] == '-') continue;
+    const std::string& w = args_[i];
+    const bool positional = spec_ != nullptr
+                                ? words_[i].kind == Kind::kPositional
+                                : AfterEnd(i) || w.size() < 2 || w[0] != '-' || IsNumberWord(w);
+    if (!positional) continue;
     used_[i] = true;
-    out.push_back(args_[i]);
+    out.push_back(w);
   }
   return out;
 }
 
 void Args::finish() const {
   for (std::size_t i = 0; i < args_.size(); ++i) {
-    if (!used_[i]) throw UsageError("unexpected argument \"" + args_[i] + "\"");
+    if (used_[i]) continue;
+    if (spec_ != nullptr && words_[i].kind == Kind::kOptionValue) continue;
+    if (spec_ != nullptr && words_[i].kind == Kind::kOption) {
+      throw UsageError("option " + args_[i] + " does not apply here");
+    }
+    throw UsageError("unexpected argument \"" + args_[i] + "\"");
   }
 }
 

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
+#include <regex>
 #include <sstream>
 
 namespace volcomp::tools {
@@ -61,6 +62,44 @@ bool SplitLine(const std::string& line, char sep, std::vector<std::string>* out)
   return true;
 }
 
+// "12,5", "-,5", "1,5e3": a number written with a decimal comma (and no point).
+bool IsDecimalCommaNumber(const std::string& field) {
+  static const std::regex kPattern(R"(\s*[+-]?(\d+,\d*|,\d+)([eE][+-]?\d+)?\s*)");
+  return std::regex_match(field, kPattern);
+}
+
+bool IsDecimalPointNumber(const std::string& field) {
+  static const std::regex kPattern(R"(\s*[+-]?(\d+\.\d*|\.\d+)([eE][+-]?\d+)?\s*)");
+  return std::regex_match(field, kPattern);
+}
+
+// `# key: value` before the header.
+std::optional<CsvPreambleEntry> PreambleEntry(const std::string& line, std::size_t line_no) {
+  static const std::regex kPattern(
+      R"(\s*#\s*([A-Za-z][A-Za-z0-9_]*(?: [A-Za-z0-9_]+){0,4})\s*:\s*(.*?)\s*)");
+  std::smatch m;
+  if (!std::regex_match(line, m, kPattern)) return std::nullopt;
+  return CsvPreambleEntry{m[1], m[2], line_no};
+}
+
+// Decides the decimal mark of a ';' or TAB separated file from its numbers.
+void DetectDecimalMark(CsvMeta* meta, const std::vector<CsvRow>& rows) {
+  if (meta->separator == ',') return;
+  for (const CsvRow& row : rows) {
+    for (std::size_t c = 0; c < row.fields().size(); ++c) {
+      if (IsDecimalCommaNumber(row.fields()[c])) {
+        meta->decimal_comma = true;
+        meta->decimal_line = row.line();
+        return;
+      }
+      if (IsDecimalPointNumber(row.fields()[c])) {
+        meta->decimal_line = row.line();
+        return;
+      }
+    }
+  }
+}
+
 }  // namespace
 
 std::optional<double> ParseDouble(const std::string& text) {
@@ -88,7 +127,29 @@ const std::string& CsvRow::text(const std::string& column) const {
 }
 
 double CsvRow::number(std::size_t column) const {
-  const auto v = ParseDouble(fields_.at(column));
+  const std::string& field = fields_.at(column);
+  std::optional<double> v;
+  if (meta_->decimal_comma && IsDecimalPointNumber(field)) {
+    throw meta_->error(line_, "column \"" + meta_->header[column] + "\": \"" + field +
+                                  "\" has a decimal point, but this file writes decimal commas "
+                                  "(line " +
+                                  std::to_string(meta_->decimal_line) +
+                                  "); use one decimal mark throughout");
+  }
+  if (meta_->decimal_comma && IsDecimalCommaNumber(field)) {
+    std::string dotted = field;
+    dotted[dotted.find(',')] = '.';
+    v = ParseDouble(dotted);
+  } else {
+    v = ParseDouble(field);
+  }
+  if (!v && meta_->separator != ',' && !meta_->decimal_comma && IsDecimalCommaNumber(field)) {
+    throw meta_->error(line_, "column \"" + meta_->header[column] + "\": \"" + field +
+                                  "\" has a decimal comma, but this file writes decimal points "
+                                  "(line " +
+                                  std::to_string(meta_->decimal_line) +
+                                  "); use one decimal mark throughout");
+  }
   if (!v) {
     throw meta_->error(line_, "column \"" + meta_->header[column] + "\": \"" + fields_[column] +
                                   "\" is not a number");
@@ -127,9 +188,14 @@ CsvTable CsvTable::Parse(std::istream& in, const std::string& source) {
     if (line_no == 1 && line.size() >= 3 && line.compare(0, 3, "\xEF\xBB\xBF") == 0) {
       line.erase(0, 3);  // UTF-8 byte-order mark
     }
-    if (IsSkippable(line)) continue;
+    if (IsSkippable(line)) {
+      if (meta->header.empty()) {
+        if (auto e = PreambleEntry(line, line_no)) meta->preamble.push_back(*e);
+      }
+      continue;
+    }
     if (meta->header.empty()) {
-      sep = DetectSeparator(line);
+      sep = meta->separator = DetectSeparator(line);
       if (!SplitLine(line, sep, &meta->header)) {
         throw meta->error(line_no, "unterminated quote in header");
       }
@@ -158,6 +224,7 @@ CsvTable CsvTable::Parse(std::istream& in, const std::string& source) {
   }
   if (in.bad()) throw InputError(source + ": read error");
   if (meta->header.empty()) throw InputError(source + ": no header line (empty input)");
+  DetectDecimalMark(meta.get(), t.rows_);
   t.meta_ = meta;
   return t;
 }

@@ -65,6 +65,11 @@ std::vector<char> ParseAxisList(const std::string& text, const std::string& opti
 std::vector<AxisDef> MakeAxisDefs(const std::vector<char>& names,
                                   const std::string& resolution_nm,
                                   const std::string& steps_per_unit) {
+  if (!resolution_nm.empty() && !steps_per_unit.empty()) {
+    throw UsageError(
+        "give either --resolution-nm or --steps-per-unit, not both (they state the same step "
+        "size twice and could disagree)");
+  }
   const auto res = resolution_nm.empty() ? std::map<char, std::string>()
                                          : ParseAxisAssignments(resolution_nm, "--resolution-nm");
   const auto spu = steps_per_unit.empty()

@@ -61,6 +61,11 @@ void CheckRequest(const ImageRequest& r) {
     throw InputError("image: 1 to 6 axes are needed, got " + std::to_string(r.axes.size()));
   }
   if (!r.grid && r.axis_tables.empty()) throw InputError("image: no GRID3 and no AXIS1D table");
+  if (r.table_id == kNoTableId) {
+    throw InputError(
+        "image: table id 0 is reserved (the board reports 0 in 0x2103 when no table is active); "
+        "ids start at 1");
+  }
   if (r.grid) {
     const auto& g = *r.grid;
     uint64_t nodes = 1;

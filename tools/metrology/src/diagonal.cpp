@@ -1,6 +1,7 @@
 // ISO 230-6 diagonal plans and evaluation.
 #include "volcomp/metrology/diagonal.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <set>
@@ -8,6 +9,7 @@
 #include <stdexcept>
 
 #include "volcomp/metrology/positioning_csv.hpp"
+#include "volcomp/metrology/reading_checks.hpp"
 #include "volcomp/report/format.hpp"
 
 namespace volcomp::metrology {
@@ -76,6 +78,7 @@ DiagonalEvaluation EvaluateDiagonals(const tools::CsvTable& table, const Groupin
   }
   DiagonalEvaluation ev;
   ev.source = table.source();
+  ev.conditions = ConditionsFromPreamble(table);
   std::vector<std::string> order;
   std::map<std::string, PositioningData> per;
   std::map<std::string, DiagonalName> names;
@@ -91,7 +94,11 @@ DiagonalEvaluation EvaluateDiagonals(const tools::CsvTable& table, const Groupin
     if (it == per.end()) {
       order.push_back(name->text);
       names[name->text] = *name;
-      it = per.emplace(name->text, PositioningData{all.source, AxisKind::kLinear, {}}).first;
+      PositioningData d;
+      d.source = all.source;
+      d.column = all.column;
+      d.column_scale = all.column_scale;
+      it = per.emplace(name->text, d).first;
     }
     it->second.readings.push_back(all.readings[i]);
   }
@@ -117,6 +124,11 @@ DiagonalEvaluation EvaluateDiagonals(const tools::CsvTable& table, const Groupin
     d.E = *d.evaluation.systematic;
     d.B = *d.evaluation.reversal_max;
     for (const auto& w : set.warnings) ev.warnings.push_back("diagonal " + key + ": " + w);
+    ReadingCheckOptions check;
+    check.travel = d.length_mm;
+    for (const auto& w : CheckReadings(data, set, check)) {
+      ev.warnings.push_back("diagonal " + key + ": " + w);
+    }
     const std::size_t need = RequiredTargets(d.length_mm);
     if (set.positions.size() < need) {
       ev.warnings.push_back("diagonal " + key +
@@ -160,6 +172,15 @@ DiagonalEvaluation EvaluateDiagonals(const tools::CsvTable& table, const Groupin
     }
   }
   return ev;
+}
+
+std::string DiagonalReportName(const DiagonalEvaluation& ev) {
+  std::vector<std::string> tokens;
+  for (const auto& d : ev.diagonals) tokens.push_back(DiagonalFileToken(d.name));
+  std::sort(tokens.begin(), tokens.end());
+  std::string name = "diagonal";
+  for (const auto& t : tokens) name += "_" + t;
+  return name;
 }
 
 }  // namespace volcomp::metrology

@@ -1,7 +1,9 @@
 // ISO 230-6 diagonal names.
 #include <cctype>
+#include <cmath>
 
 #include "volcomp/metrology/diagonal.hpp"
+#include "volcomp/report/format.hpp"
 #include "volcomp/tools/csv.hpp"
 
 namespace volcomp::metrology {
@@ -87,6 +89,64 @@ std::optional<DiagonalName> ParseDiagonalName(const std::string& raw) {
   const std::string value = t.substr(i);
   if (!tools::ParseDouble(value)) return std::nullopt;
   return Finish(signs, 2, value);
+}
+
+namespace {
+
+constexpr double kSameCoordinateMm = 1e-6;
+
+double Coordinate(const Vec3& p, int axis) { return axis == 0 ? p.x : axis == 1 ? p.y : p.z; }
+
+}  // namespace
+
+std::optional<DiagonalName> DiagonalNameFor(const Vec3& p1, const Vec3& p2) {
+  static const char* kAxes = "XYZ";
+  std::string text;
+  std::string offset;
+  for (int a = 0; a < 3; ++a) {
+    const double d = Coordinate(p2, a) - Coordinate(p1, a);
+    if (std::fabs(d) <= kSameCoordinateMm) {
+      offset += std::string(1, kAxes[a]) + report::FormatNumber(Coordinate(p1, a));
+      continue;
+    }
+    text += d < 0 ? '+' : '-';  // the start corner lies at the end P1 is at
+    text += kAxes[a];
+  }
+  if (text.size() < 4) return std::nullopt;
+  if (!offset.empty()) text += " " + offset;
+  return ParseDiagonalName(text);
+}
+
+std::optional<std::string> DiagonalNameMismatch(const DiagonalName& given,
+                                                const Vec3& p1,
+                                                const Vec3& p2) {
+  const auto derived = DiagonalNameFor(p1, p2);
+  if (!derived) return std::string("P1 and P2 differ in fewer than two axes: not a diagonal");
+  if (given.signs != derived->signs) {
+    return "\"" + given.text + "\" does not name the diagonal from P1 to P2, which starts at the " +
+           derived->text + " corner (" + (derived->body ? "body" : "face") + " diagonal " +
+           derived->text + ")";
+  }
+  if (!given.body && !given.offset.empty()) {
+    const int axis = given.offset[0] == 'X' ? 0 : given.offset[0] == 'Y' ? 1 : 2;
+    const auto value = tools::ParseDouble(given.offset.substr(1));
+    if (!value || std::fabs(*value - Coordinate(p1, axis)) > kSameCoordinateMm) {
+      return "\"" + given.text + "\" places the face diagonal at " + given.offset +
+             " but P1 and P2 lie at " + derived->offset;
+    }
+  }
+  return std::nullopt;
+}
+
+std::string DiagonalFileToken(const DiagonalName& name) {
+  std::string letters;
+  for (int s : name.signs) {
+    if (s != 0) letters += s > 0 ? 'P' : 'N';
+  }
+  if (name.body) return letters;
+  std::string token = name.plane + "_" + letters;
+  if (!name.offset.empty()) token += "_" + name.offset;
+  return token;
 }
 
 }  // namespace volcomp::metrology

@@ -35,6 +35,7 @@ void JsonGroup(tools::JsonWriter& j, const DiagonalGroupValue& g) {
 
 void WriteDiagonalText(std::ostream& out, const DiagonalEvaluation& ev) {
   out << "ISO 230-6 diagonal displacement test: " << ev.source << "\n";
+  if (!ev.conditions.empty()) out << "conditions: " << ConditionsText(ev.conditions) << "\n";
   out << "values in µm; E = bidirectional systematic positioning error, B = reversal value "
          "(ISO 230-2)\n\n";
   out << "  diagonal          kind   length mm  targets      E_i     B_i   E from max/min, B at\n";
@@ -66,6 +67,7 @@ void WriteDiagonalJson(tools::JsonWriter& j, const DiagonalEvaluation& ev) {
   j.key("command").value("evaluate diagonal");
   j.key("standard").value("ISO 230-6:2002");
   j.key("source").value(ev.source);
+  WriteConditionsJson(j, ev.conditions);
   j.key("unit").value("um");
   j.key("diagonals").begin_array();
   for (const auto& d : ev.diagonals) {
@@ -123,6 +125,8 @@ void AddDiagonalSections(report::HtmlPage* page, const DiagonalEvaluation& ev) {
                   ". Values in µm. E is the bidirectional systematic "
                   "positioning error and B the reversal value of ISO 230-2, evaluated along "
                   "each diagonal (ISO 230-6 §6).");
+  AddConditionsSection(page, ev.conditions);
+  page->Heading(2, "Results");
   std::vector<std::vector<std::string>> rows;
   if (ev.body) {
     rows.push_back({"E_d (body)", FormatFixed(ev.body->E_d, 2), ev.body->E_from});

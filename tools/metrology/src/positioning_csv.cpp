@@ -4,6 +4,7 @@
 #include <cmath>
 #include <map>
 #include <optional>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -44,14 +45,24 @@ std::string MeasurementNames() {
   return s;
 }
 
-double ToDeviation(const MeasurementColumn& m, double value, double target) {
-  if (!m.absolute) return value * m.scale;
-  double diff = value - target;
-  if (m.kind == AxisKind::kRotary) {
+double ToDeviation(
+    const CsvTable& t, const CsvRow& row, const MeasurementColumn& m, double value, double target) {
+  double diff = m.absolute ? value - target : value;
+  if (m.absolute && m.kind == AxisKind::kRotary) {
     diff = std::remainder(diff, 360.0);  // into [-180, 180]
     if (diff == -180.0) diff = 180.0;
   }
-  return diff * m.scale;
+  const double deviation = diff * m.scale;
+  if (!std::isfinite(deviation) || std::fabs(deviation) > kMaxReadingMagnitude) {
+    std::ostringstream s;
+    const std::string name = m.name;
+    s << "column \"" << name << "\": a deviation of " << diff << " "
+      << name.substr(name.rfind('_') + 1) << " cannot be a reading (the limit is ±"
+      << kMaxReadingMagnitude << " " << (m.kind == AxisKind::kLinear ? "µm" : "arc-seconds")
+      << "); refused";
+    throw t.error(row.line(), s.str());
+  }
+  return deviation;
 }
 
 int ParseRun(const CsvTable& t,
@@ -108,10 +119,12 @@ PositioningData ReadLong(const CsvTable& t) {
     }
     r.direction = *dir;
     r.run = ParseRun(t, row, row.text("run"), "run");
-    r.deviation = ToDeviation(*meas, row.number(meas->name), r.target);
+    r.deviation = ToDeviation(t, row, *meas, row.number(meas->name), r.target);
     d.readings.push_back(r);
   }
   if (d.readings.empty()) throw t.error(t.header_line(), "no data rows after the header");
+  d.column = meas->name;
+  d.column_scale = meas->scale;
   return d;
 }
 
@@ -176,15 +189,25 @@ PositioningData ReadWide(const CsvTable& t, const MeasurementColumn& meas) {
       r.target = targets[c - 1];
       r.direction = cols[c - 1].second;
       r.run = run;
-      r.deviation = ToDeviation(meas, row.number(c), r.target);
+      r.deviation = ToDeviation(t, row, meas, row.number(c), r.target);
       d.readings.push_back(r);
     }
   }
   if (d.readings.empty()) throw t.error(target_row.line(), "no readings after the target row");
+  d.column = meas.name;
+  d.column_scale = meas.scale;
   return d;
 }
 
 }  // namespace
+
+bool HoldsPositioningReadings(const CsvTable& table) {
+  const auto& header = table.header();
+  if (FindMeasurement(header.front()) && header.size() > 1 && ParseWideColumn(header[1])) {
+    return true;
+  }
+  return table.find("target_mm").has_value() || table.find("target_deg").has_value();
+}
 
 PositioningData ReadPositioningCsv(const CsvTable& table) {
   const auto& header = table.header();

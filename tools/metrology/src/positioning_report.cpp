@@ -13,21 +13,6 @@ namespace {
 
 using report::FormatFixed;
 
-// Characters as displayed: UTF-8 lead bytes, not counting combining marks (U+0300..U+036F).
-std::size_t DisplayWidth(const std::string& s) {
-  std::size_t w = 0;
-  for (std::size_t i = 0; i < s.size(); ++i) {
-    const auto c = static_cast<unsigned char>(s[i]);
-    if ((c & 0xC0) == 0x80) continue;
-    if (c == 0xCC ||
-        (c == 0xCD && i + 1 < s.size() && static_cast<unsigned char>(s[i + 1]) < 0xB0)) {
-      continue;  // combining diacritical mark
-    }
-    ++w;
-  }
-  return w;
-}
-
 std::string Num(double v) {
   std::ostringstream s;
   s.precision(10);
@@ -141,7 +126,7 @@ void WritePositioningText(std::ostream& out, const PositioningResult& r) {
   const std::string u = DeviationUnit(r.kind);
   out << StandardName(r.standard) << " (" << SigmaText(r) << "), values in " << u << "\n";
   for (const Parameter& p : Parameters(r)) {
-    const std::size_t width = DisplayWidth(p.symbol);
+    const std::size_t width = report::DisplayWidth(p.symbol);
     out << "  " << p.symbol << std::string(width < 8 ? 8 - width : 1, ' ') << "= "
         << FormatFixed(p.value, 2);
     if (p.span) {

@@ -37,6 +37,7 @@ void WriteRotaryText(std::ostream& out,
                      const RotaryEvaluation& ev,
                      const std::optional<ReversalResult>& reversal) {
   out << "ISO 230-7 error motion: " << ev.source << "\n";
+  if (!ev.conditions.empty()) out << "conditions: " << ConditionsText(ev.conditions) << "\n";
   out << ev.revolutions << " revolution(s) × " << ev.samples_per_revolution
       << " angles; values about PC, LSC" << (ev.options.min_zone ? ", MZ" : "")
       << "; * marks the preferred centre of Table 1\n";
@@ -90,6 +91,7 @@ void WriteRotaryJson(tools::JsonWriter& j,
   j.key("command").value("evaluate rotary");
   j.key("standard").value("ISO 230-7:2015");
   j.key("source").value(ev.source);
+  WriteConditionsJson(j, ev.conditions);
   j.key("revolutions").value(ev.revolutions);
   j.key("samples_per_revolution").value(ev.samples_per_revolution);
   j.key("sensitive_direction")
@@ -167,6 +169,7 @@ void AddRotarySections(report::HtmlPage* page,
                   " revolution(s) × " + std::to_string(ev.samples_per_revolution) +
                   " angles. Preferred centres per ISO 230-7 Table 1: radial and tilt LSC, axial "
                   "and face PC. The asynchronous value is measured along rays through PC.");
+  AddConditionsSection(page, ev.conditions);
   for (const auto& m : ev.measurements) {
     const ErrorMotion& em = m.motion;
     const int d = Decimals(m.unit);

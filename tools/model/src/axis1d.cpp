@@ -4,6 +4,9 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "volcomp/metrology/mean_deviations.hpp"
+#include "volcomp/metrology/positioning_csv.hpp"
+
 namespace volcomp::model {
 namespace {
 
@@ -45,6 +48,19 @@ double CorrectionAt(const std::vector<double>& pos,
 
 PositioningData PositioningFromCsv(const tools::CsvTable& csv) {
   PositioningData d;
+  if (!csv.find("position_mm") && !csv.find("position_deg") &&
+      metrology::HoldsPositioningReadings(csv)) {
+    const metrology::MeanDeviations m = metrology::MeanDeviationsFromCsv(csv);
+    d.rotary = m.kind == metrology::AxisKind::kRotary;
+    d.position = m.target;
+    d.dev_forward = m.mean_up;
+    d.dev_reverse = m.mean_down;
+    d.warnings = m.warnings;
+    if (d.position.size() < 2) {
+      throw csv.error(csv.header_line(), "a positioning test needs at least 2 target positions");
+    }
+    return d;
+  }
   std::string pos_col = "position_mm", fwd_col = "dev_forward_um", rev_col = "dev_reverse_um";
   if (csv.find("position_deg")) {
     d.rotary = true;

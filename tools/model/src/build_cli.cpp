@@ -132,7 +132,9 @@ void ParseImageOptions(tools::Args& args, image::ImageRequest* request) {
     request->frac_bits = static_cast<uint8_t>(*f);
   }
   if (auto id = args.integer("--table-id")) {
-    if (*id < 0 || *id > 0xFFFFFFFFll) throw UsageError("--table-id must be 0..4294967295");
+    if (*id < 1 || *id > 0xFFFFFFFFll) {
+      throw UsageError("--table-id must be 1..4294967295 (0 means no table active)");
+    }
     request->table_id = static_cast<uint32_t>(*id);
   }
   for (const std::string& kv : args.values("--info")) {

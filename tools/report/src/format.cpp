@@ -59,4 +59,23 @@ std::string EscapeXml(const std::string& text) {
   return out;
 }
 
+std::size_t DisplayWidth(const std::string& s) {
+  std::size_t w = 0;
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    const auto c = static_cast<unsigned char>(s[i]);
+    if ((c & 0xC0) == 0x80) continue;
+    if (c == 0xCC ||
+        (c == 0xCD && i + 1 < s.size() && static_cast<unsigned char>(s[i + 1]) < 0xB0)) {
+      continue;  // combining diacritical mark
+    }
+    ++w;
+  }
+  return w;
+}
+
+std::string PadRight(const std::string& text, std::size_t width) {
+  const std::size_t w = DisplayWidth(text);
+  return w >= width ? text : text + std::string(width - w, ' ');
+}
+
 }  // namespace volcomp::report

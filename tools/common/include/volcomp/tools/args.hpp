@@ -1,9 +1,27 @@
 // Command-line options for the PC tool: `--name value`, `--name=value`, flags and positionals.
 //
-// Usage: Args a(argv_vector); auto out = a.value("-o", "--output"); bool json = a.flag("--json");
-// a.finish() throws UsageError for anything left unconsumed, so typos are never ignored.
+// Every `volcomp` command declares its options in one table of OptionSpec rows
+// (tools/volcomp/commands.cpp). The same rows drive `volcomp help COMMAND` and this parser, so
+// the help cannot disagree with what is parsed. With a table, Args classifies the words once:
+//   - a word naming a declared option is that option; a value option takes the next word as its
+//     value whatever it looks like (`--tool-offset-mm -1,2,3`, `--name -X-Y-Z`), or the text
+//     after '=' (`--name=-X-Y-Z`); a flag takes no value;
+//   - `--` ends the options: every later word is a positional argument;
+//   - "-" (standard input) and every word that parses as a number (`-5000`, `-0.5`, `-1e3`,
+//     `-0x10`) are positional arguments;
+//   - any other word starting with '-' is an unknown option (UsageError naming it);
+//   - a non-repeatable option given twice is a UsageError;
+//   - an absent option with a declared default yields that default, so the default shown by the
+//     help is the one in force.
+// Asking for an option the table does not declare is a programming error (std::logic_error).
+// Without a table (`Args(words)`, used by in-process tests and other tools) options are
+// recognised as they are queried, with the same rules for numbers and `--`.
+//
+// Usage: auto out = a.value("-o", "--output"); bool json = a.flag("--json"); a.finish();
+// finish() throws UsageError for anything given but not consumed, so typos are never ignored.
 #pragma once
 
+#include <cstddef>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -16,14 +34,29 @@ class UsageError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+/// One option of a command, as parsed and as shown by `volcomp help COMMAND`.
+struct OptionSpec {
+  const char* name;                     // "--pitch"
+  const char* alias = nullptr;          // "-o", or nullptr
+  const char* value = nullptr;          // value placeholder ("P", "FILE"); nullptr = a flag
+  const char* unit = nullptr;           // unit of the value ("mm", "µm", "deg"); nullptr = none
+  const char* default_value = nullptr;  // used when absent; nullptr = no default (absent is absent)
+  const char* help = "";                // what it does; mention conditional defaults here
+  bool repeatable = false;              // may be given more than once (values())
+};
+
 class Args {
  public:
-  explicit Args(std::vector<std::string> args) : args_(std::move(args)), used_(args_.size()) {}
+  /// Options recognised as they are queried (no table).
+  explicit Args(std::vector<std::string> args);
+  /// Options classified against `spec` (which must outlive this object); throws UsageError for
+  /// an unknown option, a missing value, a value given to a flag or a repeated option.
+  Args(std::vector<std::string> args, const std::vector<OptionSpec>* spec);
 
   /// True when `name` (or `alias`) is present as a flag; consumes it.
   bool flag(const std::string& name, const std::string& alias = "");
-  /// Value of `--name value` or `--name=value`; nullopt when absent; UsageError when the value is
-  /// missing. The last occurrence wins.
+  /// Value of `--name value` or `--name=value`; the declared default when absent (nullopt when
+  /// there is none); UsageError when the value is missing.
   std::optional<std::string> value(const std::string& name, const std::string& alias = "");
   /// Every value of a repeatable option, in order.
   std::vector<std::string> values(const std::string& name);
@@ -38,8 +71,24 @@ class Args {
   void finish() const;
 
  private:
+  enum class Kind { kPositional, kOption, kOptionValue, kEndOfOptions };
+  struct Word {
+    Kind kind = Kind::kPositional;
+    std::size_t option = 0;  // index into spec_ for kOption
+    std::string value;       // kOption: its value (value options)
+  };
+  const OptionSpec* Declared(const std::string& name, bool want_value) const;
+  std::vector<std::size_t> Occurrences(const OptionSpec& o) const;
+  bool AfterEnd(std::size_t i) const { return i > end_of_options_; }
+
   std::vector<std::string> args_;
   std::vector<bool> used_;
+  const std::vector<OptionSpec>* spec_ = nullptr;
+  std::vector<Word> words_;  // with a table: the classification of args_
+  std::size_t end_of_options_ = static_cast<std::size_t>(-1);  // index of "--", or none
 };
+
+/// True for a word that parses as a number (a value, never an option), e.g. "-5000".
+bool IsNumberWord(const std::string& word);
 
 }  // namespace volcomp::tools

@@ -5,6 +5,15 @@
 // blank lines are skipped, CRLF line ends are accepted. The first non-comment line is the header.
 // Every data row must have as many fields as the header. Errors carry the 1-based line number of
 // the input and name the column, e.g. `points.csv:12: column "dz_um": "abc" is not a number`.
+//
+// Decimal comma (Russian/European spreadsheets): in a ';' or TAB separated file, numbers may be
+// written "150,71". The file's decimal mark is detected from its data: a file that writes one
+// number with a decimal comma must write them all so; a decimal point there is an error naming
+// both lines (a ',' separated file cannot hold decimal commas).
+//
+// Preamble: comment lines before the header of the form `# key: value` (key: a letter, then up to
+// four words of letters, digits and '_') are kept in order as the file's preamble, e.g. the test
+// conditions of a measurement (`# machine: MILL-7`, `# air temperature C: 20.4`).
 #pragma once
 
 #include <cstddef>
@@ -33,6 +42,8 @@ class CsvRow {
   std::size_t line() const { return line_; }
   /// Raw text of a field by column index.
   const std::string& text(std::size_t column) const { return fields_.at(column); }
+  /// Every field's raw text, in header order.
+  const std::vector<std::string>& fields() const { return fields_; }
   /// Raw text of a named column (throws InputError if the header has no such column).
   const std::string& text(const std::string& column) const;
   /// Field parsed as a finite double; throws InputError naming line and column otherwise.
@@ -50,11 +61,22 @@ class CsvRow {
   std::vector<std::string> fields_;
 };
 
+/// One `# key: value` line of the preamble.
+struct CsvPreambleEntry {
+  std::string key;
+  std::string value;
+  std::size_t line = 0;
+};
+
 /// Source name and header shared by a table and its rows.
 struct CsvMeta {
   std::string source;
   std::size_t header_line = 0;
   std::vector<std::string> header;
+  char separator = ',';
+  bool decimal_comma = false;    // numbers are written "1,5" (';' or TAB separated files only)
+  std::size_t decimal_line = 0;  // first line whose numbers show the file's decimal mark
+  std::vector<CsvPreambleEntry> preamble;
 
   std::optional<std::size_t> find(const std::string& column) const;
   std::size_t require(const std::string& column) const;
@@ -73,6 +95,9 @@ class CsvTable {
   const std::vector<std::string>& header() const { return meta_->header; }
   const std::vector<CsvRow>& rows() const { return rows_; }
   std::size_t header_line() const { return meta_->header_line; }
+  char separator() const { return meta_->separator; }
+  bool decimal_comma() const { return meta_->decimal_comma; }
+  const std::vector<CsvPreambleEntry>& preamble() const { return meta_->preamble; }
 
   /// Index of a column (exact, case-sensitive match after trimming), or nullopt.
   std::optional<std::size_t> find(const std::string& column) const { return meta_->find(column); }

@@ -25,8 +25,8 @@ std::vector<char> ParseAxisList(const std::string& text, const std::string& opti
 /// Rotary axes by ISO 841 convention: A, B, C.
 bool IsRotaryName(char name);
 
-/// Builds AxisDefs for `names` from --resolution-nm / --steps-per-unit strings (either may be
-/// empty; every axis needs one of them). Throws UsageError.
+/// Builds AxisDefs for `names` from --resolution-nm / --steps-per-unit strings (exactly one of
+/// them non-empty; it must name every axis). Throws UsageError, also when both are given.
 std::vector<AxisDef> MakeAxisDefs(const std::vector<char>& names,
                                   const std::string& resolution_nm,
                                   const std::string& steps_per_unit);

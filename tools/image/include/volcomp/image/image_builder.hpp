@@ -52,8 +52,11 @@ struct AxisCorrections {
   uint32_t wrap_period_steps = 0;     // rotary wrap-around: 0 = none, else == (nodes-1)*spacing
 };
 
+/// The id the board reports in 0x2103 when no table is active; images carry ids from 1.
+inline constexpr uint32_t kNoTableId = 0;
+
 struct ImageRequest {
-  uint32_t table_id = 0;
+  uint32_t table_id = 1;      // 1..0xFFFFFFFF (kNoTableId is refused)
   std::vector<AxisDef> axes;  // 1..6
   std::optional<GridCorrections> grid;
   std::vector<AxisCorrections> axis_tables;

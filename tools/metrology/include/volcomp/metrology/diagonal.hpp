@@ -17,6 +17,7 @@
 
 #include "volcomp/metrology/positioning_data.hpp"
 #include "volcomp/metrology/positioning_eval.hpp"
+#include "volcomp/metrology/test_conditions.hpp"
 #include "volcomp/tools/csv.hpp"
 
 namespace volcomp::metrology {
@@ -39,6 +40,21 @@ std::optional<DiagonalName> ParseDiagonalName(const std::string& text);
 struct Vec3 {
   double x = 0.0, y = 0.0, z = 0.0;  // mm
 };
+
+/// The name of the diagonal from P1 to P2: its start corner, i.e. per axis '+' when P1 lies at
+/// the positive end (P1 > P2), '-' at the negative end; an axis with P1 = P2 is not involved and
+/// gives a face diagonal with its fixed coordinate ("+X-Y Z300"). nullopt when fewer than two
+/// axes move (not a diagonal).
+std::optional<DiagonalName> DiagonalNameFor(const Vec3& p1, const Vec3& p2);
+
+/// Whether `given` names the diagonal from P1 to P2: same start corner (and plane), and the same
+/// fixed coordinate when `given` states one. On mismatch returns a message saying why.
+std::optional<std::string> DiagonalNameMismatch(const DiagonalName& given,
+                                                const Vec3& p1,
+                                                const Vec3& p2);
+
+/// A file-name-safe token: body "+X+Y-Z" -> "PPN"; face "+X-Y Z300" -> "XY_PN_Z300".
+std::string DiagonalFileToken(const DiagonalName& name);
 
 /// Target positions along the diagonal from P1 to P2 with increment I_d (§5.2).
 struct DiagonalPlan {
@@ -79,6 +95,7 @@ struct DiagonalGroupValue {
 
 struct DiagonalEvaluation {
   std::string source;
+  TestConditions conditions;               // from the file's preamble
   std::vector<DiagonalResult> diagonals;   // in order of first appearance in the file
   std::optional<DiagonalGroupValue> body;  // E_d, B_d over the body diagonals
   std::vector<DiagonalGroupValue> faces;   // E_d(ab), B_d(ab) per plane (and offset)
@@ -89,7 +106,13 @@ struct DiagonalEvaluation {
 /// diagonal of each row (target_mm = distance from the diagonal's start), checks every
 /// diagonal (both directions, ≥ min_approaches per target and direction, same targets in every
 /// run, §5.2 target count) and evaluates it. Throws tools::InputError with the line for a bad
-/// diagonal name or any of the checks of GroupReadings().
+/// diagonal name or any of the checks of GroupReadings(). The reading checks of
+/// reading_checks.hpp (implausible magnitude along the diagonal's length, Grubbs outliers) and
+/// the preamble's test conditions go into the result.
 DiagonalEvaluation EvaluateDiagonals(const tools::CsvTable& table, const GroupingOptions& options);
+
+/// The base name of the report of `ev`: "diagonal_" and the file tokens of its diagonals, sorted
+/// ("diagonal_NNN_NPN_PNN_PPN" for the four body diagonals).
+std::string DiagonalReportName(const DiagonalEvaluation& ev);
 
 }  // namespace volcomp::metrology

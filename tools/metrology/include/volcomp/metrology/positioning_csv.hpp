@@ -32,4 +32,7 @@ namespace volcomp::metrology {
 /// problem for a missing or conflicting column, a bad number, direction or run index.
 PositioningData ReadPositioningCsv(const tools::CsvTable& table);
 
+/// True when `table` has the header of raw positioning readings (either layout above).
+bool HoldsPositioningReadings(const tools::CsvTable& table);
+
 }  // namespace volcomp::metrology

@@ -20,10 +20,17 @@ struct PositioningReading {
   std::size_t line = 0;    // 1-based line in the source file, for messages
 };
 
+/// Largest deviation magnitude a reading may have, in µm or arc-seconds (1 km; 2.8e5 degrees):
+/// beyond it a value is not a measurement and the statistics would lose all precision, so the
+/// reader refuses it (as it refuses non-finite values).
+inline constexpr double kMaxReadingMagnitude = 1e9;
+
 struct PositioningData {
   std::string source;  // file name, for messages
   AxisKind kind = AxisKind::kLinear;
   std::vector<PositioningReading> readings;
+  std::string column = "deviation_um";  // the measurement column as named in the file
+  double column_scale = 1.0;            // one unit of that column in µm or arc-seconds
 };
 
 /// The approaches to one target position in one direction, ordered by run.

@@ -20,6 +20,7 @@
 #include "volcomp/metrology/error_motion.hpp"
 #include "volcomp/metrology/polar_fit.hpp"
 #include "volcomp/metrology/rotary_data.hpp"
+#include "volcomp/metrology/test_conditions.hpp"
 
 namespace volcomp::metrology {
 
@@ -54,6 +55,7 @@ struct RadialFundamentals {
 
 struct RotaryEvaluation {
   std::string source;
+  TestConditions conditions;  // of the main file's preamble (set by the caller)
   int revolutions = 0;
   int samples_per_revolution = 0;
   RotaryOptions options;

@@ -20,4 +20,20 @@ double Range(const std::vector<double>& v);
 /// 1/d2(10) = 1/3.078 = 0.3249 is used (digit transposition in the print).
 std::optional<double> GostRangeCoefficient(int n);
 
+/// Cumulative distribution of Student's t with `dof` ≥ 1 degrees of freedom:
+/// F(t) = 1 − ½·I_x(dof/2, ½) for t ≥ 0, x = dof/(dof + t²) (Abramowitz & Stegun 26.7.1 with
+/// 26.5.27), the regularized incomplete beta function I_x evaluated by its continued fraction
+/// (A&S 26.5.8).
+double StudentTCdf(double t, int dof);
+
+/// The quantile t_{p, dof}: F(t) = p, for 0 < p < 1 (bisection on StudentTCdf to 1e-12).
+double StudentTQuantile(double p, int dof);
+
+/// Critical value of Grubbs' test for one outlier in a normal sample of n ≥ 3, two-sided at
+/// significance `alpha` (0.01 = "at 99 %"): G_crit = (n − 1)/√n · √(t² / (n − 2 + t²)) with
+/// t = t_{1 − α/(2n), n − 2} (Grubbs 1969, Technometrics 11(1); NIST/SEMATECH e-Handbook of
+/// Statistical Methods §1.3.5.17). The sample's G = max|x_i − x̄|/s (n − 1 divisor) above G_crit
+/// marks the most extreme value an outlier.
+double GrubbsCritical(int n, double alpha);
+
 }  // namespace volcomp::metrology

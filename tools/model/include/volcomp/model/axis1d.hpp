@@ -1,11 +1,12 @@
 // 1-D axis tables (AXIS1D) from bidirectional positioning tests (ISO 230-2 / GOST 27843-88).
 //
 // Input: per target position P_j the mean positional deviations x̄↑_j (approach in the positive
-// direction) and x̄↓_j (negative), deviation = actual − target. The metrology evaluation of the
-// raw runs lives elsewhere (tools/metrology); this takes its result, or a hand-made CSV:
+// direction) and x̄↓_j (negative), deviation = actual − target, either as a CSV of means:
 //   linear axis: position_mm, dev_forward_um [, dev_reverse_um]
 //   rotary axis: position_deg, dev_forward_arcsec [, dev_reverse_arcsec]
-// (samples/model/positioning_x.csv).
+// (samples/model/positioning_x.csv), or as the raw readings `volcomp evaluate positioning` reads
+// (target_mm|target_deg, direction, run, deviation_um ...; tools/metrology averages them with the
+// same checks and warnings as the evaluation).
 //
 // Output: corrections on an equally spaced lattice (the image stores nodes at a fixed spacing,
 // while test positions are usually irregular on purpose): the correction c(t) = q − t where the
@@ -26,9 +27,10 @@ namespace volcomp::model {
 
 struct PositioningData {
   bool rotary = false;
-  std::vector<double> position;     // mm or deg, increasing
-  std::vector<double> dev_forward;  // µm or arcsec
-  std::vector<double> dev_reverse;  // empty when only one direction was measured
+  std::vector<double> position;       // mm or deg, increasing
+  std::vector<double> dev_forward;    // µm or arcsec
+  std::vector<double> dev_reverse;    // empty when only one direction was measured
+  std::vector<std::string> warnings;  // from the checks of raw readings (outliers, ...)
 };
 
 PositioningData PositioningFromCsv(const tools::CsvTable& csv);

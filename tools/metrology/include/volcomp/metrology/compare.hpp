@@ -1,0 +1,76 @@
+// Before/after comparison of evaluation results (`volcomp report compare BEFORE AFTER -o DIR`).
+//
+// Inputs are the JSON results `volcomp evaluate positioning|diagonal --report DIR` writes next to
+// its HTML (DIR/positioning_X.json, DIR/diagonal_NNN_NPN_PNN_PPN.json, ...), or such files given
+// directly. Results of two directories are paired by file name; two files are paired with each
+// other. Per pair every parameter is listed before and after with its reduction
+// 100·(|before| − |after|)/|before| %: for positioning each parameter of each standard evaluated
+// in both (A, R, B ... of GOST 27843; E, M, A, R, B ... of ISO 230-2), for diagonals E_i and B_i
+// of each diagonal and E_d, B_d of the body diagonals and of each face plane. Test conditions of
+// both are shown side by side; results without a partner are named in warnings.
+#pragma once
+
+#include <optional>
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include "volcomp/report/html_page.hpp"
+#include "volcomp/tools/json_reader.hpp"
+
+namespace volcomp::metrology {
+
+struct LoadedResult {
+  std::string name;  // file stem: the report's name
+  std::string path;
+  tools::JsonValue json;
+};
+
+/// The results in `path`: a directory (its *.json files of positioning and diagonal results,
+/// by name) or one .json file. Throws tools::InputError naming the path for anything else.
+std::vector<LoadedResult> LoadResults(const std::string& path);
+
+struct ComparedValue {
+  std::string symbol;   // "A", "E_d", "E_i"
+  std::string meaning;  // "accuracy of bidirectional positioning ..." or the diagonal's name
+  double before = 0.0;
+  double after = 0.0;
+  std::optional<double> reduction_pct;  // nullopt when before is 0
+};
+
+struct ComparedTable {
+  std::string title;  // "GOST 27843-88", "body diagonals", "diagonal -X-Y-Z"
+  std::string unit;   // "µm" or "″"
+  std::vector<ComparedValue> values;
+};
+
+struct ComparedSeries {  // mean deviation per target before and after, for a chart
+  std::string title;
+  std::string x_label;
+  std::string unit;
+  std::vector<double> x_before, up_before, down_before;
+  std::vector<double> x_after, up_after, down_after;
+};
+
+struct ComparedResult {
+  std::string name;  // positioning_X, diagonal_NNN_NPN_PNN_PPN
+  std::string kind;  // "positioning" or "diagonal"
+  std::string before_source, after_source;
+  std::vector<std::pair<std::string, std::string>> conditions_before, conditions_after;
+  std::vector<ComparedTable> tables;
+  std::vector<ComparedSeries> series;
+};
+
+struct Comparison {
+  std::vector<ComparedResult> results;
+  std::vector<std::string> warnings;  // unpaired or mismatched results
+};
+
+/// Pairs and compares; throws tools::InputError when nothing can be paired.
+Comparison CompareResults(const std::vector<LoadedResult>& before,
+                          const std::vector<LoadedResult>& after);
+
+void WriteComparisonText(std::ostream& out, const Comparison& comparison);
+void AddComparisonSections(report::HtmlPage* page, const Comparison& comparison);
+
+}  // namespace volcomp::metrology

@@ -1,0 +1,29 @@
+// Mean positional deviations per target and direction (x̄↑_j, x̄↓_j) from the raw readings of a
+// positioning test: the input of 1-D axis tables (`volcomp build axis`), computed from the same
+// readings, with the same checks and warnings, as `volcomp evaluate positioning`.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "volcomp/metrology/direction.hpp"
+#include "volcomp/tools/csv.hpp"
+
+namespace volcomp::metrology {
+
+struct MeanDeviations {
+  AxisKind kind = AxisKind::kLinear;
+  std::vector<double> target;     // P_j ascending, mm or degrees
+  std::vector<double> mean_up;    // x̄↑_j, µm or arc-seconds
+  std::vector<double> mean_down;  // x̄↓_j; empty when the test has ↑ approaches only
+  int runs = 0;                   // largest number of approaches per target and direction
+  std::vector<std::string> warnings;
+};
+
+/// Reads (positioning_csv.hpp), groups and checks (GroupReadings: ≥ 5 approaches per target and
+/// direction, same targets in every run; reading_checks.hpp) and averages. Throws
+/// tools::InputError naming the line, also when the test has no ↑ approaches (the forward table
+/// needs them).
+MeanDeviations MeanDeviationsFromCsv(const tools::CsvTable& table);
+
+}  // namespace volcomp::metrology

@@ -1,0 +1,384 @@
+// Before/after comparison of evaluation results.
+#include "volcomp/metrology/compare.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "volcomp/report/format.hpp"
+#include "volcomp/report/xy_chart.hpp"
+#include "volcomp/tools/csv.hpp"
+
+namespace volcomp::metrology {
+namespace {
+
+using tools::InputError;
+using tools::JsonValue;
+
+std::string ReadAll(const std::string& path) {
+  std::ifstream f(path, std::ios::binary);
+  if (!f) throw InputError(path + ": cannot open");
+  std::stringstream s;
+  s << f.rdbuf();
+  return s.str();
+}
+
+std::string Command(const JsonValue& j) {
+  const JsonValue* c = j.get("command");
+  return c != nullptr && c->is_string() ? c->string : std::string();
+}
+
+std::string Text(const JsonValue* v) {
+  return v != nullptr && v->is_string() ? v->string : std::string();
+}
+
+std::optional<double> Number(const JsonValue* v) {
+  if (v == nullptr || !v->is_number()) return std::nullopt;
+  return v->number;
+}
+
+ComparedValue Value(const std::string& symbol, const std::string& meaning, double b, double a) {
+  ComparedValue v{symbol, meaning, b, a, std::nullopt};
+  if (std::fabs(b) > 0.0) v.reduction_pct = 100.0 * (std::fabs(b) - std::fabs(a)) / std::fabs(b);
+  return v;
+}
+
+std::vector<std::pair<std::string, std::string>> Conditions(const JsonValue& j) {
+  std::vector<std::pair<std::string, std::string>> out;
+  if (const JsonValue* c = j.get("conditions")) {
+    for (const auto& [k, v] : c->object) out.emplace_back(k, Text(&v));
+  }
+  return out;
+}
+
+const JsonValue* FindByKey(const JsonValue* array,
+                           const std::string& key,
+                           const std::string& text) {
+  if (array == nullptr) return nullptr;
+  for (const JsonValue& e : array->array) {
+    if (Text(e.get(key)) == text) return &e;
+  }
+  return nullptr;
+}
+
+// Mean deviations per target of one evaluation (or one diagonal): x, ↑, ↓.
+void MeanCurves(const JsonValue* positions,
+                const std::string& x_key,
+                bool diagonal,
+                std::vector<double>* x,
+                std::vector<double>* up,
+                std::vector<double>* down) {
+  if (positions == nullptr) return;
+  for (const JsonValue& p : positions->array) {
+    const auto t = Number(p.get(x_key));
+    if (!t) continue;
+    x->push_back(*t);
+    std::optional<double> u, d;
+    if (diagonal) {
+      u = Number(p.get("mean_up"));
+      d = Number(p.get("mean_down"));
+    } else {
+      if (const JsonValue* s = p.get("up")) u = Number(s->get("mean"));
+      if (const JsonValue* s = p.get("down")) d = Number(s->get("mean"));
+    }
+    up->push_back(u.value_or(NAN));
+    down->push_back(d.value_or(NAN));
+  }
+}
+
+void ComparePositioning(const JsonValue& b,
+                        const JsonValue& a,
+                        ComparedResult* r,
+                        std::vector<std::string>* warnings) {
+  const JsonValue* eb = b.get("evaluations");
+  const JsonValue* ea = a.get("evaluations");
+  if (eb == nullptr || ea == nullptr) return;
+  for (const JsonValue& before : eb->array) {
+    const std::string standard = Text(before.get("standard"));
+    const JsonValue* after = FindByKey(ea, "standard", standard);
+    if (after == nullptr) {
+      warnings->push_back(r->name + ": " + standard + " only in the before results");
+      continue;
+    }
+    const bool linear = Text(before.get("deviation_unit")) != "arcsec";
+    ComparedTable t{standard, linear ? "µm" : "″", {}};
+    const JsonValue* pb = before.get("parameters");
+    const JsonValue* pa = after->get("parameters");
+    if (pb == nullptr || pa == nullptr) continue;
+    for (const auto& [key, param] : pb->object) {
+      const JsonValue* other = pa->get(key);
+      const auto vb = Number(param.get("value"));
+      const auto va = other != nullptr ? Number(other->get("value")) : std::nullopt;
+      if (!vb || !va) continue;
+      t.values.push_back(Value(Text(param.get("symbol")), Text(param.get("meaning")), *vb, *va));
+    }
+    r->tables.push_back(t);
+    if (r->series.empty()) {
+      ComparedSeries s;
+      const std::string tu = Text(before.get("target_unit"));
+      s.title = r->name + ": mean deviations before and after";
+      s.x_label = "target position, " + tu;
+      s.unit = t.unit;
+      MeanCurves(before.get("positions"), "target_" + tu, false, &s.x_before, &s.up_before,
+                 &s.down_before);
+      MeanCurves(after->get("positions"), "target_" + tu, false, &s.x_after, &s.up_after,
+                 &s.down_after);
+      r->series.push_back(s);
+    }
+  }
+}
+
+void AddGroup(const std::string& title,
+              const JsonValue* gb,
+              const JsonValue* ga,
+              ComparedResult* r) {
+  if (gb == nullptr || ga == nullptr || !gb->is_object() || !ga->is_object()) return;
+  ComparedTable t{title, "µm", {}};
+  for (const char* key : {"E_d", "B_d"}) {
+    const auto vb = Number(gb->get(key));
+    const auto va = Number(ga->get(key));
+    if (vb && va) {
+      t.values.push_back(Value(key,
+                               Text(gb->get(std::string(key) + "_from")) + " → " +
+                                   Text(ga->get(std::string(key) + "_from")),
+                               *vb, *va));
+    }
+  }
+  if (!t.values.empty()) r->tables.push_back(t);
+}
+
+void CompareDiagonals(const JsonValue& b,
+                      const JsonValue& a,
+                      ComparedResult* r,
+                      std::vector<std::string>* warnings) {
+  AddGroup("body diagonals", b.get("body"), a.get("body"), r);
+  if (const JsonValue* fb = b.get("faces")) {
+    const JsonValue* fa = a.get("faces");
+    for (const auto& [plane, g] : fb->object) {
+      AddGroup("face " + plane, &g, fa != nullptr ? fa->get(plane) : nullptr, r);
+    }
+  }
+  ComparedTable each{"each diagonal", "µm", {}};
+  const JsonValue* db = b.get("diagonals");
+  const JsonValue* da = a.get("diagonals");
+  if (db == nullptr) return;
+  for (const JsonValue& d : db->array) {
+    const std::string name = Text(d.get("name"));
+    const JsonValue* other = FindByKey(da, "name", name);
+    if (other == nullptr) {
+      warnings->push_back(r->name + ": diagonal " + name + " only in the before results");
+      continue;
+    }
+    for (const char* key : {"E", "B"}) {
+      const JsonValue* vb = d.get(key);
+      const JsonValue* va = other->get(key);
+      const auto nb = vb != nullptr ? Number(vb->get("value")) : std::nullopt;
+      const auto na = va != nullptr ? Number(va->get("value")) : std::nullopt;
+      if (nb && na) each.values.push_back(Value(std::string(key) + "_i", name, *nb, *na));
+    }
+    ComparedSeries s;
+    s.title = "diagonal " + name + ": mean deviations before and after";
+    s.x_label = "distance along the diagonal, mm";
+    s.unit = "µm";
+    MeanCurves(d.get("positions"), "distance_mm", true, &s.x_before, &s.up_before, &s.down_before);
+    MeanCurves(other->get("positions"), "distance_mm", true, &s.x_after, &s.up_after,
+               &s.down_after);
+    r->series.push_back(s);
+  }
+  if (!each.values.empty()) r->tables.push_back(each);
+}
+
+std::string Reduction(const ComparedValue& v) {
+  return v.reduction_pct ? report::FormatFixed(*v.reduction_pct, 1) + " %" : std::string("-");
+}
+
+}  // namespace
+
+std::vector<LoadedResult> LoadResults(const std::string& path) {
+  std::error_code ec;
+  std::vector<std::string> files;
+  if (std::filesystem::is_directory(path, ec)) {
+    for (const auto& e : std::filesystem::directory_iterator(path, ec)) {
+      if (e.path().extension() == ".json") files.push_back(e.path().string());
+    }
+    std::sort(files.begin(), files.end());
+  } else if (std::filesystem::is_regular_file(path, ec)) {
+    files.push_back(path);
+  } else {
+    throw InputError(path + ": no such report directory or result file");
+  }
+  std::vector<LoadedResult> out;
+  for (const std::string& f : files) {
+    LoadedResult r{std::filesystem::path(f).stem().string(), f, tools::ParseJson(ReadAll(f), f)};
+    const std::string command = Command(r.json);
+    if (command == "evaluate positioning" || command == "evaluate diagonal") {
+      out.push_back(std::move(r));
+    } else if (files.size() == 1) {
+      throw InputError(f +
+                       ": not a result of `volcomp evaluate positioning` or `evaluate "
+                       "diagonal` (written by --report or --json)");
+    }
+  }
+  if (out.empty()) throw InputError(path + ": no positioning or diagonal results (*.json)");
+  return out;
+}
+
+Comparison CompareResults(const std::vector<LoadedResult>& before,
+                          const std::vector<LoadedResult>& after) {
+  Comparison c;
+  const bool single = before.size() == 1 && after.size() == 1;
+  for (const LoadedResult& b : before) {
+    const LoadedResult* a = nullptr;
+    for (const LoadedResult& x : after) {
+      if (x.name == b.name || single) a = &x;
+    }
+    if (a == nullptr) {
+      c.warnings.push_back(b.name + " (" + b.path + "): no after result of that name");
+      continue;
+    }
+    if (Command(b.json) != Command(a->json)) {
+      c.warnings.push_back(b.name + ": " + b.path + " and " + a->path +
+                           " hold different kinds of results; not compared");
+      continue;
+    }
+    ComparedResult r;
+    r.name = b.name;
+    r.before_source = Text(b.json.get("source"));
+    r.after_source = Text(a->json.get("source"));
+    r.conditions_before = Conditions(b.json);
+    r.conditions_after = Conditions(a->json);
+    if (Command(b.json) == "evaluate positioning") {
+      r.kind = "positioning";
+      ComparePositioning(b.json, a->json, &r, &c.warnings);
+    } else {
+      r.kind = "diagonal";
+      CompareDiagonals(b.json, a->json, &r, &c.warnings);
+    }
+    c.results.push_back(std::move(r));
+  }
+  for (const LoadedResult& a : after) {
+    bool paired = single;
+    for (const LoadedResult& b : before) paired = paired || b.name == a.name;
+    if (!paired) c.warnings.push_back(a.name + " (" + a.path + "): no before result of that name");
+  }
+  if (c.results.empty()) {
+    throw InputError("no result appears both before and after (results are paired by name)");
+  }
+  return c;
+}
+
+void WriteComparisonText(std::ostream& out, const Comparison& c) {
+  for (const ComparedResult& r : c.results) {
+    out << r.name << " (" << r.kind << "): before " << r.before_source << ", after "
+        << r.after_source << "\n";
+    for (const ComparedTable& t : r.tables) {
+      out << "  " << t.title << ", values in " << t.unit << "\n";
+      for (const ComparedValue& v : t.values) {
+        char line[160];
+        std::snprintf(line, sizeof line, "    %s %10s -> %10s   %9s",
+                      report::PadRight(v.symbol, 6).c_str(),
+                      report::FormatFixed(v.before, 2).c_str(),
+                      report::FormatFixed(v.after, 2).c_str(), Reduction(v).c_str());
+        out << line;
+        if (t.title == "each diagonal") out << "   " << v.meaning;
+        out << "\n";
+      }
+    }
+    out << "\n";
+  }
+}
+
+void AddComparisonSections(report::HtmlPage* page, const Comparison& c) {
+  std::vector<std::vector<std::string>> summary;
+  for (const ComparedResult& r : c.results) {
+    for (const ComparedTable& t : r.tables) {
+      for (const ComparedValue& v : t.values) {
+        if (v.symbol == "A" || v.symbol == "E_d") {
+          summary.push_back({r.name, t.title, v.symbol, report::FormatFixed(v.before, 2),
+                             report::FormatFixed(v.after, 2), Reduction(v)});
+        }
+      }
+    }
+  }
+  page->Paragraph(
+      "Reduction = (|before| − |after|) / |before|. Values in µm (arc-seconds for "
+      "rotary axes).");
+  if (!summary.empty()) {
+    page->Heading(2, "Summary");
+    page->Table({"result", "evaluation", "parameter", "before", "after", "reduction"}, summary);
+  }
+  if (!c.warnings.empty()) {
+    page->Heading(3, "Warnings");
+    page->List(c.warnings);
+  }
+  for (const ComparedResult& r : c.results) {
+    page->Heading(2, r.name);
+    page->Paragraph("Before: " + r.before_source + ". After: " + r.after_source + ".");
+    if (!r.conditions_before.empty() || !r.conditions_after.empty()) {
+      std::vector<std::vector<std::string>> rows;
+      std::vector<std::string> keys;
+      for (const auto& kv : r.conditions_before) keys.push_back(kv.first);
+      for (const auto& kv : r.conditions_after) {
+        if (std::find(keys.begin(), keys.end(), kv.first) == keys.end()) keys.push_back(kv.first);
+      }
+      auto value = [](const std::vector<std::pair<std::string, std::string>>& list,
+                      const std::string& k) {
+        for (const auto& kv : list) {
+          if (kv.first == k) return kv.second;
+        }
+        return std::string("-");
+      };
+      for (const auto& k : keys) {
+        rows.push_back({k, value(r.conditions_before, k), value(r.conditions_after, k)});
+      }
+      page->Table({"test condition", "before", "after"}, rows);
+    }
+    for (const ComparedTable& t : r.tables) {
+      page->Heading(3, t.title);
+      std::vector<std::vector<std::string>> rows;
+      for (const ComparedValue& v : t.values) {
+        rows.push_back({v.symbol, report::FormatFixed(v.before, 2), report::FormatFixed(v.after, 2),
+                        Reduction(v), v.meaning});
+      }
+      page->Table({"parameter", "before, " + t.unit, "after, " + t.unit, "reduction", "meaning"},
+                  rows);
+    }
+    for (const ComparedSeries& s : r.series) {
+      report::XyChart chart;
+      chart.title = s.title;
+      chart.x_label = s.x_label;
+      chart.y_label = "mean deviation, " + s.unit;
+      struct Line {
+        const std::vector<double>* x;
+        const std::vector<double>* y;
+        const char* label;
+        const char* color;
+        const char* dash;
+        report::Marker marker;
+      };
+      for (const Line& l :
+           {Line{&s.x_before, &s.up_before, "before x̄↑", "#c0392b", "",
+                 report::Marker::kTriangleUp},
+            Line{&s.x_before, &s.down_before, "before x̄↓", "#c0392b", "6 3",
+                 report::Marker::kTriangleDown},
+            Line{&s.x_after, &s.up_after, "after x̄↑", "#1f5fbf", "", report::Marker::kTriangleUp},
+            Line{&s.x_after, &s.down_after, "after x̄↓", "#1f5fbf", "6 3",
+                 report::Marker::kTriangleDown}}) {
+        report::XySeries series;
+        series.label = l.label;
+        series.x = *l.x;
+        series.y = *l.y;
+        series.color = l.color;
+        series.dash = l.dash;
+        series.marker = l.marker;
+        if (!series.x.empty()) chart.series.push_back(series);
+      }
+      page->Figure(chart.Render(760, 320), s.title + ".");
+    }
+  }
+}
+
+}  // namespace volcomp::metrology

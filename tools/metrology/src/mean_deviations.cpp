@@ -1,0 +1,33 @@
+// Mean deviations per target from raw positioning readings.
+#include "volcomp/metrology/mean_deviations.hpp"
+
+#include <algorithm>
+
+#include "volcomp/metrology/positioning_csv.hpp"
+#include "volcomp/metrology/positioning_data.hpp"
+#include "volcomp/metrology/reading_checks.hpp"
+#include "volcomp/metrology/statistics.hpp"
+
+namespace volcomp::metrology {
+
+MeanDeviations MeanDeviationsFromCsv(const tools::CsvTable& table) {
+  const PositioningData data = ReadPositioningCsv(table);
+  const PositioningSet set = GroupReadings(data, GroupingOptions{});
+  if (!set.has_up) {
+    throw table.error(table.header_line(),
+                      "the readings have no ↑ approaches; the forward table needs them");
+  }
+  MeanDeviations m;
+  m.kind = set.kind;
+  m.warnings = set.warnings;
+  for (const auto& w : CheckReadings(data, set, ReadingCheckOptions{})) m.warnings.push_back(w);
+  for (const auto& p : set.positions) {
+    m.target.push_back(p.target);
+    m.mean_up.push_back(Mean(p.up.deviations));
+    if (set.has_down) m.mean_down.push_back(Mean(p.down.deviations));
+    m.runs = std::max({m.runs, static_cast<int>(p.up.size()), static_cast<int>(p.down.size())});
+  }
+  return m;
+}
+
+}  // namespace volcomp::metrology

@@ -1,0 +1,71 @@
+// Test conditions from the readings file's preamble.
+#include "volcomp/metrology/test_conditions.hpp"
+
+#include <cctype>
+
+namespace volcomp::metrology {
+namespace {
+
+std::string Normalized(const std::string& key) {
+  std::string out;
+  for (char c : key) {
+    out += c == '_' ? ' ' : static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  }
+  return out;
+}
+
+}  // namespace
+
+const std::vector<std::string>& ConditionKeys() {
+  static const std::vector<std::string> kKeys = {"machine",
+                                                 "axis",
+                                                 "date",
+                                                 "operator",
+                                                 "instrument",
+                                                 "air temperature C",
+                                                 "material temperature C"};
+  return kKeys;
+}
+
+std::optional<std::string> TestConditions::Find(const std::string& key) const {
+  for (const auto& [k, v] : entries) {
+    if (Normalized(k) == Normalized(key)) return v;
+  }
+  return std::nullopt;
+}
+
+TestConditions ConditionsFromPreamble(const tools::CsvTable& table) {
+  TestConditions c;
+  for (const auto& e : table.preamble()) {
+    if (!e.value.empty()) c.entries.emplace_back(e.key, e.value);
+  }
+  return c;
+}
+
+std::string ConditionsText(const TestConditions& conditions) {
+  std::string s;
+  for (const auto& [k, v] : conditions.entries) s += (s.empty() ? "" : "; ") + k + " " + v;
+  return s;
+}
+
+void WriteConditionsJson(tools::JsonWriter& json, const TestConditions& conditions) {
+  json.key("conditions").begin_object();
+  for (const auto& [k, v] : conditions.entries) json.key(k).value(v);
+  json.end_object();
+}
+
+void AddConditionsSection(report::HtmlPage* page, const TestConditions& conditions) {
+  page->Heading(2, "Test conditions");
+  if (conditions.empty()) {
+    page->Paragraph(
+        "The readings file gives no test conditions. Write them as `# key: value` lines before "
+        "its header (machine, axis, date, operator, instrument, air temperature C, material "
+        "temperature C); the templates of `volcomp program` ask for them.");
+    return;
+  }
+  std::vector<std::vector<std::string>> rows;
+  for (const auto& [k, v] : conditions.entries) rows.push_back({k, v});
+  page->Table({"condition", "value"}, rows);
+}
+
+}  // namespace volcomp::metrology
