@@ -111,20 +111,23 @@ TEST(SimWorld, TableOverTheBusThenCompensatedMotionLosesNothing) {
   ASSERT_TRUE(w.Start().ok());
   const std::vector<uint8_t> image = ConstantImage();
   std::ostringstream log;
-  const UploadReport up = UploadTable(w, image, log);
-  ASSERT_TRUE(up.ok) << up.message;
+  const SimResult<UploadReport> uploaded = UploadTable(w, image, log);
+  ASSERT_TRUE(uploaded.ok()) << uploaded.status().reason();
+  const UploadReport& up = uploaded.value();
   EXPECT_EQ(up.staged_crc, up.image_crc);
   EXPECT_GT(up.transfer_s, 0);
   // Not referenced yet: the board refuses to activate.
-  ActivationReport refused = ActivateTable(w, up.image_crc);
-  EXPECT_FALSE(refused.ok);
-  EXPECT_NE(refused.message.find("referenced"), std::string::npos) << refused.message;
+  const SimResult<ActivationReport> refused = ActivateTable(w, up.image_crc);
+  EXPECT_FALSE(refused.ok());
+  EXPECT_EQ(refused.status().code(), Error::kIoError);
+  EXPECT_NE(refused.status().reason().find("referenced"), std::string::npos)
+      << refused.status().reason();
 
   w.cnc().QueueHome(7);
   ASSERT_TRUE(w.RunUntilCncIdle(60000000000ull));
   w.RunFor(150000000);
-  const ActivationReport act = ActivateTable(w, up.image_crc);
-  ASSERT_TRUE(act.ok) << act.message;
+  const SimResult<ActivationReport> act = ActivateTable(w, up.image_crc);
+  ASSERT_TRUE(act.ok()) << act.status().reason();
   w.RunFor(300000000);
   EXPECT_NE(ReadDeviceState(w) & firmware::kStateEngaged, 0);
   EXPECT_TRUE(w.CheckAtRest());

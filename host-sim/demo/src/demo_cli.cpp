@@ -50,11 +50,21 @@ int RunDemoCommand(const std::vector<std::string>& words) {
     std::fprintf(stderr, "volcomp-sim demo: %s\n", e.what());
     return 2;
   }
+  // The command-line boundary: a failed step and the builders' input errors end here.
   try {
-    const DemoResult r = RunDemo(o, std::cout);
+    const SimResult<DemoResult> run = RunDemo(o, std::cout);
+    if (!run.ok()) {
+      std::fprintf(stderr, "volcomp-sim demo: %s\n", run.status().reason().c_str());
+      return 1;
+    }
+    const DemoResult& r = run.value();
     PrintSummary(r, std::cout);
     if (!o.report_dir.empty()) {
-      WriteDemoReport(r, o.report_dir);
+      const SimStatus written = WriteDemoReport(r, o.report_dir);
+      if (!written.ok()) {
+        std::fprintf(stderr, "volcomp-sim demo: %s\n", written.reason().c_str());
+        return 1;
+      }
       std::cout << "report: " << o.report_dir << "/index.html (data, programs, measured model, "
                 << "table.vct alongside)\n";
     }

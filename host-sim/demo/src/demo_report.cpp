@@ -2,7 +2,6 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
-#include <stdexcept>
 
 #include "volcomp/image/image_builder.hpp"
 #include "volcomp/metrology/diagonal_report.hpp"
@@ -17,10 +16,11 @@ namespace {
 
 using report::FormatFixed;
 
-void WriteText(const std::string& path, const std::string& text) {
+SimStatus WriteText(const std::string& path, const std::string& text) {
   std::ofstream f(path);
-  if (!f) throw std::runtime_error("cannot write " + path);
+  if (!f) return SimStatus(Error::kIoError, "cannot write " + path);
   f << text;
+  return SimStatus::Ok();
 }
 
 std::string PointsCsv(const PointSetResult& p) {
@@ -124,7 +124,7 @@ std::string LatencyChart(const DemoResult& r) {
 
 }  // namespace
 
-void WriteDemoReport(const DemoResult& r, const std::string& dir) {
+SimStatus WriteDemoReport(const DemoResult& r, const std::string& dir) {
   const std::string index = report::PrepareReportPath(dir, "index.html");
   report::PrepareReportPath(dir + "/data", "x");
   report::PrepareReportPath(dir + "/programs", "x");
@@ -133,23 +133,26 @@ void WriteDemoReport(const DemoResult& r, const std::string& dir) {
   // Data files, in the formats the PC tool reads.
   for (const auto& [phase, res] : {std::pair{"before", &r.before}, std::pair{"after", &r.after}}) {
     for (size_t a = 0; a < 3; ++a) {
-      WriteText(dir + "/data/gost_" + std::string(1, "xyz"[a]) + "_" + phase + ".csv",
-                PositioningCsv(res->gost[a].data));
+      VOLCOMP_SIM_TRY(
+          WriteText(dir + "/data/gost_" + std::string(1, "xyz"[a]) + "_" + phase + ".csv",
+                    PositioningCsv(res->gost[a].data)));
     }
-    WriteText(dir + "/data/diagonals_" + std::string(phase) + ".csv", res->diagonals.csv);
-    WriteText(dir + "/data/points_" + std::string(phase) + ".csv", PointsCsv(res->points));
+    VOLCOMP_SIM_TRY(
+        WriteText(dir + "/data/diagonals_" + std::string(phase) + ".csv", res->diagonals.csv));
+    VOLCOMP_SIM_TRY(
+        WriteText(dir + "/data/points_" + std::string(phase) + ".csv", PointsCsv(res->points)));
   }
   for (size_t a = 0; a < 3; ++a) {
-    WriteText(dir + "/programs/gost_" + std::string(1, "xyz"[a]) + ".ngc",
-              r.before.gost[a].program.gcode);
+    VOLCOMP_SIM_TRY(WriteText(dir + "/programs/gost_" + std::string(1, "xyz"[a]) + ".ngc",
+                              r.before.gost[a].program.gcode));
   }
   for (const TestProgram& p : r.before.diagonals.programs) {
     std::string name = p.name;
     for (char& c : name) c = c == '+' ? 'P' : c == '-' ? 'N' : c;
-    WriteText(dir + "/programs/diagonal_" + name + ".ngc", p.gcode);
+    VOLCOMP_SIM_TRY(WriteText(dir + "/programs/diagonal_" + name + ".ngc", p.gcode));
   }
-  WriteText(dir + "/programs/points.ngc", r.before.points.program.gcode);
-  WriteModelFiles(r.measured_model, dir + "/model");
+  VOLCOMP_SIM_TRY(WriteText(dir + "/programs/points.ngc", r.before.points.program.gcode));
+  VOLCOMP_SIM_TRY(WriteModelFiles(r.measured_model, dir + "/model"));
   image::WriteFileBytes(dir + "/table.vct", r.table.image);
 
   report::HtmlPage page("volcomp-sim demo report");
@@ -229,6 +232,7 @@ void WriteDemoReport(const DemoResult& r, const std::string& dir) {
     }
   }
   page.WriteFile(index);
+  return SimStatus::Ok();
 }
 
 }  // namespace volcomp::sim

@@ -3,7 +3,6 @@
 
 #include <cstdio>
 #include <fstream>
-#include <stdexcept>
 
 #include "volcomp/byte_order.hpp"
 #include "volcomp/image/image_builder.hpp"
@@ -11,13 +10,15 @@
 
 namespace volcomp::sim {
 
-model::Model ModelFromParametric(const std::array<ParametricResult, 3>& runs,
-                                 const model::KinematicChain& chain) {
+SimResult<model::Model> ModelFromParametric(const std::array<ParametricResult, 3>& runs,
+                                            const model::KinematicChain& chain) {
   model::Model m;
   m.name = "measured (virtual 6-DOF laser, parametric runs through the reference point)";
   for (int a = 0; a < 3; ++a) {
     const ParametricResult& r = runs[static_cast<size_t>(a)];
-    if (r.axis != a) throw std::invalid_argument("ModelFromParametric: runs out of axis order");
+    if (r.axis != a) {
+      return SimStatus(Error::kInvalidArgument, "parametric runs are not X, Y, Z in order");
+    }
     std::vector<model::AxisErrorSample> rows;
     for (const SixDofReading& s : r.measured) rows.push_back({s.linear_um, s.angular_urad});
     m.axes[static_cast<size_t>(a)] = model::AxisErrorTable(r.position_mm, rows);
@@ -83,15 +84,14 @@ TableBuildResult BuildTableImage(const model::Model& measured,
   return r;
 }
 
-void WriteModelFiles(const model::Model& measured, const std::string& dir) {
-  auto open = [&](const std::string& name) {
-    std::ofstream f(dir + "/" + name);
-    if (!f) throw std::runtime_error("cannot write " + dir + "/" + name);
-    return f;
+SimStatus WriteModelFiles(const model::Model& measured, const std::string& dir) {
+  const auto cannot = [&](const std::string& name) {
+    return SimStatus(Error::kIoError, "cannot write " + dir + "/" + name);
   };
   for (int a = 0; a < 3; ++a) {
-    const std::string axis(1, static_cast<char>("xyz"[a]));
-    std::ofstream f = open("measured_" + axis + ".csv");
+    const std::string name = std::string("measured_") + "xyz"[a] + ".csv";
+    std::ofstream f(dir + "/" + name);
+    if (!f) return cannot(name);
     f << "# " << static_cast<char>("XYZ"[a])
       << " axis, measured by volcomp-sim demo (virtual 6-DOF laser), zero at the reference point\n";
     f << "position_mm,ex_um,ey_um,ez_um,ea_urad,eb_urad,ec_urad\n";
@@ -105,7 +105,8 @@ void WriteModelFiles(const model::Model& measured, const std::string& dir) {
       f << line;
     }
   }
-  std::ofstream c = open("measured.conf");
+  std::ofstream c(dir + "/measured.conf");
+  if (!c) return cannot("measured.conf");
   std::string workpiece, tool;
   for (int a : measured.chain.order) {
     (measured.chain.carries_workpiece[static_cast<size_t>(a)] ? workpiece : tool) += "XYZ"[a];
@@ -119,6 +120,7 @@ void WriteModelFiles(const model::Model& measured, const std::string& dir) {
     << "tool_offset_mm = 0, 0, 0\n"
     << "workpiece_axes = " << workpiece << "\ntool_axes = " << tool << "\n"
     << "workpiece_errors = relative\nformulation = physical\norder = exact\n";
+  return SimStatus::Ok();
 }
 
 }  // namespace volcomp::sim

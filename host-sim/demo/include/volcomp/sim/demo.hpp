@@ -22,6 +22,7 @@
 #include "volcomp/sim/instruments.hpp"
 #include "volcomp/sim/latency_meter.hpp"
 #include "volcomp/sim/measurements.hpp"
+#include "volcomp/sim/sim_status.hpp"
 #include "volcomp/sim/table_from_measurements.hpp"
 #include "volcomp/sim/world.hpp"
 
@@ -89,13 +90,16 @@ struct DemoResult {
   std::vector<std::string> failures;  // "must show" checks that failed (empty: all passed)
 };
 
-/// Runs the demo; progress goes to `log`. Throws on a setup error (bad model file, ...).
-DemoResult RunDemo(const DemoOptions& options, std::ostream& log);
+/// Runs the demo; progress goes to `log`. Fails when a step cannot go on (the board refused a
+/// table, a program did not finish, the model's tables miss the reference point); a model file
+/// that cannot be read throws tools::InputError (the builders' error, printed by the command).
+SimResult<DemoResult> RunDemo(const DemoOptions& options, std::ostream& log);
 
 /// Prints the before/after summary and the checks.
 void PrintSummary(const DemoResult& result, std::ostream& out);
 
-/// Writes DIR/index.html and the data files (CSV, G-code, model, image) of a demo run.
-void WriteDemoReport(const DemoResult& result, const std::string& dir);
+/// Writes DIR/index.html and the data files (CSV, G-code, model, image) of a demo run; kIoError
+/// names a file that cannot be written.
+SimStatus WriteDemoReport(const DemoResult& result, const std::string& dir);
 
 }  // namespace volcomp::sim

@@ -20,12 +20,14 @@
 #include "volcomp/model/grid.hpp"
 #include "volcomp/model/rigid_body.hpp"
 #include "volcomp/sim/measurements.hpp"
+#include "volcomp/sim/sim_status.hpp"
 
 namespace volcomp::sim {
 
 /// The measured 21-parameter model (physical formulation, exact rotations, tool offset 0).
-model::Model ModelFromParametric(const std::array<ParametricResult, 3>& runs,
-                                 const model::KinematicChain& chain);
+/// kInvalidArgument when the runs are not X, Y, Z in order.
+SimResult<model::Model> ModelFromParametric(const std::array<ParametricResult, 3>& runs,
+                                            const model::KinematicChain& chain);
 
 struct TableBuildResult {
   model::GridBuildResult grid;
@@ -46,7 +48,8 @@ TableBuildResult BuildTableImage(const model::Model& measured,
                                  uint32_t table_id);
 
 /// The measured model as files `volcomp build model --model DIR/measured.conf` reads:
-/// measured.conf and measured_x.csv, measured_y.csv, measured_z.csv in `dir`.
-void WriteModelFiles(const model::Model& measured, const std::string& dir);
+/// measured.conf and measured_x.csv, measured_y.csv, measured_z.csv in `dir` (kIoError when a
+/// file cannot be written).
+SimStatus WriteModelFiles(const model::Model& measured, const std::string& dir);
 
 }  // namespace volcomp::sim
