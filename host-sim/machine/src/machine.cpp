@@ -14,9 +14,48 @@ model::Model LoadMachineModel(const std::string& spec) {
   return model::LoadModelConfig(spec);
 }
 
-Machine::Machine(MachineOptions options) : options_(std::move(options)) {
-  if (options_.model.axes[0].empty()) options_.model = model::S500Model();
-  model::ValidateModel(options_.model);
+MachineGeometry GeometryOf(const model::Model& m) {
+  MachineGeometry g;
+  for (size_t a = 0; a < 3; ++a) {
+    const model::AxisErrorTable& t = m.axes[a];
+    for (size_t i = 0; i < t.size(); ++i) {
+      const model::AxisErrorSample& s = t.row(i);
+      g.axes[a].push_back({t.position_mm(i),
+                           {s.linear_um.x, s.linear_um.y, s.linear_um.z},
+                           {s.angular_urad.x, s.angular_urad.y, s.angular_urad.z}});
+    }
+  }
+  g.c0y_urad = m.squareness.c0y_urad;
+  g.b0z_urad = m.squareness.b0z_urad;
+  g.a0z_urad = m.squareness.a0z_urad;
+  g.tool_offset_mm = {m.tool_offset_mm.x, m.tool_offset_mm.y, m.tool_offset_mm.z};
+  g.chain = m.chain.order;
+  g.carries_workpiece = m.chain.carries_workpiece;
+  g.workpiece_tables_are_carriage_motion = m.chain.workpiece_errors == model::ErrorSide::kCarriage;
+  g.angle_scale = m.angle_scale;
+  return g;
+}
+
+namespace {
+
+// The options with the default model filled in, checked before the kinematics is built.
+MachineOptions Checked(MachineOptions o) {
+  if (o.model.axes[0].empty()) o.model = model::S500Model();
+  model::ValidateModel(o.model);
+  if (o.model.formulation != model::Formulation::kPhysical) {
+    throw std::invalid_argument(
+        "machine: the simulated machine is a rigid body; formulation = dissertation describes "
+        "how a builder computes, not a machine");
+  }
+  return o;
+}
+
+Xyz ToXyz(const model::Vec3& v) { return {v.x, v.y, v.z}; }
+
+}  // namespace
+
+Machine::Machine(MachineOptions options)
+    : options_(Checked(std::move(options))), kinematics_(GeometryOf(options_.model)) {
   for (int a = 0; a < 3; ++a) {
     const size_t i = static_cast<size_t>(a);
     if (!(options_.step_mm[i] > 0)) throw std::invalid_argument("machine: step length must be > 0");
@@ -49,20 +88,12 @@ model::Vec3 Machine::AxisPositions_mm(const std::array<int64_t, 3>& drive_steps)
 }
 
 model::Vec3 Machine::ToolPoint_mm(const model::Vec3& q_mm) const {
-  return q_mm + 1e-3 * model::ToolPointError_um(options_.model, q_mm);
+  return PointOnTool_mm(q_mm, {0, 0, 0});
 }
 
-model::Vec3 Machine::PointOnTool_mm(const model::Vec3& q_mm, const model::Vec3& offset_mm) {
-  const std::array<double, 3> key = {offset_mm.x, offset_mm.y, offset_mm.z};
-  auto it = offset_models_.find(key);
-  if (it == offset_models_.end()) {
-    model::Model m = options_.model;
-    m.tool_offset_mm = m.tool_offset_mm + offset_mm;
-    it = offset_models_.emplace(key, std::move(m)).first;
-  }
-  // The nominal position of that point is q + tool offset + offset; the model reports the error
-  // relative to q + its tool offset, so add the offset back.
-  return q_mm + offset_mm + 1e-3 * model::ToolPointError_um(it->second, q_mm);
+model::Vec3 Machine::PointOnTool_mm(const model::Vec3& q_mm, const model::Vec3& offset_mm) const {
+  const Xyz p = kinematics_.ToolPoint_mm(ToXyz(q_mm), ToXyz(offset_mm));
+  return model::Vec3{p[0], p[1], p[2]} - options_.model.tool_offset_mm;
 }
 
 bool Machine::HomeSwitchClosed(int axis, int64_t drive_steps) const {

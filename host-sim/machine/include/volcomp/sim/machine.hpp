@@ -1,25 +1,29 @@
-// The simulated machine tool: the 21-parameter rigid-body error model of tools/model (the STAN
-// S500 by default, or any model file) driven by the drives' output step counts.
+// The simulated machine tool: a rigid-body machine with the 21 error functions of a model file of
+// the table builders (the STAN S500 by default), driven by the drives' output step counts. The
+// model file is only its data: the tool point comes from the machine's own kinematics
+// (rigid_body_kinematics.hpp), which shares no code with tools/model's formulas.
 //
 // Frames and units:
 //   * Axis position q (mm, the model's command frame) = power-up position + drive steps x step
 //     length. The drives count output steps from 0 at power-up (DriveModel), so the simulator never
 //     needs to know what the CNC or the board think the position is.
-//   * Tool point (mm) = q + e(q), e from model::ToolPointError_um (actual minus nominal).
+//   * Tool point (mm) = the kinematics' tool point minus the nominal tool offset, i.e. q when the
+//     machine has no errors. The model's `formulation` and `order` describe how a builder computes;
+//     the machine is always the exact rigid body (a dissertation-formulation model is refused).
 //   * Each axis has a home switch at its negative end: closed while q <= home_switch_mm, i.e.
 //     while the drive count <= round((home_switch_mm - power-up position) / step).
 //
-// Thread-safety: const methods may be called concurrently except PointOnTool_mm (caches models).
+// Thread-safety: const methods may be called concurrently.
 #pragma once
 
 #include <array>
 #include <cmath>
 #include <cstdint>
-#include <map>
 #include <string>
 
 #include "volcomp/model/rigid_body.hpp"
 #include "volcomp/model/vec3.hpp"
+#include "volcomp/sim/rigid_body_kinematics.hpp"
 
 namespace volcomp::sim {
 
@@ -36,8 +40,13 @@ struct MachineOptions {
 /// Throws std::runtime_error / tools::InputError naming the problem.
 model::Model LoadMachineModel(const std::string& spec);
 
+/// The error functions, squareness, tool offset and chain of a model, as the machine's data.
+MachineGeometry GeometryOf(const model::Model& model);
+
 class Machine {
  public:
+  /// Throws std::invalid_argument naming a bad option (step length, power-up below the switch,
+  /// a model in the dissertation's formulation, a model ValidateModel refuses).
   explicit Machine(MachineOptions options);
 
   const model::Model& model() const { return options_.model; }
@@ -56,14 +65,14 @@ class Machine {
   model::Vec3 ToolPoint_mm(const model::Vec3& q_mm) const;
   /// Where a point rigidly attached to the tool side at `offset_mm` from the tool point actually
   /// is (the second reflector of angular optics, a level on the spindle head).
-  model::Vec3 PointOnTool_mm(const model::Vec3& q_mm, const model::Vec3& offset_mm);
+  model::Vec3 PointOnTool_mm(const model::Vec3& q_mm, const model::Vec3& offset_mm) const;
   /// True while the axis's home switch is closed.
   bool HomeSwitchClosed(int axis, int64_t drive_steps) const;
 
  private:
   MachineOptions options_;
+  RigidBodyKinematics kinematics_;
   std::array<int64_t, 3> switch_steps_ = {0, 0, 0};
-  std::map<std::array<double, 3>, model::Model> offset_models_;
 };
 
 }  // namespace volcomp::sim
