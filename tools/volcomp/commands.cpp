@@ -62,8 +62,8 @@ const std::vector<Command>& Commands() {
        "    [--max-correction-um B] [--element int16|int32|float32] [--frac-bits N]\n"
        "    [--table-id N] [--info KEY=VALUE]... [--json]",
        RunBuildModel},
-      {"build tracker", "GRID3 image from laser-tracker axis lines (dissertation ch. 2 methods)",
-       "(--points FILE | --builtin s500-315|s500-240)\n"
+      {"build tracker", "GRID3 image from laser-tracker axis lines or a lattice (dissertation ch. 2)",
+       "(--points FILE | --builtin s500-315|s500-240 | --lattice FILE)\n"
        "    [--method static|interval|quasi-differential] [--cosines printed|signed|scaled]\n"
        "    [--origin measured|extrapolated] [--static-interval N] [--appendix-form]\n"
        "    [--allow-discontinuous] GRID_OPTIONS (see `volcomp help build model`)",

@@ -6,6 +6,7 @@
 
 #include "volcomp/byte_order.hpp"
 #include "volcomp/image/image_builder.hpp"
+#include "volcomp/model/grid_section.hpp"
 #include "volcomp/model/image_glue.hpp"
 
 namespace volcomp::sim {
@@ -37,21 +38,12 @@ TableBuildResult BuildTableImage(const model::Model& measured,
                                  const std::array<double, 3>& spacing_mm,
                                  const std::array<double, 3>& step_mm,
                                  uint32_t table_id) {
-  TableBuildResult r;
   model::GridBuildOptions o;
   o.min_mm = lo_mm;
   o.max_mm = hi_mm;
   o.spacing_mm = spacing_mm;
   o.natural_spacing_mm = spacing_mm;
   o.step_mm = step_mm;
-  const model::InverseMap inverse = [&measured](const model::Vec3& t) {
-    return model::SolveCommand(measured, t).command_mm;
-  };
-  const model::ForwardMap forward = [&measured](const model::Vec3& q) {
-    return q + 1e-3 * model::ToolPointError_um(measured, q);
-  };
-  r.grid = model::BuildCorrectionGrid(o, inverse, &forward);
-
   image::ImageRequest req;
   req.table_id = table_id;
   for (int a = 0; a < 3; ++a) {
@@ -61,23 +53,18 @@ TableBuildResult BuildTableImage(const model::Model& measured,
     d.resolution_e9 = static_cast<uint32_t>(std::llround(step_mm[static_cast<size_t>(a)] * 1e9));
     req.axes.push_back(d);
   }
-  req.grid = model::ToGridCorrections(r.grid.grid, req.axes);
+  // `volcomp build model`'s source and grid building blocks.
+  model::GridSection g = model::BuildGridSection(o, req.axes, model::ModelGridSource(measured));
+  TableBuildResult r;
+  r.grid = std::move(g.build);
+  req.grid = std::move(g.section);
   req.element = table::ElementType::kInt16;
   req.frac_bits = image::ChooseFracBits(req);
   r.frac_bits = *req.frac_bits;
   r.lsb_um = model::LsbUm(req.axes[0], r.frac_bits);
-  const model::GridSpec& g = r.grid.grid.axes;
-  char lattice[256];
-  std::snprintf(lattice, sizeof lattice, "%g:%g:%g,%g:%g:%g,%g:%g:%g", g[0].origin_mm,
-                g[0].spacing_mm, g[0].end_mm(), g[1].origin_mm, g[1].spacing_mm, g[1].end_mm(),
-                g[2].origin_mm, g[2].spacing_mm, g[2].end_mm());
-  r.info = {{"builder", "volcomp-sim demo (tools/model BuildCorrectionGrid)"},
-            {"source", "measured 21-parameter model: 6-DOF laser runs of X, Y, Z"},
-            {"formulation", "physical, exact rotations, chain " + measured.chain.ToString()},
-            {"lattice_mm", lattice}};
-  char interp[32];
-  std::snprintf(interp, sizeof interp, "%.4g", r.grid.interpolation.max_um);
-  r.info["predicted_interp_error_um"] = interp;
+  r.info = std::move(g.info);
+  r.info.emplace("builder", "volcomp-sim demo (the sources and grid of `volcomp build model`)");
+  r.info.emplace("source", "measured 21-parameter model: 6-DOF laser runs of X, Y, Z");
   req.info = r.info;
   r.image = image::BuildImage(req);
   r.crc32 = LoadLe32(r.image.data() + r.image.size() - 4);

@@ -1,12 +1,12 @@
-// The compensation table from the parametric measurements, built the way `volcomp build model`
-// builds it from a model file:
+// The compensation table from the parametric measurements, built with the entry points of
+// `volcomp build model` (tools/model grid_source.hpp, grid_section.hpp):
 //   1. the measured six error motions of X, Y and Z (zeroed at the reference point, where the three
 //      measuring lines meet) become the axis tables of a 21-parameter model; the squareness is in
 //      the straightness slopes (the beam was aligned with the nominal axes), so the model's
 //      squareness entries are 0; the kinematic chain is the machine's (the integrator knows it);
-//   2. tools/model inverts that model at every node of a lattice over the measured travel
-//      (BuildCorrectionGrid: command that lands the tool on the node, residual <= 0.01 µm), and
-//      predicts the interpolation error between nodes;
+//   2. ModelGridSource + BuildGridSection invert that model at every node of a lattice over the
+//      measured travel (command that lands the tool on the node, residual <= 0.01 µm) and predict
+//      the interpolation error between nodes;
 //   3. tools/image writes the GRID3 image (int16, fraction bits chosen to fit), validated with the
 //      firmware's parser.
 #pragma once
