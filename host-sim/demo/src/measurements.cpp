@@ -178,7 +178,7 @@ SimResult<ParametricResult> MeasureParametric(World& world,
       laser.Zero(s.q_mm, s.cmd_mm);
       continue;
     }
-    const SixDofReading m = laser.SixDof(s.q_mm, s.cmd_mm);
+    const SixDofReading m = laser.SixDof(s.q_mm, s.cmd_mm, axis);
     const SixDofReading t = laser.SixDofTrue(s.q_mm, s.cmd_mm);
     for (auto [acc, v] : {std::pair{&sum, &m}, std::pair{&truth, &t}}) {
       auto& e = (*acc)[s.stop.target];

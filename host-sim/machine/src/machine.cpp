@@ -55,7 +55,9 @@ Xyz ToXyz(const model::Vec3& v) { return {v.x, v.y, v.z}; }
 }  // namespace
 
 Machine::Machine(MachineOptions options)
-    : options_(Checked(std::move(options))), kinematics_(GeometryOf(options_.model)) {
+    : options_(Checked(std::move(options))),
+      kinematics_(GeometryOf(options_.model)),
+      rng_(options_.wear.seed) {
   for (int a = 0; a < 3; ++a) {
     const size_t i = static_cast<size_t>(a);
     if (!(options_.step_mm[i] > 0)) throw std::invalid_argument("machine: step length must be > 0");
@@ -67,6 +69,8 @@ Machine::Machine(MachineOptions options)
     }
     switch_steps_[i] =
         std::llround((options_.home_switch_mm[i] - options_.power_up_mm[i]) / options_.step_mm[i]);
+    lost_motion_[i] = LostMotion(options_.wear.lost_motion ? options_.wear.lost_motion_um[i] : 0);
+    lost_motion_[i].Reset(options_.power_up_mm[i]);
   }
 }
 
@@ -78,12 +82,46 @@ double Machine::travel_max_mm(int axis) const {
   return options_.model.axes[static_cast<size_t>(axis)].max_mm();
 }
 
-model::Vec3 Machine::AxisPositions_mm(const std::array<int64_t, 3>& drive_steps) const {
-  model::Vec3 q;
+void Machine::OnDriveTick(const std::array<int64_t, 3>& drive_steps, uint64_t t_ns) {
+  const WornMachineProfile& w = options_.wear;
+  if (!w.any()) return;
+  time_s_ = static_cast<double>(t_ns) * 1e-9;
+  for (size_t a = 0; a < 3; ++a) {
+    if (drive_steps[a] != last_steps_[a]) {
+      last_steps_[a] = drive_steps[a];
+      moving_[a] = true;
+      lost_motion_[a].Follow(options_.power_up_mm[a] +
+                             static_cast<double>(drive_steps[a]) * options_.step_mm[a]);
+    } else if (moving_[a]) {  // came to rest: the carriage settles somewhere new
+      moving_[a] = false;
+      if (w.scatter) scatter_mm_[a] = 1e-3 * w.scatter_sigma_um[a] * rng_.Gaussian();
+    }
+  }
+}
+
+model::Vec3 Machine::DrivePositions_mm(const std::array<int64_t, 3>& drive_steps) const {
+  model::Vec3 d;
   for (int a = 0; a < 3; ++a) {
     const size_t i = static_cast<size_t>(a);
-    q[a] = options_.power_up_mm[i] + static_cast<double>(drive_steps[i]) * options_.step_mm[i];
+    d[a] = options_.power_up_mm[i] + static_cast<double>(drive_steps[i]) * options_.step_mm[i];
   }
+  return d;
+}
+
+model::Vec3 Machine::AxisPositions_mm(const std::array<int64_t, 3>& drive_steps) const {
+  model::Vec3 q = DrivePositions_mm(drive_steps);
+  const WornMachineProfile& w = options_.wear;
+  if (!w.any()) return q;
+  const model::Vec3 d = q;
+  for (int a = 0; a < 3; ++a) {
+    const size_t i = static_cast<size_t>(a);
+    q[a] += lost_motion_[i].offset_mm() + scatter_mm_[i];
+    if (w.screw_error) {
+      q[a] += 1e-3 *
+              ScrewError_um(w.screw_amplitude_um[i], w.screw_period_mm, w.screw_phase_rad[i], d[a]);
+    }
+  }
+  if (w.thermal) q.x += 1e-3 * ThermalGrowth::XScrew_um(w, d.x, time_s_);
   return q;
 }
 
@@ -93,11 +131,28 @@ model::Vec3 Machine::ToolPoint_mm(const model::Vec3& q_mm) const {
 
 model::Vec3 Machine::PointOnTool_mm(const model::Vec3& q_mm, const model::Vec3& offset_mm) const {
   const Xyz p = kinematics_.ToolPoint_mm(ToXyz(q_mm), ToXyz(offset_mm));
-  return model::Vec3{p[0], p[1], p[2]} - options_.model.tool_offset_mm;
+  model::Vec3 t = model::Vec3{p[0], p[1], p[2]} - options_.model.tool_offset_mm;
+  const WornMachineProfile& w = options_.wear;
+  if (w.cross_axis_sag) {
+    t.z += 1e-3 * CrossAxisSag_um(w.sag_um, q_mm.x, q_mm.y, {travel_min_mm(0), travel_max_mm(0)},
+                                  {travel_min_mm(1), travel_max_mm(1)});
+  }
+  if (w.thermal) t.z += 1e-3 * ThermalGrowth::SpindleZ_um(w, time_s_);
+  return t;
 }
 
 bool Machine::HomeSwitchClosed(int axis, int64_t drive_steps) const {
-  return drive_steps <= switch_steps_[static_cast<size_t>(axis)];
+  const size_t i = static_cast<size_t>(axis);
+  const double offset_mm = lost_motion_[i].offset_mm();
+  if (offset_mm == 0) return drive_steps <= switch_steps_[i];
+  return static_cast<double>(drive_steps - switch_steps_[i]) * options_.step_mm[i] + offset_mm <= 0;
+}
+
+WornMachineProfile DefaultWornProfile(uint64_t seed) {
+  WornMachineProfile p;
+  p.lost_motion = p.scatter = p.screw_error = p.thermal = p.cross_axis_sag = true;
+  p.seed = seed;
+  return p;
 }
 
 }  // namespace volcomp::sim
