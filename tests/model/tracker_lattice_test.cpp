@@ -148,6 +148,27 @@ TEST(model_tracker_lattice, GridSectionHoldsTheInverseOfTheCrossAxisTerm) {
   EXPECT_NE(g.info.at("method").find("lattice"), std::string::npos);
 }
 
+// Measured through a table in force that adds a constant (10, −5, 3) µm: the readings are of
+// F(u + c); the new grid must hold F's own inverse correction, (0, 0, −k·x·y), i.e. the table in
+// force is composed in, not forgotten.
+TEST(model_tracker_lattice, ThroughATableInForceTheNewGridReplacesIt) {
+  const Vec3 c = {0.010, -0.005, 0.003};
+  const auto sag = [](const Vec3& q) { return Vec3{q.x, q.y, q.z + 3e-7 * q.x * q.y}; };
+  const auto through = [&](const Vec3& u) { return sag(u + c); };
+  CorrectionGrid in_force;
+  in_force.axes = {GridAxis{-100, 300, 3}, GridAxis{-100, 300, 3}, GridAxis{-100, 300, 3}};
+  in_force.correction_mm.assign(27, c);
+  const GridSource src =
+      TrackerLatticeThroughGridSource(TrackerLattice(Sample(through, kLattice)), in_force);
+  for (const Vec3& t : {Vec3{0, 0, 0}, Vec3{200, 100, 100}, Vec3{120, 40, 50}}) {
+    const Vec3 q = src.inverse(t);
+    EXPECT_NEAR((q.x - t.x) * 1e3, 0, 1e-6);
+    EXPECT_NEAR((q.y - t.y) * 1e3, 0, 1e-6);
+    EXPECT_NEAR((q.z - t.z) * 1e3, -3e-7 * t.x * t.y * 1e3, 1e-5);
+    EXPECT_LT(Norm(src.forward(q) - t) * 1e3, 1e-5);  // what the builder verifies at the nodes
+  }
+}
+
 TEST(model_grid_source, ModelSourceIsTheModelsExtentSpacingAndMaps) {
   const Model s500 = S500Model();
   const GridSource src = ModelGridSource(s500);

@@ -10,6 +10,7 @@
 #include "commands.hpp"
 #include "volcomp/model/build_cli.hpp"
 #include "volcomp/model/grid_source.hpp"
+#include "volcomp/model/image_grid.hpp"
 #include "volcomp/model/io.hpp"
 #include "volcomp/model/tracker.hpp"
 #include "volcomp/model/tracker_lattice.hpp"
@@ -18,8 +19,10 @@ namespace volcomp::tools {
 
 namespace {
 
-// --lattice FILE: the lattice's exact inverse.
+// --lattice FILE [--through IMAGE]: the lattice's exact inverse (composed with the GRID3 of the
+// table that was in force while it was measured).
 int RunBuildTrackerLattice(Args& args, const std::string& path) {
+  const auto through = args.value("--through");
   const model::TrackerLatticeData data = model::LoadTrackerLatticeCsv(path);
   const model::TrackerLattice lattice = [&]() {
     try {
@@ -28,12 +31,16 @@ int RunBuildTrackerLattice(Args& args, const std::string& path) {
       throw InputError(path + ": " + e.what());
     }
   }();
-  const model::GridSource source = model::TrackerLatticeGridSource(lattice);
+  const model::GridSource source =
+      through ? model::TrackerLatticeThroughGridSource(
+                    lattice, model::GridOfImage(image::LoadImageFile(*through), *through))
+              : model::TrackerLatticeGridSource(lattice);
   model::cli::GridCommand cmd =
       model::cli::ParseGridCommand(args, source.min_mm, source.max_mm, source.natural_spacing_mm);
   args.finish();
   std::map<std::string, std::string> info = source.info;
   info.emplace("builder", "volcomp build tracker");
+  if (through) info.emplace("table_in_force", *through);
   if (!cmd.json) std::cout << "volcomp build tracker\n";
   return model::cli::RunGridBuild(cmd, source.inverse, source.forward_or_null(), info, std::cout);
 }

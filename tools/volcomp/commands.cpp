@@ -63,7 +63,7 @@ const std::vector<Command>& Commands() {
        "    [--table-id N] [--info KEY=VALUE]... [--json]",
        RunBuildModel},
       {"build tracker", "GRID3 image from laser-tracker axis lines or a lattice (dissertation ch. 2)",
-       "(--points FILE | --builtin s500-315|s500-240 | --lattice FILE)\n"
+       "(--points FILE | --builtin s500-315|s500-240 | --lattice FILE [--through IMAGE])\n"
        "    [--method static|interval|quasi-differential] [--cosines printed|signed|scaled]\n"
        "    [--origin measured|extrapolated] [--static-interval N] [--appendix-form]\n"
        "    [--allow-discontinuous] GRID_OPTIONS (see `volcomp help build model`)",

@@ -104,4 +104,30 @@ GridSource TrackerLatticeGridSource(const TrackerLattice& lattice) {
   return s;
 }
 
+GridSource TrackerLatticeThroughGridSource(const TrackerLattice& lattice,
+                                           const CorrectionGrid& in_force) {
+  GridSource s = TrackerLatticeGridSource(lattice);
+  const auto tl = std::make_shared<const TrackerLattice>(lattice);
+  const auto g = std::make_shared<const CorrectionGrid>(in_force);
+  s.inverse = [tl, g](const Vec3& t) {
+    const Vec3 u = tl->ExactInverse(t).command_mm;
+    return u + g->Interpolate(u);
+  };
+  s.forward = [tl, g](const Vec3& q) {
+    // v + in_force(v) = q: the grid's slope is ~1e-3, so the iteration contracts at once.
+    Vec3 v = q;
+    for (int i = 0; i < 50; ++i) {
+      const Vec3 next = q - g->Interpolate(v);
+      const double step = MaxAbs(next - v);
+      v = next;
+      if (step < 1e-12) break;
+    }
+    return tl->Position_mm(v);
+  };
+  s.info["method"] =
+      "lattice measured through a table in force (quasi-differential without "
+      "separability, exact inverse)";
+  return s;
+}
+
 }  // namespace volcomp::model

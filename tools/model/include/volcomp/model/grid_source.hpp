@@ -53,4 +53,12 @@ GridSource TrackerLinesGridSource(const TrackerData& data,
 /// natural spacing = the lattice's. INFO: data, method.
 GridSource TrackerLatticeGridSource(const TrackerLattice& lattice);
 
+/// A lattice measured while the board applied the GRID3 `in_force` (mm; image_grid.hpp): its
+/// commands are the board's inputs, so the new grid sends, for a target T, what the board sent for
+/// the input u that reached T: c(T) = u + in_force(u) − T with u the lattice's exact inverse at T.
+/// Verified against the forward map q ↦ lattice(v), v + in_force(v) = q. Over the lattice; INFO:
+/// data, method. The table in force's other sections (AXIS1D) are assumed to stay in force.
+GridSource TrackerLatticeThroughGridSource(const TrackerLattice& lattice,
+                                           const CorrectionGrid& in_force);
+
 }  // namespace volcomp::model
