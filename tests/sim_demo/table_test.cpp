@@ -94,7 +94,7 @@ TEST_F(SimTable, ImageLandsTheToolOnItsTargets) {
   }
   EXPECT_GT(before, 300);  // the uncompensated machine is off by hundreds of um
   EXPECT_LT(worst, 0.15);  // interpolation (0.09 um predicted) + LSB + measurement
-  EXPECT_LT(t.grid.interpolation.max_um, 0.15);
+  EXPECT_LT(t.grid->build.interpolation.max_um, 0.15);
 }
 
 }  // namespace

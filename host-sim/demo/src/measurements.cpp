@@ -123,9 +123,10 @@ SimResult<DiagonalSetResult> MeasureDiagonals(World& world,
 SimResult<PointSetResult> MeasurePointSet(World& world,
                                           LaserTracker& tracker,
                                           const std::vector<Point3>& points_mm,
-                                          double dwell_s) {
+                                          double dwell_s,
+                                          double approach_mm) {
   PointSetResult r;
-  r.program = PointSetProgram("volumetric point set", points_mm, dwell_s);
+  r.program = PointSetProgram("volumetric point set", points_mm, dwell_s, approach_mm);
   std::vector<StopState> states;
   VOLCOMP_SIM_ASSIGN(states, RunTestProgram(world, r.program));
   double sum2 = 0, true_sum2 = 0;

@@ -32,43 +32,93 @@ SimResult<model::Model> ModelFromParametric(const std::array<ParametricResult, 3
   return m;
 }
 
-TableBuildResult BuildTableImage(const model::Model& measured,
-                                 const std::array<double, 3>& lo_mm,
-                                 const std::array<double, 3>& hi_mm,
-                                 const std::array<double, 3>& spacing_mm,
-                                 const std::array<double, 3>& step_mm,
-                                 uint32_t table_id) {
+std::vector<image::AxisDef> ImageAxes(const std::array<double, 3>& step_mm) {
+  std::vector<image::AxisDef> axes;
+  for (int a = 0; a < 3; ++a) {
+    image::AxisDef d;
+    d.name = "XYZ"[a];
+    d.kind = table::AxisKind::kLinear;
+    d.resolution_e9 = static_cast<uint32_t>(std::llround(step_mm[static_cast<size_t>(a)] * 1e9));
+    axes.push_back(d);
+  }
+  return axes;
+}
+
+model::GridBuildOptions LatticeOptions(const std::array<double, 3>& lo_mm,
+                                       const std::array<double, 3>& hi_mm,
+                                       const std::array<double, 3>& spacing_mm,
+                                       const std::array<double, 3>& step_mm) {
   model::GridBuildOptions o;
   o.min_mm = lo_mm;
   o.max_mm = hi_mm;
   o.spacing_mm = spacing_mm;
   o.natural_spacing_mm = spacing_mm;
   o.step_mm = step_mm;
+  return o;
+}
+
+model::PositioningData MeanDeviations(const metrology::PositioningResult& run) {
+  model::PositioningData d;
+  for (const metrology::PositionStats& p : run.positions) {
+    if (!p.up || !p.down) continue;
+    d.position.push_back(p.target);
+    d.dev_forward.push_back(p.up->mean);
+    d.dev_reverse.push_back(p.down->mean);
+  }
+  return d;
+}
+
+model::PositioningData PairMeans(const model::PositioningData& t) {
+  model::PositioningData d;
+  d.rotary = t.rotary;
+  for (size_t i = 0; i + 1 < t.position.size(); i += 2) {
+    d.position.push_back(0.5 * (t.position[i] + t.position[i + 1]));
+    d.dev_forward.push_back(0.5 * (t.dev_forward[i] + t.dev_forward[i + 1]));
+    d.dev_reverse.push_back(0.5 * (t.dev_reverse[i] + t.dev_reverse[i + 1]));
+  }
+  return d;
+}
+
+TableBuildResult AssembleTable(const std::optional<model::GridSection>& grid,
+                               const std::vector<model::AxisSection>& axis_tables,
+                               const std::array<double, 3>& step_mm,
+                               uint32_t table_id,
+                               const std::map<std::string, std::string>& info) {
+  TableBuildResult r;
+  r.grid = grid;
+  r.axis_tables = axis_tables;
   image::ImageRequest req;
   req.table_id = table_id;
-  for (int a = 0; a < 3; ++a) {
-    image::AxisDef d;
-    d.name = "XYZ"[a];
-    d.kind = table::AxisKind::kLinear;
-    d.resolution_e9 = static_cast<uint32_t>(std::llround(step_mm[static_cast<size_t>(a)] * 1e9));
-    req.axes.push_back(d);
+  req.axes = ImageAxes(step_mm);
+  if (grid) {
+    req.grid = grid->section;
+    r.info = grid->info;
   }
-  // `volcomp build model`'s source and grid building blocks.
-  model::GridSection g = model::BuildGridSection(o, req.axes, model::ModelGridSource(measured));
-  TableBuildResult r;
-  r.grid = std::move(g.build);
-  req.grid = std::move(g.section);
+  for (const model::AxisSection& a : axis_tables) req.axis_tables.push_back(a.section);
+  for (const auto& [k, v] : info) r.info[k] = v;
   req.element = table::ElementType::kInt16;
   req.frac_bits = image::ChooseFracBits(req);
   r.frac_bits = *req.frac_bits;
   r.lsb_um = model::LsbUm(req.axes[0], r.frac_bits);
-  r.info = std::move(g.info);
-  r.info.emplace("builder", "volcomp-sim demo (the sources and grid of `volcomp build model`)");
-  r.info.emplace("source", "measured 21-parameter model: 6-DOF laser runs of X, Y, Z");
   req.info = r.info;
   r.image = image::BuildImage(req);
   r.crc32 = LoadLe32(r.image.data() + r.image.size() - 4);
   return r;
+}
+
+TableBuildResult BuildTableImage(const model::Model& measured,
+                                 const std::array<double, 3>& lo_mm,
+                                 const std::array<double, 3>& hi_mm,
+                                 const std::array<double, 3>& spacing_mm,
+                                 const std::array<double, 3>& step_mm,
+                                 uint32_t table_id) {
+  const model::GridSection g =
+      model::BuildGridSection(LatticeOptions(lo_mm, hi_mm, spacing_mm, step_mm), ImageAxes(step_mm),
+                              model::ModelGridSource(measured));
+  return AssembleTable(
+      g, {}, step_mm, table_id,
+      {{"builder", "volcomp-sim demo (the sources and grid of `volcomp build model`)"},
+       {"source", "measured 21-parameter model: 6-DOF laser runs of X, Y, Z"}});
 }
 
 SimStatus WriteModelFiles(const model::Model& measured, const std::string& dir) {

@@ -76,10 +76,13 @@ struct PointSetResult {
   double true_max_um = 0, true_rms_um = 0;
 };
 
+/// `approach_mm` > 0: every point approached from that far below on every axis
+/// (PointSetProgram).
 SimResult<PointSetResult> MeasurePointSet(World& world,
                                           LaserTracker& tracker,
                                           const std::vector<Point3>& points_mm,
-                                          double dwell_s);
+                                          double dwell_s,
+                                          double approach_mm = 0);
 
 struct ParametricResult {
   int axis = 0;
