@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "commands.hpp"
+#include "volcomp/image/image_builder.hpp"
 #include "volcomp/image/image_reader.hpp"
 #include "volcomp/tools/csv.hpp"
 
@@ -119,6 +120,75 @@ TEST(model_cli, BuildTrackerMethods) {
                                 "static",    "-o",       TempPath("t3.vctb"), "--json"};
   c.insert(c.end(), res.begin(), res.end());
   EXPECT_NE(RunCommand(RunBuildTracker, c).find("\"max_inverse_residual_um\""), std::string::npos);
+}
+
+// A lattice CSV (every node of 0..40 x 0..30 x 0..20 mm every 10 mm, z raised by 1e-6·x·y mm):
+// the image holds the inverse, the report names the method; a file with a hole is refused.
+TEST(model_cli, BuildTrackerLattice) {
+  const std::string path = TempPath("lattice.csv");
+  {
+    std::ofstream f(path);
+    f << "x_cmd_mm,y_cmd_mm,z_cmd_mm,x_mm,y_mm,z_mm\n";
+    for (int z = 0; z <= 20; z += 10) {
+      for (int y = 0; y <= 30; y += 10) {
+        for (int x = 0; x <= 40; x += 10) {
+          f << x << "," << y << "," << z << "," << x << "," << y << "," << z + 1e-6 * x * y << "\n";
+        }
+      }
+    }
+  }
+  const std::string out = TempPath("lattice.vctb");
+  const std::string report =
+      RunCommand(RunBuildTracker, {"--lattice", path, "-o", out, "--resolution-nm",
+                                   "X=100,Y=100,Z=100", "--element", "float32"});
+  EXPECT_NE(report.find("method: lattice"), std::string::npos) << report;
+  const image::LoadedImage img(image::ReadFileBytes(out), out);
+  const image::ImageEvaluator eval(img);
+  const int32_t pos[3] = {400000, 300000, 100000};  // (40, 30, 10) mm in 0.1 µm steps
+  const bool reverse[3] = {false, false, false};
+  int32_t q8[3];
+  eval.CorrectionQ8(pos, reverse, q8);
+  EXPECT_EQ(q8[0], 0);
+  EXPECT_NEAR(q8[2] / 256.0, -1e-6 * 40 * 30 * 1e4, 0.01);  // −1.2 µm = −12 steps
+  EXPECT_NE(ErrorOf<UsageError>(RunBuildTracker, {"--lattice", path, "--builtin", "s500-315"})
+                .find("give one of"),
+            std::string::npos);
+
+  // The same machine measured through a table in force that adds 5 µm in x everywhere: the
+  // readings are 5 µm further in x; with --through the new table holds the same correction.
+  image::ImageRequest req;
+  for (char name : {'X', 'Y', 'Z'}) {
+    image::AxisDef d;
+    d.name = name;
+    d.resolution_e9 = 100000;
+    req.axes.push_back(d);
+  }
+  image::GridCorrections g;
+  for (auto& l : g.lattice) l = {2, -100000, 1000000};
+  for (int n = 0; n < 8; ++n) g.correction_steps.insert(g.correction_steps.end(), {50, 0, 0});
+  req.grid = g;
+  const std::string in_force = TempPath("in_force.vctb");
+  image::WriteFileBytes(in_force, image::BuildImage(req));
+  const std::string through = TempPath("lattice_through.csv");
+  {
+    std::ofstream f(through);
+    f << "x_cmd_mm,y_cmd_mm,z_cmd_mm,x_mm,y_mm,z_mm\n";
+    for (int z = 0; z <= 20; z += 10) {
+      for (int y = 0; y <= 30; y += 10) {
+        for (int x = 0; x <= 40; x += 10) {
+          f << x << "," << y << "," << z << "," << x + 0.005 << "," << y << ","
+            << z + 1e-6 * (x + 0.005) * y << "\n";
+        }
+      }
+    }
+  }
+  const std::string out2 = TempPath("lattice_through.vctb");
+  RunCommand(RunBuildTracker, {"--lattice", through, "--through", in_force, "-o", out2,
+                               "--resolution-nm", "X=100,Y=100,Z=100", "--element", "float32"});
+  const image::LoadedImage img2(image::ReadFileBytes(out2), out2);
+  image::ImageEvaluator(img2).CorrectionQ8(pos, reverse, q8);
+  EXPECT_NEAR(q8[0] / 256.0, 0, 0.01);
+  EXPECT_NEAR(q8[2] / 256.0, -1e-6 * 40 * 30 * 1e4, 0.01);
 }
 
 TEST(model_cli, BuildKmtppDefaultAndDissertationForm) {

@@ -68,11 +68,26 @@ TEST(SimInstruments, SixDofReadsLinearAndAngularErrorMotions) {
   Machine machine = SimpleMachine();
   LaserInterferometer laser(&machine, Perfect(), 1);
   laser.Zero(kQ0, kQ0);
-  const SixDofReading r = laser.SixDof(kQ, kQ);
+  const SixDofReading r = laser.SixDof(kQ, kQ, 0);
   for (int i = 0; i < 3; ++i) EXPECT_NEAR(r.linear_um[i], kExpectedUm[i], kTolUm) << i;
   EXPECT_NEAR(r.angular_urad.x, 0, 1e-4);
   EXPECT_NEAR(r.angular_urad.y, 50, 1e-4);
   EXPECT_NEAR(r.angular_urad.z, 0, 1e-4);
+}
+
+// A beam 1 mrad off the line of motion reads cos(1 mrad) of the 50.006 mm the tool moved along x:
+// 50.006 mm · (1 − cos 1e-3) = 0.0250 µm short. Only the linear channel along the beam.
+TEST(SimInstruments, MisalignedBeamHasTheCosineError) {
+  Machine machine = SimpleMachine();
+  InterferometerOptions o = Perfect();
+  o.misalignment_mrad = 1.0;
+  LaserInterferometer laser(&machine, o, 1);
+  laser.Zero(kQ0, kQ0);
+  EXPECT_NEAR(laser.Deviation_um(kQ, kQ, {1, 0, 0}), kExpectedUm.x - 0.025003, kTolUm);
+  const SixDofReading r = laser.SixDof(kQ, kQ, 0);
+  EXPECT_NEAR(r.linear_um.x, kExpectedUm.x - 0.025003, kTolUm);
+  EXPECT_NEAR(r.linear_um.y, kExpectedUm.y, kTolUm);
+  EXPECT_NEAR(r.angular_urad.y, 50, 1e-4);
 }
 
 TEST(SimInstruments, ReadingScatterMatchesNoiseAveragingAndRepeatability) {

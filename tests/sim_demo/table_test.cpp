@@ -34,9 +34,13 @@ class SimTable : public ::testing::Test {
     for (int a = 0; a < 3; ++a) {
       std::vector<double> pos;
       for (double x = 0; x <= travel[a] + 1e-9; x += 10) pos.push_back(x);
-      runs_[static_cast<size_t>(a)] = MeasureParametric(w, laser, a, {0, 0, 0}, pos, c);
+      SimResult<ParametricResult> run = MeasureParametric(w, laser, a, {0, 0, 0}, pos, c);
+      ASSERT_TRUE(run.ok()) << run.status().reason();
+      runs_[static_cast<size_t>(a)] = run.value();
     }
-    measured_ = new model::Model(ModelFromParametric(runs_, model::S500Model().chain));
+    const SimResult<model::Model> measured = ModelFromParametric(runs_, model::S500Model().chain);
+    ASSERT_TRUE(measured.ok()) << measured.status().reason();
+    measured_ = new model::Model(measured.value());
   }
   static void TearDownTestSuite() { delete measured_; }
 
@@ -90,7 +94,7 @@ TEST_F(SimTable, ImageLandsTheToolOnItsTargets) {
   }
   EXPECT_GT(before, 300);  // the uncompensated machine is off by hundreds of um
   EXPECT_LT(worst, 0.15);  // interpolation (0.09 um predicted) + LSB + measurement
-  EXPECT_LT(t.grid.interpolation.max_um, 0.15);
+  EXPECT_LT(t.grid->build.interpolation.max_um, 0.15);
 }
 
 }  // namespace

@@ -111,20 +111,23 @@ TEST(SimWorld, TableOverTheBusThenCompensatedMotionLosesNothing) {
   ASSERT_TRUE(w.Start().ok());
   const std::vector<uint8_t> image = ConstantImage();
   std::ostringstream log;
-  const UploadReport up = UploadTable(w, image, log);
-  ASSERT_TRUE(up.ok) << up.message;
+  const SimResult<UploadReport> uploaded = UploadTable(w, image, log);
+  ASSERT_TRUE(uploaded.ok()) << uploaded.status().reason();
+  const UploadReport& up = uploaded.value();
   EXPECT_EQ(up.staged_crc, up.image_crc);
   EXPECT_GT(up.transfer_s, 0);
   // Not referenced yet: the board refuses to activate.
-  ActivationReport refused = ActivateTable(w, up.image_crc);
-  EXPECT_FALSE(refused.ok);
-  EXPECT_NE(refused.message.find("referenced"), std::string::npos) << refused.message;
+  const SimResult<ActivationReport> refused = ActivateTable(w, up.image_crc);
+  EXPECT_FALSE(refused.ok());
+  EXPECT_EQ(refused.status().code(), Error::kIoError);
+  EXPECT_NE(refused.status().reason().find("referenced"), std::string::npos)
+      << refused.status().reason();
 
   w.cnc().QueueHome(7);
   ASSERT_TRUE(w.RunUntilCncIdle(60000000000ull));
   w.RunFor(150000000);
-  const ActivationReport act = ActivateTable(w, up.image_crc);
-  ASSERT_TRUE(act.ok) << act.message;
+  const SimResult<ActivationReport> act = ActivateTable(w, up.image_crc);
+  ASSERT_TRUE(act.ok()) << act.status().reason();
   w.RunFor(300000000);
   EXPECT_NE(ReadDeviceState(w) & canopen::kStateEngaged, 0);
   EXPECT_TRUE(w.CheckAtRest());
@@ -141,6 +144,78 @@ TEST(SimWorld, TableOverTheBusThenCompensatedMotionLosesNothing) {
   for (int a = 0; a < 3; ++a) {
     EXPECT_EQ(d[static_cast<size_t>(a)], w.cnc().count(a) + c[static_cast<size_t>(a)]) << a;
   }
+}
+
+// The board takes an axis's AXIS1D direction from its commanded motion. Where the GRID3 moves an
+// axis whose command stands still (here Y's correction grows with X, like a squareness error),
+// the drive can reverse without a reversal of the command: the machine's lost motion is then
+// taken up with nothing to compensate it. Outside truth: the carriage positions of the machine's
+// play operator (20 µm dead band on Y).
+TEST(SimWorld, CorrectionDrivenReversalIsNotBacklashCompensated) {
+  WorldOptions wo = Options();
+  wo.machine.wear.lost_motion = true;
+  wo.machine.wear.lost_motion_um = {0, 20, 0};
+  wo.board = BoardSettingsFor(Machine(wo.machine));
+  World w(wo);
+  ASSERT_TRUE(w.Start().ok());
+  image::ImageRequest req;
+  req.table_id = 9;
+  for (char name : {'X', 'Y', 'Z'}) {
+    image::AxisDef d;
+    d.name = name;
+    d.resolution_e9 = 1000000;
+    req.axes.push_back(d);
+  }
+  image::GridCorrections g;  // Y correction = 1e-3 x (0 at x = 0, 400 steps at x = 400 mm)
+  for (auto& l : g.lattice) l = {2, -10000, 410000};
+  for (int k = 0; k < 2; ++k) {
+    for (int j = 0; j < 2; ++j) {
+      for (int i = 0; i < 2; ++i) {
+        const double x = i == 0 ? -10000 : 400000;
+        g.correction_steps.insert(g.correction_steps.end(), {0, 1e-3 * x, 0});
+      }
+    }
+  }
+  req.grid = g;
+  image::AxisCorrections y;  // the dead band: reverse table 20 steps below the forward one
+  y.axis = 1;
+  y.lattice = {2, -10000, 300000};
+  y.forward_steps = {0, 0};
+  y.reverse_steps = {-20, -20};
+  req.axis_tables.push_back(y);
+  req.frac_bits = 0;
+  const std::vector<uint8_t> image = image::BuildImage(req);
+  std::ostringstream log;
+  const SimResult<UploadReport> up = UploadTable(w, image, log);
+  ASSERT_TRUE(up.ok()) << up.status().reason();
+  w.cnc().QueueHome(7);
+  ASSERT_TRUE(w.RunUntilCncIdle(60000000000ull));
+  w.RunFor(150000000);
+  ASSERT_TRUE(ActivateTable(w, up->image_crc).ok());
+  w.RunFor(300000000);
+  auto carriage_y_um = [&]() { return 1e3 * w.AxisPositions_mm().y; };
+
+  w.cnc().QueueRapid({0, 100000, 0});  // Y forward onto 100 mm
+  ASSERT_TRUE(w.RunUntilCncIdle(10000000000ull));
+  w.RunFor(20000000);
+  const double forward = carriage_y_um();
+  w.cnc().QueueRapid({0, 120000, 0});  // Y reverses onto 100 mm: the reverse table takes it up
+  w.cnc().QueueRapid({0, 100000, 0});
+  ASSERT_TRUE(w.RunUntilCncIdle(10000000000ull));
+  w.RunFor(20000000);
+  EXPECT_NEAR(carriage_y_um(), forward, 1.0);  // compensated: within a step
+  w.cnc().QueueRapid({0, 80000, 0});           // Y forward again onto 100 mm
+  w.cnc().QueueRapid({0, 100000, 0});
+  w.cnc().QueueRapid({300000, 100000, 0});  // X out: Y's drive follows +300 µm (same direction)
+  ASSERT_TRUE(w.RunUntilCncIdle(10000000000ull));
+  w.RunFor(20000000);
+  EXPECT_NEAR(carriage_y_um(), forward + 300, 1.0);
+  w.cnc().QueueRapid({0, 100000, 0});  // X back: Y's drive reverses by 300 µm, command still
+  ASSERT_TRUE(w.RunUntilCncIdle(10000000000ull));
+  w.RunFor(20000000);
+  // The dead band is taken up and not compensated: Y is off by the full 20 µm.
+  EXPECT_NEAR(carriage_y_um(), forward + 20, 1.0);
+  EXPECT_TRUE(w.CheckAtRest());
 }
 
 }  // namespace

@@ -3,14 +3,15 @@
 #include <cmath>
 #include <cstdio>
 #include <iostream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "commands.hpp"
 #include "volcomp/image/axis_units.hpp"
 #include "volcomp/model/axis1d.hpp"
+#include "volcomp/model/axis_section.hpp"
 #include "volcomp/model/build_cli.hpp"
-#include "volcomp/model/image_glue.hpp"
 
 namespace volcomp::tools {
 
@@ -67,22 +68,16 @@ int RunBuildAxis(Args& args) {
     const model::PositioningData data = model::LoadPositioningCsv(inputs[i].path);
     for (const auto& w : data.warnings) std::cerr << "warning: " << w << "\n";
     const bool rotary = req.axes[i].kind == table::AxisKind::kRotary;
-    if (data.rotary != rotary) {
-      throw InputError(inputs[i].path + ": axis " + std::string(1, inputs[i].name) +
-                       (rotary ? " is rotary: give position_deg and *_arcsec columns"
-                               : " is linear: give position_mm and *_um columns"));
-    }
     model::Axis1dOptions o = opt;
     o.spacing = spacing[i];
-    o.unit_per_step = req.axes[i].units_per_step();
-    model::Axis1dTable t;
+    model::AxisSection axis;
     try {
-      t = model::BuildAxis1d(data, o);
+      axis = model::BuildAxisSection(data, o, req.axes[i], static_cast<uint8_t>(i), wrap);
     } catch (const std::invalid_argument& e) {
       throw InputError(inputs[i].path + ": " + e.what());
     }
-    req.axis_tables.push_back(
-        model::ToAxisCorrections(t, static_cast<uint8_t>(i), req.axes[i], rotary, wrap && rotary));
+    const model::Axis1dTable& t = axis.table;
+    req.axis_tables.push_back(axis.section);
     req.info.emplace(std::string("source_") + inputs[i].name, inputs[i].path);
     const char* unit = rotary ? "arcsec" : "µm";
     double max_fwd = 0;

@@ -1,24 +1,60 @@
 // `volcomp build tracker`: a GRID3 image from laser-tracker axis lines by the dissertation's
 // tangential methods (ch. 2): static, interval or quasi-differential, with printed (sign-dropped),
-// signed or scaled direction vectors. See docs/table-builders.md.
-#include <array>
+// signed or scaled direction vectors; or from tracker readings at every node of a lattice
+// (--lattice, tracker_lattice.hpp). See docs/table-builders.md.
 #include <iostream>
 #include <map>
+#include <stdexcept>
 #include <string>
 
 #include "commands.hpp"
 #include "volcomp/model/build_cli.hpp"
+#include "volcomp/model/grid_source.hpp"
+#include "volcomp/model/image_grid.hpp"
 #include "volcomp/model/io.hpp"
 #include "volcomp/model/tracker.hpp"
+#include "volcomp/model/tracker_lattice.hpp"
 
 namespace volcomp::tools {
+
+namespace {
+
+// --lattice FILE [--through IMAGE]: the lattice's exact inverse (composed with the GRID3 of the
+// table that was in force while it was measured).
+int RunBuildTrackerLattice(Args& args, const std::string& path) {
+  const auto through = args.value("--through");
+  const model::TrackerLatticeData data = model::LoadTrackerLatticeCsv(path);
+  const model::TrackerLattice lattice = [&]() {
+    try {
+      return model::TrackerLattice(data);
+    } catch (const std::invalid_argument& e) {
+      throw InputError(path + ": " + e.what());
+    }
+  }();
+  const model::GridSource source =
+      through ? model::TrackerLatticeThroughGridSource(
+                    lattice, model::GridOfImage(image::LoadImageFile(*through), *through))
+              : model::TrackerLatticeGridSource(lattice);
+  model::cli::GridCommand cmd =
+      model::cli::ParseGridCommand(args, source.min_mm, source.max_mm, source.natural_spacing_mm);
+  args.finish();
+  std::map<std::string, std::string> info = source.info;
+  info.emplace("builder", "volcomp build tracker");
+  if (through) info.emplace("table_in_force", *through);
+  if (!cmd.json) std::cout << "volcomp build tracker\n";
+  return model::cli::RunGridBuild(cmd, source.inverse, source.forward_or_null(), info, std::cout);
+}
+
+}  // namespace
 
 int RunBuildTracker(Args& args) {
   const auto points = args.value("--points");
   const auto builtin = args.value("--builtin");
-  if (points.has_value() == builtin.has_value()) {
-    throw UsageError("give either --points FILE or --builtin s500-315|s500-240");
+  const auto lattice = args.value("--lattice");
+  if (points.has_value() + builtin.has_value() + lattice.has_value() != 1) {
+    throw UsageError("give one of --points FILE, --builtin s500-315|s500-240 or --lattice FILE");
   }
+  if (lattice) return RunBuildTrackerLattice(args, *lattice);
   model::TrackerData data;
   if (builtin) {
     if (*builtin == "s500-315") {
@@ -78,42 +114,18 @@ int RunBuildTracker(Args& args) {
       throw InputError(data.name + ": " + e.what());
     }
   }();
-  std::array<double, 3> lo = {0, 0, 0}, hi, natural;
-  for (int a = 0; a < 3; ++a) {
-    const auto& line = data.lines[static_cast<std::size_t>(a)];
-    hi[static_cast<std::size_t>(a)] = line.back().q_mm;
-    natural[static_cast<std::size_t>(a)] = tm.step_mm(a);
-  }
-  model::cli::GridCommand cmd = model::cli::ParseGridCommand(args, lo, hi, natural);
+  const model::TrackerMethod m = method == "static"     ? model::TrackerMethod::kStatic
+                                 : method == "interval" ? model::TrackerMethod::kInterval
+                                                        : model::TrackerMethod::kQuasiDifferential;
+  const model::GridSource source = model::TrackerLinesGridSource(data, tm, m, appendix_form);
+  model::cli::GridCommand cmd =
+      model::cli::ParseGridCommand(args, source.min_mm, source.max_mm, source.natural_spacing_mm);
   args.finish();
 
-  model::InverseMap inverse;
-  model::ForwardMap forward;
-  bool check = false;
-  if (method == "static") {
-    inverse = [&tm](const model::Vec3& t) { return tm.Static(t).command_mm; };
-    forward = [&tm](const model::Vec3& q) { return tm.StaticPosition_mm(q); };
-    check = true;
-  } else if (method == "interval") {
-    inverse = [&tm](const model::Vec3& t) { return tm.Interval(t).command_mm; };
-  } else if (appendix_form) {
-    inverse = [&tm](const model::Vec3& t) { return tm.QuasiDifferential(t).command_mm; };
-  } else {
-    inverse = [&tm](const model::Vec3& t) { return tm.ExactInverse(t).command_mm; };
-    forward = [&tm](const model::Vec3& q) { return tm.Position_mm(q); };
-    check = true;
-  }
-  const std::map<std::string, std::string> info = {
-      {"builder", "volcomp build tracker"},
-      {"data", data.name},
-      {"method", method + (method == "quasi-differential"
-                               ? (appendix_form ? " (Appendix Г form)" : " (exact inverse)")
-                               : "")},
-      {"cosines", cosines},
-      {"origin", origin},
-  };
+  std::map<std::string, std::string> info = source.info;
+  info.emplace("builder", "volcomp build tracker");
   if (!cmd.json) std::cout << "volcomp build tracker\n";
-  return model::cli::RunGridBuild(cmd, inverse, check ? &forward : nullptr, info, std::cout);
+  return model::cli::RunGridBuild(cmd, source.inverse, source.forward_or_null(), info, std::cout);
 }
 
 }  // namespace volcomp::tools

@@ -105,13 +105,22 @@ TestProgram DiagonalProgram(const std::string& name,
 
 TestProgram PointSetProgram(const std::string& name,
                             const std::vector<Point3>& points_mm,
-                            double dwell_s) {
+                            double dwell_s,
+                            double approach_mm) {
   TestProgram p;
   p.name = name;
-  std::string g = "(" + name + ": " + std::to_string(points_mm.size()) +
-                  " points; the first is the datum)\nG21 G90 G94\n";
+  std::string g =
+      "(" + name + ": " + std::to_string(points_mm.size()) + " points; the first is the datum)\n";
+  if (approach_mm > 0) {
+    g += "(each approached from " + Seconds(approach_mm) + " mm below on every axis)\n";
+  }
+  g += "G21 G90 G94\n";
   for (size_t i = 0; i < points_mm.size(); ++i) {
-    g += "G0 " + Coords(points_mm[i]) + "\nG4 P" + Seconds(dwell_s) + "\n";
+    const Point3& q = points_mm[i];
+    if (approach_mm > 0) {
+      g += "G0 " + Coords({q[0] - approach_mm, q[1] - approach_mm, q[2] - approach_mm}) + "\n";
+    }
+    g += "G0 " + Coords(q) + "\nG4 P" + Seconds(dwell_s) + "\n";
     MeasuredStop s;
     s.point_mm = points_mm[i];
     s.datum = i == 0;

@@ -2,6 +2,7 @@
 #include "volcomp/sim/board_session.hpp"
 
 #include <cstdio>
+#include <string>
 
 #include "volcomp/byte_order.hpp"
 #include "volcomp/canopen_client/table_staging.hpp"
@@ -14,27 +15,32 @@ using canopen_client::Explain;
 using canopen_client::NodeObjects;
 using canopen_client::SdoResult;
 
-UploadReport UploadTable(World& world, const std::vector<uint8_t>& image, std::ostream& log) {
+namespace {
+
+SimStatus Failed(const SdoResult& res) { return SimStatus(Error::kIoError, res.message); }
+
+}  // namespace
+
+SimResult<UploadReport> UploadTable(World& world,
+                                    const std::vector<uint8_t>& image,
+                                    std::ostream& log) {
   UploadReport r;
   r.bytes = static_cast<uint32_t>(image.size());
   r.image_crc = LoadLe32(image.data() + image.size() - 4);
   NodeObjects node(world.SdoLink(), world.node_id());
-  auto fail = [&](const SdoResult& res) {
-    r.message = res.message;
-    return r;
-  };
   uint32_t active = 0, bank = 0;
   SdoResult res =
       Explain(node.Read(ObjectId::kActiveTableCrc, &active), "reading the active CRC-32 (0x2104)");
-  if (!res.ok) return fail(res);
+  if (!res.ok) return Failed(res);
   res = Explain(node.Read(ObjectId::kTableBankSize, &bank), "reading the bank size (0x2108)");
-  if (!res.ok) return fail(res);
+  if (!res.ok) return Failed(res);
   if (image.size() > bank) {
-    r.message = "the image does not fit the board's table bank";
-    return r;
+    return SimStatus(Error::kImageTooLarge, "the image (" + std::to_string(image.size()) +
+                                                " bytes) does not fit the board's table bank (" +
+                                                std::to_string(bank) + " bytes)");
   }
   res = canopen_client::PrepareStaging(node);
-  if (!res.ok) return fail(res);
+  if (!res.ok) return Failed(res);
 
   const uint64_t frames0 = world.bus().stats().frames;
   const uint64_t t0 = world.now_ns();
@@ -54,34 +60,31 @@ UploadReport UploadTable(World& world, const std::vector<uint8_t>& image, std::o
   });
   res = Explain(canopen_client::RunToCompletion(client, world.SdoLink()),
                 "block download into 0x2100");
-  if (!res.ok) return fail(res);
+  if (!res.ok) return Failed(res);
   r.transfer_s = static_cast<double>(world.now_ns() - t0) * 1e-9;
   r.rate_bytes_s = r.transfer_s > 0 ? r.bytes / r.transfer_s : 0;
   r.frames = world.bus().stats().frames - frames0;
   r.resent_segments = client.resent_segments();
 
   res = canopen_client::VerifyStaged(node, r.image_crc, &r.staged_crc);
-  if (!res.ok) return fail(res);
-  r.ok = true;
-  r.message = "staged and verified";
+  if (!res.ok) return Failed(res);
   return r;
 }
 
-ActivationReport ActivateTable(World& world, uint32_t expected_crc) {
+SimResult<ActivationReport> ActivateTable(World& world, uint32_t expected_crc) {
   ActivationReport r;
   NodeObjects node(world.SdoLink(), world.node_id());
   SdoResult res = canopen_client::WriteTableCommand(node, canopen::TableCommand::kActivate);
-  if (res.ok) {
-    res = Explain(node.Read(ObjectId::kActiveTableCrc, &r.active_crc),
-                  "reading the active CRC-32 (0x2104)");
-  }
-  if (!res.ok) {
-    r.message = res.message;
-    return r;
+  if (!res.ok) return Failed(res);
+  res = Explain(node.Read(ObjectId::kActiveTableCrc, &r.active_crc),
+                "reading the active CRC-32 (0x2104)");
+  if (!res.ok) return Failed(res);
+  if (r.active_crc != expected_crc) {
+    return SimStatus(Error::kImageBadCrc, "the active CRC-32 is " + tools::Hex32(r.active_crc) +
+                                              ", the uploaded image's " +
+                                              tools::Hex32(expected_crc));
   }
   r.device_state = ReadDeviceState(world);
-  r.ok = r.active_crc == expected_crc;
-  r.message = r.ok ? "active" : "the active CRC-32 is " + tools::Hex32(r.active_crc);
   return r;
 }
 

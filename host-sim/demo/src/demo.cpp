@@ -1,502 +1,226 @@
-// `volcomp-sim demo`: measure -> evaluate -> build -> upload -> reference -> activate ->
-// re-measure.
+// `volcomp-sim demo`: the steps strung together for the ideal and the worn machine, and the
+// checks of each.
 #include "volcomp/sim/demo.hpp"
 
-#include <algorithm>
-#include <chrono>
-#include <cmath>
-#include <cstdio>
-#include <stdexcept>
-
+#include "demo_session.hpp"
 #include "volcomp/firmware/board_objects.hpp"
-#include "volcomp/metrology/test_program.hpp"
-#include "volcomp/sim/random.hpp"
-#include "volcomp/tools/hex.hpp"
 
 namespace volcomp::sim {
 namespace {
 
-using Clock = std::chrono::steady_clock;
-using tools::Hex32;
+using demo::Clock;
+using demo::Session;
 
-double Since(Clock::time_point t0) {
-  return std::chrono::duration<double>(Clock::now() - t0).count();
-}
-
-std::string Fmt(const char* format, double a) {
-  char b[64];
-  std::snprintf(b, sizeof b, format, a);
-  return b;
-}
-
-// Prints "  label ... (x.x s)" lines as the demo goes.
-class Progress {
- public:
-  explicit Progress(std::ostream& out) : out_(out) {}
-  void Step(const std::string& text) {
-    out_ << "\n[" << ++n_ << "/8] " << text << "\n" << std::flush;
-  }
-  void Line(const std::string& text) { out_ << "    " << text << "\n" << std::flush; }
-
- private:
-  std::ostream& out_;
-  int n_ = 0;
-};
-
-struct Layout {
-  Point3 lo, hi;              // travel of the error tables
-  Point3 inner_lo, inner_hi;  // test box (margin inside)
-  Point3 centre;
-  Point3 reference;  // where the parametric lines meet: the command origin
-};
-
-Layout MakeLayout(const Machine& m, double margin) {
-  Layout l;
-  for (int a = 0; a < 3; ++a) {
-    const size_t i = static_cast<size_t>(a);
-    l.lo[i] = m.travel_min_mm(a);
-    l.hi[i] = m.travel_max_mm(a);
-    const double span = l.hi[i] - l.lo[i];
-    const double g = std::min(margin, 0.1 * span);
-    l.inner_lo[i] = l.lo[i] + g;
-    l.inner_hi[i] = l.hi[i] - g;
-    l.centre[i] = 0.5 * (l.lo[i] + l.hi[i]);
-    // The model's lever arms start where all commands are 0, so the parametric lines must meet
-    // there (see docs/simulator.md): the tables must cover position 0.
-    if (!(l.lo[i] <= 0.0 && 0.0 <= l.hi[i])) {
-      throw std::runtime_error(std::string("the model's ") + "XYZ"[a] +
-                               " table must include position 0 (the reference point)");
-    }
-    l.reference[i] = 0.0;
-  }
-  return l;
-}
-
-std::vector<double> ParametricPositions(double lo, double hi, double ref, double step) {
-  std::vector<double> p;
-  for (int k = 0;; ++k) {
-    const double x = lo + k * step;
-    if (x > hi - 1e-9) break;
-    p.push_back(std::round(x * 1e4) / 1e4);
-  }
-  p.push_back(hi);
-  if (std::find_if(p.begin(), p.end(), [&](double x) { return std::fabs(x - ref) < 1e-9; }) ==
-      p.end()) {
-    p.push_back(ref);
-    std::sort(p.begin(), p.end());
-  }
-  return p;
-}
-
-std::string GostLine(const char* axis, const AxisFigures& f) {
-  char b[160];
-  std::snprintf(b, sizeof b, "GOST 27843 %s: A = %8.3f um   R = %6.3f um   B = %6.3f um", axis, f.A,
-                f.R, f.B);
-  return b;
-}
-
-PhaseResults MeasurePhase(World& world,
-                          LaserInterferometer& laser,
-                          LaserTracker& tracker,
-                          const DemoOptions& o,
-                          const Layout& l,
-                          const std::array<GostPlan, 3>& gost_plans,
-                          const std::vector<Point3>& points,
-                          Progress& progress) {
-  PhaseResults r;
-  for (int a = 0; a < 3; ++a) {
-    const auto t0 = Clock::now();
-    r.gost[static_cast<size_t>(a)] =
-        MeasureGostAxis(world, laser, a, gost_plans[static_cast<size_t>(a)]);
-    const AxisFigures f = r.Gost()[static_cast<size_t>(a)];
-    progress.Line(GostLine(a == 0 ? "X" : a == 1 ? "Y" : "Z", f) + Fmt("   (%.1f s)", Since(t0)));
-  }
-  {
-    const auto t0 = Clock::now();
-    CycleOptions c;
-    c.runs = o.diagonal_runs;
-    c.dwell_s = o.dwell_s;
-    c.feed_mm_s = o.test_feed_mm_s;
-    r.diagonals = MeasureDiagonals(world, laser, BodyDiagonals(l.inner_lo, l.inner_hi),
-                                   o.diagonal_targets, c);
-    std::string e;
-    for (const auto& d : r.diagonals.evaluation.diagonals) {
-      e += d.name.text + " " + Fmt("%.2f", d.E.value) + "  ";
-    }
-    progress.Line("ISO 230-6 body diagonals, E_i (um): " + e);
-    progress.Line(Fmt("ISO 230-6 E_d = %.3f um", r.Ed()) + Fmt(", B_d = %.3f um", r.Bd()) +
-                  Fmt("   (%.1f s)", Since(t0)));
-  }
-  {
-    const auto t0 = Clock::now();
-    r.points = MeasurePointSet(world, tracker, points, o.dwell_s);
-    char b[200];
-    std::snprintf(b, sizeof b,
-                  "volumetric error at %zu random points (tracker): max %.2f um, rms %.2f um "
-                  "(machine model: max %.2f, rms %.2f)   (%.1f s)",
-                  r.points.targets_mm.size(), r.points.max_um, r.points.rms_um,
-                  r.points.true_max_um, r.points.true_rms_um, Since(t0));
-    progress.Line(b);
-  }
-  return r;
-}
-
-double Reduction(double before, double after) {
-  return before > 0 ? 100.0 * (1.0 - after / before) : 0.0;
-}
-
-}  // namespace
-
-std::array<AxisFigures, 3> PhaseResults::Gost() const {
-  std::array<AxisFigures, 3> f;
-  for (size_t a = 0; a < 3; ++a) {
-    const metrology::PositioningResult& g = gost[a].gost;
-    if (g.accuracy) f[a].A = g.accuracy->value;
-    if (g.repeatability) f[a].R = g.repeatability->value;
-    if (g.reversal_max) f[a].B = g.reversal_max->value;
-  }
-  return f;
-}
-
-double PhaseResults::Ed() const {
-  return diagonals.evaluation.body ? diagonals.evaluation.body->E_d : 0.0;
-}
-
-double PhaseResults::Bd() const {
-  return diagonals.evaluation.body ? diagonals.evaluation.body->B_d : 0.0;
-}
-
-DemoResult RunDemo(const DemoOptions& o, std::ostream& log) {
-  const auto wall0 = Clock::now();
-  DemoResult r;
-  r.options = o;
-  Progress progress(log);
-
-  MachineOptions mo;
-  mo.model = LoadMachineModel(o.model_spec);
-  r.machine_name = mo.model.name;
-  WorldOptions wo;
-  wo.machine = mo;
-  wo.board = BoardSettingsFor(Machine(mo));
-  wo.cnc.accel_mm_s2 = o.accel_mm_s2;
-  World world(wo);
-  const Status started = world.Start();
-  if (!started.ok()) throw std::runtime_error("the simulated board did not start");
-  r.tick_us = static_cast<double>(world.tick_ns()) / 1000.0;
-  const Layout l = MakeLayout(world.machine(), o.margin_mm);
-
-  log << "volcomp-sim demo: seed " << o.seed << "\n"
-      << "  machine: " << r.machine_name << "\n"
-      << "    squareness C0Y " << world.machine().model().squareness.c0y_urad << ", B0Z "
-      << world.machine().model().squareness.b0z_urad << ", A0Z "
-      << world.machine().model().squareness.a0z_urad << " urad; chain "
-      << world.machine().model().chain.ToString() << " (workpiece|tool)\n"
-      << "  travel: X " << l.lo[0] << ".." << l.hi[0] << ", Y " << l.lo[1] << ".." << l.hi[1]
-      << ", Z " << l.lo[2] << ".." << l.hi[2] << " mm; " << world.machine().step_mm(0) * 1000
-      << " um/step; CNC up to " << world.cnc().config().max_step_rate_hz / 1e6 << " MHz per axis, "
-      << o.accel_mm_s2 / 1000 << " m/s^2\n"
-      << "  board: the real firmware (BoardApp) on the mock HAL, tick "
-      << wo.board.board.tick_hz / 1000 << " kHz; CAN " << wo.can_bitrate / 1000 << " kbit/s; node "
-      << static_cast<int>(wo.board.node_id) << "\n";
-
-  Random rng(o.seed);
-  LaserInterferometer laser(&world.machine(), o.laser, rng.Next());
-  LaserTracker tracker(&world.machine(), o.tracker, rng.Next());
-
-  // Plans shared by both phases.
-  std::array<GostPlan, 3> gost;
-  for (int a = 0; a < 3; ++a) {
-    const size_t i = static_cast<size_t>(a);
-    metrology::TargetPlan tp;
-    tp.start = l.inner_lo[i];
-    tp.end = l.inner_hi[i];
-    tp.count = o.gost_targets;
-    tp.pitch = o.gost_pitch_mm;
-    tp.seed = static_cast<uint32_t>(rng.Next() & 0x7FFFFFFF);
-    gost[i].targets_mm = metrology::PlanGostTargets(tp);
-    gost[i].line_point_mm = l.centre;
-    gost[i].cycle.runs = o.gost_runs;
-    gost[i].cycle.dwell_s = o.dwell_s;
-    gost[i].cycle.feed_mm_s = o.test_feed_mm_s;
-  }
-  std::vector<Point3> points = {l.reference};
-  for (int k = 0; k < o.random_points; ++k) {
-    Point3 p;
-    for (size_t i = 0; i < 3; ++i) p[i] = std::round(rng.Uniform(l.lo[i], l.hi[i]) * 1e3) / 1e3;
-    points.push_back(p);
-  }
-
-  // 1. Homing.
-  progress.Step(
-      "power-up and homing: home switches 5 mm below the travel, board references on "
-      "their edges");
-  {
-    const auto t0 = Clock::now();
-    world.cnc().QueueHome(7);
-    if (!world.RunUntilCncIdle(120ull * 1000000000ull)) throw std::runtime_error("homing failed");
-    world.RunFor(20000000);
-    const ControlTick& e = world.board().app().engine();
-    bool agree = e.all_referenced();
-    for (uint8_t a = 0; a < 3; ++a)
-      agree = agree && e.machine_position(a) == world.cnc().position(a);
-    r.reference_agrees = agree;
-    progress.Line(std::string("X, Y, Z referenced at their home positions (0x2018: ") +
-                  std::to_string(wo.board.board.axis[0].home_position_steps) + ", " +
-                  std::to_string(wo.board.board.axis[1].home_position_steps) + ", " +
-                  std::to_string(wo.board.board.axis[2].home_position_steps) +
-                  " steps); board and CNC positions " + (agree ? "agree" : "DISAGREE") +
-                  Fmt("   (%.1f s)", Since(t0)));
-  }
-
-  // 2. Uncompensated machine.
-  progress.Step(
-      "measuring the uncompensated machine (GOST 27843 per axis, ISO 230-6 diagonals, "
-      "random points)");
-  r.before = MeasurePhase(world, laser, tracker, o, l, gost, points, progress);
-
-  // 3. Parametric errors.
-  progress.Step(
-      "measuring the six error motions of X, Y, Z through the reference point "
-      "(virtual 6-DOF laser, like XL-80 linear/straightness/angular setups)");
-  {
-    const auto t0 = Clock::now();
-    for (int a = 0; a < 3; ++a) {
-      const size_t i = static_cast<size_t>(a);
-      CycleOptions c;
-      c.runs = 1;
-      c.overrun_mm = 2;
-      c.dwell_s = o.dwell_s;
-      c.feed_mm_s = o.test_feed_mm_s;
-      const std::vector<double> pos =
-          ParametricPositions(l.lo[i], l.hi[i], l.reference[i], o.parametric_step_mm);
-      r.parametric[i] = MeasureParametric(world, laser, a, l.reference, pos, c);
-      double lin = 0, ang = 0, dev_lin = 0;
-      for (size_t k = 0; k < pos.size(); ++k) {
-        const SixDofReading& m = r.parametric[i].measured[k];
-        const SixDofReading& t = r.parametric[i].truth[k];
-        lin = std::max(lin, model::MaxAbs(m.linear_um));
-        ang = std::max(ang, model::MaxAbs(m.angular_urad));
-        dev_lin = std::max(dev_lin, model::MaxAbs(m.linear_um - t.linear_um));
-      }
-      char b[200];
-      std::snprintf(b, sizeof b,
-                    "%c: %zu positions every %.0f mm, up and down: linear errors up to %.1f um, "
-                    "angular up to %.1f urad (readings minus model: linear <= %.3f um)",
-                    "XYZ"[a], pos.size(), o.parametric_step_mm, lin, ang, dev_lin);
-      progress.Line(b);
-    }
-    progress.Line(Fmt("(%.1f s)", Since(t0)));
-  }
-
-  // 4. Table.
-  progress.Step("building the table from the measurements");
-  {
-    const auto t0 = Clock::now();
-    r.measured_model = ModelFromParametric(r.parametric, world.machine().model().chain);
-    const std::array<double, 3> step = {world.machine().step_mm(0), world.machine().step_mm(1),
-                                        world.machine().step_mm(2)};
-    r.table = BuildTableImage(r.measured_model, l.lo, l.hi,
-                              {o.grid_spacing_mm, o.grid_spacing_mm, o.grid_spacing_mm}, step, 1);
-    const model::GridSpec& g = r.table.grid.grid.axes;
-    progress.Line(
-        "source: the measured six error motions of each axis (18 functions; the three "
-        "squareness angles are in the straightness slopes) = a 21-parameter model, "
-        "chain " +
-        r.measured_model.chain.ToString());
-    char b[300];
-    std::snprintf(b, sizeof b,
-                  "inverse GRID3 (tools/model, as `volcomp build model`): %ux%ux%u nodes every "
-                  "%.0f mm, largest correction %.1f um, inverse residual <= %.1e um, predicted "
-                  "interpolation error %.3f um max",
-                  g[0].nodes, g[1].nodes, g[2].nodes, g[0].spacing_mm,
-                  r.table.grid.stats.max_correction_um, r.table.grid.stats.max_residual_um,
-                  r.table.grid.interpolation.max_um);
-    progress.Line(b);
-    std::snprintf(b, sizeof b,
-                  "image: %zu bytes, int16 with %u fraction bits (LSB %.4f um), "
-                  "CRC-32 0x%08X   (%.1f s)",
-                  r.table.image.size(), r.table.frac_bits, r.table.lsb_um, r.table.crc32,
-                  Since(t0));
-    progress.Line(b);
-  }
-
-  // 5. Upload.
-  progress.Step("uploading over the simulated CAN bus (PC tool's SDO client, block transfer)");
-  {
-    const auto t0 = Clock::now();
-    r.upload = UploadTable(world, r.table.image, log);
-    if (!r.upload.ok) throw std::runtime_error("upload failed: " + r.upload.message);
-    char b[240];
-    std::snprintf(b, sizeof b,
-                  "%u bytes in %.2f s of bus time (%.1f kB/s, %llu frames, %u segments resent); "
-                  "board verified it, staged CRC-32 0x%08X   (%.1f s)",
-                  r.upload.bytes, r.upload.transfer_s, r.upload.rate_bytes_s / 1000,
-                  static_cast<unsigned long long>(r.upload.frames), r.upload.resent_segments,
-                  r.upload.staged_crc, Since(t0));
-    progress.Line(b);
-  }
-
-  // 6. Reference and activate.
-  progress.Step("homing again (references the axes), activating the table");
-  {
-    const auto t0 = Clock::now();
-    world.cnc().QueueHome(7);
-    if (!world.RunUntilCncIdle(120ull * 1000000000ull)) throw std::runtime_error("homing failed");
-    world.RunFor(150000000);  // activation needs 100 ms without input steps
-    r.activation = ActivateTable(world, r.table.crc32);
-    if (!r.activation.ok) throw std::runtime_error("activation failed: " + r.activation.message);
-    world.RunFor(500000000);  // the correction ramps in within the rate limits
-    const uint16_t state = ReadDeviceState(world);
-    r.activation.device_state = state;
-    progress.Line(std::string("active table CRC-32 ") + Hex32(r.activation.active_crc) +
-                  "; device state: referenced " +
-                  ((state & canopen::kStateReferenced) ? "yes" : "no") + ", engaged " +
-                  ((state & canopen::kStateEngaged) ? "yes" : "no") +
-                  Fmt("   (%.1f s)", Since(t0)));
-  }
-
-  // 7. Compensated machine.
-  progress.Step("re-measuring the compensated machine (same programs, fresh instrument noise)");
-  r.after = MeasurePhase(world, laser, tracker, o, l, gost, points, progress);
-
-  // 8. Speed benchmark.
-  progress.Step("simulator speed: rapid moves with X, Y and Z each at 1 MHz through the board");
-  {
-    const double d = std::min({l.hi[0] - l.lo[0], l.hi[1] - l.lo[1], l.hi[2] - l.lo[2]});
-    const std::array<int64_t, 3> a = {std::llround(l.lo[0] / world.machine().step_mm(0)),
-                                      std::llround(l.lo[1] / world.machine().step_mm(1)),
-                                      std::llround(l.lo[2] / world.machine().step_mm(2))};
-    std::array<int64_t, 3> b = a;
-    for (size_t i = 0; i < 3; ++i) {
-      b[i] += std::llround(d / world.machine().step_mm(static_cast<int>(i)));
-    }
-    world.cnc().QueueRapid(a);
-    world.RunUntilCncIdle(60ull * 1000000000ull);
-    const uint64_t steps0 = world.cnc().steps_emitted();
-    const uint64_t v0 = world.now_ns();
-    const auto t0 = Clock::now();
-    for (int k = 0; k < o.benchmark_moves; ++k) world.cnc().QueueRapid(k % 2 == 0 ? b : a);
-    world.RunUntilCncIdle(600ull * 1000000000ull);
-    r.benchmark.wall_s = Since(t0);
-    r.benchmark.steps = world.cnc().steps_emitted() - steps0;
-    r.benchmark.virtual_s = static_cast<double>(world.now_ns() - v0) * 1e-9;
-    r.benchmark.steps_per_s =
-        r.benchmark.wall_s > 0 ? static_cast<double>(r.benchmark.steps) / r.benchmark.wall_s : 0;
-    world.RunFor(20000000);
-    world.CheckAtRest();
-    char b2[200];
-    std::snprintf(b2, sizeof b2,
-                  "%llu steps (%.2f s of machine time) in %.2f s wall: %.1f M steps/s "
-                  "(%.1f M input + output pulses/s)",
-                  static_cast<unsigned long long>(r.benchmark.steps), r.benchmark.virtual_s,
-                  r.benchmark.wall_s, r.benchmark.steps_per_s / 1e6,
-                  2 * r.benchmark.steps_per_s / 1e6);
-    progress.Line(b2);
-  }
-
-  r.audit = world.Audit();
-  r.latency = world.latency().Summarize();
-  r.latency_histogram = world.latency().histogram();
-  r.peak_input_rate_hz = world.cnc().peak_step_rate_hz();
-  r.virtual_s = static_cast<double>(world.now_ns()) * 1e-9;
-  r.wall_s = Since(wall0);
-
-  // The "must show" checks.
+// The "must show" checks of every run; each failed one is named in r.failures.
+void CheckRun(DemoResult& r) {
   auto check = [&](bool ok, const std::string& what) {
     if (!ok) r.failures.push_back(what);
   };
-  const double step_um = 1000 * world.machine().step_mm(0);
-  check(r.after.Ed() <= 0.05 * r.before.Ed() || r.after.Ed() <= step_um,
-        "ISO 230-6 E_d not reduced by 95 %");
-  check(r.after.points.max_um <= 0.05 * r.before.points.max_um || r.after.points.max_um <= step_um,
-        "max volumetric error at the random points not reduced by 95 %");
   check(r.audit.lost_steps == 0 && r.audit.tick_mismatches == 0, "lost steps");
   check(r.audit.timing_violations == 0, "pulse timing violations");
   check(r.latency.max_ticks <= 2.0 && r.latency.unmatched == 0, "latency above 2 ticks");
   check(r.reference_agrees, "board and CNC disagree after homing");
-  check(r.activation.ok && (r.activation.device_state & canopen::kStateEngaged) != 0,
-        "table not engaged");
-  return r;
+  check((r.activation.device_state & canopen::kStateEngaged) != 0, "table not engaged");
 }
 
-void PrintSummary(const DemoResult& r, std::ostream& out) {
-  char b[256];
-  out << "\n== before / after compensation ==========================================\n";
-  out << "                                                  before        after   reduction\n";
-  // `reduce`: print the reduction (not for noise-level figures such as R and B here: the model
-  // has no backlash and no random positioning error, so they are instrument noise).
-  auto row = [&](const std::string& label, double before, double after, bool reduce = true) {
-    char line[256];
-    if (reduce) {
-      std::snprintf(line, sizeof line, "%-44s %9.3f um %9.3f um   %6.2f %%\n", label.c_str(),
-                    before, after, Reduction(before, after));
-    } else {
-      std::snprintf(line, sizeof line, "%-44s %9.3f um %9.3f um   (noise)\n", label.c_str(), before,
-                    after);
-    }
-    out << line;
-  };
-  row("ISO 230-6 E_d (4 body diagonals)", r.before.Ed(), r.after.Ed());
-  row("ISO 230-6 B_d", r.before.Bd(), r.after.Bd(), false);
-  row("volumetric error, max of " + std::to_string(r.after.points.targets_mm.size()) +
-          " points (tracker)",
-      r.before.points.max_um, r.after.points.max_um);
-  row("  rms (tracker)", r.before.points.rms_um, r.after.points.rms_um);
-  row("  max, machine model (no instrument error)", r.before.points.true_max_um,
-      r.after.points.true_max_um);
-  const auto gb = r.before.Gost(), ga = r.after.Gost();
-  for (size_t a = 0; a < 3; ++a) {
-    const char axis = "XYZ"[a];
-    std::string label = std::string("GOST 27843 ") + axis + "  A (accuracy)";
-    row(label, gb[a].A, ga[a].A);
-    label = std::string("GOST 27843 ") + axis + "  R (repeatability)";
-    row(label, gb[a].R, ga[a].R, false);
-    label = std::string("GOST 27843 ") + axis + "  B (reversal)";
-    row(label, gb[a].B, ga[a].B, false);
+// The ideal machine's figures: 95 % below uncompensated (or within one step).
+void CheckIdeal(double step_um, DemoResult& r) {
+  if (!(r.after.Ed() <= 0.05 * r.before.Ed() || r.after.Ed() <= step_um)) {
+    r.failures.push_back("ISO 230-6 E_d not reduced by 95 %");
   }
-  out << "\n== steps, timing, latency, speed =========================================\n";
-  std::snprintf(b, sizeof b,
-                "input steps %llu, output steps %llu, peak input rate %.3f MHz per axis\n",
-                static_cast<unsigned long long>(r.audit.input_steps),
-                static_cast<unsigned long long>(r.audit.output_steps), r.peak_input_rate_hz / 1e6);
-  out << b;
-  std::snprintf(b, sizeof b,
-                "lost steps: %llu (drive == CNC steps + correction at %llu rest points; drive == "
-                "board output at every one of %llu ticks: %llu mismatches)\n",
-                static_cast<unsigned long long>(r.audit.lost_steps),
-                static_cast<unsigned long long>(r.audit.rest_checks),
-                static_cast<unsigned long long>(r.audit.ticks),
-                static_cast<unsigned long long>(r.audit.tick_mismatches));
-  out << b;
-  std::snprintf(b, sizeof b,
-                "pulse timing violations at the drives: %llu; backlog overruns: %u, largest "
-                "backlog %u steps\n",
-                static_cast<unsigned long long>(r.audit.timing_violations), r.audit.overruns,
-                r.audit.max_backlog);
-  out << b;
-  std::snprintf(b, sizeof b,
-                "latency input step -> output step (tick %.0f us, %llu steps): p50 %.2f, p90 "
-                "%.2f, p99 %.2f, p99.9 %.2f, max %.3f ticks; > 2 ticks: %llu; unmatched: %llu\n",
-                r.tick_us, static_cast<unsigned long long>(r.latency.samples), r.latency.p50_ticks,
-                r.latency.p90_ticks, r.latency.p99_ticks, r.latency.p999_ticks, r.latency.max_ticks,
-                static_cast<unsigned long long>(r.latency.over_2_ticks),
-                static_cast<unsigned long long>(r.latency.unmatched));
-  out << b;
-  std::snprintf(b, sizeof b,
-                "simulator speed: %.1f M steps/s (3 axes at 1 MHz; goal >= 10 M/s); whole demo: "
-                "%.1f s of machine time, %.1f M steps in %.1f s wall (%.1f M steps/s)\n",
-                r.benchmark.steps_per_s / 1e6, r.virtual_s,
-                static_cast<double>(r.audit.input_steps) / 1e6, r.wall_s,
-                static_cast<double>(r.audit.input_steps) / r.wall_s / 1e6);
-  out << b;
-  if (r.failures.empty()) {
-    out << "\nall checks passed: residual >= 95 % below uncompensated (E_d and random points), "
-           "zero lost steps, zero timing violations, latency <= 2 ticks\n";
+  if (!(r.after.points.max_um <= 0.05 * r.before.points.max_um ||
+        r.after.points.max_um <= step_um)) {
+    r.failures.push_back("max volumetric error at the random points not reduced by 95 %");
+  }
+}
+
+void Keep(DemoResult& r, StagedTable t) {
+  r.table = std::move(t.table);
+  r.upload = t.upload;
+  r.activation = t.activation;
+}
+
+// Steps 3-8 on the ideal machine: error motions, table, upload, activation, re-measuring.
+SimStatus RunIdeal(Session& s, DemoResult& r) {
+  demo::Progress& progress = s.progress;
+  progress.Step(
+      "measuring the six error motions of X, Y, Z through the reference point "
+      "(virtual 6-DOF laser, like XL-80 linear/straightness/angular setups)");
+  VOLCOMP_SIM_TRY(demo::MeasureErrorMotions(s, r));
+  progress.Step("building the table from the measurements");
+  const auto t0 = Clock::now();
+  model::GridSection grid;
+  VOLCOMP_SIM_ASSIGN(grid, demo::BuildModelGrid(s, r));
+  r.table = AssembleTable(
+      grid, {}, s.step_mm(), 1,
+      {{"builder", "volcomp-sim demo (the sources and grid of `volcomp build model`)"},
+       {"source", "measured 21-parameter model: 6-DOF laser runs of X, Y, Z"}});
+  demo::PrintImageLine(s, r.table, t0);
+  progress.Step("uploading over the simulated CAN bus (PC tool's SDO client, block transfer)");
+  VOLCOMP_SIM_ASSIGN(r.upload, demo::Upload(s, r.table));
+  progress.Step("homing again (references the axes), activating the table");
+  VOLCOMP_SIM_ASSIGN(r.activation, demo::Activate(s, r.table.crc32, true));
+  progress.Step("re-measuring the compensated machine (same programs, fresh instrument noise)");
+  VOLCOMP_SIM_ASSIGN(r.after, demo::MeasurePhase(s, r));
+  return SimStatus::Ok();
+}
+
+// Steps 3-9 on the worn machine: the three compensations, each re-measured.
+SimStatus RunWorn(Session& s, DemoResult& r) {
+  demo::Progress& progress = s.progress;
+  const std::array<double, 3> step = s.step_mm();
+  progress.Step(
+      "measuring the six error motions of X, Y, Z through the reference point "
+      "(virtual 6-DOF laser), mean of the runs up and down");
+  VOLCOMP_SIM_TRY(demo::MeasureErrorMotions(s, r));
+
+  progress.Step("table 1: GRID3 from the 21-parameter measurements; upload, reference, activate");
+  auto t0 = Clock::now();
+  model::GridSection model_grid;
+  VOLCOMP_SIM_ASSIGN(model_grid, demo::BuildModelGrid(s, r));
+  TableBuildResult t1 = AssembleTable(
+      model_grid, {}, step, 1,
+      {{"builder", "volcomp-sim demo (the sources and grid of `volcomp build model`)"},
+       {"source", "measured 21-parameter model: 6-DOF laser runs of X, Y, Z"}});
+  demo::PrintImageLine(s, t1, t0);
+  StagedTable staged;
+  VOLCOMP_SIM_ASSIGN(staged, demo::StageTable(s, "21-param", std::move(t1), true));
+  r.earlier_tables.push_back(std::move(staged));
+  progress.Step("re-measuring with table 1 (21-parameter GRID3)");
+  r.intermediate.push_back({"21-param", {}});
+  VOLCOMP_SIM_ASSIGN(r.intermediate.back().results, demo::MeasurePhase(s, r));
+
+  progress.Step(
+      "table 2: AXIS1D forward/reverse tables from bidirectional ISO 230-2 runs (table 1 "
+      "active), with the GRID3 of table 1");
+  std::vector<model::AxisSection> axis_tables;
+  VOLCOMP_SIM_ASSIGN(axis_tables, demo::MeasureAxisTables(s, r));
+  t0 = Clock::now();
+  TableBuildResult t2 = AssembleTable(
+      model_grid, axis_tables, step, 2,
+      {{"builder", "volcomp-sim demo (the entry points of `volcomp build model` and `build axis`)"},
+       {"source", "measured 21-parameter model + ISO 230-2 runs"}});
+  demo::PrintImageLine(s, t2, t0);
+  VOLCOMP_SIM_ASSIGN(staged, demo::StageTable(s, "21-param + AXIS1D", std::move(t2), false));
+  r.earlier_tables.push_back(std::move(staged));
+  progress.Step("re-measuring with table 2 (21-parameter GRID3 + AXIS1D)");
+  r.intermediate.push_back({"+AXIS1D", {}});
+  VOLCOMP_SIM_ASSIGN(r.intermediate.back().results, demo::MeasurePhase(s, r));
+
+  progress.Step(
+      "table 3: laser tracker at every node of a lattice, measured through table 2; its GRID3 "
+      "(composed with table 2's) with the AXIS1D tables");
+  const size_t first_check = r.drift.size() - 1;  // the check after the last test of table 2
+  model::GridSection lattice_grid;
+  VOLCOMP_SIM_ASSIGN(lattice_grid,
+                     demo::MeasureTrackerLattice(s, r, r.earlier_tables.back().table.image));
+  t0 = Clock::now();
+  TableBuildResult t3 = AssembleTable(
+      lattice_grid, axis_tables, step, 3,
+      {{"builder",
+        "volcomp-sim demo (the entry points of `volcomp build tracker --lattice --through` and "
+        "`build axis`)"},
+       {"source", "laser-tracker lattice through table 2 + ISO 230-2 runs"}});
+  demo::PrintImageLine(s, t3, t0);
+  VOLCOMP_SIM_ASSIGN(staged, demo::StageTable(s, "tracker + AXIS1D", std::move(t3), false));
+  Keep(r, std::move(staged));
+  VOLCOMP_SIM_TRY(demo::CheckDrift(s, r, "table 3 activated"));
+  progress.Step("re-measuring with table 3 (tracker-lattice GRID3 + AXIS1D)");
+  r.after_label = "tracker";
+  VOLCOMP_SIM_ASSIGN(r.after, demo::MeasurePhase(s, r));
+  demo::EvaluateWornGoals(s, r, first_check);
+  return SimStatus::Ok();
+}
+
+}  // namespace
+
+void UseWornMachine(DemoOptions* o) {
+  o->machine = MachineProfile::kWorn;
+  o->wear = DefaultWornProfile(o->seed);
+  o->laser.misalignment_mrad = 1.0;
+}
+
+bool SwitchOff(const std::string& source, DemoOptions* o) {
+  WornMachineProfile& w = o->wear;
+  if (source == "lost-motion") {
+    w.lost_motion = false;
+  } else if (source == "scatter") {
+    w.scatter = false;
+  } else if (source == "screw") {
+    w.screw_error = false;
+  } else if (source == "thermal") {
+    w.thermal = false;
+  } else if (source == "sag") {
+    w.cross_axis_sag = false;
+  } else if (source == "misalignment") {
+    o->laser.misalignment_mrad = 0;
   } else {
-    out << "\nFAILED:";
-    for (const std::string& f : r.failures) out << " " << f << ";";
-    out << "\n";
+    return false;
   }
+  return true;
+}
+
+SimResult<DemoResult> RunDemo(const DemoOptions& o, std::ostream& log) {
+  const auto wall0 = Clock::now();
+  const bool worn = o.machine == MachineProfile::kWorn;
+  DemoResult r;
+  r.options = o;
+  demo::Progress progress(log, worn ? 10 : 8);
+
+  WorldOptions wo;
+  wo.machine.model = LoadMachineModel(o.model_spec);
+  if (worn) {
+    wo.machine.wear = o.wear;
+    wo.machine.wear.seed = o.seed ^ 0x6d616368696e65ull;  // the machine's own random stream
+  }
+  r.machine_name = wo.machine.model.name + (worn ? ", worn" : "");
+  wo.board = BoardSettingsFor(Machine(wo.machine));
+  wo.cnc.accel_mm_s2 = o.accel_mm_s2;
+  World world(wo);
+  if (const Status started = world.Start(); !started.ok()) {
+    return SimStatus(started.error(), std::string("the simulated board did not start: ") +
+                                          ErrorText(started.error()));
+  }
+  r.tick_us = static_cast<double>(world.tick_ns()) / 1000.0;
+  demo::Layout layout;
+  VOLCOMP_SIM_ASSIGN(layout, demo::MakeLayout(world.machine(), o.margin_mm));
+  Random rng(o.seed);
+  Session s{o,
+            progress,
+            world,
+            layout,
+            LaserInterferometer(&world.machine(), o.laser, rng.Next()),
+            LaserTracker(&world.machine(), o.tracker, rng.Next()),
+            {},
+            {},
+            worn,
+            LaserTracker(&world.machine(), o.tracker, Random(o.seed ^ 0x6472696674ull).Next()),
+            {layout.inner_hi[0], layout.centre[1], layout.centre[2]},
+            0};
+  demo::PrintSetup(s, r, wo);
+  demo::PlanTests(s, rng);
+
+  progress.Step(
+      "power-up and homing: home switches 5 mm below the travel, board references on "
+      "their edges");
+  VOLCOMP_SIM_TRY(demo::HomeAtPowerUp(s, r));
+  if (worn) {
+    demo::PrintWarmUp(s);
+    VOLCOMP_SIM_TRY(demo::CheckDrift(s, r, ""));
+  }
+  progress.Step(
+      "measuring the uncompensated machine (GOST 27843 per axis, ISO 230-6 diagonals, "
+      "random points)");
+  VOLCOMP_SIM_ASSIGN(r.before, demo::MeasurePhase(s, r));
+  VOLCOMP_SIM_TRY(worn ? RunWorn(s, r) : RunIdeal(s, r));
+  progress.Step("simulator speed: rapid moves with X, Y and Z each at 1 MHz through the board");
+  demo::RunSpeedBenchmark(s, r);
+
+  demo::CollectFigures(world, r);
+  r.wall_s = demo::Since(wall0);
+  if (!worn) CheckIdeal(1000 * world.machine().step_mm(0), r);
+  CheckRun(r);
+  return r;
 }
 
 }  // namespace volcomp::sim

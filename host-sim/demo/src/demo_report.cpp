@@ -2,7 +2,6 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
-#include <stdexcept>
 
 #include "volcomp/image/image_builder.hpp"
 #include "volcomp/metrology/diagonal_report.hpp"
@@ -17,10 +16,11 @@ namespace {
 
 using report::FormatFixed;
 
-void WriteText(const std::string& path, const std::string& text) {
+SimStatus WriteText(const std::string& path, const std::string& text) {
   std::ofstream f(path);
-  if (!f) throw std::runtime_error("cannot write " + path);
+  if (!f) return SimStatus(Error::kIoError, "cannot write " + path);
   f << text;
+  return SimStatus::Ok();
 }
 
 std::string PointsCsv(const PointSetResult& p) {
@@ -122,34 +122,134 @@ std::string LatencyChart(const DemoResult& r) {
   return c.Render();
 }
 
+// The measured phases in order, with their column label and file tag.
+struct Phase {
+  std::string label, tag;
+  const PhaseResults* results;
+};
+
+std::vector<Phase> Phases(const DemoResult& r) {
+  std::vector<Phase> p = {{"before", "before", &r.before}};
+  for (size_t i = 0; i < r.intermediate.size(); ++i) {
+    p.push_back(
+        {r.intermediate[i].label, "after" + std::to_string(i + 1), &r.intermediate[i].results});
+  }
+  p.push_back({r.after_label, "after", &r.after});
+  return p;
+}
+
+// The worn run's inputs of its tables, in the PC tool's formats: the ISO 230-2 runs (`volcomp
+// evaluate positioning`), their mean deviations (`volcomp build axis`), the tracker lattice
+// (`volcomp build tracker --lattice`), and every image the board received.
+SimStatus WriteWornData(const DemoResult& r, const std::string& dir) {
+  for (size_t a = 0; a < 3; ++a) {
+    const std::string axis(1, "xyz"[a]);
+    VOLCOMP_SIM_TRY(
+        WriteText(dir + "/data/axis_run_" + axis + ".csv", PositioningCsv(r.axis_runs[a].data)));
+    const model::PositioningData d = PairMeans(MeanDeviations(r.axis_runs[a].iso));
+    std::string csv = "position_mm,dev_forward_um,dev_reverse_um\n";
+    for (size_t i = 0; i < d.position.size(); ++i) {
+      csv += FormatFixed(d.position[i], 4) + "," + FormatFixed(d.dev_forward[i], 4) + "," +
+             FormatFixed(d.dev_reverse[i], 4) + "\n";
+    }
+    VOLCOMP_SIM_TRY(WriteText(dir + "/data/axis_" + axis + ".csv", csv));
+  }
+  const model::GridSpec& g = r.lattice.lattice;
+  std::string csv = "x_cmd_mm,y_cmd_mm,z_cmd_mm,x_mm,y_mm,z_mm\n";
+  size_t n = 0;
+  for (uint32_t k = 0; k < g[2].nodes; ++k) {
+    for (uint32_t j = 0; j < g[1].nodes; ++j) {
+      for (uint32_t i = 0; i < g[0].nodes; ++i) {
+        const model::Vec3& p = r.lattice.position_mm[n++];
+        csv += FormatFixed(g[0].origin_mm + i * g[0].spacing_mm, 4) + "," +
+               FormatFixed(g[1].origin_mm + j * g[1].spacing_mm, 4) + "," +
+               FormatFixed(g[2].origin_mm + k * g[2].spacing_mm, 4) + "," + FormatFixed(p.x, 6) +
+               "," + FormatFixed(p.y, 6) + "," + FormatFixed(p.z, 6) + "\n";
+      }
+    }
+  }
+  VOLCOMP_SIM_TRY(WriteText(dir + "/data/tracker_lattice.csv", csv));
+  std::string drift = "after,time_s,table,dx_um,dy_um,dz_um\n";
+  for (const DriftCheck& c : r.drift) {
+    drift += "\"" + c.after + "\"," + FormatFixed(c.time_s, 2) + "," + std::to_string(c.epoch) +
+             "," + FormatFixed(c.reading_um.x, 3) + "," + FormatFixed(c.reading_um.y, 3) + "," +
+             FormatFixed(c.reading_um.z, 3) + "\n";
+  }
+  VOLCOMP_SIM_TRY(WriteText(dir + "/data/drift_checks.csv", drift));
+  for (size_t i = 0; i < r.earlier_tables.size(); ++i) {
+    image::WriteFileBytes(dir + "/table" + std::to_string(i + 1) + ".vct",
+                          r.earlier_tables[i].table.image);
+  }
+  return SimStatus::Ok();
+}
+
+void AddWornSections(report::HtmlPage* page, const DemoResult& r) {
+  page->Heading(2, "Goals of the worn profile");
+  std::vector<std::vector<std::string>> goals;
+  for (const Goal& g : r.goals) {
+    const char* unit = g.at_least ? " %" : " µm";
+    goals.push_back({g.what, FormatFixed(g.value, 2) + unit,
+                     std::string(g.at_least ? "≥ " : "≤ ") + FormatFixed(g.limit, 2) + unit,
+                     g.holds ? "holds" : "FAILS"});
+  }
+  page->Table({"goal", "measured", "limit", ""}, goals);
+  const ErrorBudget& e = r.budget;
+  page->Heading(2, "Error budget: what remains after the last compensation");
+  page->Table(
+      {"term", "value"},
+      {{"repeatability: GOST 27843 S per axis (uncompensated, pooled), µm",
+        FormatFixed(e.sigma_um[0], 2) + " / " + FormatFixed(e.sigma_um[1], 2) + " / " +
+            FormatFixed(e.sigma_um[2], 2) + " → 3σ (3-D) " + FormatFixed(e.three_sigma_um, 2)},
+       {"thermal drift at the check point since the lattice was measured, µm",
+        FormatFixed(e.drift_since_table_um.x, 2) + ", " + FormatFixed(e.drift_since_table_um.y, 2) +
+            ", " + FormatFixed(e.drift_since_table_um.z, 2) + " (|.| " +
+            FormatFixed(model::Norm(e.drift_since_table_um), 2) + " over " +
+            FormatFixed(e.drift_since_table_s, 0) + " s)"},
+       {"  of which during the final point test, µm",
+        FormatFixed(e.drift_during_points_um.x, 2) + ", " +
+            FormatFixed(e.drift_during_points_um.y, 2) + ", " +
+            FormatFixed(e.drift_during_points_um.z, 2)},
+       {"short-period screw error (not seen at the measuring pitch), amplitude µm",
+        FormatFixed(e.short_period_um[0], 2) + " / " + FormatFixed(e.short_period_um[1], 2) +
+            " / " + FormatFixed(e.short_period_um[2], 2)},
+       {"instrument: tracker 3σ per coordinate / laser cosine error, µm",
+        FormatFixed(e.tracker_three_sigma_um, 2) + " / " + FormatFixed(e.laser_cosine_um, 2)},
+       {"1 step, µm", FormatFixed(e.step_um, 2)},
+       {"3σ + |drift| + 1 step, µm", FormatFixed(e.limit_um, 2)},
+       {"+ short-period error |A| = limit for the max residual, µm",
+        FormatFixed(e.goal_limit_um, 2)}});
+}
+
 }  // namespace
 
-void WriteDemoReport(const DemoResult& r, const std::string& dir) {
+SimStatus WriteDemoReport(const DemoResult& r, const std::string& dir) {
   const std::string index = report::PrepareReportPath(dir, "index.html");
   report::PrepareReportPath(dir + "/data", "x");
   report::PrepareReportPath(dir + "/programs", "x");
   report::PrepareReportPath(dir + "/model", "x");
 
   // Data files, in the formats the PC tool reads.
-  for (const auto& [phase, res] : {std::pair{"before", &r.before}, std::pair{"after", &r.after}}) {
+  for (const Phase& ph : Phases(r)) {
+    const std::string tag = ph.tag;
     for (size_t a = 0; a < 3; ++a) {
-      WriteText(dir + "/data/gost_" + std::string(1, "xyz"[a]) + "_" + phase + ".csv",
-                PositioningCsv(res->gost[a].data));
+      VOLCOMP_SIM_TRY(WriteText(dir + "/data/gost_" + std::string(1, "xyz"[a]) + "_" + tag + ".csv",
+                                PositioningCsv(ph.results->gost[a].data)));
     }
-    WriteText(dir + "/data/diagonals_" + std::string(phase) + ".csv", res->diagonals.csv);
-    WriteText(dir + "/data/points_" + std::string(phase) + ".csv", PointsCsv(res->points));
+    VOLCOMP_SIM_TRY(WriteText(dir + "/data/diagonals_" + tag + ".csv", ph.results->diagonals.csv));
+    VOLCOMP_SIM_TRY(WriteText(dir + "/data/points_" + tag + ".csv", PointsCsv(ph.results->points)));
   }
+  if (r.options.machine == MachineProfile::kWorn) VOLCOMP_SIM_TRY(WriteWornData(r, dir));
   for (size_t a = 0; a < 3; ++a) {
-    WriteText(dir + "/programs/gost_" + std::string(1, "xyz"[a]) + ".ngc",
-              r.before.gost[a].program.gcode);
+    VOLCOMP_SIM_TRY(WriteText(dir + "/programs/gost_" + std::string(1, "xyz"[a]) + ".ngc",
+                              r.before.gost[a].program.gcode));
   }
   for (const TestProgram& p : r.before.diagonals.programs) {
     std::string name = p.name;
     for (char& c : name) c = c == '+' ? 'P' : c == '-' ? 'N' : c;
-    WriteText(dir + "/programs/diagonal_" + name + ".ngc", p.gcode);
+    VOLCOMP_SIM_TRY(WriteText(dir + "/programs/diagonal_" + name + ".ngc", p.gcode));
   }
-  WriteText(dir + "/programs/points.ngc", r.before.points.program.gcode);
-  WriteModelFiles(r.measured_model, dir + "/model");
+  VOLCOMP_SIM_TRY(WriteText(dir + "/programs/points.ngc", r.before.points.program.gcode));
+  VOLCOMP_SIM_TRY(WriteModelFiles(r.measured_model, dir + "/model"));
   image::WriteFileBytes(dir + "/table.vct", r.table.image);
 
   report::HtmlPage page("volcomp-sim demo report");
@@ -161,25 +261,48 @@ void WriteDemoReport(const DemoResult& r, const std::string& dir) {
                  FormatFixed(r.wall_s, 1) + " s wall for " + FormatFixed(r.virtual_s, 1) +
                  " s of machine time.");
   page.Heading(2, "Before and after");
+  const std::vector<Phase> phases = Phases(r);
+  const bool worn = r.options.machine == MachineProfile::kWorn;
   std::vector<std::vector<std::string>> rows;
-  auto row = [&](const std::string& what, double b, double a, bool reduce = true) {
-    rows.push_back({what, FormatFixed(b, 3), FormatFixed(a, 3), reduce ? Pct(b, a) : "(noise)"});
+  auto row = [&](const std::string& what, double (*figure)(const PhaseResults&, size_t), size_t a,
+                 bool reduce) {
+    std::vector<std::string> cells = {what};
+    for (const Phase& ph : phases) cells.push_back(FormatFixed(figure(*ph.results, a), 3));
+    const double b = figure(r.before, a), f = figure(r.after, a);
+    cells.push_back(reduce ? Pct(b, f) : worn ? "(scatter)" : "(noise)");
+    rows.push_back(cells);
   };
-  row("ISO 230-6 E_d (body diagonals), µm", r.before.Ed(), r.after.Ed());
-  row("ISO 230-6 B_d, µm", r.before.Bd(), r.after.Bd(), false);
-  row("volumetric error, max over points (tracker), µm", r.before.points.max_um,
-      r.after.points.max_um);
-  row("volumetric error, rms (tracker), µm", r.before.points.rms_um, r.after.points.rms_um);
-  row("volumetric error, max, machine model, µm", r.before.points.true_max_um,
-      r.after.points.true_max_um);
-  const auto gb = r.before.Gost(), ga = r.after.Gost();
+  row(
+      "ISO 230-6 E_d (body diagonals), µm", [](const PhaseResults& p, size_t) { return p.Ed(); }, 0,
+      true);
+  row(
+      "ISO 230-6 B_d, µm", [](const PhaseResults& p, size_t) { return p.Bd(); }, 0, worn);
+  row(
+      "volumetric error, max over points (tracker), µm",
+      [](const PhaseResults& p, size_t) { return p.points.max_um; }, 0, true);
+  row(
+      "volumetric error, rms (tracker), µm",
+      [](const PhaseResults& p, size_t) { return p.points.rms_um; }, 0, true);
+  row(
+      worn ? "volumetric error, max, machine, µm" : "volumetric error, max, machine model, µm",
+      [](const PhaseResults& p, size_t) { return p.points.true_max_um; }, 0, true);
   for (size_t a = 0; a < 3; ++a) {
     const std::string axis(1, "XYZ"[a]);
-    row("GOST 27843 " + axis + " A, µm", gb[a].A, ga[a].A);
-    row("GOST 27843 " + axis + " R, µm", gb[a].R, ga[a].R, false);
-    row("GOST 27843 " + axis + " B, µm", gb[a].B, ga[a].B, false);
+    row(
+        "GOST 27843 " + axis + " A, µm",
+        [](const PhaseResults& p, size_t i) { return p.Gost()[i].A; }, a, true);
+    row(
+        "GOST 27843 " + axis + " R, µm",
+        [](const PhaseResults& p, size_t i) { return p.Gost()[i].R; }, a, false);
+    row(
+        "GOST 27843 " + axis + " B, µm",
+        [](const PhaseResults& p, size_t i) { return p.Gost()[i].B; }, a, worn);
   }
-  page.Table({"figure", "before", "after", "reduction"}, rows);
+  std::vector<std::string> header = {"figure"};
+  for (const Phase& ph : phases) header.push_back(ph.label);
+  header.push_back("reduction");
+  page.Table(header, rows);
+  if (worn) AddWornSections(&page, r);
   page.Heading(2, "Steps, timing and latency");
   page.Table(
       {"figure", "value"},
@@ -207,28 +330,47 @@ void WriteDemoReport(const DemoResult& r, const std::string& dir) {
   std::vector<std::string> items;
   for (const auto& [k, v] : r.table.info) items.push_back(k + ": " + v);
   items.push_back("image: " + std::to_string(r.table.image.size()) + " bytes (table.vct), " +
-                  "largest correction " + FormatFixed(r.table.grid.stats.max_correction_um, 1) +
+                  "largest correction " +
+                  FormatFixed(r.table.grid ? r.table.grid->build.stats.max_correction_um : 0, 1) +
                   " µm");
   items.push_back("upload: " + FormatFixed(r.upload.transfer_s, 2) + " s of bus time, " +
                   FormatFixed(r.upload.rate_bytes_s / 1000, 1) + " kB/s");
   page.List(items);
-  page.Paragraph(
-      "Rebuild it with the PC tool: volcomp build model --model model/measured.conf "
-      "--resolution-nm X=1000,Y=1000,Z=1000 --spacing-mm " +
-      FormatFixed(r.options.grid_spacing_mm, 0) + " -o table.vct");
+  if (worn) {
+    page.Paragraph(
+        "Rebuild its sections with the PC tool: volcomp build tracker --lattice "
+        "data/tracker_lattice.csv --through table2.vct --resolution-nm X=1000,Y=1000,Z=1000 "
+        "--spacing-mm " +
+        FormatFixed(r.options.grid_spacing_mm, 0) +
+        " -o grid.vct; volcomp build axis --x data/axis_x.csv --y data/axis_y.csv --z "
+        "data/axis_z.csv --resolution-nm X=1000,Y=1000,Z=1000 --spacing X=" +
+        FormatFixed(r.options.axis_run_pitch_mm, 0) +
+        ",Y=" + FormatFixed(r.options.axis_run_pitch_mm, 0) +
+        ",Z=" + FormatFixed(r.options.axis_run_pitch_mm, 0) +
+        " -o axis.vct (the PC tool writes them as two images; the demo puts both sections in "
+        "one, as the board applies them).");
+  } else {
+    page.Paragraph(
+        "Rebuild it with the PC tool: volcomp build model --model model/measured.conf "
+        "--resolution-nm X=1000,Y=1000,Z=1000 --spacing-mm " +
+        FormatFixed(r.options.grid_spacing_mm, 0) + " -o table.vct");
+  }
   for (const ParametricResult& p : r.parametric) {
     page.Figure(ParametricChart(p, false), "");
     page.Figure(ParametricChart(p, true), "");
   }
-  for (const auto& [phase, res] : {std::pair{"before", &r.before}, std::pair{"after", &r.after}}) {
-    page.Heading(2, std::string("ISO 230-6 diagonals, ") + phase + " compensation");
-    metrology::AddDiagonalSections(&page, res->diagonals.evaluation);
+  for (const Phase& ph : phases) {
+    const std::string when =
+        ph.results == &r.before ? "before compensation" : "compensation: " + ph.label;
+    page.Heading(2, "ISO 230-6 diagonals, " + when);
+    metrology::AddDiagonalSections(&page, ph.results->diagonals.evaluation);
     for (size_t a = 0; a < 3; ++a) {
-      page.Heading(2, std::string("GOST 27843 ") + "XYZ"[a] + ", " + phase + " compensation");
-      metrology::AddPositioningSection(&page, res->gost[a].gost);
+      page.Heading(2, std::string("GOST 27843 ") + "XYZ"[a] + ", " + when);
+      metrology::AddPositioningSection(&page, ph.results->gost[a].gost);
     }
   }
   page.WriteFile(index);
+  return SimStatus::Ok();
 }
 
 }  // namespace volcomp::sim

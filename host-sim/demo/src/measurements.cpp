@@ -5,7 +5,6 @@
 #include <cmath>
 #include <cstdio>
 #include <map>
-#include <stdexcept>
 
 #include "volcomp/sim/gcode.hpp"
 #include "volcomp/tools/csv.hpp"
@@ -23,7 +22,7 @@ std::string Fixed(double v, int decimals) {
 
 }  // namespace
 
-std::vector<StopState> RunTestProgram(World& world, const TestProgram& program) {
+SimResult<std::vector<StopState>> RunTestProgram(World& world, const TestProgram& program) {
   const Program blocks = ParseGcode(program.gcode, program.name);
   std::vector<StopState> states;
   world.cnc().set_dwell_handler([&](uint64_t) {
@@ -37,22 +36,26 @@ std::vector<StopState> RunTestProgram(World& world, const TestProgram& program) 
   world.cnc().QueueProgram(blocks);
   const bool done = world.RunUntilCncIdle(3600ull * 1000000000ull);
   world.cnc().set_dwell_handler({});
-  if (!done) throw std::runtime_error(program.name + ": the CNC did not finish the program");
+  if (!done) {
+    return SimStatus(Error::kNotReady, program.name + ": the CNC did not finish the program");
+  }
   if (states.size() != program.stops.size()) {
-    throw std::runtime_error(program.name + ": " + std::to_string(states.size()) + " dwells for " +
-                             std::to_string(program.stops.size()) + " stops");
+    return SimStatus(Error::kNotReady, program.name + ": " + std::to_string(states.size()) +
+                                           " dwells for " + std::to_string(program.stops.size()) +
+                                           " stops");
   }
   return states;
 }
 
-GostAxisResult MeasureGostAxis(World& world,
-                               LaserInterferometer& laser,
-                               int axis,
-                               const GostPlan& plan) {
+SimResult<GostAxisResult> MeasureGostAxis(World& world,
+                                          LaserInterferometer& laser,
+                                          int axis,
+                                          const GostPlan& plan) {
   GostAxisResult r;
   r.axis = axis;
   r.program = GostAxisProgram(axis, plan.line_point_mm, plan.targets_mm, plan.cycle);
-  const std::vector<StopState> states = RunTestProgram(world, r.program);
+  std::vector<StopState> states;
+  VOLCOMP_SIM_ASSIGN(states, RunTestProgram(world, r.program));
   model::Vec3 beam;
   beam[axis] = 1;
   r.data.source = r.program.name;
@@ -83,11 +86,11 @@ GostAxisResult MeasureGostAxis(World& world,
   return r;
 }
 
-DiagonalSetResult MeasureDiagonals(World& world,
-                                   LaserInterferometer& laser,
-                                   const std::vector<BodyDiagonal>& diagonals,
-                                   int targets_per_diagonal,
-                                   const CycleOptions& cycle) {
+SimResult<DiagonalSetResult> MeasureDiagonals(World& world,
+                                              LaserInterferometer& laser,
+                                              const std::vector<BodyDiagonal>& diagonals,
+                                              int targets_per_diagonal,
+                                              const CycleOptions& cycle) {
   DiagonalSetResult r;
   r.csv = "diagonal,target_mm,direction,run,deviation_um\n";
   for (const BodyDiagonal& d : diagonals) {
@@ -95,7 +98,8 @@ DiagonalSetResult MeasureDiagonals(World& world,
     for (size_t a = 0; a < 3; ++a) len2 += (d.p2[a] - d.p1[a]) * (d.p2[a] - d.p1[a]);
     const double increment = std::sqrt(len2) / std::max(1, targets_per_diagonal - 1);
     const TestProgram p = DiagonalProgram(d.name, d.p1, d.p2, increment, cycle);
-    const std::vector<StopState> states = RunTestProgram(world, p);
+    std::vector<StopState> states;
+    VOLCOMP_SIM_ASSIGN(states, RunTestProgram(world, p));
     const model::Vec3 beam = ToVec(p.direction);
     for (const StopState& s : states) {
       if (s.stop.datum) {
@@ -116,13 +120,15 @@ DiagonalSetResult MeasureDiagonals(World& world,
   return r;
 }
 
-PointSetResult MeasurePointSet(World& world,
-                               LaserTracker& tracker,
-                               const std::vector<Point3>& points_mm,
-                               double dwell_s) {
+SimResult<PointSetResult> MeasurePointSet(World& world,
+                                          LaserTracker& tracker,
+                                          const std::vector<Point3>& points_mm,
+                                          double dwell_s,
+                                          double approach_mm) {
   PointSetResult r;
-  r.program = PointSetProgram("volumetric point set", points_mm, dwell_s);
-  const std::vector<StopState> states = RunTestProgram(world, r.program);
+  r.program = PointSetProgram("volumetric point set", points_mm, dwell_s, approach_mm);
+  std::vector<StopState> states;
+  VOLCOMP_SIM_ASSIGN(states, RunTestProgram(world, r.program));
   double sum2 = 0, true_sum2 = 0;
   for (const StopState& s : states) {
     if (s.stop.datum) {
@@ -146,24 +152,34 @@ PointSetResult MeasurePointSet(World& world,
   return r;
 }
 
-ParametricResult MeasureParametric(World& world,
-                                   LaserInterferometer& laser,
-                                   int axis,
-                                   const Point3& reference_mm,
-                                   const std::vector<double>& positions_mm,
-                                   const CycleOptions& cycle) {
+SimResult<ParametricResult> MeasureParametric(World& world,
+                                              LaserInterferometer& laser,
+                                              int axis,
+                                              const Point3& reference_mm,
+                                              const std::vector<double>& positions_mm,
+                                              const CycleOptions& cycle) {
   ParametricResult r;
   r.axis = axis;
   r.position_mm = positions_mm;
+  const double ref = reference_mm[static_cast<size_t>(axis)];
+  int ref_target = -1;
+  for (size_t j = 0; j < positions_mm.size(); ++j) {
+    if (std::fabs(positions_mm[j] - ref) < 1e-9) ref_target = static_cast<int>(j) + 1;
+  }
+  if (ref_target < 0) {
+    return SimStatus(Error::kInvalidArgument,
+                     "parametric run: the positions must include the reference point");
+  }
   const TestProgram p = ParametricProgram(axis, reference_mm, positions_mm, cycle);
-  const std::vector<StopState> states = RunTestProgram(world, p);
+  std::vector<StopState> states;
+  VOLCOMP_SIM_ASSIGN(states, RunTestProgram(world, p));
   std::map<int, std::pair<SixDofReading, int>> sum, truth;
   for (const StopState& s : states) {
     if (s.stop.datum) {
       laser.Zero(s.q_mm, s.cmd_mm);
       continue;
     }
-    const SixDofReading m = laser.SixDof(s.q_mm, s.cmd_mm);
+    const SixDofReading m = laser.SixDof(s.q_mm, s.cmd_mm, axis);
     const SixDofReading t = laser.SixDofTrue(s.q_mm, s.cmd_mm);
     for (auto [acc, v] : {std::pair{&sum, &m}, std::pair{&truth, &t}}) {
       auto& e = (*acc)[s.stop.target];
@@ -171,14 +187,6 @@ ParametricResult MeasureParametric(World& world,
       e.first.angular_urad += v->angular_urad;
       e.second++;
     }
-  }
-  const double ref = reference_mm[static_cast<size_t>(axis)];
-  int ref_target = -1;
-  for (size_t j = 0; j < positions_mm.size(); ++j) {
-    if (std::fabs(positions_mm[j] - ref) < 1e-9) ref_target = static_cast<int>(j) + 1;
-  }
-  if (ref_target < 0) {
-    throw std::runtime_error("parametric run: the positions must include the reference point");
   }
   auto mean = [](const std::pair<SixDofReading, int>& e) {
     SixDofReading m;

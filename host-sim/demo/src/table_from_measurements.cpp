@@ -3,21 +3,23 @@
 
 #include <cstdio>
 #include <fstream>
-#include <stdexcept>
 
 #include "volcomp/byte_order.hpp"
 #include "volcomp/image/image_builder.hpp"
+#include "volcomp/model/grid_section.hpp"
 #include "volcomp/model/image_glue.hpp"
 
 namespace volcomp::sim {
 
-model::Model ModelFromParametric(const std::array<ParametricResult, 3>& runs,
-                                 const model::KinematicChain& chain) {
+SimResult<model::Model> ModelFromParametric(const std::array<ParametricResult, 3>& runs,
+                                            const model::KinematicChain& chain) {
   model::Model m;
   m.name = "measured (virtual 6-DOF laser, parametric runs through the reference point)";
   for (int a = 0; a < 3; ++a) {
     const ParametricResult& r = runs[static_cast<size_t>(a)];
-    if (r.axis != a) throw std::invalid_argument("ModelFromParametric: runs out of axis order");
+    if (r.axis != a) {
+      return SimStatus(Error::kInvalidArgument, "parametric runs are not X, Y, Z in order");
+    }
     std::vector<model::AxisErrorSample> rows;
     for (const SixDofReading& s : r.measured) rows.push_back({s.linear_um, s.angular_urad});
     m.axes[static_cast<size_t>(a)] = model::AxisErrorTable(r.position_mm, rows);
@@ -30,68 +32,103 @@ model::Model ModelFromParametric(const std::array<ParametricResult, 3>& runs,
   return m;
 }
 
-TableBuildResult BuildTableImage(const model::Model& measured,
-                                 const std::array<double, 3>& lo_mm,
-                                 const std::array<double, 3>& hi_mm,
-                                 const std::array<double, 3>& spacing_mm,
-                                 const std::array<double, 3>& step_mm,
-                                 uint32_t table_id) {
-  TableBuildResult r;
+std::vector<image::AxisDef> ImageAxes(const std::array<double, 3>& step_mm) {
+  std::vector<image::AxisDef> axes;
+  for (int a = 0; a < 3; ++a) {
+    image::AxisDef d;
+    d.name = "XYZ"[a];
+    d.kind = table::AxisKind::kLinear;
+    d.resolution_e9 = static_cast<uint32_t>(std::llround(step_mm[static_cast<size_t>(a)] * 1e9));
+    axes.push_back(d);
+  }
+  return axes;
+}
+
+model::GridBuildOptions LatticeOptions(const std::array<double, 3>& lo_mm,
+                                       const std::array<double, 3>& hi_mm,
+                                       const std::array<double, 3>& spacing_mm,
+                                       const std::array<double, 3>& step_mm) {
   model::GridBuildOptions o;
   o.min_mm = lo_mm;
   o.max_mm = hi_mm;
   o.spacing_mm = spacing_mm;
   o.natural_spacing_mm = spacing_mm;
   o.step_mm = step_mm;
-  const model::InverseMap inverse = [&measured](const model::Vec3& t) {
-    return model::SolveCommand(measured, t).command_mm;
-  };
-  const model::ForwardMap forward = [&measured](const model::Vec3& q) {
-    return q + 1e-3 * model::ToolPointError_um(measured, q);
-  };
-  r.grid = model::BuildCorrectionGrid(o, inverse, &forward);
+  return o;
+}
 
+model::PositioningData MeanDeviations(const metrology::PositioningResult& run) {
+  model::PositioningData d;
+  for (const metrology::PositionStats& p : run.positions) {
+    if (!p.up || !p.down) continue;
+    d.position.push_back(p.target);
+    d.dev_forward.push_back(p.up->mean);
+    d.dev_reverse.push_back(p.down->mean);
+  }
+  return d;
+}
+
+model::PositioningData PairMeans(const model::PositioningData& t) {
+  model::PositioningData d;
+  d.rotary = t.rotary;
+  for (size_t i = 0; i + 1 < t.position.size(); i += 2) {
+    d.position.push_back(0.5 * (t.position[i] + t.position[i + 1]));
+    d.dev_forward.push_back(0.5 * (t.dev_forward[i] + t.dev_forward[i + 1]));
+    d.dev_reverse.push_back(0.5 * (t.dev_reverse[i] + t.dev_reverse[i + 1]));
+  }
+  return d;
+}
+
+TableBuildResult AssembleTable(const std::optional<model::GridSection>& grid,
+                               const std::vector<model::AxisSection>& axis_tables,
+                               const std::array<double, 3>& step_mm,
+                               uint32_t table_id,
+                               const std::map<std::string, std::string>& info) {
+  TableBuildResult r;
+  r.grid = grid;
+  r.axis_tables = axis_tables;
   image::ImageRequest req;
   req.table_id = table_id;
-  for (int a = 0; a < 3; ++a) {
-    image::AxisDef d;
-    d.name = "XYZ"[a];
-    d.kind = table::AxisKind::kLinear;
-    d.resolution_e9 = static_cast<uint32_t>(std::llround(step_mm[static_cast<size_t>(a)] * 1e9));
-    req.axes.push_back(d);
+  req.axes = ImageAxes(step_mm);
+  if (grid) {
+    req.grid = grid->section;
+    r.info = grid->info;
   }
-  req.grid = model::ToGridCorrections(r.grid.grid, req.axes);
+  for (const model::AxisSection& a : axis_tables) req.axis_tables.push_back(a.section);
+  for (const auto& [k, v] : info) r.info[k] = v;
   req.element = table::ElementType::kInt16;
   req.frac_bits = image::ChooseFracBits(req);
   r.frac_bits = *req.frac_bits;
   r.lsb_um = model::LsbUm(req.axes[0], r.frac_bits);
-  const model::GridSpec& g = r.grid.grid.axes;
-  char lattice[256];
-  std::snprintf(lattice, sizeof lattice, "%g:%g:%g,%g:%g:%g,%g:%g:%g", g[0].origin_mm,
-                g[0].spacing_mm, g[0].end_mm(), g[1].origin_mm, g[1].spacing_mm, g[1].end_mm(),
-                g[2].origin_mm, g[2].spacing_mm, g[2].end_mm());
-  r.info = {{"builder", "volcomp-sim demo (tools/model BuildCorrectionGrid)"},
-            {"source", "measured 21-parameter model: 6-DOF laser runs of X, Y, Z"},
-            {"formulation", "physical, exact rotations, chain " + measured.chain.ToString()},
-            {"lattice_mm", lattice}};
-  char interp[32];
-  std::snprintf(interp, sizeof interp, "%.4g", r.grid.interpolation.max_um);
-  r.info["predicted_interp_error_um"] = interp;
   req.info = r.info;
   r.image = image::BuildImage(req);
   r.crc32 = LoadLe32(r.image.data() + r.image.size() - 4);
   return r;
 }
 
-void WriteModelFiles(const model::Model& measured, const std::string& dir) {
-  auto open = [&](const std::string& name) {
-    std::ofstream f(dir + "/" + name);
-    if (!f) throw std::runtime_error("cannot write " + dir + "/" + name);
-    return f;
+TableBuildResult BuildTableImage(const model::Model& measured,
+                                 const std::array<double, 3>& lo_mm,
+                                 const std::array<double, 3>& hi_mm,
+                                 const std::array<double, 3>& spacing_mm,
+                                 const std::array<double, 3>& step_mm,
+                                 uint32_t table_id) {
+  const model::GridSection g =
+      model::BuildGridSection(LatticeOptions(lo_mm, hi_mm, spacing_mm, step_mm), ImageAxes(step_mm),
+                              model::ModelGridSource(measured));
+  return AssembleTable(
+      g, {}, step_mm, table_id,
+      {{"builder", "volcomp-sim demo (the sources and grid of `volcomp build model`)"},
+       {"source", "measured 21-parameter model: 6-DOF laser runs of X, Y, Z"}});
+}
+
+SimStatus WriteModelFiles(const model::Model& measured, const std::string& dir) {
+  const auto cannot = [&](const std::string& name) {
+    return SimStatus(Error::kIoError, "cannot write " + dir + "/" + name);
   };
   for (int a = 0; a < 3; ++a) {
-    const std::string axis(1, static_cast<char>("xyz"[a]));
-    std::ofstream f = open("measured_" + axis + ".csv");
+    const std::string name = std::string("measured_") + "xyz"[a] + ".csv";
+    std::ofstream f(dir + "/" + name);
+    if (!f) return cannot(name);
     f << "# " << static_cast<char>("XYZ"[a])
       << " axis, measured by volcomp-sim demo (virtual 6-DOF laser), zero at the reference point\n";
     f << "position_mm,ex_um,ey_um,ez_um,ea_urad,eb_urad,ec_urad\n";
@@ -105,7 +142,8 @@ void WriteModelFiles(const model::Model& measured, const std::string& dir) {
       f << line;
     }
   }
-  std::ofstream c = open("measured.conf");
+  std::ofstream c(dir + "/measured.conf");
+  if (!c) return cannot("measured.conf");
   std::string workpiece, tool;
   for (int a : measured.chain.order) {
     (measured.chain.carries_workpiece[static_cast<size_t>(a)] ? workpiece : tool) += "XYZ"[a];
@@ -119,6 +157,7 @@ void WriteModelFiles(const model::Model& measured, const std::string& dir) {
     << "tool_offset_mm = 0, 0, 0\n"
     << "workpiece_axes = " << workpiece << "\ntool_axes = " << tool << "\n"
     << "workpiece_errors = relative\nformulation = physical\norder = exact\n";
+  return SimStatus::Ok();
 }
 
 }  // namespace volcomp::sim

@@ -99,6 +99,7 @@ void World::StepOnce(uint64_t limit_ns) {
 
 void World::AfterTick(uint64_t t_ns) {
   ++audit_.ticks;
+  if (machine_->wear().any()) machine_->OnDriveTick(DriveSteps(), t_ns);
   const auto& plans = board_->step_io().last_plans();
   const ControlTick& engine = board_->app().engine();
   for (uint8_t a = 0; a < 3; ++a) {

@@ -21,7 +21,10 @@ double ApplyChannelErrors(const ChannelErrors& e, double true_value, Random& rng
 LaserInterferometer::LaserInterferometer(Machine* machine,
                                          const InterferometerOptions& options,
                                          uint64_t seed)
-    : machine_(machine), options_(options), rng_(seed) {}
+    : machine_(machine),
+      options_(options),
+      rng_(seed),
+      cosine_(std::cos(1e-3 * options.misalignment_mrad)) {}
 
 model::Vec3 LaserInterferometer::Rotation_urad(const model::Vec3& q_mm) {
   // omega x (d e_y) = d(-wz, 0, wx); omega x (d e_z) = d(wy, -wx, 0); omega x (d e_x) = d(0, wz,
@@ -48,7 +51,7 @@ double LaserInterferometer::Deviation_um(const model::Vec3& q_mm,
                                          const model::Vec3& beam) {
   const model::Vec3 moved = machine_->ToolPoint_mm(q_mm) - zero_point_mm_;
   const model::Vec3 commanded = cmd_mm - zero_cmd_mm_;
-  const double true_um = 1e3 * model::Dot(moved - commanded, beam);
+  const double true_um = 1e3 * (cosine_ * model::Dot(moved, beam) - model::Dot(commanded, beam));
   return ApplyChannelErrors(options_.linear_um, true_um, rng_);
 }
 
@@ -60,8 +63,14 @@ SixDofReading LaserInterferometer::SixDofTrue(const model::Vec3& q_mm, const mod
   return r;
 }
 
-SixDofReading LaserInterferometer::SixDof(const model::Vec3& q_mm, const model::Vec3& cmd_mm) {
+SixDofReading LaserInterferometer::SixDof(const model::Vec3& q_mm,
+                                          const model::Vec3& cmd_mm,
+                                          int moving_axis) {
   SixDofReading r = SixDofTrue(q_mm, cmd_mm);
+  if (cosine_ != 1) {
+    const model::Vec3 moved = machine_->ToolPoint_mm(q_mm) - zero_point_mm_;
+    r.linear_um[moving_axis] += 1e3 * (cosine_ - 1) * moved[moving_axis];
+  }
   for (int i = 0; i < 3; ++i) {
     r.linear_um[i] = ApplyChannelErrors(options_.linear_um, r.linear_um[i], rng_);
   }

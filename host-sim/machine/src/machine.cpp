@@ -14,9 +14,50 @@ model::Model LoadMachineModel(const std::string& spec) {
   return model::LoadModelConfig(spec);
 }
 
-Machine::Machine(MachineOptions options) : options_(std::move(options)) {
-  if (options_.model.axes[0].empty()) options_.model = model::S500Model();
-  model::ValidateModel(options_.model);
+MachineGeometry GeometryOf(const model::Model& m) {
+  MachineGeometry g;
+  for (size_t a = 0; a < 3; ++a) {
+    const model::AxisErrorTable& t = m.axes[a];
+    for (size_t i = 0; i < t.size(); ++i) {
+      const model::AxisErrorSample& s = t.row(i);
+      g.axes[a].push_back({t.position_mm(i),
+                           {s.linear_um.x, s.linear_um.y, s.linear_um.z},
+                           {s.angular_urad.x, s.angular_urad.y, s.angular_urad.z}});
+    }
+  }
+  g.c0y_urad = m.squareness.c0y_urad;
+  g.b0z_urad = m.squareness.b0z_urad;
+  g.a0z_urad = m.squareness.a0z_urad;
+  g.tool_offset_mm = {m.tool_offset_mm.x, m.tool_offset_mm.y, m.tool_offset_mm.z};
+  g.chain = m.chain.order;
+  g.carries_workpiece = m.chain.carries_workpiece;
+  g.workpiece_tables_are_carriage_motion = m.chain.workpiece_errors == model::ErrorSide::kCarriage;
+  g.angle_scale = m.angle_scale;
+  return g;
+}
+
+namespace {
+
+// The options with the default model filled in, checked before the kinematics is built.
+MachineOptions Checked(MachineOptions o) {
+  if (o.model.axes[0].empty()) o.model = model::S500Model();
+  model::ValidateModel(o.model);
+  if (o.model.formulation != model::Formulation::kPhysical) {
+    throw std::invalid_argument(
+        "machine: the simulated machine is a rigid body; formulation = dissertation describes "
+        "how a builder computes, not a machine");
+  }
+  return o;
+}
+
+Xyz ToXyz(const model::Vec3& v) { return {v.x, v.y, v.z}; }
+
+}  // namespace
+
+Machine::Machine(MachineOptions options)
+    : options_(Checked(std::move(options))),
+      kinematics_(GeometryOf(options_.model)),
+      rng_(options_.wear.seed) {
   for (int a = 0; a < 3; ++a) {
     const size_t i = static_cast<size_t>(a);
     if (!(options_.step_mm[i] > 0)) throw std::invalid_argument("machine: step length must be > 0");
@@ -28,6 +69,8 @@ Machine::Machine(MachineOptions options) : options_(std::move(options)) {
     }
     switch_steps_[i] =
         std::llround((options_.home_switch_mm[i] - options_.power_up_mm[i]) / options_.step_mm[i]);
+    lost_motion_[i] = LostMotion(options_.wear.lost_motion ? options_.wear.lost_motion_um[i] : 0);
+    lost_motion_[i].Reset(options_.power_up_mm[i]);
   }
 }
 
@@ -39,34 +82,77 @@ double Machine::travel_max_mm(int axis) const {
   return options_.model.axes[static_cast<size_t>(axis)].max_mm();
 }
 
-model::Vec3 Machine::AxisPositions_mm(const std::array<int64_t, 3>& drive_steps) const {
-  model::Vec3 q;
+void Machine::OnDriveTick(const std::array<int64_t, 3>& drive_steps, uint64_t t_ns) {
+  const WornMachineProfile& w = options_.wear;
+  if (!w.any()) return;
+  time_s_ = static_cast<double>(t_ns) * 1e-9;
+  for (size_t a = 0; a < 3; ++a) {
+    if (drive_steps[a] != last_steps_[a]) {
+      last_steps_[a] = drive_steps[a];
+      moving_[a] = true;
+      lost_motion_[a].Follow(options_.power_up_mm[a] +
+                             static_cast<double>(drive_steps[a]) * options_.step_mm[a]);
+    } else if (moving_[a]) {  // came to rest: the carriage settles somewhere new
+      moving_[a] = false;
+      if (w.scatter) scatter_mm_[a] = 1e-3 * w.scatter_sigma_um[a] * rng_.Gaussian();
+    }
+  }
+}
+
+model::Vec3 Machine::DrivePositions_mm(const std::array<int64_t, 3>& drive_steps) const {
+  model::Vec3 d;
   for (int a = 0; a < 3; ++a) {
     const size_t i = static_cast<size_t>(a);
-    q[a] = options_.power_up_mm[i] + static_cast<double>(drive_steps[i]) * options_.step_mm[i];
+    d[a] = options_.power_up_mm[i] + static_cast<double>(drive_steps[i]) * options_.step_mm[i];
   }
+  return d;
+}
+
+model::Vec3 Machine::AxisPositions_mm(const std::array<int64_t, 3>& drive_steps) const {
+  model::Vec3 q = DrivePositions_mm(drive_steps);
+  const WornMachineProfile& w = options_.wear;
+  if (!w.any()) return q;
+  const model::Vec3 d = q;
+  for (int a = 0; a < 3; ++a) {
+    const size_t i = static_cast<size_t>(a);
+    q[a] += lost_motion_[i].offset_mm() + scatter_mm_[i];
+    if (w.screw_error) {
+      q[a] += 1e-3 *
+              ScrewError_um(w.screw_amplitude_um[i], w.screw_period_mm, w.screw_phase_rad[i], d[a]);
+    }
+  }
+  if (w.thermal) q.x += 1e-3 * ThermalGrowth::XScrew_um(w, d.x, time_s_);
   return q;
 }
 
 model::Vec3 Machine::ToolPoint_mm(const model::Vec3& q_mm) const {
-  return q_mm + 1e-3 * model::ToolPointError_um(options_.model, q_mm);
+  return PointOnTool_mm(q_mm, {0, 0, 0});
 }
 
-model::Vec3 Machine::PointOnTool_mm(const model::Vec3& q_mm, const model::Vec3& offset_mm) {
-  const std::array<double, 3> key = {offset_mm.x, offset_mm.y, offset_mm.z};
-  auto it = offset_models_.find(key);
-  if (it == offset_models_.end()) {
-    model::Model m = options_.model;
-    m.tool_offset_mm = m.tool_offset_mm + offset_mm;
-    it = offset_models_.emplace(key, std::move(m)).first;
+model::Vec3 Machine::PointOnTool_mm(const model::Vec3& q_mm, const model::Vec3& offset_mm) const {
+  const Xyz p = kinematics_.ToolPoint_mm(ToXyz(q_mm), ToXyz(offset_mm));
+  model::Vec3 t = model::Vec3{p[0], p[1], p[2]} - options_.model.tool_offset_mm;
+  const WornMachineProfile& w = options_.wear;
+  if (w.cross_axis_sag) {
+    t.z += 1e-3 * CrossAxisSag_um(w.sag_um, q_mm.x, q_mm.y, {travel_min_mm(0), travel_max_mm(0)},
+                                  {travel_min_mm(1), travel_max_mm(1)});
   }
-  // The nominal position of that point is q + tool offset + offset; the model reports the error
-  // relative to q + its tool offset, so add the offset back.
-  return q_mm + offset_mm + 1e-3 * model::ToolPointError_um(it->second, q_mm);
+  if (w.thermal) t.z += 1e-3 * ThermalGrowth::SpindleZ_um(w, time_s_);
+  return t;
 }
 
 bool Machine::HomeSwitchClosed(int axis, int64_t drive_steps) const {
-  return drive_steps <= switch_steps_[static_cast<size_t>(axis)];
+  const size_t i = static_cast<size_t>(axis);
+  const double offset_mm = lost_motion_[i].offset_mm();
+  if (offset_mm == 0) return drive_steps <= switch_steps_[i];
+  return static_cast<double>(drive_steps - switch_steps_[i]) * options_.step_mm[i] + offset_mm <= 0;
+}
+
+WornMachineProfile DefaultWornProfile(uint64_t seed) {
+  WornMachineProfile p;
+  p.lost_motion = p.scatter = p.screw_error = p.thermal = p.cross_axis_sag = true;
+  p.seed = seed;
+  return p;
 }
 
 }  // namespace volcomp::sim

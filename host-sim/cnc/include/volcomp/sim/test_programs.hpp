@@ -69,10 +69,13 @@ TestProgram DiagonalProgram(const std::string& name,
                             double increment_mm,
                             const CycleOptions& options);
 
-/// Rapid moves to `points` (the first one is the datum) with a dwell at each.
+/// Rapid moves to `points` (the first one is the datum) with a dwell at each. With
+/// `approach_mm` > 0 every point is approached from `approach_mm` below on every axis (a rapid to
+/// the point minus (a, a, a) first): unidirectional, every axis moving positive into the point.
 TestProgram PointSetProgram(const std::string& name,
                             const std::vector<Point3>& points_mm,
-                            double dwell_s);
+                            double dwell_s,
+                            double approach_mm = 0);
 
 /// One run ↑ and ↓ (× `runs`) along `axis` through `reference_mm`, stopping at `positions_mm`.
 TestProgram ParametricProgram(int axis,

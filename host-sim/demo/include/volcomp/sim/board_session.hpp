@@ -4,7 +4,8 @@
 // the active CRC-32 and the bank size, PrepareStaging (unlock if needed, clear the staging bank),
 // block-download the image into 0x2100, VerifyStaged (verify on the board, compare the staged
 // CRC-32); then activation (0x2101 = 1) and a check of the active CRC-32 (0x2104) and device
-// state (0x2122).
+// state (0x2122). Failures (an SDO abort, a refused activation) come back as a SimStatus with the
+// PC tool's explanation of the abort.
 #pragma once
 
 #include <cstdint>
@@ -12,13 +13,12 @@
 #include <string>
 #include <vector>
 
+#include "volcomp/sim/sim_status.hpp"
 #include "volcomp/sim/world.hpp"
 
 namespace volcomp::sim {
 
 struct UploadReport {
-  bool ok = false;
-  std::string message;
   uint32_t bytes = 0;
   uint32_t image_crc = 0;
   uint32_t staged_crc = 0;
@@ -28,17 +28,20 @@ struct UploadReport {
   uint32_t resent_segments = 0;
 };
 
-/// Stages and verifies `image` on the board; progress lines go to `log`.
-UploadReport UploadTable(World& world, const std::vector<uint8_t>& image, std::ostream& log);
+/// Stages and verifies `image` on the board; progress lines go to `log`. Fails with kIoError (an
+/// SDO transfer failed, the reason names the object) or kImageTooLarge (the bank is smaller).
+SimResult<UploadReport> UploadTable(World& world,
+                                    const std::vector<uint8_t>& image,
+                                    std::ostream& log);
 
 struct ActivationReport {
-  bool ok = false;
-  std::string message;
   uint32_t active_crc = 0;
   uint16_t device_state = 0;  // 0x2122 after activation
 };
 
-ActivationReport ActivateTable(World& world, uint32_t expected_crc);
+/// Activates the staged table. Fails with kIoError (the board refused: SDO abort, e.g. not
+/// referenced) or kImageBadCrc (the active CRC-32 is not `expected_crc`).
+SimResult<ActivationReport> ActivateTable(World& world, uint32_t expected_crc);
 
 /// Reads 0x2122 (device state bits, canopen/board_protocol.hpp DeviceStateBit).
 uint16_t ReadDeviceState(World& world);

@@ -1,5 +1,6 @@
 // `volcomp-sim demo`: the main job on the simulated installation, end to end.
 //
+// Ideal machine (`--machine ideal`, the default: the S500's rigid-body geometry alone):
 //   1. power up, home the axes (the board references on the home switch edges)
 //   2. measure the uncompensated machine: GOST 27843-88 per axis (laser), ISO 230-6 body diagonals
 //      (laser), volumetric error at random points (laser tracker); evaluate with tools/metrology
@@ -9,6 +10,13 @@
 //   6. home again (reference), activate, let the correction ramp in
 //   7. re-measure exactly as in 2
 //   8. speed benchmark (all three axes at 1 MHz through the compensating board) and the summary
+// Worn machine (`--machine worn`, worn_profile.hpp): the same start, then three tables, each
+// re-measured as in 2: (1) the 21-parameter GRID3; (2) plus AXIS1D forward/reverse tables from
+// bidirectional ISO 230-2 runs measured with table 1 active; (3) a GRID3 from laser-tracker
+// readings at every node of a lattice measured through table 2 (composed with its GRID3), plus
+// the same AXIS1D tables.
+// A drift check point is read with the tracker before and after every test. The summary adds the
+// goals of the worn profile and the error budget of what remains.
 // Deterministic for a given seed (the wall-clock figures aside).
 #pragma once
 
@@ -18,19 +26,26 @@
 #include <string>
 #include <vector>
 
+#include "volcomp/model/tracker_lattice.hpp"
 #include "volcomp/sim/board_session.hpp"
 #include "volcomp/sim/instruments.hpp"
 #include "volcomp/sim/latency_meter.hpp"
 #include "volcomp/sim/measurements.hpp"
+#include "volcomp/sim/sim_status.hpp"
 #include "volcomp/sim/table_from_measurements.hpp"
 #include "volcomp/sim/world.hpp"
+#include "volcomp/sim/worn_profile.hpp"
 
 namespace volcomp::sim {
+
+enum class MachineProfile { kIdeal, kWorn };
 
 struct DemoOptions {
   uint64_t seed = 1;
   std::string model_spec = "s500";  // "s500" or a model config file
   std::string report_dir;           // empty: no report
+  MachineProfile machine = MachineProfile::kIdeal;
+  WornMachineProfile wear;  // used with kWorn (DefaultWornProfile: every source on)
   int gost_targets = 11;
   int gost_runs = 5;
   double gost_pitch_mm = 5;  // P of GOST 27843 §2.7 (lead-screw pitch)
@@ -44,9 +59,21 @@ struct DemoOptions {
   double test_feed_mm_s = 1000;  // G1 feed of the test cycles
   double accel_mm_s2 = 10000;
   int benchmark_moves = 6;  // rapid moves with every axis at 1 MHz for the speed figure
+  // Worn machine only.
+  double axis_run_pitch_mm = 20;   // nodes of the ISO 230-2 runs the AXIS1D tables come from
+  double lattice_spacing_mm = 40;  // the tracker lattice
+  int drift_readings = 10;         // tracker readings averaged per drift check
   InterferometerOptions laser;
   TrackerOptions tracker;
 };
+
+/// The worn-machine profile of the demo: every error source on with its default
+/// (DefaultWornProfile) and the interferometer 1 mrad off the line of motion (a beam that walks
+/// 0.4 mm over 400 mm: what a quick alignment by eye on the target leaves).
+void UseWornMachine(DemoOptions* options);
+/// Names of the sources `--without` may switch off: lost-motion, scatter, screw, thermal, sag,
+/// misalignment. False for an unknown name.
+bool SwitchOff(const std::string& source, DemoOptions* options);
 
 struct AxisFigures {
   double A = 0, R = 0, B = 0;  // GOST 27843: accuracy, repeatability (R_max), reversal (B_max), µm
@@ -61,6 +88,11 @@ struct PhaseResults {
   double Bd() const;
 };
 
+struct NamedPhase {
+  std::string label;  // the compensation in force, e.g. "21-param"
+  PhaseResults results;
+};
+
 struct BenchmarkFigures {
   uint64_t steps = 0;  // input steps (each also counted, planned and checked as an output step)
   double virtual_s = 0;
@@ -68,16 +100,65 @@ struct BenchmarkFigures {
   double steps_per_s = 0;
 };
 
+/// A table the demo built, uploaded and activated.
+struct StagedTable {
+  std::string label;
+  TableBuildResult table;
+  UploadReport upload;
+  ActivationReport activation;
+};
+
+/// The tracker's reading of the drift check point (fixed tracker frame), µm from the first.
+struct DriftCheck {
+  std::string after;  // the test it follows ("" for the first)
+  double time_s = 0;  // machine time
+  int epoch = 0;      // the table in force; readings of different epochs are not compared
+  model::Vec3 reading_um;
+};
+
+/// What remains after the last compensation, term by term (µm).
+struct ErrorBudget {
+  std::array<double, 3> sigma_um = {0, 0, 0};  // repeatability: GOST S pooled over targets, before
+  double three_sigma_um = 0;                   // 3 × √(σx² + σy² + σz²)
+  model::Vec3 drift_since_table_um;    // drift check, from the final table's measurement to the end
+  double drift_since_table_s = 0;      // the time it spans (unmeasured gaps excluded)
+  double unmeasured_s = 0;             // table changes inside that span, not covered by checks
+  model::Vec3 drift_during_points_um;  // drift check around the final point-set test
+  std::array<double, 3> short_period_um = {0, 0, 0};  // the machine's screw error amplitudes
+  double tracker_three_sigma_um = 0;                  // the instrument, per coordinate
+  double laser_cosine_um = 0;                         // cosine error over the longest line
+  double step_um = 1;
+  double limit_um = 0;              // 3σ + |drift since the table| + 1 step (the limit)
+  double short_period_norm_um = 0;  // |(A_x, A_y, A_z)|: what no table at the pitch can remove
+  double goal_limit_um = 0;         // limit_um + short_period_norm_um: the limit evaluated
+};
+
+struct Goal {
+  std::string what;
+  double value = 0;  // measured (% reduction or µm)
+  double limit = 0;
+  bool at_least = true;  // value must be >= limit (else <=)
+  bool holds = false;
+};
+
 struct DemoResult {
   DemoOptions options;
   std::string machine_name;
   PhaseResults before, after;
+  std::vector<NamedPhase> intermediate;  // worn: after 21-param, after 21-param + AXIS1D
+  std::string after_label = "after";
   std::array<ParametricResult, 3> parametric;
   model::Model measured_model;
-  TableBuildResult table;
+  TableBuildResult table;  // the last table (active during `after`)
   UploadReport upload;
   ActivationReport activation;
-  bool reference_agrees = false;  // board machine position == CNC position after homing
+  std::vector<StagedTable> earlier_tables;  // worn: the tables before the last
+  std::array<GostAxisResult, 3> axis_runs;  // worn: the ISO 230-2 runs for AXIS1D
+  model::TrackerLatticeData lattice;        // worn: the tracker lattice readings
+  std::vector<DriftCheck> drift;            // worn
+  ErrorBudget budget;                       // worn
+  std::vector<Goal> goals;                  // worn
+  bool reference_agrees = false;            // board machine position == CNC position after homing
   StepAudit audit;
   LatencySummary latency;
   std::vector<uint64_t> latency_histogram;
@@ -89,13 +170,16 @@ struct DemoResult {
   std::vector<std::string> failures;  // "must show" checks that failed (empty: all passed)
 };
 
-/// Runs the demo; progress goes to `log`. Throws on a setup error (bad model file, ...).
-DemoResult RunDemo(const DemoOptions& options, std::ostream& log);
+/// Runs the demo; progress goes to `log`. Fails when a step cannot go on (the board refused a
+/// table, a program did not finish, the model's tables miss the reference point); a model file
+/// that cannot be read throws tools::InputError (the builders' error, printed by the command).
+SimResult<DemoResult> RunDemo(const DemoOptions& options, std::ostream& log);
 
-/// Prints the before/after summary and the checks.
+/// Prints the before/after summary and the checks (worn: the goals and the error budget).
 void PrintSummary(const DemoResult& result, std::ostream& out);
 
-/// Writes DIR/index.html and the data files (CSV, G-code, model, image) of a demo run.
-void WriteDemoReport(const DemoResult& result, const std::string& dir);
+/// Writes DIR/index.html and the data files (CSV, G-code, model, image) of a demo run; kIoError
+/// names a file that cannot be written.
+SimStatus WriteDemoReport(const DemoResult& result, const std::string& dir);
 
 }  // namespace volcomp::sim

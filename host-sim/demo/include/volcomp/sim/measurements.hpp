@@ -5,8 +5,8 @@
 //   MeasureDiagonals   ISO 230-6 body diagonals (interferometer along each diagonal)
 //   MeasurePointSet    volumetric error at points (laser tracker registered at the first point)
 //   MeasureParametric  the six error motions of one axis through the reference point (6-DOF laser)
-// Lengths mm, deviations µm, angles µrad. Every session throws std::runtime_error when the CNC
-// does not finish or the dwell count does not match the program's stops. The evaluations require
+// Lengths mm, deviations µm, angles µrad. Every session fails (kNotReady) when the CNC does not
+// finish the program or the dwell count does not match the program's stops. The evaluations require
 // 5 approaches per target and direction (GOST 27843 §2.10, ISO 230-6 §5.3) unless the cycle runs
 // fewer (reduced test runs), then that many (at least 2).
 #pragma once
@@ -19,6 +19,7 @@
 #include "volcomp/metrology/positioning_eval.hpp"
 #include "volcomp/model/vec3.hpp"
 #include "volcomp/sim/instruments.hpp"
+#include "volcomp/sim/sim_status.hpp"
 #include "volcomp/sim/test_programs.hpp"
 #include "volcomp/sim/world.hpp"
 
@@ -33,7 +34,7 @@ struct StopState {
 };
 
 /// Parses and runs `program` on `world`; the state at the end of every dwell.
-std::vector<StopState> RunTestProgram(World& world, const TestProgram& program);
+SimResult<std::vector<StopState>> RunTestProgram(World& world, const TestProgram& program);
 
 struct GostAxisResult {
   int axis = 0;
@@ -49,10 +50,10 @@ struct GostPlan {
   CycleOptions cycle;
 };
 
-GostAxisResult MeasureGostAxis(World& world,
-                               LaserInterferometer& laser,
-                               int axis,
-                               const GostPlan& plan);
+SimResult<GostAxisResult> MeasureGostAxis(World& world,
+                                          LaserInterferometer& laser,
+                                          int axis,
+                                          const GostPlan& plan);
 
 struct DiagonalSetResult {
   std::vector<TestProgram> programs;
@@ -60,11 +61,11 @@ struct DiagonalSetResult {
   metrology::DiagonalEvaluation evaluation;
 };
 
-DiagonalSetResult MeasureDiagonals(World& world,
-                                   LaserInterferometer& laser,
-                                   const std::vector<BodyDiagonal>& diagonals,
-                                   int targets_per_diagonal,
-                                   const CycleOptions& cycle);
+SimResult<DiagonalSetResult> MeasureDiagonals(World& world,
+                                              LaserInterferometer& laser,
+                                              const std::vector<BodyDiagonal>& diagonals,
+                                              int targets_per_diagonal,
+                                              const CycleOptions& cycle);
 
 struct PointSetResult {
   TestProgram program;
@@ -75,10 +76,13 @@ struct PointSetResult {
   double true_max_um = 0, true_rms_um = 0;
 };
 
-PointSetResult MeasurePointSet(World& world,
-                               LaserTracker& tracker,
-                               const std::vector<Point3>& points_mm,
-                               double dwell_s);
+/// `approach_mm` > 0: every point approached from that far below on every axis
+/// (PointSetProgram).
+SimResult<PointSetResult> MeasurePointSet(World& world,
+                                          LaserTracker& tracker,
+                                          const std::vector<Point3>& points_mm,
+                                          double dwell_s,
+                                          double approach_mm = 0);
 
 struct ParametricResult {
   int axis = 0;
@@ -87,13 +91,13 @@ struct ParametricResult {
   std::vector<SixDofReading> truth;     // the same without instrument errors
 };
 
-/// `positions_mm` must contain the reference point's coordinate of `axis`.
-ParametricResult MeasureParametric(World& world,
-                                   LaserInterferometer& laser,
-                                   int axis,
-                                   const Point3& reference_mm,
-                                   const std::vector<double>& positions_mm,
-                                   const CycleOptions& cycle);
+/// `positions_mm` must contain the reference point's coordinate of `axis` (else kInvalidArgument).
+SimResult<ParametricResult> MeasureParametric(World& world,
+                                              LaserInterferometer& laser,
+                                              int axis,
+                                              const Point3& reference_mm,
+                                              const std::vector<double>& positions_mm,
+                                              const CycleOptions& cycle);
 
 /// Long-layout positioning CSV (target_mm,direction,run,deviation_um) of `volcomp evaluate
 /// positioning`.

@@ -7,9 +7,11 @@
 //     * angular: rotation of the tool side since Zero() (µrad) about x, y, z, taken as angular
 //       optics and an electronic level do: from the displacement of a second point of the tool
 //       side at `angular_baseline_mm` from the tool point.
-//     The beam is aligned with the machine's nominal axes (ideal alignment: no cosine error, no
+//     The straightness and angular optics are aligned with the machine's nominal axes (no
 //     straightness slope removed; a real straightness run fits the slope out and measures
-//     squareness separately, see docs/simulator.md).
+//     squareness separately, see docs/simulator.md). The linear beam may be misaligned by
+//     `misalignment_mrad` from the line of motion: it then reads cos θ times the displacement
+//     along the line (the cosine error, -L·θ²/2).
 //   LaserTracker: the tool point's 3-D position (mm) in the machine frame, relative to the point
 //     where it was last zeroed (the tracker is registered at the machine's reference point).
 //
@@ -41,6 +43,7 @@ struct InterferometerOptions {
   ChannelErrors linear_um = {0.05, 16, 0.02, 0.001};   // XL-80: 1 nm resolution
   ChannelErrors angular_urad = {0.2, 16, 0.05, 0.01};  // angular optics / level
   double angular_baseline_mm = 100;
+  double misalignment_mrad = 0;  // angle θ between the linear beam and the line of motion
 };
 
 struct TrackerOptions {
@@ -62,8 +65,9 @@ class LaserInterferometer {
   /// Displacement along `beam` (unit vector) since the datum minus the commanded displacement
   /// along it: the positioning deviation of this approach (µm).
   double Deviation_um(const model::Vec3& q_mm, const model::Vec3& cmd_mm, const model::Vec3& beam);
-  /// All six error motions since the datum (linear: deviation of each component, µm).
-  SixDofReading SixDof(const model::Vec3& q_mm, const model::Vec3& cmd_mm);
+  /// All six error motions since the datum (linear: deviation of each component, µm) of a run
+  /// along `moving_axis`, whose component the linear beam measures (with its cosine error).
+  SixDofReading SixDof(const model::Vec3& q_mm, const model::Vec3& cmd_mm, int moving_axis);
   /// The same without instrument errors (for comparisons in reports and tests).
   SixDofReading SixDofTrue(const model::Vec3& q_mm, const model::Vec3& cmd_mm);
 
@@ -73,6 +77,7 @@ class LaserInterferometer {
   Machine* machine_;
   InterferometerOptions options_;
   Random rng_;
+  double cosine_ = 1;  // cos θ of the linear beam's misalignment
   model::Vec3 zero_point_mm_;
   model::Vec3 zero_cmd_mm_;
   model::Vec3 zero_rotation_urad_;

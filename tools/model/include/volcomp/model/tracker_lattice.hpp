@@ -1,0 +1,57 @@
+// Laser-tracker readings at every node of a 3-D lattice of commands: the tangential methods of the
+// dissertation's chapter 2 without their separability assumption.
+//
+// The quasi-differential method integrates the tangent vectors of the axes along the path
+// (eq. 2.14, r = r_O1 + ∫ Q1(q1)dq1 + Q2(q1,q2)dq2 + Q3(q1,q2,q3)dq3) and then assumes that
+// ∂Q2/∂q1 = ∂Q3/∂q1 = ∂Q3/∂q2 = 0, so that three lines through the origin suffice (tracker.hpp).
+// Errors of one axis that depend on the position of another (a sagging structure, a load that
+// moves with an axis) break that assumption. Measured at every node of a lattice (the grid of
+// Jacobians of Masterenko's method, [P] §1.4), the tangent vectors are known in every cell; taking
+// them linear across the cell makes the forward map the trilinear interpolation of the measured
+// node positions, which passes through every measurement and keeps every cross-axis term.
+//
+// Data: the commanded node (x, y, z) and the averaged tracker reading (mm, tracker frame
+// registered so that the datum reads its command). CSV (`volcomp build tracker --lattice FILE`):
+// columns x_cmd_mm, y_cmd_mm, z_cmd_mm, x_mm, y_mm, z_mm, every node of an equally spaced lattice
+// exactly once (≥ 2 nodes per axis), any order; other columns ignored.
+// Lengths in mm.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "volcomp/model/grid.hpp"
+#include "volcomp/model/inverse.hpp"
+#include "volcomp/model/vec3.hpp"
+#include "volcomp/tools/csv.hpp"
+
+namespace volcomp::model {
+
+struct TrackerLatticeData {
+  std::string name;
+  GridSpec lattice;               // the commanded nodes
+  std::vector<Vec3> position_mm;  // reading at each node, x fastest (CorrectionGrid order)
+};
+
+TrackerLatticeData TrackerLatticeFromCsv(const tools::CsvTable& csv);
+TrackerLatticeData LoadTrackerLatticeCsv(const std::string& path);
+
+class TrackerLattice {
+ public:
+  /// Throws std::invalid_argument unless every axis has ≥ 2 nodes at a positive spacing, the
+  /// readings number nx·ny·nz and are finite.
+  explicit TrackerLattice(TrackerLatticeData data);
+
+  const TrackerLatticeData& data() const { return data_; }
+
+  /// Where the tool goes for `command_mm`: trilinear in the command's cell; beyond the lattice
+  /// the boundary cell's trilinear form continues (linear extrapolation).
+  Vec3 Position_mm(const Vec3& command_mm) const;
+  /// The command that lands on `target_mm` (fixed-point iteration on Position_mm).
+  InverseSolution ExactInverse(const Vec3& target_mm, double tolerance_mm = 1e-8) const;
+
+ private:
+  TrackerLatticeData data_;
+};
+
+}  // namespace volcomp::model
