@@ -1,11 +1,11 @@
 // The board application on the mock HAL: stored table at boot, referencing by home switches,
 // fault handling, refused images leave the active table untouched, recorded output timeline.
 #include "volcomp/firmware/board_app.hpp"
-#include "volcomp/firmware/table_store.hpp"
 
 #include <gtest/gtest.h>
 
 #include "test_tables.hpp"
+#include "volcomp/firmware/table_store.hpp"
 #include "volcomp/hal/mock/mock_devices.hpp"
 #include "volcomp/hal/mock/mock_step_io.hpp"
 
@@ -44,7 +44,7 @@ class BoardAppTest : public ::testing::Test {
     store.MountActive(config_).status().IgnoreError();
     ASSERT_TRUE(store.BeginUpload(static_cast<uint32_t>(img.size())).ok());
     ASSERT_TRUE(store.UploadData(img.data(), static_cast<uint32_t>(img.size())).ok());
-    ASSERT_TRUE(store.FinishUpload(true).ok());
+    ASSERT_TRUE(store.FinishUpload().ok());
     ASSERT_TRUE(store.Verify(config_).ok());
     ASSERT_TRUE(store.Activate().ok());
   }
