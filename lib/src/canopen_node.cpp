@@ -7,10 +7,35 @@
 
 namespace volcomp::canopen {
 
-void Node::Start(uint8_t node_id, ObjectValues* app, uint32_t now_ms, const SdoServerConfig& sdo) {
+namespace {
+
+constexpr uint8_t kUrgentLength = 4;
+
+// The EMCY gap on the millisecond clock: 0x1015 rounded up to whole milliseconds, plus one for
+// the clock's own resolution (two readings 1 ms apart may be only just over 0 ms apart).
+uint32_t EmcyGapMs(uint16_t inhibit_100us) {
+  return inhibit_100us == 0 ? 0u : (inhibit_100us + 9u) / 10u + 1u;
+}
+
+}  // namespace
+
+void Node::Start(uint8_t node_id,
+                 ObjectValues* app,
+                 uint32_t now_ms,
+                 const CommunicationParameters& stored,
+                 const SdoServerConfig& sdo) {
   node_id_ = node_id;
   app_ = app;
-  sdo_.Init(node_id, this, sdo);
+  stored_ = stored;
+  sdo_config_ = sdo;
+  Boot(now_ms);
+}
+
+void Node::ResetCommunication(uint32_t now_ms) { Boot(now_ms); }
+
+void Node::Boot(uint32_t now_ms) {
+  comm_ = stored_;
+  sdo_.Init(node_id_, this, sdo_config_);
   reported_aborts_ = 0;
   urgent_count_ = 0;
   reset_ = ResetRequest::kNone;
@@ -20,19 +45,52 @@ void Node::Start(uint8_t node_id, ObjectValues* app, uint32_t now_ms, const SdoS
   boot.data[0] = 0x00;
   QueueUrgent(boot);
   state_ = NmtState::kPreOperational;
+  now_ms_ = now_ms;
   last_heartbeat_ms_ = now_ms;
 }
 
 void Node::QueueUrgent(const CanFrame& f) {
-  if (urgent_count_ == 8) {  // drop the oldest heartbeat-class frame rather than block
-    urgent_head_ = static_cast<uint8_t>((urgent_head_ + 1) % 8);
+  if (urgent_count_ == kUrgentLength) {  // drop the oldest heartbeat rather than block
+    urgent_head_ = static_cast<uint8_t>((urgent_head_ + 1) % kUrgentLength);
     --urgent_count_;
   }
-  urgent_[(urgent_head_ + urgent_count_) % 8] = f;
+  urgent_[(urgent_head_ + urgent_count_) % kUrgentLength] = f;
   ++urgent_count_;
 }
 
+void Node::QueueEmcy(const CanFrame& e) {
+  if (emcy_count_ == kEmcyQueueLength) {
+    // Full: the newest waiting EMCY gives way to this one, so the last EMCY sent still tells
+    // the current state.
+    emcy_[(emcy_head_ + emcy_count_ - 1) % kEmcyQueueLength] = e;
+    ++emcy_suppressed_;
+    return;
+  }
+  emcy_[(emcy_head_ + emcy_count_) % kEmcyQueueLength] = e;
+  ++emcy_count_;
+}
+
+bool Node::PopEmcy(CanFrame* frame) {
+  // Not before the boot-up message, not while stopped (CiA 301: only NMT and heartbeat).
+  if (emcy_count_ == 0 || state_ == NmtState::kInitialising || state_ == NmtState::kStopped) {
+    return false;
+  }
+  if (emcy_ever_sent_ &&
+      static_cast<uint32_t>(now_ms_ - last_emcy_ms_) < EmcyGapMs(comm_.emcy_inhibit_100us)) {
+    return false;
+  }
+  *frame = emcy_[emcy_head_];
+  frame->id = kEmcyCobBase + node_id_;  // the node-ID in force when it leaves
+  emcy_head_ = static_cast<uint8_t>((emcy_head_ + 1) % kEmcyQueueLength);
+  --emcy_count_;
+  emcy_ever_sent_ = true;
+  last_emcy_ms_ = now_ms_;
+  ++emcy_sent_;
+  return true;
+}
+
 void Node::OnFrame(const CanFrame& f, uint32_t now_ms) {
+  now_ms_ = now_ms;
   if (f.extended) return;
   if (f.id == kNmtCobId) {
     if (f.rtr || f.dlc != 2) {
@@ -67,17 +125,19 @@ void Node::OnFrame(const CanFrame& f, uint32_t now_ms) {
 }
 
 void Node::Poll(uint32_t now_ms) {
+  now_ms_ = now_ms;
   if (state_ != NmtState::kStopped) sdo_.Poll(now_ms);
   // Report failed transfers (protocol aborts: toggle, timeout, sequence, CRC, ...) by EMCY; the
   // application reports the requests it refuses itself.
   if (sdo_.aborts() != reported_aborts_) {
     reported_aborts_ = sdo_.aborts();
-    const uint32_t code = sdo_.last_abort();
+    const SdoAbort code = sdo_.last_abort();
     if (IsProtocolAbort(code)) {
-      ReportEvent(kEmcySdoTransferFailed, kErrCommunication, code);
+      ReportEvent(kEmcySdoTransferFailed, kErrCommunication, Code(code));
     }
   }
-  if (heartbeat_ms_ != 0 && static_cast<uint32_t>(now_ms - last_heartbeat_ms_) >= heartbeat_ms_) {
+  const uint16_t heartbeat_ms = comm_.heartbeat_ms;
+  if (heartbeat_ms != 0 && static_cast<uint32_t>(now_ms - last_heartbeat_ms_) >= heartbeat_ms) {
     last_heartbeat_ms_ = now_ms;
     CanFrame hb;
     hb.id = kHeartbeatCobBase + node_id_;
@@ -90,10 +150,11 @@ void Node::Poll(uint32_t now_ms) {
 bool Node::PopTx(CanFrame* frame) {
   if (urgent_count_ > 0) {
     *frame = urgent_[urgent_head_];
-    urgent_head_ = static_cast<uint8_t>((urgent_head_ + 1) % 8);
+    urgent_head_ = static_cast<uint8_t>((urgent_head_ + 1) % kUrgentLength);
     --urgent_count_;
     return true;
   }
+  if (PopEmcy(frame)) return true;
   return state_ != NmtState::kStopped && sdo_.PopTx(frame);
 }
 
@@ -107,8 +168,7 @@ void Node::RaiseError(uint16_t code, uint8_t register_bits, const uint8_t* manuf
   e.code = code;
   e.error_register = error_register_;
   for (int i = 0; i < 5; ++i) e.data[i] = manufacturer != nullptr ? manufacturer[i] : 0;
-  QueueUrgent(EncodeEmcy(node_id_, e));
-  ++emcy_sent_;
+  QueueEmcy(EncodeEmcy(node_id_, e));
 }
 
 void Node::ClearErrors() {
@@ -117,8 +177,7 @@ void Node::ClearErrors() {
   if (state_ == NmtState::kStopped) return;
   Emcy reset;
   reset.code = kEmcyErrorReset;
-  QueueUrgent(EncodeEmcy(node_id_, reset));
-  ++emcy_sent_;
+  QueueEmcy(EncodeEmcy(node_id_, reset));
 }
 
 void Node::ReportEvent(uint16_t code, uint8_t register_bits, uint32_t detail) {
@@ -140,8 +199,11 @@ bool Node::ReadCommunication(const ObjectEntry& e, uint32_t* value) const {
     case ObjectId::kCobIdEmcy:
       *value = kEmcyCobBase + node_id_;
       return true;
+    case ObjectId::kEmcyInhibitTime:
+      *value = comm_.emcy_inhibit_100us;
+      return true;
     case ObjectId::kHeartbeatTime:
-      *value = heartbeat_ms_;
+      *value = comm_.heartbeat_ms;
       return true;
     case ObjectId::kSdoCobIdRx:
       *value = sdo::kRequestCobBase + node_id_;
@@ -158,7 +220,7 @@ bool Node::ReadCommunication(const ObjectEntry& e, uint32_t* value) const {
   }
 }
 
-uint32_t Node::DoRead(const ObjectEntry& e,
+SdoAbort Node::DoRead(const ObjectEntry& e,
                       uint32_t offset,
                       uint8_t* buf,
                       uint32_t cap,
@@ -171,29 +233,32 @@ uint32_t Node::DoRead(const ObjectEntry& e,
   *total = FixedSize(e.type);
   *copied = 0;
   for (uint32_t i = offset; i < *total && *copied < cap; ++i) buf[(*copied)++] = bytes[i];
-  return 0;
+  return SdoAbort::kNone;
 }
 
-uint32_t Node::DoWrite(const ObjectEntry& e, const uint8_t* data, uint32_t size) {
+SdoAbort Node::DoWrite(const ObjectEntry& e, const uint8_t* data, uint32_t size) {
   switch (e.id) {
     case ObjectId::kErrorCount:
-      if (size != 1 || data[0] != 0) return kAbortInvalidValue;  // only 0 (clear) is allowed
+      if (size != 1 || data[0] != 0) return SdoAbort::kInvalidValue;  // only 0 (clear) allowed
       history_count_ = 0;
-      return 0;
+      return SdoAbort::kNone;
+    case ObjectId::kEmcyInhibitTime:
+      comm_.emcy_inhibit_100us = LoadLe16(data);
+      return SdoAbort::kNone;
     case ObjectId::kHeartbeatTime:
-      heartbeat_ms_ = LoadLe16(data);
-      return 0;
+      comm_.heartbeat_ms = LoadLe16(data);
+      return SdoAbort::kNone;
     default:
       return app_->Write(e, data, size);
   }
 }
 
-uint32_t Node::DoBeginDomainWrite(const ObjectEntry& e, uint32_t size) {
+SdoAbort Node::DoBeginDomainWrite(const ObjectEntry& e, uint32_t size) {
   return app_->BeginDomainWrite(e, size);
 }
-uint32_t Node::DoDomainWriteData(const uint8_t* data, uint32_t size) {
+SdoAbort Node::DoDomainWriteData(const uint8_t* data, uint32_t size) {
   return app_->DomainWriteData(data, size);
 }
-uint32_t Node::DoEndDomainWrite(bool complete) { return app_->EndDomainWrite(complete); }
+SdoAbort Node::DoEndDomainWrite(SdoAbort outcome) { return app_->EndDomainWrite(outcome); }
 
 }  // namespace volcomp::canopen

@@ -3,57 +3,57 @@
 
 namespace volcomp::canopen {
 
-const char* SdoAbortText(uint32_t code) {
-  switch (code) {
-    case kAbortNone:
+const char* SdoAbortText(SdoAbort a) {
+  switch (a) {
+    case SdoAbort::kNone:
       return "no error";
-    case kAbortToggle:
+    case SdoAbort::kToggle:
       return "toggle bit not alternated";
-    case kAbortTimeout:
+    case SdoAbort::kTimeout:
       return "SDO protocol timed out";
-    case kAbortCommand:
+    case SdoAbort::kCommand:
       return "command specifier not valid or unknown";
-    case kAbortBlockSize:
+    case SdoAbort::kBlockSize:
       return "invalid block size";
-    case kAbortSequence:
+    case SdoAbort::kSequence:
       return "invalid sequence number";
-    case kAbortCrc:
+    case SdoAbort::kCrc:
       return "CRC error (block mode)";
-    case kAbortOutOfMemory:
+    case SdoAbort::kOutOfMemory:
       return "out of memory";
-    case kAbortUnsupportedAccess:
+    case SdoAbort::kUnsupportedAccess:
       return "unsupported access to an object";
-    case kAbortWriteOnly:
+    case SdoAbort::kWriteOnly:
       return "attempt to read a write-only object";
-    case kAbortReadOnly:
+    case SdoAbort::kReadOnly:
       return "attempt to write a read-only object";
-    case kAbortNoObject:
+    case SdoAbort::kNoObject:
       return "object does not exist in the object dictionary";
-    case kAbortHardware:
+    case SdoAbort::kHardware:
       return "access failed due to a hardware error";
-    case kAbortTypeMismatch:
+    case SdoAbort::kTypeMismatch:
       return "data type does not match, length does not match";
-    case kAbortTooLong:
+    case SdoAbort::kTooLong:
       return "data type does not match, length too high";
-    case kAbortTooShort:
+    case SdoAbort::kTooShort:
       return "data type does not match, length too low";
-    case kAbortNoSubIndex:
+    case SdoAbort::kNoSubIndex:
       return "sub-index does not exist";
-    case kAbortInvalidValue:
+    case SdoAbort::kInvalidValue:
       return "invalid value for parameter";
-    case kAbortValueTooHigh:
+    case SdoAbort::kValueTooHigh:
       return "value of parameter written too high";
-    case kAbortValueTooLow:
+    case SdoAbort::kValueTooLow:
       return "value of parameter written too low";
-    case kAbortGeneral:
+    case SdoAbort::kGeneral:
       return "general error";
-    case kAbortCannotStore:
+    case SdoAbort::kCannotStore:
       return "data cannot be transferred or stored (write-protected)";
-    case kAbortLocalControl:
+    case SdoAbort::kLocalControl:
       return "data cannot be transferred or stored because of local control";
-    case kAbortDeviceState:
+    case SdoAbort::kDeviceState:
       return "not allowed in the present device state";
-    case kAbortNoData:
+    case SdoAbort::kNoData:
       return "no data available";
     default:
       return "unknown abort code";

@@ -29,7 +29,9 @@ void SdoServer::Init(uint8_t node_id, ObjectValues* values, const SdoServerConfi
   }
   state_ = State::kIdle;
   tx_count_ = 0;
-  aborts_ = malformed_ = last_abort_ = 0;
+  discard_seq_ = 0;
+  aborts_ = malformed_ = 0;
+  last_abort_ = SdoAbort::kNone;
 }
 
 CanFrame SdoServer::Frame(uint8_t cmd) const {
@@ -56,55 +58,88 @@ void SdoServer::Respond(uint8_t cmd, const uint8_t* payload4) {
   Queue(f);
 }
 
-void SdoServer::EndTransfer(bool complete) {
-  if (domain_ && (state_ == State::kDownloadSegmented || state_ == State::kBlockDownload ||
-                  state_ == State::kBlockDownloadEnd)) {
+void SdoServer::EndTransfer(SdoAbort outcome) {
+  const bool downloading = state_ == State::kDownloadSegmented || state_ == State::kBlockDownload ||
+                           state_ == State::kBlockDownloadEnd;
+  if (domain_ && downloading) {
     // A failure of a complete transfer is reported by FinishDownload(), not here.
-    (void)values_->EndDomainWrite(complete);
+    (void)values_->EndDomainWrite(outcome);
   }
   state_ = State::kIdle;
   domain_ = false;
 }
 
-void SdoServer::Abort(uint32_t code) {
+void SdoServer::OpenDiscardWindow() {
+  // The client sends a whole sub-block before it reads our answer: the segments after the last
+  // one we took may still be on their way.
+  if (state_ != State::kBlockDownload || last_seq_ >= blksize_) return;
+  // With the size indicated, the segments still to come tell which one carries the c bit; a
+  // client past its own indicated size leaves that unknown (0).
+  const uint32_t total = size_ == 0 ? 1u : (size_ + kSegmentBytes - 1) / kSegmentBytes;
+  discard_segments_left_ = size_known_ && taken_segments_ < total ? total - taken_segments_ : 0;
+  discard_seq_ = static_cast<uint8_t>(last_seq_ + 1);
+  discard_rx_ms_ = last_rx_ms_;
+}
+
+void SdoServer::Abort(SdoAbort code) {
   uint8_t payload[4];
-  StoreLe32(payload, code);
+  StoreLe32(payload, Code(code));
   Respond(kAbort, payload);
-  EndTransfer(false);
+  OpenDiscardWindow();
+  EndTransfer(code);
   ++aborts_;
   last_abort_ = code;
 }
 
-uint32_t SdoServer::Lookup(uint16_t index, uint8_t sub, bool write) {
+bool SdoServer::DiscardLeftover(uint8_t cmd, uint32_t now_ms) {
+  // The next segment exactly: its sequence number, and the c bit where the size tells whether it
+  // is the transfer's last segment.
+  const bool last = (cmd & kBlockLastSegment) != 0;
+  const bool continues = BlockSequence(cmd) == discard_seq_ &&
+                         (discard_segments_left_ == 0 || last == (discard_segments_left_ == 1));
+  if (!continues || Elapsed(now_ms, discard_rx_ms_, config_.block_gap_ms)) {
+    discard_seq_ = 0;  // not (or no longer) the aborted sub-block: a request
+    return false;
+  }
+  const bool sub_block_ends = last || discard_seq_ >= blksize_;
+  discard_seq_ = sub_block_ends ? 0 : static_cast<uint8_t>(discard_seq_ + 1);
+  if (discard_segments_left_ > 0) --discard_segments_left_;
+  discard_rx_ms_ = now_ms;
+  return true;
+}
+
+SdoAbort SdoServer::Lookup(uint16_t index, uint8_t sub, bool write) {
   index_ = index;
   sub_ = sub;
   bool index_exists = false;
   entry_ = FindEntry(index, sub, &index_exists);
-  if (entry_ == nullptr) return index_exists ? kAbortNoSubIndex : kAbortNoObject;
-  if (write && !Writable(entry_->access)) return kAbortReadOnly;
-  if (!write && !Readable(entry_->access)) return kAbortWriteOnly;
-  return 0;
+  if (entry_ == nullptr) return index_exists ? SdoAbort::kNoSubIndex : SdoAbort::kNoObject;
+  if (write && !Writable(entry_->access)) return SdoAbort::kReadOnly;
+  if (!write && !Readable(entry_->access)) return SdoAbort::kWriteOnly;
+  return SdoAbort::kNone;
 }
 
-uint32_t SdoServer::Deliver(const uint8_t* data, uint32_t size) {
-  if (size_known_ && offset_ + size > size_) return kAbortTooLong;
+SdoAbort SdoServer::Deliver(const uint8_t* data, uint32_t size) {
+  if (size_known_ && offset_ + size > size_) return SdoAbort::kTooLong;
   if (crc_on_) crc_ = Crc16Update(crc_, data, size);
   offset_ += size;
   if (domain_) return values_->DomainWriteData(data, size);
-  if (small_len_ + size > kSmallCapacity) return kAbortTooLong;
+  if (small_len_ + size > kSmallCapacity) return SdoAbort::kTooLong;
   for (uint32_t i = 0; i < size; ++i) small_[small_len_++] = data[i];
-  return 0;
+  return SdoAbort::kNone;
 }
 
-uint32_t SdoServer::FinishDownload() {
-  if (size_known_ && offset_ != size_) return offset_ < size_ ? kAbortTooShort : kAbortTooLong;
+SdoAbort SdoServer::FinishDownload() {
+  if (size_known_ && offset_ != size_) {
+    return offset_ < size_ ? SdoAbort::kTooShort : SdoAbort::kTooLong;
+  }
   if (domain_) {
-    const uint32_t code = values_->EndDomainWrite(true);
+    const SdoAbort code = values_->EndDomainWrite(SdoAbort::kNone);
     domain_ = false;  // ended, successfully or not
     return code;
   }
   const uint32_t fixed = FixedSize(entry_->type);
-  if (fixed != 0 && small_len_ != fixed) return kAbortTypeMismatch;
+  if (fixed != 0 && small_len_ != fixed) return SdoAbort::kTypeMismatch;
   return values_->Write(*entry_, small_, small_len_);
 }
 
@@ -113,13 +148,18 @@ void SdoServer::OnFrame(const CanFrame& f, uint32_t now_ms) {
     ++malformed_;
     return;
   }
-  last_rx_ms_ = now_ms;
   const uint8_t cmd = f.data[0];
+  if (discard_seq_ != 0 && DiscardLeftover(cmd, now_ms)) return;
+  discard_seq_ = 0;
+  last_rx_ms_ = now_ms;
   if (cmd == kAbort) {  // abort from the client: end silently
     if (state_ != State::kIdle) {
+      SdoAbort code = AbortFromCode(LoadLe32(f.data + 4));
+      if (!Failed(code)) code = SdoAbort::kGeneral;  // 0 is no abort code: still a failure
       ++aborts_;
-      last_abort_ = LoadLe32(f.data + 4);
-      EndTransfer(false);
+      last_abort_ = code;
+      OpenDiscardWindow();
+      EndTransfer(code);
     }
     return;
   }
@@ -157,11 +197,11 @@ void SdoServer::OnFrame(const CanFrame& f, uint32_t now_ms) {
   }
   // A new initiate while a transfer runs: the client gave up on the old one; start over.
   if (IsInitiate(cmd)) {
-    EndTransfer(false);
+    EndTransfer(SdoAbort::kGeneral);
     HandleIdle(f);
     return;
   }
-  Abort(kAbortCommand);
+  Abort(SdoAbort::kCommand);
 }
 
 void SdoServer::HandleIdle(const CanFrame& f) {
@@ -172,13 +212,13 @@ void SdoServer::HandleIdle(const CanFrame& f) {
   if (IsBlockDownloadInitiate(cmd)) return InitiateBlockDownload(f);
   index_ = LoadLe16(f.data + 1);
   sub_ = f.data[3];
-  Abort(kAbortCommand);
+  Abort(SdoAbort::kCommand);
 }
 
 void SdoServer::InitiateDownload(const CanFrame& f) {
   const uint8_t cmd = f.data[0];
-  const uint32_t code = Lookup(LoadLe16(f.data + 1), f.data[3], true);
-  if (code != 0) return Abort(code);
+  const SdoAbort code = Lookup(LoadLe16(f.data + 1), f.data[3], true);
+  if (Failed(code)) return Abort(code);
   const bool expedited = (cmd & kExpedited) != 0, size_indicated = (cmd & kSizeIndicated) != 0;
   domain_ = false;
   small_len_ = 0;
@@ -189,46 +229,46 @@ void SdoServer::InitiateDownload(const CanFrame& f) {
     const uint32_t fixed = FixedSize(entry_->type);
     if (!size_indicated && fixed != 0) n = fixed;
     if (entry_->type == DataType::kDomain) {
-      uint32_t c = values_->BeginDomainWrite(*entry_, n);
-      if (c == 0) c = values_->DomainWriteData(f.data + 4, n);
-      if (c == 0) c = values_->EndDomainWrite(true);
-      if (c != 0) return Abort(c);
+      SdoAbort c = values_->BeginDomainWrite(*entry_, n);
+      if (!Failed(c)) c = values_->DomainWriteData(f.data + 4, n);
+      if (!Failed(c)) c = values_->EndDomainWrite(SdoAbort::kNone);
+      if (Failed(c)) return Abort(c);
     } else {
-      if (fixed != 0 && n != fixed) return Abort(kAbortTypeMismatch);
-      const uint32_t c = values_->Write(*entry_, f.data + 4, n);
-      if (c != 0) return Abort(c);
+      if (fixed != 0 && n != fixed) return Abort(SdoAbort::kTypeMismatch);
+      const SdoAbort c = values_->Write(*entry_, f.data + 4, n);
+      if (Failed(c)) return Abort(c);
     }
     return Respond(Command(kScsInitiateDownload));
   }
-  const uint32_t c = BeginTransfer(size_indicated, size_indicated ? LoadLe32(f.data + 4) : 0);
-  if (c != 0) return Abort(c);
+  const SdoAbort c = BeginTransfer(size_indicated, size_indicated ? LoadLe32(f.data + 4) : 0);
+  if (Failed(c)) return Abort(c);
   toggle_ = 0;
   state_ = State::kDownloadSegmented;
   Respond(Command(kScsInitiateDownload));
 }
 
-uint32_t SdoServer::BeginTransfer(bool size_known, uint32_t size) {
+SdoAbort SdoServer::BeginTransfer(bool size_known, uint32_t size) {
   size_known_ = size_known;
   size_ = size;
   if (entry_->type == DataType::kDomain) {
-    const uint32_t c = values_->BeginDomainWrite(*entry_, size_);
-    domain_ = c == 0;
+    const SdoAbort c = values_->BeginDomainWrite(*entry_, size_);
+    domain_ = !Failed(c);
     return c;
   }
-  return size_known_ && size_ > kSmallCapacity ? uint32_t{kAbortTooLong} : 0u;
+  return size_known_ && size_ > kSmallCapacity ? SdoAbort::kTooLong : SdoAbort::kNone;
 }
 
 void SdoServer::DownloadSegment(const CanFrame& f) {
   const uint8_t cmd = f.data[0];
-  if (ToggleOf(cmd) != toggle_) return Abort(kAbortToggle);
+  if (ToggleOf(cmd) != toggle_) return Abort(SdoAbort::kToggle);
   const uint32_t n = SegmentBytes(cmd);
-  const uint32_t c = Deliver(f.data + 1, n);
-  if (c != 0) return Abort(c);
+  const SdoAbort c = Deliver(f.data + 1, n);
+  if (Failed(c)) return Abort(c);
   const uint8_t response = SegmentAck(kScsDownloadSegment, toggle_);
   toggle_ = static_cast<uint8_t>(toggle_ ^ 1u);
   if ((cmd & kLastSegment) != 0) {
-    const uint32_t done = FinishDownload();
-    if (done != 0) return Abort(done);
+    const SdoAbort done = FinishDownload();
+    if (Failed(done)) return Abort(done);
     state_ = State::kIdle;
   }
   CanFrame r = Frame(response);
@@ -236,12 +276,12 @@ void SdoServer::DownloadSegment(const CanFrame& f) {
 }
 
 void SdoServer::InitiateUpload(const CanFrame& f) {
-  const uint32_t code = Lookup(LoadLe16(f.data + 1), f.data[3], false);
-  if (code != 0) return Abort(code);
+  const SdoAbort code = Lookup(LoadLe16(f.data + 1), f.data[3], false);
+  if (Failed(code)) return Abort(code);
   uint8_t buf[4] = {0, 0, 0, 0};
   uint32_t copied = 0, total = 0;
-  const uint32_t c = values_->Read(*entry_, 0, buf, 4, &copied, &total);
-  if (c != 0) return Abort(c);
+  const SdoAbort c = values_->Read(*entry_, 0, buf, 4, &copied, &total);
+  if (Failed(c)) return Abort(c);
   if (total >= 1 && total <= 4 && copied == total) {
     return Respond(Initiate(kScsInitiateUpload, total, true), buf);
   }
@@ -255,11 +295,11 @@ void SdoServer::InitiateUpload(const CanFrame& f) {
 }
 
 void SdoServer::UploadSegment(const CanFrame& f) {
-  if (ToggleOf(f.data[0]) != toggle_) return Abort(kAbortToggle);
+  if (ToggleOf(f.data[0]) != toggle_) return Abort(SdoAbort::kToggle);
   CanFrame r = Frame(0);
   uint32_t copied = 0, total = 0;
-  const uint32_t c = values_->Read(*entry_, offset_, r.data + 1, kSegmentBytes, &copied, &total);
-  if (c != 0) return Abort(c);
+  const SdoAbort c = values_->Read(*entry_, offset_, r.data + 1, kSegmentBytes, &copied, &total);
+  if (Failed(c)) return Abort(c);
   offset_ += copied;
   const bool last = offset_ >= size_ || copied < kSegmentBytes;
   r.data[0] = Segment(toggle_, copied, last);
@@ -270,18 +310,19 @@ void SdoServer::UploadSegment(const CanFrame& f) {
 
 void SdoServer::InitiateBlockDownload(const CanFrame& f) {
   const uint8_t cmd = f.data[0];
-  const uint32_t code = Lookup(LoadLe16(f.data + 1), f.data[3], true);
-  if (code != 0) return Abort(code);
+  const SdoAbort code = Lookup(LoadLe16(f.data + 1), f.data[3], true);
+  if (Failed(code)) return Abort(code);
   const bool size_indicated = (cmd & kBlockSizeIndicated) != 0;
   crc_on_ = (cmd & kBlockCrc) != 0;
   crc_ = 0;
   offset_ = 0;
   small_len_ = 0;
   domain_ = false;
-  const uint32_t c = BeginTransfer(size_indicated, size_indicated ? LoadLe32(f.data + 4) : 0);
-  if (c != 0) return Abort(c);
+  const SdoAbort c = BeginTransfer(size_indicated, size_indicated ? LoadLe32(f.data + 4) : 0);
+  if (Failed(c)) return Abort(c);
   blksize_ = config_.block_size;
   last_seq_ = 0;
+  taken_segments_ = 0;
   have_held_ = false;
   last_segment_seen_ = false;
   awaiting_first_ = true;
@@ -301,13 +342,14 @@ void SdoServer::BlockDownloadSegment(const CanFrame& f) {
     return;
   }
   awaiting_first_ = false;
+  last_seq_ = seq;  // taken (an abort below discards the segments after it)
+  ++taken_segments_;
   if (have_held_) {
-    const uint32_t c = Deliver(held_, kSegmentBytes);
-    if (c != 0) return Abort(c);
+    const SdoAbort c = Deliver(held_, kSegmentBytes);
+    if (Failed(c)) return Abort(c);
   }
   for (int i = 0; i < static_cast<int>(kSegmentBytes); ++i) held_[i] = f.data[1 + i];
   have_held_ = true;
-  last_seq_ = seq;
   if (last) {
     last_segment_seen_ = true;
     state_ = State::kBlockDownloadEnd;
@@ -331,13 +373,13 @@ void SdoServer::SendBlockAck() {
 void SdoServer::BlockDownloadEnd(const CanFrame& f) {
   const uint32_t unused = BlockEndUnused(f.data[0]);
   if (have_held_) {
-    const uint32_t c = Deliver(held_, kSegmentBytes - unused);
-    if (c != 0) return Abort(c);
+    const SdoAbort c = Deliver(held_, kSegmentBytes - unused);
+    if (Failed(c)) return Abort(c);
     have_held_ = false;
   }
-  if (crc_on_ && LoadLe16(f.data + 1) != crc_) return Abort(kAbortCrc);
-  const uint32_t done = FinishDownload();
-  if (done != 0) return Abort(done);
+  if (crc_on_ && LoadLe16(f.data + 1) != crc_) return Abort(SdoAbort::kCrc);
+  const SdoAbort done = FinishDownload();
+  if (Failed(done)) return Abort(done);
   state_ = State::kIdle;
   CanFrame r = Frame(Block(kScsBlockDownload, kBlockEnd));
   Queue(r);
@@ -345,14 +387,14 @@ void SdoServer::BlockDownloadEnd(const CanFrame& f) {
 
 void SdoServer::InitiateBlockUpload(const CanFrame& f) {
   const uint8_t cmd = f.data[0];
-  const uint32_t code = Lookup(LoadLe16(f.data + 1), f.data[3], false);
-  if (code != 0) return Abort(code);
+  const SdoAbort code = Lookup(LoadLe16(f.data + 1), f.data[3], false);
+  if (Failed(code)) return Abort(code);
   const uint8_t blk = f.data[4];
-  if (blk < 1 || blk > kMaxBlockSize) return Abort(kAbortBlockSize);
+  if (blk < 1 || blk > kMaxBlockSize) return Abort(SdoAbort::kBlockSize);
   uint8_t probe[1];
   uint32_t copied = 0, total = 0;
-  const uint32_t c = values_->Read(*entry_, 0, probe, 0, &copied, &total);
-  if (c != 0) return Abort(c);
+  const SdoAbort c = values_->Read(*entry_, 0, probe, 0, &copied, &total);
+  if (Failed(c)) return Abort(c);
   size_ = total;
   offset_ = 0;
   crc_on_ = (cmd & kBlockCrc) != 0;
@@ -369,7 +411,9 @@ void SdoServer::BlockUploadAck(const CanFrame& f) {
   const uint8_t ackseq = f.data[1];
   const uint8_t next_blk = f.data[2];
   const uint32_t sent_here = static_cast<uint32_t>(up_seq_ - 1u);
-  if (ackseq > sent_here || next_blk < 1 || next_blk > kMaxBlockSize) return Abort(kAbortSequence);
+  if (ackseq > sent_here || next_blk < 1 || next_blk > kMaxBlockSize) {
+    return Abort(SdoAbort::kSequence);
+  }
   // Bytes confirmed by this ack: fold them into the CRC.
   uint32_t confirmed = ackseq * kSegmentBytes;
   if (offset_ + confirmed > size_) confirmed = size_ - offset_;
@@ -378,8 +422,8 @@ void SdoServer::BlockUploadAck(const CanFrame& f) {
   while (done < confirmed) {
     uint32_t copied = 0, total = 0;
     const uint32_t want = confirmed - done < sizeof buf ? confirmed - done : sizeof buf;
-    const uint32_t c = values_->Read(*entry_, offset_ + done, buf, want, &copied, &total);
-    if (c != 0 || copied == 0) return Abort(c != 0 ? c : kAbortGeneral);
+    const SdoAbort c = values_->Read(*entry_, offset_ + done, buf, want, &copied, &total);
+    if (Failed(c) || copied == 0) return Abort(Failed(c) ? c : SdoAbort::kGeneral);
     if (crc_on_) crc_ = Crc16Update(crc_, buf, copied);
     done += copied;
   }
@@ -408,7 +452,7 @@ void SdoServer::BlockUploadEndAck(const CanFrame& f) {
 void SdoServer::Poll(uint32_t now_ms) {
   if (state_ == State::kIdle) return;
   if (Elapsed(now_ms, last_rx_ms_, config_.timeout_ms)) {
-    Abort(kAbortTimeout);
+    Abort(SdoAbort::kTimeout);
     return;
   }
   // Silence in the middle of a block download sub-block means its tail was lost: acknowledge
@@ -432,8 +476,8 @@ bool SdoServer::PopTx(CanFrame* frame) {
   const uint32_t start = offset_ + (up_seq_ - 1u) * kSegmentBytes;
   CanFrame r = Frame(0);
   uint32_t copied = 0, total = 0;
-  const uint32_t c = values_->Read(*entry_, start, r.data + 1, kSegmentBytes, &copied, &total);
-  if (c != 0) {
+  const SdoAbort c = values_->Read(*entry_, start, r.data + 1, kSegmentBytes, &copied, &total);
+  if (Failed(c)) {
     Abort(c);
     return PopTx(frame);
   }

@@ -3,9 +3,11 @@
 // stored settings and NMT reset.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <functional>
 #include <optional>
 
+#include "frames.hpp"
 #include "test_tables.hpp"
 #include "volcomp/canopen/board_protocol.hpp"
 #include "volcomp/canopen/object_dictionary.hpp"
@@ -144,6 +146,29 @@ class Bench : public ::testing::Test {
     l.now_us = [this] { return clock_.now() / 1000; };
     return l;
   }
+  // Frame level: injects one SDO request (hex, CiA 301 layout) and returns the board's SDO
+  // responses of the next main-loop pass.
+  std::vector<std::string> Exchange(const std::string& hex) {
+    can_.Inject(testing::F(0x600 + kNode, hex));
+    Step(50);
+    std::vector<std::string> out;
+    for (const CanFrame& f : can_.TakeSent()) {
+      sent_.push_back(f);
+      if (f.id == 0x580u + kNode) out.push_back(testing::ToString(f));
+    }
+    return out;
+  }
+  // An NMT command to this node; returns every frame the board sent in the next 2 ms.
+  std::vector<std::string> Nmt(uint8_t command) {
+    can_.Inject(CanFrame{0x000, false, false, 2, {command, kNode}});
+    Step(100);
+    std::vector<std::string> out;
+    for (const CanFrame& f : can_.TakeSent()) {
+      sent_.push_back(f);
+      out.push_back(testing::ToString(f));
+    }
+    return out;
+  }
   int CountEmcy(uint16_t code) const {
     int n = 0;
     for (const CanFrame& f : sent_) {
@@ -172,12 +197,12 @@ TEST_F(Bench, UploadIsRefusedWhileWriteProtectedAndAllowedWhenUnlocked) {
   const testing::AlignedBytes img = UniformImage(5, 42);
   SdoResult r = Upload(img);
   EXPECT_FALSE(r.ok);
-  EXPECT_EQ(r.abort_code, canopen::kAbortCannotStore);
+  EXPECT_EQ(r.abort_code, canopen::SdoAbort::kCannotStore);
   EXPECT_EQ(CountEmcy(canopen::kEmcyRefused), 1);
   EXPECT_EQ(Read(ObjectId::kRefusedActions), 1u);
   EXPECT_EQ(Read(ObjectId::kWriteAccess), 0u);
   // Wrong signature: refused; right one: writable for 60 s.
-  EXPECT_EQ(Write(ObjectId::kUnlock, 0x12345678).abort_code, canopen::kAbortInvalidValue);
+  EXPECT_EQ(Write(ObjectId::kUnlock, 0x12345678).abort_code, canopen::SdoAbort::kInvalidValue);
   ASSERT_TRUE(Write(ObjectId::kUnlock, canopen::kUnlockSignature).ok);
   EXPECT_EQ(Read(ObjectId::kWriteAccess), 1u);
   r = Upload(img);
@@ -205,7 +230,7 @@ TEST_F(Bench, ActivationNeedsReferencedAxesAtRest) {
   EXPECT_EQ(Read(ObjectId::kStagedTableId), 77u);
   // Not referenced: refused with 0x08000022 and an EMCY.
   SdoResult r = Command(TableCommand::kActivate);
-  EXPECT_EQ(r.abort_code, canopen::kAbortDeviceState);
+  EXPECT_EQ(r.abort_code, canopen::SdoAbort::kDeviceState);
   EXPECT_NE(r.message.find("not allowed in the present device state"), std::string::npos);
   EXPECT_EQ(CountEmcy(canopen::kEmcyRefused), 1);
   // Reference over CAN, then move an axis: still refused while moving.
@@ -213,7 +238,7 @@ TEST_F(Bench, ActivationNeedsReferencedAxesAtRest) {
   EXPECT_TRUE(app_.engine().all_referenced());
   step_io_.add_steps(0, 100);
   Step(1);
-  EXPECT_EQ(Command(TableCommand::kActivate).abort_code, canopen::kAbortDeviceState);
+  EXPECT_EQ(Command(TableCommand::kActivate).abort_code, canopen::SdoAbort::kDeviceState);
   Step(10000);  // 200 ms at rest
   r = Command(TableCommand::kActivate);
   ASSERT_TRUE(r.ok) << r.message;
@@ -246,11 +271,11 @@ TEST_F(Bench, ActiveTableSurvivesAResetAndBadUploads) {
   testing::AlignedBytes corrupt = UniformImage(9, 2);
   corrupt[60] ^= 0x01;
   ASSERT_TRUE(Upload(corrupt).ok);  // the transfer itself is fine
-  EXPECT_EQ(Command(TableCommand::kVerify).abort_code, canopen::kAbortInvalidValue);
-  EXPECT_EQ(Command(TableCommand::kActivate).abort_code, canopen::kAbortNoData);
+  EXPECT_EQ(Command(TableCommand::kVerify).abort_code, canopen::SdoAbort::kInvalidValue);
+  EXPECT_EQ(Command(TableCommand::kActivate).abort_code, canopen::SdoAbort::kNoData);
   EXPECT_EQ(canopen::DecodeTableStatus(Read(ObjectId::kTableStatus)).error, Error::kImageBadCrc);
   ASSERT_TRUE(Upload(UniformImage(9, 3, 500000)).ok);
-  EXPECT_EQ(Command(TableCommand::kVerify).abort_code, canopen::kAbortInvalidValue);
+  EXPECT_EQ(Command(TableCommand::kVerify).abort_code, canopen::SdoAbort::kInvalidValue);
   EXPECT_EQ(canopen::DecodeTableStatus(Read(ObjectId::kTableStatus)).error,
             Error::kConfigResolutionMismatch);
   EXPECT_EQ(Read(ObjectId::kActiveTableCrc), crc);
@@ -266,10 +291,11 @@ TEST_F(Bench, SettingsAreStoredAndAppliedAfterReset) {
   io_.SetInput(InputLine::kWriteEnable, true);
   EXPECT_EQ(Read(ObjectId::kAxisMaxCorrection2), 1000u);
   ASSERT_TRUE(Write(ObjectId::kAxisMaxCorrection2, 250).ok);
-  EXPECT_EQ(Write(ObjectId::kAxisMaxCorrection2, 1u << 20).abort_code, canopen::kAbortValueTooHigh);
+  EXPECT_EQ(Write(ObjectId::kAxisMaxCorrection2, 1u << 20).abort_code,
+            canopen::SdoAbort::kValueTooHigh);
   EXPECT_TRUE(canopen::DecodeDeviceState(Read(ObjectId::kDeviceState)).settings_pending);
   EXPECT_EQ(app_.settings().board.axis[1].max_correction_steps, 1000);
-  EXPECT_EQ(Write(ObjectId::kStoreAll, 0x12345678).abort_code, canopen::kAbortCannotStore);
+  EXPECT_EQ(Write(ObjectId::kStoreAll, 0x12345678).abort_code, canopen::SdoAbort::kCannotStore);
   ASSERT_TRUE(Write(ObjectId::kStoreAll, canopen::kSaveSignature).ok);
   can_.Inject(CanFrame{0x000, false, false, 2, {0x81, 0}});
   Step(100);
@@ -293,6 +319,7 @@ TEST_F(Bench, DiagnosticsAndIdentity) {
   EXPECT_GT(Read(ObjectId::kCanRxFrames), 0u);
   EXPECT_GT(Read(ObjectId::kTicks), 100u);
   EXPECT_EQ(Read(ObjectId::kLostStepChecks), 0u);
+  EXPECT_EQ(Read(ObjectId::kEmcySuppressed), 0u);
   // Heartbeat: 1000 ms by default, state pre-operational.
   sent_.clear();
   can_.TakeSent();
@@ -300,6 +327,182 @@ TEST_F(Bench, DiagnosticsAndIdentity) {
   int hb = 0;
   for (const CanFrame& f : can_.TakeSent()) hb += f.id == 0x700u + kNode && f.data[0] == 0x7F;
   EXPECT_EQ(hb, 1);
+}
+
+using Frames = std::vector<std::string>;
+
+bool Contains(const Frames& frames, const std::string& f) {
+  return std::find(frames.begin(), frames.end(), f) != frames.end();
+}
+
+// NMT reset communication puts the stored 0x1017 back in force (CiA 301): an unsaved write does
+// not survive it; a stored one (0x1010 "save") survives it and a reset node.
+TEST_F(Bench, ResetCommunicationRestoresTheStoredHeartbeatTime) {
+  Boot();
+  EXPECT_EQ(Exchange("2B17100064000000"), Frames{"590#6017100000000000"});  // 0x1017 = 100 ms
+  EXPECT_EQ(Exchange("4017100000000000"), Frames{"590#4B17100064000000"});
+  EXPECT_TRUE(Contains(Nmt(0x82), "710#00"));  // reset communication: boot-up
+  EXPECT_EQ(Exchange("4017100000000000"), Frames{"590#4B171000E8030000"});  // 1000 ms again
+  // Heartbeats 1000 ms apart, not 100.
+  can_.TakeSent();
+  Step(50 * 950);
+  int hb = 0;
+  for (const CanFrame& f : can_.TakeSent()) hb += f.id == 0x700u + kNode;
+  EXPECT_EQ(hb, 0);
+
+  // 500 ms, 0x1015 = 0, stored: both survive the resets.
+  io_.SetInput(InputLine::kWriteEnable, true);
+  Step(100);
+  EXPECT_EQ(Exchange("2B171000F4010000"), Frames{"590#6017100000000000"});
+  EXPECT_EQ(Exchange("2B15100000000000"), Frames{"590#6015100000000000"});
+  EXPECT_EQ(Exchange("2310100173617665"), Frames{"590#6010100100000000"});  // "save"
+  EXPECT_FALSE(canopen::DecodeDeviceState(Read(ObjectId::kDeviceState)).settings_pending);
+  EXPECT_TRUE(Contains(Nmt(0x82), "710#00"));
+  EXPECT_EQ(Exchange("4017100000000000"), Frames{"590#4B171000F4010000"});
+  EXPECT_EQ(Exchange("4015100000000000"), Frames{"590#4B15100000000000"});
+  EXPECT_TRUE(Contains(Nmt(0x81), "710#00"));  // reset node: from the stored settings
+  EXPECT_EQ(Exchange("4017100000000000"), Frames{"590#4B171000F4010000"});
+  EXPECT_EQ(Exchange("4015100000000000"), Frames{"590#4B15100000000000"});
+}
+
+// 0x2102 after a transfer that broke says how: bits 1-7 result, 8-15 staged state (4 failed),
+// 16-31 the volcomp error (error_codes.def): aborted 80, CRC-16 81; never "I/O error".
+TEST_F(Bench, TableStatusSaysATransferWasAbortedOrFailedItsCrc) {
+  Boot();
+  io_.SetInput(InputLine::kWriteEnable, true);
+  Step(100);
+  // Block download of 20 bytes, aborted by the client after the first segment.
+  EXPECT_EQ(Exchange("C600210014000000"), Frames{"590#A40021007F000000"});
+  EXPECT_EQ(Exchange("0130313233343536"), Frames{});
+  EXPECT_EQ(Exchange("8000210000000008"), Frames{});
+  // Result 7 (transfer) << 1 = 0x0E, failed 0x04, error 80 = 0x50.
+  EXPECT_EQ(Exchange("4002210000000000"), Frames{"590#430221000E045000"});
+  // The same 20 bytes with a wrong CRC-16 (0x34F1 is right).
+  EXPECT_EQ(Exchange("C600210014000000"), Frames{"590#A40021007F000000"});
+  EXPECT_EQ(Exchange("0130313233343536"), Frames{});
+  EXPECT_EQ(Exchange("0237383941424344"), Frames{});
+  EXPECT_EQ(Exchange("8345464748494A00"), Frames{"590#A2037F0000000000"});
+  EXPECT_EQ(Exchange("C5F1350000000000"), Frames{"590#8000210004000405"});
+  // Result 3 (CRC) << 1 = 0x06, failed 0x04, error 81 = 0x51.
+  EXPECT_EQ(Exchange("4002210000000000"), Frames{"590#4302210006045100"});
+  // Silence: the board times the transfer out (0x05040000), error 82 = 0x52.
+  EXPECT_EQ(Exchange("C600210014000000"), Frames{"590#A40021007F000000"});
+  EXPECT_EQ(Exchange("0130313233343536"), Frames{});
+  Step(50 * 1200);
+  Frames quiet;
+  for (const CanFrame& f : can_.TakeSent()) quiet.push_back(testing::ToString(f));
+  EXPECT_TRUE(Contains(quiet, "590#A2017F0000000000"));  // re-ack of the partial sub-block
+  EXPECT_TRUE(Contains(quiet, "590#8000210000000405"));  // timed out
+  EXPECT_EQ(Exchange("4002210000000000"), Frames{"590#430221000E045200"});
+}
+
+// 0x2105-0x2107 describe what is staged now. A verified staged image is in flash: after a reset
+// node it is mounted, verified again and reported as before; once cleared it is gone, also after
+// a reset.
+TEST_F(Bench, StagedImageSurvivesAResetAndItsIdsDoNotOutliveIt) {
+  Boot();
+  io_.SetInput(InputLine::kWriteEnable, true);
+  Step(100);
+  const testing::AlignedBytes img = UniformImage(5, 0x4D);
+  const uint32_t crc = LoadLe32(img.data() + img.size() - 4);
+  char crc_hex[9], size_hex[9];
+  std::snprintf(crc_hex, sizeof crc_hex, "%02X%02X%02X%02X", crc & 0xFF, (crc >> 8) & 0xFF,
+                (crc >> 16) & 0xFF, crc >> 24);
+  const uint32_t size = static_cast<uint32_t>(img.size());
+  std::snprintf(size_hex, sizeof size_hex, "%02X%02X%02X%02X", size & 0xFF, (size >> 8) & 0xFF,
+                (size >> 16) & 0xFF, size >> 24);
+  ASSERT_TRUE(Upload(img).ok);
+  ASSERT_TRUE(Command(TableCommand::kVerify).ok);
+  const Frames staged_crc{std::string("590#43052100") + crc_hex};
+  const Frames staged_size{std::string("590#43062100") + size_hex};
+  const Frames staged_id{"590#430721004D000000"};
+  const Frames verified{"590#4302210000030000"};  // staged state 3, result ok
+  EXPECT_EQ(Exchange("4005210000000000"), staged_crc);
+  EXPECT_EQ(Exchange("4006210000000000"), staged_size);
+  EXPECT_EQ(Exchange("4007210000000000"), staged_id);
+  EXPECT_EQ(Exchange("4002210000000000"), verified);
+
+  EXPECT_TRUE(Contains(Nmt(0x81), "710#00"));  // reset node
+  EXPECT_EQ(Exchange("4005210000000000"), staged_crc);
+  EXPECT_EQ(Exchange("4006210000000000"), staged_size);
+  EXPECT_EQ(Exchange("4007210000000000"), staged_id);
+  EXPECT_EQ(Exchange("4002210000000000"), verified);
+  EXPECT_TRUE(canopen::DecodeDeviceState(Read(ObjectId::kDeviceState)).staged_verified);
+
+  // Cleared (0x2101 = 3): nothing staged, before and after a reset.
+  EXPECT_EQ(Exchange("2F01210003000000"), Frames{"590#6001210000000000"});
+  const Frames empty{"590#4302210000000000"};
+  for (int reset = 0; reset < 2; ++reset) {
+    EXPECT_EQ(Exchange("4005210000000000"), Frames{"590#4305210000000000"}) << reset;
+    EXPECT_EQ(Exchange("4006210000000000"), Frames{"590#4306210000000000"}) << reset;
+    EXPECT_EQ(Exchange("4007210000000000"), Frames{"590#4307210000000000"}) << reset;
+    EXPECT_EQ(Exchange("4002210000000000"), empty) << reset;
+    if (reset == 0) {
+      EXPECT_TRUE(Contains(Nmt(0x81), "710#00"));
+    }
+  }
+
+  // Complete but not verified: verified at mount. Activated: nothing staged (the bank with the
+  // table active before is not a staged image), also after a reset.
+  ASSERT_TRUE(Upload(img).ok);
+  EXPECT_TRUE(Contains(Nmt(0x81), "710#00"));
+  EXPECT_EQ(Exchange("4002210000000000"), verified);
+  ASSERT_TRUE(Write(ObjectId::kReferenceAxes, 0x07).ok);
+  Step(10000);
+  ASSERT_TRUE(Command(TableCommand::kActivate).ok);
+  ASSERT_TRUE(Upload(UniformImage(7, 0x4E)).ok);
+  ASSERT_TRUE(Write(ObjectId::kReferenceAxes, 0x07).ok);
+  Step(10000);
+  ASSERT_TRUE(Command(TableCommand::kActivate).ok);
+  EXPECT_TRUE(Contains(Nmt(0x81), "710#00"));
+  EXPECT_EQ(Exchange("4003210000000000"), Frames{"590#430321004E000000"});  // active id
+  EXPECT_EQ(Exchange("4002210000000000"), empty);
+  EXPECT_EQ(Exchange("4007210000000000"), Frames{"590#4307210000000000"});
+  // An upload cut by a reset node: the bank it went to held the table active before (0x4D), which
+  // must not come back as staged.
+  EXPECT_EQ(Exchange("C600210014000000"), Frames{"590#A40021007F000000"});
+  EXPECT_EQ(Exchange("0130313233343536"), Frames{});
+  EXPECT_TRUE(Contains(Nmt(0x81), "710#00"));
+  EXPECT_EQ(Exchange("4002210000000000"), empty);
+  EXPECT_EQ(Exchange("4007210000000000"), Frames{"590#4307210000000000"});
+
+  // An image for another board fails verification and does not come back after a reset; nor does
+  // an upload cut by an abort.
+  ASSERT_TRUE(Upload(UniformImage(9, 0x4F, 500000)).ok);
+  EXPECT_EQ(Command(TableCommand::kVerify).abort_code, canopen::SdoAbort::kInvalidValue);
+  EXPECT_TRUE(Contains(Nmt(0x81), "710#00"));
+  EXPECT_EQ(Exchange("4002210000000000"), empty);
+  EXPECT_EQ(Exchange("C600210014000000"), Frames{"590#A40021007F000000"});
+  EXPECT_EQ(Exchange("0130313233343536"), Frames{});
+  EXPECT_EQ(Exchange("8000210000000008"), Frames{});
+  EXPECT_TRUE(Contains(Nmt(0x81), "710#00"));
+  EXPECT_EQ(Exchange("4002210000000000"), empty);
+}
+
+// The settings record keeps 0x1015 in the slot after the heartbeat time (record version 2); a
+// version-1 record (that slot reserved, 0) gives the default inhibit time, not 0.
+TEST(SettingsRecord, KeepsTheEmcyInhibitTimeAndReadsVersion1Records) {
+  firmware::BoardSettings s;
+  s.heartbeat_ms = 0x0123;
+  s.emcy_inhibit_100us = 37;
+  uint8_t rec[firmware::kSettingsBytes];
+  firmware::SerializeSettings(s, rec);
+  EXPECT_EQ(rec[4], 2);  // version, LE16 at 4
+  EXPECT_EQ(rec[5], 0);
+  EXPECT_EQ(rec[12], 0x23);  // heartbeat LE16 at 12
+  EXPECT_EQ(rec[13], 0x01);
+  EXPECT_EQ(rec[14], 37);  // inhibit LE16 at 14
+  EXPECT_EQ(rec[15], 0);
+  firmware::BoardSettings back;
+  ASSERT_TRUE(firmware::DeserializeSettings(rec, sizeof rec, &back).ok());
+  EXPECT_EQ(back.emcy_inhibit_100us, 37);
+  rec[4] = 1;
+  rec[14] = 0;
+  ASSERT_TRUE(firmware::DeserializeSettings(rec, sizeof rec, &back).ok());
+  EXPECT_EQ(back.emcy_inhibit_100us, 100);  // the default, 10 ms
+  EXPECT_EQ(back.heartbeat_ms, 0x0123);
+  rec[4] = 3;
+  EXPECT_FALSE(firmware::DeserializeSettings(rec, sizeof rec, &back).ok());
 }
 
 // The PC tool's staging steps (tools/canopen table_staging.hpp, used by `volcomp upload` and the
@@ -325,7 +528,7 @@ TEST_F(Bench, StagingStepsUnlockStageAndVerify) {
   // A CRC that is not the image's: a failure of its own (no abort code), naming both values.
   r = canopen_client::VerifyStaged(node, crc ^ 1u, &staged);
   EXPECT_FALSE(r.ok);
-  EXPECT_EQ(r.abort_code, 0u);
+  EXPECT_EQ(r.abort_code, canopen::SdoAbort::kNone);
   EXPECT_NE(
       r.message.find("staged CRC-32 " + tools::Hex32(crc) + ", expected " + tools::Hex32(crc ^ 1u)),
       std::string::npos)
@@ -333,7 +536,7 @@ TEST_F(Bench, StagingStepsUnlockStageAndVerify) {
   // Activation before referencing: the step, the board's reason and what to do.
   r = canopen_client::Explain(
       node.Write(ObjectId::kTableControl, canopen::Value(TableCommand::kActivate)), "activating");
-  EXPECT_EQ(r.abort_code, canopen::kAbortDeviceState);
+  EXPECT_EQ(r.abort_code, canopen::SdoAbort::kDeviceState);
   EXPECT_EQ(r.message.rfind("activating: ", 0), 0u) << r.message;
   EXPECT_NE(r.message.find("; the axes must be referenced (homed) and at rest"), std::string::npos)
       << r.message;
@@ -352,7 +555,7 @@ TEST_F(Bench, StagingStepsNameTheStepThatFailed) {
   // Nothing was downloaded: the board's verification refuses.
   const SdoResult r = canopen_client::VerifyStaged(node, 0x12345678u);
   EXPECT_FALSE(r.ok);
-  EXPECT_NE(r.abort_code, 0u);
+  EXPECT_NE(r.abort_code, canopen::SdoAbort::kNone);
   EXPECT_EQ(r.message.rfind("verifying on the board (0x2101 = 4): ", 0), 0u) << r.message;
 }
 

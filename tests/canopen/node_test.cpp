@@ -62,8 +62,7 @@ TEST(Node, BootUpHeartbeatAndNmtStates) {
 TEST(Node, EmcyErrorRegisterAndHistory) {
   testing::TestValues v;
   canopen::Node n;
-  n.Start(0x05, &v, 0);
-  n.set_heartbeat_ms(0);
+  n.Start(0x05, &v, 0, canopen::CommunicationParameters{0, 0});  // no heartbeat, no inhibit
   Drain(n);
   const uint8_t m[5] = {1, 2, 3, 4, 5};
   n.RaiseError(0xFF01, canopen::kErrManufacturer, m);
@@ -84,6 +83,105 @@ TEST(Node, EmcyErrorRegisterAndHistory) {
   n.ClearErrors();
   EXPECT_EQ(Drain(n), Frames{"085#0000000000000000"});
   EXPECT_EQ(n.error_register(), 0);
+}
+
+// 0x1015 = 100 (10 ms): the second EMCY waits until the node's clock shows 11 ms since the first
+// (10 ms rounded up, plus one for the clock's 1 ms resolution); the first after a quiet spell
+// leaves at once.
+TEST(Node, EmcyInhibitTimeSpacesEmcys) {
+  testing::TestValues v;
+  canopen::Node n;
+  n.Start(0x05, &v, 1000, canopen::CommunicationParameters{0, 100});
+  EXPECT_EQ(Drain(n), Frames{"705#00"});
+  n.OnFrame(F(0x605, "4015100000000000"), 1000);  // 0x1015 reads 100
+  EXPECT_EQ(Drain(n), Frames{"585#4B15100064000000"});
+  n.ReportEvent(0xFF10, 0, 0x08000020);  // an EMCY and its "errors cleared"
+  EXPECT_EQ(Drain(n), Frames{"085#10FF012000000800"});
+  n.Poll(1010);
+  EXPECT_EQ(Drain(n), Frames{});
+  n.Poll(1011);
+  EXPECT_EQ(Drain(n), Frames{"085#0000000000000000"});
+  n.Poll(1100);
+  EXPECT_EQ(Drain(n), Frames{});
+  n.RaiseError(0xFF01, canopen::kErrManufacturer);  // quiet for 89 ms: at once
+  EXPECT_EQ(Drain(n), Frames{"085#01FF810000000000"});
+  // Written to 0 over SDO: no inhibit.
+  n.OnFrame(F(0x605, "2B15100000000000"), 1100);
+  EXPECT_EQ(Drain(n), Frames{"585#6015100000000000"});
+  n.ClearErrors();
+  n.RaiseError(0xFF02, canopen::kErrManufacturer);
+  EXPECT_EQ(Drain(n), (Frames{"085#0000000000000000", "085#02FF810000000000"}));
+  EXPECT_EQ(n.emcy_sent(), 5u);
+  EXPECT_EQ(n.emcy_suppressed(), 0u);
+}
+
+// More EMCYs than the queue holds within the inhibit time: the newest waiting one gives way, so
+// the last EMCY sent carries the last error raised; each replaced one is counted, none is lost
+// from the history.
+TEST(Node, EmcyQueueKeepsTheLatestWhenFull) {
+  testing::TestValues v;
+  canopen::Node n;
+  n.Start(0x05, &v, 0, canopen::CommunicationParameters{0, 10});  // 1 ms: 2 ms on the clock
+  Drain(n);
+  for (uint16_t code = 0xFF20; code < 0xFF20 + 11; ++code) n.RaiseError(code, 0);
+  // 8 wait; each of the last 3 replaced the newest waiting one.
+  EXPECT_EQ(n.emcy_suppressed(), 3u);
+  Frames out;
+  for (uint32_t t = 0; t <= 40; ++t) {
+    n.Poll(t);
+    for (const std::string& f : Drain(n)) out.push_back(f);
+  }
+  EXPECT_EQ(out, (Frames{"085#20FF010000000000", "085#21FF010000000000", "085#22FF010000000000",
+                         "085#23FF010000000000", "085#24FF010000000000", "085#25FF010000000000",
+                         "085#26FF010000000000", "085#2AFF010000000000"}));
+  n.OnFrame(F(0x605, "4003100000000000"), 41);  // 0x1003:0 = 8 recorded (its maximum)
+  n.OnFrame(F(0x605, "4003100100000000"), 41);  // newest: 0xFF2A
+  n.Poll(41);
+  EXPECT_EQ(Drain(n), (Frames{"585#4F03100008000000", "585#430310012AFF0000"}));
+}
+
+// An EMCY raised before the node starts (a stored table found invalid at power-up) goes out after
+// the boot-up message.
+TEST(Node, EmcyBeforeStartFollowsTheBootUp) {
+  testing::TestValues v;
+  canopen::Node n;
+  const uint8_t m[5] = {7, 0, 0, 0, 0};
+  n.RaiseError(0x6300, canopen::kErrManufacturer, m);
+  n.Start(0x05, &v, 0);
+  EXPECT_EQ(Drain(n), (Frames{"705#00", "085#0063810700000000"}));
+}
+
+// NMT reset communication restores the communication parameters to their stored values (CiA 301
+// 7.3.2.2.2): written 0x1017 and 0x1015 do not survive it.
+TEST(Node, ResetCommunicationRestoresTheStoredParameters) {
+  testing::TestValues v;
+  canopen::Node n;
+  n.Start(0x05, &v, 0, canopen::CommunicationParameters{1000, 100});
+  Drain(n);
+  n.OnFrame(F(0x605, "2B17100064000000"), 1);  // 0x1017 = 100 ms
+  n.OnFrame(F(0x605, "2B15100000000000"), 1);  // 0x1015 = 0
+  EXPECT_EQ(Drain(n), (Frames{"585#6017100000000000", "585#6015100000000000"}));
+  n.Poll(101);
+  EXPECT_EQ(Drain(n), Frames{"705#7F"});  // heartbeat every 100 ms now
+  n.OnFrame(F(0x000, "8205"), 150);
+  EXPECT_EQ(n.TakeResetRequest(), canopen::ResetRequest::kCommunication);
+  n.ResetCommunication(150);
+  EXPECT_EQ(Drain(n), Frames{"705#00"});
+  n.OnFrame(F(0x605, "4017100000000000"), 151);
+  n.OnFrame(F(0x605, "4015100000000000"), 151);
+  EXPECT_EQ(Drain(n), (Frames{"585#4B171000E8030000", "585#4B15100064000000"}));
+  n.Poll(1149);
+  EXPECT_EQ(Drain(n), Frames{});
+  n.Poll(1150);
+  EXPECT_EQ(Drain(n), Frames{"705#7F"});
+  // Stored since (the application's 0x1010): a reset keeps the new value.
+  n.OnFrame(F(0x605, "2B171000F4010000"), 1200);  // 500 ms
+  Drain(n);
+  n.set_stored_communication(n.communication());
+  n.ResetCommunication(1300);
+  Drain(n);
+  n.OnFrame(F(0x605, "4017100000000000"), 1301);
+  EXPECT_EQ(Drain(n), Frames{"585#4B171000F4010000"});
 }
 
 TEST(ObjectDictionary, TableIsSortedUniqueAndConsistent) {

@@ -20,7 +20,7 @@ struct Faults {
 
 struct LinkRun {
   bool ok = false;
-  uint32_t abort_code = 0;
+  canopen::SdoAbort abort_code = canopen::SdoAbort::kNone;
 };
 
 // Moves frames both ways with faults; 1 ms virtual steps. Returns the client's result.
@@ -88,7 +88,7 @@ TEST(SdoFaultInjection, EveryTransferSucceedsExactlyOrFailsCleanly) {
       ASSERT_EQ(values.ends_ok, ends_before + 1);
     } else {
       ++failed;
-      ASSERT_NE(r.abort_code, 0u);
+      ASSERT_NE(r.abort_code, canopen::SdoAbort::kNone);
       // The server did not complete the write, or completed it with exactly the data (its final
       // acknowledgement was lost): never anything else.
       if (values.ends_ok != ends_before) {
@@ -143,7 +143,7 @@ TEST(SdoFaultInjection, UploadsAndSmallWritesOverACleanLink) {
   bad.StartDownload(0x1000, 0, {1, 2, 3, 4});
   const LinkRun r = Transfer(node, bad, rng, Faults{}, &now_ms);
   EXPECT_FALSE(r.ok);
-  EXPECT_EQ(r.abort_code, 0x06010002u);
+  EXPECT_EQ(canopen::Code(r.abort_code), 0x06010002u);
   EXPECT_NE(bad.result().message.find("attempt to write a read-only object"), std::string::npos)
       << bad.result().message;
 }

@@ -34,7 +34,7 @@ TEST(SdoRunner, ReadU32TimesOutAfterTheGivenTimeout) {
   uint32_t v = 7;
   const SdoResult r = ReadU32(s.link(), 0x10, 0x2104, 0, &v, o);
   EXPECT_FALSE(r.ok);
-  EXPECT_EQ(r.abort_code, kAbortTimeout);
+  EXPECT_EQ(canopen::Code(r.abort_code), kAbortTimeout);
   EXPECT_EQ(v, 7u);
   const uint64_t waited_us = s.now_us - 1000;
   EXPECT_GE(waited_us, 50000u);
@@ -50,7 +50,7 @@ TEST(SdoRunner, WriteU32TimesOutAfterTheGivenTimeout) {
   const SdoResult r = WriteU32(s.link(), 0x10, control.index, control.sub,
                                canopen::Value(canopen::TableCommand::kVerify), 1, o);
   EXPECT_FALSE(r.ok);
-  EXPECT_EQ(r.abort_code, kAbortTimeout);
+  EXPECT_EQ(canopen::Code(r.abort_code), kAbortTimeout);
   const uint64_t waited_us = s.now_us - 1000;
   EXPECT_GE(waited_us, 20000u);
   EXPECT_LT(waited_us, 40000u);

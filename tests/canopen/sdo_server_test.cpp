@@ -19,8 +19,9 @@ using testing::ToString;
 class SdoServerTest : public ::testing::Test {
  protected:
   void SetUp() override {
-    node_.Start(0x10, &values_, now_);
-    node_.set_heartbeat_ms(0);
+    // No heartbeat and no EMCY inhibit time: the traces show every frame as it is caused (the
+    // inhibit time has its own test in node_test.cpp).
+    node_.Start(0x10, &values_, now_, canopen::CommunicationParameters{0, 0});
     Drain();  // boot-up
   }
   std::vector<std::string> Drain() {
@@ -156,7 +157,7 @@ TEST_F(SdoServerTest, BlockDownloadWrongCrcAborts) {
   EXPECT_EQ(Send("C5F1350000000000"),
             (Frames{"090#11FF110400040500", "090#0000000000000000", "590#8000210004000405"}));
   EXPECT_EQ(values_.ends_failed, 1);
-  EXPECT_EQ(node_.sdo().last_abort(), canopen::kAbortCrc);
+  EXPECT_EQ(node_.sdo().last_abort(), canopen::SdoAbort::kCrc);
 }
 
 TEST_F(SdoServerTest, BlockDownloadSizeMismatchAborts) {
@@ -195,6 +196,81 @@ TEST_F(SdoServerTest, ClientAbortMidBlockEndsTheTransferSilently) {
   EXPECT_FALSE(node_.sdo().busy());
   // A new transfer works afterwards.
   EXPECT_EQ(Send("4017100000000000").size(), 1u);
+}
+
+// A block segment as CiA 301 7.2.4.3.14 lays it out: byte 0 = c << 7 | seqno, then 7 data bytes
+// (here the sequence number in each, to tell them apart).
+std::string Segment(int seq, bool last = false) {
+  char b[17];
+  std::snprintf(b, sizeof b, "%02X%02X%02X%02X%02X%02X%02X%02X", (last ? 0x80 : 0) | seq, seq, seq,
+                seq, seq, seq, seq, seq);
+  return b;
+}
+
+// The server aborts in the middle of a sub-block (the application refuses the data): the client
+// keeps sending the sub-block until it reads the abort. Those segments are dropped silently, not
+// answered each as a new request with an abort (and an EMCY).
+TEST_F(SdoServerTest, SegmentsInFlightAfterTheServersAbortAreDiscardedSilently) {
+  // 2 full sub-blocks of 127 segments: 1778 bytes (0x06F2), CRC on.
+  EXPECT_EQ(Send("C6002100F2060000"), Frames{"590#A40021007F000000"});
+  for (int seq = 1; seq <= 63; ++seq) ASSERT_EQ(Send(Segment(seq)), Frames{}) << seq;
+  values_.fail_domain_data_with = canopen::SdoAbort::kHardware;
+  // Segment 64 shows 63 was not the last: 63 is delivered and refused (0x06060000).
+  EXPECT_EQ(Send(Segment(64)), Frames{"590#8000210000000606"});
+  for (int seq = 65; seq <= 127; ++seq) ASSERT_EQ(Send(Segment(seq)), Frames{}) << seq;
+  EXPECT_EQ(node_.sdo().aborts(), 1u);
+  EXPECT_EQ(node_.emcy_sent(), 0u);  // 0x06060000 is a refusal, not a protocol failure
+  EXPECT_EQ(values_.ends_failed, 1);
+  EXPECT_EQ(values_.last_end, canopen::SdoAbort::kHardware);
+  // The next request is served.
+  EXPECT_EQ(Send("4017100000000000"), Frames{"590#4B17100000000000"});
+}
+
+// A segment still in flight may look like a request: 0x22 is an expedited download, and these
+// data bytes would write 0x1017 = 5. Dropped, it writes nothing.
+TEST_F(SdoServerTest, ASegmentInFlightThatLooksLikeARequestIsNotServed) {
+  EXPECT_EQ(Send("C6002100F2060000"), Frames{"590#A40021007F000000"});
+  for (int seq = 1; seq <= 32; ++seq) ASSERT_EQ(Send(Segment(seq)), Frames{}) << seq;
+  values_.fail_domain_data_with = canopen::SdoAbort::kHardware;
+  EXPECT_EQ(Send(Segment(33)), Frames{"590#8000210000000606"});
+  EXPECT_EQ(Send("2217100005000000"), Frames{});  // segment 34
+  EXPECT_EQ(node_.heartbeat_ms(), 0);
+  EXPECT_EQ(Send("4017100000000000"), Frames{"590#4B17100000000000"});
+}
+
+// The client aborts in the middle of a sub-block while segments are still queued behind its abort
+// (a client sending from another thread): the rest of the sub-block, up to its last segment (the
+// c bit, at the indicated size), is dropped silently.
+TEST_F(SdoServerTest, SegmentsAfterTheClientsAbortAreDiscardedSilently) {
+  EXPECT_EQ(Send("C600210014000000"), Frames{"590#A40021007F000000"});  // 20 bytes: 3 segments
+  EXPECT_EQ(Send("0130313233343536"), Frames{});
+  EXPECT_EQ(Send("8000210000000008"), Frames{});  // client abort, 0x08000000
+  EXPECT_EQ(Send("0237383941424344"), Frames{});
+  EXPECT_EQ(Send("8345464748494A00"), Frames{});
+  EXPECT_EQ(values_.ends_failed, 1);
+  EXPECT_EQ(values_.last_end, canopen::SdoAbort::kGeneral);
+  // Past the sub-block's last segment a frame is a request again: a segment now is a protocol
+  // error (0x05040001), reported by EMCY 0xFF11.
+  EXPECT_EQ(Send("0300000000000000"),
+            (Frames{"090#11FF110100040500", "090#0000000000000000", "590#8000000001000405"}));
+}
+
+// The window closes at the first frame that does not continue the sub-block (a new request, served)
+// and after 100 ms of silence (the block gap time).
+TEST_F(SdoServerTest, DiscardingEndsAtANewRequestOrAfterSilence) {
+  EXPECT_EQ(Send("C6002100F2060000"), Frames{"590#A40021007F000000"});
+  EXPECT_EQ(Send(Segment(1)), Frames{});
+  EXPECT_EQ(Send("8000210000000008"), Frames{});  // client abort
+  EXPECT_EQ(Send("4017100000000000"), Frames{"590#4B17100000000000"});
+  EXPECT_EQ(Send(Segment(2)),
+            (Frames{"090#11FF110100040500", "090#0000000000000000", "590#8002020201000405"}));
+  // Again, with silence after the abort.
+  EXPECT_EQ(Send("C6002100F2060000"), Frames{"590#A40021007F000000"});
+  EXPECT_EQ(Send(Segment(1)), Frames{});
+  EXPECT_EQ(Send("8000210000000008"), Frames{});
+  Advance(100);
+  EXPECT_EQ(Send(Segment(2)),
+            (Frames{"090#11FF110100040500", "090#0000000000000000", "590#8002020201000405"}));
 }
 
 TEST_F(SdoServerTest, MalformedFramesAreCountedAndIgnored) {

@@ -33,7 +33,7 @@ Status UploadAndActivate(firmware::TableStore& store,
     const uint32_t n = static_cast<uint32_t>(std::min<size_t>(7, img.size() - off));
     VOLCOMP_TRY(store.UploadData(img.data() + off, n));
   }
-  VOLCOMP_TRY(store.FinishUpload(true));
+  VOLCOMP_TRY(store.FinishUpload());
   VOLCOMP_TRY(store.Verify(cfg));
   const Result<table::TableView> v = store.Activate();
   return v.status();
@@ -71,10 +71,12 @@ TEST(TableStore, UploadVerifyActivateAndRejects) {
   // Truncated (transfer ended early): size mismatch.
   ASSERT_TRUE(store.BeginUpload(static_cast<uint32_t>(a.size())).ok());
   ASSERT_TRUE(store.UploadData(a.data(), 100).ok());
-  EXPECT_EQ(store.FinishUpload(true).error(), Error::kImageSizeMismatch);
-  // Aborted.
+  EXPECT_EQ(store.FinishUpload().error(), Error::kImageSizeMismatch);
+  // Aborted: the reason is the staging error.
   ASSERT_TRUE(store.BeginUpload(0).ok());
-  EXPECT_EQ(store.FinishUpload(false).error(), Error::kIoError);
+  store.AbandonUpload(Error::kTransferAborted);
+  EXPECT_EQ(store.staged_state(), firmware::StagedState::kFailed);
+  EXPECT_EQ(store.last_error(), Error::kTransferAborted);
   // For another board.
   BoardConfig other = cfg;
   other.axis[0].resolution_e9 = 500000;

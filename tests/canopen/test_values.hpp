@@ -17,16 +17,19 @@ class TestValues : public canopen::ObjectValues {
   std::vector<uint8_t> domain;           // bytes received by the current/last domain write
   std::vector<uint8_t> domain_readback;  // what a read of the domain returns
   int begins = 0, ends_ok = 0, ends_failed = 0;
+  canopen::SdoAbort last_end = canopen::SdoAbort::kNone;  // outcome of the last domain write
   uint32_t begin_size = 0;
-  uint32_t fail_write_with = 0;  // abort code to return from Write, if non-zero
+  canopen::SdoAbort fail_write_with = canopen::SdoAbort::kNone;  // returned by Write if set
+  // Returned by DomainWriteData if set (the application refusing data in mid-transfer).
+  canopen::SdoAbort fail_domain_data_with = canopen::SdoAbort::kNone;
 
  private:
-  uint32_t DoRead(const canopen::ObjectEntry& e,
-                  uint32_t offset,
-                  uint8_t* buf,
-                  uint32_t cap,
-                  uint32_t* copied,
-                  uint32_t* total) override {
+  canopen::SdoAbort DoRead(const canopen::ObjectEntry& e,
+                           uint32_t offset,
+                           uint8_t* buf,
+                           uint32_t cap,
+                           uint32_t* copied,
+                           uint32_t* total) override {
     const std::vector<uint8_t>* v = nullptr;
     std::vector<uint8_t> fixed;
     if (e.type == canopen::DataType::kDomain) {
@@ -45,26 +48,30 @@ class TestValues : public canopen::ObjectValues {
       buf[*copied] = (*v)[offset + *copied];
       ++*copied;
     }
-    return 0;
+    return canopen::SdoAbort::kNone;
   }
-  uint32_t DoWrite(const canopen::ObjectEntry& e, const uint8_t* data, uint32_t size) override {
-    if (fail_write_with != 0) return fail_write_with;
+  canopen::SdoAbort DoWrite(const canopen::ObjectEntry& e,
+                            const uint8_t* data,
+                            uint32_t size) override {
+    if (canopen::Failed(fail_write_with)) return fail_write_with;
     values[e.id].assign(data, data + size);
-    return 0;
+    return canopen::SdoAbort::kNone;
   }
-  uint32_t DoBeginDomainWrite(const canopen::ObjectEntry&, uint32_t size) override {
+  canopen::SdoAbort DoBeginDomainWrite(const canopen::ObjectEntry&, uint32_t size) override {
     ++begins;
     begin_size = size;
     domain.clear();
-    return 0;
+    return canopen::SdoAbort::kNone;
   }
-  uint32_t DoDomainWriteData(const uint8_t* data, uint32_t size) override {
+  canopen::SdoAbort DoDomainWriteData(const uint8_t* data, uint32_t size) override {
+    if (canopen::Failed(fail_domain_data_with)) return fail_domain_data_with;
     domain.insert(domain.end(), data, data + size);
-    return 0;
+    return canopen::SdoAbort::kNone;
   }
-  uint32_t DoEndDomainWrite(bool complete) override {
-    ++(complete ? ends_ok : ends_failed);
-    return 0;
+  canopen::SdoAbort DoEndDomainWrite(canopen::SdoAbort outcome) override {
+    ++(canopen::Failed(outcome) ? ends_failed : ends_ok);
+    last_end = outcome;
+    return canopen::SdoAbort::kNone;
   }
 };
 

@@ -246,7 +246,7 @@ TEST_F(GatewayAppTest, UploadReferenceActivateAndCorrectEveryCycle) {
   // Not referenced: refused.
   SdoResult r = m_.Write(ObjectId::kTableControl, canopen::Value(canopen::TableCommand::kActivate));
   EXPECT_FALSE(r.ok);
-  EXPECT_EQ(r.abort_code, canopen::kAbortDeviceState);
+  EXPECT_EQ(r.abort_code, canopen::SdoAbort::kDeviceState);
   // Referenced at home, but moving: refused.
   ASSERT_TRUE(m_.Write(ObjectId::kReferenceAxes, 7).ok);
   EXPECT_TRUE(m_.app_.app().engine().all_referenced());
@@ -262,7 +262,7 @@ TEST_F(GatewayAppTest, UploadReferenceActivateAndCorrectEveryCycle) {
   for (int i = 0; i < 5; ++i) m_.target_[1] += 50, m_.Cycle();
   r = m_.Run(c);
   EXPECT_FALSE(r.ok);
-  EXPECT_EQ(r.abort_code, canopen::kAbortDeviceState);
+  EXPECT_EQ(r.abort_code, canopen::SdoAbort::kDeviceState);
   for (int a = 0; a < 3; ++a) EXPECT_EQ(m_.correction_[a], 0);
   // At rest for 150 ms: allowed.
   for (int i = 0; i < 150; ++i) m_.Cycle();

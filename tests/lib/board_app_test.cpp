@@ -46,7 +46,7 @@ class BoardAppTest : public ::testing::Test {
     store.MountActive(config_).status().IgnoreError();
     ASSERT_TRUE(store.BeginUpload(static_cast<uint32_t>(img.size())).ok());
     ASSERT_TRUE(store.UploadData(img.data(), static_cast<uint32_t>(img.size())).ok());
-    ASSERT_TRUE(store.FinishUpload(true).ok());
+    ASSERT_TRUE(store.FinishUpload().ok());
     ASSERT_TRUE(store.Verify(config_).ok());
     ASSERT_TRUE(store.Activate().ok());
   }

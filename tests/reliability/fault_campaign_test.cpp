@@ -98,12 +98,12 @@ class Rig {
         f.data[0] = canopen::sdo::kAbort;
         StoreLe16(f.data + 1, data.index);
         f.data[3] = data.sub;
-        StoreLe32(f.data + 4, canopen::kAbortGeneral);
+        StoreLe32(f.data + 4, canopen::Code(canopen::SdoAbort::kGeneral));
         pc_->Send(f);
         host_->Idle(5000000);
         canopen_client::SdoResult a;
         a.message = "upload aborted by the PC (sent abort 0x08000000: general error)";
-        a.abort_code = canopen::kAbortGeneral;
+        a.abort_code = canopen::SdoAbort::kGeneral;
         return a;
       }
     } else {

@@ -144,7 +144,7 @@ TEST(Soak, RandomTrajectoriesActivationsAndReferenceLossWithoutLostSteps) {
       upload(images[which]);
       const auto r = s.Command(TableCommand::kActivate);
       ASSERT_FALSE(r.ok);
-      ASSERT_EQ(r.abort_code, canopen::kAbortDeviceState);
+      ASSERT_EQ(r.abort_code, canopen::SdoAbort::kDeviceState);
       ++refused;
     }
     if (tick % 120000 == 0) {  // drive alarm: reference lost, correction ramps out

@@ -100,8 +100,8 @@ TEST(Eds, DefaultsAreWhatAFreshBoardReports) {
   canopen_client::NodeObjects node(host.Link(), host.node());
   int compared = 0;
   for (const auto& [key, e] : entries) {
-    const bool configuration =
-        (e.index >= 0x2000 && e.index <= 0x201F) || e.index == 0x1017 || e.index == 0x2121;
+    const bool configuration = (e.index >= 0x2000 && e.index <= 0x201F) || e.index == 0x1015 ||
+                               e.index == 0x1017 || e.index == 0x2121;
     if (!configuration || e.access == "wo" || e.default_value.empty()) continue;
     const canopen::ObjectEntry* entry = canopen::FindEntry(e.index, e.sub);
     ASSERT_NE(entry, nullptr) << std::hex << e.index << " sub " << int{e.sub};
@@ -113,7 +113,9 @@ TEST(Eds, DefaultsAreWhatAFreshBoardReports) {
         << "): the board reports " << std::dec << value << ", the EDS says " << e.default_value;
     ++compared;
   }
-  EXPECT_EQ(compared, 2 + 5 + 15 * 7);  // 0x1017 and 0x2121, 0x2000 sub 0-4, 15 axis arrays
+  // 0x1015, 0x1017 and 0x2121, 0x2000 sub 0-4, 15 axis arrays.
+  EXPECT_EQ(compared, 3 + 5 + 15 * 7);
+  EXPECT_EQ(default_of(0x1015, 0), "0x0064");  // EMCY inhibit time 10 ms (100 x 100 us)
 }
 
 }  // namespace

@@ -16,6 +16,10 @@ namespace {
 
 using canopen::ObjectId;
 
+// 0x2140:1.. in order.
+constexpr int kCounterCount =
+    static_cast<int>(ObjectId::kEmcySuppressed) - static_cast<int>(ObjectId::kCanRxFrames) + 1;
+
 struct Snapshot {
   std::string device_name, software_version;
   uint32_t vendor = 0, product = 0, revision = 0, serial = 0;
@@ -23,7 +27,7 @@ struct Snapshot {
            staged_id = 0, staged_bytes = 0, writable = 0, axes = 0;
   int32_t commanded[6] = {}, correction_q8[6] = {}, output[6] = {};
   uint32_t backlog[6] = {};
-  uint32_t counters[9] = {};
+  uint32_t counters[kCounterCount] = {};
   std::optional<uint8_t> nmt;
 };
 
@@ -59,16 +63,18 @@ Snapshot Take(canopen_client::CanSession& s, bool axes_detail) {
     n.output[a] = static_cast<int32_t>(Get(s, id(ObjectId::kOutputPosition1)));
     n.backlog[a] = Get(s, id(ObjectId::kMaxBacklog1));
   }
-  for (int i = 0; i < 9; ++i) {
+  for (int i = 0; i < kCounterCount; ++i) {
     n.counters[i] = Get(s, static_cast<ObjectId>(static_cast<int>(ObjectId::kCanRxFrames) + i));
   }
   n.nmt = s.nmt_state();
   return n;
 }
 
-const char* kCounterNames[] = {"can_rx_frames",    "can_tx_frames",    "malformed_frames",
-                               "sdo_aborts",       "emcy_sent",        "ticks",
-                               "lost_step_checks", "max_tick_cost_ns", "refused_actions"};
+const char* kCounterNames[] = {
+    "can_rx_frames", "can_tx_frames",    "malformed_frames", "sdo_aborts",      "emcy_sent",
+    "ticks",         "lost_step_checks", "max_tick_cost_ns", "refused_actions", "emcy_suppressed"};
+static_assert(sizeof(kCounterNames) / sizeof(kCounterNames[0]) == kCounterCount,
+              "one name per counter of 0x2140");
 
 std::string StateText(uint32_t state) {
   std::string s;
@@ -93,7 +99,7 @@ std::string EmcyText(const canopen::Emcy& e) {
          ": " + ErrorName(e.config_error()) + ")";
   }
   if (e.code == canopen::kEmcyRefused)
-    s += " (refused action: abort " + Hex32(e.abort_code()) + ")";
+    s += " (refused action: abort " + Hex32(canopen::Code(e.abort_code())) + ")";
   if (e.code == canopen::kEmcyTableInvalid)
     s += std::string(" (table invalid: ") + ErrorName(e.error()) + ")";
   if (e.code == canopen::kEmcyErrorReset) s += " (errors cleared)";
@@ -154,7 +160,7 @@ int RunStatus(Args& args) {
     }
     w.end_array();
     w.key("counters").begin_object();
-    for (int i = 0; i < 9; ++i) w.key(kCounterNames[i]).value(uint64_t{n.counters[i]});
+    for (int i = 0; i < kCounterCount; ++i) w.key(kCounterNames[i]).value(uint64_t{n.counters[i]});
     w.end_object();
     w.end_object();
     return 0;
@@ -180,7 +186,7 @@ int RunStatus(Args& args) {
                 n.commanded[a], n.correction_q8[a] / 256.0, n.output[a], n.backlog[a]);
   }
   std::printf("counters:");
-  for (int i = 0; i < 9; ++i) std::printf(" %s=%u", kCounterNames[i], n.counters[i]);
+  for (int i = 0; i < kCounterCount; ++i) std::printf(" %s=%u", kCounterNames[i], n.counters[i]);
   std::printf("\n");
   return 0;
 }

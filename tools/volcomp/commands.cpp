@@ -259,7 +259,7 @@ const std::vector<Command>& Commands() {
               {"--builtin", nullptr, "s500-315|s500-240", nullptr, nullptr,
                "the dissertation's tracker lines"},
               {"--lattice", nullptr, "FILE", nullptr, nullptr,
-               "readings at every node of a lattice (x_mm,y_mm,z_mm,dx_um,dy_um,dz_um)"},
+               "tracker readings at every lattice node (x_cmd_mm..z_cmd_mm, x_mm..z_mm)"},
               {"--through", nullptr, "IMAGE", nullptr, nullptr,
                "the table in force while the lattice was measured (composed with it)"},
               {"--method", nullptr, "static|interval|quasi-differential", nullptr,

@@ -12,7 +12,7 @@ namespace volcomp::tools {
 /// A failed SDO access; `retryable` when a fresh attempt can succeed (protocol errors, timeouts).
 class SdoFailure : public InputError {
  public:
-  SdoFailure(const std::string& message, uint32_t abort_code)
+  SdoFailure(const std::string& message, canopen::SdoAbort abort_code)
       : InputError(message), retryable(canopen::IsProtocolAbort(abort_code)) {}
   bool retryable;
 };

@@ -12,8 +12,9 @@ namespace {
 
 using canopen::ObjectEntry;
 using canopen::ObjectId;
+using canopen::SdoAbort;
 
-uint32_t CopyOut(const uint8_t* src,
+SdoAbort CopyOut(const uint8_t* src,
                  uint32_t src_size,
                  uint32_t offset,
                  uint8_t* buf,
@@ -26,7 +27,7 @@ uint32_t CopyOut(const uint8_t* src,
     buf[*copied] = src[offset + *copied];
     ++*copied;
   }
-  return 0;
+  return SdoAbort::kNone;
 }
 
 uint32_t StringLength(const char* s) {
@@ -112,6 +113,22 @@ BoardObjects::BoardObjects(BoardControl* control,
 void BoardObjects::SetSettings(const BoardSettings& active) {
   active_ = active;
   pending_ = active;
+  settings_pending_ = false;
+}
+
+void BoardObjects::UpdateSettingsPending() {
+  // Any configuration edit not yet in force (stored and applied at the next reset). Compared on
+  // the stored form, once per edit rather than on every read of 0x2122.
+  uint8_t a_bytes[kSettingsBytes], p_bytes[kSettingsBytes];
+  SerializeSettings(active_, a_bytes);
+  SerializeSettings(pending_, p_bytes);
+  settings_pending_ = false;
+  for (uint32_t i = 0; i < kSettingsBytes; ++i) {
+    if (a_bytes[i] != p_bytes[i]) {
+      settings_pending_ = true;
+      break;
+    }
+  }
 }
 
 bool BoardObjects::writable() const {
@@ -130,16 +147,7 @@ uint16_t BoardObjects::device_state() const {
   s.table_active = has_active_;
   s.staged_verified = tables_->staged_state() == StagedState::kVerified;
   s.passthrough = e.compensator().passthrough();
-  // Any configuration edit not yet in force (stored and applied at the next reset).
-  uint8_t a_bytes[kSettingsBytes], p_bytes[kSettingsBytes];
-  SerializeSettings(active_, a_bytes);
-  SerializeSettings(pending_, p_bytes);
-  for (uint32_t i = 0; i < kSettingsBytes; ++i) {
-    if (a_bytes[i] != p_bytes[i]) {
-      s.settings_pending = true;
-      break;
-    }
-  }
+  s.settings_pending = settings_pending_;
   return canopen::EncodeDeviceState(s);
 }
 
@@ -152,9 +160,9 @@ uint32_t BoardObjects::table_status() const {
   return canopen::EncodeTableStatus(s);
 }
 
-uint32_t BoardObjects::Refuse(uint32_t abort_code) {
+SdoAbort BoardObjects::Refuse(SdoAbort abort_code) {
   ++refused_;
-  node_->ReportEvent(canopen::kEmcyRefused, 0, abort_code);
+  node_->ReportEvent(canopen::kEmcyRefused, 0, canopen::Code(abort_code));
   return abort_code;
 }
 
@@ -242,6 +250,9 @@ bool BoardObjects::ReadNumber(const ObjectEntry& e, uint32_t* v) const {
     case ObjectId::kRefusedActions:
       *v = refused_;
       return true;
+    case ObjectId::kEmcySuppressed:
+      *v = node_->emcy_suppressed();
+      return true;
     default:
       break;
   }
@@ -271,7 +282,7 @@ bool BoardObjects::ReadNumber(const ObjectEntry& e, uint32_t* v) const {
   return false;
 }
 
-uint32_t BoardObjects::DoRead(const ObjectEntry& e,
+SdoAbort BoardObjects::DoRead(const ObjectEntry& e,
                               uint32_t offset,
                               uint8_t* buf,
                               uint32_t cap,
@@ -299,32 +310,33 @@ uint32_t BoardObjects::DoRead(const ObjectEntry& e,
         return CopyOut(tables_->active_data(), tables_->active_size(), offset, buf, cap, copied,
                        total);
       }
-      return canopen::kAbortNoData;
+      return SdoAbort::kNoData;
     }
     default:
       break;
   }
   uint32_t v = 0;
-  if (!ReadNumber(e, &v)) return canopen::kAbortNoObject;
+  if (!ReadNumber(e, &v)) return SdoAbort::kNoObject;
   uint8_t bytes[4];
   StoreLe32(bytes, v);
   return CopyOut(bytes, canopen::FixedSize(e.type), offset, buf, cap, copied, total);
 }
 
-uint32_t BoardObjects::WriteSetting(const ObjectEntry& e, uint32_t raw) {
+SdoAbort BoardObjects::WriteSetting(const ObjectEntry& e, uint32_t raw) {
   const FieldAccess& f = Field(e);
   const int64_t v = WrittenValue(e, raw);
   if (e.limited && (v < e.low_limit || v > e.high_limit)) {
-    if (f.enumerated) return canopen::kAbortInvalidValue;
-    return v < e.low_limit ? canopen::kAbortValueTooLow : canopen::kAbortValueTooHigh;
+    if (f.enumerated) return SdoAbort::kInvalidValue;
+    return v < e.low_limit ? SdoAbort::kValueTooLow : SdoAbort::kValueTooHigh;
   }
   // Single fields are range-checked here; the whole configuration is checked at "store" (0x1010),
   // which refuses an inconsistent set with 0x06090030.
   f.set(pending_, v);
-  return 0;
+  UpdateSettingsPending();
+  return SdoAbort::kNone;
 }
 
-uint32_t BoardObjects::TableControl(uint8_t command) {
+SdoAbort BoardObjects::TableControl(uint8_t command) {
   last_command_ = command;
   const BoardConfig& board = active_.board;
   using canopen::TableCommand;
@@ -334,37 +346,53 @@ uint32_t BoardObjects::TableControl(uint8_t command) {
       if (!s.ok()) {
         node_->ReportEvent(canopen::kEmcyTableInvalid, canopen::kErrManufacturer,
                            static_cast<uint32_t>(s.error()));
-        return canopen::kAbortInvalidValue;
+        return SdoAbort::kInvalidValue;
       }
-      return 0;
+      return SdoAbort::kNone;
     }
     case TableCommand::kClear:
-      if (!writable()) return Refuse(canopen::kAbortCannotStore);
+      if (!writable()) return Refuse(SdoAbort::kCannotStore);
       tables_->Clear();
-      return 0;
+      return SdoAbort::kNone;
     case TableCommand::kDeactivate:
-      if (!writable()) return Refuse(canopen::kAbortCannotStore);
-      if (!tables_->Deactivate().ok()) return Refuse(canopen::kAbortHardware);
+      if (!writable()) return Refuse(SdoAbort::kCannotStore);
+      if (!tables_->Deactivate().ok()) return Refuse(SdoAbort::kHardware);
       control_->RequestClearTable();
       clear_active();
-      return 0;
+      return SdoAbort::kNone;
     case TableCommand::kActivate: {
-      if (!writable()) return Refuse(canopen::kAbortCannotStore);
+      if (!writable()) return Refuse(SdoAbort::kCannotStore);
       if (tables_->staged_state() == StagedState::kComplete) (void)tables_->Verify(board);
-      if (tables_->staged_state() != StagedState::kVerified) return Refuse(canopen::kAbortNoData);
+      if (tables_->staged_state() != StagedState::kVerified) return Refuse(SdoAbort::kNoData);
       if (!control_->engine().all_referenced() || control_->moving()) {
-        return Refuse(canopen::kAbortDeviceState);
+        return Refuse(SdoAbort::kDeviceState);
       }
       const Result<table::TableView> view = tables_->Activate();
-      if (!view.ok()) return Refuse(canopen::kAbortHardware);
-      if (!control_->ActivateTable(*view).ok()) return Refuse(canopen::kAbortGeneral);
-      return 0;
+      if (!view.ok()) return Refuse(SdoAbort::kHardware);
+      if (!control_->ActivateTable(*view).ok()) return Refuse(SdoAbort::kGeneral);
+      return SdoAbort::kNone;
     }
   }
-  return canopen::kAbortInvalidValue;
+  return SdoAbort::kInvalidValue;
 }
 
-uint32_t BoardObjects::DoWrite(const ObjectEntry& e, const uint8_t* data, uint32_t size) {
+SdoAbort BoardObjects::StoreSettings() {
+  // "Save all parameters" includes the communication parameters in force (0x1015, 0x1017): they
+  // become what the resets restore.
+  const canopen::CommunicationParameters comm = node_->communication();
+  BoardSettings s = pending_;
+  s.heartbeat_ms = comm.heartbeat_ms;
+  s.emcy_inhibit_100us = comm.emcy_inhibit_100us;
+  if (!ValidateSettings(s).ok()) return SdoAbort::kInvalidValue;
+  if (!settings_store_->Save(s).ok()) return Refuse(SdoAbort::kHardware);
+  pending_.heartbeat_ms = active_.heartbeat_ms = comm.heartbeat_ms;
+  pending_.emcy_inhibit_100us = active_.emcy_inhibit_100us = comm.emcy_inhibit_100us;
+  UpdateSettingsPending();
+  node_->set_stored_communication(comm);
+  return SdoAbort::kNone;
+}
+
+SdoAbort BoardObjects::DoWrite(const ObjectEntry& e, const uint8_t* data, uint32_t size) {
   uint32_t v = 0;
   for (uint32_t i = 0; i < size && i < 4; ++i) v |= uint32_t{data[i]} << (8 * i);
   switch (e.id) {
@@ -372,61 +400,61 @@ uint32_t BoardObjects::DoWrite(const ObjectEntry& e, const uint8_t* data, uint32
       if (v == canopen::kUnlockSignature) {
         unlocked_ = true;
         unlocked_at_ms_ = now_ms_;
-        return 0;
+        return SdoAbort::kNone;
       }
       unlocked_ = false;  // any other value locks
-      return v == 0 ? 0 : Refuse(canopen::kAbortInvalidValue);
+      return v == 0 ? SdoAbort::kNone : Refuse(SdoAbort::kInvalidValue);
     case ObjectId::kReferenceAxes:
       control_->RequestReference(static_cast<uint8_t>(v));
-      return 0;
+      return SdoAbort::kNone;
     case ObjectId::kCompensationEnable:
-      if (v > 1) return canopen::kAbortInvalidValue;
+      if (v > 1) return SdoAbort::kInvalidValue;
       control_->SetBusEnable(v == 1);
-      return 0;
+      return SdoAbort::kNone;
     case ObjectId::kTableControl:
       return TableControl(static_cast<uint8_t>(v));
     case ObjectId::kStoreAll:
-      if (!writable()) return Refuse(canopen::kAbortCannotStore);
-      if (v != canopen::kSaveSignature) return canopen::kAbortCannotStore;
-      if (!ValidateSettings(pending_).ok()) return canopen::kAbortInvalidValue;
-      if (!settings_store_->Save(pending_).ok()) return Refuse(canopen::kAbortHardware);
-      return 0;
+      if (!writable()) return Refuse(SdoAbort::kCannotStore);
+      if (v != canopen::kSaveSignature) return SdoAbort::kCannotStore;
+      return StoreSettings();
     case ObjectId::kRestoreAll:
-      if (!writable()) return Refuse(canopen::kAbortCannotStore);
-      if (v != canopen::kLoadSignature) return canopen::kAbortCannotStore;
-      if (!settings_store_->Reset().ok()) return Refuse(canopen::kAbortHardware);
-      return 0;
+      if (!writable()) return Refuse(SdoAbort::kCannotStore);
+      if (v != canopen::kLoadSignature) return SdoAbort::kCannotStore;
+      if (!settings_store_->Reset().ok()) return Refuse(SdoAbort::kHardware);
+      return SdoAbort::kNone;
     default:
       break;
   }
   if (Field(e).set != nullptr) {
-    if (!writable()) return Refuse(canopen::kAbortCannotStore);
+    if (!writable()) return Refuse(SdoAbort::kCannotStore);
     return WriteSetting(e, v);
   }
-  return canopen::kAbortReadOnly;
+  return SdoAbort::kReadOnly;
 }
 
-uint32_t BoardObjects::DoBeginDomainWrite(const ObjectEntry& e, uint32_t size) {
-  if (e.id != ObjectId::kTableData) return canopen::kAbortUnsupportedAccess;
-  if (!writable()) return Refuse(canopen::kAbortCannotStore);
-  if (size > tables_->capacity()) return canopen::kAbortTooLong;
-  if (!tables_->BeginUpload(size).ok()) return Refuse(canopen::kAbortHardware);
-  return 0;
+SdoAbort BoardObjects::DoBeginDomainWrite(const ObjectEntry& e, uint32_t size) {
+  if (e.id != ObjectId::kTableData) return SdoAbort::kUnsupportedAccess;
+  if (!writable()) return Refuse(SdoAbort::kCannotStore);
+  if (size > tables_->capacity()) return SdoAbort::kTooLong;
+  if (!tables_->BeginUpload(size).ok()) return Refuse(SdoAbort::kHardware);
+  return SdoAbort::kNone;
 }
 
-uint32_t BoardObjects::DoDomainWriteData(const uint8_t* data, uint32_t size) {
+SdoAbort BoardObjects::DoDomainWriteData(const uint8_t* data, uint32_t size) {
   const Status s = tables_->UploadData(data, size);
-  if (s.ok()) return 0;
-  return s.error() == Error::kImageTooLarge ? canopen::kAbortTooLong : canopen::kAbortHardware;
+  if (s.ok()) return SdoAbort::kNone;
+  return s.error() == Error::kImageTooLarge ? SdoAbort::kTooLong : SdoAbort::kHardware;
 }
 
-uint32_t BoardObjects::DoEndDomainWrite(bool complete) {
-  const Status s = tables_->FinishUpload(complete);
-  if (!complete) return 0;
-  if (!s.ok())
-    return s.error() == Error::kImageSizeMismatch ? canopen::kAbortTypeMismatch
-                                                  : canopen::kAbortHardware;
-  return 0;
+SdoAbort BoardObjects::DoEndDomainWrite(SdoAbort outcome) {
+  if (canopen::Failed(outcome)) {
+    // The transfer broke: 0x2102 says how (aborted, CRC-16, timeout), not "I/O error".
+    tables_->AbandonUpload(canopen::TransferError(outcome));
+    return SdoAbort::kNone;
+  }
+  const Status s = tables_->FinishUpload();
+  if (s.ok()) return SdoAbort::kNone;
+  return s.error() == Error::kImageSizeMismatch ? SdoAbort::kTypeMismatch : SdoAbort::kHardware;
 }
 
 }  // namespace volcomp::firmware

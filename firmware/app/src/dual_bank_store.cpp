@@ -6,8 +6,9 @@
 
 namespace volcomp::firmware {
 namespace {
-constexpr uint32_t kCommitMagic = 0x4D4D4F43;  // "COMM"
-constexpr uint32_t kRevokeMagic = 0x4B564552;  // "REVK"
+constexpr uint32_t kCommitMagic = 0x4D4D4F43;   // "COMM"
+constexpr uint32_t kRevokeMagic = 0x4B564552;   // "REVK"
+constexpr uint32_t kDiscardMagic = 0x43534944;  // "DISC": the staged blob was cleared or failed
 constexpr uint32_t kCommitFromEnd = 64;
 constexpr uint32_t kRevokeFromEnd = 32;
 
@@ -27,7 +28,8 @@ Status DualBankStore::Init(hal::Flash* flash, uint32_t bank_size) {
     return Error::kInvalidArgument;
   }
   committed_ = staging_ = -1;
-  staging_open_ = staged_complete_ = false;
+  staging_open_ = staged_complete_ = staging_records_blank_ = false;
+  staged_size_ = 0;
   return Status::Ok();
 }
 
@@ -39,6 +41,14 @@ bool DualBankStore::ReadRecord(int bank, uint32_t offset_in_bank, uint32_t magic
   r->crc32 = LoadLe32(p + 12);
   return r->magic == magic &&
          LoadLe32(p + 16) == CheckWord(r->magic, r->sequence, r->size, r->crc32);
+}
+
+bool DualBankStore::RecordsBlank(int bank) const {
+  const uint8_t* p = flash_->Map(BankBase(bank) + bank_size_ - kRecordBytes);
+  for (uint32_t i = 0; i < kRecordBytes; ++i) {
+    if (p[i] != 0xFF) return false;
+  }
+  return true;
 }
 
 Status DualBankStore::ProgramRecord(int bank, uint32_t offset_in_bank, const Record& r) {
@@ -103,13 +113,40 @@ Status DualBankStore::EnsureErased(uint32_t bank_offset_end) {
 }
 
 Status DualBankStore::BeginStaging() {
-  staging_open_ = staged_complete_ = false;
-  staging_ = committed_ == 0 ? 1 : 0;
+  staging_open_ = staged_complete_ = staging_records_blank_ = false;
+  staging_ = StagingBank();
   staged_size_ = 0;
   pending_len_ = 0;
   erased_until_ = 0;
   if (!flash_->Erase(BankBase(staging_) + bank_size_ - sector_).ok()) return Error::kIoError;
+  staging_records_blank_ = true;
+  // The first sector now, so whatever blob was in the bank is gone before the bank looks staged.
+  VOLCOMP_TRY(EnsureErased(1));
   staging_open_ = true;
+  return Status::Ok();
+}
+
+void DualBankStore::DiscardStaging() {
+  staging_open_ = staged_complete_ = false;
+  if (staging_ < 0 || !staging_records_blank_) return;
+  staging_records_blank_ = false;
+  const Record r{kDiscardMagic, 0, 0, 0};
+  (void)ProgramRecord(staging_, bank_size_ - kRevokeFromEnd, r);
+}
+
+const uint8_t* DualBankStore::MountStaging() const {
+  const int bank = StagingBank();
+  return RecordsBlank(bank) ? flash_->Map(BankBase(bank)) : nullptr;
+}
+
+Status DualBankStore::AdoptStaging(uint32_t size) {
+  if (MountStaging() == nullptr) return Error::kNotReady;
+  if (size > capacity()) return Error::kImageTooLarge;
+  staging_ = StagingBank();
+  staged_size_ = size;
+  staging_open_ = false;
+  staged_complete_ = true;
+  staging_records_blank_ = true;
   return Status::Ok();
 }
 
@@ -155,6 +192,7 @@ Status DualBankStore::Commit() {
   const Record r{kCommitMagic, highest_seq_ + 1, staged_size_, crc32};
   VOLCOMP_TRY(ProgramRecord(staging_, bank_size_ - kCommitFromEnd, r));
   committed_ = staging_;
+  staging_records_blank_ = false;
   committed_seq_ = highest_seq_ = r.sequence;
   committed_crc_ = crc32;
   committed_size_ = staged_size_;

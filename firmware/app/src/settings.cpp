@@ -6,7 +6,8 @@
 namespace volcomp::firmware {
 namespace {
 constexpr uint32_t kMagic = 0x47464356;  // "VCFG"
-constexpr uint16_t kVersion = 1;
+constexpr uint16_t kVersion = 2;         // 2: the EMCY inhibit time in the slot after the heartbeat
+constexpr uint16_t kVersionWithoutInhibit = 1;
 
 class Writer {
  public:
@@ -63,7 +64,7 @@ void SerializeSettings(const BoardSettings& s, uint8_t* out) {
   w.U8(s.board.axis_count);
   w.U16(s.bitrate_kbit);
   w.U16(s.heartbeat_ms);
-  w.U16(0);
+  w.U16(s.emcy_inhibit_100us);
   w.U32(s.board.tick_hz);
   w.U32(s.board.pulse_clock_hz);
   for (uint32_t a = 0; a < table::kMaxAxes; ++a) {
@@ -95,7 +96,9 @@ void SerializeSettings(const BoardSettings& s, uint8_t* out) {
 Status DeserializeSettings(const uint8_t* in, uint32_t size, BoardSettings* out) {
   if (size < kSettingsBytes) return Error::kConfigInvalid;
   Reader r(in);
-  if (r.U32() != kMagic || r.U16() != kVersion || r.U16() != kSettingsBytes) {
+  if (r.U32() != kMagic) return Error::kConfigInvalid;
+  const uint16_t version = r.U16();
+  if ((version != kVersion && version != kVersionWithoutInhibit) || r.U16() != kSettingsBytes) {
     return Error::kConfigInvalid;
   }
   BoardSettings s;
@@ -103,7 +106,8 @@ Status DeserializeSettings(const uint8_t* in, uint32_t size, BoardSettings* out)
   s.board.axis_count = r.U8();
   s.bitrate_kbit = r.U16();
   s.heartbeat_ms = r.U16();
-  r.U16();
+  const uint16_t inhibit = r.U16();
+  if (version == kVersion) s.emcy_inhibit_100us = inhibit;
   s.board.tick_hz = r.U32();
   s.board.pulse_clock_hz = r.U32();
   for (uint32_t a = 0; a < table::kMaxAxes; ++a) {

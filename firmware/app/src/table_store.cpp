@@ -5,11 +5,14 @@ namespace volcomp::firmware {
 
 Status TableStore::Init(hal::Flash* flash, uint32_t bank_size) {
   state_ = StagedState::kEmpty;
+  expected_size_ = staged_crc_ = staged_id_ = 0;
+  last_error_ = Error::kOk;
   return bank_.Init(flash, bank_size);
 }
 
 Result<table::TableView> TableStore::MountActive(const BoardConfig& config) {
   bank_.Mount();
+  MountStaged(config);
   if (!bank_.has_committed()) return Error::kNotFound;
   const Result<table::TableView> v =
       table::ParseImage(bank_.committed_data(), bank_.committed_size());
@@ -18,10 +21,29 @@ Result<table::TableView> TableStore::MountActive(const BoardConfig& config) {
   return v;
 }
 
+void TableStore::MountStaged(const BoardConfig& config) {
+  state_ = StagedState::kEmpty;
+  staged_crc_ = staged_id_ = 0;
+  last_error_ = Error::kOk;
+  const uint8_t* bytes = bank_.MountStaging();
+  if (bytes == nullptr) return;
+  // Verified again, as Verify() would: a staged image is only ever reported verified when it
+  // passed these checks on this boot.
+  const Result<uint32_t> size = table::PeekImageSize(bytes, bank_.capacity());
+  if (!size.ok()) return;
+  const Result<table::TableView> v = table::ParseImage(bytes, *size);
+  if (!v.ok() || !CheckImageMatchesBoard(*v, config).ok()) return;
+  if (!bank_.AdoptStaging(*size).ok()) return;
+  staged_crc_ = v->crc32;
+  staged_id_ = v->table_id;
+  state_ = StagedState::kVerified;
+}
+
 Status TableStore::Fail(Error e) {
   last_error_ = e;
   state_ = StagedState::kFailed;
-  bank_.AbandonStaging();
+  staged_crc_ = staged_id_ = 0;
+  bank_.DiscardStaging();
   return e;
 }
 
@@ -42,9 +64,8 @@ Status TableStore::UploadData(const uint8_t* data, uint32_t size) {
   return s.ok() ? s : Fail(s.error());
 }
 
-Status TableStore::FinishUpload(bool complete) {
+Status TableStore::FinishUpload() {
   if (state_ != StagedState::kReceiving) return Error::kNotReady;
-  if (!complete) return Fail(Error::kIoError);
   if (expected_size_ != 0 && bank_.staged_size() != expected_size_) {
     return Fail(Error::kImageSizeMismatch);
   }
@@ -52,6 +73,10 @@ Status TableStore::FinishUpload(bool complete) {
   if (!s.ok()) return Fail(s.error());
   state_ = StagedState::kComplete;
   return Status::Ok();
+}
+
+void TableStore::AbandonUpload(Error reason) {
+  if (state_ == StagedState::kReceiving) Fail(reason).IgnoreError();
 }
 
 Status TableStore::Verify(const BoardConfig& config) {
@@ -79,8 +104,9 @@ Result<table::TableView> TableStore::Activate() {
 Status TableStore::Deactivate() { return bank_.Revoke(); }
 
 void TableStore::Clear() {
-  bank_.AbandonStaging();
+  bank_.DiscardStaging();
   state_ = StagedState::kEmpty;
+  expected_size_ = staged_crc_ = staged_id_ = 0;
   last_error_ = Error::kOk;
 }
 

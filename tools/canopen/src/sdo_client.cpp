@@ -45,13 +45,14 @@ void SdoClient::Finish(bool ok, const std::string& message) {
   state_ = State::kDone;
 }
 
-void SdoClient::SendAbort(uint32_t code, const std::string& message) {
+void SdoClient::SendAbort(canopen::SdoAbort code, const std::string& message) {
   CanFrame f = Request(kAbort);
-  StoreLe32(f.data + 4, code);
+  StoreLe32(f.data + 4, canopen::Code(code));
   Queue(f);
   result_.abort_code = code;
   result_.aborted_by_server = false;
-  Finish(false, message + " (sent abort " + Hex(code) + ": " + canopen::SdoAbortText(code) + ")");
+  Finish(false, message + " (sent abort " + Hex(canopen::Code(code)) + ": " +
+                    canopen::SdoAbortText(code) + ")");
 }
 
 void SdoClient::StartDownload(uint16_t index,
@@ -147,160 +148,234 @@ void SdoClient::Poll(uint64_t now_us) {
   if (state_ == State::kDone || state_ == State::kBlockSend) return;
   if (deadline_us_ == 0) deadline_us_ = now_us + uint64_t{opt_.timeout_ms} * 1000;
   if (now_us > deadline_us_)
-    SendAbort(canopen::kAbortTimeout, "no response from node " + std::to_string(node_id_));
+    SendAbort(canopen::SdoAbort::kTimeout, "no response from node " + std::to_string(node_id_));
+}
+
+bool SdoClient::ForThisObject(const CanFrame& f) const {
+  return LoadLe16(f.data + 1) == index_ && f.data[3] == sub_;
 }
 
 void SdoClient::OnFrame(const CanFrame& f, uint64_t now_us) {
   now_us_ = now_us;
   if (f.id != kResponseCobBase + node_id_ || f.dlc != 8 || f.rtr || state_ == State::kDone) return;
-  const uint8_t cmd = f.data[0];
-  deadline_us_ = now_us + uint64_t{opt_.timeout_ms} * 1000;
-  if (cmd == kAbort) {
-    result_.abort_code = LoadLe32(f.data + 4);
-    result_.aborted_by_server = true;
-    char where[32];
-    std::snprintf(where, sizeof where, "%04X:%02X", LoadLe16(f.data + 1), f.data[3]);
-    Finish(false, std::string("node ") + std::to_string(node_id_) + " refused " + where +
-                      ": abort " + Hex(result_.abort_code) + " (" +
-                      canopen::SdoAbortText(result_.abort_code) + ")");
-    return;
+  const Reply reply = f.data[0] == kAbort ? OnAbort(f) : OnReply(f);
+  if (reply == Reply::kIgnored) return;  // not an answer to this transfer: no progress either
+  if (reply == Reply::kUnexpected) {
+    return SendAbort(canopen::SdoAbort::kCommand, "unexpected response " + Hex(f.data[0]));
   }
-  const uint32_t size = static_cast<uint32_t>(data_.size());
+  deadline_us_ = now_us + uint64_t{opt_.timeout_ms} * 1000;
+}
+
+SdoClient::Reply SdoClient::OnAbort(const CanFrame& f) {
+  // An abort names its object: one for another object ends an earlier transfer, not this one.
+  if (!ForThisObject(f)) return Reply::kIgnored;
+  result_.abort_code = canopen::AbortFromCode(LoadLe32(f.data + 4));
+  result_.aborted_by_server = true;
+  char where[32];
+  std::snprintf(where, sizeof where, "%04X:%02X", index_, sub_);
+  Finish(false, std::string("node ") + std::to_string(node_id_) + " refused " + where + ": abort " +
+                    Hex(canopen::Code(result_.abort_code)) + " (" +
+                    canopen::SdoAbortText(result_.abort_code) + ")");
+  return Reply::kTaken;
+}
+
+SdoClient::Reply SdoClient::OnReply(const CanFrame& f) {
   switch (state_) {
     case State::kInitDownload:
-      if (cmd != Command(kScsInitiateDownload)) break;
-      if (size <= 4 && size > 0) {
-        if (progress_) progress_(size, size);
-        return Finish(true, "ok");
-      }
-      state_ = State::kSegDownload;
-      NextSegment();
-      return;
-    case State::kSegDownload: {
-      if (cmd != SegmentAck(kScsDownloadSegment, toggle_)) break;
-      pos_ += size - pos_ < kSegmentBytes ? size - pos_ : kSegmentBytes;
-      if (progress_) progress_(pos_, size);
-      if (pos_ >= size) return Finish(true, "ok");
-      toggle_ = static_cast<uint8_t>(toggle_ ^ 1);
-      NextSegment();
-      return;
-    }
+    case State::kInitUpload:
     case State::kBlockInit:
-      if (!IsBlockDownloadInitiateResponse(cmd)) break;
+    case State::kBlockUpInit:
+      // The answer to an initiate carries the object's index and sub-index: an answer for
+      // another object (a late one to an earlier request) is not ours.
+      if (!ForThisObject(f)) return Reply::kIgnored;
+      break;
+    default:
+      break;
+  }
+  switch (state_) {
+    case State::kInitDownload:
+    case State::kSegDownload:
+      return OnDownloadReply(f);
+    case State::kBlockInit:
+    case State::kBlockSend:
+    case State::kBlockAck:
+    case State::kBlockEnd:
+      return OnBlockDownloadReply(f);
+    case State::kInitUpload:
+    case State::kSegUpload:
+      return OnUploadReply(f);
+    case State::kBlockUpInit:
+    case State::kBlockUpRecv:
+    case State::kBlockUpEnd:
+      return OnBlockUploadFrame(f);
+    case State::kDone:
+      break;
+  }
+  return Reply::kIgnored;
+}
+
+SdoClient::Reply SdoClient::OnDownloadReply(const CanFrame& f) {
+  const uint8_t cmd = f.data[0];
+  const uint32_t size = static_cast<uint32_t>(data_.size());
+  if (state_ == State::kInitDownload) {
+    if (cmd != Command(kScsInitiateDownload)) return Reply::kUnexpected;
+    if (size <= 4 && size > 0) {
+      if (progress_) progress_(size, size);
+      Finish(true, "ok");
+      return Reply::kTaken;
+    }
+    state_ = State::kSegDownload;
+    NextSegment();
+    return Reply::kTaken;
+  }
+  if (cmd != SegmentAck(kScsDownloadSegment, toggle_)) return Reply::kUnexpected;
+  pos_ += size - pos_ < kSegmentBytes ? size - pos_ : kSegmentBytes;
+  if (progress_) progress_(pos_, size);
+  if (pos_ >= size) {
+    Finish(true, "ok");
+    return Reply::kTaken;
+  }
+  toggle_ = static_cast<uint8_t>(toggle_ ^ 1);
+  NextSegment();
+  return Reply::kTaken;
+}
+
+SdoClient::Reply SdoClient::OnBlockDownloadReply(const CanFrame& f) {
+  const uint8_t cmd = f.data[0];
+  switch (state_) {
+    case State::kBlockInit:
+      if (!IsBlockDownloadInitiateResponse(cmd)) return Reply::kUnexpected;
       blksize_ = f.data[4];
       if (blksize_ < 1 || blksize_ > kMaxBlockSize) {
-        return SendAbort(canopen::kAbortBlockSize, "server offered an invalid block size");
+        SendAbort(canopen::SdoAbort::kBlockSize, "server offered an invalid block size");
+        return Reply::kTaken;
       }
       sub_start_ = 0;
       seq_ = 0;
       state_ = State::kBlockSend;
-      return;
+      return Reply::kTaken;
     case State::kBlockSend:
-    case State::kBlockAck: {
-      if (cmd != Block(kScsBlockDownload, kBlockAck)) break;
-      const uint8_t ackseq = f.data[1];
-      if (ackseq > seq_) return SendAbort(canopen::kAbortSequence, "ack beyond the segments sent");
-      resent_ += seq_ - ackseq;
-      uint32_t acked = uint32_t{ackseq} * kSegmentBytes;
-      if (sub_start_ + acked > size) acked = size - sub_start_;
-      sub_start_ += acked;
-      pos_ = sub_start_;
-      if (progress_) progress_(pos_, size);
-      blksize_ = f.data[2];
-      if (blksize_ < 1 || blksize_ > kMaxBlockSize) {
-        return SendAbort(canopen::kAbortBlockSize, "server asked for an invalid block size");
-      }
-      seq_ = 0;
-      if (sub_start_ >= size) {
-        const uint32_t tail = size % kSegmentBytes;
-        const uint32_t unused = tail == 0 ? 0 : kSegmentBytes - tail;
-        CanFrame e = Plain(BlockEndCommand(kCcsBlockDownload, unused));
-        StoreLe16(e.data + 1, canopen::Crc16Update(0, data_.data(), data_.size()));
-        Queue(e);
-        state_ = State::kBlockEnd;
-      } else {
-        state_ = State::kBlockSend;
-      }
-      return;
+    case State::kBlockAck:
+      if (cmd != Block(kScsBlockDownload, kBlockAck)) return Reply::kUnexpected;
+      OnBlockAck(f.data[1], f.data[2]);
+      return Reply::kTaken;
+    default:  // kBlockEnd
+      if (cmd != Block(kScsBlockDownload, kBlockEnd)) return Reply::kUnexpected;
+      Finish(true, "ok");
+      return Reply::kTaken;
+  }
+}
+
+void SdoClient::OnBlockAck(uint8_t ackseq, uint8_t next_blksize) {
+  const uint32_t size = static_cast<uint32_t>(data_.size());
+  if (ackseq > seq_) {
+    return SendAbort(canopen::SdoAbort::kSequence, "ack beyond the segments sent");
+  }
+  resent_ += seq_ - ackseq;
+  uint32_t acked = uint32_t{ackseq} * kSegmentBytes;
+  if (sub_start_ + acked > size) acked = size - sub_start_;
+  sub_start_ += acked;
+  pos_ = sub_start_;
+  if (progress_) progress_(pos_, size);
+  blksize_ = next_blksize;
+  if (blksize_ < 1 || blksize_ > kMaxBlockSize) {
+    return SendAbort(canopen::SdoAbort::kBlockSize, "server asked for an invalid block size");
+  }
+  seq_ = 0;
+  if (sub_start_ < size) {
+    state_ = State::kBlockSend;
+    return;
+  }
+  const uint32_t tail = size % kSegmentBytes;
+  const uint32_t unused = tail == 0 ? 0 : kSegmentBytes - tail;
+  CanFrame e = Plain(BlockEndCommand(kCcsBlockDownload, unused));
+  StoreLe16(e.data + 1, canopen::Crc16Update(0, data_.data(), data_.size()));
+  Queue(e);
+  state_ = State::kBlockEnd;
+}
+
+SdoClient::Reply SdoClient::OnUploadReply(const CanFrame& f) {
+  const uint8_t cmd = f.data[0];
+  if (state_ == State::kInitUpload) {
+    if (Specifier(cmd) != kScsInitiateUpload) return Reply::kUnexpected;
+    if ((cmd & kExpedited) != 0) {
+      const uint32_t n = ExpeditedBytes(cmd);
+      result_.data.assign(f.data + 4, f.data + 4 + n);
+      Finish(true, "ok");
+      return Reply::kTaken;
     }
-    case State::kBlockEnd:
-      if (cmd != Block(kScsBlockDownload, kBlockEnd)) break;
-      return Finish(true, "ok");
-    case State::kInitUpload: {
-      if (Specifier(cmd) != kScsInitiateUpload) break;
-      if ((cmd & kExpedited) != 0) {
-        const uint32_t n = ExpeditedBytes(cmd);
-        result_.data.assign(f.data + 4, f.data + 4 + n);
-        return Finish(true, "ok");
-      }
-      upload_size_ = (cmd & kSizeIndicated) != 0 ? LoadLe32(f.data + 4) : 0;
-      toggle_ = 0;
-      state_ = State::kSegUpload;
-      CanFrame r = Plain(SegmentAck(kCcsUploadSegment, toggle_));
-      Queue(r);
-      return;
-    }
-    case State::kSegUpload: {
-      if (Specifier(cmd) != kScsUploadSegment || ToggleOf(cmd) != toggle_) break;
-      const uint32_t n = SegmentBytes(cmd);
-      result_.data.insert(result_.data.end(), f.data + 1, f.data + 1 + n);
-      if ((cmd & kLastSegment) != 0) return Finish(true, "ok");
-      toggle_ = static_cast<uint8_t>(toggle_ ^ 1);
-      CanFrame r = Plain(SegmentAck(kCcsUploadSegment, toggle_));
-      Queue(r);
-      return;
-    }
-    case State::kBlockUpInit: {
-      if (!IsBlockUploadInitiateResponse(cmd)) break;
+    upload_size_ = (cmd & kSizeIndicated) != 0 ? LoadLe32(f.data + 4) : 0;
+    toggle_ = 0;
+    state_ = State::kSegUpload;
+    Queue(Plain(SegmentAck(kCcsUploadSegment, toggle_)));
+    return Reply::kTaken;
+  }
+  if (Specifier(cmd) != kScsUploadSegment || ToggleOf(cmd) != toggle_) return Reply::kUnexpected;
+  const uint32_t n = SegmentBytes(cmd);
+  result_.data.insert(result_.data.end(), f.data + 1, f.data + 1 + n);
+  if ((cmd & kLastSegment) != 0) {
+    Finish(true, "ok");
+    return Reply::kTaken;
+  }
+  toggle_ = static_cast<uint8_t>(toggle_ ^ 1);
+  Queue(Plain(SegmentAck(kCcsUploadSegment, toggle_)));
+  return Reply::kTaken;
+}
+
+SdoClient::Reply SdoClient::OnBlockUploadFrame(const CanFrame& f) {
+  const uint8_t cmd = f.data[0];
+  switch (state_) {
+    case State::kBlockUpInit:
+      if (!IsBlockUploadInitiateResponse(cmd)) return Reply::kUnexpected;
       upload_size_ = (cmd & kBlockSizeIndicated) != 0 ? LoadLe32(f.data + 4) : 0;
       up_last_seq_ = 0;
       up_last_ = false;
       up_block_.clear();
-      CanFrame s = Plain(Block(kCcsBlockUpload, kBlockStartUpload));
-      Queue(s);
+      Queue(Plain(Block(kCcsBlockUpload, kBlockStartUpload)));
       state_ = State::kBlockUpRecv;
-      return;
-    }
-    case State::kBlockUpRecv: {
-      const uint8_t seq = BlockSequence(cmd);
-      const bool last = (cmd & kBlockLastSegment) != 0;
-      if (seq == up_last_seq_ + 1) {
-        up_last_seq_ = seq;
-        result_.data.insert(result_.data.end(), f.data + 1, f.data + 1 + kSegmentBytes);
-        up_last_ = last;
-      }
-      if (seq == opt_.upload_block_size || last) {
-        CanFrame a = Plain(Block(kCcsBlockUpload, kBlockAck));
-        a.data[1] = up_last_seq_;
-        a.data[2] = opt_.upload_block_size;
-        Queue(a);
-        if (up_last_) {
-          state_ = State::kBlockUpEnd;
-        } else {
-          up_last_seq_ = 0;
-        }
-      }
-      return;
-    }
-    case State::kBlockUpEnd: {
-      if (!IsBlockUploadEnd(cmd)) break;
-      const uint32_t unused = BlockEndUnused(cmd);
-      if (unused <= result_.data.size()) result_.data.resize(result_.data.size() - unused);
-      if (upload_size_ != 0 && result_.data.size() != upload_size_) {
-        return SendAbort(canopen::kAbortTypeMismatch, "block upload size differs from announced");
-      }
-      if (LoadLe16(f.data + 1) !=
-          canopen::Crc16Update(0, result_.data.data(), result_.data.size())) {
-        return SendAbort(canopen::kAbortCrc, "block upload CRC mismatch");
-      }
-      CanFrame a = Plain(Block(kCcsBlockUpload, kBlockEnd));
-      Queue(a);
-      return Finish(true, "ok");
-    }
-    case State::kDone:
-      return;
+      return Reply::kTaken;
+    case State::kBlockUpRecv:
+      OnBlockUploadSegment(f);
+      return Reply::kTaken;
+    default:  // kBlockUpEnd
+      if (!IsBlockUploadEnd(cmd)) return Reply::kUnexpected;
+      OnBlockUploadEnd(f);
+      return Reply::kTaken;
   }
-  SendAbort(canopen::kAbortCommand, "unexpected response " + Hex(cmd));
+}
+
+void SdoClient::OnBlockUploadSegment(const CanFrame& f) {
+  const uint8_t cmd = f.data[0];
+  const uint8_t seq = BlockSequence(cmd);
+  const bool last = (cmd & kBlockLastSegment) != 0;
+  if (seq == up_last_seq_ + 1) {
+    up_last_seq_ = seq;
+    result_.data.insert(result_.data.end(), f.data + 1, f.data + 1 + kSegmentBytes);
+    up_last_ = last;
+  }
+  if (seq != opt_.upload_block_size && !last) return;
+  CanFrame a = Plain(Block(kCcsBlockUpload, kBlockAck));
+  a.data[1] = up_last_seq_;
+  a.data[2] = opt_.upload_block_size;
+  Queue(a);
+  if (up_last_) {
+    state_ = State::kBlockUpEnd;
+  } else {
+    up_last_seq_ = 0;
+  }
+}
+
+void SdoClient::OnBlockUploadEnd(const CanFrame& f) {
+  const uint32_t unused = BlockEndUnused(f.data[0]);
+  if (unused <= result_.data.size()) result_.data.resize(result_.data.size() - unused);
+  if (upload_size_ != 0 && result_.data.size() != upload_size_) {
+    return SendAbort(canopen::SdoAbort::kTypeMismatch, "block upload size differs from announced");
+  }
+  if (LoadLe16(f.data + 1) != canopen::Crc16Update(0, result_.data.data(), result_.data.size())) {
+    return SendAbort(canopen::SdoAbort::kCrc, "block upload CRC mismatch");
+  }
+  Queue(Plain(Block(kCcsBlockUpload, kBlockEnd)));
+  Finish(true, "ok");
 }
 
 }  // namespace volcomp::canopen_client

@@ -12,13 +12,13 @@ using canopen::ObjectId;
 using canopen::TableCommand;
 using tools::Hex32;
 
-std::string AbortHint(uint32_t abort_code) {
+std::string AbortHint(canopen::SdoAbort abort_code) {
   switch (abort_code) {
-    case canopen::kAbortCannotStore:
+    case canopen::SdoAbort::kCannotStore:
       return "the board is write-protected: set its write-enable input or let the tool unlock it";
-    case canopen::kAbortDeviceState:
+    case canopen::SdoAbort::kDeviceState:
       return "the axes must be referenced (homed) and at rest";
-    case canopen::kAbortNoData:
+    case canopen::SdoAbort::kNoData:
       return "no verified table is staged: upload one first";
     default:
       return "";
@@ -83,7 +83,7 @@ SdoResult VerifyStaged(NodeObjects& node, uint32_t image_crc, uint32_t* staged_c
   if (staged_crc != nullptr) *staged_crc = staged;
   if (staged != image_crc) {
     r.ok = false;
-    r.abort_code = 0;
+    r.abort_code = canopen::SdoAbort::kNone;
     r.message = "the board staged CRC-32 " + Hex32(staged) + ", expected " + Hex32(image_crc);
   }
   return r;

@@ -9,6 +9,7 @@
 #include "volcomp/byte_order.hpp"
 #include "volcomp/can_frame.hpp"
 #include "volcomp/canopen/node.hpp"
+#include "volcomp/canopen/sdo_abort.hpp"
 #include "volcomp/status.hpp"
 
 namespace volcomp::canopen {
@@ -107,10 +108,11 @@ inline constexpr const char* kStagedStateNames[] = {"empty", "receiving", "compl
 enum class TableResult : uint8_t {
   kOk = 0,
   kFormat = 2,       // not a valid image
-  kCrc = 3,          // CRC-32 mismatch
+  kCrc = 3,          // CRC mismatch: the image's CRC-32, or the transfer's CRC-16
   kNotForBoard = 4,  // axes, units per step or axis count differ from the board
   kWriteError = 5,   // flash write failed
   kTooLarge = 6,     // larger than the bank
+  kTransfer = 7,     // the transfer was aborted or timed out
 };
 
 constexpr TableResult TableResultOf(Error e) {
@@ -118,7 +120,11 @@ constexpr TableResult TableResultOf(Error e) {
     case Error::kOk:
       return TableResult::kOk;
     case Error::kImageBadCrc:
+    case Error::kTransferCrcMismatch:
       return TableResult::kCrc;
+    case Error::kTransferAborted:
+    case Error::kTransferTimeout:
+      return TableResult::kTransfer;
     case Error::kConfigAxisMismatch:
     case Error::kConfigResolutionMismatch:
     case Error::kConfigTooManyAxes:
@@ -129,6 +135,21 @@ constexpr TableResult TableResultOf(Error e) {
       return TableResult::kTooLarge;
     default:
       return TableResult::kFormat;
+  }
+}
+
+/// The staging error of a table transfer that ended with SDO abort `a` (sent or received).
+constexpr Error TransferError(SdoAbort a) {
+  switch (a) {
+    case SdoAbort::kCrc:
+      return Error::kTransferCrcMismatch;
+    case SdoAbort::kTimeout:
+      return Error::kTransferTimeout;
+    case SdoAbort::kTooLong:
+    case SdoAbort::kTooShort:
+      return Error::kImageSizeMismatch;  // fewer or more bytes than the client announced
+    default:
+      return Error::kTransferAborted;
   }
 }
 
@@ -194,7 +215,7 @@ struct Emcy {
   uint8_t data[5] = {};  // manufacturer bytes (frame bytes 3-7)
 
   /// Bytes 3-6 as LE32: the SDO abort code of kEmcyRefused and kEmcySdoTransferFailed.
-  uint32_t abort_code() const { return LoadLe32(data); }
+  SdoAbort abort_code() const { return AbortFromCode(LoadLe32(data)); }
   /// Byte 3: the volcomp error of kEmcyTableInvalid.
   Error error() const { return static_cast<Error>(data[0]); }
   /// Bytes 3-4 as LE16: the volcomp error of kEmcyConfigRefused.

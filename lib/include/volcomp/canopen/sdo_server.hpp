@@ -13,6 +13,17 @@
 // data bytes and the indicated size, and streams the data to ObjectValues as it arrives (so no
 // buffer of the whole object is needed). Any transfer idle for `timeout_ms` is aborted with
 // 0x05040000.
+//
+// An abort (sent or received) in the middle of a block download sub-block leaves segments of that
+// sub-block in flight (the client sends a whole sub-block before it reads an answer). They are
+// discarded silently: after the abort, frames that continue the sub-block exactly (the next
+// sequence number, then the one after, ...; the c bit set exactly on the transfer's last segment
+// when the size was indicated) are dropped without an answer, until the sub-block's last segment
+// (sequence number = block size, or the c bit), a frame that does not continue it (served as a new
+// request) or `block_gap_ms` of silence. A client's own abort is handled the same way (a client
+// that aborts from another thread than the one sending may have segments queued behind it). The
+// price: a new request sent within `block_gap_ms` whose first byte happens to equal the next
+// segment's is dropped too; the client's timeout and retry recover it.
 #pragma once
 
 #include <cstdint>
@@ -43,8 +54,8 @@ class SdoServer {
   /// Transfers ended by an abort (sent or received), since Init().
   uint32_t aborts() const { return aborts_; }
   uint32_t malformed() const { return malformed_; }
-  /// Abort code of the last aborted transfer (0 if none).
-  uint32_t last_abort() const { return last_abort_; }
+  /// Abort code of the last aborted transfer (kNone if none).
+  SdoAbort last_abort() const { return last_abort_; }
 
  private:
   enum class State : uint8_t {
@@ -71,18 +82,23 @@ class SdoServer {
   void BlockUploadAck(const CanFrame& f);
   void BlockUploadEndAck(const CanFrame& f);
 
-  // Checks the entry for reading or writing; 0 or an abort code.
-  uint32_t Lookup(uint16_t index, uint8_t sub, bool write);
+  // Checks the entry for reading or writing.
+  SdoAbort Lookup(uint16_t index, uint8_t sub, bool write);
   // Start of a segmented or block download of `size` bytes (if known) into entry_: opens a domain
-  // write or checks the size against the small-value buffer; 0 or an abort code.
-  uint32_t BeginTransfer(bool size_known, uint32_t size);
-  // Delivers download data to the value or the small-object buffer; 0 or an abort code.
-  uint32_t Deliver(const uint8_t* data, uint32_t size);
-  uint32_t FinishDownload();
+  // write or checks the size against the small-value buffer.
+  SdoAbort BeginTransfer(bool size_known, uint32_t size);
+  // Delivers download data to the value or the small-object buffer.
+  SdoAbort Deliver(const uint8_t* data, uint32_t size);
+  SdoAbort FinishDownload();
   void SendBlockAck();
   void Respond(uint8_t cmd, const uint8_t* payload4 = nullptr);
-  void Abort(uint32_t code);
-  void EndTransfer(bool complete);
+  void Abort(SdoAbort code);
+  // Ends the transfer in progress with `outcome` (kNone = completed).
+  void EndTransfer(SdoAbort outcome);
+  // On an abort inside a block download sub-block: drop what follows of that sub-block.
+  void OpenDiscardWindow();
+  // True (and the frame is dropped) when byte 0 `cmd` continues the aborted sub-block.
+  bool DiscardLeftover(uint8_t cmd, uint32_t now_ms);
   void Queue(const CanFrame& f);
   CanFrame Frame(uint8_t cmd) const;  // a response frame with byte 0 = cmd, the rest 0
 
@@ -110,6 +126,10 @@ class SdoServer {
   uint8_t held_[7] = {};  // the last in-sequence segment, held until its length is known
   bool have_held_ = false;
   bool last_segment_seen_ = false;
+  uint32_t taken_segments_ = 0;  // in-sequence segments of this transfer
+  uint8_t discard_seq_ = 0;      // next sequence number of an aborted sub-block to drop (0 = none)
+  uint32_t discard_segments_left_ = 0;  // segments of the transfer still to come (0 = unknown)
+  uint32_t discard_rx_ms_ = 0;
 
   // Block upload state.
   uint8_t up_seq_ = 0;  // next segment number to send in this sub-block
@@ -125,7 +145,7 @@ class SdoServer {
 
   uint32_t aborts_ = 0;
   uint32_t malformed_ = 0;
-  uint32_t last_abort_ = 0;
+  SdoAbort last_abort_ = SdoAbort::kNone;
 };
 
 }  // namespace volcomp::canopen

@@ -136,8 +136,8 @@ class BoardApp final : private BoardControl {
     stored_status_ = tables_.Init(dev_.table_flash, bank);
     if (stored_status_.ok()) stored_status_ = ActivateStored();
     if (dev_.can != nullptr) {
-      node_.Start(settings_.node_id, &objects_, NowMs(), options.sdo);
-      node_.set_heartbeat_ms(settings_.heartbeat_ms);
+      node_.Start(settings_.node_id, &objects_, NowMs(),
+                  {settings_.heartbeat_ms, settings_.emcy_inhibit_100us}, options.sdo);
       if (!config_status_.ok()) {
         uint8_t m[5];
         canopen::EncodeConfigRefused(config_status_.error(), config_refused_by_, m);
@@ -328,7 +328,7 @@ class BoardApp final : private BoardControl {
         Start(BoardSettings(defaults_), AppOptions(options_)).IgnoreError();
         break;
       case canopen::ResetRequest::kCommunication:
-        node_.Start(settings_.node_id, &objects_, now, options_.sdo);
+        node_.ResetCommunication(now);  // the stored 0x1015 / 0x1017 back in force
         break;
       case canopen::ResetRequest::kNone:
         break;

@@ -2,6 +2,10 @@
 // identity, board configuration (pending until stored and reset), table staging and control,
 // write access, operation and live diagnostics. See docs/canopen.md for the object list.
 //
+// Store (0x1010 = "save") writes the pending configuration together with the communication
+// parameters in force (0x1015, 0x1017, read from the node); the node then restores those at its
+// resets. The configuration takes effect at the next reset node.
+//
 // Write access: writes to tables and configuration (0x1010, 0x1011, 0x2000-0x201E, 0x2100, table
 // activate/deactivate/clear) are refused with 0x08000020 unless the hardware write-enable input
 // is active or the board was unlocked by writing canopen::kUnlockSignature to 0x2110 within the
@@ -61,23 +65,28 @@ class BoardObjects : public canopen::ObjectValues {
   void clear_active() { has_active_ = false; }
 
  private:
-  uint32_t DoRead(const canopen::ObjectEntry& e,
-                  uint32_t offset,
-                  uint8_t* buf,
-                  uint32_t cap,
-                  uint32_t* copied,
-                  uint32_t* total) override;
-  uint32_t DoWrite(const canopen::ObjectEntry& e, const uint8_t* data, uint32_t size) override;
-  uint32_t DoBeginDomainWrite(const canopen::ObjectEntry& e, uint32_t size) override;
-  uint32_t DoDomainWriteData(const uint8_t* data, uint32_t size) override;
-  uint32_t DoEndDomainWrite(bool complete) override;
+  canopen::SdoAbort DoRead(const canopen::ObjectEntry& e,
+                           uint32_t offset,
+                           uint8_t* buf,
+                           uint32_t cap,
+                           uint32_t* copied,
+                           uint32_t* total) override;
+  canopen::SdoAbort DoWrite(const canopen::ObjectEntry& e,
+                            const uint8_t* data,
+                            uint32_t size) override;
+  canopen::SdoAbort DoBeginDomainWrite(const canopen::ObjectEntry& e, uint32_t size) override;
+  canopen::SdoAbort DoDomainWriteData(const uint8_t* data, uint32_t size) override;
+  canopen::SdoAbort DoEndDomainWrite(canopen::SdoAbort outcome) override;
 
   bool ReadNumber(const canopen::ObjectEntry& e, uint32_t* value) const;
   // A configuration entry (bound to a BoardSettings field in od_entries.def): range check, then
   // the pending copy.
-  uint32_t WriteSetting(const canopen::ObjectEntry& e, uint32_t raw);
-  uint32_t TableControl(uint8_t command);
-  uint32_t Refuse(uint32_t abort_code);
+  canopen::SdoAbort WriteSetting(const canopen::ObjectEntry& e, uint32_t raw);
+  canopen::SdoAbort TableControl(uint8_t command);
+  // 0x1010 "save": the pending settings with the communication parameters in force.
+  canopen::SdoAbort StoreSettings();
+  canopen::SdoAbort Refuse(canopen::SdoAbort abort_code);
+  void UpdateSettingsPending();
 
   BoardControl* control_;
   TableStore* tables_;
@@ -86,6 +95,7 @@ class BoardObjects : public canopen::ObjectValues {
   IdentityInfo identity_;
   BoardSettings active_;
   BoardSettings pending_;
+  bool settings_pending_ = false;  // pending_ differs from active_
   uint32_t now_ms_ = 0;
   uint32_t unlocked_at_ms_ = 0;
   bool unlocked_ = false;

@@ -13,8 +13,17 @@
 // single program operation of the COMMIT record, whose check word makes a partly programmed record
 // invalid. Hence after a power loss at any point the store holds exactly the old or the new blob.
 //
-// Staging erases lazily: the record sector first, then each sector just before the first byte is
-// programmed into it, so no operation takes longer than one sector erase plus one program burst.
+// Staging erases lazily: BeginStaging erases the record sector and the first sector (so an older
+// blob left in the bank can never be taken for a staged one), then each further sector is erased
+// just before the first byte is programmed into it, so no operation takes longer than two sector
+// erases (BeginStaging) or one sector erase plus one program burst.
+//
+// A staged blob survives a reset: the staging bank is the one that is not committed; while its
+// records are blank (erased by BeginStaging, nothing committed or discarded since) its bytes from
+// offset 0 are what was staged, and MountStaging() gives them back (the caller knows the blob's
+// format, hence its size, and checks it before AdoptStaging()). DiscardStaging() (a cleared or
+// failed staging) programs a DISCARD record into the staging bank's REVOKE slot, so the blob is
+// not found again.
 #pragma once
 
 #include <cstdint>
@@ -49,8 +58,16 @@ class DualBankStore {
   Status Append(const uint8_t* data, uint32_t size);
   /// Flushes the last partial program unit; the staged blob is then complete.
   Status FinishStaging();
-  /// Marks the staging as abandoned (the bank content is ignored until the next BeginStaging).
-  void AbandonStaging() { staging_open_ = staged_complete_ = false; }
+  /// Marks the staging as abandoned (the bank content is ignored until the next BeginStaging) and
+  /// persistently so (the DISCARD record; a flash failure there only leaves a blob that the
+  /// caller's check at mount refuses, or that was valid). Its bytes stay readable until then.
+  void DiscardStaging();
+  /// After Mount(): the staging bank's bytes (capacity() of them) if it holds a staged blob that
+  /// was neither committed nor discarded (its records are blank), else null.
+  const uint8_t* MountStaging() const;
+  /// Takes the first `size` bytes of MountStaging() as the complete staged blob (Commit() may
+  /// follow). kNotReady if there is none, kImageTooLarge past capacity().
+  Status AdoptStaging(uint32_t size);
   bool staging_open() const { return staging_open_; }
   bool staged_complete() const { return staged_complete_; }
   uint32_t staged_size() const { return staged_size_; }
@@ -67,6 +84,8 @@ class DualBankStore {
     uint32_t magic, sequence, size, crc32;
   };
   bool ReadRecord(int bank, uint32_t offset_in_bank, uint32_t magic, Record* r) const;
+  bool RecordsBlank(int bank) const;
+  int StagingBank() const { return committed_ == 0 ? 1 : 0; }
   Status ProgramRecord(int bank, uint32_t offset_in_bank, const Record& r);
   Status EnsureErased(uint32_t bank_offset_end);
   uint32_t BankBase(int bank) const { return static_cast<uint32_t>(bank) * bank_size_; }
@@ -85,6 +104,7 @@ class DualBankStore {
   int staging_ = -1;
   bool staging_open_ = false;
   bool staged_complete_ = false;
+  bool staging_records_blank_ = false;  // the staging bank's REVOKE slot may still be programmed
   uint32_t staged_size_ = 0;
   uint32_t erased_until_ = 0;  // bytes of the staging bank known erased from offset 0
   uint8_t pending_[kMaxProgramUnit] = {};

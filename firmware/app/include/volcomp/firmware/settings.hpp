@@ -15,9 +15,10 @@ namespace volcomp::firmware {
 
 struct BoardSettings {
   BoardConfig board = DefaultBoardConfig();
-  uint8_t node_id = canopen::kDefaultNodeId;             // 1..127
-  uint16_t bitrate_kbit = canopen::kDefaultBitrateKbit;  // 10..1000
-  uint16_t heartbeat_ms = canopen::kDefaultHeartbeatMs;  // 0 = off
+  uint8_t node_id = canopen::kDefaultNodeId;                        // 1..127
+  uint16_t bitrate_kbit = canopen::kDefaultBitrateKbit;             // 10..1000
+  uint16_t heartbeat_ms = canopen::kDefaultHeartbeatMs;             // 0x1017, 0 = off
+  uint16_t emcy_inhibit_100us = canopen::kDefaultEmcyInhibit100us;  // 0x1015, 0 = no inhibit
 };
 
 /// Range checks of everything in `s` (ValidateBoardConfig plus the node settings).
@@ -29,6 +30,7 @@ inline constexpr uint32_t kSettingsBytes = 24 + table::kMaxAxes * 64 + 8;
 /// Writes `s` into out[0, kSettingsBytes) (little-endian, versioned).
 void SerializeSettings(const BoardSettings& s, uint8_t* out);
 /// Reads and validates a record; kConfigInvalid for a record of another version or out of range.
+/// A version-1 record (before 0x1015 was stored) gives the default EMCY inhibit time.
 Status DeserializeSettings(const uint8_t* in, uint32_t size, BoardSettings* s);
 
 class SettingsStore {

@@ -1,10 +1,18 @@
 // The board's compensation tables in flash: the active image and the staging of a new one, on a
 // power-loss-safe DualBankStore.
 //
-// Upload: BeginUpload -> UploadData ... -> FinishUpload(true) (complete) -> Verify (the firmware's
-// image validation plus the board match) -> Activate (one atomic commit). Any failure along the
-// way leaves the staged image unusable and the active image untouched. Deactivate revokes the
-// active image (persistently: after a reset the board runs pass-through until a new activation).
+// Upload: BeginUpload -> UploadData ... -> FinishUpload (complete) -> Verify (the firmware's image
+// validation plus the board match) -> Activate (one atomic commit). Any failure along the way
+// (AbandonUpload when the transfer broke) leaves the staged image unusable, says why in
+// last_error(), and leaves the active image untouched. Deactivate revokes the active image
+// (persistently: after a reset the board runs pass-through until a new activation).
+//
+// The staged image is in flash and survives a reset or power loss: MountActive() also mounts it
+// and verifies it again (format, CRC-32, made for the board in force). If it passes it is staged
+// and verified, with its id, CRC-32 and size, as before the reset; anything else in the staging
+// bank (an interrupted, failed or cleared upload, an image not for this board) is forgotten:
+// nothing staged, 0x2105-0x2107 read 0. The staged id, CRC-32 and size always describe what is
+// staged now: 0 once it is cleared, activated or replaced.
 #pragma once
 
 #include <cstdint>
@@ -25,16 +33,21 @@ class TableStore {
  public:
   Status Init(hal::Flash* flash, uint32_t bank_size);
 
-  /// Power-up: mounts the banks; returns the active image if one is committed, intact and made
-  /// for `config` (the error says why not otherwise: kNotFound when nothing is committed).
+  /// Power-up: mounts the banks and the staged image (see above); returns the active image if one
+  /// is committed, intact and made for `config` (the error says why not otherwise: kNotFound when
+  /// nothing is committed).
   Result<table::TableView> MountActive(const BoardConfig& config);
 
   /// Starts staging an image of `size` bytes (0 = not indicated). kImageTooLarge if it cannot
   /// fit; kIoError on a flash failure.
   Status BeginUpload(uint32_t size);
   Status UploadData(const uint8_t* data, uint32_t size);
-  /// Ends the upload; `complete` = the transfer succeeded.
-  Status FinishUpload(bool complete);
+  /// Ends a complete transfer: kImageSizeMismatch when it differs from the announced size.
+  Status FinishUpload();
+  /// Ends a transfer that broke, for `reason` (kTransferAborted, kTransferCrcMismatch, ...: the
+  /// staging error reported in 0x2102). No effect unless an upload is in progress (a failure it
+  /// already reported stays the reason).
+  void AbandonUpload(Error reason);
   /// Validates the complete staged image (format, CRC, board match).
   Status Verify(const BoardConfig& config);
   /// Commits the verified staged image; returns its view (in flash, valid while active).
@@ -45,7 +58,8 @@ class TableStore {
   void Clear();
 
   StagedState staged_state() const { return state_; }
-  uint32_t staged_bytes() const { return bank_.staged_size(); }
+  /// Bytes received (receiving, failed) or staged; 0 when nothing is staged.
+  uint32_t staged_bytes() const { return state_ == StagedState::kEmpty ? 0 : bank_.staged_size(); }
   uint32_t staged_crc32() const { return staged_crc_; }
   uint32_t staged_table_id() const { return staged_id_; }
   const uint8_t* staged_data() const { return bank_.staged_data(); }
@@ -57,6 +71,7 @@ class TableStore {
 
  private:
   Status Fail(Error e);
+  void MountStaged(const BoardConfig& config);
 
   DualBankStore bank_;
   StagedState state_ = StagedState::kEmpty;

@@ -6,6 +6,11 @@
 // size indicated) for larger values when `use_block` (default), segmented otherwise. Upload: block
 // for DOMAIN reads when asked, expedited/segmented otherwise. Block download honours the server's
 // block size from every ack and resends from the acknowledged sequence number.
+//
+// Answers are matched to the transfer: an initiate response or an abort that names another object
+// (index and sub-index, bytes 1-3) is a late answer to an earlier request and is ignored (the
+// transfer keeps waiting, its timeout still running); a frame that fits neither the transfer's
+// state nor its object aborts the transfer (0x05040001).
 #pragma once
 
 #include <cstdint>
@@ -14,12 +19,15 @@
 #include <vector>
 
 #include "volcomp/can_frame.hpp"
+#include "volcomp/canopen/sdo_abort.hpp"
 
 namespace volcomp::canopen_client {
 
 struct SdoResult {
   bool ok = false;
-  uint32_t abort_code = 0;  // from the server, or the one we sent (timeout, protocol error)
+  // From the server, or the one we sent (timeout, protocol error); kNone when the transfer
+  // succeeded or failed without an abort (e.g. a check of the caller's).
+  canopen::SdoAbort abort_code = canopen::SdoAbort::kNone;
   bool aborted_by_server = false;
   std::string message;        // readable: what failed and why
   std::vector<uint8_t> data;  // upload result
@@ -71,8 +79,28 @@ class SdoClient {
     kBlockUpEnd,
   };
 
+  // What a received frame was to this transfer.
+  enum class Reply : uint8_t {
+    kTaken,       // the answer it waited for
+    kIgnored,     // an answer for another object: dropped
+    kUnexpected,  // fits neither: the transfer is aborted
+  };
+
+  // One handler per transfer kind, each for its own states.
+  Reply OnAbort(const CanFrame& f);
+  Reply OnReply(const CanFrame& f);
+  Reply OnDownloadReply(const CanFrame& f);
+  Reply OnBlockDownloadReply(const CanFrame& f);
+  void OnBlockAck(uint8_t ackseq, uint8_t next_blksize);
+  Reply OnUploadReply(const CanFrame& f);
+  Reply OnBlockUploadFrame(const CanFrame& f);
+  void OnBlockUploadSegment(const CanFrame& f);
+  void OnBlockUploadEnd(const CanFrame& f);
+  // Bytes 1-3 of an initiate response or abort name this transfer's object.
+  bool ForThisObject(const CanFrame& f) const;
+
   void Finish(bool ok, const std::string& message);
-  void SendAbort(uint32_t code, const std::string& message);
+  void SendAbort(canopen::SdoAbort code, const std::string& message);
   void Queue(const CanFrame& f);
   CanFrame Request(uint8_t cmd) const;  // with index and sub-index
   CanFrame Plain(uint8_t cmd) const;    // byte 0 only

@@ -8,7 +8,7 @@
 //                   it with the image's.
 //
 // Every failure comes back as an SdoResult whose message names the step and explains the common
-// refusals (see Explain()); abort_code is the server's (0 for a CRC mismatch).
+// refusals (see Explain()); abort_code is the server's (kNone for a CRC mismatch).
 #pragma once
 
 #include <cstdint>
@@ -21,7 +21,7 @@ namespace volcomp::canopen_client {
 
 /// What to do about the board's common refusals (write-protected, not referenced / moving, nothing
 /// staged); empty for other codes.
-std::string AbortHint(uint32_t abort_code);
+std::string AbortHint(canopen::SdoAbort abort_code);
 
 /// `r` with its message prefixed by `step` ("step: reason; hint") when it failed; unchanged if ok.
 SdoResult Explain(SdoResult r, const std::string& step);
