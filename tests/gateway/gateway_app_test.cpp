@@ -389,7 +389,7 @@ TEST(GatewayAppMappingTest, StartRefusesAMappingForMissingAxes) {
 }
 
 // The gateway has no step outputs: drive pulse timing that a tick could not carry (it would stop a
-// step/dir board, tests/lib/board_app_test.cpp) does not concern it.
+// step/dir board, tests/firmware/board_app_test.cpp) does not concern it.
 TEST(GatewayAppMappingTest, StepPulseTimingDoesNotConcernTheGateway) {
   hal::mock::MockClock clock;
   hal::mock::MockFlash tables(256 * 1024, 2048, 8, &clock, nullptr);

@@ -28,7 +28,7 @@ InverseMap ForwardErrorAsMap(const Model& m) {
 }
 
 double MaxTrilinearDeviationUm(const Model& m, int samples) {
-  const CorrectionGrid g = SampleGrid(MakeGridSpec(S500Grid(), {20, 10, 10}), ForwardErrorAsMap(m));
+  const CorrectionGrid g = SampleGrid(MakeGridAxes(S500Grid(), {20, 10, 10}), ForwardErrorAsMap(m));
   std::mt19937_64 rng(3);
   std::uniform_real_distribution<double> ux(0, 400), uy(0, 280), uz(0, 200);
   double worst = 0;
@@ -58,7 +58,7 @@ TEST(model_grid, TrilinearIsExactForFirstOrderSumOfAxisFunctions) {
 
 TEST(model_grid, InterpolateClampsAndHitsNodes) {
   GridBuildOptions o = S500Grid();
-  const GridSpec spec = MakeGridSpec(o, {200, 140, 100});
+  const GridAxes spec = MakeGridAxes(o, {200, 140, 100});
   EXPECT_EQ(spec[0].nodes, 3u);
   EXPECT_EQ(spec[1].nodes, 3u);
   EXPECT_EQ(spec[2].nodes, 3u);
@@ -116,10 +116,10 @@ TEST(model_grid, RefusesCorrectionsBeyondTheBound) {
 
 TEST(model_grid, SpacingMustBeWholeSteps) {
   GridBuildOptions o = S500Grid(0.0003);                               // 0.3 µm per step
-  EXPECT_THROW(MakeGridSpec(o, {20, 10, 10}), std::invalid_argument);  // 66666.67 steps
-  EXPECT_NO_THROW(MakeGridSpec(o, {19.9998, 9.9999, 9.9999}));
+  EXPECT_THROW(MakeGridAxes(o, {20, 10, 10}), std::invalid_argument);  // 66666.67 steps
+  EXPECT_NO_THROW(MakeGridAxes(o, {19.9998, 9.9999, 9.9999}));
   o.min_mm = {0.0001, 0, 0};
-  EXPECT_THROW(MakeGridSpec(o, {19.9998, 9.9999, 9.9999}), std::invalid_argument);
+  EXPECT_THROW(MakeGridAxes(o, {19.9998, 9.9999, 9.9999}), std::invalid_argument);
 }
 
 // Each refusal says which check refused, as a type the command line can act on (the hint of

@@ -19,7 +19,7 @@ namespace {
 
 // Readings of `machine` at a lattice 0..X every h mm (x fastest).
 TrackerLatticeData Sample(const std::function<Vec3(const Vec3&)>& machine,
-                          const GridSpec& lattice) {
+                          const GridAxes& lattice) {
   TrackerLatticeData d;
   d.name = "sampled";
   d.lattice = lattice;
@@ -35,7 +35,7 @@ TrackerLatticeData Sample(const std::function<Vec3(const Vec3&)>& machine,
   return d;
 }
 
-const GridSpec kLattice = {GridAxis{0, 40, 6}, GridAxis{-20, 30, 5}, GridAxis{0, 50, 3}};
+const GridAxes kLattice = {GridAxis{0, 40, 6}, GridAxis{-20, 30, 5}, GridAxis{0, 50, 3}};
 
 // A machine with squareness-like shear, a scale error and a cross-axis term z += k·x·y, which is
 // multilinear: trilinear interpolation reproduces it exactly, the three-line methods cannot (their

@@ -72,7 +72,7 @@ Snapshot Take(canopen_client::CanSession& s, bool axes_detail) {
 
 const char* kCounterNames[] = {
     "can_rx_frames", "can_tx_frames",    "malformed_frames", "sdo_aborts",      "emcy_sent",
-    "ticks",         "lost_step_checks", "max_tick_cost_ns", "refused_actions", "emcy_suppressed"};
+    "ticks",         "output_overruns", "max_tick_cost_ns", "refused_actions", "emcy_suppressed"};
 static_assert(sizeof(kCounterNames) / sizeof(kCounterNames[0]) == kCounterCount,
               "one name per counter of 0x2140");
 

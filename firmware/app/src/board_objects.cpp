@@ -241,7 +241,7 @@ bool BoardObjects::ReadNumber(const ObjectEntry& e, uint32_t* v) const {
     case ObjectId::kTicks:
       *v = static_cast<uint32_t>(eng.ticks());
       return true;
-    case ObjectId::kLostStepChecks:
+    case ObjectId::kOutputOverruns:
       *v = control_->output_status().overruns;
       return true;
     case ObjectId::kMaxTickCost:

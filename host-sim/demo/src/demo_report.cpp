@@ -154,7 +154,7 @@ SimStatus WriteWornData(const DemoResult& r, const std::string& dir) {
     }
     VOLCOMP_SIM_TRY(WriteText(dir + "/data/axis_" + axis + ".csv", csv));
   }
-  const model::GridSpec& g = r.lattice.lattice;
+  const model::GridAxes& g = r.lattice.lattice;
   std::string csv = "x_cmd_mm,y_cmd_mm,z_cmd_mm,x_mm,y_mm,z_mm\n";
   size_t n = 0;
   for (uint32_t k = 0; k < g[2].nodes; ++k) {

@@ -253,7 +253,7 @@ SimResult<model::GridSection> BuildModelGrid(Session& s, DemoResult& r) {
   model::GridSection grid =
       model::BuildGridSection(LatticeOptions(s.layout.lo, s.layout.hi, {h, h, h}, s.step_mm()),
                               ImageAxes(s.step_mm()), model::ModelGridSource(r.measured_model));
-  const model::GridSpec& g = grid.build.grid.axes;
+  const model::GridAxes& g = grid.build.grid.axes;
   s.progress.Line(
       "source: the measured six error motions of each axis (18 functions; the three "
       "squareness angles are in the straightness slopes) = a 21-parameter model, "

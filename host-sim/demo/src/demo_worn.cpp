@@ -146,7 +146,7 @@ SimResult<model::GridSection> MeasureTrackerLattice(Session& s,
     const double spacing = std::floor(span / cells * 1e3 + 1e-6) / 1e3;
     data.lattice[a] = {s.layout.lo[a] + q, spacing, static_cast<uint32_t>(cells) + 1};
   }
-  const model::GridSpec& g = data.lattice;
+  const model::GridAxes& g = data.lattice;
   // Serpentine order (short moves), the reference point first as the tracker's datum.
   std::vector<Point3> points = {s.layout.reference};
   std::vector<size_t> index;
@@ -185,7 +185,7 @@ SimResult<model::GridSection> MeasureTrackerLattice(Session& s,
       LatticeOptions(s.layout.lo, s.layout.hi, {gs, gs, gs}, s.step_mm()), ImageAxes(s.step_mm()),
       model::TrackerLatticeThroughGridSource(model::TrackerLattice(data),
                                              model::GridOfImage(table_in_force, "table 2")));
-  const model::GridSpec& gg = grid.build.grid.axes;
+  const model::GridAxes& gg = grid.build.grid.axes;
   char b[400];
   std::snprintf(b, sizeof b,
                 "%ux%ux%u nodes every ~%.0f mm (%zu readings in pairs, %.0f s of machine time); "

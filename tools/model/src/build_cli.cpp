@@ -248,7 +248,7 @@ WrittenImage WriteGridImage(GridCommand& command,
   image::ImageRequest& req = command.request;
   req.grid = ToGridCorrections(r.grid, req.axes);
   for (const auto& [k, v] : info) req.info.emplace(k, v);
-  const GridSpec& g = r.grid.axes;
+  const GridAxes& g = r.grid.axes;
   req.info.emplace("lattice_mm", Num(g[0].origin_mm) + ":" + Num(g[0].spacing_mm) + ":" +
                                      Num(g[0].end_mm()) + "," + Num(g[1].origin_mm) + ":" +
                                      Num(g[1].spacing_mm) + ":" + Num(g[1].end_mm()) + "," +
@@ -284,7 +284,7 @@ struct GridReport {
 
 void ReportGridJson(const GridReport& report, std::ostream& out) {
   const auto& [command, r, checked_inverse, info, img] = report;
-  const GridSpec& g = r.grid.axes;
+  const GridAxes& g = r.grid.axes;
   tools::JsonWriter w(out);
   w.begin_object();
   w.key("image").value(command.output);
@@ -337,7 +337,7 @@ void ReportGridJson(const GridReport& report, std::ostream& out) {
 
 void ReportGridText(const GridReport& report, std::ostream& out) {
   const auto& [command, r, checked_inverse, info, img] = report;
-  const GridSpec& g = r.grid.axes;
+  const GridAxes& g = r.grid.axes;
   for (const auto& [k, v] : info) out << "  " << k << ": " << v << "\n";
   for (std::size_t a = 0; a < 3; ++a) {
     out << "  lattice "

@@ -70,7 +70,7 @@ Vec3 CorrectionGrid::Interpolate(const Vec3& p_mm) const {
   return out;
 }
 
-CorrectionGrid SampleGrid(const GridSpec& spec,
+CorrectionGrid SampleGrid(const GridAxes& spec,
                           const InverseMap& inverse,
                           const ForwardMap* forward,
                           GridSampleStats* stats) {
@@ -146,8 +146,8 @@ InterpolationReport PredictInterpolationError(const CorrectionGrid& grid,
   return r;
 }
 
-GridSpec MakeGridSpec(const GridBuildOptions& options, const std::array<double, 3>& spacing_mm) {
-  GridSpec spec;
+GridAxes MakeGridAxes(const GridBuildOptions& options, const std::array<double, 3>& spacing_mm) {
+  GridAxes spec;
   for (int a = 0; a < 3; ++a) {
     const std::size_t ua = static_cast<std::size_t>(a);
     const char name = "XYZ"[a];
@@ -203,7 +203,7 @@ GridBuildResult BuildCorrectionGrid(const GridBuildOptions& options,
         h[a] = SnapToSteps(options.natural_spacing_mm[a], options.step_mm[a]);
       }
     }
-    const GridSpec spec = MakeGridSpec(options, h);
+    const GridAxes spec = MakeGridAxes(options, h);
     result.grid = SampleGrid(spec, inverse, forward, &result.stats);
     result.interpolation = PredictInterpolationError(result.grid, inverse);
     result.tried.push_back({h, result.interpolation.max_um});
@@ -219,9 +219,9 @@ GridBuildResult BuildCorrectionGrid(const GridBuildOptions& options,
       }
       if (h == prev) continue;
       prev = h;
-      GridSpec spec;
+      GridAxes spec;
       try {
-        spec = MakeGridSpec(options, h);
+        spec = MakeGridAxes(options, h);
       } catch (const std::invalid_argument&) {
         break;  // finer spacings only get larger
       }

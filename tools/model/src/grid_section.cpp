@@ -23,7 +23,7 @@ GridSection BuildGridSection(const GridBuildOptions& options,
   s.build = BuildCorrectionGrid(options, source.inverse, source.forward_or_null());
   s.section = ToGridCorrections(s.build.grid, axes);
   s.info = source.info;
-  const GridSpec& g = s.build.grid.axes;
+  const GridAxes& g = s.build.grid.axes;
   std::string lattice;
   for (std::size_t a = 0; a < 3; ++a) {
     if (a > 0) lattice += ",";

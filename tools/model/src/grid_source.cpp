@@ -90,7 +90,7 @@ GridSource TrackerLinesGridSource(const TrackerData& data,
 
 GridSource TrackerLatticeGridSource(const TrackerLattice& lattice) {
   GridSource s;
-  const GridSpec& g = lattice.data().lattice;
+  const GridAxes& g = lattice.data().lattice;
   for (std::size_t a = 0; a < 3; ++a) {
     s.min_mm[a] = g[a].origin_mm;
     s.max_mm[a] = g[a].end_mm();

@@ -49,7 +49,7 @@ TrackerLatticeData TrackerLatticeFromCsv(const CsvTable& csv) {
   d.name = csv.source();
   for (int a = 0; a < 3; ++a)
     d.lattice[static_cast<std::size_t>(a)] = AxisOf(csv, values[a], "XYZ"[a]);
-  const GridSpec& g = d.lattice;
+  const GridAxes& g = d.lattice;
   const std::size_t total = static_cast<std::size_t>(g[0].nodes) * g[1].nodes * g[2].nodes;
   d.position_mm.assign(total, Vec3{});
   std::vector<std::size_t> line_of(total, 0);
@@ -101,7 +101,7 @@ TrackerLattice::TrackerLattice(TrackerLatticeData data) : data_(std::move(data))
 }
 
 Vec3 TrackerLattice::Position_mm(const Vec3& command_mm) const {
-  const GridSpec& g = data_.lattice;
+  const GridAxes& g = data_.lattice;
   uint32_t cell[3];
   double f[3];
   for (int a = 0; a < 3; ++a) {

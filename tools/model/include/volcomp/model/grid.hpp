@@ -26,7 +26,7 @@ struct GridAxis {
   uint32_t nodes = 2;
   double end_mm() const { return origin_mm + spacing_mm * (nodes - 1); }
 };
-using GridSpec = std::array<GridAxis, 3>;
+using GridAxes = std::array<GridAxis, 3>;
 
 /// The command for a target (the inverse map), mm.
 using InverseMap = std::function<Vec3(const Vec3& target_mm)>;
@@ -35,7 +35,7 @@ using ForwardMap = std::function<Vec3(const Vec3& command_mm)>;
 
 /// Corrections at the nodes of a lattice, x fastest: index (k·ny + j)·nx + i.
 struct CorrectionGrid {
-  GridSpec axes;
+  GridAxes axes;
   std::vector<Vec3> correction_mm;
 
   std::size_t Index(uint32_t i, uint32_t j, uint32_t k) const {
@@ -53,7 +53,7 @@ struct GridSampleStats {
 };
 
 /// Evaluates the inverse at every node. With a forward map, also verifies each node.
-CorrectionGrid SampleGrid(const GridSpec& spec,
+CorrectionGrid SampleGrid(const GridAxes& spec,
                           const InverseMap& inverse,
                           const ForwardMap* forward = nullptr,
                           GridSampleStats* stats = nullptr);
@@ -103,7 +103,7 @@ struct GridBuildResult {
 
 /// Lays out the lattice for a spacing: origin = min, nodes to cover max, everything in whole
 /// steps; throws std::invalid_argument with the reason (e.g. spacing not a whole number of steps).
-GridSpec MakeGridSpec(const GridBuildOptions& options, const std::array<double, 3>& spacing_mm);
+GridAxes MakeGridAxes(const GridBuildOptions& options, const std::array<double, 3>& spacing_mm);
 
 /// Why BuildCorrectionGrid refused the data.
 enum class GridRefusal : uint8_t {
@@ -126,7 +126,7 @@ class GridBuildError : public std::runtime_error {
 /// Builds the grid: explicit spacing, or the automatic choice, then the checks. Throws
 /// GridBuildError when a node's correction exceeds the bound, an inverse misses its target by
 /// more than max_residual_um, or no spacing within the node limits reaches max_interp_error_um;
-/// std::invalid_argument (MakeGridSpec) for a lattice that cannot be laid out.
+/// std::invalid_argument (MakeGridAxes) for a lattice that cannot be laid out.
 GridBuildResult BuildCorrectionGrid(const GridBuildOptions& options,
                                     const InverseMap& inverse,
                                     const ForwardMap* forward = nullptr);

@@ -10,7 +10,7 @@
 namespace volcomp::model {
 
 /// The GRID3 of a correction grid for image axes `axes` (component/dimension c ↔ axes[c], linear,
-/// mm). Origin and spacing must be whole steps (MakeGridSpec guarantees it); corrections are
+/// mm). Origin and spacing must be whole steps (MakeGridAxes guarantees it); corrections are
 /// converted to steps of their component's axis. Throws tools::InputError otherwise.
 image::GridCorrections ToGridCorrections(const CorrectionGrid& grid,
                                          const std::vector<image::AxisDef>& axes);

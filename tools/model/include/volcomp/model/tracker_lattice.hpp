@@ -29,7 +29,7 @@ namespace volcomp::model {
 
 struct TrackerLatticeData {
   std::string name;
-  GridSpec lattice;               // the commanded nodes
+  GridAxes lattice;               // the commanded nodes
   std::vector<Vec3> position_mm;  // reading at each node, x fastest (CorrectionGrid order)
 };
 

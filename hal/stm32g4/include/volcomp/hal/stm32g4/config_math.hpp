@@ -1,5 +1,5 @@
 // Pure computations behind the STM32G474 drivers (no register access, host-tested in
-// tests/stm32g4/): PLL and flash wait states, FDCAN bit timing and instances, the tick timer's
+// tests/hal/): PLL and flash wait states, FDCAN bit timing and instances, the tick timer's
 // period, the step I/O timer setup for a board configuration, the flash layout, and the timer
 // settings that execute one PulsePlan. The drivers program exactly what these return, so the
 // configuration path (settings in force -> register values) is checked on the host.

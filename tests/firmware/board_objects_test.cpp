@@ -318,7 +318,7 @@ TEST_F(Bench, DiagnosticsAndIdentity) {
   EXPECT_EQ(std::string(name.data.begin(), name.data.end()), "volcomp");
   EXPECT_GT(Read(ObjectId::kCanRxFrames), 0u);
   EXPECT_GT(Read(ObjectId::kTicks), 100u);
-  EXPECT_EQ(Read(ObjectId::kLostStepChecks), 0u);
+  EXPECT_EQ(Read(ObjectId::kOutputOverruns), 0u);
   EXPECT_EQ(Read(ObjectId::kEmcySuppressed), 0u);
   // Heartbeat: 1000 ms by default, state pre-operational.
   sent_.clear();
