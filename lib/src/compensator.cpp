@@ -93,7 +93,7 @@ void Compensator::Rebase(const int32_t* machine_pos_steps) {
     last_pos_[a] = machine_pos_steps[a];
     if (has_table_ && wraps_[a]) {
       const AxisLookup& t = *axis_lookup_[a];
-      wrap_[a].Init(machine_pos_steps[a], t.origin_steps(), t.period_steps());
+      wrap_[a].Init(machine_pos_steps[a], t.origin_steps(), t.period_divider());
     }
   }
 }

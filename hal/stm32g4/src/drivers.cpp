@@ -213,11 +213,12 @@ void StepIo::ReadCounters(uint32_t* counters) {
 
 void StepIo::Apply(const PulsePlan* plans) {
   for (uint8_t a = 0; a < axes_; ++a) {
-    const Result<PulseTimerSettings> s = PlanToTimer(plans[a], tick_clocks_, kOutputTimerBits);
-    if (!s.ok()) {
+    PulseTimerSettings settings;
+    if (!PlanToTimerInto(plans[a], tick_clocks_, kOutputTimerBits, &settings)) {
       ++rejected_;
       continue;
     }
+    const PulseTimerSettings* const s = &settings;
     if (!s->run) continue;
     const uintptr_t t = kOutput[a].base;
     // First period into the active registers (UG while stopped), the rest into the preloads;
