@@ -238,6 +238,8 @@ class Insn:
         return False
 
     def is_return(self):
+        if self.mn == "ldr" and "pc" in self.dst and "sp" not in self.addr_regs:
+            return False  # a jump through a loaded address (a linker veneer), not a return
         return (self.mn == "bx" and "lr" in self.src) or self.writes_pc()
 
     def is_branch(self):
@@ -512,6 +514,10 @@ class StaticAnalyzer:
         addrs = self.function_insns(func)
         if not addrs:
             raise SystemExit("cm4cost: no code for %s" % func)
+        if func.endswith("_veneer"):
+            raise SystemExit("cm4cost: %s calls %s: a linker veneer to code outside the hot "
+                             "range (toolchain/hot-sections.ld)" % (stack[-1] if stack else "?",
+                                                                   func))
         insns = self.image.insns
         addrset = set(addrs)
         entry = self.image.symbols[func]
@@ -751,6 +757,7 @@ def cmd_check(args):
         elf, sym = rest.rsplit(":", 1)
         also.append((glob, elf, sym))
     notes = []
+    flash_data = parse_bounds(args.flash_data)
     budgets = parse_bounds(args.budget)
     targets = parse_bounds(args.target)
     rows, failed = [], False
@@ -789,6 +796,13 @@ def cmd_check(args):
                              (", + lazy FPU stacking %d and unstacking %d (the ISR's code uses "
                               "FPU registers)" % (FPU_LAZY_SAVE, FPU_RESTORE)) if fpu else
                              " (the ISR's code uses no FPU register: no FPU stacking)"))
+        for glob, extra_cycles in flash_data:
+            if fnmatch.fnmatch(name, glob):
+                ups = [x + extra_cycles for x in ups]
+                static += extra_cycles
+                notes.append("%s: + %d cycles for table data read from flash (4 wait states at "
+                             "170 MHz on ART data-cache misses; upper and static bounds)"
+                             % (name, extra_cycles))
         budget = next((b for g, b in budgets if fnmatch.fnmatch(name, g)), None)
         target = next((b for g, b in targets if fnmatch.fnmatch(name, g)), None)
         worst = max(max(ups), static)
@@ -947,6 +961,9 @@ def main():
                    help="GLOB: the scenario is a whole interrupt (exception entry/exit added)")
     c.add_argument("--also-static", action="append",
                    help="GLOB=ELF:SYMBOL: also price SYMBOL in ELF statically, keep the larger")
+    c.add_argument("--flash-data", action="append",
+                   help="GLOB=CYCLES: flash wait states of the scenario's table reads, added to "
+                        "the upper and static bounds")
     c.add_argument("--json")
     c.add_argument("--markdown")
     s = sub.add_parser("static")

@@ -179,9 +179,7 @@ class BoardApp final : private BoardControl {
       }
     }
     const uint8_t refs = pending_reference_.exchange(0, std::memory_order_acquire);
-    for (uint8_t a = 0; a < engine_.axis_count(); ++a) {
-      if ((refs & (1u << a)) != 0) engine_.Reference(a);
-    }
+    if (refs != 0) engine_.ReferenceAxes(refs);
     if (pending_unreference_.exchange(false, std::memory_order_acquire)) engine_.Unreference();
     engine_.compensator().SetEnabled(enabled_.load(std::memory_order_relaxed));
     engine_.compensator().SetFault(fault_flag_.load(std::memory_order_relaxed));
