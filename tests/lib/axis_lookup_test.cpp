@@ -125,8 +125,8 @@ TEST(WrapTracker, InitWithAPreparedDivisorIsTheModuloOfTheDifference) {
     if (o < 0) o += period;
     return static_cast<int32_t>(static_cast<uint32_t>(origin) + static_cast<uint32_t>(o));
   };
-  const int32_t edges[] = {INT32_MIN, INT32_MIN + 1, -3000, -2999, -1, 0, 1, 2999, 3000,
-                           INT32_MAX - 1, INT32_MAX};
+  const int32_t edges[] = {INT32_MIN, INT32_MIN + 1, -3000, -2999,         -1,       0,
+                           1,         2999,          3000,  INT32_MAX - 1, INT32_MAX};
   const uint32_t periods[] = {1, 2, 3, 3000, 65537, 0x7FFFFFFFu};
   std::mt19937 rng(5);
   for (const uint32_t period : periods) {

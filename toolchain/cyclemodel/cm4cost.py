@@ -31,6 +31,10 @@ Usage:
     --target   reported only: the design budget, shown next to the figures (met / OVER)
     --loop-bound PREFIX=N   every loop of the functions named PREFIX* runs its body at most N times
     --unaligned-loads PREFIX   word loads of PREFIX* functions may be halfword aligned (+1 upper)
+    --isr GLOB   the scenario is a whole interrupt: exception entry/exit (+ lazy FPU stacking
+                 when its code uses FPU registers) added
+    --flash-data GLOB=CYCLES   wait states of its table reads from flash, added (upper, static)
+    --also-static GLOB=ELF:SYMBOL   price SYMBOL in another image too; the larger static counts
   cm4cost.py static --elf IMAGE --function SYMBOL_PREFIX [--loop-bound PREFIX=N]
                     [--unaligned-loads PREFIX ...]
   cm4cost.py selftest

@@ -29,10 +29,10 @@ struct UploadBenchResult {
   double limit_s = 0;     // ideal exchange of the same payload on the same bus
   double rate_bytes_s = 0;
   double limit_bytes_s = 0;
-  double efficiency = 0;  // limit_s / transfer_s
+  double efficiency = 0;       // limit_s / transfer_s
   double ceiling_bytes_s = 0;  // NoStuffingCeilingBytesPerS(bitrate)
   double ceiling_share = 0;    // rate_bytes_s / ceiling_bytes_s
-  uint64_t frames = 0;    // frames on the bus during the transfer
+  uint64_t frames = 0;         // frames on the bus during the transfer
   uint32_t resent_segments = 0;
   bool activated = false;
   uint32_t active_crc = 0;
