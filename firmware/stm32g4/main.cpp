@@ -10,6 +10,7 @@
 #include "cm4_runtime.hpp"
 #include "volcomp/firmware/board_app.hpp"
 #include "volcomp/firmware/step_dir_io.hpp"
+#include "volcomp/firmware/stm32g4/tick_isr.hpp"
 #include "volcomp/hal/stm32g4/drivers.hpp"
 
 namespace {
@@ -45,8 +46,7 @@ App g_app({&g_tick_io, &g_io, &g_tables, &g_settings, &g_can, &g_clock, &g_tick}
 
 // The control tick (vector TIM6_DAC), placed in CCM SRAM through its section name.
 extern "C" __attribute__((section(".volcomp_hot.tick_isr"))) void volcomp_tick_isr() {
-  volcomp::stm32g4::TickTimerAcknowledge();
-  g_app.Tick();
+  volcomp::firmware::stm32g4::RunTickIsr(g_app);
 }
 
 int main() {

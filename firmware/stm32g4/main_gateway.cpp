@@ -15,6 +15,7 @@
 #include "cm4_runtime.hpp"
 #include "volcomp/csp_gateway.hpp"
 #include "volcomp/firmware/gateway_app.hpp"
+#include "volcomp/firmware/stm32g4/tick_isr.hpp"
 #include "volcomp/hal/stm32g4/drivers.hpp"
 
 namespace {
@@ -64,8 +65,7 @@ volcomp::firmware::GatewayApp g_app({&g_controller, &g_drives, &g_io, &g_tables,
 
 // The control tick (vector TIM6_DAC), placed in CCM SRAM through its section name.
 extern "C" __attribute__((section(".volcomp_hot.tick_isr"))) void volcomp_tick_isr() {
-  stm32g4::TickTimerAcknowledge();
-  g_app.Tick();
+  volcomp::firmware::stm32g4::RunTickIsr(g_app);
 }
 
 int main() {

@@ -14,6 +14,7 @@ Status AxisLookup::Init(const table::Axis1dView& view) {
   backlash_q8_ = view.backlash_q8;
   frac_bits_ = view.frac_bits;
   period_steps_ = view.period_steps;
+  period_divider_.Init(view.period_steps == 0 ? 1u : view.period_steps);
   origin_steps_ = view.dim.origin_steps;
   axis_ = view.axis;
   type_ = view.type;
@@ -52,11 +53,20 @@ int32_t AxisLookup::Lookup(int32_t pos_steps, bool reverse) const {
 }
 
 void WrapTracker::Init(int32_t pos_steps, int32_t origin_steps, uint32_t period_steps) {
-  period_ = period_steps == 0 ? 1u : period_steps;
+  InvariantDivider d;
+  d.Init(period_steps == 0 ? 1u : period_steps);
+  Init(pos_steps, origin_steps, d);
+}
+
+void WrapTracker::Init(int32_t pos_steps, int32_t origin_steps, const InvariantDivider& period) {
+  period_ = period.divisor();
   origin_ = origin_steps;
-  int64_t o = (static_cast<int64_t>(pos_steps) - origin_) % static_cast<int64_t>(period_);
-  if (o < 0) o += period_;
-  offset_ = static_cast<uint32_t>(o);
+  // pos - origin lies in (-2^32, 2^32): its magnitude and sign in 32 bits, the remainder of the
+  // magnitude by the prepared divisor, mirrored into [0, period) for a negative difference.
+  const bool below = pos_steps < origin_steps;
+  const uint32_t p = static_cast<uint32_t>(pos_steps), o = static_cast<uint32_t>(origin_steps);
+  const uint32_t r = period.Divide(below ? o - p : p - o).remainder;
+  offset_ = below && r != 0 ? period_ - r : r;
 }
 
 }  // namespace volcomp

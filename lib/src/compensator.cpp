@@ -66,15 +66,17 @@ void Compensator::SetTable(const PreparedTable& table, const int32_t* machine_po
 
 void Compensator::UseTable(const PreparedTable* table, const int32_t* machine_pos_steps) {
   table_ = table;
-  for (int8_t& c : grid_component_of_) c = -1;
+  // Only the configured axes' entries are ever read (Configure() drops the table).
+  const uint32_t n = axis_count_;
+  for (uint32_t a = 0; a < n; ++a) {
+    grid_component_of_[a] = -1;
+    const int8_t i = table_->axis_table_of[a];
+    axis_lookup_[a] = i >= 0 ? &table_->axis_table[i] : nullptr;
+    wraps_[a] = axis_lookup_[a] != nullptr && axis_lookup_[a]->wraps();
+  }
   grid_ = table_->has_grid ? &table_->grid : nullptr;
   if (grid_ != nullptr) {
     for (int8_t c = 0; c < 3; ++c) grid_component_of_[grid_->axis(c)] = c;
-  }
-  for (uint8_t a = 0; a < table::kMaxAxes; ++a) {
-    const int8_t i = a < axis_count_ ? table_->axis_table_of[a] : int8_t{-1};
-    axis_lookup_[a] = i >= 0 ? &table_->axis_table[i] : nullptr;
-    wraps_[a] = axis_lookup_[a] != nullptr && axis_lookup_[a]->wraps();
   }
   has_table_ = true;
   UpdateEngaged();
@@ -84,7 +86,7 @@ void Compensator::UseTable(const PreparedTable* table, const int32_t* machine_po
 void Compensator::ClearTable() {
   has_table_ = false;
   UpdateEngaged();
-  for (bool& w : wraps_) w = false;
+  for (uint32_t a = 0; a < axis_count_; ++a) wraps_[a] = false;
 }
 
 void Compensator::Rebase(const int32_t* machine_pos_steps) {
@@ -93,7 +95,7 @@ void Compensator::Rebase(const int32_t* machine_pos_steps) {
     last_pos_[a] = machine_pos_steps[a];
     if (has_table_ && wraps_[a]) {
       const AxisLookup& t = *axis_lookup_[a];
-      wrap_[a].Init(machine_pos_steps[a], t.origin_steps(), t.period_steps());
+      wrap_[a].Init(machine_pos_steps[a], t.origin_steps(), t.period_divider());
     }
   }
 }

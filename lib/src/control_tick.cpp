@@ -26,13 +26,23 @@ void ControlTick::LatchCounters(const uint32_t* input_counters) {
 }
 
 void ControlTick::Reference(uint8_t axis) {
-  if (axis >= axis_count_) return;
-  reference_offset_[axis] =
-      static_cast<int32_t>(static_cast<uint32_t>(config_.axis[axis].home_position_steps) -
-                           static_cast<uint32_t>(commanded_[axis]));
-  machine_[axis] = config_.axis[axis].home_position_steps;
+  if (axis < axis_count_) ReferenceAxes(1u << axis);
+}
+
+void ControlTick::ReferenceAxes(uint32_t axis_mask) {
+  uint32_t done = 0;
+  for (uint32_t a = 0; a < axis_count_; ++a) {
+    if ((axis_mask & (1u << a)) == 0) continue;
+    reference_offset_[a] =
+        static_cast<int32_t>(static_cast<uint32_t>(config_.axis[a].home_position_steps) -
+                             static_cast<uint32_t>(commanded_[a]));
+    machine_[a] = config_.axis[a].home_position_steps;
+    referenced_[a] = true;
+    done |= 1u << a;
+  }
+  if (done == 0) return;
+  // One rebase for every axis referenced at once (the same state as one Reference() per axis).
   compensator_.Rebase(machine_);
-  referenced_[axis] = true;
   compensator_.SetReferenced(all_referenced());
 }
 

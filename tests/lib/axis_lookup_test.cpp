@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdint>
 #include <random>
 
 #include "test_tables.hpp"
@@ -115,6 +116,37 @@ TEST(AxisLookup, RotaryWrapTableIsContinuousAcrossTheSeam) {
   EXPECT_NEAR(before, -5 * 256, 256);
   EXPECT_NEAR(after, 10 * 256, 256);
   EXPECT_EQ(lookup.Lookup(0, false), lookup.Lookup(3000, false));
+}
+
+TEST(WrapTracker, InitWithAPreparedDivisorIsTheModuloOfTheDifference) {
+  // Oracle: 64-bit remainder, made non-negative.
+  const auto expected = [](int32_t pos, int32_t origin, uint32_t period) {
+    int64_t o = (int64_t{pos} - origin) % int64_t{period};
+    if (o < 0) o += period;
+    return static_cast<int32_t>(static_cast<uint32_t>(origin) + static_cast<uint32_t>(o));
+  };
+  const int32_t edges[] = {INT32_MIN, INT32_MIN + 1, -3000, -2999,         -1,       0,
+                           1,         2999,          3000,  INT32_MAX - 1, INT32_MAX};
+  const uint32_t periods[] = {1, 2, 3, 3000, 65537, 0x7FFFFFFFu};
+  std::mt19937 rng(5);
+  for (const uint32_t period : periods) {
+    InvariantDivider d;
+    d.Init(period);
+    for (const int32_t pos : edges) {
+      for (const int32_t origin : edges) {
+        WrapTracker w;
+        w.Init(pos, origin, d);
+        ASSERT_EQ(w.position(), expected(pos, origin, period))
+            << pos << " " << origin << " " << period;
+      }
+    }
+    for (int i = 0; i < 2000; ++i) {
+      const auto pos = static_cast<int32_t>(rng()), origin = static_cast<int32_t>(rng());
+      WrapTracker w;
+      w.Init(pos, origin, d);
+      ASSERT_EQ(w.position(), expected(pos, origin, period));
+    }
+  }
 }
 
 }  // namespace

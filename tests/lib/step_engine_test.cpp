@@ -213,6 +213,46 @@ INSTANTIATE_TEST_SUITE_P(Formats,
                                            PulseFormat::kCwCcw,
                                            PulseFormat::kQuadrature));
 
+TEST(StepEngineReference, SeveralAxesAtOnceEqualOneAxisAtATime) {
+  std::mt19937_64 rng(11);
+  BoardConfig cfg = DefaultBoardConfig();
+  for (int a = 0; a < 3; ++a) cfg.axis[a].home_position_steps = 1000 * (a + 1);
+  const testing::GridCase grid = SteepGrid(rng);
+  const testing::AlignedBytes img = testing::WriteGridImage(grid);
+  const auto view = table::ParseImage(img.data(), img.size());
+  ControlTick one, all;
+  PreparedTable table;
+  ASSERT_TRUE(table.Prepare(*view, cfg).ok());
+  const int32_t zero[3] = {0, 0, 0};
+  for (ControlTick* e : {&one, &all}) {
+    ASSERT_TRUE(e->Configure(cfg).ok());
+    e->compensator().SetTable(table, zero);
+    e->compensator().SetEnabled(true);
+  }
+  uint32_t counters[3] = {0, 0, 0};
+  for (int t = 0; t < 300; ++t) {
+    for (int a = 0; a < 3; ++a) counters[a] += static_cast<uint32_t>(a + 1) * 7u;
+    if (t == 20) {  // axes 0 and 2 (and a bit of an axis the board does not have)
+      one.Reference(0);
+      one.Reference(2);
+      all.ReferenceAxes(0x85u);
+    }
+    if (t == 40) {
+      one.Reference(1);
+      all.ReferenceAxes(0x2u);
+    }
+    one.Run(counters);
+    all.Run(counters);
+    for (uint8_t a = 0; a < 3; ++a) {
+      ASSERT_EQ(one.referenced(a), all.referenced(a)) << t;
+      ASSERT_EQ(one.machine_position(a), all.machine_position(a)) << t;
+      ASSERT_EQ(one.target(a), all.target(a)) << t;
+      ASSERT_EQ(one.compensator().target_q8(a), all.compensator().target_q8(a)) << t;
+    }
+  }
+  EXPECT_TRUE(all.compensator().engaged());
+}
+
 TEST(StepEngineMixed, SixteenBitCountersAndFormatConversion) {
   // Quadrature in, step/dir out, 16-bit hardware counters that wrap many times.
   const EngineRun r = RunEngine(PulseFormat::kQuadrature, PulseFormat::kStepDir, 16, 300000, 7);

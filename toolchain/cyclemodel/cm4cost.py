@@ -31,6 +31,10 @@ Usage:
     --target   reported only: the design budget, shown next to the figures (met / OVER)
     --loop-bound PREFIX=N   every loop of the functions named PREFIX* runs its body at most N times
     --unaligned-loads PREFIX   word loads of PREFIX* functions may be halfword aligned (+1 upper)
+    --isr GLOB   the scenario is a whole interrupt: exception entry/exit (+ lazy FPU stacking
+                 when its code uses FPU registers) added
+    --flash-data GLOB=CYCLES   wait states of its table reads from flash, added (upper, static)
+    --also-static GLOB=ELF:SYMBOL   price SYMBOL in another image too; the larger static counts
   cm4cost.py static --elf IMAGE --function SYMBOL_PREFIX [--loop-bound PREFIX=N]
                     [--unaligned-loads PREFIX ...]
   cm4cost.py selftest
@@ -238,6 +242,8 @@ class Insn:
         return False
 
     def is_return(self):
+        if self.mn == "ldr" and "pc" in self.dst and "sp" not in self.addr_regs:
+            return False  # a jump through a loaded address (a linker veneer), not a return
         return (self.mn == "bx" and "lr" in self.src) or self.writes_pc()
 
     def is_branch(self):
@@ -350,6 +356,11 @@ class Image:
         self.order = []
         self.symbols = {}
         self._disassemble()
+        # Function entry address -> name (tail-call targets).
+        self.entries = {}
+        for name, addr in self.symbols.items():
+            if addr in self.insns and self.insns[addr].func == name:
+                self.entries.setdefault(addr, name)
 
     def _disassemble(self):
         out = subprocess.run([OBJDUMP, "-d", "-w", elf_arg(self.elf)], check=True,
@@ -361,7 +372,7 @@ class Image:
                 func = m.group(2)
                 self.symbols.setdefault(func, int(m.group(1), 16))
                 continue
-            m = re.match(r"^\s+([0-9a-f]+):\s+((?:[0-9a-f]{4}\s)+)\s*(\S+)\s*(.*)$", line)
+            m = re.match(r"^\s*([0-9a-f]+):\s+((?:[0-9a-f]{4}\s)+)\s*(\S+)\s*(.*)$", line)
             if not m or func is None:
                 continue
             addr = int(m.group(1), 16)
@@ -478,6 +489,24 @@ class StaticAnalyzer:
                 return n
         return self.default_bound
 
+    def uses_fpu(self, func, seen=None):
+        """True when `func` or anything it calls executes an FPU instruction (VFP register use)."""
+        seen = set() if seen is None else seen
+        if func in seen:
+            return False
+        seen.add(func)
+        for a in self.function_insns(func):
+            i = self.image.insns[a]
+            if i.mn.startswith("v"):
+                return True
+            callee_entry = i.target if (i.mn in CALL or (i.mn in BRANCH and i.target in
+                                                          self.image.entries)) else None
+            if callee_entry is not None and callee_entry in self.image.insns:
+                callee = self.image.insns[callee_entry].func
+                if callee != func and self.uses_fpu(callee, seen):
+                    return True
+        return False
+
     def function_insns(self, func):
         return [a for a in self.image.order if self.image.insns[a].func == func]
 
@@ -489,11 +518,16 @@ class StaticAnalyzer:
         addrs = self.function_insns(func)
         if not addrs:
             raise SystemExit("cm4cost: no code for %s" % func)
+        if func.endswith("_veneer"):
+            raise SystemExit("cm4cost: %s calls %s: a linker veneer to code outside the hot "
+                             "range (toolchain/hot-sections.ld)" % (stack[-1] if stack else "?",
+                                                                   func))
         insns = self.image.insns
         addrset = set(addrs)
         entry = self.image.symbols[func]
         # Successors with edge kinds: (target, taken)
         succ = {}
+        tail = {}
         it_left = 0
         inside_it = {}
         for a in addrs:
@@ -512,9 +546,13 @@ class StaticAnalyzer:
                     raise SystemExit("cm4cost: indirect branch in %s: %r" % (func, i))
                 if i.target in addrset:
                     s.append((i.target, True))
+                elif i.target in self.image.entries:
+                    # Tail call: the callee returns to this function's caller. Priced as a call
+                    # whose return ends this path (the callee's worst path is added below).
+                    tail[a] = self.image.entries[i.target]
                 else:
-                    raise SystemExit("cm4cost: %s branches out of the function (tail call?) at %r"
-                                     % (func, i))
+                    raise SystemExit("cm4cost: %s branches out of the function into %x, which "
+                                     "is no function entry, at %r" % (func, i.target, i))
                 conditional = i.cond is not None or i.mn in CBZ or inside_it[a]
                 if conditional and nxt is not None:
                     s.append((nxt, False))
@@ -535,11 +573,13 @@ class StaticAnalyzer:
                 if callee is None:
                     raise SystemExit("cm4cost: call to unknown code from %s" % func)
                 extra[a] = self.worst(callee, stack + (func,))
+        for a, callee in tail.items():
+            extra[a] = self.worst(callee, stack + (func,))
 
         def node_cost(a, prev_a, taken_in):
             i = insns[a]
             prev = insns[prev_a] if prev_a is not None and not taken_in else None
-            taken = i.mn in CALL or i.is_return()
+            taken = i.mn in CALL or i.is_return() or a in tail
             return cost(i, prev, "upper", taken, inside_it[a]) + extra.get(a, 0)
 
         # Each node's cost depends on its predecessor (pipelining/AGU/FP terms); take the maximum
@@ -714,6 +754,14 @@ def cmd_check(args):
         raise SystemExit("cm4cost: %d scenarios but %d marks in the trace" % (len(scenarios),
                                                                              len(marks)))
     analyzer = StaticAnalyzer(image, parse_bounds(args.loop_bound))
+    isr_globs = args.isr or []
+    also = []
+    for item in args.also_static or []:
+        glob, rest = item.split("=", 1)
+        elf, sym = rest.rsplit(":", 1)
+        also.append((glob, elf, sym))
+    notes = []
+    flash_data = parse_bounds(args.flash_data)
     budgets = parse_bounds(args.budget)
     targets = parse_bounds(args.target)
     rows, failed = [], False
@@ -729,6 +777,36 @@ def cmd_check(args):
         ups = [price_path(image, c, "upper") for c in calls]
         insns = [len(c) for c in calls]
         static = analyzer.worst(sym)
+        for glob, elf, other in also:
+            if fnmatch.fnmatch(name, glob):
+                other_image = Image(elf)
+                other_sym, _ = other_image.symbol(other)
+                other_an = StaticAnalyzer(other_image, parse_bounds(args.loop_bound))
+                other_static = other_an.worst(other_sym)
+                notes.append("%s: static worst path of %s in %s: %d cycles (the bench's copy: "
+                             "%d); the row takes the larger" % (name, other_sym,
+                                                                os.path.basename(elf),
+                                                                other_static, static))
+                static = max(static, other_static)
+        if any(fnmatch.fnmatch(name, g) for g in isr_globs):
+            fpu = analyzer.uses_fpu(sym)
+            lo_x, up_x = exception_overhead(fpu)
+            lows = [x + lo_x for x in lows]
+            ups = [x + up_x for x in ups]
+            static += up_x
+            notes.append("%s: a whole interrupt: exception entry %d + exit %d cycles%s (lower "
+                         "bound: entry and exit only)" % (
+                             name, EXC_ENTRY, EXC_EXIT,
+                             (", + lazy FPU stacking %d and unstacking %d (the ISR's code uses "
+                              "FPU registers)" % (FPU_LAZY_SAVE, FPU_RESTORE)) if fpu else
+                             " (the ISR's code uses no FPU register: no FPU stacking)"))
+        for glob, extra_cycles in flash_data:
+            if fnmatch.fnmatch(name, glob):
+                ups = [x + extra_cycles for x in ups]
+                static += extra_cycles
+                notes.append("%s: + %d cycles for table data read from flash (4 wait states at "
+                             "170 MHz on ART data-cache misses; upper and static bounds)"
+                             % (name, extra_cycles))
         budget = next((b for g, b in budgets if fnmatch.fnmatch(name, g)), None)
         target = next((b for g, b in targets if fnmatch.fnmatch(name, g)), None)
         worst = max(max(ups), static)
@@ -743,12 +821,15 @@ def cmd_check(args):
             "target_met": target is None or worst <= target,
         })
     print_table(rows)
+    for n in notes:
+        print(n)
     if args.json:
         with open(args.json, "w") as f:
-            json.dump({"assumptions": ASSUMPTIONS, "rows": rows}, f, indent=1)
+            json.dump({"assumptions": ASSUMPTIONS, "rows": rows, "notes": notes}, f, indent=1)
     if args.markdown:
         with open(args.markdown, "w") as f:
             f.write(markdown(rows))
+            f.write("".join("\n" + n + "\n" for n in notes))
     missed = [r["scenario"] for r in rows if not r["target_met"]]
     if missed:
         print("cm4cost: design budget NOT met (reported, not asserted): " + ", ".join(missed))
@@ -757,6 +838,21 @@ def cmd_check(args):
         return 1
     print("cm4cost: all hot paths within their asserted ceilings")
     return 0
+
+
+# A whole interrupt (--isr): Cortex-M4 exception entry (stacking 8 words, vector fetch) 12 cycles
+# and return 10 (TRM r0p1 §5.5.1 latency figures, zero wait states); with an active FP context
+# in the interrupted code (CONTROL.FPCA) and lazy stacking (FPCCR.LSPEN, the reset default), an
+# ISR that uses FPU registers makes the core stack S0-S15 and FPSCR at its first FP instruction
+# (17 words + 1) and restore them at the return (17).
+EXC_ENTRY, EXC_EXIT = 12, 10
+FPU_LAZY_SAVE, FPU_RESTORE = 18, 17
+
+
+def exception_overhead(fpu):
+    """(lower, upper) cycles of an interrupt's entry and exit around its handler."""
+    upper = EXC_ENTRY + EXC_EXIT + ((FPU_LAZY_SAVE + FPU_RESTORE) if fpu else 0)
+    return EXC_ENTRY + EXC_EXIT, upper
 
 
 ASSUMPTIONS = ("Cortex-M4 r0p1 TRM cycle table; zero wait states (code and data); no interrupt "
@@ -865,6 +961,13 @@ def main():
     c.add_argument("--target", action="append")
     c.add_argument("--loop-bound", action="append")
     c.add_argument("--unaligned-loads", action="append")
+    c.add_argument("--isr", action="append",
+                   help="GLOB: the scenario is a whole interrupt (exception entry/exit added)")
+    c.add_argument("--also-static", action="append",
+                   help="GLOB=ELF:SYMBOL: also price SYMBOL in ELF statically, keep the larger")
+    c.add_argument("--flash-data", action="append",
+                   help="GLOB=CYCLES: flash wait states of the scenario's table reads, added to "
+                        "the upper and static bounds")
     c.add_argument("--json")
     c.add_argument("--markdown")
     s = sub.add_parser("static")

@@ -98,6 +98,7 @@ gateway::Route GatewayApp::OnDriveFrame(const CanFrame& frame) {
 }
 
 void GatewayApp::Tick() { app_.Tick(); }
+void GatewayApp::TimedTick() { app_.TimedTick(); }
 
 void GatewayApp::Poll() {
   app_.Poll();

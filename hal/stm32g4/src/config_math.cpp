@@ -108,31 +108,8 @@ Result<StepIoSetup> PlanStepIo(const BoardConfig& config, uint32_t timer_clock_h
 Result<PulseTimerSettings> PlanToTimer(const PulsePlan& plan,
                                        uint32_t tick,
                                        uint32_t counter_bits) {
-  const uint64_t max = (uint64_t{1} << counter_bits) - 1u;
   PulseTimerSettings s;
-  s.negative = plan.negative;
-  s.dir_change = plan.dir_change;
-  if (plan.count == 0 && !plan.dir_change) return s;
-  s.run = true;
-  s.dir_ccr = plan.dir_edge;
-  if (plan.count == 0) {
-    // Only the direction edge: one period covering it, no pulse.
-    s.first_arr = s.arr = plan.dir_edge + 1u;
-    s.first_ccr = s.ccr = 0;
-    s.rcr = 0;
-    if (s.first_arr > max || s.first_arr > tick) return Error::kConfigInvalid;
-    return s;
-  }
-  if (plan.width == 0 || plan.period <= plan.width || plan.count > 256u) {
-    return Error::kConfigInvalid;
-  }
-  s.pulse = true;
-  s.first_ccr = plan.first_rise;
-  s.first_arr = plan.first_rise + plan.width - 1u;
-  s.arr = plan.period - 1u;
-  s.ccr = plan.period - plan.width;
-  s.rcr = plan.count - 1u;
-  if (s.first_arr > max || s.arr > max) return Error::kConfigInvalid;
+  if (!PlanToTimerInto(plan, tick, counter_bits, &s)) return Error::kConfigInvalid;
   return s;
 }
 

@@ -18,8 +18,10 @@ struct InputTimer {
   Pin ti2;  // step (step/dir), CW (cw/ccw) or B (quadrature)
   uint8_t af;
 };
+// The timer tables are read by the tick (StepIo::ReadCounters/Apply): tick data in CCM SRAM
+// (zero wait states; from flash a read may wait 4 cycles on an ART data-cache miss).
 // Counter widths: kInputCounterBits (config_math.hpp).
-constexpr InputTimer kInput[StepIo::kAxes] = {
+__attribute__((section(".ccm_data.step_io_input"))) constexpr InputTimer kInput[StepIo::kAxes] = {
     {kTim2Base, {0, 15}, {1, 3}, 1},  // X: TIM2 CH1 PA15, CH2 PB3 (AF1), 32-bit
     {kTim5Base, {0, 0}, {0, 1}, 2},   // Y: TIM5 CH1 PA0, CH2 PA1 (AF2), 32-bit
     {kTim3Base, {0, 6}, {0, 7}, 2},   // Z: TIM3 CH1 PA6, CH2 PA7 (AF2), 16-bit
@@ -32,7 +34,8 @@ struct OutputTimer {
   uint8_t af;
   uint8_t trigger_itr;  // ITR input carrying TIM6 TRGO (RM0440 "internal trigger connection")
 };
-constexpr OutputTimer kOutput[StepIo::kAxes] = {
+__attribute__((
+    section(".ccm_data.step_io_output"))) constexpr OutputTimer kOutput[StepIo::kAxes] = {
     {kTim1Base, {0, 8}, {0, 9}, 6, 0},     // X: TIM1 CH1 PA8, CH2 PA9 (AF6)
     {kTim8Base, {2, 6}, {2, 7}, 4, 0},     // Y: TIM8 CH1 PC6, CH2 PC7 (AF4)
     {kTim15Base, {1, 14}, {1, 15}, 1, 0},  // Z: TIM15 CH1 PB14, CH2 PB15 (AF1)
@@ -213,11 +216,12 @@ void StepIo::ReadCounters(uint32_t* counters) {
 
 void StepIo::Apply(const PulsePlan* plans) {
   for (uint8_t a = 0; a < axes_; ++a) {
-    const Result<PulseTimerSettings> s = PlanToTimer(plans[a], tick_clocks_, kOutputTimerBits);
-    if (!s.ok()) {
+    PulseTimerSettings settings;
+    if (!PlanToTimerInto(plans[a], tick_clocks_, kOutputTimerBits, &settings)) {
       ++rejected_;
       continue;
     }
+    const PulseTimerSettings* const s = &settings;
     if (!s->run) continue;
     const uintptr_t t = kOutput[a].base;
     // First period into the active registers (UG while stopped), the rest into the preloads;

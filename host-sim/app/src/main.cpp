@@ -41,6 +41,10 @@ int BenchUpload(const std::vector<std::string>& args) {
   std::printf("  SDO-block limit %.3f s   %.1f kB/s   (same payload, no turnaround)\n", r.limit_s,
               r.limit_bytes_s / 1000);
   std::printf("  efficiency      %.1f %% of the limit\n", 100 * r.efficiency);
+  std::printf(
+      "  bus ceiling     %.1f kB/s   (8-byte frames, no stuff bits, 1 ack per 127 "
+      "segments): %.1f %% of it\n",
+      r.ceiling_bytes_s / 1000, 100 * r.ceiling_share);
   std::printf("  activated: %s, active CRC-32 0x%08X (image 0x%08X)\n", r.activated ? "yes" : "no",
               r.active_crc, r.image_crc);
   return r.active_crc == r.image_crc ? 0 : 1;

@@ -50,6 +50,11 @@ std::vector<uint8_t> BuildGridImage(uint32_t n) {
 
 }  // namespace
 
+double NoStuffingCeilingBytesPerS(uint32_t bitrate) {
+  constexpr double kFrameBits = 111, kSegmentBytes = 7, kSegmentsPerAck = 127;
+  return bitrate * kSegmentBytes * kSegmentsPerAck / (kFrameBits * (kSegmentsPerAck + 1));
+}
+
 uint64_t IdealBlockDownloadBits(const std::vector<uint8_t>& payload, uint8_t node_id) {
   const uint32_t rx = sdo::kRequestCobBase + node_id, tx = sdo::kResponseCobBase + node_id;
   auto frame = [](uint32_t id, std::initializer_list<uint8_t> bytes) {
@@ -134,6 +139,8 @@ UploadBenchResult RunUploadBench(const UploadBenchOptions& options) {
   r.rate_bytes_s = bytes / r.transfer_s;
   r.limit_bytes_s = bytes / r.limit_s;
   r.efficiency = r.limit_s / r.transfer_s;
+  r.ceiling_bytes_s = NoStuffingCeilingBytesPerS(options.bitrate);
+  r.ceiling_share = r.rate_bytes_s / r.ceiling_bytes_s;
 
   res = canopen_client::VerifyStaged(pc_tool, r.image_crc);
   if (!res.ok) return fail("verify", res);

@@ -11,6 +11,7 @@
 
 #include "volcomp/cell_locator.hpp"
 #include "volcomp/interp_arith.hpp"
+#include "volcomp/invariant_divider.hpp"
 #include "volcomp/status.hpp"
 #include "volcomp/table_image.hpp"
 
@@ -43,6 +44,8 @@ class AxisLookup {
   uint8_t axis() const { return axis_; }
   bool wraps() const { return period_steps_ != 0; }
   uint32_t period_steps() const { return period_steps_; }
+  /// The period as a divisor without a divide instruction (WrapTracker::Init in the tick).
+  const InvariantDivider& period_divider() const { return period_divider_; }
   int32_t origin_steps() const { return origin_steps_; }
 
  private:
@@ -77,7 +80,8 @@ class AxisLookup {
   uint32_t frac_bits_ = 0;
   uint32_t period_steps_ = 0;
   int32_t origin_steps_ = 0;
-  LatticeLocator loc_;  // the reference's locator (same constants as dim_)
+  InvariantDivider period_divider_;  // period_steps_ (1 without wrap)
+  LatticeLocator loc_;               // the reference's locator (same constants as dim_)
 };
 
 /// Keeps a rotary position reduced modulo a period, updated by small deltas (no division per
@@ -87,6 +91,9 @@ class WrapTracker {
  public:
   /// Sets the tracked position from an absolute one (divides; call at activation).
   void Init(int32_t pos_steps, int32_t origin_steps, uint32_t period_steps);
+  /// Init() with the period as a prepared divisor (AxisLookup::period_divider()): no divide
+  /// instruction, so the tick may call it (referencing, table switch).
+  void Init(int32_t pos_steps, int32_t origin_steps, const InvariantDivider& period);
   /// Advances by `delta_steps` and returns origin + ((pos - origin) mod period).
   int32_t Update(int32_t delta_steps) {
     // offset + delta lies in (-period, 2 * period): one correction either way.

@@ -42,6 +42,9 @@ class ControlTick {
 
   /// Declares axis `a` referenced now: its machine position becomes the configured home position.
   void Reference(uint8_t axis);
+  /// Reference() for every axis whose bit is set in `axis_mask` (bits of unconfigured axes are
+  /// ignored), with one compensator rebase: the tick's bounded cost for referencing all axes.
+  void ReferenceAxes(uint32_t axis_mask);
   /// Forgets all references (e.g. drive alarm, e-stop): the correction ramps out.
   void Unreference();
   bool referenced(uint8_t axis) const { return referenced_[axis]; }

@@ -10,7 +10,12 @@
 #include "hand_lookup.hpp"
 #include "semihost.hpp"
 #include "volcomp/control_tick.hpp"
+#include "volcomp/firmware/board_app.hpp"
+#include "volcomp/firmware/step_dir_io.hpp"
+#include "volcomp/firmware/stm32g4/tick_isr.hpp"
 #include "volcomp/grid_lookup.hpp"
+#include "volcomp/hal/stm32g4/drivers.hpp"
+#include "volcomp/hal/stm32g4/registers.hpp"
 #include "volcomp/step_output.hpp"
 #include "volcomp/table_image.hpp"
 
@@ -32,6 +37,60 @@ volcomp_bench_tick(volcomp::ControlTick* engine,
                    volcomp::PulsePlan* plans) {
   engine->Run(counters);
   output->Plan(engine->targets(), plans);
+}
+
+// ---- The whole tick interrupt of the step/dir STM32G474 image ---------------------------------
+// The image's BoardApp<StepDirIo<stm32g4::StepIo>> and ISR body (RunTickIsr: timer acknowledge,
+// BoardApp::Tick with the counter read, ControlTick::Run, the step output stage and
+// StepIo::Apply), on the same drivers built with their registers in RAM
+// (VOLCOMP_STM32G4_REGISTER_WINDOW): the tick_isr_3axes row. The bench moves the input counters
+// in the RAM copies of TIM2/TIM5/TIM3 CNT between ticks.
+namespace volcomp::target {
+namespace {
+
+// Table flash in RAM: two 16 KB banks of 2 KB sectors (NOR semantics are not needed here).
+class BenchFlash final : public hal::Flash {
+ private:
+  uint32_t DoSize() const override { return sizeof bytes_; }
+  uint32_t DoSectorSize() const override { return 2048; }
+  uint32_t DoProgramUnit() const override { return 8; }
+  Status DoErase(uint32_t offset) override {
+    for (uint32_t i = 0; i < 2048; ++i) bytes_[offset + i] = 0xFF;
+    return Status::Ok();
+  }
+  Status DoProgram(uint32_t offset, const uint8_t* data, uint32_t n) override {
+    for (uint32_t i = 0; i < n; ++i) bytes_[offset + i] &= data[i];
+    return Status::Ok();
+  }
+  const uint8_t* DoMap(uint32_t offset) const override { return bytes_ + offset; }
+  alignas(8) uint8_t bytes_[32768];
+};
+
+// Home switches closed once `homed`, no fault lines, no enable wiring.
+class BenchLines final : public hal::SlowIo {
+ public:
+  bool homed = false;
+
+ private:
+  bool DoRead(hal::InputLine line) override {
+    return homed && static_cast<uint8_t>(line) < static_cast<uint8_t>(hal::InputLine::kEnable);
+  }
+  void DoWrite(hal::OutputLine, bool) override {}
+};
+
+using IsrIo = firmware::StepDirIo<stm32g4::StepIo>;
+using IsrApp = firmware::BoardApp<IsrIo>;
+stm32g4::StepIo g_isr_step_io;
+IsrIo g_isr_io(&g_isr_step_io);
+BenchLines g_isr_lines;
+BenchFlash g_isr_flash;
+IsrApp g_isr_app({&g_isr_io, &g_isr_lines, &g_isr_flash, nullptr, nullptr, nullptr, nullptr});
+
+}  // namespace
+}  // namespace volcomp::target
+
+extern "C" __attribute__((noinline, section(".text.volcomp_bench_isr"))) void volcomp_bench_isr() {
+  volcomp::firmware::stm32g4::RunTickIsr(volcomp::target::g_isr_app);
 }
 
 namespace volcomp::target {
@@ -208,6 +267,50 @@ int BenchTick() {
   return 0;
 }
 
+// The tick interrupt with the board stepping: every axis at its configured maximum input rate
+// (BoardConfig max_input_rate_hz per tick), forward, backward and reversing every tick in turn,
+// with a table (grid + AXIS1D, int16) engaged on all three axes.
+int BenchTickIsr() {
+  alignas(8) static uint8_t image[kMaxCaseImage];
+  BoardConfig cfg = TickBoardConfig();
+  for (uint8_t a = 0; a < stm32g4::kStepAxes; ++a) {
+    cfg.axis[a].input_counter_bits = stm32g4::kInputCounterBits[a];
+  }
+  firmware::AppOptions options;
+  options.use_enable_input = false;
+  const uint32_t size = BuildTickImage(image, sizeof image);
+  if (!g_isr_app.Start(cfg, options).ok() || !g_isr_app.ActivateImage(image, size).ok()) {
+    semihost::Write("bench: tick ISR board setup failed\n");
+    return 1;
+  }
+  g_isr_lines.homed = true;
+  g_isr_app.Poll();  // the home edges: referenced at the next tick
+  for (int i = 0; i < 8; ++i) volcomp_bench_isr();
+  if (!g_isr_app.engine().compensator().engaged()) {
+    semihost::Write("bench: tick ISR board not compensating\n");
+    return 1;
+  }
+  constexpr uintptr_t kCounter[3] = {stm32g4::kTim2Base, stm32g4::kTim5Base, stm32g4::kTim3Base};
+  Scenario("tick_isr_3axes", "volcomp_bench_isr");
+  for (uint32_t i = 0; i < kTickPatternLength; ++i) {
+    for (uint32_t a = 0; a < 3; ++a) {
+      const uint32_t rate = cfg.axis[a].max_input_rate_hz / cfg.tick_hz;
+      const uint32_t phase = (i / 40 + a) % 3;
+      const bool back = phase == 1 || (phase == 2 && (i & 1) != 0);
+      volatile uint32_t& cnt = stm32g4::Reg(kCounter[a], stm32g4::tim::kCnt);
+      const uint32_t mask = cfg.axis[a].input_counter_bits == 32 ? 0xFFFFFFFFu : 0xFFFFu;
+      cnt = (cnt + (back ? 0u - rate : rate)) & mask;
+    }
+    volcomp_bench_isr();
+  }
+  const IsrIo& io = g_isr_app.tick_io();
+  if (io.plan(0).count == 0 && io.plan(1).count == 0 && io.plan(2).count == 0) {
+    semihost::Write("bench: tick ISR planned no pulses\n");
+    return 1;
+  }
+  return 0;
+}
+
 }  // namespace
 }  // namespace volcomp::target
 
@@ -233,6 +336,7 @@ int main() {
   rc |= BenchParts(1, "lookup_part_z0", "_ZNK7volcomp10GridLookup12AccumulateZ0");
   rc |= BenchParts(2, "lookup_part_z1", "_ZNK7volcomp10GridLookup8FinishZ1");
   rc |= BenchTick();
+  rc |= BenchTickIsr();
   volcomp::semihost::Write(rc == 0 ? "bench: done\n" : "bench: FAILED\n");
   return rc;
 }

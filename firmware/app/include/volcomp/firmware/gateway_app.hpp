@@ -74,6 +74,8 @@ class GatewayApp {
   gateway::Route OnControllerFrame(const CanFrame& frame);
   gateway::Route OnDriveFrame(const CanFrame& frame);
   void Tick();
+  /// Tick() timed with the clock (BoardApp::TimedTick(): diagnostic object 0x2140).
+  void TimedTick();
   void Poll();
 
   /// Receives and handles every frame waiting on both ports (tests and simple loops; the Linux

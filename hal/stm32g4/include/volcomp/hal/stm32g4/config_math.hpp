@@ -185,4 +185,39 @@ struct PulseTimerSettings {
 /// tick length in timer clocks. kConfigInvalid if the plan does not fit the timer.
 Result<PulseTimerSettings> PlanToTimer(const PulsePlan& plan, uint32_t tick, uint32_t counter_bits);
 
+/// PlanToTimer() for the tick (StepIo::Apply): writes every field of `*s` and returns true, or
+/// returns false (`*s` then unspecified) where PlanToTimer() returns kConfigInvalid. Always
+/// inlined, so the settings stay in registers: no zero-fill of a structure (a memset call) and
+/// no copy of a Result per axis and tick.
+__attribute__((always_inline)) inline bool PlanToTimerInto(const PulsePlan& plan,
+                                                           uint32_t tick,
+                                                           uint32_t counter_bits,
+                                                           PulseTimerSettings* s) {
+  const uint32_t max = counter_bits >= 32 ? 0xFFFFFFFFu : (1u << counter_bits) - 1u;
+  s->negative = plan.negative;
+  s->dir_change = plan.dir_change;
+  s->dir_ccr = plan.dir_edge;
+  s->run = plan.count != 0 || plan.dir_change;
+  s->pulse = false;
+  s->first_ccr = s->ccr = 0;
+  s->rcr = 0;
+  if (!s->run) {
+    s->dir_ccr = s->first_arr = s->arr = 0;  // nothing this tick
+    return true;
+  }
+  if (plan.count == 0) {
+    // Only the direction edge: one period covering it, no pulse.
+    s->first_arr = s->arr = plan.dir_edge + 1u;
+    return s->first_arr <= max && s->first_arr <= tick;
+  }
+  if (plan.width == 0 || plan.period <= plan.width || plan.count > 256u) return false;
+  s->pulse = true;
+  s->first_ccr = plan.first_rise;
+  s->first_arr = plan.first_rise + plan.width - 1u;
+  s->arr = plan.period - 1u;
+  s->ccr = plan.period - plan.width;
+  s->rcr = plan.count - 1u;
+  return s->first_arr <= max && s->arr <= max;
+}
+
 }  // namespace volcomp::stm32g4

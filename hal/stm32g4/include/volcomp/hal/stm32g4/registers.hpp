@@ -12,24 +12,35 @@ inline volatile uint32_t& Reg(uintptr_t base, uint32_t offset) {
 }
 
 // ---- Memory map (RM0440 §2.2.2, Table 4) -------------------------------------------------------
+// VOLCOMP_STM32G4_REGISTER_WINDOW (the cycle bench's QEMU image only, tests/target): the APB/AHB1
+// peripherals from 0x40000000 and the GPIO ports from 0x48000000 are moved into RAM at that
+// address (+ 0x30000 for GPIO), so the tick's driver code runs unchanged on a machine without
+// these peripherals: only the address constants differ. Never defined for a board image.
+#if defined(VOLCOMP_STM32G4_REGISTER_WINDOW)
+inline constexpr uintptr_t kPeriphBase = VOLCOMP_STM32G4_REGISTER_WINDOW;
+inline constexpr uintptr_t kGpioPortsBase = VOLCOMP_STM32G4_REGISTER_WINDOW + 0x30000u;
+#else
+inline constexpr uintptr_t kPeriphBase = 0x40000000u;
+inline constexpr uintptr_t kGpioPortsBase = 0x48000000u;
+#endif
 inline constexpr uintptr_t kFlashBase = 0x08000000u;    // 512 KB main flash
 inline constexpr uintptr_t kCcmSramBase = 0x10000000u;  // 32 KB CCM SRAM (I-bus alias)
-inline constexpr uintptr_t kTim2Base = 0x40000000u;
-inline constexpr uintptr_t kTim3Base = 0x40000400u;
-inline constexpr uintptr_t kTim4Base = 0x40000800u;
-inline constexpr uintptr_t kTim5Base = 0x40000C00u;
-inline constexpr uintptr_t kTim6Base = 0x40001000u;
-inline constexpr uintptr_t kIwdgBase = 0x40003000u;
-inline constexpr uintptr_t kFdcan1Base = 0x40006400u;  // FDCAN2 0x40006800, FDCAN3 0x40006C00
-inline constexpr uintptr_t kFdcan2Base = 0x40006800u;
-inline constexpr uintptr_t kPwrBase = 0x40007000u;
-inline constexpr uintptr_t kSramCanBase = 0x4000A400u;  // FDCAN message RAM (SRAMCAN), shared
-inline constexpr uintptr_t kTim1Base = 0x40012C00u;
-inline constexpr uintptr_t kTim8Base = 0x40013400u;
-inline constexpr uintptr_t kTim15Base = 0x40014000u;
-inline constexpr uintptr_t kRccBase = 0x40021000u;
-inline constexpr uintptr_t kFlashRegBase = 0x40022000u;
-inline constexpr uintptr_t kGpioABase = 0x48000000u;  // GPIOx = A + 0x400 * x
+inline constexpr uintptr_t kTim2Base = kPeriphBase + 0x0000u;
+inline constexpr uintptr_t kTim3Base = kPeriphBase + 0x0400u;
+inline constexpr uintptr_t kTim4Base = kPeriphBase + 0x0800u;
+inline constexpr uintptr_t kTim5Base = kPeriphBase + 0x0C00u;
+inline constexpr uintptr_t kTim6Base = kPeriphBase + 0x1000u;
+inline constexpr uintptr_t kIwdgBase = kPeriphBase + 0x3000u;
+inline constexpr uintptr_t kFdcan1Base = kPeriphBase + 0x6400u;  // FDCAN2 +0x400, FDCAN3 +0x800
+inline constexpr uintptr_t kFdcan2Base = kPeriphBase + 0x6800u;
+inline constexpr uintptr_t kPwrBase = kPeriphBase + 0x7000u;
+inline constexpr uintptr_t kSramCanBase = kPeriphBase + 0xA400u;  // FDCAN message RAM, shared
+inline constexpr uintptr_t kTim1Base = kPeriphBase + 0x12C00u;
+inline constexpr uintptr_t kTim8Base = kPeriphBase + 0x13400u;
+inline constexpr uintptr_t kTim15Base = kPeriphBase + 0x14000u;
+inline constexpr uintptr_t kRccBase = kPeriphBase + 0x21000u;
+inline constexpr uintptr_t kFlashRegBase = kPeriphBase + 0x22000u;
+inline constexpr uintptr_t kGpioABase = kGpioPortsBase;  // GPIOx = A + 0x400 * x
 
 // ---- RCC (§7.4)
 // -----------------------------------------------------------------------------------
