@@ -28,6 +28,7 @@ void SdoServer::Init(uint8_t node_id, ObjectValues* values, const SdoServerConfi
     config_.block_size = kMaxBlockSize;
   }
   state_ = State::kIdle;
+  ack_pending_ = false;
   tx_count_ = 0;
   discard_seq_ = 0;
   aborts_ = malformed_ = 0;
@@ -67,6 +68,7 @@ void SdoServer::EndTransfer(SdoAbort outcome) {
   }
   state_ = State::kIdle;
   domain_ = false;
+  ack_pending_ = false;
 }
 
 void SdoServer::OpenDiscardWindow() {
@@ -178,7 +180,7 @@ void SdoServer::OnFrame(const CanFrame& f, uint32_t now_ms) {
     case State::kBlockDownloadEnd:
       if (IsBlockDownloadEnd(cmd)) return BlockDownloadEnd(f);
       // A repeated last segment (our ack was lost): acknowledge again.
-      if (BlockSequence(cmd) == last_seq_) return SendBlockAck();
+      if (BlockSequence(cmd) == last_seq_) return RequestBlockAck();
       break;
     case State::kBlockUploadWaitStart:
       if (cmd == Block(kCcsBlockUpload, kBlockStartUpload)) {
@@ -321,6 +323,18 @@ void SdoServer::InitiateBlockDownload(const CanFrame& f) {
   const SdoAbort c = BeginTransfer(size_indicated, size_indicated ? LoadLe32(f.data + 4) : 0);
   if (Failed(c)) return Abort(c);
   blksize_ = config_.block_size;
+  paced_ = false;
+  ack_pending_ = false;
+  if (domain_) {
+    // A sub-block delivers at most blksize segments before the next flush (the segment held
+    // back from the sub-block before, and all but the last of this one).
+    const uint32_t window = values_->DomainWriteWindow();
+    if (window != 0) {
+      paced_ = true;
+      const uint32_t fit = window / kSegmentBytes;
+      if (fit < blksize_) blksize_ = static_cast<uint8_t>(fit < 1 ? 1 : fit);
+    }
+  }
   last_seq_ = 0;
   taken_segments_ = 0;
   have_held_ = false;
@@ -334,11 +348,12 @@ void SdoServer::InitiateBlockDownload(const CanFrame& f) {
 void SdoServer::BlockDownloadSegment(const CanFrame& f) {
   const uint8_t seq = BlockSequence(f.data[0]);
   const bool last = (f.data[0] & kBlockLastSegment) != 0;
+  if (ack_pending_) return;                // sent before our acknowledgement: ignore
   if (seq == 0 || seq > blksize_) return;  // not a segment of this sub-block: ignore
   if (seq <= last_seq_) return;            // duplicate
   if (seq != last_seq_ + 1) {
     // Gap: acknowledge what arrived in sequence; the client resends the rest from 1.
-    if (!awaiting_first_) SendBlockAck();
+    if (!awaiting_first_) RequestBlockAck();
     return;
   }
   awaiting_first_ = false;
@@ -353,13 +368,22 @@ void SdoServer::BlockDownloadSegment(const CanFrame& f) {
   if (last) {
     last_segment_seen_ = true;
     state_ = State::kBlockDownloadEnd;
-    SendBlockAck();
+    RequestBlockAck();
   } else if (seq == blksize_) {
+    RequestBlockAck();
+  }
+}
+
+void SdoServer::RequestBlockAck() {
+  if (paced_) {
+    ack_pending_ = true;  // Poll() flushes, then acknowledges
+  } else {
     SendBlockAck();
   }
 }
 
 void SdoServer::SendBlockAck() {
+  ack_pending_ = false;
   CanFrame r = Frame(Block(kScsBlockDownload, kBlockAck));
   r.data[1] = last_seq_;
   r.data[2] = blksize_;
@@ -381,6 +405,7 @@ void SdoServer::BlockDownloadEnd(const CanFrame& f) {
   const SdoAbort done = FinishDownload();
   if (Failed(done)) return Abort(done);
   state_ = State::kIdle;
+  ack_pending_ = false;
   CanFrame r = Frame(Block(kScsBlockDownload, kBlockEnd));
   Queue(r);
 }
@@ -458,6 +483,16 @@ void SdoServer::Poll(uint32_t now_ms) {
   // Silence in the middle of a block download sub-block means its tail was lost: acknowledge
   // the good part so the client resends the rest. (Silence after our ack is left to the client:
   // repeating an ack it already acted on would acknowledge segments it has not sent yet.)
+  if (ack_pending_) {
+    bool done = false;
+    const SdoAbort c = values_->DomainWriteFlush(&done);
+    if (Failed(c)) return Abort(c);
+    if (done) {
+      SendBlockAck();
+      last_rx_ms_ = now_ms;  // the client's turn starts now
+    }
+    return;
+  }
   if (state_ == State::kBlockDownload && !awaiting_first_ &&
       Elapsed(now_ms, last_rx_ms_, config_.block_gap_ms)) {
     SendBlockAck();

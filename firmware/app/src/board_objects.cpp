@@ -446,6 +446,10 @@ SdoAbort BoardObjects::DoDomainWriteData(const uint8_t* data, uint32_t size) {
   return s.error() == Error::kImageTooLarge ? SdoAbort::kTooLong : SdoAbort::kHardware;
 }
 
+SdoAbort BoardObjects::DoDomainWriteFlush(bool* done) {
+  return tables_->FlushUpload(done).ok() ? SdoAbort::kNone : SdoAbort::kHardware;
+}
+
 SdoAbort BoardObjects::DoEndDomainWrite(SdoAbort outcome) {
   if (canopen::Failed(outcome)) {
     // The transfer broke: 0x2102 says how (aborted, CRC-16, timeout), not "I/O error".

@@ -101,14 +101,17 @@ const uint8_t* DualBankStore::staged_data() const {
   return staging_ < 0 ? nullptr : flash_->Map(BankBase(staging_));
 }
 
-Status DualBankStore::EnsureErased(uint32_t bank_offset_end) {
+Status DualBankStore::EraseNextSector() {
   const uint32_t record_sector = bank_size_ - sector_;  // erased by BeginStaging
-  while (erased_until_ < bank_offset_end) {
-    if (erased_until_ != record_sector && !flash_->Erase(BankBase(staging_) + erased_until_).ok()) {
-      return Error::kIoError;
-    }
-    erased_until_ += sector_;
+  if (erased_until_ != record_sector && !flash_->Erase(BankBase(staging_) + erased_until_).ok()) {
+    return Error::kIoError;
   }
+  erased_until_ += sector_;
+  return Status::Ok();
+}
+
+Status DualBankStore::EnsureErased(uint32_t bank_offset_end) {
+  while (erased_until_ < bank_offset_end) VOLCOMP_TRY(EraseNextSector());
   return Status::Ok();
 }
 
@@ -116,7 +119,7 @@ Status DualBankStore::BeginStaging() {
   staging_open_ = staged_complete_ = staging_records_blank_ = false;
   staging_ = StagingBank();
   staged_size_ = 0;
-  pending_len_ = 0;
+  buffer_len_ = flushed_ = 0;
   erased_until_ = 0;
   if (!flash_->Erase(BankBase(staging_) + bank_size_ - sector_).ok()) return Error::kIoError;
   staging_records_blank_ = true;
@@ -154,32 +157,62 @@ Status DualBankStore::Append(const uint8_t* data, uint32_t size) {
   if (!staging_open_) return Error::kNotReady;
   if (size > capacity() - staged_size_) return Error::kImageTooLarge;
   for (uint32_t i = 0; i < size; ++i) {
-    pending_[pending_len_++] = data[i];
-    if (pending_len_ == unit_) {
-      const uint32_t at = staged_size_ + i + 1 - unit_;
-      const Status s = EnsureErased(at + unit_);
-      if (!s.ok() || !flash_->Program(BankBase(staging_) + at, pending_, unit_).ok()) {
+    if (buffer_len_ == kBufferBytes) VOLCOMP_TRY(FlushAll());  // nobody flushed in time
+    buffer_[buffer_len_++] = data[i];
+    ++staged_size_;
+  }
+  return Status::Ok();
+}
+
+Status DualBankStore::FlushStep(bool* done) {
+  *done = false;
+  if (!staging_open_) return Error::kNotReady;
+  const uint32_t whole = buffer_len_ / unit_ * unit_;
+  const uint32_t base = staged_size_ - buffer_len_;  // bank offset of buffer_[0]
+  if (flushed_ < whole) {
+    if (erased_until_ < base + flushed_ + unit_) {
+      if (!EraseNextSector().ok()) {
         staging_open_ = false;
         return Error::kIoError;
       }
-      pending_len_ = 0;
+      return Status::Ok();  // one erase is a step
     }
+    for (uint32_t n = 0; n < kUnitsPerFlushStep && flushed_ < whole; ++n) {
+      const uint32_t at = base + flushed_;
+      if (at + unit_ > erased_until_) return Status::Ok();  // the next sector first
+      if (!flash_->Program(BankBase(staging_) + at, buffer_ + flushed_, unit_).ok()) {
+        staging_open_ = false;
+        return Error::kIoError;
+      }
+      flushed_ += unit_;
+    }
+    if (flushed_ < whole) return Status::Ok();
   }
-  staged_size_ += size;
+  // Everything whole is programmed: the partial unit moves to the front.
+  for (uint32_t i = flushed_; i < buffer_len_; ++i) buffer_[i - flushed_] = buffer_[i];
+  buffer_len_ -= flushed_;
+  flushed_ = 0;
+  *done = true;
+  return Status::Ok();
+}
+
+Status DualBankStore::FlushAll() {
+  for (bool done = false; !done;) VOLCOMP_TRY(FlushStep(&done));
   return Status::Ok();
 }
 
 Status DualBankStore::FinishStaging() {
   if (!staging_open_) return Error::kNotReady;
-  if (pending_len_ > 0) {
-    for (uint32_t i = pending_len_; i < unit_; ++i) pending_[i] = 0xFF;
-    const uint32_t at = staged_size_ - pending_len_;
+  VOLCOMP_TRY(FlushAll());
+  if (buffer_len_ > 0) {
+    for (uint32_t i = buffer_len_; i < unit_; ++i) buffer_[i] = 0xFF;
+    const uint32_t at = staged_size_ - buffer_len_;
     const Status s = EnsureErased(at + unit_);
-    if (!s.ok() || !flash_->Program(BankBase(staging_) + at, pending_, unit_).ok()) {
+    if (!s.ok() || !flash_->Program(BankBase(staging_) + at, buffer_, unit_).ok()) {
       staging_open_ = false;
       return Error::kIoError;
     }
-    pending_len_ = 0;
+    buffer_len_ = 0;
   }
   staging_open_ = false;
   staged_complete_ = true;

@@ -64,6 +64,13 @@ Status TableStore::UploadData(const uint8_t* data, uint32_t size) {
   return s.ok() ? s : Fail(s.error());
 }
 
+Status TableStore::FlushUpload(bool* done) {
+  *done = true;
+  if (state_ != StagedState::kReceiving) return Error::kNotReady;
+  const Status s = bank_.FlushStep(done);
+  return s.ok() ? s : Fail(s.error());
+}
+
 Status TableStore::FinishUpload() {
   if (state_ != StagedState::kReceiving) return Error::kNotReady;
   if (expected_size_ != 0 && bank_.staged_size() != expected_size_) {

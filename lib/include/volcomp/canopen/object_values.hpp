@@ -41,6 +41,15 @@ class ObjectValues {
     return DoDomainWriteData(data, size);
   }
   SdoAbort EndDomainWrite(SdoAbort outcome) { return DoEndDomainWrite(outcome); }
+  /// Flow control of a DOMAIN write whose data takes time to make durable (flash): the most bytes
+  /// DomainWriteData() accepts between two complete flushes without doing that slow work itself
+  /// (0 = no limit: the value needs no pacing). Asked once per block download, after
+  /// BeginDomainWrite: the SDO server sizes its sub-blocks to it.
+  uint32_t DomainWriteWindow() { return DoDomainWriteWindow(); }
+  /// Does a bounded part of the slow work for the bytes delivered so far; `*done` = true once none
+  /// is left. The SDO server calls it from its Poll() before each block acknowledgement of a
+  /// paced transfer (the client sends nothing until then). A failure aborts the transfer.
+  SdoAbort DomainWriteFlush(bool* done) { return DoDomainWriteFlush(done); }
 
  protected:
   ~ObjectValues() = default;
@@ -56,6 +65,11 @@ class ObjectValues {
   virtual SdoAbort DoBeginDomainWrite(const ObjectEntry& e, uint32_t size) = 0;
   virtual SdoAbort DoDomainWriteData(const uint8_t* data, uint32_t size) = 0;
   virtual SdoAbort DoEndDomainWrite(SdoAbort outcome) = 0;
+  virtual uint32_t DoDomainWriteWindow() { return 0; }
+  virtual SdoAbort DoDomainWriteFlush(bool* done) {
+    *done = true;
+    return SdoAbort::kNone;
+  }
 };
 
 }  // namespace volcomp::canopen

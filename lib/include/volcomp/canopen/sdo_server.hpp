@@ -14,6 +14,15 @@
 // buffer of the whole object is needed). Any transfer idle for `timeout_ms` is aborted with
 // 0x05040000.
 //
+// Pacing (values whose data takes time to make durable, e.g. a table staged into flash): when
+// ObjectValues::DomainWriteWindow() is not 0, the server offers at most window / 7 segments per
+// sub-block (never more than `block_size`), and holds back each block acknowledgement until
+// DomainWriteFlush() reports the data so far durable, one flush step per Poll(). The client sends
+// nothing between the end of a sub-block and its acknowledgement (CiA 301 block download), so the
+// slow work happens while the bus is quiet and the receive path only copies segments. Segments
+// that arrive while an acknowledgement is held back are ignored (the acknowledgement tells the
+// client where to go on).
+//
 // An abort (sent or received) in the middle of a block download sub-block leaves segments of that
 // sub-block in flight (the client sends a whole sub-block before it reads an answer). They are
 // discarded silently: after the abort, frames that continue the sub-block exactly (the next
@@ -91,6 +100,8 @@ class SdoServer {
   SdoAbort Deliver(const uint8_t* data, uint32_t size);
   SdoAbort FinishDownload();
   void SendBlockAck();
+  // A block acknowledgement now, or once the value's data is durable (paced transfers).
+  void RequestBlockAck();
   void Respond(uint8_t cmd, const uint8_t* payload4 = nullptr);
   void Abort(SdoAbort code);
   // Ends the transfer in progress with `outcome` (kNone = completed).
@@ -121,7 +132,9 @@ class SdoServer {
 
   // Block download sub-block state.
   uint8_t blksize_ = 127;
-  uint8_t last_seq_ = 0;  // last in-sequence segment of this sub-block
+  bool paced_ = false;        // the value asks for flushes before acknowledgements
+  bool ack_pending_ = false;  // an acknowledgement waits for the flush to complete
+  uint8_t last_seq_ = 0;      // last in-sequence segment of this sub-block
   bool awaiting_first_ = false;
   uint8_t held_[7] = {};  // the last in-sequence segment, held until its length is known
   bool have_held_ = false;

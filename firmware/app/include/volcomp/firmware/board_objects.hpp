@@ -77,6 +77,9 @@ class BoardObjects : public canopen::ObjectValues {
   canopen::SdoAbort DoBeginDomainWrite(const canopen::ObjectEntry& e, uint32_t size) override;
   canopen::SdoAbort DoDomainWriteData(const uint8_t* data, uint32_t size) override;
   canopen::SdoAbort DoEndDomainWrite(canopen::SdoAbort outcome) override;
+  // Table uploads are paced: the store programs flash between sub-blocks.
+  uint32_t DoDomainWriteWindow() override { return tables_->upload_window(); }
+  canopen::SdoAbort DoDomainWriteFlush(bool* done) override;
 
   bool ReadNumber(const canopen::ObjectEntry& e, uint32_t* value) const;
   // A configuration entry (bound to a BoardSettings field in od_entries.def): range check, then

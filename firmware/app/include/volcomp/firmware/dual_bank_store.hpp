@@ -15,8 +15,13 @@
 //
 // Staging erases lazily: BeginStaging erases the record sector and the first sector (so an older
 // blob left in the bank can never be taken for a staged one), then each further sector is erased
-// just before the first byte is programmed into it, so no operation takes longer than two sector
-// erases (BeginStaging) or one sector erase plus one program burst.
+// just before the first byte is programmed into it.
+//
+// Appended bytes go to a RAM buffer of kBufferBytes; FlushStep() programs them in bounded steps
+// (one sector erase, or up to kUnitsPerFlushStep program units), so the caller decides when the
+// flash's busy time is spent (the CAN receive path: between sub-blocks, docs/mcu-target.md).
+// Append() programs the buffer itself only when it is full (correct, but then the caller waits
+// for the flash), FinishStaging() programs what is left.
 //
 // A staged blob survives a reset: the staging bank is the one that is not committed; while its
 // records are blank (erased by BeginStaging, nothing committed or discarded since) its bytes from
@@ -37,6 +42,8 @@ class DualBankStore {
  public:
   static constexpr uint32_t kRecordBytes = 64;
   static constexpr uint32_t kMaxProgramUnit = 16;
+  static constexpr uint32_t kBufferBytes = 1024;  // a multiple of every program unit
+  static constexpr uint32_t kUnitsPerFlushStep = 8;
 
   /// Uses `flash` offsets [0, 2 * bank_size). kInvalidArgument if the geometry does not fit.
   Status Init(hal::Flash* flash, uint32_t bank_size);
@@ -53,9 +60,15 @@ class DualBankStore {
   // ---- Staging (into the bank that is not committed) ----
   /// Starts a new blob: erases the staging bank's record sector. kIoError on flash failure.
   Status BeginStaging();
-  /// Appends bytes; kImageTooLarge past capacity(), kIoError on flash failure, kNotReady if no
-  /// staging is open.
+  /// Appends bytes (into the RAM buffer; programs it first when it is full); kImageTooLarge past
+  /// capacity(), kIoError on flash failure, kNotReady if no staging is open.
   Status Append(const uint8_t* data, uint32_t size);
+  /// Bytes Append() takes between two complete flushes without programming flash itself.
+  uint32_t append_window() const { return kBufferBytes - (unit_ - 1); }
+  /// One bounded step of programming the buffer: one sector erase, or up to kUnitsPerFlushStep
+  /// program units. `*done` = true when less than one program unit is left in the buffer.
+  /// kIoError on flash failure (the staging is then closed), kNotReady if no staging is open.
+  Status FlushStep(bool* done);
   /// Flushes the last partial program unit; the staged blob is then complete.
   Status FinishStaging();
   /// Marks the staging as abandoned (the bank content is ignored until the next BeginStaging) and
@@ -88,6 +101,8 @@ class DualBankStore {
   int StagingBank() const { return committed_ == 0 ? 1 : 0; }
   Status ProgramRecord(int bank, uint32_t offset_in_bank, const Record& r);
   Status EnsureErased(uint32_t bank_offset_end);
+  Status EraseNextSector();
+  Status FlushAll();
   uint32_t BankBase(int bank) const { return static_cast<uint32_t>(bank) * bank_size_; }
 
   hal::Flash* flash_ = nullptr;
@@ -107,8 +122,11 @@ class DualBankStore {
   bool staging_records_blank_ = false;  // the staging bank's REVOKE slot may still be programmed
   uint32_t staged_size_ = 0;
   uint32_t erased_until_ = 0;  // bytes of the staging bank known erased from offset 0
-  uint8_t pending_[kMaxProgramUnit] = {};
-  uint32_t pending_len_ = 0;
+  // The last buffer_len_ staged bytes (bank offset staged_size_ - buffer_len_ at buffer_[0]); the
+  // first flushed_ of them are programmed (whole units).
+  uint8_t buffer_[kBufferBytes] = {};
+  uint32_t buffer_len_ = 0;
+  uint32_t flushed_ = 0;
 };
 
 }  // namespace volcomp::firmware

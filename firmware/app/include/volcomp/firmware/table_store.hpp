@@ -42,6 +42,14 @@ class TableStore {
   /// fit; kIoError on a flash failure.
   Status BeginUpload(uint32_t size);
   Status UploadData(const uint8_t* data, uint32_t size);
+  /// Bytes UploadData() buffers between two complete FlushUpload() runs without waiting for the
+  /// flash (DualBankStore::append_window()); more is still taken, programmed on the spot.
+  uint32_t upload_window() const { return bank_.append_window(); }
+  /// One bounded step of programming the received bytes (one page erase, or up to
+  /// DualBankStore::kUnitsPerFlushStep program units); `*done` = true when only a partial program
+  /// unit is left (FinishUpload programs it). kNotReady unless receiving; a flash failure fails
+  /// the upload as UploadData's would.
+  Status FlushUpload(bool* done);
   /// Ends a complete transfer: kImageSizeMismatch when it differs from the announced size.
   Status FinishUpload();
   /// Ends a transfer that broke, for `reason` (kTransferAborted, kTransferCrcMismatch, ...: the
