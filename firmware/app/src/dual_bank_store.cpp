@@ -17,14 +17,20 @@ uint32_t CheckWord(uint32_t magic, uint32_t seq, uint32_t size, uint32_t crc) {
 }
 }  // namespace
 
-Status DualBankStore::Init(hal::Flash* flash, uint32_t bank_size) {
+Status DualBankStore::Init(hal::Flash* flash,
+                           uint32_t bank_size,
+                           uint8_t* buffer,
+                           uint32_t buffer_bytes) {
   flash_ = flash;
   bank_size_ = bank_size;
   sector_ = flash->sector_size();
   unit_ = flash->program_unit();
+  buffer_ = buffer;
+  buffer_bytes_ = buffer_bytes;
   if (sector_ == 0 || bank_size % sector_ != 0 || 2ull * bank_size > flash->size() || unit_ == 0 ||
       unit_ > kMaxProgramUnit || 32 % unit_ != 0 || bank_size < 2 * kRecordBytes ||
-      sector_ < kRecordBytes) {
+      sector_ < kRecordBytes || buffer == nullptr || buffer_bytes == 0 ||
+      buffer_bytes % unit_ != 0) {
     return Error::kInvalidArgument;
   }
   committed_ = staging_ = -1;
@@ -157,7 +163,7 @@ Status DualBankStore::Append(const uint8_t* data, uint32_t size) {
   if (!staging_open_) return Error::kNotReady;
   if (size > capacity() - staged_size_) return Error::kImageTooLarge;
   for (uint32_t i = 0; i < size; ++i) {
-    if (buffer_len_ == kBufferBytes) VOLCOMP_TRY(FlushAll());  // nobody flushed in time
+    if (buffer_len_ == buffer_bytes_) VOLCOMP_TRY(FlushAll());  // nobody flushed in time
     buffer_[buffer_len_++] = data[i];
     ++staged_size_;
   }

@@ -140,7 +140,7 @@ Status DeserializeSettings(const uint8_t* in, uint32_t size, BoardSettings* out)
 }
 
 Status SettingsStore::Init(hal::Flash* flash, uint32_t bank_size) {
-  return bank_.Init(flash, bank_size);
+  return bank_.Init(flash, bank_size, buffer_, sizeof buffer_);
 }
 
 BoardSettings SettingsStore::Load(const BoardSettings& defaults) {

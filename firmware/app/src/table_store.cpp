@@ -7,7 +7,7 @@ Status TableStore::Init(hal::Flash* flash, uint32_t bank_size) {
   state_ = StagedState::kEmpty;
   expected_size_ = staged_crc_ = staged_id_ = 0;
   last_error_ = Error::kOk;
-  return bank_.Init(flash, bank_size);
+  return bank_.Init(flash, bank_size, buffer_, sizeof buffer_);
 }
 
 Result<table::TableView> TableStore::MountActive(const BoardConfig& config) {

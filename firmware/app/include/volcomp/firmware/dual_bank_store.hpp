@@ -17,7 +17,8 @@
 // blob left in the bank can never be taken for a staged one), then each further sector is erased
 // just before the first byte is programmed into it.
 //
-// Appended bytes go to a RAM buffer of kBufferBytes; FlushStep() programs them in bounded steps
+// Appended bytes go to a RAM buffer the owner provides (Init); FlushStep() programs them in bounded
+// steps
 // (one sector erase, or up to kUnitsPerFlushStep program units), so the caller decides when the
 // flash's busy time is spent (the CAN receive path: between sub-blocks, docs/mcu-target.md).
 // Append() programs the buffer itself only when it is full (correct, but then the caller waits
@@ -42,11 +43,12 @@ class DualBankStore {
  public:
   static constexpr uint32_t kRecordBytes = 64;
   static constexpr uint32_t kMaxProgramUnit = 16;
-  static constexpr uint32_t kBufferBytes = 1024;  // a multiple of every program unit
   static constexpr uint32_t kUnitsPerFlushStep = 8;
 
-  /// Uses `flash` offsets [0, 2 * bank_size). kInvalidArgument if the geometry does not fit.
-  Status Init(hal::Flash* flash, uint32_t bank_size);
+  /// Uses `flash` offsets [0, 2 * bank_size) and `buffer` (owned by the caller, alive as long as
+  /// the store) for appended bytes not yet programmed. kInvalidArgument if the geometry does not
+  /// fit or `buffer_bytes` is not a non-zero multiple of the flash's program unit.
+  Status Init(hal::Flash* flash, uint32_t bank_size, uint8_t* buffer, uint32_t buffer_bytes);
   /// Finds the committed blob after power-up (reads only; checks the blob's CRC-32).
   void Mount();
 
@@ -64,7 +66,7 @@ class DualBankStore {
   /// capacity(), kIoError on flash failure, kNotReady if no staging is open.
   Status Append(const uint8_t* data, uint32_t size);
   /// Bytes Append() takes between two complete flushes without programming flash itself.
-  uint32_t append_window() const { return kBufferBytes - (unit_ - 1); }
+  uint32_t append_window() const { return buffer_bytes_ - (unit_ - 1); }
   /// One bounded step of programming the buffer: one sector erase, or up to kUnitsPerFlushStep
   /// program units. `*done` = true when less than one program unit is left in the buffer.
   /// kIoError on flash failure (the staging is then closed), kNotReady if no staging is open.
@@ -124,7 +126,8 @@ class DualBankStore {
   uint32_t erased_until_ = 0;  // bytes of the staging bank known erased from offset 0
   // The last buffer_len_ staged bytes (bank offset staged_size_ - buffer_len_ at buffer_[0]); the
   // first flushed_ of them are programmed (whole units).
-  uint8_t buffer_[kBufferBytes] = {};
+  uint8_t* buffer_ = nullptr;
+  uint32_t buffer_bytes_ = 0;
   uint32_t buffer_len_ = 0;
   uint32_t flushed_ = 0;
 };

@@ -46,6 +46,8 @@ class SettingsStore {
 
  private:
   DualBankStore bank_;
+  // Settings are saved whole, in one call: the buffer only needs to hold a program unit or two.
+  alignas(8) uint8_t buffer_[2 * DualBankStore::kMaxProgramUnit] = {};
 };
 
 }  // namespace volcomp::firmware

@@ -82,6 +82,10 @@ class TableStore {
   void MountStaged(const BoardConfig& config);
 
   DualBankStore bank_;
+  // Received table bytes not yet programmed: what the SDO server may take between two flushes
+  // (one sub-block, docs/mcu-target.md "Main loop under the tick").
+  static constexpr uint32_t kUploadBufferBytes = 1024;
+  alignas(8) uint8_t buffer_[kUploadBufferBytes] = {};
   StagedState state_ = StagedState::kEmpty;
   uint32_t expected_size_ = 0;
   uint32_t staged_crc_ = 0;
