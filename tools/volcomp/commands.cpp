@@ -161,6 +161,43 @@ const std::vector<Command>& Commands() {
        "read|write INDEX:SUB [VALUE]", kCanOptions, RunSdo,
        "INDEX in hex, SUB in decimal or 0x-hex; VALUE an integer (decimal, 0x-hex, negative).\n"
        "A negative VALUE is a value, not an option; `--` before it also works."},
+      {"config show", "every configuration object of a board: value, factory value, unit", "",
+       Join({kCanOptions,
+             {{"--all", nullptr, nullptr, nullptr, nullptr,
+               "also the objects of the axes beyond the axis count"},
+              {"--json", nullptr, nullptr, nullptr, nullptr, "machine-readable output"}}}),
+       RunConfigShow,
+       "The values read are the board's edited copy; \"settings pending\" says they are not in\n"
+       "force yet (edited or stored, applied at NMT reset node). See docs/user-guide.md\n"
+       "\"Configuring the board from a file\"."},
+      {"config save", "write a board's configuration to an INI file", "FILE|-",
+       Join({kCanOptions,
+             {{"--force", nullptr, nullptr, nullptr, nullptr, "replace an existing FILE"}}}),
+       RunConfigSave,
+       "[board] and one [axis NAME] section per axis; each key's comment names its object and\n"
+       "unit. `config apply` reads the file back."},
+      {"config apply",
+       "check an INI file with the board's rules, write it, store it, reset the node, read back",
+       "FILE",
+       Join({kCanOptions,
+             {{"--no-reset", nullptr, nullptr, nullptr, nullptr,
+               "store only: in force at the next NMT reset node or power-up"}}}),
+       RunConfigApply,
+       "The file is checked first (unknown keys, values outside the objects' limits, the\n"
+       "firmware's consistency rules: refused with its line, nothing written); then the objects\n"
+       "that differ are written, stored (1010:1) and the node reset (NMT 0x81); every object is\n"
+       "read back and compared. Keys left out take the factory value. A refused write or store\n"
+       "undoes the edits written before it."},
+      {"nmt", "NMT command to the node, confirmed by its boot-up or heartbeat",
+       "reset|reset-comm|start|stop|pre-op",
+       Join({kCanOptions,
+             {{"--wait-ms", nullptr, "N", "ms", "2500",
+               "how long to wait for the boot-up or the heartbeat confirming the command"},
+              {"--no-wait", nullptr, nullptr, nullptr, nullptr, "send only"}}}),
+       RunNmt,
+       "reset: reset node (the stored settings come into force; positions and references are\n"
+       "lost); reset-comm: reset communication; start: operational; stop: stopped (only NMT and\n"
+       "heartbeat answered); pre-op: pre-operational. Frame 0x000 [command, node-ID]."},
       {"eds",
        "write the node's EDS file (CiA 306) generated from the object dictionary",
        "",

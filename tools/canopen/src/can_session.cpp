@@ -54,6 +54,44 @@ void CanSession::SendNmt(uint8_t command) {
   transport_->Send(f);
 }
 
+std::optional<uint8_t> CanSession::WaitForBootUp(uint8_t expected,
+                                                 std::chrono::milliseconds timeout) {
+  const auto end = std::chrono::steady_clock::now() + timeout;
+  std::optional<uint8_t> other;
+  for (auto now = std::chrono::steady_clock::now(); now < end;
+       now = std::chrono::steady_clock::now()) {
+    const auto f =
+        transport_->Receive(std::chrono::duration_cast<std::chrono::microseconds>(end - now));
+    if (!f) continue;
+    Observe(*f);
+    const bool boot_up = !f->extended && !f->rtr && f->dlc == 1 && f->data[0] == 0 &&
+                         f->id > canopen::kHeartbeatCobBase &&
+                         f->id <= canopen::kHeartbeatCobBase + 127;
+    if (!boot_up) continue;
+    const uint8_t id = static_cast<uint8_t>(f->id - canopen::kHeartbeatCobBase);
+    if (id == expected) return id;
+    other = id;
+  }
+  return other;
+}
+
+std::optional<uint8_t> CanSession::WaitForState(uint8_t state, std::chrono::milliseconds timeout) {
+  const auto end = std::chrono::steady_clock::now() + timeout;
+  std::optional<uint8_t> last;
+  for (auto now = std::chrono::steady_clock::now(); now < end;
+       now = std::chrono::steady_clock::now()) {
+    const auto f =
+        transport_->Receive(std::chrono::duration_cast<std::chrono::microseconds>(end - now));
+    if (!f) continue;
+    Observe(*f);
+    if (!f->extended && !f->rtr && f->dlc == 1 && f->id == canopen::kHeartbeatCobBase + node()) {
+      last = f->data[0];
+      if (*last == state) return last;
+    }
+  }
+  return last;
+}
+
 std::string NmtStateName(uint8_t state) {
   switch (static_cast<canopen::NmtState>(state)) {
     case canopen::NmtState::kInitialising:
