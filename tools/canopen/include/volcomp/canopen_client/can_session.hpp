@@ -56,6 +56,9 @@ class CanSession : public NodeObjects {
 
  private:
   void Observe(const CanFrame& f);
+  // Receives (observing every frame) until `done` accepts a frame (true) or `timeout` passes.
+  bool ReceiveUntil(std::chrono::milliseconds timeout,
+                    const std::function<bool(const CanFrame&)>& done);
 
   FrameLink link_;  // what NodeObjects talks through (bound before it is filled in)
   std::unique_ptr<can_io::CanTransport> transport_;
