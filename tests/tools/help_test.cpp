@@ -81,7 +81,7 @@ TEST(VolcompHelp, OptionsUsedInTheSourcesAreDeclared) {
   std::vector<std::string> files = {"tools/volcomp/can_options.hpp",
                                     "tools/model/src/build_cli.cpp"};
   for (const char* f :
-       {"build_axis", "build_grid", "build_kmtpp", "build_model", "build_tracker",
+       {"build_axis", "build_grid", "build_kmtpp", "build_model", "build_tracker", "config",
         "evaluate_diagonal", "evaluate_positioning", "evaluate_rotary", "inspect", "lookup",
         "model_eval", "program", "report_compare", "sdo", "status", "table_control", "upload"}) {
     files.push_back(std::string("tools/volcomp/cmd_") + f + ".cpp");

@@ -5,6 +5,7 @@
 
 #include "can_options.hpp"
 #include "commands.hpp"
+#include "volcomp/board_ini/board_settings_io.hpp"
 #include "volcomp/canopen/board_protocol.hpp"
 #include "volcomp/canopen/sdo_abort.hpp"
 #include "volcomp/status.hpp"
@@ -20,6 +21,21 @@ using canopen::ObjectId;
 constexpr int kCounterCount =
     static_cast<int>(ObjectId::kEmcySuppressed) - static_cast<int>(ObjectId::kCanRxFrames) + 1;
 
+// One axis as the board describes it (its configuration objects, read once) and what it does
+// (the live diagnostics, read every snapshot), in steps and in machine units.
+struct AxisInfo {
+  char name = '?';
+  bool rotary = false;
+  uint32_t resolution_e9 = 0;        // units (mm or degrees) per step x 1e9, 0x2012
+  int32_t max_correction_steps = 0;  // 0x2015
+  // Machine units per step and the correction's display unit (µm on a linear axis, arcsec on a
+  // rotary one).
+  double units_per_step() const { return resolution_e9 * 1e-9; }
+  const char* position_unit() const { return rotary ? "deg" : "mm"; }
+  const char* correction_unit() const { return rotary ? "arcsec" : "um"; }
+  double correction_per_step() const { return units_per_step() * (rotary ? 3600.0 : 1000.0); }
+};
+
 struct Snapshot {
   std::string device_name, software_version;
   uint32_t vendor = 0, product = 0, revision = 0, serial = 0;
@@ -31,10 +47,14 @@ struct Snapshot {
   std::optional<uint8_t> nmt;
 };
 
+ObjectId AxisObject(ObjectId first, uint32_t axis) {
+  return static_cast<ObjectId>(static_cast<int>(first) + axis);
+}
+
 uint32_t Get(canopen_client::CanSession& s, ObjectId id) {
   uint32_t v = 0;
-  const auto r = s.Read(id, &v);
-  if (!r.ok) throw InputError("reading " + std::string(canopen::Entry(id).name) + ": " + r.message);
+  // No answer is a communication failure (exit 3), a refusal the board's reason (exit 1).
+  board_ini::Require(s.Read(id, &v), "reading " + std::string(canopen::Entry(id).name));
   return v;
 }
 
@@ -57,7 +77,7 @@ Snapshot Take(canopen_client::CanSession& s, bool axes_detail) {
   n.axes = Get(s, ObjectId::kAxisCountConfig);
   const uint32_t axes = n.axes > 6 ? 6 : n.axes;
   for (uint32_t a = 0; a < axes && axes_detail; ++a) {
-    auto id = [a](ObjectId first) { return static_cast<ObjectId>(static_cast<int>(first) + a); };
+    auto id = [a](ObjectId first) { return AxisObject(first, a); };
     n.commanded[a] = static_cast<int32_t>(Get(s, id(ObjectId::kCommandedPosition1)));
     n.correction_q8[a] = static_cast<int32_t>(Get(s, id(ObjectId::kAppliedCorrection1)));
     n.output[a] = static_cast<int32_t>(Get(s, id(ObjectId::kOutputPosition1)));
@@ -68,6 +88,52 @@ Snapshot Take(canopen_client::CanSession& s, bool axes_detail) {
   }
   n.nmt = s.nmt_state();
   return n;
+}
+
+// The configured axes' names, kinds, units per step and maximum corrections. These read the
+// board's configuration objects: while settings are pending they are the edited values.
+std::vector<AxisInfo> ReadAxes(canopen_client::CanSession& s, uint32_t axes) {
+  std::vector<AxisInfo> out;
+  for (uint32_t a = 0; a < axes && a < 6; ++a) {
+    AxisInfo x;
+    x.name = static_cast<char>(Get(s, AxisObject(ObjectId::kAxisName1, a)));
+    x.rotary = Get(s, AxisObject(ObjectId::kAxisKind1, a)) == 1;
+    x.resolution_e9 = Get(s, AxisObject(ObjectId::kAxisResolution1, a));
+    x.max_correction_steps =
+        static_cast<int32_t>(Get(s, AxisObject(ObjectId::kAxisMaxCorrection1, a)));
+    out.push_back(x);
+  }
+  return out;
+}
+
+// Whether the applied correction of axis `a` stands at its maximum correction (0x2015): the table
+// asks for at least that much there, and the board applies no more.
+bool AtMaxCorrection(const Snapshot& n, const AxisInfo& x, uint32_t a) {
+  const int64_t applied_q8 =
+      n.correction_q8[a] < 0 ? -int64_t{n.correction_q8[a]} : n.correction_q8[a];
+  return x.max_correction_steps > 0 && applied_q8 >= int64_t{x.max_correction_steps} * 256;
+}
+
+// What bounds the correction of axis `a` now, for the status line ("" when nothing does). The
+// limiter's per-axis state belongs here as well as in AxisJson().
+std::string LimitText(const Snapshot& n, const AxisInfo& x, uint32_t a) {
+  return AtMaxCorrection(n, x, a) ? ", AT MAX CORRECTION" : "";
+}
+
+void AxisJson(JsonWriter& w, const Snapshot& n, const AxisInfo& x, uint32_t a) {
+  w.key("axis").value(a + 1);
+  w.key("name").value(std::string(1, x.name));
+  w.key("kind").value(x.rotary ? "rotary" : "linear");
+  w.key("units_per_step").value(x.units_per_step());
+  w.key("commanded_steps").value(int64_t{n.commanded[a]});
+  w.key(std::string("commanded_") + x.position_unit()).value(n.commanded[a] * x.units_per_step());
+  w.key("applied_correction_steps").value(n.correction_q8[a] / 256.0);
+  w.key(std::string("applied_correction_") + x.correction_unit())
+      .value(n.correction_q8[a] / 256.0 * x.correction_per_step());
+  w.key("max_correction_steps").value(int64_t{x.max_correction_steps});
+  w.key("at_max_correction").value(AtMaxCorrection(n, x, a));
+  w.key("output_steps").value(int64_t{n.output[a]});
+  w.key("max_backlog_steps").value(uint64_t{n.backlog[a]});
 }
 
 const char* kCounterNames[] = {
@@ -122,7 +188,9 @@ int RunStatus(Args& args) {
   const canopen::TableStatus table = canopen::DecodeTableStatus(n.table_status);
   const canopen::StagedState staged_state = table.staged;
   const Error last = table.error;
-  const bool table_active = canopen::DecodeDeviceState(n.state).table_active;
+  const canopen::DeviceState state = canopen::DecodeDeviceState(static_cast<uint16_t>(n.state));
+  const bool table_active = state.table_active;
+  const std::vector<AxisInfo> axes = ReadAxes(*s, n.axes);
   if (json) {
     JsonWriter w(std::cout);
     w.begin_object();
@@ -149,13 +217,11 @@ int RunStatus(Args& args) {
     w.key("crc32").value(Hex32(n.staged_crc));
     w.key("last_error").value(ErrorName(last));
     w.end_object();
+    w.key("settings_pending").value(state.settings_pending);
     w.key("axes").begin_array();
-    for (uint32_t a = 0; a < n.axes && a < 6; ++a) {
+    for (uint32_t a = 0; a < axes.size(); ++a) {
       w.begin_object();
-      w.key("commanded_steps").value(int64_t{n.commanded[a]});
-      w.key("applied_correction_steps").value(n.correction_q8[a] / 256.0);
-      w.key("output_steps").value(int64_t{n.output[a]});
-      w.key("max_backlog_steps").value(uint64_t{n.backlog[a]});
+      AxisJson(w, n, axes[a], a);
       w.end_object();
     }
     w.end_array();
@@ -181,9 +247,20 @@ int RunStatus(Args& args) {
       last != Error::kOk
           ? (std::string(", last error ") + ErrorName(last) + ": " + ErrorText(last)).c_str()
           : "");
-  for (uint32_t a = 0; a < n.axes && a < 6; ++a) {
-    std::printf("axis %u: commanded %d, correction %+.3f, output %d steps, max backlog %u\n", a + 1,
-                n.commanded[a], n.correction_q8[a] / 256.0, n.output[a], n.backlog[a]);
+  if (state.settings_pending) {
+    std::printf(
+        "settings pending: axis names and units below are the edited values, in force "
+        "after NMT reset node\n");
+  }
+  for (uint32_t a = 0; a < axes.size(); ++a) {
+    const AxisInfo& x = axes[a];
+    const double correction_steps = n.correction_q8[a] / 256.0;
+    std::printf(
+        "axis %u %c: input %d steps (%.4f %s counted since start), correction %+.3f %s (%+.3f "
+        "steps, max %d)%s, output %d steps, max backlog %u\n",
+        a + 1, x.name, n.commanded[a], n.commanded[a] * x.units_per_step(), x.position_unit(),
+        correction_steps * x.correction_per_step(), x.rotary ? "arcsec" : "µm", correction_steps,
+        x.max_correction_steps, LimitText(n, x, a).c_str(), n.output[a], n.backlog[a]);
   }
   std::printf("counters:");
   for (int i = 0; i < kCounterCount; ++i) std::printf(" %s=%u", kCounterNames[i], n.counters[i]);
@@ -195,27 +272,58 @@ int RunMonitor(Args& args) {
   const CanOptions can = ParseCanOptions(args);
   const double duration = args.number("--duration").value_or(0);
   const long long interval = args.integer("--interval-ms").value_or(1000);
+  const bool csv = args.flag("--csv");
   args.finish();
   if (interval < 50) throw UsageError("--interval-ms must be at least 50");
   auto s = OpenSession(can);
   const auto start = std::chrono::steady_clock::now();
   std::optional<uint8_t> last_nmt;
+  // With --csv, stdout carries only the table; heartbeat and EMCY lines go to stderr.
+  FILE* events = csv ? stderr : stdout;
+  std::vector<AxisInfo> axes;
+  if (csv) {
+    axes = ReadAxes(*s, Get(*s, ObjectId::kAxisCountConfig));
+    std::printf("time_s,state");
+    for (const AxisInfo& x : axes) {
+      std::printf(",%c_commanded_%s,%c_correction_%s,%c_correction_steps,%c_at_max_correction",
+                  x.name, x.position_unit(), x.name, x.correction_unit(), x.name, x.name);
+    }
+    std::printf(",lost_step_checks,refused_actions,sdo_aborts\n");
+    std::fflush(stdout);
+  }
   for (;;) {
     s->Listen(std::chrono::milliseconds(interval));
     for (const CanFrame& f : s->TakeEmcy()) {
       canopen::Emcy e;
-      if (canopen::DecodeEmcy(f, can.node, &e)) std::printf("%s\n", EmcyText(e).c_str());
+      if (canopen::DecodeEmcy(f, can.node, &e)) std::fprintf(events, "%s\n", EmcyText(e).c_str());
     }
     if (s->nmt_state() != last_nmt && s->nmt_state()) {
-      std::printf("heartbeat: %s\n", canopen_client::NmtStateName(*s->nmt_state()).c_str());
+      std::fprintf(events, "heartbeat: %s\n",
+                   canopen_client::NmtStateName(*s->nmt_state()).c_str());
       last_nmt = s->nmt_state();
     }
     const Snapshot n = Take(*s, true);
-    std::printf("state %s |", StateText(n.state).c_str());
-    for (uint32_t a = 0; a < n.axes && a < 6; ++a) {
-      std::printf(" a%u %d%+.2f", a + 1, n.commanded[a], n.correction_q8[a] / 256.0);
+    if (csv) {
+      const double t =
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      // One row per interval in machine units; the state flags joined with '+'.
+      std::string state = StateText(n.state);
+      for (char& c : state) c = c == ',' ? '+' : c;
+      std::printf("%.3f,%s", t, state.c_str());
+      for (uint32_t a = 0; a < axes.size(); ++a) {
+        const double steps = n.correction_q8[a] / 256.0;
+        std::printf(",%.6f,%.4f,%.4f,%d", n.commanded[a] * axes[a].units_per_step(),
+                    steps * axes[a].correction_per_step(), steps,
+                    AtMaxCorrection(n, axes[a], a) ? 1 : 0);
+      }
+      std::printf(",%u,%u,%u\n", n.counters[6], n.counters[8], n.counters[3]);
+    } else {
+      std::printf("state %s |", StateText(n.state).c_str());
+      for (uint32_t a = 0; a < n.axes && a < 6; ++a) {
+        std::printf(" a%u %d%+.2f", a + 1, n.commanded[a], n.correction_q8[a] / 256.0);
+      }
+      std::printf(" | rx %u tx %u aborts %u\n", n.counters[0], n.counters[1], n.counters[3]);
     }
-    std::printf(" | rx %u tx %u aborts %u\n", n.counters[0], n.counters[1], n.counters[3]);
     std::fflush(stdout);
     const double elapsed =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -61,6 +61,11 @@ int RunStatus(Args& args);
 int RunMonitor(Args& args);
 int RunSdo(Args& args);
 int RunEds(Args& args);
+// Board configuration and NMT: cmd_config.cpp.
+int RunConfigShow(Args& args);
+int RunConfigSave(Args& args);
+int RunConfigApply(Args& args);
+int RunNmt(Args& args);
 // Metrology: cmd_evaluate_*.cpp, cmd_program.cpp, cmd_report_compare.cpp.
 int RunEvaluatePositioning(Args& args);
 int RunEvaluateDiagonal(Args& args);

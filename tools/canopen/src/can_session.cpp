@@ -54,6 +54,42 @@ void CanSession::SendNmt(uint8_t command) {
   transport_->Send(f);
 }
 
+bool CanSession::ReceiveUntil(std::chrono::milliseconds timeout,
+                              const std::function<bool(const CanFrame&)>& done) {
+  const auto end = std::chrono::steady_clock::now() + timeout;
+  for (auto now = std::chrono::steady_clock::now(); now < end;
+       now = std::chrono::steady_clock::now()) {
+    const auto f =
+        transport_->Receive(std::chrono::duration_cast<std::chrono::microseconds>(end - now));
+    if (!f) continue;
+    Observe(*f);
+    if (!f->extended && !f->rtr && done(*f)) return true;
+  }
+  return false;
+}
+
+std::optional<uint8_t> CanSession::WaitForBootUp(uint8_t expected,
+                                                 std::chrono::milliseconds timeout) {
+  std::optional<uint8_t> other;
+  const bool seen = ReceiveUntil(timeout, [&](const CanFrame& f) {
+    const bool boot_up = f.dlc == 1 && f.data[0] == 0 && f.id > canopen::kHeartbeatCobBase &&
+                         f.id <= canopen::kHeartbeatCobBase + 127;
+    if (boot_up) other = static_cast<uint8_t>(f.id - canopen::kHeartbeatCobBase);
+    return boot_up && *other == expected;
+  });
+  return seen ? std::optional<uint8_t>(expected) : other;
+}
+
+std::optional<uint8_t> CanSession::WaitForState(uint8_t state, std::chrono::milliseconds timeout) {
+  std::optional<uint8_t> last;
+  ReceiveUntil(timeout, [&](const CanFrame& f) {
+    if (f.dlc != 1 || f.id != canopen::kHeartbeatCobBase + node()) return false;
+    last = f.data[0];
+    return *last == state;
+  });
+  return last;
+}
+
 std::string NmtStateName(uint8_t state) {
   switch (static_cast<canopen::NmtState>(state)) {
     case canopen::NmtState::kInitialising:

@@ -15,6 +15,15 @@
 
 namespace volcomp::canopen_client {
 
+/// NMT command specifiers (CiA 301 7.2.8.3.1): byte 0 of the NMT frame 0x000 [command, node-ID].
+enum class NmtCommand : uint8_t {
+  kStart = 0x01,  // to operational
+  kStop = 0x02,   // to stopped (only NMT and heartbeat answered)
+  kEnterPreOperational = 0x80,
+  kResetNode = 0x81,           // the application restarts from its stored settings
+  kResetCommunication = 0x82,  // the communication restarts from its stored parameters
+};
+
 class CanSession : public NodeObjects {
  public:
   /// Opens `spec` (see can_io::OpenTransport), logging every frame to `log_path` if not empty.
@@ -36,9 +45,20 @@ class CanSession : public NodeObjects {
   std::vector<CanFrame> TakeEmcy();
   /// Sends an NMT command (cs) to this node.
   void SendNmt(uint8_t command);
+  void SendNmt(NmtCommand command) { SendNmt(static_cast<uint8_t>(command)); }
+  /// Receives for up to `timeout` until node `expected` sends its boot-up message (0x700 + id,
+  /// data 00) and returns `expected`; when the time passes without it, the id of another node
+  /// whose boot-up was seen meanwhile (a reset node comes back with its stored node-ID), else none.
+  std::optional<uint8_t> WaitForBootUp(uint8_t expected, std::chrono::milliseconds timeout);
+  /// Receives for up to `timeout` until this node's heartbeat reports `state`; returns the state of
+  /// the last heartbeat received meanwhile (none when no heartbeat came).
+  std::optional<uint8_t> WaitForState(uint8_t state, std::chrono::milliseconds timeout);
 
  private:
   void Observe(const CanFrame& f);
+  // Receives (observing every frame) until `done` accepts a frame (true) or `timeout` passes.
+  bool ReceiveUntil(std::chrono::milliseconds timeout,
+                    const std::function<bool(const CanFrame&)>& done);
 
   FrameLink link_;  // what NodeObjects talks through (bound before it is filled in)
   std::unique_ptr<can_io::CanTransport> transport_;
