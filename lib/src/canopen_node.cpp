@@ -98,20 +98,20 @@ void Node::OnFrame(const CanFrame& f, uint32_t now_ms) {
       return;
     }
     if (f.data[1] != 0 && f.data[1] != node_id_) return;
-    switch (f.data[0]) {
-      case 0x01:
+    switch (static_cast<NmtCommand>(f.data[0])) {
+      case NmtCommand::kStart:
         state_ = NmtState::kOperational;
         break;
-      case 0x02:
+      case NmtCommand::kStop:
         state_ = NmtState::kStopped;
         break;
-      case 0x80:
+      case NmtCommand::kEnterPreOperational:
         state_ = NmtState::kPreOperational;
         break;
-      case 0x81:
+      case NmtCommand::kResetNode:
         reset_ = ResetRequest::kNode;
         break;
-      case 0x82:
+      case NmtCommand::kResetCommunication:
         reset_ = ResetRequest::kCommunication;
         break;
       default:

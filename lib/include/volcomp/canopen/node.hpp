@@ -38,6 +38,16 @@ enum class NmtState : uint8_t {
   kPreOperational = 0x7F,
 };
 
+/// NMT command specifiers (CiA 301 7.2.8.3.1): byte 0 of the NMT frame 0x000 [command, node-ID]
+/// (node-ID 0: every node).
+enum class NmtCommand : uint8_t {
+  kStart = 0x01,  // to operational
+  kStop = 0x02,   // to stopped (only NMT and heartbeat answered)
+  kEnterPreOperational = 0x80,
+  kResetNode = 0x81,           // the application restarts from its stored settings
+  kResetCommunication = 0x82,  // the communication restarts from its stored parameters
+};
+
 enum class ResetRequest : uint8_t { kNone, kNode, kCommunication };
 
 /// The communication parameters the node keeps (CiA 301 area 0x1000-0x1FFF that is writable).

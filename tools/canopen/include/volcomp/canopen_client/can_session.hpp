@@ -11,18 +11,12 @@
 #include <vector>
 
 #include "volcomp/can_io/transport.hpp"
+#include "volcomp/canopen/node.hpp"
 #include "volcomp/canopen_client/node_objects.hpp"
 
 namespace volcomp::canopen_client {
 
-/// NMT command specifiers (CiA 301 7.2.8.3.1): byte 0 of the NMT frame 0x000 [command, node-ID].
-enum class NmtCommand : uint8_t {
-  kStart = 0x01,  // to operational
-  kStop = 0x02,   // to stopped (only NMT and heartbeat answered)
-  kEnterPreOperational = 0x80,
-  kResetNode = 0x81,           // the application restarts from its stored settings
-  kResetCommunication = 0x82,  // the communication restarts from its stored parameters
-};
+using canopen::NmtCommand;  // lib/canopen/node.hpp
 
 class CanSession : public NodeObjects {
  public:
