@@ -21,6 +21,9 @@ bool Elapsed(uint32_t now_ms, uint32_t since_ms, uint32_t limit_ms) {
 }  // namespace
 
 void SdoServer::Init(uint8_t node_id, ObjectValues* values, const SdoServerConfig& config) {
+  // A re-init (NMT reset communication) ends a transfer in progress: a value being streamed into
+  // hears that it was aborted (its staging is not left "receiving").
+  if (values_ != nullptr) EndTransfer(SdoAbort::kGeneral);
   node_id_ = node_id;
   values_ = values;
   config_ = config;

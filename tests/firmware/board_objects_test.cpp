@@ -365,6 +365,33 @@ TEST_F(Bench, ResetCommunicationRestoresTheStoredHeartbeatTime) {
   EXPECT_EQ(Exchange("4015100000000000"), Frames{"590#4B15100000000000"});
 }
 
+// "Restore defaults" (0x1011:1 = "load"): the next reset communication brings the default
+// communication parameters back, not the ones stored before (CiA 301 7.5.2.14).
+TEST_F(Bench, RestoreDefaultsReachesTheCommunicationReset) {
+  Boot();
+  io_.SetInput(InputLine::kWriteEnable, true);
+  Step(100);
+  EXPECT_EQ(Exchange("2B171000F4010000"), Frames{"590#6017100000000000"});  // 0x1017 = 500 ms
+  EXPECT_EQ(Exchange("2310100173617665"), Frames{"590#6010100100000000"});  // "save"
+  EXPECT_EQ(Exchange("231110016C6F6164"), Frames{"590#6011100100000000"});  // "load"
+  EXPECT_EQ(Exchange("4017100000000000"), Frames{"590#4B171000F4010000"});  // in force until reset
+  EXPECT_TRUE(Contains(Nmt(0x82), "710#00"));
+  EXPECT_EQ(Exchange("4017100000000000"), Frames{"590#4B171000E8030000"});  // 1000 ms: default
+}
+
+// A reset communication in the middle of a table upload ends it: 0x2102 says aborted (error 80),
+// not "receiving" until the next upload.
+TEST_F(Bench, ResetCommunicationDuringAnUploadEndsItAsAborted) {
+  Boot();
+  io_.SetInput(InputLine::kWriteEnable, true);
+  Step(100);
+  EXPECT_EQ(Exchange("C600210014000000"), Frames{"590#A40021007F000000"});
+  EXPECT_EQ(Exchange("0130313233343536"), Frames{});
+  EXPECT_TRUE(Contains(Nmt(0x82), "710#00"));
+  // Result 7 (transfer) << 1 = 0x0E, failed 0x04, error 80 = 0x50.
+  EXPECT_EQ(Exchange("4002210000000000"), Frames{"590#430221000E045000"});
+}
+
 // 0x2102 after a transfer that broke says how: bits 1-7 result, 8-15 staged state (4 failed),
 // 16-31 the volcomp error (error_codes.def): aborted 80, CRC-16 81; never "I/O error".
 TEST_F(Bench, TableStatusSaysATransferWasAbortedOrFailedItsCrc) {

@@ -421,6 +421,8 @@ SdoAbort BoardObjects::DoWrite(const ObjectEntry& e, const uint8_t* data, uint32
       if (!writable()) return Refuse(SdoAbort::kCannotStore);
       if (v != canopen::kLoadSignature) return SdoAbort::kCannotStore;
       if (!settings_store_->Reset().ok()) return Refuse(SdoAbort::kHardware);
+      // CiA 301: the defaults take effect at the next reset, the communication reset included.
+      node_->set_stored_communication(canopen::CommunicationParameters{});
       return SdoAbort::kNone;
     default:
       break;
