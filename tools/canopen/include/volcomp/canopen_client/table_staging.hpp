@@ -26,6 +26,21 @@ std::string AbortHint(canopen::SdoAbort abort_code);
 /// `r` with its message prefixed by `step` ("step: reason; hint") when it failed; unchanged if ok.
 SdoResult Explain(SdoResult r, const std::string& step);
 
+/// The board's own reason for a failed staging step, from its table status (0x2102): the error of
+/// the last staging failure in words ("image was built for another units-per-step
+/// (kConfigResolutionMismatch)"), or empty when the staging bank has not failed or 0x2102 cannot
+/// be read.
+std::string StagingFailureReason(NodeObjects& node);
+
+/// The board's reason for refusing to store its settings (0x1010), from 0x2123: the rule the
+/// pending settings break and its axis ("axis 2: max input rate ... must not exceed ..."), or
+/// empty when they break none or 0x2123 cannot be read.
+std::string SettingsRefusalReason(NodeObjects& node);
+
+/// `r` with the board's reason appended when the board refused (aborted_by_server) and its staging
+/// bank says why (StagingFailureReason); unchanged otherwise.
+SdoResult WithStagingReason(NodeObjects& node, SdoResult r);
+
 /// What writing `command` to table control does, with the write: "activating (0x2101 = 1)".
 std::string TableCommandStep(canopen::TableCommand command);
 
