@@ -1,4 +1,5 @@
 // `volcomp status [--json]` and `volcomp monitor`: a board's state over CAN.
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <iostream>
@@ -27,6 +28,7 @@ struct Snapshot {
            staged_id = 0, staged_bytes = 0, writable = 0, axes = 0;
   int32_t commanded[6] = {}, correction_q8[6] = {}, output[6] = {};
   uint32_t backlog[6] = {};
+  uint32_t limit_flags[6] = {}, clamped[6] = {}, rate_limited[6] = {};  // 0x2134-0x2136
   uint32_t counters[kCounterCount] = {};
   std::optional<uint8_t> nmt;
 };
@@ -62,6 +64,9 @@ Snapshot Take(canopen_client::CanSession& s, bool axes_detail) {
     n.correction_q8[a] = static_cast<int32_t>(Get(s, id(ObjectId::kAppliedCorrection1)));
     n.output[a] = static_cast<int32_t>(Get(s, id(ObjectId::kOutputPosition1)));
     n.backlog[a] = Get(s, id(ObjectId::kMaxBacklog1));
+    n.limit_flags[a] = Get(s, id(ObjectId::kCorrectionLimited1));
+    n.clamped[a] = Get(s, id(ObjectId::kClampedRefreshes1));
+    n.rate_limited[a] = Get(s, id(ObjectId::kRateLimitedRefreshes1));
   }
   for (int i = 0; i < kCounterCount; ++i) {
     n.counters[i] = Get(s, static_cast<ObjectId>(static_cast<int>(ObjectId::kCanRxFrames) + i));
@@ -102,6 +107,13 @@ std::string EmcyText(const canopen::Emcy& e) {
     s += " (refused action: abort " + Hex32(canopen::Code(e.abort_code())) + ")";
   if (e.code == canopen::kEmcyTableInvalid)
     s += std::string(" (table invalid: ") + ErrorName(e.error()) + ")";
+  if (e.code == canopen::kEmcyCorrectionLimited) {
+    char axes[64];
+    std::snprintf(axes, sizeof axes,
+                  " (correction limited: clamped axes 0x%02X, rate limited 0x%02X)",
+                  e.clamped_axes(), e.rate_limited_axes());
+    s += axes;
+  }
   if (e.code == canopen::kEmcyErrorReset) s += " (errors cleared)";
   return s;
 }
@@ -156,6 +168,10 @@ int RunStatus(Args& args) {
       w.key("applied_correction_steps").value(n.correction_q8[a] / 256.0);
       w.key("output_steps").value(int64_t{n.output[a]});
       w.key("max_backlog_steps").value(uint64_t{n.backlog[a]});
+      w.key("clamped").value((n.limit_flags[a] & canopen::kLimitClamped) != 0);
+      w.key("rate_limited").value((n.limit_flags[a] & canopen::kLimitRateLimited) != 0);
+      w.key("clamped_refreshes").value(uint64_t{n.clamped[a]});
+      w.key("rate_limited_refreshes").value(uint64_t{n.rate_limited[a]});
       w.end_object();
     }
     w.end_array();
@@ -175,15 +191,26 @@ int RunStatus(Args& args) {
       table_active
           ? ("id " + std::to_string(n.active_id) + ", CRC-32 " + Hex32(n.active_crc)).c_str()
           : "none (pass-through)");
+  const bool staged_image = staged_state == canopen::StagedState::kComplete ||
+                            staged_state == canopen::StagedState::kVerified;
   std::printf(
-      "staged table: %s, %u bytes, id %u, CRC-32 %s%s\n", StagedStateName(staged_state),
-      n.staged_bytes, n.staged_id, Hex32(n.staged_crc).c_str(),
+      "staged table: %s%s%s\n", StagedStateName(staged_state),
+      staged_image ? (", " + std::to_string(n.staged_bytes) + " bytes, id " +
+                      std::to_string(n.staged_id) + ", CRC-32 " + Hex32(n.staged_crc))
+                         .c_str()
+                   : "",
       last != Error::kOk
           ? (std::string(", last error ") + ErrorName(last) + ": " + ErrorText(last)).c_str()
           : "");
   for (uint32_t a = 0; a < n.axes && a < 6; ++a) {
     std::printf("axis %u: commanded %d, correction %+.3f, output %d steps, max backlog %u\n", a + 1,
                 n.commanded[a], n.correction_q8[a] / 256.0, n.output[a], n.backlog[a]);
+    std::printf(
+        "axis %u: %s%s%s, clamped refreshes %u, rate-limited refreshes %u\n", a + 1,
+        n.limit_flags[a] == 0 ? "correction not limited" : "CORRECTION LIMITED:",
+        (n.limit_flags[a] & canopen::kLimitClamped) != 0 ? " clamped (0x2015)" : "",
+        (n.limit_flags[a] & canopen::kLimitRateLimited) != 0 ? " rate limited (0x2016)" : "",
+        n.clamped[a], n.rate_limited[a]);
   }
   std::printf("counters:");
   for (int i = 0; i < kCounterCount; ++i) std::printf(" %s=%u", kCounterNames[i], n.counters[i]);
@@ -200,8 +227,16 @@ int RunMonitor(Args& args) {
   auto s = OpenSession(can);
   const auto start = std::chrono::steady_clock::now();
   std::optional<uint8_t> last_nmt;
+  const auto deadline = start + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                                    std::chrono::duration<double>(duration));
   for (;;) {
-    s->Listen(std::chrono::milliseconds(interval));
+    auto wait = std::chrono::milliseconds(interval);  // --duration cuts the last wait short
+    if (duration > 0) {
+      const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(
+          deadline - std::chrono::steady_clock::now());
+      wait = std::max(std::chrono::milliseconds(0), std::min(wait, left));
+    }
+    s->Listen(wait);
     for (const CanFrame& f : s->TakeEmcy()) {
       canopen::Emcy e;
       if (canopen::DecodeEmcy(f, can.node, &e)) std::printf("%s\n", EmcyText(e).c_str());
@@ -217,9 +252,7 @@ int RunMonitor(Args& args) {
     }
     std::printf(" | rx %u tx %u aborts %u\n", n.counters[0], n.counters[1], n.counters[3]);
     std::fflush(stdout);
-    const double elapsed =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    if (duration > 0 && elapsed >= duration) return 0;
+    if (duration > 0 && std::chrono::steady_clock::now() >= deadline) return 0;
   }
 }
 

@@ -36,6 +36,7 @@ std::string StagingFailureReason(NodeObjects& node) {
   uint32_t word = 0;
   if (!node.Read(ObjectId::kTableStatus, &word).ok) return "";
   const canopen::TableStatus st = canopen::DecodeTableStatus(word);
+  if (st.staged == canopen::StagedState::kEmpty) return "nothing is staged (upload a table first)";
   if (st.staged != canopen::StagedState::kFailed || st.error == Error::kOk) return "";
   return std::string(ErrorText(st.error)) + " (" + ErrorName(st.error) + ")";
 }
@@ -81,9 +82,11 @@ std::string TableCommandStep(TableCommand command) {
 }
 
 SdoResult WriteTableCommand(NodeObjects& node, TableCommand command) {
-  return Explain(
-      WithStagingReason(node, node.Write(ObjectId::kTableControl, canopen::Value(command))),
-      TableCommandStep(command));
+  SdoResult r = node.Write(ObjectId::kTableControl, canopen::Value(command));
+  if (command == TableCommand::kVerify || command == TableCommand::kActivate) {
+    r = WithStagingReason(node, r);
+  }
+  return Explain(r, TableCommandStep(command));
 }
 
 SdoResult EnsureWritable(NodeObjects& node) {
