@@ -21,15 +21,7 @@ work=$(mktemp -d)
 trap 'kill -9 $(jobs -p) 2>/dev/null || true; rm -rf "$work"' EXIT
 fail() { echo "FAIL: $*" >&2; exit 1; }
 node_pid=
-start_node() {
-  rm -f "$work/ready"
-  "$sim" node --slcan-tcp 0 --flash-dir "$work/flash" --ready-file "$work/ready" --duration 300 \
-    >>"$work/node.log" 2>&1 &
-  node_pid=$!
-  for _ in $(seq 100); do [[ -s $work/ready ]] && break; sleep 0.05; done
-  [[ -s $work/ready ]] || fail "node did not start"
-  can=$(cat "$work/ready")
-}
+source "$(dirname "$0")/sim_node_lib.sh"
 power_cycle() {  # SIGKILL: nothing is saved at exit, only what the flash operations wrote
   kill -9 "$node_pid"; wait "$node_pid" 2>/dev/null || true
   start_node
@@ -166,16 +158,7 @@ correction (0x2015:1) is 100 steps" "$o" || fail "the clamp refusal does not nam
       "$volcomp" upload "$work/a.vct" --can "$can" --quiet >/dev/null
       referenced_and_at_rest
       "$volcomp" activate --can "$can" >/dev/null
-      python3 - "$work/big.csv" <<'PY'
-import math, sys
-with open(sys.argv[1], "w") as f:
-    f.write("x_mm,y_mm,z_mm,dx_um,dy_um,dz_um\n")
-    for k in range(24):
-        for j in range(24):
-            for i in range(24):
-                f.write("%d,%d,%d,%.3f,%.3f,%.3f\n" % (i * 20, j * 20, k * 10, 8 * math.sin(i / 4),
-                        0.3 * j, 4 * math.cos(k / 3)))
-PY
+      write_big_grid "$work/big.csv"
       build "$work/big.vct" "$work/big.csv" 4
       "$volcomp" upload "$work/big.vct" --can "$can" --retries 0 --quiet >"$o" 2>&1 &
       upload_pid=$!
