@@ -13,45 +13,60 @@ bool ValidAxisName(char c) {
   return false;
 }
 
-Status ValidateAxis(const AxisConfig& a, uint32_t tick_hz) {
-  if (!ValidAxisName(a.name) || a.resolution_e9 == 0) return Error::kConfigInvalid;
+ConfigRule AxisRule(const AxisConfig& a, uint32_t tick_hz) {
+  if (!ValidAxisName(a.name)) return ConfigRule::kAxisName;
+  if (a.resolution_e9 == 0) return ConfigRule::kResolution;
   if (a.kind != table::AxisKind::kLinear && a.kind != table::AxisKind::kRotary) {
-    return Error::kConfigInvalid;
+    return ConfigRule::kAxisKind;
   }
   if (static_cast<uint8_t>(a.input_format) > 2 || static_cast<uint8_t>(a.output_format) > 2) {
-    return Error::kConfigInvalid;
+    return ConfigRule::kPulseFormat;
   }
-  if (a.input_counter_bits != 16 && a.input_counter_bits != 32) return Error::kConfigInvalid;
+  if (a.input_counter_bits != 16 && a.input_counter_bits != 32) return ConfigRule::kCounterBits;
   if (a.max_correction_steps < 0 || a.max_correction_steps > table::kMaxCorrectionSteps) {
-    return Error::kConfigInvalid;
+    return ConfigRule::kMaxCorrection;
   }
-  if (a.max_input_rate_hz == 0 || a.drive.max_rate_hz == 0) return Error::kConfigInvalid;
+  if (a.max_input_rate_hz == 0 || a.drive.max_rate_hz == 0) return ConfigRule::kRateNotZero;
   // A 16-bit counter must not wrap by half its range within one tick.
   if (a.input_counter_bits == 16 && a.max_input_rate_hz / tick_hz >= 32768u) {
-    return Error::kConfigInvalid;
+    return ConfigRule::kCounterWrap;
   }
   // The output must keep up with the fastest input plus the fastest correction.
   if (static_cast<uint64_t>(a.max_input_rate_hz) + a.max_correction_rate_steps_s >
       a.drive.max_rate_hz) {
-    return Error::kConfigInvalid;
+    return ConfigRule::kDriveKeepsUp;
   }
   const Result<CorrectionLimiter::Params> p = CorrectionLimiter::MakeParams(
       tick_hz, a.max_correction_rate_steps_s, a.max_correction_accel_steps_s2);
-  return p.status();
+  return p.ok() ? ConfigRule::kNone : ConfigRule::kLimiter;
+}
+
+ConfigFinding FirstBrokenRule(const BoardConfig& config) {
+  ConfigFinding f;
+  if (config.tick_hz < kMinTickHz || config.tick_hz > kMaxTickHz) {
+    f.rule = ConfigRule::kTickRate;
+  } else if (config.pulse_clock_hz < config.tick_hz * 100u) {
+    f.rule = ConfigRule::kPulseClock;
+  } else if (config.axis_count < 1 || config.axis_count > table::kMaxAxes) {
+    f.rule = ConfigRule::kAxisCount;
+  }
+  for (uint8_t i = 0; f.rule == ConfigRule::kNone && i < config.axis_count; ++i) {
+    f.axis = static_cast<uint8_t>(i + 1);
+    f.rule = AxisRule(config.axis[i], config.tick_hz);
+    for (uint8_t j = 0; f.rule == ConfigRule::kNone && j < i; ++j) {
+      if (config.axis[j].name == config.axis[i].name) f.rule = ConfigRule::kAxisName;
+    }
+  }
+  if (f.rule == ConfigRule::kNone) f.axis = 0;
+  return f;
 }
 
 }  // namespace
 
-Status ValidateBoardConfig(const BoardConfig& config) {
-  if (config.tick_hz < kMinTickHz || config.tick_hz > kMaxTickHz) return Error::kConfigInvalid;
-  if (config.pulse_clock_hz < config.tick_hz * 100u) return Error::kConfigInvalid;
-  if (config.axis_count < 1 || config.axis_count > table::kMaxAxes) return Error::kConfigInvalid;
-  for (uint8_t i = 0; i < config.axis_count; ++i) {
-    VOLCOMP_TRY(ValidateAxis(config.axis[i], config.tick_hz));
-    for (uint8_t j = 0; j < i; ++j) {
-      if (config.axis[j].name == config.axis[i].name) return Error::kConfigInvalid;
-    }
-  }
+Status ValidateBoardConfig(const BoardConfig& config, ConfigFinding* finding) {
+  const ConfigFinding f = FirstBrokenRule(config);
+  if (finding != nullptr) *finding = f;
+  if (f.rule != ConfigRule::kNone) return Error::kConfigInvalid;
   return Status::Ok();
 }
 

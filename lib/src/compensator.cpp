@@ -47,6 +47,8 @@ Status Compensator::Configure(const BoardConfig& config) {
     if (!p.ok()) return p.status();
     limiter_[a] = CorrectionLimiter(*p);
     max_q8_[a] = ax.max_correction_steps * (1 << table::kCorrectionFracBits);
+    clamped_refreshes_[a] = 0;
+    rate_limited_refreshes_[a] = 0;
     last_pos_[a] = 0;
     reverse_[a] = false;
     target_q8_[a] = 0;
@@ -139,9 +141,13 @@ void Compensator::RefreshTargets(const int32_t* machine_pos_steps) {
       t += lookup->Lookup(wraps_[a] ? wrap_[a].position() : machine_pos_steps[a], reverse_[a]);
     }
     const int32_t max = max_q8_[a];
+    const int32_t asked = t;
     t = t > max ? max : t;
     t = t < -max ? -max : t;
     target_q8_[a] = t;
+    // Selects, not branches: whether the table was clamped, whether the limiter is at its rate.
+    clamped_refreshes_[a] += t != asked ? 1u : 0u;
+    rate_limited_refreshes_[a] += limiter_[a].at_rate_limit() ? 1u : 0u;
     next = a + 1u == axis_count_ ? 0u : next;
   }
   phase_ = static_cast<uint8_t>(next);

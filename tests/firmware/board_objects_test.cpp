@@ -586,5 +586,105 @@ TEST_F(Bench, StagingStepsNameTheStepThatFailed) {
   EXPECT_EQ(r.message.rfind("verifying on the board (0x2101 = 4): ", 0), 0u) << r.message;
 }
 
+// Doing less than the table asks is visible: a table asking 100 steps on axis 1 of a board whose
+// max correction is 50 is applied as 50, flagged clamped (0x2134), counted (0x2135) and reported
+// by one EMCY 0xFF20 naming axis 1, however long it stays clamped. The ramp-in at rest runs at the
+// rate limit (counted in 0x2136) without an EMCY; a ramp while the axes move sends one.
+TEST_F(Bench, ClampingAndRateLimitingAreFlaggedCountedAndReportedOnce) {
+  config_.axis[0].max_correction_steps = 50;
+  Boot();
+  io_.SetInput(InputLine::kWriteEnable, true);
+  ASSERT_TRUE(Upload(UniformImage(100, 9)).ok);
+  ASSERT_TRUE(Command(TableCommand::kVerify).ok);
+  ASSERT_TRUE(Write(ObjectId::kReferenceAxes, 0x07).ok);
+  Step(10000);
+  sent_.clear();
+  ASSERT_TRUE(Command(TableCommand::kActivate).ok);
+  Step(20000);  // 400 ms: the ramp to the clamped 50 steps takes about 35 ms
+  EXPECT_EQ(static_cast<int32_t>(Read(ObjectId::kAppliedCorrection1)), 50 * 256);
+  EXPECT_EQ(Read(ObjectId::kCorrectionLimited1), uint32_t{canopen::kLimitClamped});
+  EXPECT_EQ(Read(ObjectId::kCorrectionLimited2), 0u);
+  const uint32_t clamped = Read(ObjectId::kClampedRefreshes1);
+  EXPECT_GT(clamped, 20000u / 6 - 100);  // one refresh of axis 1 every 6 ticks, all clamped
+  EXPECT_EQ(Read(ObjectId::kClampedRefreshes2), 0u);
+  EXPECT_GT(Read(ObjectId::kRateLimitedRefreshes1), 0u);  // the ramp in
+  EXPECT_EQ(Read(ObjectId::kRateLimitedRefreshes2), 0u);
+  Step(20000);
+  EXPECT_GT(Read(ObjectId::kClampedRefreshes1), clamped);
+  ASSERT_EQ(CountEmcy(canopen::kEmcyCorrectionLimited), 1);
+  for (const CanFrame& f : sent_) {
+    canopen::Emcy e;
+    if (!canopen::DecodeEmcy(f, kNode, &e) || e.code != canopen::kEmcyCorrectionLimited) continue;
+    EXPECT_EQ(e.clamped_axes(), 0x01);
+    EXPECT_EQ(e.rate_limited_axes(), 0x00);  // the ramp was at rest
+  }
+  // Compensation off: the correction ramps out, the flags clear after the hold time.
+  ASSERT_TRUE(Write(ObjectId::kCompensationEnable, 0).ok);
+  Step(20000);
+  EXPECT_EQ(Read(ObjectId::kAppliedCorrection1), 0u);
+  EXPECT_EQ(Read(ObjectId::kCorrectionLimited1), 0u);
+  // On again while axis 1 moves: clamped again (one EMCY), and the ramp in is rate limited in
+  // motion (one more EMCY), both naming axis 1.
+  sent_.clear();
+  step_io_.add_steps(0, 10);
+  Step(1);
+  ASSERT_TRUE(Write(ObjectId::kCompensationEnable, 1).ok);
+  for (int i = 0; i < 40; ++i) {  // 10 steps per ms for 40 ms
+    step_io_.add_steps(0, 10);
+    Step(50);
+  }
+  for (const CanFrame& f : can_.TakeSent()) sent_.push_back(f);
+  ASSERT_EQ(CountEmcy(canopen::kEmcyCorrectionLimited), 2);
+  uint8_t clamped_axes = 0, limited_axes = 0;
+  for (const CanFrame& f : sent_) {
+    canopen::Emcy e;
+    if (!canopen::DecodeEmcy(f, kNode, &e) || e.code != canopen::kEmcyCorrectionLimited) continue;
+    clamped_axes |= e.clamped_axes();
+    limited_axes |= e.rate_limited_axes();
+  }
+  EXPECT_EQ(clamped_axes, 0x01);
+  EXPECT_EQ(limited_axes, 0x01);
+}
+
+// A refused store says which rule and which axis (0x2123), before and after the refusal.
+TEST_F(Bench, SettingsCheckNamesTheRuleAndTheAxis) {
+  Boot();
+  io_.SetInput(InputLine::kWriteEnable, true);
+  EXPECT_EQ(Read(ObjectId::kSettingsCheck), 0u);
+  // Axis 2's drive cannot follow the fastest input plus the correction.
+  ASSERT_TRUE(Write(ObjectId::kAxisDriveMaxRate2, 1000).ok);
+  EXPECT_EQ(Write(ObjectId::kStoreAll, canopen::kSaveSignature).abort_code,
+            canopen::SdoAbort::kInvalidValue);
+  const canopen::SettingsCheck c = canopen::DecodeSettingsCheck(Read(ObjectId::kSettingsCheck));
+  EXPECT_EQ(c.finding.rule, ConfigRule::kDriveKeepsUp);
+  EXPECT_EQ(c.finding.axis, 2);
+  EXPECT_EQ(c.error, Error::kConfigInvalid);
+  canopen_client::FrameLink link = Link();
+  canopen_client::NodeObjects node(link, kNode);
+  const std::string why = canopen_client::SettingsRefusalReason(node);
+  EXPECT_NE(why.find("axis 2: "), std::string::npos) << why;
+  EXPECT_NE(why.find("drive max rate (0x201D)"), std::string::npos) << why;
+}
+
+// verify --readback of the active table: 0x2109 is the active image even while another is staged.
+TEST_F(Bench, ActiveTableDataIsTheActiveImageWhileAnotherIsStaged) {
+  Boot();
+  io_.SetInput(InputLine::kWriteEnable, true);
+  const testing::AlignedBytes a = UniformImage(6, 1), b = UniformImage(7, 2);
+  ASSERT_TRUE(Upload(a).ok);
+  ASSERT_TRUE(Command(TableCommand::kVerify).ok);
+  ASSERT_TRUE(Write(ObjectId::kReferenceAxes, 0x07).ok);
+  Step(10000);
+  ASSERT_TRUE(Command(TableCommand::kActivate).ok);
+  ASSERT_TRUE(Upload(b).ok);
+  canopen_client::FrameLink link = Link();
+  canopen_client::NodeObjects node(link, kNode);
+  std::vector<uint8_t> active, staged;
+  ASSERT_TRUE(node.UploadDomain(ObjectId::kActiveTableData, &active).ok);
+  ASSERT_TRUE(node.UploadDomain(ObjectId::kTableData, &staged).ok);
+  EXPECT_EQ(active, std::vector<uint8_t>(a.data(), a.data() + a.size()));
+  EXPECT_EQ(staged, std::vector<uint8_t>(b.data(), b.data() + b.size()));
+}
+
 }  // namespace
 }  // namespace volcomp

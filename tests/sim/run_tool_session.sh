@@ -11,29 +11,12 @@ work=$(mktemp -d)
 trap 'kill $(jobs -p) 2>/dev/null || true; rm -rf "$work"' EXIT
 fail() { echo "FAIL: $*" >&2; exit 1; }
 
-start_node() {
-  rm -f "$work/ready"
-  "$sim" node --slcan-tcp 0 --flash-dir "$work/flash" --ready-file "$work/ready" --duration 120 \
-    >>"$work/node.log" 2>&1 &
-  node_pid=$!
-  for _ in $(seq 100); do [[ -s $work/ready ]] && break; sleep 0.05; done
-  [[ -s $work/ready ]] || fail "node did not start"
-  can=$(cat "$work/ready")
-}
+source "$(dirname "$0")/sim_node_lib.sh"
 mkdir -p "$work/flash"
 
 "$volcomp" build grid --csv "$src/samples/grid_example.csv" -o "$work/a.vct" \
   --resolution-nm X=1000,Y=1000,Z=1000 --table-id 1 >/dev/null 2>&1
-/usr/bin/env python3 - "$work/big.csv" <<'PY'
-import math, sys
-with open(sys.argv[1], "w") as f:
-    f.write("x_mm,y_mm,z_mm,dx_um,dy_um,dz_um\n")
-    for k in range(24):
-        for j in range(24):
-            for i in range(24):
-                f.write("%d,%d,%d,%.3f,%.3f,%.3f\n" % (i * 20, j * 20, k * 10, 8 * math.sin(i / 4),
-                        0.3 * j, 4 * math.cos(k / 3)))
-PY
+write_big_grid "$work/big.csv"
 "$volcomp" build grid --csv "$work/big.csv" -o "$work/b.vct" \
   --resolution-nm X=1000,Y=1000,Z=1000 --table-id 2 >/dev/null 2>&1
 

@@ -15,10 +15,11 @@ TEST(VolcompCli, ReferenceRefusesMalformedAxisLists) {
 }
 
 TEST(VolcompCli, ReferenceAcceptsAxisListsAndThenNeedsTheBus) {
-  // A well-formed list passes parsing; the command then fails opening the (absent) bus.
+  // A well-formed list passes parsing; the command then fails opening the (absent) bus: a
+  // communication failure (exit 3).
   for (const char* list : {"1", "1,2,3", " 4 , 6 "}) {
     const CliResult r = RunCli({"reference", "--can", "slcan-tcp:127.0.0.1:1", "--axes", list});
-    EXPECT_EQ(r.code, 1) << list << r.err;
+    EXPECT_EQ(r.code, tools::kExitCommunication) << list << r.err;
     EXPECT_EQ(r.err.find("--axes"), std::string::npos) << list << r.err;
   }
 }

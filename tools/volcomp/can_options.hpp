@@ -7,6 +7,7 @@
 #include "volcomp/canopen_client/can_session.hpp"
 #include "volcomp/tools/args.hpp"
 #include "volcomp/tools/csv.hpp"
+#include "volcomp/tools/exit_codes.hpp"
 
 namespace volcomp::tools {
 
@@ -36,10 +37,33 @@ inline CanOptions ParseCanOptions(Args& args) {
   return o;
 }
 
+/// Opens the adapter; CommunicationError (exit 3) when it cannot be opened.
 inline std::unique_ptr<canopen_client::CanSession> OpenSession(const CanOptions& o) {
   canopen_client::SdoClient::Options sdo;
   sdo.timeout_ms = o.timeout_ms;
-  return std::make_unique<canopen_client::CanSession>(o.spec, o.node, o.log, sdo);
+  try {
+    return std::make_unique<canopen_client::CanSession>(o.spec, o.node, o.log, sdo);
+  } catch (const std::runtime_error& e) {
+    throw CommunicationError(e.what());
+  }
+}
+
+/// Runs `body` (the bus part of a command); a failure of the link itself (the transport's
+/// std::runtime_error: connection cut, bus-off) becomes CommunicationError (exit 3). Refusals
+/// (InputError), usage errors and communication errors pass unchanged.
+template <class Body>
+auto OverTheBus(Body&& body) -> decltype(body()) {
+  try {
+    return body();
+  } catch (const InputError&) {
+    throw;
+  } catch (const UsageError&) {
+    throw;
+  } catch (const CommunicationError&) {
+    throw;
+  } catch (const std::runtime_error& e) {
+    throw CommunicationError(e.what());
+  }
 }
 
 }  // namespace volcomp::tools

@@ -1,4 +1,5 @@
 // `volcomp status [--json]` and `volcomp monitor`: a board's state over CAN.
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <iostream>
@@ -43,6 +44,7 @@ struct Snapshot {
            staged_id = 0, staged_bytes = 0, writable = 0, axes = 0;
   int32_t commanded[6] = {}, correction_q8[6] = {}, output[6] = {};
   uint32_t backlog[6] = {};
+  uint32_t limit_flags[6] = {}, clamped[6] = {}, rate_limited[6] = {};  // 0x2134-0x2136
   uint32_t counters[kCounterCount] = {};
   std::optional<uint8_t> nmt;
 };
@@ -82,6 +84,9 @@ Snapshot Take(canopen_client::CanSession& s, bool axes_detail) {
     n.correction_q8[a] = static_cast<int32_t>(Get(s, id(ObjectId::kAppliedCorrection1)));
     n.output[a] = static_cast<int32_t>(Get(s, id(ObjectId::kOutputPosition1)));
     n.backlog[a] = Get(s, id(ObjectId::kMaxBacklog1));
+    n.limit_flags[a] = Get(s, id(ObjectId::kCorrectionLimited1));
+    n.clamped[a] = Get(s, id(ObjectId::kClampedRefreshes1));
+    n.rate_limited[a] = Get(s, id(ObjectId::kRateLimitedRefreshes1));
   }
   for (int i = 0; i < kCounterCount; ++i) {
     n.counters[i] = Get(s, static_cast<ObjectId>(static_cast<int>(ObjectId::kCanRxFrames) + i));
@@ -114,10 +119,18 @@ bool AtMaxCorrection(const Snapshot& n, const AxisInfo& x, uint32_t a) {
   return x.max_correction_steps > 0 && applied_q8 >= int64_t{x.max_correction_steps} * 256;
 }
 
-// What bounds the correction of axis `a` now, for the status line ("" when nothing does). The
-// limiter's per-axis state belongs here as well as in AxisJson().
+// What bounds the correction of axis `a` now, for the status line ("" when nothing does): the
+// board's flags (0x2134: clamped to 0x2015 or rate limited by 0x2016 within the last 100 ms) and
+// their counts (0x2135, 0x2136).
 std::string LimitText(const Snapshot& n, const AxisInfo& x, uint32_t a) {
-  return AtMaxCorrection(n, x, a) ? ", AT MAX CORRECTION" : "";
+  std::string t = AtMaxCorrection(n, x, a) ? ", AT MAX CORRECTION" : "";
+  if ((n.limit_flags[a] & canopen::kLimitClamped) != 0) t += ", CLAMPED (0x2015)";
+  if ((n.limit_flags[a] & canopen::kLimitRateLimited) != 0) t += ", RATE LIMITED (0x2016)";
+  if (n.clamped[a] != 0 || n.rate_limited[a] != 0) {
+    t += ", limited refreshes: clamped " + std::to_string(n.clamped[a]) + ", rate " +
+         std::to_string(n.rate_limited[a]);
+  }
+  return t;
 }
 
 void AxisJson(JsonWriter& w, const Snapshot& n, const AxisInfo& x, uint32_t a) {
@@ -132,6 +145,10 @@ void AxisJson(JsonWriter& w, const Snapshot& n, const AxisInfo& x, uint32_t a) {
       .value(n.correction_q8[a] / 256.0 * x.correction_per_step());
   w.key("max_correction_steps").value(int64_t{x.max_correction_steps});
   w.key("at_max_correction").value(AtMaxCorrection(n, x, a));
+  w.key("clamped").value((n.limit_flags[a] & canopen::kLimitClamped) != 0);
+  w.key("rate_limited").value((n.limit_flags[a] & canopen::kLimitRateLimited) != 0);
+  w.key("clamped_refreshes").value(uint64_t{n.clamped[a]});
+  w.key("rate_limited_refreshes").value(uint64_t{n.rate_limited[a]});
   w.key("output_steps").value(int64_t{n.output[a]});
   w.key("max_backlog_steps").value(uint64_t{n.backlog[a]});
 }
@@ -168,6 +185,13 @@ std::string EmcyText(const canopen::Emcy& e) {
     s += " (refused action: abort " + Hex32(canopen::Code(e.abort_code())) + ")";
   if (e.code == canopen::kEmcyTableInvalid)
     s += std::string(" (table invalid: ") + ErrorName(e.error()) + ")";
+  if (e.code == canopen::kEmcyCorrectionLimited) {
+    char axes[64];
+    std::snprintf(axes, sizeof axes,
+                  " (correction limited: clamped axes 0x%02X, rate limited 0x%02X)",
+                  e.clamped_axes(), e.rate_limited_axes());
+    s += axes;
+  }
   if (e.code == canopen::kEmcyErrorReset) s += " (errors cleared)";
   return s;
 }
@@ -241,9 +265,14 @@ int RunStatus(Args& args) {
       table_active
           ? ("id " + std::to_string(n.active_id) + ", CRC-32 " + Hex32(n.active_crc)).c_str()
           : "none (pass-through)");
+  const bool staged_image = staged_state == canopen::StagedState::kComplete ||
+                            staged_state == canopen::StagedState::kVerified;
   std::printf(
-      "staged table: %s, %u bytes, id %u, CRC-32 %s%s\n", StagedStateName(staged_state),
-      n.staged_bytes, n.staged_id, Hex32(n.staged_crc).c_str(),
+      "staged table: %s%s%s\n", StagedStateName(staged_state),
+      staged_image ? (", " + std::to_string(n.staged_bytes) + " bytes, id " +
+                      std::to_string(n.staged_id) + ", CRC-32 " + Hex32(n.staged_crc))
+                         .c_str()
+                   : "",
       last != Error::kOk
           ? (std::string(", last error ") + ErrorName(last) + ": " + ErrorText(last)).c_str()
           : "");
@@ -285,14 +314,24 @@ int RunMonitor(Args& args) {
     axes = ReadAxes(*s, Get(*s, ObjectId::kAxisCountConfig));
     std::printf("time_s,state");
     for (const AxisInfo& x : axes) {
-      std::printf(",%c_commanded_%s,%c_correction_%s,%c_correction_steps,%c_at_max_correction",
-                  x.name, x.position_unit(), x.name, x.correction_unit(), x.name, x.name);
+      std::printf(
+          ",%c_commanded_%s,%c_correction_%s,%c_correction_steps,%c_at_max_correction,%c_clamped,"
+          "%c_rate_limited",
+          x.name, x.position_unit(), x.name, x.correction_unit(), x.name, x.name, x.name, x.name);
     }
-    std::printf(",lost_step_checks,refused_actions,sdo_aborts\n");
+    std::printf(",output_overruns,refused_actions,sdo_aborts\n");
     std::fflush(stdout);
   }
+  const auto deadline = start + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                                    std::chrono::duration<double>(duration));
   for (;;) {
-    s->Listen(std::chrono::milliseconds(interval));
+    auto wait = std::chrono::milliseconds(interval);  // --duration cuts the last wait short
+    if (duration > 0) {
+      const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(
+          deadline - std::chrono::steady_clock::now());
+      wait = std::max(std::chrono::milliseconds(0), std::min(wait, left));
+    }
+    s->Listen(wait);
     for (const CanFrame& f : s->TakeEmcy()) {
       canopen::Emcy e;
       if (canopen::DecodeEmcy(f, can.node, &e)) std::fprintf(events, "%s\n", EmcyText(e).c_str());
@@ -312,9 +351,11 @@ int RunMonitor(Args& args) {
       std::printf("%.3f,%s", t, state.c_str());
       for (uint32_t a = 0; a < axes.size(); ++a) {
         const double steps = n.correction_q8[a] / 256.0;
-        std::printf(",%.6f,%.4f,%.4f,%d", n.commanded[a] * axes[a].units_per_step(),
+        std::printf(",%.6f,%.4f,%.4f,%d,%d,%d", n.commanded[a] * axes[a].units_per_step(),
                     steps * axes[a].correction_per_step(), steps,
-                    AtMaxCorrection(n, axes[a], a) ? 1 : 0);
+                    AtMaxCorrection(n, axes[a], a) ? 1 : 0,
+                    (n.limit_flags[a] & canopen::kLimitClamped) != 0 ? 1 : 0,
+                    (n.limit_flags[a] & canopen::kLimitRateLimited) != 0 ? 1 : 0);
       }
       std::printf(",%u,%u,%u\n", n.counters[6], n.counters[8], n.counters[3]);
     } else {
@@ -325,9 +366,7 @@ int RunMonitor(Args& args) {
       std::printf(" | rx %u tx %u aborts %u\n", n.counters[0], n.counters[1], n.counters[3]);
     }
     std::fflush(stdout);
-    const double elapsed =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    if (duration > 0 && elapsed >= duration) return 0;
+    if (duration > 0 && std::chrono::steady_clock::now() >= deadline) return 0;
   }
 }
 

@@ -1,29 +1,56 @@
 // `volcomp activate | deactivate | reference`: table control and referencing over CAN.
+//
+// Activate first reads the staged table back and checks it against the board's installation
+// (board_fit.hpp): a table the board would clamp or rate-limit is refused unless --allow-clamp.
+// Reference refuses axes the board does not have (0x2000:4).
 #include <cstdio>
 #include <string>
 
+#include "board_fit.hpp"
 #include "can_options.hpp"
 #include "commands.hpp"
 #include "sdo_failure.hpp"
+#include "volcomp/image/image_reader.hpp"
 
 namespace volcomp::tools {
 namespace {
 
 using canopen::ObjectId;
 
+// The staged table, read back and checked against the installation before it is activated.
+void CheckStagedFits(canopen_client::CanSession& s, uint8_t node, bool allow_clamp) {
+  uint32_t word = 0;
+  Check(s.Read(ObjectId::kTableStatus, &word), "reading the table status (0x2102)");
+  const canopen::StagedState staged = canopen::DecodeTableStatus(word).staged;
+  if (staged != canopen::StagedState::kVerified && staged != canopen::StagedState::kComplete) {
+    return;  // nothing to check: the board refuses the activation and says why
+  }
+  std::vector<uint8_t> bytes;
+  Check(s.UploadDomain(ObjectId::kTableData, &bytes), "reading back the staged table (0x2100)");
+  const image::LoadedImage img(bytes, "the staged table of node " + std::to_string(node));
+  RequireTableFits(s, img.view(), allow_clamp);
+}
+
 int Control(Args& args, canopen::TableCommand command, const char* done) {
   const CanOptions can = ParseCanOptions(args);
+  const bool allow_clamp =
+      command == canopen::TableCommand::kActivate && args.flag("--allow-clamp");
   args.finish();
-  auto s = OpenSession(can);
-  Require(canopen_client::EnsureWritable(*s));
-  Check(s->Write(ObjectId::kTableControl, canopen::Value(command)),
-        std::string(command == canopen::TableCommand::kActivate ? "activation" : "deactivation") +
-            " refused by node " + std::to_string(can.node));
-  uint32_t crc = 0, id = 0;
-  Check(s->Read(ObjectId::kActiveTableCrc, &crc), "reading the active CRC-32 (0x2104)");
-  Check(s->Read(ObjectId::kActiveTableId, &id), "reading the active table id (0x2103)");
-  std::printf("%s: node %u active table id %u, CRC-32 0x%08X\n", done, can.node, id, crc);
-  return 0;
+  return OverTheBus([&] {
+    auto s = OpenSession(can);
+    if (command == canopen::TableCommand::kActivate) CheckStagedFits(*s, can.node, allow_clamp);
+    Require(canopen_client::EnsureWritable(*s));
+    canopen_client::SdoResult r = s->Write(ObjectId::kTableControl, canopen::Value(command));
+    if (command == canopen::TableCommand::kActivate) r = canopen_client::WithStagingReason(*s, r);
+    Check(r,
+          std::string(command == canopen::TableCommand::kActivate ? "activation" : "deactivation") +
+              " refused by node " + std::to_string(can.node));
+    uint32_t crc = 0, id = 0;
+    Check(s->Read(ObjectId::kActiveTableCrc, &crc), "reading the active CRC-32 (0x2104)");
+    Check(s->Read(ObjectId::kActiveTableId, &id), "reading the active table id (0x2103)");
+    std::printf("%s: node %u active table id %u, CRC-32 0x%08X\n", done, can.node, id, crc);
+    return 0;
+  });
 }
 
 // "1,2,3" -> the bit mask of those axes (1..6); spaces are ignored.
@@ -57,11 +84,22 @@ int RunReference(Args& args) {
   const CanOptions can = ParseCanOptions(args);
   const std::string axes = args.value("--axes").value_or("");
   args.finish();
-  const uint32_t mask = axes.empty() ? 0x3Fu : AxisMask(axes);
-  auto s = OpenSession(can);
-  Check(s->Write(ObjectId::kReferenceAxes, mask), "referencing");
-  std::printf("node %u: reference requested for axes mask 0x%02X\n", can.node, mask);
-  return 0;
+  const uint32_t asked = axes.empty() ? 0 : AxisMask(axes);
+  return OverTheBus([&] {
+    auto s = OpenSession(can);
+    uint32_t count = 0;
+    Check(s->Read(ObjectId::kAxisCountConfig, &count), "reading the axis count (0x2000:4)");
+    const uint32_t all = count >= 6 ? 0x3Fu : (1u << count) - 1u;
+    if ((asked & ~all) != 0) {
+      throw InputError("--axes " + axes + ": node " + std::to_string(can.node) + " has " +
+                       std::to_string(count) + " axes (0x2000:4), axis numbers 1.." +
+                       std::to_string(count));
+    }
+    const uint32_t mask = asked != 0 ? asked : all;
+    Check(s->Write(ObjectId::kReferenceAxes, mask), "referencing");
+    std::printf("node %u: reference requested for axes mask 0x%02X\n", can.node, mask);
+    return 0;
+  });
 }
 
 }  // namespace volcomp::tools

@@ -1,10 +1,15 @@
 // `volcomp upload IMAGE` and `volcomp verify IMAGE`: table transfer to a board over CAN.
 //
-// Upload: validate the image locally, skip if the board already has it active, then the staging
-// protocol of canopen_client/table_staging.hpp (unlock, clear the staging bank, block-download into
-// 0x2100, verify on the board, check the staged CRC-32), and optionally activate (0x2101 = 1).
-// A failed or cut transfer is retried from the start (--retries), which is always safe: the active
-// table is never touched by staging.
+// Upload: validate the image locally, check it against the board's installation (board_fit.hpp:
+// refused when the board would refuse, clamp or rate-limit it, unless --allow-clamp), skip if the
+// board already has it active, then the staging protocol of canopen_client/table_staging.hpp
+// (unlock, clear the staging bank, block-download into 0x2100, verify on the board, check the
+// staged CRC-32), and optionally activate (0x2101 = 1). A failed or cut transfer is retried from
+// the start (--retries), which is always safe: the active table is never touched by staging.
+//
+// Verify: which table the board has active or staged; --readback reads the image it names back
+// (the active one from 0x2109, or with --staged the staged one from 0x2100) and compares it byte
+// by byte. Exit 1 for a different or absent table, 3 when the board cannot be reached.
 #include <unistd.h>
 
 #include <chrono>
@@ -12,6 +17,7 @@
 #include <iostream>
 #include <thread>
 
+#include "board_fit.hpp"
 #include "can_options.hpp"
 #include "commands.hpp"
 #include "sdo_failure.hpp"
@@ -78,7 +84,7 @@ void UploadOnce(CanSession& s, const std::vector<uint8_t>& bytes, uint32_t crc, 
     if (!quiet) bar.Update(done);
   });
   if (!quiet) bar.Finish();
-  Check(r, "block download into 0x2100");
+  Check(canopen_client::WithStagingReason(s, r), "block download into 0x2100");
   const double secs = bar.Seconds();
   std::printf("transferred %zu bytes in %.2f s (%.1f kB/s)\n", bytes.size(), secs,
               secs > 0 ? static_cast<double>(bytes.size()) / secs / 1000 : 0.0);
@@ -90,6 +96,7 @@ void UploadOnce(CanSession& s, const std::vector<uint8_t>& bytes, uint32_t crc, 
 int RunUpload(Args& args) {
   const CanOptions can = ParseCanOptions(args);
   const bool activate = args.flag("--activate");
+  const bool allow_clamp = args.flag("--allow-clamp");
   const bool force = args.flag("--force");
   const bool quiet = args.flag("--quiet");
   const long long retries = args.integer("--retries").value_or(2);
@@ -106,6 +113,7 @@ int RunUpload(Args& args) {
     try {
       auto session = OpenSession(can);
       CanSession& s = *session;
+      RequireTableFits(s, img.view(), allow_clamp);
       const uint32_t active = ReadOr(s, ObjectId::kActiveTableCrc, "the active CRC-32 (0x2104)");
       if (active == crc && !force) {
         std::printf("node %u already has this table active (CRC-32 %s): nothing to do\n", can.node,
@@ -137,8 +145,8 @@ int RunUpload(Args& args) {
                    attempt + 1, e.what());
     } catch (const InputError&) {
       throw;
-    } catch (const std::runtime_error& e) {  // the link itself failed (cut connection, bus-off)
-      if (attempt >= retries) throw InputError(std::string("upload failed: ") + e.what());
+    } catch (const std::runtime_error& e) {  // no answer, or the link itself failed (cut, bus-off)
+      if (attempt >= retries) throw CommunicationError(std::string("upload failed: ") + e.what());
       std::fprintf(stderr, "upload attempt %lld failed: %s\nreconnecting and retrying...\n",
                    attempt + 1, e.what());
       std::this_thread::sleep_for(std::chrono::milliseconds(500));
@@ -149,36 +157,62 @@ int RunUpload(Args& args) {
 int RunVerify(Args& args) {
   const CanOptions can = ParseCanOptions(args);
   const bool readback = args.flag("--readback");
+  const bool staged_only = args.flag("--staged");
   const auto pos = args.positionals();
   args.finish();
   if (pos.size() != 1) throw UsageError("expected one IMAGE file");
   const image::LoadedImage img = image::LoadImageFile(pos[0]);
   const uint32_t crc = img.view().crc32;
-  auto session = OpenSession(can);
-  CanSession& s = *session;
-  const uint32_t active = ReadOr(s, ObjectId::kActiveTableCrc, "the active CRC-32 (0x2104)");
-  const uint32_t staged = ReadOr(s, ObjectId::kStagedTableCrc, "the staged CRC-32 (0x2105)");
-  std::printf("image CRC-32 %s; node %u: active %s, staged %s\n", Hex32(crc).c_str(), can.node,
-              Hex32(active).c_str(), Hex32(staged).c_str());
-  if (readback) {
-    std::vector<uint8_t> data;
-    Check(s.UploadDomain(ObjectId::kTableData, &data),
-          "reading back the table (0x2100: the staged image, or the active one)");
-    const bool same = data.size() == img.size() && std::equal(data.begin(), data.end(), img.data());
-    std::printf("read back %zu bytes from the board: %s\n", data.size(),
-                same ? "identical to the image" : "DIFFERENT from the image");
-    if (!same) return 1;
-  }
-  if (active == crc) {
-    std::printf("verified: the image is the active table\n");
-    return 0;
-  }
-  if (staged == crc) {
-    std::printf("the image is staged and verified but not active (run `volcomp activate`)\n");
-    return 1;
-  }
-  std::printf("the image is neither active nor staged on node %u\n", can.node);
-  return 1;
+  return OverTheBus([&] {
+    auto session = OpenSession(can);
+    CanSession& s = *session;
+    const uint32_t active = ReadOr(s, ObjectId::kActiveTableCrc, "the active CRC-32 (0x2104)");
+    const uint32_t staged = ReadOr(s, ObjectId::kStagedTableCrc, "the staged CRC-32 (0x2105)");
+    const canopen::TableStatus table =
+        canopen::DecodeTableStatus(ReadOr(s, ObjectId::kTableStatus, "the table status (0x2102)"));
+    const bool has_active =
+        canopen::DecodeDeviceState(ReadOr(s, ObjectId::kDeviceState, "the device state (0x2122)"))
+            .table_active;
+    const bool has_staged = table.staged == canopen::StagedState::kComplete ||
+                            table.staged == canopen::StagedState::kVerified;
+    std::printf("image CRC-32 %s; node %u: active %s, staged %s\n", Hex32(crc).c_str(), can.node,
+                has_active ? Hex32(active).c_str() : "none",
+                has_staged ? Hex32(staged).c_str() : "none");
+    const char* bank = staged_only ? "staged" : "active";
+    if (readback) {
+      if (staged_only ? !has_staged : !has_active) {
+        std::printf("no %s table on node %u to read back\n", bank, can.node);
+        return kExitFailed;
+      }
+      std::vector<uint8_t> data;
+      Check(s.UploadDomain(staged_only ? ObjectId::kTableData : ObjectId::kActiveTableData, &data),
+            staged_only ? "reading back the staged table (0x2100)"
+                        : "reading back the active table (0x2109)");
+      const bool same =
+          data.size() == img.size() && std::equal(data.begin(), data.end(), img.data());
+      std::printf("read back the %s table, %zu bytes: %s\n", bank, data.size(),
+                  same ? "identical to the image" : "DIFFERENT from the image");
+      if (!same) return kExitFailed;
+    }
+    if (staged_only) {
+      if (has_staged && staged == crc && table.staged == canopen::StagedState::kVerified) {
+        std::printf("verified: the image is staged and verified on node %u\n", can.node);
+        return kExitOk;
+      }
+      std::printf("the image is not the staged table of node %u\n", can.node);
+      return kExitFailed;
+    }
+    if (has_active && active == crc) {
+      std::printf("verified: the image is the active table\n");
+      return kExitOk;
+    }
+    if (has_staged && staged == crc) {
+      std::printf("the image is staged and verified but not active (run `volcomp activate`)\n");
+      return kExitFailed;
+    }
+    std::printf("the image is neither active nor staged on node %u\n", can.node);
+    return kExitFailed;
+  });
 }
 
 }  // namespace volcomp::tools

@@ -129,24 +129,43 @@ const std::vector<Command>& Commands() {
        "IMAGE",
        Join({kCanOptions,
              {{"--activate", nullptr, nullptr, nullptr, nullptr, "activate it after the upload"},
+              {"--allow-clamp", nullptr, nullptr, nullptr, nullptr,
+               "upload a table the board would clamp (0x2015) or rate-limit (0x2016); a warning"},
               {"--force", nullptr, nullptr, nullptr, nullptr,
                "upload even when the board already has this table"},
               {"--retries", nullptr, "N", nullptr, "2", "repeat a failed transfer up to N times"},
               {"--quiet", nullptr, nullptr, nullptr, nullptr, "no progress bar"}}}),
-       RunUpload},
+       RunUpload,
+       "Before the transfer the image is checked against the board's installation: axis count,\n"
+       "names and units per step (0x2012) must match; a table whose largest correction exceeds\n"
+       "the max correction (0x2015), or whose gradient times the fastest input rates (0x201E)\n"
+       "exceeds the max correction rate (0x2016), is refused (exit 1, naming the axis, the\n"
+       "table's value and the board's limit) unless --allow-clamp."},
       {"verify", "check which table a board has active or staged", "IMAGE",
        Join({kCanOptions,
              {{"--readback", nullptr, nullptr, nullptr, nullptr,
-               "read the staged image back and compare it byte by byte"}}}),
-       RunVerify},
+               "read the table back (the active one, or the staged one with --staged) and compare "
+               "it byte by byte"},
+              {"--staged", nullptr, nullptr, nullptr, nullptr,
+               "verify the staged table instead of the active one"}}}),
+       RunVerify,
+       "Exit 0 when the board has the image (active, or staged with --staged), 1 when it has\n"
+       "another table or none, 3 when the board cannot be reached."},
       {"activate", "activate the staged, verified table (axes referenced and at rest)", "",
-       kCanOptions, RunActivate},
+       Join({kCanOptions,
+             {{"--allow-clamp", nullptr, nullptr, nullptr, nullptr,
+               "activate a table the board would clamp (0x2015) or rate-limit (0x2016)"}}}),
+       RunActivate,
+       "The staged table is read back and checked against the board's installation first: axis\n"
+       "count, names and units per step (0x2012) must match; a table whose largest correction\n"
+       "exceeds the max correction (0x2015), or whose gradient times the fastest input rates\n"
+       "(0x201E) exceeds the max correction rate (0x2016), is refused unless --allow-clamp."},
       {"deactivate", "deactivate the active table (the correction ramps out)", "", kCanOptions,
        RunDeactivate},
       {"reference", "declare axes referenced over CAN (instead of home switch edges)", "",
        Join({kCanOptions,
              {{"--axes", nullptr, "1,2,3", nullptr, nullptr,
-               "axis numbers 1..6 to reference (default: all axes)"}}}),
+               "axis numbers 1..N of the board's N axes (0x2000:4) to reference (default: all)"}}}),
        RunReference},
       {"status", "a board's identity, state, tables, per-axis positions and corrections, counters",
        "",
@@ -164,7 +183,10 @@ const std::vector<Command>& Commands() {
       {"sdo", "read or write one object: sdo read 2104:0, sdo write 2018:1 -5000",
        "read|write INDEX:SUB [VALUE]", kCanOptions, RunSdo,
        "INDEX in hex, SUB in decimal or 0x-hex; VALUE an integer (decimal, 0x-hex, negative).\n"
-       "A negative VALUE is a value, not an option; `--` before it also works."},
+       "A negative VALUE is a value, not an option; `--` before it also works.\n"
+       "A write is checked against the object dictionary before anything is sent: the object\n"
+       "must be writable and VALUE within its type and limits (exit 2 otherwise). When the\n"
+       "board refuses, its reason is printed (for a store, the rule and the axis)."},
       {"config show", "every configuration object of a board: value, factory value, unit", "",
        Join({kCanOptions,
              {{"--all", nullptr, nullptr, nullptr, nullptr,

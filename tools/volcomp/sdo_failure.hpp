@@ -6,6 +6,7 @@
 #include "volcomp/canopen/sdo_abort.hpp"
 #include "volcomp/canopen_client/table_staging.hpp"
 #include "volcomp/tools/csv.hpp"
+#include "volcomp/tools/exit_codes.hpp"
 
 namespace volcomp::tools {
 
@@ -17,8 +18,16 @@ class SdoFailure : public InputError {
   bool retryable;
 };
 
-/// Throws SdoFailure when `r` failed (its message already says which step and why).
+/// True when `r` failed because nothing answered in time: the board is absent, off or not on
+/// this bus (a communication failure, exit 3), not a refusal.
+inline bool NoAnswer(const canopen_client::SdoResult& r) {
+  return !r.ok && !r.aborted_by_server && r.abort_code == canopen::SdoAbort::kTimeout;
+}
+
+/// Throws when `r` failed (its message already says which step and why): CommunicationError when
+/// nothing answered, else SdoFailure.
 inline void Require(const canopen_client::SdoResult& r) {
+  if (NoAnswer(r)) throw CommunicationError(r.message);
   if (!r.ok) throw SdoFailure(r.message, r.abort_code);
 }
 

@@ -160,6 +160,53 @@ uint32_t BoardObjects::table_status() const {
   return canopen::EncodeTableStatus(s);
 }
 
+void BoardObjects::WatchLimits() {
+  const Compensator& c = control_->engine().compensator();
+  uint8_t clamped = 0, limited = 0;
+  for (uint8_t a = 0; a < c.axis_count(); ++a) {
+    const uint32_t n_clamped = c.clamped_refreshes(a), n_limited = c.rate_limited_refreshes(a);
+    if (n_clamped != seen_clamped_[a]) clamped_at_ms_[a] = now_ms_;
+    if (n_limited != seen_limited_[a]) limited_at_ms_[a] = now_ms_;
+    seen_clamped_[a] = n_clamped;
+    seen_limited_[a] = n_limited;
+    const uint8_t bit = static_cast<uint8_t>(1u << a);
+    const auto recent = [this](uint32_t count, uint32_t at_ms) {
+      return count != 0 && static_cast<uint32_t>(now_ms_ - at_ms) < canopen::kLimitHoldMs;
+    };
+    if (recent(n_clamped, clamped_at_ms_[a])) clamped = static_cast<uint8_t>(clamped | bit);
+    if (recent(n_limited, limited_at_ms_[a])) limited = static_cast<uint8_t>(limited | bit);
+  }
+  clamped_mask_ = clamped;
+  limited_mask_ = limited;
+  // One EMCY when a limitation starts on an axis: clamping at any time, rate limiting while the
+  // axes move. Each is reported again only after it stopped (no count for kLimitHoldMs).
+  const uint8_t limited_moving = control_->moving() ? limited : 0;
+  const uint8_t new_clamped = static_cast<uint8_t>(clamped & ~reported_clamped_);
+  const uint8_t new_limited = static_cast<uint8_t>(limited_moving & ~reported_limited_);
+  reported_clamped_ = clamped;
+  reported_limited_ = static_cast<uint8_t>((reported_limited_ | limited_moving) & limited);
+  if ((new_clamped | new_limited) != 0) {
+    const uint32_t detail = uint32_t{new_clamped} | uint32_t{new_limited} << 8;
+    node_->ReportEvent(canopen::kEmcyCorrectionLimited, canopen::kErrManufacturer, detail);
+  }
+}
+
+uint8_t BoardObjects::limit_flags(uint8_t a) const {
+  const uint8_t bit = static_cast<uint8_t>(1u << a);
+  return static_cast<uint8_t>(((clamped_mask_ & bit) != 0 ? canopen::kLimitClamped : 0) |
+                              ((limited_mask_ & bit) != 0 ? canopen::kLimitRateLimited : 0));
+}
+
+uint32_t BoardObjects::settings_check() const {
+  BoardSettings s = pending_;
+  const canopen::CommunicationParameters comm = node_->communication();
+  s.heartbeat_ms = comm.heartbeat_ms;
+  s.emcy_inhibit_100us = comm.emcy_inhibit_100us;
+  canopen::SettingsCheck c;
+  c.error = ValidateSettings(s, &c.finding).error();
+  return canopen::EncodeSettingsCheck(c);
+}
+
 SdoAbort BoardObjects::Refuse(SdoAbort abort_code) {
   ++refused_;
   node_->ReportEvent(canopen::kEmcyRefused, 0, canopen::Code(abort_code));
@@ -253,6 +300,9 @@ bool BoardObjects::ReadNumber(const ObjectEntry& e, uint32_t* v) const {
     case ObjectId::kEmcySuppressed:
       *v = node_->emcy_suppressed();
       return true;
+    case ObjectId::kSettingsCheck:
+      *v = settings_check();
+      return true;
     default:
       break;
   }
@@ -273,6 +323,18 @@ bool BoardObjects::ReadNumber(const ObjectEntry& e, uint32_t* v) const {
   }
   if (AxisOf(e.id, ObjectId::kMaxBacklog1, &a)) {
     *v = a < eng.axis_count() ? control_->output_status().max_backlog_steps[a] : 0;
+    return true;
+  }
+  if (AxisOf(e.id, ObjectId::kCorrectionLimited1, &a)) {
+    *v = a < eng.axis_count() ? limit_flags(a) : 0;
+    return true;
+  }
+  if (AxisOf(e.id, ObjectId::kClampedRefreshes1, &a)) {
+    *v = a < eng.axis_count() ? eng.compensator().clamped_refreshes(a) : 0;
+    return true;
+  }
+  if (AxisOf(e.id, ObjectId::kRateLimitedRefreshes1, &a)) {
+    *v = a < eng.axis_count() ? eng.compensator().rate_limited_refreshes(a) : 0;
     return true;
   }
   if (e.access == canopen::Access::kConst) {
@@ -298,6 +360,13 @@ SdoAbort BoardObjects::DoRead(const ObjectEntry& e,
     case ObjectId::kSoftwareVersion:
       return CopyOut(reinterpret_cast<const uint8_t*>(identity_.software_version),
                      StringLength(identity_.software_version), offset, buf, cap, copied, total);
+    case ObjectId::kActiveTableData:
+      // The active image (read-back for verification of what compensates).
+      if (has_active_ && tables_->active_data() != nullptr) {
+        return CopyOut(tables_->active_data(), tables_->active_size(), offset, buf, cap, copied,
+                       total);
+      }
+      return SdoAbort::kNoData;
     case ObjectId::kTableData: {
       // The staged image while one is staged, else the active one (read-back for verification).
       const StagedState st = tables_->staged_state();

@@ -48,10 +48,20 @@ class Reader {
 };
 }  // namespace
 
-Status ValidateSettings(const BoardSettings& s) {
-  if (s.node_id < 1 || s.node_id > 127) return Error::kConfigInvalid;
-  if (s.bitrate_kbit < 10 || s.bitrate_kbit > 1000) return Error::kConfigInvalid;
-  return ValidateBoardConfig(s.board);
+Status ValidateSettings(const BoardSettings& s, ConfigFinding* finding) {
+  ConfigFinding f;
+  if (s.node_id < 1 || s.node_id > 127) {
+    f.rule = ConfigRule::kNodeId;
+  } else if (s.bitrate_kbit < 10 || s.bitrate_kbit > 1000) {
+    f.rule = ConfigRule::kBitrate;
+  }
+  if (f.rule == ConfigRule::kNone) {
+    const Status b = ValidateBoardConfig(s.board, &f);
+    if (finding != nullptr) *finding = f;
+    return b;
+  }
+  if (finding != nullptr) *finding = f;
+  return Error::kConfigInvalid;
 }
 
 void SerializeSettings(const BoardSettings& s, uint8_t* out) {

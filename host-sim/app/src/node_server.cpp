@@ -130,6 +130,8 @@ int RunNodeServer(const std::vector<std::string>& args) {
   std::fflush(stdout);
   if (!o.ready_file.empty()) std::ofstream(o.ready_file) << spec << "\n";
 
+  std::unique_ptr<SlcanBridge> bridge;
+  if (server) bridge = std::make_unique<SlcanBridge>(bus, *server, ext);
   const RealtimeClock clock;
   const auto wall_start = std::chrono::steady_clock::now();
   while (!g_stop) {
@@ -139,7 +141,7 @@ int RunNodeServer(const std::vector<std::string>& args) {
     auto wait = clock.Until(NextEventTime(bus, board));
     if (wait > std::chrono::microseconds(1000)) wait = std::chrono::microseconds(1000);
     if (server) {
-      ServeSlcan(*server, ext, wait);
+      bridge->Serve(wait);
     } else {
       CanFrame f;
       while (ext.Receive(&f)) transport->Send(f);

@@ -1,6 +1,7 @@
 // The firmware on the mock HAL on a simulated bus, in virtual time.
 #include "volcomp/sim/simulated_board.hpp"
 
+#include <filesystem>
 #include <fstream>
 #include <iterator>
 
@@ -16,8 +17,19 @@ SimulatedBoard::SimulatedBoard(SimBus& bus, const SimulatedBoardOptions& options
       can_(endpoint_, 64) {
   step_io_ = std::make_unique<hal::mock::MockStepIo>(options.settings.board, nullptr);
   tick_io_ = std::make_unique<TickIo>(step_io_.get());
-  app_ = std::make_unique<App>(App::Devices{tick_io_.get(), &io_, &table_flash_, &settings_flash_,
-                                            &can_, &clock_, &tick_timer_});
+  hal::Flash* tables = &table_flash_;
+  hal::Flash* settings = &settings_flash_;
+  if (!options.flash_dir.empty()) {
+    std::filesystem::create_directories(options.flash_dir);
+    table_file_ =
+        std::make_unique<WriteThroughFlash>(&table_flash_, options.flash_dir + "/tables.bin");
+    settings_file_ =
+        std::make_unique<WriteThroughFlash>(&settings_flash_, options.flash_dir + "/settings.bin");
+    tables = table_file_.get();
+    settings = settings_file_.get();
+  }
+  app_ = std::make_unique<App>(
+      App::Devices{tick_io_.get(), &io_, tables, settings, &can_, &clock_, &tick_timer_});
 }
 
 SimulatedBoard::~SimulatedBoard() = default;
@@ -47,6 +59,10 @@ Status SimulatedBoard::Start() {
   LoadFlash();
   if (options_.initial_table_flash.size() == table_flash_.raw().size()) {
     table_flash_.raw() = options_.initial_table_flash;
+  }
+  if (table_file_) {
+    table_file_->WriteAll();
+    settings_file_->WriteAll();
   }
   io_.SetInput(hal::InputLine::kEnable, options_.enable_input);
   io_.SetInput(hal::InputLine::kWriteEnable, options_.write_enable_input);

@@ -55,8 +55,66 @@ struct BoardConfig {
   AxisConfig axis[table::kMaxAxes];
 };
 
-/// Checks ranges and consistency (rates versus tick, timing versus rate); kConfigInvalid if bad.
-Status ValidateBoardConfig(const BoardConfig& config);
+/// The rules a configuration must keep, one per check of ValidateBoardConfig() (and of the node
+/// settings, firmware ValidateSettings()); kConfigRuleTexts says each in words. Values are stable
+/// (they travel in 0x2123): append, never renumber.
+enum class ConfigRule : uint8_t {
+  kNone = 0,
+  kTickRate = 1,       // tick_hz within kMinTickHz..kMaxTickHz
+  kPulseClock = 2,     // pulse clock >= 100 x tick rate
+  kAxisCount = 3,      // 1..kMaxAxes axes
+  kAxisName = 4,       // one of XYZABCUVW, each once
+  kResolution = 5,     // units per step not zero
+  kAxisKind = 6,       // linear or rotary
+  kPulseFormat = 7,    // input/output pulse format 0..2
+  kCounterBits = 8,    // input counter 16 or 32 bits
+  kMaxCorrection = 9,  // max correction 0..table::kMaxCorrectionSteps
+  kRateNotZero = 10,   // max input rate and drive max rate not zero
+  kCounterWrap = 11,   // a 16-bit counter does not wrap by half within a tick
+  kDriveKeepsUp = 12,  // max input rate + max correction rate <= drive max rate
+  kLimiter = 13,       // correction rate/accel representable at the tick rate
+  kNodeId = 14,        // node-ID 1..127
+  kBitrate = 15,       // bit rate 10..1000 kbit/s
+  kCount = 16,
+};
+
+inline constexpr const char* kConfigRuleTexts[] = {
+    "none",
+    "tick rate must be 1000..200000 Hz",
+    "pulse clock must be at least 100 x the tick rate",
+    "axis count must be 1..6",
+    "axis name must be one of XYZABCUVW and used once",
+    "units per step (0x2012) must not be zero",
+    "axis kind (0x2011) must be 0 linear or 1 rotary",
+    "pulse format (0x2013/0x2014) must be 0..2",
+    "input counter must be 16 or 32 bits",
+    "max correction (0x2015) must be 0..65536 steps",
+    "max input rate (0x201E) and drive max rate (0x201D) must not be zero",
+    "a 16-bit input counter must not wrap by half its range within one tick",
+    "max input rate (0x201E) + max correction rate (0x2016) must not exceed the drive max rate "
+    "(0x201D)",
+    "max correction rate (0x2016) and acceleration (0x2017) must fit the tick rate f: "
+    "acceleration from f^2/2^32 to below f^2 steps/s2, rate at least acceleration/f steps/s",
+    "node-ID must be 1..127",
+    "bit rate must be 10..1000 kbit/s",
+};
+static_assert(sizeof(kConfigRuleTexts) / sizeof(kConfigRuleTexts[0]) ==
+                  static_cast<size_t>(ConfigRule::kCount),
+              "one text per rule");
+
+constexpr const char* ConfigRuleText(ConfigRule r) {
+  return r < ConfigRule::kCount ? kConfigRuleTexts[static_cast<int>(r)] : "?";
+}
+
+/// Which rule a configuration breaks first, and on which axis (1-based; 0: not an axis rule).
+struct ConfigFinding {
+  ConfigRule rule = ConfigRule::kNone;
+  uint8_t axis = 0;
+};
+
+/// Checks ranges and consistency (rates versus tick, timing versus rate); kConfigInvalid if bad,
+/// with the first broken rule and its axis in *finding (optional; kNone when ok).
+Status ValidateBoardConfig(const BoardConfig& config, ConfigFinding* finding = nullptr);
 
 /// Checks that an image was built for this board: axis count, names, kinds, units per step.
 Status CheckImageMatchesBoard(const table::TableView& image, const BoardConfig& config);

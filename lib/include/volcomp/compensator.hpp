@@ -1,5 +1,7 @@
 // The compensator: correction = GRID3(x, y, z) + sum_i AXIS1D_i(q_i, direction_i), clamped to the
-// board's maximum, then moved toward by a rate/acceleration limiter per axis.
+// board's maximum, then moved toward by a rate/acceleration limiter per axis. Both limits are
+// counted per axis at each target refresh (clamped_refreshes(), rate_limited_refreshes()) so doing
+// less than the table asks is visible (the board's diagnostics 0x2134-0x2136).
 //
 // The target is the table lookup only while the compensator is enabled, referenced, fault-free and
 // has an active table; otherwise the target is zero, so enabling ramps the correction in, and
@@ -132,6 +134,13 @@ class Compensator {
   int32_t applied_q8(int axis) const {
     return static_cast<int32_t>(limiter_[axis].position_q32() >> 24);
   }
+  /// Target refreshes of axis `axis` (one per refresh_ticks() while engaged) in which the table
+  /// asked for more than the maximum correction (the target was clamped); wraps at 2^32.
+  uint32_t clamped_refreshes(int axis) const { return clamped_refreshes_[axis]; }
+  /// Target refreshes of axis `axis` at which its correction moved at the rate limit (it lags its
+  /// target: a ramp, or a table steeper than the rate allows at the current speed); wraps at
+  /// 2^32. Sampled at the refresh rather than counted every tick: the tick stays as it was.
+  uint32_t rate_limited_refreshes(int axis) const { return rate_limited_refreshes_[axis]; }
   /// True while the axis last moved in the negative direction.
   bool reverse(int axis) const { return reverse_[axis]; }
   uint8_t axis_count() const { return axis_count_; }
@@ -155,6 +164,8 @@ class Compensator {
   int32_t grid_q8_[3] = {};                         // the grid part of the refresh
   int8_t grid_component_of_[table::kMaxAxes] = {};  // grid component correcting the axis, or -1
   int32_t max_q8_[table::kMaxAxes] = {};
+  uint32_t clamped_refreshes_[table::kMaxAxes] = {};
+  uint32_t rate_limited_refreshes_[table::kMaxAxes] = {};
   CorrectionLimiter limiter_[table::kMaxAxes];
   WrapTracker wrap_[table::kMaxAxes];
   bool wraps_[table::kMaxAxes] = {};

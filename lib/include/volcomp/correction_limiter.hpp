@@ -42,6 +42,8 @@ class CorrectionLimiter {
   /// One tick toward `target_q32`; returns the new position.
   int64_t Step(int64_t target_q32);
 
+  /// True while the velocity is at its limit (|k| = max_k): the rate limit is in force.
+  bool at_rate_limit() const { return static_cast<uint32_t>(k_ < 0 ? -k_ : k_) == params_.max_k; }
   int64_t position_q32() const { return pos_; }
   int32_t velocity_index() const { return k_; }
   bool at_rest() const { return k_ == 0; }

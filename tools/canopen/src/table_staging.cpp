@@ -32,6 +32,32 @@ SdoResult Explain(SdoResult r, const std::string& step) {
   return r;
 }
 
+std::string StagingFailureReason(NodeObjects& node) {
+  uint32_t word = 0;
+  if (!node.Read(ObjectId::kTableStatus, &word).ok) return "";
+  const canopen::TableStatus st = canopen::DecodeTableStatus(word);
+  if (st.staged == canopen::StagedState::kEmpty) return "nothing is staged (upload a table first)";
+  if (st.staged != canopen::StagedState::kFailed || st.error == Error::kOk) return "";
+  return std::string(ErrorText(st.error)) + " (" + ErrorName(st.error) + ")";
+}
+
+std::string SettingsRefusalReason(NodeObjects& node) {
+  uint32_t word = 0;
+  if (!node.Read(ObjectId::kSettingsCheck, &word).ok) return "";
+  const canopen::SettingsCheck c = canopen::DecodeSettingsCheck(word);
+  if (c.finding.rule == ConfigRule::kNone) return "";
+  const std::string axis =
+      c.finding.axis != 0 ? "axis " + std::to_string(c.finding.axis) + ": " : std::string();
+  return axis + ConfigRuleText(c.finding.rule);
+}
+
+SdoResult WithStagingReason(NodeObjects& node, SdoResult r) {
+  if (r.ok || !r.aborted_by_server) return r;
+  const std::string why = StagingFailureReason(node);
+  if (!why.empty()) r.message += "; the board says: " + why;
+  return r;
+}
+
 std::string TableCommandStep(TableCommand command) {
   const char* what = "";
   switch (command) {
@@ -56,8 +82,11 @@ std::string TableCommandStep(TableCommand command) {
 }
 
 SdoResult WriteTableCommand(NodeObjects& node, TableCommand command) {
-  return Explain(node.Write(ObjectId::kTableControl, canopen::Value(command)),
-                 TableCommandStep(command));
+  SdoResult r = node.Write(ObjectId::kTableControl, canopen::Value(command));
+  if (command == TableCommand::kVerify || command == TableCommand::kActivate) {
+    r = WithStagingReason(node, r);
+  }
+  return Explain(r, TableCommandStep(command));
 }
 
 SdoResult EnsureWritable(NodeObjects& node) {

@@ -6,6 +6,7 @@
 
 #include <cstdint>
 
+#include "volcomp/board_config.hpp"
 #include "volcomp/byte_order.hpp"
 #include "volcomp/can_frame.hpp"
 #include "volcomp/canopen/node.hpp"
@@ -174,6 +175,40 @@ constexpr TableStatus DecodeTableStatus(uint32_t v) {
   return s;
 }
 
+// ---- 0x2134 correction limited flags (U8 per axis, read)
+// ------------------------------------------
+
+/// Bits of 0x2134:a: the limit counted in 0x2135:a / 0x2136:a within the last kLimitHoldMs.
+enum CorrectionLimitBit : uint8_t {
+  kLimitClamped = 1u << 0,      // the table asks for more than the max correction (0x2015)
+  kLimitRateLimited = 1u << 1,  // the correction moves at the max correction rate (0x2016)
+};
+inline constexpr uint32_t kLimitHoldMs = 100;
+
+// ---- 0x2123 settings check (U32, read) ---------------------------------------------------------
+//
+//   bits 0-7 the first rule the pending settings break (volcomp::ConfigRule, 0 = none), bits 8-15
+//   its axis (1-based, 0 = not an axis rule), bits 16-31 the volcomp error code (kConfigInvalid,
+//   or kOk). Store (0x1010) refuses settings that break a rule with 0x06090030.
+
+struct SettingsCheck {
+  ConfigFinding finding;
+  Error error = Error::kOk;
+};
+
+constexpr uint32_t EncodeSettingsCheck(const SettingsCheck& c) {
+  return static_cast<uint32_t>(c.finding.rule) | (uint32_t{c.finding.axis} << 8) |
+         (static_cast<uint32_t>(c.error) << 16);
+}
+
+constexpr SettingsCheck DecodeSettingsCheck(uint32_t v) {
+  SettingsCheck c;
+  c.finding.rule = static_cast<ConfigRule>(v & 0xFFu);
+  c.finding.axis = static_cast<uint8_t>((v >> 8) & 0xFFu);
+  c.error = static_cast<Error>(v >> 16);
+  return c;
+}
+
 // ---- EMCY (COB-ID 0x080 + node-ID) -------------------------------------------------------------
 //
 //   bytes 0-1 the code (LE), byte 2 the error register (0x1001), bytes 3-7 manufacturer data.
@@ -186,6 +221,9 @@ inline constexpr uint16_t kEmcyRefused = 0xFF10;            // a request was ref
 inline constexpr uint16_t kEmcySdoTransferFailed = 0xFF11;  // SDO protocol failure: the abort code
 inline constexpr uint16_t kEmcyTableInvalid = 0x6300;       // staged/stored table invalid: error
 inline constexpr uint16_t kEmcyWriteFailed = 0x5530;        // flash write failed
+inline constexpr uint16_t kEmcyCorrectionLimited = 0xFF20;  // the correction is clamped or rate
+                                                            // limited: byte 3 clamped axes,
+                                                            // byte 4 rate-limited axes (bit a-1)
 
 /// Which part of the board refused the settings loaded at start or at a node reset
 /// (kEmcyConfigRefused byte 5). The board then runs the factory defaults, except for a bit-rate
@@ -220,6 +258,10 @@ struct Emcy {
   Error error() const { return static_cast<Error>(data[0]); }
   /// Bytes 3-4 as LE16: the volcomp error of kEmcyConfigRefused.
   Error config_error() const { return static_cast<Error>(LoadLe16(data)); }
+  /// Byte 3 / byte 4: axes (bit a-1) whose correction is clamped / rate limited
+  /// (kEmcyCorrectionLimited).
+  uint8_t clamped_axes() const { return data[0]; }
+  uint8_t rate_limited_axes() const { return data[1]; }
   /// Byte 5: the part that refused the settings (kEmcyConfigRefused).
   ConfigPart config_part() const { return static_cast<ConfigPart>(data[2]); }
 };

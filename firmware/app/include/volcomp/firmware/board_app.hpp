@@ -307,6 +307,7 @@ class BoardApp final : private BoardControl {
   void PollCan() {
     const uint32_t now = NowMs();
     objects_.set_now_ms(now);
+    objects_.WatchLimits();
     CanFrame f;
     while (dev_.can->Receive(&f)) {
       objects_.CountFrame(true);

@@ -55,6 +55,17 @@ class BoardObjects : public canopen::ObjectValues {
   /// 0x2102 table status word (canopen::EncodeTableStatus).
   uint32_t table_status() const;
 
+  /// Watches the compensator's clamp and rate-limit counters (every main-loop pass, after
+  /// set_now_ms): an axis is limited while its counters advanced within canopen::kLimitHoldMs
+  /// (0x2134); when an axis becomes clamped, or rate limited while the axes move (a ramp at rest
+  /// after activation or enabling is expected), one EMCY canopen::kEmcyCorrectionLimited names it.
+  void WatchLimits();
+  /// 0x2134:a+1 (canopen::CorrectionLimitBit) of axis `a`.
+  uint8_t limit_flags(uint8_t a) const;
+  /// 0x2123: the first rule the pending settings (with the communication parameters in force)
+  /// break.
+  uint32_t settings_check() const;
+
   uint32_t refused_actions() const { return refused_; }
   void CountFrame(bool received) { ++(received ? rx_frames_ : tx_frames_); }
   void set_active(uint32_t id, uint32_t crc) {
@@ -107,6 +118,14 @@ class BoardObjects : public canopen::ObjectValues {
   uint32_t active_id_ = 0;
   uint32_t active_crc_ = 0;
   uint32_t refused_ = 0;
+  uint32_t seen_clamped_[table::kMaxAxes] = {};  // counters at the last WatchLimits()
+  uint32_t seen_limited_[table::kMaxAxes] = {};
+  uint32_t clamped_at_ms_[table::kMaxAxes] = {};  // when they last advanced
+  uint32_t limited_at_ms_[table::kMaxAxes] = {};
+  uint8_t clamped_mask_ = 0;  // axes limited now (bit a)
+  uint8_t limited_mask_ = 0;
+  uint8_t reported_clamped_ = 0;  // axes whose clamping / rate limiting has been reported
+  uint8_t reported_limited_ = 0;
   uint32_t rx_frames_ = 0;
   uint32_t tx_frames_ = 0;
 };

@@ -21,8 +21,9 @@ struct BoardSettings {
   uint16_t emcy_inhibit_100us = canopen::kDefaultEmcyInhibit100us;  // 0x1015, 0 = no inhibit
 };
 
-/// Range checks of everything in `s` (ValidateBoardConfig plus the node settings).
-Status ValidateSettings(const BoardSettings& s);
+/// Range checks of everything in `s` (ValidateBoardConfig plus the node settings); the first
+/// broken rule and its axis in *finding (optional).
+Status ValidateSettings(const BoardSettings& s, ConfigFinding* finding = nullptr);
 
 /// Serialized size of a BoardSettings record.
 inline constexpr uint32_t kSettingsBytes = 24 + table::kMaxAxes * 64 + 8;

@@ -6,8 +6,10 @@
 // (truncated) from the moment the timer was started. The bus endpoint runs at the bit rate the
 // firmware set (at another rate than the bus's the board is off the bus: sim_bus.hpp).
 //
-// Flash is kept in memory and can be loaded from / saved to files, so a simulated board keeps its
-// tables and settings across runs (`volcomp-sim node --flash-dir DIR`).
+// Flash is kept in memory; with a flash directory it is loaded from its files at Start() and every
+// erase and program is written through to them at once (write_through_flash.hpp), so a simulated
+// board keeps its tables and settings across runs (`volcomp-sim node --flash-dir DIR`) and
+// killing the process is a real power loss.
 #pragma once
 
 #include <cstdint>
@@ -21,6 +23,7 @@
 #include "volcomp/hal/mock/mock_step_io.hpp"
 #include "volcomp/sim/sim_bus.hpp"
 #include "volcomp/sim/sim_bus_can_port.hpp"
+#include "volcomp/sim/write_through_flash.hpp"
 #include "volcomp/step_output.hpp"
 
 namespace volcomp::sim {
@@ -33,7 +36,7 @@ struct SimulatedBoardOptions {
   uint64_t poll_period_ns = 100000;          // main loop every 100 us
   bool write_enable_input = false;           // hardware write-enable jumper
   bool enable_input = true;                  // compensation enable input from the CNC
-  std::string flash_dir;                     // load/save flash images here when not empty
+  std::string flash_dir;                     // flash files, written through, when not empty
   std::vector<uint8_t> initial_table_flash;  // start with this table flash content (power cycle)
 };
 
@@ -52,7 +55,8 @@ class SimulatedBoard {
   void AdvanceTo(uint64_t t_ns);
   /// Virtual time of the next tick or poll.
   uint64_t NextEventTime() const;
-  /// Writes the flash images to `flash_dir` (no-op without one).
+  /// Writes the whole flash images to `flash_dir` (no-op without one; every operation is already
+  /// written through).
   void SaveFlash() const;
 
   App& app() { return *app_; }
@@ -79,6 +83,8 @@ class SimulatedBoard {
   hal::mock::MockSlowIo io_;
   hal::mock::MockFlash table_flash_;
   hal::mock::MockFlash settings_flash_;
+  std::unique_ptr<WriteThroughFlash> table_file_;  // with a flash directory
+  std::unique_ptr<WriteThroughFlash> settings_file_;
   SimBusCanPort can_;
   hal::mock::MockTickTimer tick_timer_;
   uint32_t timer_starts_seen_ = 0;

@@ -26,10 +26,26 @@ std::string AbortHint(canopen::SdoAbort abort_code);
 /// `r` with its message prefixed by `step` ("step: reason; hint") when it failed; unchanged if ok.
 SdoResult Explain(SdoResult r, const std::string& step);
 
+/// The board's own reason for a failed staging step (a refused verification, activation or
+/// transfer), from its table status (0x2102): the error of the last staging failure in words
+/// ("image was built for another units-per-step (kConfigResolutionMismatch)"), "nothing is staged"
+/// for an empty bank, or empty when neither applies or 0x2102 cannot be read.
+std::string StagingFailureReason(NodeObjects& node);
+
+/// The board's reason for refusing to store its settings (0x1010), from 0x2123: the rule the
+/// pending settings break and its axis ("axis 2: max input rate ... must not exceed ..."), or
+/// empty when they break none or 0x2123 cannot be read.
+std::string SettingsRefusalReason(NodeObjects& node);
+
+/// `r` with the board's reason appended when the board refused (aborted_by_server) and its staging
+/// bank says why (StagingFailureReason); unchanged otherwise.
+SdoResult WithStagingReason(NodeObjects& node, SdoResult r);
+
 /// What writing `command` to table control does, with the write: "activating (0x2101 = 1)".
 std::string TableCommandStep(canopen::TableCommand command);
 
-/// Writes `command` to table control (0x2101); a failure is Explain()ed with TableCommandStep().
+/// Writes `command` to table control (0x2101); a failure is Explain()ed with TableCommandStep(),
+/// a refused verification or activation also WithStagingReason().
 SdoResult WriteTableCommand(NodeObjects& node, canopen::TableCommand command);
 
 /// Reads write access (0x2111) and unlocks the board (0x2110) if it is off: before every write to

@@ -1,0 +1,146 @@
+// The table-against-installation check of `upload` and `activate`.
+#include "board_fit.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+
+#include "sdo_failure.hpp"
+#include "volcomp/canopen/board_protocol.hpp"
+#include "volcomp/image/table_demands.hpp"
+
+namespace volcomp::tools {
+namespace {
+
+using canopen::ObjectId;
+
+uint32_t ReadObject(canopen_client::NodeObjects& node, ObjectId id) {
+  uint32_t v = 0;
+  const canopen::ObjectEntry& e = canopen::Entry(id);
+  char what[96];
+  std::snprintf(what, sizeof what, "reading %s (0x%04X:%u)", e.name, e.index, e.sub);
+  Check(node.Read(id, &v), what);
+  return v;
+}
+
+ObjectId AxisObject(ObjectId first, size_t a) {
+  return static_cast<ObjectId>(static_cast<int>(first) + static_cast<int>(a));
+}
+
+std::string Fixed(double v, int digits) {
+  char b[64];
+  std::snprintf(b, sizeof b, "%.*f", digits, v);
+  return b;
+}
+
+}  // namespace
+
+BoardInstallation ReadInstallation(canopen_client::NodeObjects& node) {
+  BoardInstallation b;
+  const uint32_t count = ReadObject(node, ObjectId::kAxisCountConfig);
+  b.settings_pending =
+      canopen::DecodeDeviceState(ReadObject(node, ObjectId::kDeviceState)).settings_pending;
+  for (size_t a = 0; a < count && a < table::kMaxAxes; ++a) {
+    BoardAxis x;
+    x.name = static_cast<char>(ReadObject(node, AxisObject(ObjectId::kAxisName1, a)));
+    x.kind = ReadObject(node, AxisObject(ObjectId::kAxisKind1, a));
+    x.resolution_e9 = ReadObject(node, AxisObject(ObjectId::kAxisResolution1, a));
+    x.max_correction_steps =
+        static_cast<int32_t>(ReadObject(node, AxisObject(ObjectId::kAxisMaxCorrection1, a)));
+    x.max_rate_steps_s = ReadObject(node, AxisObject(ObjectId::kAxisMaxRate1, a));
+    x.max_input_rate_hz = ReadObject(node, AxisObject(ObjectId::kAxisInputMaxRate1, a));
+    b.axes.push_back(x);
+  }
+  return b;
+}
+
+std::vector<FitProblem> CheckTableFits(const table::TableView& v, const BoardInstallation& board) {
+  std::vector<FitProblem> out;
+  if (v.axis_count > board.axes.size()) {
+    out.push_back({false, "the table has " + std::to_string(v.axis_count) + " axes, the board " +
+                              std::to_string(board.axes.size()) + " (0x2000:4)"});
+    return out;
+  }
+  for (uint8_t a = 0; a < v.axis_count; ++a) {
+    const table::AxisInfo& t = v.axes[a];
+    const BoardAxis& b = board.axes[a];
+    const std::string axis = "axis " + std::to_string(a + 1) + " (" + std::string(1, t.name) + ")";
+    if (t.name != b.name || static_cast<uint32_t>(t.kind) != b.kind) {
+      out.push_back({false, axis + ": the table's axis is " + std::string(1, t.name) +
+                                (t.kind == table::AxisKind::kRotary ? " rotary" : " linear") +
+                                ", the board's " + std::string(1, b.name) +
+                                (b.kind == 1 ? " rotary" : " linear") +
+                                " (0x2010/0x2011:" + std::to_string(a + 1) + ")"});
+    }
+    if (t.resolution_e9 != b.resolution_e9) {
+      out.push_back({false, axis + ": the table was built for " + std::to_string(t.resolution_e9) +
+                                " e-9 units per step, the board " + "runs " +
+                                std::to_string(b.resolution_e9) +
+                                " (0x2012:" + std::to_string(a + 1) + ")"});
+    }
+  }
+  if (!out.empty()) return out;
+  const std::vector<image::AxisDemand> demand = image::TableDemands(v);
+  for (uint8_t a = 0; a < v.axis_count; ++a) {
+    const BoardAxis& b = board.axes[a];
+    const std::string axis =
+        "axis " + std::to_string(a + 1) + " (" + std::string(1, v.axes[a].name) + ")";
+    const std::string sub = std::to_string(a + 1);
+    if (demand[a].max_correction_steps > b.max_correction_steps) {
+      out.push_back(
+          {true, axis + ": the table asks for up to " + Fixed(demand[a].max_correction_steps, 1) +
+                     " steps of correction, the board's max correction (0x2015:" + sub + ") is " +
+                     std::to_string(b.max_correction_steps) + " steps: it would be clamped"});
+    }
+    double rate = 0;
+    std::string worst;
+    for (uint8_t in = 0; in < v.axis_count; ++in) {
+      const double r = demand[a].gradient[in] * board.axes[in].max_input_rate_hz;
+      rate += r;
+      if (r > 0) {
+        worst += std::string(worst.empty() ? "" : ", ") + v.axes[in].name + " " +
+                 Fixed(demand[a].gradient[in] * 1e6, 1) + " ppm x " +
+                 std::to_string(board.axes[in].max_input_rate_hz) + " steps/s";
+      }
+    }
+    if (rate > b.max_rate_steps_s) {
+      out.push_back({true, axis + ": the table's correction changes up to " + Fixed(rate, 0) +
+                               " steps/s at the fastest input rates (0x201E; gradient along " +
+                               worst + "), the board's max correction rate (0x2016:" + sub +
+                               ") is " + std::to_string(b.max_rate_steps_s) +
+                               " steps/s: it would be rate limited"});
+    }
+  }
+  return out;
+}
+
+std::vector<FitProblem> RequireTableFits(canopen_client::NodeObjects& node,
+                                         const table::TableView& view,
+                                         bool allow_limits) {
+  const BoardInstallation board = ReadInstallation(node);
+  if (board.settings_pending) {
+    std::cerr << "warning: node " << unsigned{node.node()}
+              << " has settings edits not yet in force (store and reset node): the table is "
+                 "checked against the edited values\n";
+  }
+  std::vector<FitProblem> problems = CheckTableFits(view, board);
+  bool refuse = false;
+  std::string text;
+  for (const FitProblem& p : problems) {
+    refuse = refuse || !p.limit || !allow_limits;
+    text += "\n  " + p.message;
+  }
+  if (refuse) {
+    const bool mismatch = !problems.empty() && !problems.front().limit;
+    throw InputError(std::string(mismatch ? "the table is not for this board:"
+                                          : "the board would not apply the whole table:") +
+                     text +
+                     (mismatch ? ""
+                               : "\n(--allow-clamp applies it anyway; the board then shows "
+                                 "the limit in force in `volcomp status`)"));
+  }
+  for (const FitProblem& p : problems) std::cerr << "warning: " << p.message << "\n";
+  return problems;
+}
+
+}  // namespace volcomp::tools
