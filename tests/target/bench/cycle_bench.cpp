@@ -245,12 +245,11 @@ int BenchTick() {
   uint32_t counters[3] = {0, 0, 0};
   PulsePlan plans[3];
   // The tick's data path (ControlTick::Run and the step output stage), then the same pattern
-  // again with its parts as their own rows (each call of the part inside the tick is one sample).
+  // again with its one remaining call, the target refresh, as its own row (each call one sample;
+  // the limiter and the step generator are inlined into the walk over the axes).
   const char* const kRuns[][2] = {
       {"control_tick_3axes", "volcomp_bench_tick"},
       {"tick_part_refresh", "_ZN7volcomp11Compensator14RefreshTargets"},
-      {"tick_part_limiter", "_ZN7volcomp17CorrectionLimiter4Step"},
-      {"tick_part_step_generator", "_ZN7volcomp13StepGenerator8PlanTick"},
   };
   for (const auto& run : kRuns) {
     Scenario(run[0], run[1]);
