@@ -157,7 +157,8 @@ class Compensator {
   uint32_t refresh_ticks() const { return kGridPhases + axis_count_; }
 
  private:
-  void UpdateEngaged() { engaged_ = has_table_ && enabled_ && referenced_ && !fault_; }
+  // Bitwise, not short-circuit: no branches in the tick (each Set...() runs every tick).
+  void UpdateEngaged() { engaged_ = (has_table_ & enabled_ & referenced_ & !fault_) != 0; }
 
   uint8_t axis_count_ = 0;
   bool engaged_ = false;  // has_table_ && enabled_ && referenced_ && !fault_ (one load per tick)
