@@ -13,6 +13,11 @@ Status PreparedTable::Prepare(const table::TableView& image, const BoardConfig& 
   for (uint8_t i = 0; i < image.axis1d_count; ++i) {
     VOLCOMP_TRY(t.axis_table[i].Init(image.axis1d[i]));
     t.axis_table_of[image.axis1d[i].axis] = static_cast<int8_t>(i);
+    if (t.axis_table[i].wraps())
+      t.wrap_mask = static_cast<uint8_t>(t.wrap_mask | 1u << image.axis1d[i].axis);
+  }
+  if (t.has_grid) {
+    for (int8_t c = 0; c < 3; ++c) t.grid_component_of[t.grid.axis(c)] = c;
   }
   t.axis_table_count = image.axis1d_count;
   t.table_id = image.table_id;
@@ -52,8 +57,8 @@ Status Compensator::Configure(const BoardConfig& config) {
     last_pos_[a] = 0;
     reverse_[a] = false;
     target_q8_[a] = 0;
-    wraps_[a] = false;
   }
+  wrap_mask_ = 0;
   axis_count_ = config.axis_count;
   has_table_ = false;
   UpdateEngaged();
@@ -66,37 +71,18 @@ void Compensator::SetTable(const PreparedTable& table, const int32_t* machine_po
   UseTable(&own_, machine_pos_steps);
 }
 
-void Compensator::UseTable(const PreparedTable* table, const int32_t* machine_pos_steps) {
-  table_ = table;
-  // Only the configured axes' entries are ever read (Configure() drops the table).
-  const uint32_t n = axis_count_;
-  for (uint32_t a = 0; a < n; ++a) {
-    grid_component_of_[a] = -1;
-    const int8_t i = table_->axis_table_of[a];
-    axis_lookup_[a] = i >= 0 ? &table_->axis_table[i] : nullptr;
-    wraps_[a] = axis_lookup_[a] != nullptr && axis_lookup_[a]->wraps();
-  }
-  grid_ = table_->has_grid ? &table_->grid : nullptr;
-  if (grid_ != nullptr) {
-    for (int8_t c = 0; c < 3; ++c) grid_component_of_[grid_->axis(c)] = c;
-  }
-  has_table_ = true;
-  UpdateEngaged();
-  Rebase(machine_pos_steps);
-}
-
 void Compensator::ClearTable() {
   has_table_ = false;
   UpdateEngaged();
-  for (uint32_t a = 0; a < axis_count_; ++a) wraps_[a] = false;
+  wrap_mask_ = 0;
 }
 
 void Compensator::Rebase(const int32_t* machine_pos_steps) {
   phase_ = 0;  // a refresh in progress used the old coordinates
   for (uint8_t a = 0; a < axis_count_; ++a) {
     last_pos_[a] = machine_pos_steps[a];
-    if (has_table_ && wraps_[a]) {
-      const AxisLookup& t = *axis_lookup_[a];
+    if ((wrap_mask_ >> a) & 1u) {
+      const AxisLookup& t = table_->axis_table[table_->axis_table_of[a]];
       wrap_[a].Init(machine_pos_steps[a], t.origin_steps(), t.period_divider());
     }
   }
@@ -134,11 +120,13 @@ void Compensator::RefreshTargets(const int32_t* machine_pos_steps) {
     // Axis a: its grid component (from the positions latched in part 0), its AXIS1D table at
     // its current position and direction, clamped: the new target of the axis.
     const uint32_t a = phase - kGridPhases;
-    const AxisLookup* lookup = axis_lookup_[a];
-    const int8_t c = grid_component_of_[a];
+    const PreparedTable& table = *table_;
+    const int8_t c = table.grid_component_of[a];
+    const int8_t i = table.axis_table_of[a];
     int32_t t = c >= 0 ? grid_q8_[c] : 0;
-    if (lookup != nullptr) {
-      t += lookup->Lookup(wraps_[a] ? wrap_[a].position() : machine_pos_steps[a], reverse_[a]);
+    if (i >= 0) {
+      const int32_t pos = (wrap_mask_ >> a) & 1u ? wrap_[a].position() : machine_pos_steps[a];
+      t += table.axis_table[i].Lookup(pos, reverse_[a]);
     }
     const int32_t max = max_q8_[a];
     const int32_t asked = t;

@@ -11,8 +11,8 @@ Status ControlTick::Configure(const BoardConfig& config) {
     last_counter_[a] = 0;
     commanded_[a] = machine_[a] = correction_[a] = target_[a] = 0;
     reference_offset_[a] = 0;
-    referenced_[a] = false;
   }
+  referenced_mask_ = 0;
   config_ = config;
   axis_count_ = config.axis_count;
   idle_ticks_ = 0xFFFFFFFFu;
@@ -29,33 +29,27 @@ void ControlTick::Reference(uint8_t axis) {
   if (axis < axis_count_) ReferenceAxes(1u << axis);
 }
 
-void ControlTick::ReferenceAxes(uint32_t axis_mask) {
-  uint32_t done = 0;
-  for (uint32_t a = 0; a < axis_count_; ++a) {
-    if ((axis_mask & (1u << a)) == 0) continue;
+bool ControlTick::MarkReferenced(uint32_t axis_mask) {
+  const uint32_t n = axis_count_;
+  const uint32_t done = axis_mask & ((1u << n) - 1u);
+  if (done == 0) return false;
+  for (uint32_t a = 0; a < n; ++a) {
+    if (((done >> a) & 1u) == 0) continue;
+    const int32_t home = config_.axis[a].home_position_steps;
     reference_offset_[a] =
-        static_cast<int32_t>(static_cast<uint32_t>(config_.axis[a].home_position_steps) -
-                             static_cast<uint32_t>(commanded_[a]));
-    machine_[a] = config_.axis[a].home_position_steps;
-    referenced_[a] = true;
-    done |= 1u << a;
+        static_cast<int32_t>(static_cast<uint32_t>(home) - static_cast<uint32_t>(commanded_[a]));
+    machine_[a] = home;
   }
-  if (done == 0) return;
-  // One rebase for every axis referenced at once (the same state as one Reference() per axis).
-  compensator_.Rebase(machine_);
+  referenced_mask_ |= done;
+  // The caller's one rebase covers every axis referenced at once (the same state as one
+  // Reference() per axis).
   compensator_.SetReferenced(all_referenced());
+  return true;
 }
 
 void ControlTick::Unreference() {
-  for (uint8_t a = 0; a < axis_count_; ++a) referenced_[a] = false;
+  referenced_mask_ = 0;
   compensator_.SetReferenced(false);
-}
-
-bool ControlTick::all_referenced() const {
-  for (uint8_t a = 0; a < axis_count_; ++a) {
-    if (!referenced_[a]) return false;
-  }
-  return axis_count_ > 0;
 }
 
 }  // namespace volcomp

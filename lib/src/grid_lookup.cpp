@@ -11,6 +11,8 @@
 //     is taken as the bottom or top half by SMLAWB/SMLAWT, so no element is loaded on its own.
 #include "volcomp/grid_lookup.hpp"
 
+#include <cstddef>
+
 // GCC's pre-register-allocation scheduler hoists the loads of later rows and then spills; the
 // kernels are written in the order that keeps register pressure low, so keep that order (for the
 // whole file: the kernels are templates whose pieces are inlined from the element kernels).
@@ -258,6 +260,13 @@ Status GridLookup::Init(const table::Grid3View& grid) {
   stride_z_ = stride_[2];
   shift_ = (grid.type == table::ElementType::kInt32 ? 23u : 7u) + grid.frac_bits;
   round_ = static_cast<int32_t>(1u << (shift_ - 1u));
+  // The offsets grid_lookup_cm4.cpp reads (per dimension: axis, lo, span, recip_lo, recip_hi).
+  static_assert(
+      sizeof(void*) != 4 ||
+          (sizeof(Dim) == 20 && offsetof(GridLookup, data_) == 60 &&
+           offsetof(GridLookup, stride_y_) == 64 && offsetof(GridLookup, stride_z_) == 68 &&
+           offsetof(GridLookup, round_) == 72 && offsetof(GridLookup, shift_) == 76),
+      "Cortex-M4 kernel offsets");
   for (int d = 0; d < 3; ++d) {
     axis_[d] = grid.axis[d];
     loc_[d].Init(grid.dim[d]);
@@ -331,9 +340,11 @@ VOLCOMP_KERNEL void GridLookup::LookupAs(const int32_t* pos_steps, int32_t out_q
   K::ToQ8(a0, a1, a2, shift_, out_q8);
 }
 
-template void GridLookup::LookupAs<grid_kernel::Int16>(const int32_t*, int32_t*) const;
 template void GridLookup::LookupAs<grid_kernel::Int32>(const int32_t*, int32_t*) const;
+#if !VOLCOMP_GRID_LOOKUP_CM4  // else hand-scheduled (grid_lookup_cm4.cpp)
+template void GridLookup::LookupAs<grid_kernel::Int16>(const int32_t*, int32_t*) const;
 template void GridLookup::LookupAs<grid_kernel::Float32>(const int32_t*, int32_t*) const;
+#endif
 
 // ---- The lookup in three parts (the control tick spreads it over ticks) ------------------------
 // An if-chain on the element type, not a switch (a jump table would be an indirect jump, which the

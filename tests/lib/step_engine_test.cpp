@@ -12,6 +12,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <random>
+#include <vector>
 
 #include "test_tables.hpp"
 #include "volcomp/control_tick.hpp"
@@ -251,6 +252,69 @@ TEST(StepEngineReference, SeveralAxesAtOnceEqualOneAxisAtATime) {
     }
   }
   EXPECT_TRUE(all.compensator().engaged());
+}
+
+// The board's tick activates a table and references in the same tick with one rebase
+// (Compensator::BindTable, ControlTick::MarkReferenced, RebaseCompensator): the same state, tick
+// by tick afterwards, as UseTable() and ReferenceAxes() with a rebase each. The new table has a
+// wrapping (rotary) AXIS1D table on Z, so the wrap trackers must be set from the referenced
+// positions.
+TEST(StepEngineReference, TableSwitchAndReferencingShareOneRebase) {
+  std::mt19937_64 rng(23);
+  BoardConfig cfg = DefaultBoardConfig();
+  for (int a = 0; a < 3; ++a) cfg.axis[a].home_position_steps = 123457 * (a + 1);
+  const testing::GridCase grid = SteepGrid(rng);
+  std::vector<int16_t> wrap_values;
+  for (int i = 0; i < 5; ++i) {
+    wrap_values.push_back(static_cast<int16_t>(static_cast<int32_t>(rng() % 1601) - 800));
+  }
+  wrap_values.back() = wrap_values.front();  // continuous across the seam
+  table::Axis1dSpec rotary;
+  rotary.axis = 2;
+  rotary.frac_bits = 4;
+  rotary.dim = table::Dimension{5, 100, 1000};
+  rotary.period_steps = 4000;
+  rotary.forward = {table::ElementType::kInt16, wrap_values.data(), nullptr, nullptr};
+  const testing::AlignedBytes first_img = testing::WriteGridImage(grid);
+  const testing::AlignedBytes second_img = testing::WriteGridImage(grid, 9, &rotary, 1);
+  const auto first_view = table::ParseImage(first_img.data(), first_img.size());
+  const auto second_view = table::ParseImage(second_img.data(), second_img.size());
+  ASSERT_TRUE(first_view.ok() && second_view.ok());
+  PreparedTable first, second;
+  ASSERT_TRUE(first.Prepare(*first_view, cfg).ok());
+  ASSERT_TRUE(second.Prepare(*second_view, cfg).ok());
+  ControlTick two, one;
+  const int32_t zero[3] = {0, 0, 0};
+  for (ControlTick* e : {&two, &one}) {
+    ASSERT_TRUE(e->Configure(cfg).ok());
+    e->compensator().SetTable(first, zero);
+    e->compensator().SetEnabled(true);
+  }
+  uint32_t counters[3] = {0, 0, 0};
+  for (int t = 0; t < 400; ++t) {
+    counters[0] += 5u;
+    counters[1] -= 3u;
+    counters[2] += t < 200 ? 0u - 11u : 13u;  // Z backward across several periods, then forward
+    if (t == 30) {
+      int32_t machine[3];
+      for (uint8_t a = 0; a < 3; ++a) machine[a] = two.machine_position(a);
+      two.compensator().UseTable(&second, machine);
+      two.ReferenceAxes(0x7u);
+      one.compensator().BindTable(&second);
+      ASSERT_TRUE(one.MarkReferenced(0x7u));
+      one.RebaseCompensator();
+    }
+    two.Run(counters);
+    one.Run(counters);
+    for (uint8_t a = 0; a < 3; ++a) {
+      ASSERT_EQ(two.machine_position(a), one.machine_position(a)) << t;
+      ASSERT_EQ(two.compensator().reverse(a), one.compensator().reverse(a)) << t;
+      ASSERT_EQ(two.compensator().target_q8(a), one.compensator().target_q8(a)) << t;
+      ASSERT_EQ(two.target(a), one.target(a)) << t;
+    }
+  }
+  EXPECT_TRUE(one.compensator().engaged());
+  EXPECT_NE(one.compensator().target_q8(2), 0);
 }
 
 TEST(StepEngineMixed, SixteenBitCountersAndFormatConversion) {

@@ -93,7 +93,18 @@ class WrapTracker {
   void Init(int32_t pos_steps, int32_t origin_steps, uint32_t period_steps);
   /// Init() with the period as a prepared divisor (AxisLookup::period_divider()): no divide
   /// instruction, so the tick may call it (referencing, table switch).
-  void Init(int32_t pos_steps, int32_t origin_steps, const InvariantDivider& period);
+  __attribute__((always_inline)) void Init(int32_t pos_steps,
+                                           int32_t origin_steps,
+                                           const InvariantDivider& period) {
+    period_ = period.divisor();
+    origin_ = origin_steps;
+    // pos - origin lies in (-2^32, 2^32): its magnitude and sign in 32 bits, the remainder of the
+    // magnitude by the prepared divisor, mirrored into [0, period) for a negative difference.
+    const bool below = pos_steps < origin_steps;
+    const uint32_t p = static_cast<uint32_t>(pos_steps), o = static_cast<uint32_t>(origin_steps);
+    const uint32_t r = period.Divide(below ? o - p : p - o).remainder;
+    offset_ = below && r != 0 ? period_ - r : r;
+  }
   /// Advances by `delta_steps` and returns origin + ((pos - origin) mod period).
   int32_t Update(int32_t delta_steps) {
     // offset + delta lies in (-period, 2 * period): one correction either way.

@@ -44,6 +44,9 @@ struct PreparedTable {
   uint8_t axis_table_count = 0;
   AxisLookup axis_table[table::kMaxAxes];
   int8_t axis_table_of[table::kMaxAxes] = {-1, -1, -1, -1, -1, -1};  // per board axis, or -1
+  // Resolved per board axis when prepared, so activating the table in the tick copies nothing:
+  int8_t grid_component_of[table::kMaxAxes] = {-1, -1, -1, -1, -1, -1};  // grid component or -1
+  uint8_t wrap_mask = 0;  // bit a: axis a's AXIS1D table wraps (rotary)
   uint32_t table_id = 0;
   uint32_t crc32 = 0;
 
@@ -75,7 +78,19 @@ class Compensator {
   void SetTable(const PreparedTable& table, const int32_t* machine_pos_steps);
   /// SetTable() without the copy: `*table` is used in place and must stay valid and unchanged
   /// until the next SetTable/UseTable/ClearTable (a board hands tables over in its own slots).
-  void UseTable(const PreparedTable* table, const int32_t* machine_pos_steps);
+  void UseTable(const PreparedTable* table, const int32_t* machine_pos_steps) {
+    BindTable(table);
+    Rebase(machine_pos_steps);
+  }
+  /// UseTable() without its Rebase(), for a tick that rebases once after several changes (table
+  /// and referencing): Rebase() must follow before the next Tick(). Constant time (no axis loop).
+  void BindTable(const PreparedTable* table) {
+    table_ = table;
+    grid_ = table->has_grid ? &table->grid : nullptr;
+    wrap_mask_ = table->wrap_mask;
+    has_table_ = true;
+    UpdateEngaged();
+  }
   /// Drops the active table at once; the applied correction ramps out to zero.
   void ClearTable();
   /// Machine coordinates jumped (re-referencing): restart direction and wrap tracking from
@@ -112,7 +127,7 @@ class Compensator {
                                                static_cast<uint32_t>(last_pos_[a]));
     last_pos_[a] = machine_pos_steps;
     if (delta != 0) reverse_[a] = delta < 0;
-    if (wraps_[a]) wrap_[a].Update(delta);
+    if ((wrap_mask_ >> a) & 1u) wrap_[a].Update(delta);
   }
   /// One phase of the table evaluation (or zero targets when not engaged).
   void RefreshTargets(const int32_t* machine_pos_steps);
@@ -151,7 +166,8 @@ class Compensator {
   uint32_t refresh_ticks() const { return kGridPhases + axis_count_; }
 
  private:
-  void UpdateEngaged() { engaged_ = has_table_ && enabled_ && referenced_ && !fault_; }
+  // Bitwise, not short-circuit: no branches in the tick (each Set...() runs every tick).
+  void UpdateEngaged() { engaged_ = (has_table_ & enabled_ & referenced_ & !fault_) != 0; }
 
   uint8_t axis_count_ = 0;
   bool engaged_ = false;  // has_table_ && enabled_ && referenced_ && !fault_ (one load per tick)
@@ -161,22 +177,19 @@ class Compensator {
   bool has_table_ = false;
   uint8_t phase_ = 0;  // next refresh phase, 0..refresh_ticks()-1
   int32_t target_q8_[table::kMaxAxes] = {};
-  int32_t grid_q8_[3] = {};                         // the grid part of the refresh
-  int8_t grid_component_of_[table::kMaxAxes] = {};  // grid component correcting the axis, or -1
+  int32_t grid_q8_[3] = {};  // the grid part of the refresh
   int32_t max_q8_[table::kMaxAxes] = {};
   uint32_t clamped_refreshes_[table::kMaxAxes] = {};
   uint32_t rate_limited_refreshes_[table::kMaxAxes] = {};
   CorrectionLimiter limiter_[table::kMaxAxes];
   WrapTracker wrap_[table::kMaxAxes];
-  bool wraps_[table::kMaxAxes] = {};
+  uint8_t wrap_mask_ = 0;  // the active table's wrap_mask, 0 without a table
   int32_t last_pos_[table::kMaxAxes] = {};
   bool reverse_[table::kMaxAxes] = {};
   GridLookup::Partial grid_partial_;
   PreparedTable own_;                   // SetTable()'s copy
   const PreparedTable* table_ = &own_;  // the active table (own_ or the caller's)
-  // The active table's lookups, resolved once in UseTable() so the refresh loads one pointer.
-  const GridLookup* grid_ = nullptr;                     // null without a grid
-  const AxisLookup* axis_lookup_[table::kMaxAxes] = {};  // per board axis, null without a table
+  const GridLookup* grid_ = nullptr;    // the active table's grid, null without one
 };
 
 }  // namespace volcomp

@@ -44,11 +44,22 @@ class ControlTick {
   void Reference(uint8_t axis);
   /// Reference() for every axis whose bit is set in `axis_mask` (bits of unconfigured axes are
   /// ignored), with one compensator rebase: the tick's bounded cost for referencing all axes.
-  void ReferenceAxes(uint32_t axis_mask);
+  void ReferenceAxes(uint32_t axis_mask) {
+    if (MarkReferenced(axis_mask)) RebaseCompensator();
+  }
+  /// ReferenceAxes() without the compensator's rebase, for a tick that rebases once after several
+  /// changes (a table switch and referencing): returns true when an axis was referenced, and then
+  /// RebaseCompensator() must follow before the next Run().
+  bool MarkReferenced(uint32_t axis_mask);
+  /// Restarts the compensator's direction and wrap tracking at the present machine positions
+  /// (Compensator::Rebase()).
+  void RebaseCompensator() { compensator_.Rebase(machine_); }
   /// Forgets all references (e.g. drive alarm, e-stop): the correction ramps out.
   void Unreference();
-  bool referenced(uint8_t axis) const { return referenced_[axis]; }
-  bool all_referenced() const;
+  bool referenced(uint8_t axis) const { return ((referenced_mask_ >> axis) & 1u) != 0; }
+  bool all_referenced() const {
+    return axis_count_ > 0 && referenced_mask_ == (1u << axis_count_) - 1u;
+  }
 
   Compensator& compensator() { return compensator_; }
   const Compensator& compensator() const { return compensator_; }
@@ -76,7 +87,7 @@ class ControlTick {
   uint8_t counter_shift_[table::kMaxAxes] = {};  // 32 - counter bits
   int32_t commanded_[table::kMaxAxes] = {};
   int32_t reference_offset_[table::kMaxAxes] = {};
-  bool referenced_[table::kMaxAxes] = {};
+  uint32_t referenced_mask_ = 0;  // bit a: axis a referenced
   int32_t machine_[table::kMaxAxes] = {};
   int32_t correction_[table::kMaxAxes] = {};
   int32_t target_[table::kMaxAxes] = {};

@@ -46,15 +46,7 @@ class GridLookup {
 
   /// Correction at `pos_steps` (indexed by board axis; only axis(0..2) are read), Q24.8 steps:
   /// the three parts below in one call.
-  void Lookup(const int32_t* pos_steps, int32_t out_q8[3]) const {
-    if (type_ == table::ElementType::kInt16) {
-      LookupAs<grid_kernel::Int16>(pos_steps, out_q8);
-    } else if (type_ == table::ElementType::kInt32) {
-      LookupAs<grid_kernel::Int32>(pos_steps, out_q8);
-    } else {
-      LookupAs<grid_kernel::Float32>(pos_steps, out_q8);
-    }
-  }
+  inline void Lookup(const int32_t* pos_steps, int32_t out_q8[3]) const;
 
   /// The reference computation for an explicit element loader (tests compare Lookup() with it).
   template <class Loader>
@@ -102,19 +94,42 @@ class GridLookup {
     LatticeDim lattice;
   };
   // Hot fields first, in the order the kernels read them.
+  // (The Cortex-M4 kernels, grid_lookup_cm4.cpp, read dim_ to shift_ at fixed offsets.)
   Dim dim_[3];
   const uint8_t* data_ = nullptr;
-  uint32_t node_bytes_ = 6;  // 3 elements
   uint32_t stride_y_ = 0;    // bytes between neighbouring nodes along y
   uint32_t stride_z_ = 0;    // along z
   int32_t round_ = 0;        // fixed point: 2^(shift_ - 1), the rounding term of ToQ8
   uint32_t shift_ = 0;       // fixed point: 7 + f (int16), 23 + f (int32)
+  uint32_t node_bytes_ = 6;  // 3 elements
   uint32_t frac_bits_ = 0;
   LatticeLocator loc_[3];  // the reference's locators (same constants)
   uint32_t stride_[3] = {0, 0, 0};
   uint8_t axis_[3] = {0, 1, 2};
   table::ElementType type_ = table::ElementType::kInt16;
 };
+
+// On the Cortex-M4F the whole int16 and float32 lookups are hand-scheduled Thumb-2
+// (grid_lookup_cm4.cpp); everywhere else, and for int32, the C++ kernels of grid_lookup.cpp.
+#if defined(__ARM_ARCH_7EM__) && defined(__ARM_FP) && !defined(__linux__)
+#define VOLCOMP_GRID_LOOKUP_CM4 1
+template <>
+void GridLookup::LookupAs<grid_kernel::Int16>(const int32_t* pos_steps, int32_t out_q8[3]) const;
+template <>
+void GridLookup::LookupAs<grid_kernel::Float32>(const int32_t* pos_steps, int32_t out_q8[3]) const;
+#else
+#define VOLCOMP_GRID_LOOKUP_CM4 0
+#endif
+
+inline void GridLookup::Lookup(const int32_t* pos_steps, int32_t out_q8[3]) const {
+  if (type_ == table::ElementType::kInt16) {
+    LookupAs<grid_kernel::Int16>(pos_steps, out_q8);
+  } else if (type_ == table::ElementType::kInt32) {
+    LookupAs<grid_kernel::Int32>(pos_steps, out_q8);
+  } else {
+    LookupAs<grid_kernel::Float32>(pos_steps, out_q8);
+  }
+}
 
 template <class Loader>
 void GridLookup::Interpolate(const int32_t* pos_steps, int32_t out_q8[3]) const {

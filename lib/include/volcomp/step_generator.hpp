@@ -24,6 +24,7 @@
 #include <cstdint>
 
 #include "volcomp/board_config.hpp"
+#include "volcomp/interp_arith.hpp"
 #include "volcomp/invariant_divider.hpp"
 #include "volcomp/status.hpp"
 
@@ -72,8 +73,9 @@ class StepGenerator {
     PlanTick(target_steps, &plan);
     return plan;
   }
-  /// Plan() writing into `plan`; returns the steps still owed afterwards (|backlog|).
-  uint32_t PlanTick(int32_t target_steps, PulsePlan* plan);
+  /// Plan() writing into `plan`; returns the steps still owed afterwards (|backlog|). Always
+  /// inlined: the tick's output stage runs it inside its walk over the axes, without a call.
+  inline uint32_t PlanTick(int32_t target_steps, PulsePlan* plan);
 
   /// Output position after all planned pulses.
   int32_t position() const { return position_; }
@@ -109,5 +111,75 @@ class StepGenerator {
   InvariantDivider by_min_period_;
   const uint32_t* reciprocals_ = nullptr;  // the shared table (step_generator.cpp)
 };
+
+namespace step_timing {
+// max(t, -2^30) for t >= -2^31 + 2^29 (one SSAT #31).
+__attribute__((always_inline)) inline int32_t FloorFarPast(int32_t t) {
+#if defined(__ARM_FEATURE_SAT)
+  return __ssat(t, 31);
+#else
+  return t < -(int32_t{1} << 30) ? -(int32_t{1} << 30) : t;
+#endif
+}
+}  // namespace step_timing
+
+__attribute__((always_inline)) inline uint32_t StepGenerator::PlanTick(int32_t target_steps,
+                                                                       PulsePlan* out) {
+  const int32_t owed =
+      static_cast<int32_t>(static_cast<uint32_t>(target_steps) - static_cast<uint32_t>(position_));
+  const int32_t tick = static_cast<int32_t>(tick_);
+  int32_t rise = last_rise_, fall = last_fall_;
+  bool negative = negative_, dir_change = false;
+  uint32_t count = 0, dir_edge = 0, first_rise = 0, period = 0, left = 0;
+  if (owed != 0) {
+    const bool want_negative = owed < 0;
+    const uint32_t steps =
+        want_negative ? 0u - static_cast<uint32_t>(owed) : static_cast<uint32_t>(owed);
+    left = steps;
+    int32_t earliest = rise + static_cast<int32_t>(min_period_);
+    bool may_pulse = true;
+    if (want_negative != negative) {
+      int32_t edge = fall + static_cast<int32_t>(hold_);
+      edge = edge < 0 ? 0 : edge;
+      if (edge < tick) {
+        dir_change = true;
+        dir_edge = static_cast<uint32_t>(edge);
+        negative = want_negative;
+        const int32_t ready = edge + static_cast<int32_t>(setup_);
+        earliest = ready > earliest ? ready : earliest;
+      } else {
+        may_pulse = false;  // the hold time runs into the next tick
+      }
+    }
+    earliest = earliest < 0 ? 0 : earliest;
+    if (may_pulse && earliest < tick) {
+      const uint32_t window = tick_ - static_cast<uint32_t>(earliest);
+      // The first pulse sits at `earliest`; n pulses need (n - 1) periods, all rises inside.
+      uint32_t fit = by_min_period_.Divide(window - 1u).quotient + 1u;
+      fit = fit > max_per_tick_ ? max_per_tick_ : fit;
+      count = steps < fit ? steps : fit;
+      period = MulHiU32(window, reciprocals_[count]);
+      period = period < min_period_ ? min_period_ : period;
+      first_rise = static_cast<uint32_t>(earliest);
+      rise = earliest + static_cast<int32_t>((count - 1u) * period);
+      fall = rise + static_cast<int32_t>(width_);
+      position_ = static_cast<int32_t>(static_cast<uint32_t>(position_) +
+                                       (want_negative ? 0u - count : count));
+      left = steps - count;
+    }
+  }
+  negative_ = negative;
+  // Move the time origin to the next tick start.
+  last_rise_ = step_timing::FloorFarPast(rise - tick);
+  last_fall_ = step_timing::FloorFarPast(fall - tick);
+  out->count = count;
+  out->negative = negative;
+  out->dir_change = dir_change;
+  out->dir_edge = dir_edge;
+  out->first_rise = first_rise;
+  out->period = period;
+  out->width = width_;
+  return left;
+}
 
 }  // namespace volcomp

@@ -31,7 +31,7 @@ class StepOutput {
   /// One tick: plans[a] moves axis a toward target_steps[a], for every configured axis. Inline:
   /// the walk over the axes becomes part of the tick routine that calls it (one routine, one
   /// prologue); each axis is one call of StepGenerator::PlanTick().
-  void Plan(const int32_t* target_steps, PulsePlan* plans) {
+  __attribute__((always_inline)) void Plan(const int32_t* target_steps, PulsePlan* plans) {
     // Pointer walk, overrun count in a register: few live registers around the calls.
     uint32_t overruns = overruns_;
     Axis* const end = axis_ + axis_count_;

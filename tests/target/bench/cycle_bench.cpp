@@ -7,7 +7,6 @@
 #include <cstdint>
 
 #include "cases.hpp"
-#include "hand_lookup.hpp"
 #include "semihost.hpp"
 #include "volcomp/control_tick.hpp"
 #include "volcomp/firmware/board_app.hpp"
@@ -207,33 +206,6 @@ int BenchGrid(const GridCaseSpec& c, const char* name) {
   return 0;
 }
 
-// A hand-scheduled kernel (hand_lookup.hpp) on the positions BenchGrid times, each result checked
-// against the GridLookup kernel of the same element type.
-using HandKernel = void (*)(const HandLookupConstants*, const int32_t*, int32_t*);
-int BenchHandLookup(const GridCaseSpec& c, const char* name, const char* symbol, HandKernel hand) {
-  const uint32_t size = BuildGridImage(c, g_image, sizeof g_image);
-  const Result<table::TableView> view = table::ParseImage(g_image, size);
-  GridLookup lookup;
-  HandLookupConstants k;
-  if (size == 0 || !view.ok() || !lookup.Init(view->grid).ok() ||
-      !PrepareHandLookup(view->grid, &k)) {
-    semihost::Write("bench: hand lookup case invalid\n");
-    return 1;
-  }
-  Scenario(name, symbol);
-  const bool same = ForEachTimedPosition(c, [&](const int32_t* pos) {
-    int32_t out[3], ref[3];
-    hand(&k, pos, out);
-    lookup.Lookup(pos, ref);
-    return ref[0] == out[0] && ref[1] == out[1] && ref[2] == out[2];
-  });
-  if (!same) {
-    semihost::Write("bench: hand-scheduled lookup differs from GridLookup::Lookup\n");
-    return 1;
-  }
-  return 0;
-}
-
 int BenchTick() {
   static ControlTick engine;
   static StepOutput output;
@@ -245,12 +217,11 @@ int BenchTick() {
   uint32_t counters[3] = {0, 0, 0};
   PulsePlan plans[3];
   // The tick's data path (ControlTick::Run and the step output stage), then the same pattern
-  // again with its parts as their own rows (each call of the part inside the tick is one sample).
+  // again with its one remaining call, the target refresh, as its own row (each call one sample;
+  // the limiter and the step generator are inlined into the walk over the axes).
   const char* const kRuns[][2] = {
       {"control_tick_3axes", "volcomp_bench_tick"},
       {"tick_part_refresh", "_ZN7volcomp11Compensator14RefreshTargets"},
-      {"tick_part_limiter", "_ZN7volcomp17CorrectionLimiter4Step"},
-      {"tick_part_step_generator", "_ZN7volcomp13StepGenerator8PlanTick"},
   };
   for (const auto& run : kRuns) {
     Scenario(run[0], run[1]);
@@ -320,18 +291,10 @@ int main() {
   int rc = 0;
   rc |= BenchGrid<LoadInt16>(kGridCases[0], "lookup_int16_a");
   rc |= BenchGrid<LoadInt16>(kGridCases[1], "lookup_int16_b");
-  rc |= BenchHandLookup(kGridCases[0], "hand_lookup_int16_a", "volcomp_hand_lookup_int16",
-                        volcomp_hand_lookup_int16);
-  rc |= BenchHandLookup(kGridCases[1], "hand_lookup_int16_b", "volcomp_hand_lookup_int16",
-                        volcomp_hand_lookup_int16);
   rc |= BenchGrid<LoadInt32>(kGridCases[2], "lookup_int32_a");
   rc |= BenchGrid<LoadInt32>(kGridCases[3], "lookup_int32_b");
   rc |= BenchGrid<LoadFloat32>(kGridCases[4], "lookup_float32_a");
   rc |= BenchGrid<LoadFloat32>(kGridCases[5], "lookup_float32_b");
-  rc |= BenchHandLookup(kGridCases[4], "hand_lookup_float32_a", "volcomp_hand_lookup_float32",
-                        volcomp_hand_lookup_float32);
-  rc |= BenchHandLookup(kGridCases[5], "hand_lookup_float32_b", "volcomp_hand_lookup_float32",
-                        volcomp_hand_lookup_float32);
   rc |= BenchParts(0, "lookup_part_begin", "_ZNK7volcomp10GridLookup5Begin");
   rc |= BenchParts(1, "lookup_part_z0", "_ZNK7volcomp10GridLookup12AccumulateZ0");
   rc |= BenchParts(2, "lookup_part_z1", "_ZNK7volcomp10GridLookup8FinishZ1");

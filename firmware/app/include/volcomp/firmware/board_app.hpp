@@ -168,19 +168,30 @@ class BoardApp final : private BoardControl {
   /// (docs/mcu-target.md, tick_isr_3axes); TimedTick() measures it where a clock is cheap.
   void Tick() {
     if (!started_) return;
+    // A table switch and referencing in the same tick share one rebase (the state is the same as
+    // rebasing after each: a rebase overwrites all the tracking state).
     const PreparedTable* table = nullptr;
+    bool rebase = false;
     if (hand_over_.Take(&table)) {
       if (table != nullptr) {
-        int32_t machine[table::kMaxAxes];
-        for (uint8_t a = 0; a < engine_.axis_count(); ++a) machine[a] = engine_.machine_position(a);
-        engine_.compensator().UseTable(table, machine);
+        engine_.compensator().BindTable(table);
+        rebase = true;
       } else {
         engine_.compensator().ClearTable();
       }
     }
-    const uint8_t refs = pending_reference_.exchange(0, std::memory_order_acquire);
-    if (refs != 0) engine_.ReferenceAxes(refs);
-    if (pending_unreference_.exchange(false, std::memory_order_acquire)) engine_.Unreference();
+    // The tick runs to completion without the main loop in between (the hand-over's rule), so a
+    // load and a store take a request: no exclusive-access retry loop in the tick.
+    const uint8_t refs = pending_reference_.load(std::memory_order_acquire);
+    if (refs != 0) {
+      pending_reference_.store(0, std::memory_order_relaxed);
+      if (engine_.MarkReferenced(refs)) rebase = true;
+    }
+    if (rebase) engine_.RebaseCompensator();
+    if (pending_unreference_.load(std::memory_order_acquire)) {
+      pending_unreference_.store(false, std::memory_order_relaxed);
+      engine_.Unreference();
+    }
     engine_.compensator().SetEnabled(enabled_.load(std::memory_order_relaxed));
     engine_.compensator().SetFault(fault_flag_.load(std::memory_order_relaxed));
     uint32_t counters[table::kMaxAxes];

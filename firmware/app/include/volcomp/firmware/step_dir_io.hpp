@@ -32,7 +32,7 @@ class StepDirIo {
     return output_.Configure(config);
   }
   void ReadCounters(uint32_t* counters) { step_io_->ReadCounters(counters); }
-  void Output(const ControlTick& tick) {
+  __attribute__((always_inline)) void Output(const ControlTick& tick) {
     output_.Plan(tick.targets(), plans_);
     step_io_->Apply(plans_);
   }
