@@ -308,6 +308,28 @@ TEST_F(Bench, SettingsAreStoredAndAppliedAfterReset) {
   EXPECT_EQ(app_.settings().board.axis[1].max_correction_steps, 1000);
 }
 
+// 0x2137: the machine position, the table's coordinate: the home position (0x2018) at the
+// reference edge plus the input steps since; before referencing, the input since start.
+TEST_F(Bench, MachinePositionIsTheHomePositionPlusTheInputSinceReferencing) {
+  Boot();
+  io_.SetInput(InputLine::kWriteEnable, true);
+  ASSERT_TRUE(Write(ObjectId::kAxisHome1, static_cast<uint32_t>(-5000)).ok);
+  ASSERT_TRUE(Write(ObjectId::kStoreAll, canopen::kSaveSignature).ok);
+  can_.Inject(CanFrame{0x000, false, false, 2, {0x81, 0}});
+  Step(100);
+  step_io_.add_steps(0, 700);
+  Step(10);
+  EXPECT_EQ(static_cast<int32_t>(Read(ObjectId::kCommandedPosition1)), 700);
+  EXPECT_EQ(static_cast<int32_t>(Read(ObjectId::kMachinePosition1)), 700);  // not referenced
+  Home();
+  step_io_.add_steps(0, 1234);
+  step_io_.add_steps(1, -17);
+  Step(10);
+  EXPECT_EQ(static_cast<int32_t>(Read(ObjectId::kMachinePosition1)), -5000 + 1234);
+  EXPECT_EQ(static_cast<int32_t>(Read(ObjectId::kMachinePosition2)), -17);  // home 0
+  EXPECT_EQ(static_cast<int32_t>(Read(ObjectId::kCommandedPosition1)), 700 + 1234);
+}
+
 TEST_F(Bench, DiagnosticsAndIdentity) {
   Boot();
   EXPECT_EQ(Read(ObjectId::kVendorId), 0x564F4C43u);

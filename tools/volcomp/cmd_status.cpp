@@ -42,7 +42,7 @@ struct Snapshot {
   uint32_t vendor = 0, product = 0, revision = 0, serial = 0;
   uint32_t state = 0, table_status = 0, active_id = 0, active_crc = 0, staged_crc = 0,
            staged_id = 0, staged_bytes = 0, writable = 0, axes = 0;
-  int32_t commanded[6] = {}, correction_q8[6] = {}, output[6] = {};
+  int32_t commanded[6] = {}, machine[6] = {}, correction_q8[6] = {}, output[6] = {};
   uint32_t backlog[6] = {};
   uint32_t limit_flags[6] = {}, clamped[6] = {}, rate_limited[6] = {};  // 0x2134-0x2136
   uint32_t counters[kCounterCount] = {};
@@ -81,6 +81,7 @@ Snapshot Take(canopen_client::CanSession& s, bool axes_detail) {
   for (uint32_t a = 0; a < axes && axes_detail; ++a) {
     auto id = [a](ObjectId first) { return AxisObject(first, a); };
     n.commanded[a] = static_cast<int32_t>(Get(s, id(ObjectId::kCommandedPosition1)));
+    n.machine[a] = static_cast<int32_t>(Get(s, id(ObjectId::kMachinePosition1)));
     n.correction_q8[a] = static_cast<int32_t>(Get(s, id(ObjectId::kAppliedCorrection1)));
     n.output[a] = static_cast<int32_t>(Get(s, id(ObjectId::kOutputPosition1)));
     n.backlog[a] = Get(s, id(ObjectId::kMaxBacklog1));
@@ -133,13 +134,17 @@ std::string LimitText(const Snapshot& n, const AxisInfo& x, uint32_t a) {
   return t;
 }
 
-void AxisJson(JsonWriter& w, const Snapshot& n, const AxisInfo& x, uint32_t a) {
+void AxisJson(JsonWriter& w, const Snapshot& n, const AxisInfo& x, uint32_t a, bool referenced) {
   w.key("axis").value(a + 1);
   w.key("name").value(std::string(1, x.name));
   w.key("kind").value(x.rotary ? "rotary" : "linear");
   w.key("units_per_step").value(x.units_per_step());
   w.key("commanded_steps").value(int64_t{n.commanded[a]});
   w.key(std::string("commanded_") + x.position_unit()).value(n.commanded[a] * x.units_per_step());
+  if (referenced) {  // the table's coordinate, after the home offset (0x2018)
+    w.key("machine_steps").value(int64_t{n.machine[a]});
+    w.key(std::string("machine_") + x.position_unit()).value(n.machine[a] * x.units_per_step());
+  }
   w.key("applied_correction_steps").value(n.correction_q8[a] / 256.0);
   w.key(std::string("applied_correction_") + x.correction_unit())
       .value(n.correction_q8[a] / 256.0 * x.correction_per_step());
@@ -245,7 +250,7 @@ int RunStatus(Args& args) {
     w.key("axes").begin_array();
     for (uint32_t a = 0; a < axes.size(); ++a) {
       w.begin_object();
-      AxisJson(w, n, axes[a], a);
+      AxisJson(w, n, axes[a], a, state.referenced);
       w.end_object();
     }
     w.end_array();
@@ -284,12 +289,19 @@ int RunStatus(Args& args) {
   for (uint32_t a = 0; a < axes.size(); ++a) {
     const AxisInfo& x = axes[a];
     const double correction_steps = n.correction_q8[a] / 256.0;
+    // The machine position is the table's coordinate: the home position (0x2018) at the
+    // reference point plus the input since; meaningless before referencing.
+    char machine[80] = "not referenced";
+    if (state.referenced) {
+      std::snprintf(machine, sizeof machine, "%.4f %s (%d steps)",
+                    n.machine[a] * x.units_per_step(), x.position_unit(), n.machine[a]);
+    }
     std::printf(
-        "axis %u %c: input %d steps (%.4f %s counted since start), correction %+.3f %s (%+.3f "
-        "steps, max %d)%s, output %d steps, max backlog %u\n",
-        a + 1, x.name, n.commanded[a], n.commanded[a] * x.units_per_step(), x.position_unit(),
-        correction_steps * x.correction_per_step(), x.rotary ? "arcsec" : "µm", correction_steps,
-        x.max_correction_steps, LimitText(n, x, a).c_str(), n.output[a], n.backlog[a]);
+        "axis %u %c: input %d steps, machine %s, correction %+.3f %s (%+.3f steps, max %d)%s, "
+        "output %d steps, max backlog %u\n",
+        a + 1, x.name, n.commanded[a], machine, correction_steps * x.correction_per_step(),
+        x.rotary ? "arcsec" : "µm", correction_steps, x.max_correction_steps,
+        LimitText(n, x, a).c_str(), n.output[a], n.backlog[a]);
   }
   std::printf("counters:");
   for (int i = 0; i < kCounterCount; ++i) std::printf(" %s=%u", kCounterNames[i], n.counters[i]);

@@ -312,6 +312,10 @@ bool BoardObjects::ReadNumber(const ObjectEntry& e, uint32_t* v) const {
     *v = a < eng.axis_count() ? static_cast<uint32_t>(eng.commanded(a)) : 0;
     return true;
   }
+  if (AxisOf(e.id, ObjectId::kMachinePosition1, &a)) {  // the table's coordinate
+    *v = a < eng.axis_count() ? static_cast<uint32_t>(eng.machine_position(a)) : 0;
+    return true;
+  }
   if (AxisOf(e.id, ObjectId::kAppliedCorrection1, &a)) {
     *v = a < eng.axis_count() ? static_cast<uint32_t>(eng.compensator().applied_q8(a)) : 0;
     return true;
