@@ -94,6 +94,29 @@ TEST(BoardIniSim, AnAppliedFileIsWhatTheBoardRuns) {
   EXPECT_EQ(s.board.axis[1].max_correction_steps, 1000);  // left out: the factory value
 }
 
+// 0x2124 is the configuration in force (compared with the firmware's own, not over SDO): an edit
+// changes the objects at once and what runs only after store and reset node.
+TEST(BoardIniSim, SettingsInForceAreWhatTheFirmwareRunsNotTheEditedCopy) {
+  Bench a;
+  const BoardSettings wanted = board_ini::ParseBoardIni(kMachine, "m.ini");
+  size_t written = 0;
+  board_ini::WriteObjects(*a.node, Differences(board_ini::ReadSettings(*a.node), wanted), &written);
+  EXPECT_GT(written, 0u);
+  // The communication parameters are in force as soon as written (CiA 301); the rest is not.
+  BoardSettings runs = a.board.app().settings();
+  EXPECT_EQ(runs.heartbeat_ms, 1000);
+  runs.heartbeat_ms = 500;
+  EXPECT_TRUE(Differences(board_ini::ReadSettingsInForce(*a.node), runs).empty());
+  EXPECT_FALSE(Differences(board_ini::ReadSettingsInForce(*a.node), wanted).empty());
+  EXPECT_EQ(board_ini::ReadSettingsInForce(*a.node).board.axis[0].max_correction_steps, 1000);
+  board_ini::StoreSettings(*a.node);
+  a.ResetNode();
+  const BoardSettings in_force = board_ini::ReadSettingsInForce(*a.node);
+  EXPECT_TRUE(Differences(in_force, a.board.app().settings()).empty());
+  EXPECT_EQ(in_force.board.axis[0].max_correction_steps, 800);
+  EXPECT_EQ(in_force.heartbeat_ms, 500);
+}
+
 TEST(BoardIniSim, SavedFromOneBoardAppliedToAFreshOneSavesIdentically) {
   Bench a;
   a.Apply(board_ini::ParseBoardIni(kMachine, "m.ini"));

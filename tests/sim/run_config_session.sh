@@ -42,7 +42,7 @@ grep -qE 'slcan0 000#8110 T$' apply.log || fail "no NMT reset node (000#8110) in
 [[ $("$volcomp" sdo read 2010:4 --can "$can") == "67 (0x43)" ]] || fail "2010:4 is not 'C'"
 "$volcomp" config show --can "$can" | tee show.txt
 grep -q "settings in force" show.txt || fail "show: not in force"
-grep -qE '^2015:1  X    max_correction +800 +1000 +\* steps' show.txt || fail "show: 2015:1"
+grep -qE '^2015:1  X    max_correction +800 +800 +1000 +\* steps' show.txt || fail "show: 2015:1"
 "$volcomp" config apply machine.ini --can "$can" | grep -q "in force already; nothing written" \
   || fail "a second apply wrote something"
 

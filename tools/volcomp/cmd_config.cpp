@@ -72,6 +72,7 @@ int RunConfigShow(Args& args) {
   auto s = OpenSession(can);
   const BoardSettings board = board_ini::ReadSettings(*s);
   const bool pending = board_ini::SettingsPending(*s);
+  const BoardSettings in_force = board_ini::ReadSettingsInForce(*s);
   const BoardSettings factory = board_ini::FactorySettings();
   auto shown = [&](const canopen::ObjectEntry& e) {
     const std::string axis = AxisOf(e, board);
@@ -94,6 +95,7 @@ int RunConfigShow(Args& args) {
       w.key("axis").value(AxisOf(e, board));
       w.key("value").value(o.get(board));
       w.key("text").value(ValueText(e, o.get(board)));
+      w.key("in_force").value(o.get(in_force));
       w.key("factory").value(o.get(factory));
       w.key("unit").value(k != nullptr && e.id != ObjectId::kAxisCountConfig ? k->unit : "");
       w.end_object();
@@ -104,16 +106,18 @@ int RunConfigShow(Args& args) {
   }
   std::printf("node %u: %s\n", can.node,
               pending ? PendingNote() : "settings in force (no edit or store pending)");
-  std::printf("%-7s %-4s %-19s %-11s %-11s %s\n", "object", "axis", "key", "value", "factory",
-              "unit (* = not the factory value)");
+  std::printf("%-7s %-4s %-19s %-11s %-11s %-11s %s\n", "object", "axis", "key", "value",
+              "in force", "factory", "unit (* = not the factory value, ! = not in force)");
   for (const board_ini::SettingObject& o : board_ini::SettingObjects()) {
     const canopen::ObjectEntry& e = canopen::Entry(o.id);
     if (!shown(e)) continue;
     const IniKey* k = board_ini::KeyOf(o.id);
     const bool changed = o.get(board) != o.get(factory);
-    std::printf("%-7s %-4s %-19s %-11s %-11s %s%s\n", board_ini::ObjectAddress(e).c_str(),
+    const bool not_in_force = o.get(board) != o.get(in_force);
+    std::printf("%-7s %-4s %-19s %-11s %-11s %-11s %s%s%s\n", board_ini::ObjectAddress(e).c_str(),
                 AxisOf(e, board).c_str(), KeyName(e).c_str(), ValueText(e, o.get(board)).c_str(),
-                ValueText(e, o.get(factory)).c_str(), changed ? "* " : "",
+                ValueText(e, o.get(in_force)).c_str(), ValueText(e, o.get(factory)).c_str(),
+                changed ? "* " : "", not_in_force ? "! " : "",
                 k != nullptr && e.id != ObjectId::kAxisCountConfig ? k->unit : "");
   }
   if (!all && board.board.axis_count < table::kMaxAxes) {

@@ -187,15 +187,16 @@ const std::vector<Command>& Commands() {
        "A write is checked against the object dictionary before anything is sent: the object\n"
        "must be writable and VALUE within its type and limits (exit 2 otherwise). When the\n"
        "board refuses, its reason is printed (for a store, the rule and the axis)."},
-      {"config show", "every configuration object of a board: value, factory value, unit", "",
+      {"config show", "every configuration object of a board: value, value in force, factory value",
+       "",
        Join({kCanOptions,
              {{"--all", nullptr, nullptr, nullptr, nullptr,
                "also the objects of the axes beyond the axis count"},
               {"--json", nullptr, nullptr, nullptr, nullptr, "machine-readable output"}}}),
        RunConfigShow,
-       "The values read are the board's edited copy; \"settings pending\" says they are not in\n"
-       "force yet (edited or stored, applied at NMT reset node). See docs/user-guide.md\n"
-       "\"Configuring the board from a file\"."},
+       "The values are the board's edited copy (what a store saves) beside the configuration in\n"
+       "force (0x2124); they differ while settings are pending (edited or stored, applied at NMT\n"
+       "reset node). See docs/user-guide.md \"Configuring the board from a file\"."},
       {"config save", "write a board's configuration to an INI file", "FILE|-",
        Join({kCanOptions,
              {{"--force", nullptr, nullptr, nullptr, nullptr, "replace an existing FILE"}}}),

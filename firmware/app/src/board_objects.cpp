@@ -364,6 +364,18 @@ SdoAbort BoardObjects::DoRead(const ObjectEntry& e,
     case ObjectId::kSoftwareVersion:
       return CopyOut(reinterpret_cast<const uint8_t*>(identity_.software_version),
                      StringLength(identity_.software_version), offset, buf, cap, copied, total);
+    case ObjectId::kSettingsInForce: {
+      // What the board runs with (the settings applied at the last start or reset node, the
+      // communication parameters in force), in the stored record's format: the reader decodes it
+      // with DeserializeSettings, the same code as the settings store.
+      BoardSettings s = active_;
+      const canopen::CommunicationParameters comm = node_->communication();
+      s.heartbeat_ms = comm.heartbeat_ms;
+      s.emcy_inhibit_100us = comm.emcy_inhibit_100us;
+      uint8_t record[kSettingsBytes];
+      SerializeSettings(s, record);
+      return CopyOut(record, kSettingsBytes, offset, buf, cap, copied, total);
+    }
     case ObjectId::kActiveTableData:
       // The active image (read-back for verification of what compensates).
       if (has_active_ && tables_->active_data() != nullptr) {

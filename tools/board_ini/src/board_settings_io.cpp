@@ -38,6 +38,21 @@ bool SettingsPending(canopen_client::NodeObjects& node) {
   return canopen::DecodeDeviceState(static_cast<uint16_t>(state)).settings_pending;
 }
 
+BoardSettings ReadSettingsInForce(canopen_client::NodeObjects& node) {
+  std::vector<uint8_t> record;
+  Require(node.UploadDomain(ObjectId::kSettingsInForce, &record),
+          "reading the settings in force (2124:0)");
+  BoardSettings s;
+  const Status st =
+      firmware::DeserializeSettings(record.data(), static_cast<uint32_t>(record.size()), &s);
+  if (!st.ok()) {
+    throw tools::InputError("the settings in force (2124:0, " + std::to_string(record.size()) +
+                            " bytes) are not a settings record this tool reads: " +
+                            ErrorText(st.error()));
+  }
+  return s;
+}
+
 std::vector<Difference> Differences(const BoardSettings& a, const BoardSettings& b) {
   std::vector<Difference> out;
   for (const SettingObject& o : SettingObjects()) {

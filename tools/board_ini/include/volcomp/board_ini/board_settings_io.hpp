@@ -4,9 +4,9 @@
 //
 // What the board exposes: a read of a configuration object gives its edited copy (what a store
 // saves); the copy and the configuration in force differ exactly while the device state's
-// "settings pending" bit is set (edited, or stored and not yet applied by NMT reset node). There is
-// no read of the value in force of one object: when the bit is clear, every object reads its value
-// in force.
+// "settings pending" bit is set (edited, or stored and not yet applied by NMT reset node). The
+// configuration in force is one record, 0x2124 (the settings store's format, decoded with the
+// firmware's own DeserializeSettings).
 //
 // Errors: tools::CommunicationError when the node does not answer (timeout, no adapter);
 // tools::InputError with the object and the board's reason when the board refuses an access.
@@ -28,6 +28,9 @@ firmware::BoardSettings ReadSettings(canopen_client::NodeObjects& node);
 /// True while the board's configuration objects differ from its configuration in force (0x2122
 /// "settings pending").
 bool SettingsPending(canopen_client::NodeObjects& node);
+
+/// The configuration the board runs with (0x2124). InputError when the record cannot be decoded.
+firmware::BoardSettings ReadSettingsInForce(canopen_client::NodeObjects& node);
 
 struct Difference {
   canopen::ObjectId id;
