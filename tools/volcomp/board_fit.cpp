@@ -6,6 +6,7 @@
 #include <iostream>
 
 #include "sdo_failure.hpp"
+#include "volcomp/board_ini/board_settings_io.hpp"
 #include "volcomp/canopen/board_protocol.hpp"
 #include "volcomp/image/table_demands.hpp"
 
@@ -23,10 +24,6 @@ uint32_t ReadObject(canopen_client::NodeObjects& node, ObjectId id) {
   return v;
 }
 
-ObjectId AxisObject(ObjectId first, size_t a) {
-  return static_cast<ObjectId>(static_cast<int>(first) + static_cast<int>(a));
-}
-
 std::string Fixed(double v, int digits) {
   char b[64];
   std::snprintf(b, sizeof b, "%.*f", digits, v);
@@ -36,19 +33,21 @@ std::string Fixed(double v, int digits) {
 }  // namespace
 
 BoardInstallation ReadInstallation(canopen_client::NodeObjects& node) {
+  // The configuration the board runs with (0x2124), which decides what it clamps, not the edited
+  // objects (they differ while settings are pending).
   BoardInstallation b;
-  const uint32_t count = ReadObject(node, ObjectId::kAxisCountConfig);
   b.settings_pending =
       canopen::DecodeDeviceState(ReadObject(node, ObjectId::kDeviceState)).settings_pending;
-  for (size_t a = 0; a < count && a < table::kMaxAxes; ++a) {
+  const firmware::BoardSettings s = board_ini::ReadSettingsInForce(node);
+  for (size_t a = 0; a < s.board.axis_count && a < table::kMaxAxes; ++a) {
+    const AxisConfig& c = s.board.axis[a];
     BoardAxis x;
-    x.name = static_cast<char>(ReadObject(node, AxisObject(ObjectId::kAxisName1, a)));
-    x.kind = ReadObject(node, AxisObject(ObjectId::kAxisKind1, a));
-    x.resolution_e9 = ReadObject(node, AxisObject(ObjectId::kAxisResolution1, a));
-    x.max_correction_steps =
-        static_cast<int32_t>(ReadObject(node, AxisObject(ObjectId::kAxisMaxCorrection1, a)));
-    x.max_rate_steps_s = ReadObject(node, AxisObject(ObjectId::kAxisMaxRate1, a));
-    x.max_input_rate_hz = ReadObject(node, AxisObject(ObjectId::kAxisInputMaxRate1, a));
+    x.name = c.name;
+    x.kind = static_cast<uint32_t>(c.kind);
+    x.resolution_e9 = c.resolution_e9;
+    x.max_correction_steps = c.max_correction_steps;
+    x.max_rate_steps_s = c.max_correction_rate_steps_s;
+    x.max_input_rate_hz = c.max_input_rate_hz;
     b.axes.push_back(x);
   }
   return b;
@@ -121,7 +120,7 @@ std::vector<FitProblem> RequireTableFits(canopen_client::NodeObjects& node,
   if (board.settings_pending) {
     std::cerr << "warning: node " << unsigned{node.node()}
               << " has settings edits not yet in force (store and reset node): the table is "
-                 "checked against the edited values\n";
+                 "checked against the settings in force (0x2124), which the edits will replace\n";
   }
   std::vector<FitProblem> problems = CheckTableFits(view, board);
   bool refuse = false;
