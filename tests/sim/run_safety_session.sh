@@ -16,7 +16,7 @@
 set -euo pipefail
 sim=$1 volcomp=$2 src=$3
 shift 3
-sections=${*:-values axes readback reasons monitor clamp powerloss}
+sections=${*:-values axes readback reasons monitor clamp powerloss json}
 work=$(mktemp -d)
 trap 'kill -9 $(jobs -p) 2>/dev/null || true; rm -rf "$work"' EXIT
 fail() { echo "FAIL: $*" >&2; exit 1; }
@@ -25,6 +25,17 @@ source "$(dirname "$0")/sim_node_lib.sh"
 power_cycle() {  # SIGKILL: nothing is saved at exit, only what the flash operations wrote
   kill -9 "$node_pid"; wait "$node_pid" 2>/dev/null || true
   start_node
+}
+# json_is FILE KEY VALUE: stdout FILE is one JSON object whose KEY (a.b for nesting) is VALUE.
+json_is() {
+  python3 - "$@" <<'PY' || fail "JSON $2 != $3 in $(cat "$1")"
+import json, sys
+path, key, want = sys.argv[1:4]
+v = json.load(open(path))
+for k in key.split("."):
+    v = v[k]
+sys.exit(0 if str(v) == want else 1)
+PY
 }
 # run EXPECTED_EXIT OUTFILE COMMAND...: runs the command, checks its exit code.
 run() {
@@ -166,6 +177,27 @@ correction (0x2015:1) is 100 steps" "$o" || fail "the clamp refusal does not nam
       run 0 "$o" "$volcomp" verify "$work/a.vct" --readback --can "$can"
       run 0 "$o" "$volcomp" upload "$work/big.vct" --can "$can" --quiet
       run 0 "$o" "$volcomp" verify "$work/big.vct" --readback --staged --can "$can"
+      ;;
+    json)  # --json: one object on stdout whatever happened (messages on stderr)
+      j=$work/json.txt
+      set +e; "$volcomp" upload "$work/b.vct" --can "$can" --force --json >"$j" 2>/dev/null; e=$?
+      set -e; [[ $e == 0 ]] || fail "upload --json exit $e"
+      json_is "$j" result staged; json_is "$j" image.table_id 2; json_is "$j" exit_code 0
+      set +e; "$volcomp" verify "$work/b.vct" --staged --readback --can "$can" --json >"$j"; e=$?
+      set -e; [[ $e == 0 ]] || fail "verify --json exit $e"
+      json_is "$j" verdict staged; json_is "$j" readback.identical True
+      set +e; "$volcomp" verify "$work/b.vct" --can "$can" --json >"$j"; e=$?; set -e
+      [[ $e == 1 ]] || fail "verify of a table not active: exit $e"
+      json_is "$j" verdict "staged, not active"
+      referenced_and_at_rest
+      "$volcomp" activate --can "$can" --json >"$j"
+      json_is "$j" active_table_id 2
+      set +e; "$volcomp" activate --can "$can" --json >"$j"; e=$?; set -e
+      [[ $e == 1 ]] || fail "activate with nothing staged: exit $e"
+      json_is "$j" exit_code 1; grep -q "nothing is staged" "$j" || fail "no reason in the JSON"
+      set +e; "$volcomp" verify "$work/b.vct" --can slcan-tcp:127.0.0.1:1 --json >"$j"; e=$?; set -e
+      [[ $e == 3 ]] || fail "verify without a board: exit $e"
+      json_is "$j" exit_code 3
       ;;
     *) fail "unknown section $section" ;;
   esac

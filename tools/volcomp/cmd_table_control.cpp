@@ -4,6 +4,7 @@
 // (board_fit.hpp): a table the board would clamp or rate-limit is refused unless --allow-clamp.
 // Reference refuses axes the board does not have (0x2000:4).
 #include <cstdio>
+#include <iostream>
 #include <string>
 
 #include "board_fit.hpp"
@@ -11,6 +12,8 @@
 #include "commands.hpp"
 #include "sdo_failure.hpp"
 #include "volcomp/image/image_reader.hpp"
+#include "volcomp/tools/hex.hpp"
+#include "volcomp/tools/json.hpp"
 
 namespace volcomp::tools {
 namespace {
@@ -35,6 +38,7 @@ int Control(Args& args, canopen::TableCommand command, const char* done) {
   const CanOptions can = ParseCanOptions(args);
   const bool allow_clamp =
       command == canopen::TableCommand::kActivate && args.flag("--allow-clamp");
+  const bool json = args.flag("--json");
   args.finish();
   return OverTheBus([&] {
     auto s = OpenSession(can);
@@ -48,7 +52,19 @@ int Control(Args& args, canopen::TableCommand command, const char* done) {
     uint32_t crc = 0, id = 0;
     Check(s->Read(ObjectId::kActiveTableCrc, &crc), "reading the active CRC-32 (0x2104)");
     Check(s->Read(ObjectId::kActiveTableId, &id), "reading the active table id (0x2103)");
-    std::printf("%s: node %u active table id %u, CRC-32 0x%08X\n", done, can.node, id, crc);
+    std::fprintf(json ? stderr : stdout, "%s: node %u active table id %u, CRC-32 0x%08X\n", done,
+                 can.node, id, crc);
+    if (json) {  // one object on stdout; failures: RunCommand's {"command", "exit_code", "error"}
+      JsonWriter w(std::cout);
+      w.begin_object();
+      w.key("command").value(command == canopen::TableCommand::kActivate ? "activate" : "deactivate");
+      w.key("node").value(unsigned{can.node});
+      w.key("active_table_id").value(uint64_t{id});
+      w.key("active_crc32").value(Hex32(crc));
+      w.key("exit_code").value(0);
+      w.end_object();
+      std::cout << "\n";
+    }
     return 0;
   });
 }

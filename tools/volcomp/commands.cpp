@@ -2,10 +2,12 @@
 // default, meaning), the help generated from it, and the dispatch that parses with it.
 #include "commands.hpp"
 
+#include <algorithm>
 #include <iostream>
 #include <sstream>
 
 #include "volcomp/tools/csv.hpp"
+#include "volcomp/tools/json.hpp"
 
 namespace volcomp::tools {
 namespace {
@@ -134,6 +136,7 @@ const std::vector<Command>& Commands() {
               {"--force", nullptr, nullptr, nullptr, nullptr,
                "upload even when the board already has this table"},
               {"--retries", nullptr, "N", nullptr, "2", "repeat a failed transfer up to N times"},
+              {"--json", nullptr, nullptr, nullptr, nullptr, "the result as one JSON object on stdout (messages on stderr)"},
               {"--quiet", nullptr, nullptr, nullptr, nullptr, "no progress bar"}}}),
        RunUpload,
        "Before the transfer the image is checked against the board's installation: axis count,\n"
@@ -147,21 +150,23 @@ const std::vector<Command>& Commands() {
                "read the table back (the active one, or the staged one with --staged) and compare "
                "it byte by byte"},
               {"--staged", nullptr, nullptr, nullptr, nullptr,
-               "verify the staged table instead of the active one"}}}),
+               "verify the staged table instead of the active one"},
+              {"--json", nullptr, nullptr, nullptr, nullptr, "the result as one JSON object on stdout (messages on stderr)"}}}),
        RunVerify,
        "Exit 0 when the board has the image (active, or staged with --staged), 1 when it has\n"
        "another table or none, 3 when the board cannot be reached."},
       {"activate", "activate the staged, verified table (axes referenced and at rest)", "",
        Join({kCanOptions,
              {{"--allow-clamp", nullptr, nullptr, nullptr, nullptr,
-               "activate a table the board would clamp (0x2015) or rate-limit (0x2016)"}}}),
+               "activate a table the board would clamp (0x2015) or rate-limit (0x2016)"},
+              {"--json", nullptr, nullptr, nullptr, nullptr, "the result as one JSON object on stdout (messages on stderr)"}}}),
        RunActivate,
        "The staged table is read back and checked against the board's installation first: axis\n"
        "count, names and units per step (0x2012) must match; a table whose largest correction\n"
        "exceeds the max correction (0x2015), or whose gradient times the fastest input rates\n"
        "(0x201E) exceeds the max correction rate (0x2016), is refused unless --allow-clamp."},
-      {"deactivate", "deactivate the active table (the correction ramps out)", "", kCanOptions,
-       RunDeactivate},
+      {"deactivate", "deactivate the active table (the correction ramps out)", "",
+       Join({kCanOptions, {{"--json", nullptr, nullptr, nullptr, nullptr, "the result as one JSON object on stdout (messages on stderr)"}}}), RunDeactivate},
       {"reference", "declare axes referenced over CAN (instead of home switch edges)", "",
        Join({kCanOptions,
              {{"--axes", nullptr, "1,2,3", nullptr, nullptr,
@@ -459,20 +464,43 @@ std::string ToolHelp() {
   return s.str();
 }
 
+// With --json (for the commands that declare it), a failure is a JSON object on stdout too, so a
+// script reads one object whatever happened: {"command", "exit_code", "error"}.
+void JsonFailure(const Command& cmd, const std::vector<std::string>& words, int code,
+                 const std::string& message) {
+  bool declared = false;
+  for (const OptionSpec& o : cmd.options) declared = declared || std::string(o.name) == "--json";
+  if (!declared || std::find(words.begin(), std::find(words.begin(), words.end(), "--"),
+                             "--json") == words.end()) {
+    return;
+  }
+  JsonWriter w(std::cout);
+  w.begin_object();
+  w.key("command").value(cmd.name);
+  w.key("exit_code").value(code);
+  w.key("error").value(message);
+  w.end_object();
+  std::cout << "\n";
+}
+
 int RunCommand(const Command& cmd, const std::vector<std::string>& words) {
+  auto fail = [&](int code, const std::string& message) {
+    JsonFailure(cmd, words, code, message);
+    return code;
+  };
   try {
     Args args(words, &cmd.options);
     return cmd.run(args);
   } catch (const UsageError& e) {
     std::cerr << "volcomp " << cmd.name << ": " << e.what() << "\n(`volcomp help " << cmd.name
               << "` lists the options)\n";
-    return kExitUsage;
+    return fail(kExitUsage, e.what());
   } catch (const CommunicationError& e) {
     std::cerr << "volcomp " << cmd.name << ": error: " << e.what() << "\n";
-    return kExitCommunication;
+    return fail(kExitCommunication, e.what());
   } catch (const std::exception& e) {
     std::cerr << "volcomp " << cmd.name << ": error: " << e.what() << "\n";
-    return kExitFailed;
+    return fail(kExitFailed, e.what());
   }
 }
 
