@@ -198,6 +198,14 @@ correction (0x2015:1) is 100 steps" "$o" || fail "the clamp refusal does not nam
       set +e; "$volcomp" verify "$work/b.vct" --can slcan-tcp:127.0.0.1:1 --json >"$j"; e=$?; set -e
       [[ $e == 3 ]] || fail "verify without a board: exit $e"
       json_is "$j" exit_code 3
+      "$volcomp" monitor --can "$can" --json --interval-ms 100 --duration 0.35 >"$j"
+      python3 - "$j" <<'PY' || fail "monitor --json: $(cat "$j")"
+import json, sys
+rows = [json.loads(l) for l in open(sys.argv[1])]
+assert len(rows) >= 3, rows
+assert [a["name"] for a in rows[-1]["axes"]] == ["X", "Y", "Z"], rows[-1]
+assert "machine_mm" in rows[-1]["axes"][0] and "clamped" in rows[-1]["axes"][0], rows[-1]
+PY
       ;;
     *) fail "unknown section $section" ;;
   esac

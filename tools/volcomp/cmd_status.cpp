@@ -3,6 +3,7 @@
 #include <chrono>
 #include <cstdio>
 #include <iostream>
+#include <sstream>
 
 #include "can_options.hpp"
 #include "commands.hpp"
@@ -159,7 +160,7 @@ void AxisJson(JsonWriter& w, const Snapshot& n, const AxisInfo& x, uint32_t a, b
 }
 
 const char* kCounterNames[] = {
-    "can_rx_frames", "can_tx_frames",    "malformed_frames", "sdo_aborts",      "emcy_sent",
+    "can_rx_frames", "can_tx_frames",   "malformed_frames", "sdo_aborts",      "emcy_sent",
     "ticks",         "output_overruns", "max_tick_cost_ns", "refused_actions", "emcy_suppressed"};
 static_assert(sizeof(kCounterNames) / sizeof(kCounterNames[0]) == kCounterCount,
               "one name per counter of 0x2140");
@@ -314,16 +315,18 @@ int RunMonitor(Args& args) {
   const double duration = args.number("--duration").value_or(0);
   const long long interval = args.integer("--interval-ms").value_or(1000);
   const bool csv = args.flag("--csv");
+  const bool json = args.flag("--json");
   args.finish();
   if (interval < 50) throw UsageError("--interval-ms must be at least 50");
+  if (csv && json) throw UsageError("--csv and --json: choose one");
   auto s = OpenSession(can);
   const auto start = std::chrono::steady_clock::now();
   std::optional<uint8_t> last_nmt;
-  // With --csv, stdout carries only the table; heartbeat and EMCY lines go to stderr.
-  FILE* events = csv ? stderr : stdout;
+  // With --csv or --json, stdout carries only the data; heartbeat and EMCY lines go to stderr.
+  FILE* events = csv || json ? stderr : stdout;
   std::vector<AxisInfo> axes;
+  if (csv || json) axes = ReadAxes(*s, Get(*s, ObjectId::kAxisCountConfig));
   if (csv) {
-    axes = ReadAxes(*s, Get(*s, ObjectId::kAxisCountConfig));
     std::printf("time_s,state");
     for (const AxisInfo& x : axes) {
       std::printf(
@@ -370,6 +373,32 @@ int RunMonitor(Args& args) {
                     (n.limit_flags[a] & canopen::kLimitRateLimited) != 0 ? 1 : 0);
       }
       std::printf(",%u,%u,%u\n", n.counters[6], n.counters[8], n.counters[3]);
+    } else if (json) {  // one object per line (JSON lines), the axes as in `status --json`
+      const double t =
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      const bool referenced = canopen::DecodeDeviceState(static_cast<uint16_t>(n.state)).referenced;
+      std::ostringstream line;
+      {
+        JsonWriter w(line);
+        w.begin_object();
+        w.key("time_s").value(t);
+        w.key("device_state_flags").value(StateText(n.state));
+        w.key("axes").begin_array();
+        for (uint32_t a = 0; a < axes.size(); ++a) {
+          w.begin_object();
+          AxisJson(w, n, axes[a], a, referenced);
+          w.end_object();
+        }
+        w.end_array();
+        w.key("counters").begin_object();
+        for (int i = 0; i < kCounterCount; ++i)
+          w.key(kCounterNames[i]).value(uint64_t{n.counters[i]});
+        w.end_object();
+        w.end_object();
+      }
+      std::string text = line.str();
+      text.erase(std::remove(text.begin(), text.end(), '\n'), text.end());
+      std::printf("%s\n", text.c_str());
     } else {
       std::printf("state %s |", StateText(n.state).c_str());
       for (uint32_t a = 0; a < n.axes && a < 6; ++a) {

@@ -57,7 +57,8 @@ int Control(Args& args, canopen::TableCommand command, const char* done) {
     if (json) {  // one object on stdout; failures: RunCommand's {"command", "exit_code", "error"}
       JsonWriter w(std::cout);
       w.begin_object();
-      w.key("command").value(command == canopen::TableCommand::kActivate ? "activate" : "deactivate");
+      w.key("command").value(command == canopen::TableCommand::kActivate ? "activate"
+                                                                         : "deactivate");
       w.key("node").value(unsigned{can.node});
       w.key("active_table_id").value(uint64_t{id});
       w.key("active_crc32").value(Hex32(crc));

@@ -35,7 +35,8 @@ using canopen_client::SdoResult;
 
 class ProgressBar {
  public:
-  ProgressBar(uint32_t total, FILE* out) : total_(total), out_(out), tty_(isatty(fileno(out)) != 0) {
+  ProgressBar(uint32_t total, FILE* out)
+      : total_(total), out_(out), tty_(isatty(fileno(out)) != 0) {
     start_ = std::chrono::steady_clock::now();
   }
   void Update(uint32_t done) {
@@ -44,15 +45,16 @@ class ProgressBar {
     if (tty_) {
       const int width = 30, filled = total_ ? static_cast<int>(width * double(done) / total_) : 0;
       std::fprintf(out_, "\r  [%-*s] %3d%%  %u/%u B  %.1f kB/s  %.1f s left ", width,
-                  std::string(filled, '#').c_str(),
-                  total_ ? static_cast<int>(100.0 * done / total_) : 100, done, total_, rate / 1000,
-                  rate > 0 ? (total_ - done) / rate : 0.0);
+                   std::string(filled, '#').c_str(),
+                   total_ ? static_cast<int>(100.0 * done / total_) : 100, done, total_,
+                   rate / 1000, rate > 0 ? (total_ - done) / rate : 0.0);
       std::fflush(out_);
     } else {
       const int decile = total_ ? static_cast<int>(10.0 * done / total_) : 10;
       if (decile > last_decile_) {
         last_decile_ = decile;
-        std::fprintf(out_, "  %3d%%  %u/%u bytes  %.1f kB/s\n", decile * 10, done, total_, rate / 1000);
+        std::fprintf(out_, "  %3d%%  %u/%u bytes  %.1f kB/s\n", decile * 10, done, total_,
+                     rate / 1000);
         std::fflush(out_);
       }
     }
@@ -97,8 +99,11 @@ double UploadOnce(
 
 // --json: one object on stdout at the end (the messages go to stderr); failures are reported by
 // RunCommand as {"command", "exit_code", "error"}.
-void PrintUploadJson(uint8_t node, const std::string& file, const image::LoadedImage& img,
-                     const char* result, double secs) {
+void PrintUploadJson(uint8_t node,
+                     const std::string& file,
+                     const image::LoadedImage& img,
+                     const char* result,
+                     double secs) {
   JsonWriter w(std::cout);
   w.begin_object();
   w.key("command").value("upload");
@@ -137,7 +142,7 @@ int RunUpload(Args& args) {
   const std::vector<uint8_t> bytes(img.data(), img.data() + img.size());
   const uint32_t crc = img.view().crc32;
   std::fprintf(out, "image %s: %u bytes, table id %u, CRC-32 %s\n", pos[0].c_str(), img.size(),
-              img.view().table_id, Hex32(crc).c_str());
+               img.view().table_id, Hex32(crc).c_str());
 
   for (long long attempt = 0;; ++attempt) {
     try {
@@ -146,8 +151,8 @@ int RunUpload(Args& args) {
       RequireTableFits(s, img.view(), allow_clamp);
       const uint32_t active = ReadOr(s, ObjectId::kActiveTableCrc, "the active CRC-32 (0x2104)");
       if (active == crc && !force) {
-        std::fprintf(out, "node %u already has this table active (CRC-32 %s): nothing to do\n", can.node,
-                    Hex32(crc).c_str());
+        std::fprintf(out, "node %u already has this table active (CRC-32 %s): nothing to do\n",
+                     can.node, Hex32(crc).c_str());
         if (json) PrintUploadJson(can.node, pos[0], img, "already active", 0);
         return 0;
       }
@@ -165,7 +170,7 @@ int RunUpload(Args& args) {
         if (now_active != crc)
           throw InputError("activation did not take: active CRC-32 is " + Hex32(now_active));
         std::fprintf(out, "activated: node %u compensates with table %u (CRC-32 %s)\n", can.node,
-                    img.view().table_id, Hex32(crc).c_str());
+                     img.view().table_id, Hex32(crc).c_str());
       }
       if (json) PrintUploadJson(can.node, pos[0], img, activate ? "active" : "staged", secs);
       return 0;
@@ -209,9 +214,9 @@ int RunVerify(Args& args) {
             .table_active;
     const bool has_staged = table.staged == canopen::StagedState::kComplete ||
                             table.staged == canopen::StagedState::kVerified;
-    std::fprintf(out, "image CRC-32 %s; node %u: active %s, staged %s\n", Hex32(crc).c_str(), can.node,
-                has_active ? Hex32(active).c_str() : "none",
-                has_staged ? Hex32(staged).c_str() : "none");
+    std::fprintf(out, "image CRC-32 %s; node %u: active %s, staged %s\n", Hex32(crc).c_str(),
+                 can.node, has_active ? Hex32(active).c_str() : "none",
+                 has_staged ? Hex32(staged).c_str() : "none");
     const char* bank = staged_only ? "staged" : "active";
     int64_t readback_bytes = -1;
     bool readback_same = false;
@@ -224,9 +229,15 @@ int RunVerify(Args& args) {
         w.key("node").value(unsigned{can.node});
         w.key("image_crc32").value(Hex32(crc));
         w.key("active_crc32");
-        if (has_active) w.value(Hex32(active)); else w.null();
+        if (has_active)
+          w.value(Hex32(active));
+        else
+          w.null();
         w.key("staged_crc32");
-        if (has_staged) w.value(Hex32(staged)); else w.null();
+        if (has_staged)
+          w.value(Hex32(staged));
+        else
+          w.null();
         if (readback_bytes >= 0) {
           w.key("readback").begin_object();
           w.key("table").value(bank);
@@ -253,7 +264,7 @@ int RunVerify(Args& args) {
       const bool same =
           data.size() == img.size() && std::equal(data.begin(), data.end(), img.data());
       std::fprintf(out, "read back the %s table, %zu bytes: %s\n", bank, data.size(),
-                  same ? "identical to the image" : "DIFFERENT from the image");
+                   same ? "identical to the image" : "DIFFERENT from the image");
       readback_bytes = static_cast<int64_t>(data.size());
       readback_same = same;
       if (!same) return done(kExitFailed, "different");

@@ -136,7 +136,8 @@ const std::vector<Command>& Commands() {
               {"--force", nullptr, nullptr, nullptr, nullptr,
                "upload even when the board already has this table"},
               {"--retries", nullptr, "N", nullptr, "2", "repeat a failed transfer up to N times"},
-              {"--json", nullptr, nullptr, nullptr, nullptr, "the result as one JSON object on stdout (messages on stderr)"},
+              {"--json", nullptr, nullptr, nullptr, nullptr,
+               "the result as one JSON object on stdout (messages on stderr)"},
               {"--quiet", nullptr, nullptr, nullptr, nullptr, "no progress bar"}}}),
        RunUpload,
        "Before the transfer the image is checked against the board's installation: axis count,\n"
@@ -151,7 +152,8 @@ const std::vector<Command>& Commands() {
                "it byte by byte"},
               {"--staged", nullptr, nullptr, nullptr, nullptr,
                "verify the staged table instead of the active one"},
-              {"--json", nullptr, nullptr, nullptr, nullptr, "the result as one JSON object on stdout (messages on stderr)"}}}),
+              {"--json", nullptr, nullptr, nullptr, nullptr,
+               "the result as one JSON object on stdout (messages on stderr)"}}}),
        RunVerify,
        "Exit 0 when the board has the image (active, or staged with --staged), 1 when it has\n"
        "another table or none, 3 when the board cannot be reached."},
@@ -159,14 +161,18 @@ const std::vector<Command>& Commands() {
        Join({kCanOptions,
              {{"--allow-clamp", nullptr, nullptr, nullptr, nullptr,
                "activate a table the board would clamp (0x2015) or rate-limit (0x2016)"},
-              {"--json", nullptr, nullptr, nullptr, nullptr, "the result as one JSON object on stdout (messages on stderr)"}}}),
+              {"--json", nullptr, nullptr, nullptr, nullptr,
+               "the result as one JSON object on stdout (messages on stderr)"}}}),
        RunActivate,
        "The staged table is read back and checked against the board's installation first: axis\n"
        "count, names and units per step (0x2012) must match; a table whose largest correction\n"
        "exceeds the max correction (0x2015), or whose gradient times the fastest input rates\n"
        "(0x201E) exceeds the max correction rate (0x2016), is refused unless --allow-clamp."},
       {"deactivate", "deactivate the active table (the correction ramps out)", "",
-       Join({kCanOptions, {{"--json", nullptr, nullptr, nullptr, nullptr, "the result as one JSON object on stdout (messages on stderr)"}}}), RunDeactivate},
+       Join({kCanOptions,
+             {{"--json", nullptr, nullptr, nullptr, nullptr,
+               "the result as one JSON object on stdout (messages on stderr)"}}}),
+       RunDeactivate},
       {"reference", "declare axes referenced over CAN (instead of home switch edges)", "",
        Join({kCanOptions,
              {{"--axes", nullptr, "1,2,3", nullptr, nullptr,
@@ -183,7 +189,10 @@ const std::vector<Command>& Commands() {
               {"--duration", nullptr, "S", "s", "0", "stop after S seconds (0 = until stopped)"},
               {"--csv", nullptr, nullptr, nullptr, nullptr,
                "CSV for logging: a header, then one row per interval in machine units (mm, µm; "
-               "deg, arcsec on rotary axes); heartbeat and EMCY lines on stderr"}}}),
+               "deg, arcsec on rotary axes); heartbeat and EMCY lines on stderr"},
+              {"--json", nullptr, nullptr, nullptr, nullptr,
+               "one JSON object per interval and line (the axes as in `status --json`); "
+               "heartbeat and EMCY lines on stderr"}}}),
        RunMonitor},
       {"sdo", "read or write one object: sdo read 2104:0, sdo write 2018:1 -5000",
        "read|write INDEX:SUB [VALUE]", kCanOptions, RunSdo,
@@ -466,7 +475,9 @@ std::string ToolHelp() {
 
 // With --json (for the commands that declare it), a failure is a JSON object on stdout too, so a
 // script reads one object whatever happened: {"command", "exit_code", "error"}.
-void JsonFailure(const Command& cmd, const std::vector<std::string>& words, int code,
+void JsonFailure(const Command& cmd,
+                 const std::vector<std::string>& words,
+                 int code,
                  const std::string& message) {
   bool declared = false;
   for (const OptionSpec& o : cmd.options) declared = declared || std::string(o.name) == "--json";

@@ -46,9 +46,9 @@ BoardSettings ReadSettingsInForce(canopen_client::NodeObjects& node) {
   const Status st =
       firmware::DeserializeSettings(record.data(), static_cast<uint32_t>(record.size()), &s);
   if (!st.ok()) {
-    throw tools::InputError("the settings in force (2124:0, " + std::to_string(record.size()) +
-                            " bytes) are not a settings record this tool reads: " +
-                            ErrorText(st.error()));
+    throw tools::InputError(
+        "the settings in force (2124:0, " + std::to_string(record.size()) +
+        " bytes) are not a settings record this tool reads: " + ErrorText(st.error()));
   }
   return s;
 }
