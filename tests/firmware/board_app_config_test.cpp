@@ -84,7 +84,7 @@ TEST_F(BoardAppConfigTest, StartAppliesTheDefaultsToEveryDevice) {
   ASSERT_TRUE(app_.Start(defaults_).ok());
   EXPECT_TRUE(timer_.running());
   EXPECT_EQ(timer_.rate_hz(), 20000u);
-  EXPECT_EQ(app_.engine().config().tick_hz, 20000u);
+  EXPECT_EQ(app_.control_tick().config().tick_hz, 20000u);
   EXPECT_EQ(step_io_.config().tick_hz, 20000u);
   EXPECT_EQ(can_.bitrate_bps(), 1000000u);
   EXPECT_TRUE(app_.config_status().ok());
@@ -96,7 +96,7 @@ TEST_F(BoardAppConfigTest, StoredTickAndBitRateAreInForceAfterAResetNode) {
   StoreAndReset(25000, 500);
   // The rate the timer runs at, the rate the data path assumes and the step I/O's tick agree.
   EXPECT_EQ(app_.settings().board.tick_hz, 25000u);
-  EXPECT_EQ(app_.engine().config().tick_hz, 25000u);
+  EXPECT_EQ(app_.control_tick().config().tick_hz, 25000u);
   EXPECT_EQ(timer_.rate_hz(), 25000u);
   EXPECT_TRUE(timer_.running());
   EXPECT_EQ(step_io_.config().tick_hz, 25000u);
@@ -116,7 +116,7 @@ TEST_F(BoardAppConfigTest, StoredSettingsTheTimerRefusesGiveWayToTheDefaultsVisi
   StoreAndReset(50000, 500);
   // The board runs the factory defaults, whole: tick and bit rate.
   EXPECT_EQ(app_.settings().board.tick_hz, 20000u);
-  EXPECT_EQ(app_.engine().config().tick_hz, 20000u);
+  EXPECT_EQ(app_.control_tick().config().tick_hz, 20000u);
   EXPECT_EQ(timer_.rate_hz(), 20000u);
   EXPECT_TRUE(timer_.running());
   EXPECT_EQ(can_.bitrate_bps(), 1000000u);

@@ -93,7 +93,7 @@ TEST_F(BoardAppTest, StoredTableEngagesAfterHomingAndTimelineShowsIt) {
   ASSERT_TRUE(app_.Start(config_).ok());
   ASSERT_TRUE(app_.stored_table_status().ok()) << app_.stored_table_status().name();
   Run(1);  // the table is handed to the data path at the next tick
-  EXPECT_EQ(app_.engine().compensator().table_id(), 77u);
+  EXPECT_EQ(app_.control_tick().compensator().table_id(), 77u);
   io_.SetInput(InputLine::kEnable, true);
   step_io_.add_steps(1, 500);
   Run(200);
@@ -106,7 +106,7 @@ TEST_F(BoardAppTest, StoredTableEngagesAfterHomingAndTimelineShowsIt) {
   EXPECT_EQ(step_io_.drive(0).position(), 5);
   EXPECT_EQ(step_io_.drive(1).position(), 500 - 3);
   EXPECT_EQ(step_io_.drive(2).position(), 2);
-  EXPECT_EQ(app_.engine().machine_position(1), config_.axis[1].home_position_steps);
+  EXPECT_EQ(app_.control_tick().machine_position(1), config_.axis[1].home_position_steps);
   // Timeline: Ready went high at start; Compensating rose after homing, before any fault.
   const auto outs = timeline_.Filter(EventKind::kOutputLine);
   ASSERT_GE(outs.size(), 2u);
@@ -132,11 +132,11 @@ TEST_F(BoardAppTest, EStopRampsOutAndRequiresNewReference) {
   Run(20000);
   EXPECT_TRUE(io_.output(OutputLine::kFault));
   EXPECT_EQ(step_io_.drive(0).position(), 0);
-  EXPECT_TRUE(app_.engine().compensator().passthrough());
+  EXPECT_TRUE(app_.control_tick().compensator().passthrough());
   io_.SetInput(InputLine::kEStop, false);
   Run(20000);
   EXPECT_FALSE(io_.output(OutputLine::kFault));
-  EXPECT_FALSE(app_.engine().all_referenced());
+  EXPECT_FALSE(app_.control_tick().all_referenced());
   EXPECT_EQ(step_io_.drive(0).position(), 0);  // still pass-through until homed again
   Home();
   Run(20000);
@@ -150,7 +150,7 @@ TEST_F(BoardAppTest, BadImagesAreRefusedAndTheActiveTableIsUntouched) {
   io_.SetInput(InputLine::kEnable, true);
   Home();
   Run(20000);
-  const uint32_t crc = app_.engine().compensator().table_crc32();
+  const uint32_t crc = app_.control_tick().compensator().table_crc32();
   testing::AlignedBytes other = UniformImage(-9, 1, 1, 12);
   // Truncated, corrupted and wrong-board images.
   EXPECT_FALSE(app_.ActivateImage(other.data(), other.size() - 4).ok());
@@ -165,8 +165,8 @@ TEST_F(BoardAppTest, BadImagesAreRefusedAndTheActiveTableIsUntouched) {
   testing::FixCrc(fine);
   EXPECT_EQ(app_.ActivateImage(fine.data(), fine.size()).error(), Error::kConfigResolutionMismatch);
   Run(5000);
-  EXPECT_EQ(app_.engine().compensator().table_crc32(), crc);
-  EXPECT_EQ(app_.engine().compensator().table_id(), 11u);
+  EXPECT_EQ(app_.control_tick().compensator().table_crc32(), crc);
+  EXPECT_EQ(app_.control_tick().compensator().table_id(), 11u);
   EXPECT_EQ(step_io_.drive(0).position(), 4);
 }
 

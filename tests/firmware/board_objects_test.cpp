@@ -235,7 +235,7 @@ TEST_F(Bench, ActivationNeedsReferencedAxesAtRest) {
   EXPECT_EQ(CountEmcy(canopen::kEmcyRefused), 1);
   // Reference over CAN, then move an axis: still refused while moving.
   ASSERT_TRUE(Write(ObjectId::kReferenceAxes, 0x07).ok);
-  EXPECT_TRUE(app_.engine().all_referenced());
+  EXPECT_TRUE(app_.control_tick().all_referenced());
   step_io_.add_steps(0, 100);
   Step(1);
   EXPECT_EQ(Command(TableCommand::kActivate).abort_code, canopen::SdoAbort::kDeviceState);

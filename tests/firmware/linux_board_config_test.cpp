@@ -110,7 +110,7 @@ TEST_F(LinuxBoardConfigTest, TickAndBitRateChangedOverCanAreInForceAfterAResetNo
   for (int i = 0; i < 3; ++i) Pass(board);
 
   // The rate the data path assumes and the period the kernel's timer runs with agree.
-  const uint32_t tick_hz = board.app().app().engine().config().tick_hz;
+  const uint32_t tick_hz = board.app().app().control_tick().config().tick_hz;
   EXPECT_EQ(tick_hz, 2000u);
   EXPECT_EQ(board.tick_timer().rate_hz(), 2000u);
   EXPECT_TRUE(board.tick_timer().running());
@@ -142,7 +142,7 @@ TEST_F(LinuxBoardConfigTest, StoredSettingsAreInForceFromTheStart) {
   }
   LinuxBoard board(config_, Options());
   ASSERT_TRUE(board.Open(&controller_, nullptr).ok());
-  EXPECT_EQ(board.app().app().engine().config().tick_hz, 4000u);
+  EXPECT_EQ(board.app().app().control_tick().config().tick_hz, 4000u);
   EXPECT_EQ(board.tick_timer().period_ns(), 250000u);
   itimerspec spec{};
   ASSERT_EQ(timerfd_gettime(board.tick_timer().fd(), &spec), 0);

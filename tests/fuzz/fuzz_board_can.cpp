@@ -212,7 +212,7 @@ class Rig {
       app().Poll();
       do {
         Tick();
-      } while (app().engine().idle_ticks() < kRestTicks);
+      } while (app().control_tick().idle_ticks() < kRestTicks);
     } else {
       if (steps != 0) Tick();
       const uint32_t ms = r[8] & 0x3Fu;

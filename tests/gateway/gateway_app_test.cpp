@@ -249,7 +249,7 @@ TEST_F(GatewayAppTest, UploadReferenceActivateAndCorrectEveryCycle) {
   EXPECT_EQ(r.abort_code, canopen::SdoAbort::kDeviceState);
   // Referenced at home, but moving: refused.
   ASSERT_TRUE(m_.Write(ObjectId::kReferenceAxes, 7).ok);
-  EXPECT_TRUE(m_.app_.app().engine().all_referenced());
+  EXPECT_TRUE(m_.app_.app().control_tick().all_referenced());
   for (int i = 0; i < 20; ++i) {
     m_.target_[1] += 50;
     m_.Cycle();
@@ -329,7 +329,7 @@ TEST_F(GatewayAppTest, EStopRampsTheCorrectionOutWhileForwardingGoesOn) {
     EXPECT_TRUE(m_.feedback_ok_);
   }
   for (int a = 0; a < 3; ++a) EXPECT_EQ(m_.correction_[a], 0) << "axis " << a;
-  EXPECT_FALSE(m_.app_.app().engine().all_referenced());  // the fault dropped the reference
+  EXPECT_FALSE(m_.app_.app().control_tick().all_referenced());  // the fault dropped the reference
   bool emcy = false;
   for (const CanFrame& f : m_.controller_bus_) {
     emcy = emcy || (f.id == 0x080u + kNode && LoadLe16(f.data) == canopen::kEmcyEStop);
@@ -435,8 +435,8 @@ TEST(GatewayAppFilesTest, ActiveTableSurvivesARestart) {
     ASSERT_TRUE(m.Start().ok());
     EXPECT_TRUE(m.app_.app().stored_table_status().ok());
     m.Cycle();  // the stored table reaches the data path at the next tick
-    EXPECT_TRUE(m.app_.app().engine().compensator().has_table());
-    EXPECT_EQ(m.app_.app().engine().compensator().table_id(), 35u);
+    EXPECT_TRUE(m.app_.app().control_tick().compensator().has_table());
+    EXPECT_EQ(m.app_.app().control_tick().compensator().table_id(), 35u);
     // Referenced at home, the stored table corrects at once (ramping in).
     ASSERT_TRUE(m.Write(ObjectId::kReferenceAxes, 7).ok);
     for (int i = 0; i < 100; ++i) m.Cycle();

@@ -207,11 +207,11 @@ class Stm32ConfigPathTest : public ::testing::Test {
   }
   // TIM6, the output timers' tick and the data path agree on the tick.
   void ExpectTickAgrees(uint32_t tick_hz) {
-    EXPECT_EQ(app_.engine().config().tick_hz, tick_hz);
+    EXPECT_EQ(app_.control_tick().config().tick_hz, tick_hz);
     EXPECT_TRUE(tim6_.running);
     EXPECT_EQ(uint64_t{tim6_.programmed.clocks()} * tick_hz, kSysclkHz);
     EXPECT_EQ(step_.setup.tick_clocks, tim6_.programmed.clocks());
-    EXPECT_EQ(uint64_t{app_.engine().config().pulse_clock_hz} / tick_hz, step_.setup.tick_clocks);
+    EXPECT_EQ(uint64_t{app_.control_tick().config().pulse_clock_hz} / tick_hz, step_.setup.tick_clocks);
   }
   void ExpectBitRate(uint32_t bitrate) {
     EXPECT_EQ(can_.bitrate, bitrate);

@@ -54,7 +54,7 @@ class Soak {
   // Advances to `t` in event order, checking the exactness invariant after every tick.
   void AdvanceTo(uint64_t t) {
     sim::AdvanceInEventOrder(bus_, *board_, t);
-    const ControlTick& e = board_->app().engine();
+    const ControlTick& e = board_->app().control_tick();
     const StepOutput& out = board_->output();
     for (uint8_t a = 0; a < 3; ++a) {
       ASSERT_EQ(out.position(a) + out.backlog(a, e.target(a)), input_[a] + e.correction_steps(a));
@@ -172,7 +172,7 @@ TEST(Soak, RandomTrajectoriesActivationsAndReferenceLossWithoutLostSteps) {
   // Settle at rest and compare the drives with input + applied correction.
   s.stopped_ = true;
   s.AdvanceTo(s.bus_.now() + 200000000);
-  const ControlTick& e = s.board_->app().engine();
+  const ControlTick& e = s.board_->app().control_tick();
   const StepOutput& out = s.board_->output();
   uint64_t violations = 0, output_steps = 0;
   for (uint8_t a = 0; a < 3; ++a) {

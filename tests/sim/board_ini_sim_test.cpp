@@ -81,7 +81,7 @@ TEST(BoardIniSim, AnAppliedFileIsWhatTheBoardRuns) {
   // The settings in force, from the firmware (values as the file states them).
   const BoardSettings& s = a.board.app().settings();
   EXPECT_EQ(s.board.tick_hz, 25000u);
-  EXPECT_EQ(a.board.app().engine().config().tick_hz, 25000u);
+  EXPECT_EQ(a.board.app().control_tick().config().tick_hz, 25000u);
   EXPECT_EQ(s.heartbeat_ms, 500);
   EXPECT_EQ(s.board.axis_count, 4);
   EXPECT_EQ(s.board.axis[0].resolution_e9, 500000u);

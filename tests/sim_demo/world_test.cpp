@@ -68,7 +68,7 @@ TEST(SimWorld, HomingReferencesTheBoardWhereTheSwitchCloses) {
   w.cnc().QueueHome(7);
   ASSERT_TRUE(w.RunUntilCncIdle(60000000000ull));
   w.RunFor(1000000);
-  const ControlTick& e = w.board().app().engine();
+  const ControlTick& e = w.board().app().control_tick();
   EXPECT_TRUE(e.all_referenced());
   const auto d = w.DriveSteps();
   for (int a = 0; a < 3; ++a) {

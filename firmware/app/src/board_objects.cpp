@@ -137,7 +137,7 @@ bool BoardObjects::writable() const {
 }
 
 uint16_t BoardObjects::device_state() const {
-  const ControlTick& e = control_->engine();
+  const ControlTick& e = control_->control_tick();
   canopen::DeviceState s;
   s.referenced = e.all_referenced();
   s.engaged = e.compensator().engaged();
@@ -161,7 +161,7 @@ uint32_t BoardObjects::table_status() const {
 }
 
 void BoardObjects::WatchLimits() {
-  const Compensator& c = control_->engine().compensator();
+  const Compensator& c = control_->control_tick().compensator();
   uint8_t clamped = 0, limited = 0;
   for (uint8_t a = 0; a < c.axis_count(); ++a) {
     const uint32_t n_clamped = c.clamped_refreshes(a), n_limited = c.rate_limited_refreshes(a);
@@ -214,7 +214,7 @@ SdoAbort BoardObjects::Refuse(SdoAbort abort_code) {
 }
 
 bool BoardObjects::ReadNumber(const ObjectEntry& e, uint32_t* v) const {
-  const ControlTick& eng = control_->engine();
+  const ControlTick& tick = control_->control_tick();
   if (const FieldAccess& f = Field(e); f.get != nullptr) {
     *v = static_cast<uint32_t>(f.get(pending_));
     return true;
@@ -286,7 +286,7 @@ bool BoardObjects::ReadNumber(const ObjectEntry& e, uint32_t* v) const {
       *v = node_->emcy_sent();
       return true;
     case ObjectId::kTicks:
-      *v = static_cast<uint32_t>(eng.ticks());
+      *v = static_cast<uint32_t>(tick.ticks());
       return true;
     case ObjectId::kOutputOverruns:
       *v = control_->output_status().overruns;
@@ -309,36 +309,36 @@ bool BoardObjects::ReadNumber(const ObjectEntry& e, uint32_t* v) const {
   // Live per-axis values; axes that are not configured read 0.
   uint8_t a = 0;
   if (AxisOf(e.id, ObjectId::kCommandedPosition1, &a)) {
-    *v = a < eng.axis_count() ? static_cast<uint32_t>(eng.commanded(a)) : 0;
+    *v = a < tick.axis_count() ? static_cast<uint32_t>(tick.commanded(a)) : 0;
     return true;
   }
   if (AxisOf(e.id, ObjectId::kMachinePosition1, &a)) {  // the table's coordinate
-    *v = a < eng.axis_count() ? static_cast<uint32_t>(eng.machine_position(a)) : 0;
+    *v = a < tick.axis_count() ? static_cast<uint32_t>(tick.machine_position(a)) : 0;
     return true;
   }
   if (AxisOf(e.id, ObjectId::kAppliedCorrection1, &a)) {
-    *v = a < eng.axis_count() ? static_cast<uint32_t>(eng.compensator().applied_q8(a)) : 0;
+    *v = a < tick.axis_count() ? static_cast<uint32_t>(tick.compensator().applied_q8(a)) : 0;
     return true;
   }
   if (AxisOf(e.id, ObjectId::kOutputPosition1, &a)) {
-    *v = a < eng.axis_count() ? static_cast<uint32_t>(control_->output_status().position_steps[a])
+    *v = a < tick.axis_count() ? static_cast<uint32_t>(control_->output_status().position_steps[a])
                               : 0;
     return true;
   }
   if (AxisOf(e.id, ObjectId::kMaxBacklog1, &a)) {
-    *v = a < eng.axis_count() ? control_->output_status().max_backlog_steps[a] : 0;
+    *v = a < tick.axis_count() ? control_->output_status().max_backlog_steps[a] : 0;
     return true;
   }
   if (AxisOf(e.id, ObjectId::kCorrectionLimited1, &a)) {
-    *v = a < eng.axis_count() ? limit_flags(a) : 0;
+    *v = a < tick.axis_count() ? limit_flags(a) : 0;
     return true;
   }
   if (AxisOf(e.id, ObjectId::kClampedRefreshes1, &a)) {
-    *v = a < eng.axis_count() ? eng.compensator().clamped_refreshes(a) : 0;
+    *v = a < tick.axis_count() ? tick.compensator().clamped_refreshes(a) : 0;
     return true;
   }
   if (AxisOf(e.id, ObjectId::kRateLimitedRefreshes1, &a)) {
-    *v = a < eng.axis_count() ? eng.compensator().rate_limited_refreshes(a) : 0;
+    *v = a < tick.axis_count() ? tick.compensator().rate_limited_refreshes(a) : 0;
     return true;
   }
   if (e.access == canopen::Access::kConst) {
@@ -449,7 +449,7 @@ SdoAbort BoardObjects::TableControl(uint8_t command) {
       if (!writable()) return Refuse(SdoAbort::kCannotStore);
       if (tables_->staged_state() == StagedState::kComplete) (void)tables_->Verify(board);
       if (tables_->staged_state() != StagedState::kVerified) return Refuse(SdoAbort::kNoData);
-      if (!control_->engine().all_referenced() || control_->moving()) {
+      if (!control_->control_tick().all_referenced() || control_->moving()) {
         return Refuse(SdoAbort::kDeviceState);
       }
       const Result<table::TableView> view = tables_->Activate();

@@ -52,7 +52,7 @@ Status GatewayApp::Start(const BoardSettings& defaults,
 // reconfigures (and restarts the commanded positions) only then.
 void GatewayApp::SyncGatewayWithSettings() {
   const uint8_t node = app_.settings().node_id;
-  const uint8_t axes = app_.engine().axis_count();
+  const uint8_t axes = app_.control_tick().axis_count();
   if (node == gateway_node_id_ && axes == gateway_axes_) return;
   gateway_node_id_ = node;
   gateway_axes_ = axes;

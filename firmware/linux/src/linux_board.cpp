@@ -131,7 +131,7 @@ std::string LinuxBoard::DescribeConfigInForce() const {
   std::snprintf(line, sizeof line,
                 "tick %u Hz (timer period %llu ns), bit rate %u kbit/s, node 0x%02X, %u axes",
                 s.board.tick_hz, static_cast<unsigned long long>(timer_.period_ns()),
-                unsigned{s.bitrate_kbit}, unsigned{s.node_id}, unsigned{app.engine().axis_count()});
+                unsigned{s.bitrate_kbit}, unsigned{s.node_id}, unsigned{app.control_tick().axis_count()});
   std::string out = line;
   const Status c = app.config_status();
   if (c.error() == Error::kCanBitrateMismatch) {

@@ -151,7 +151,7 @@ void Runner::LogStart() {
                app.settings().node_id, config_.controller_iface.c_str(),
                have_drives_ ? "gateway to " : "no gateway",
                have_drives_ ? config_.drives_iface.c_str() : "",
-               unsigned{app.engine().axis_count()}, app.settings().board.tick_hz,
+               unsigned{app.control_tick().axis_count()}, app.settings().board.tick_hz,
                config_.gpio_backend == GpioBackendKind::kNone ? "none (inputs inactive)"
                                                               : board_.gpio().Describe().c_str(),
                stored.ok() ? "active" : ErrorText(stored.error()));

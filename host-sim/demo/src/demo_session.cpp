@@ -149,7 +149,7 @@ SimStatus HomeAtPowerUp(Session& s, DemoResult& r) {
   const auto t0 = Clock::now();
   VOLCOMP_SIM_TRY(Home(s.world));
   s.world.RunFor(20000000);
-  const ControlTick& e = s.world.board().app().engine();
+  const ControlTick& e = s.world.board().app().control_tick();
   bool agree = e.all_referenced();
   for (uint8_t a = 0; a < 3; ++a) {
     agree = agree && e.machine_position(a) == s.world.cnc().position(a);

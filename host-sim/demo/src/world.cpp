@@ -101,7 +101,7 @@ void World::AfterTick(uint64_t t_ns) {
   ++audit_.ticks;
   if (machine_->wear().any()) machine_->OnDriveTick(DriveSteps(), t_ns);
   const auto& plans = board_->step_io().last_plans();
-  const ControlTick& engine = board_->app().engine();
+  const ControlTick& engine = board_->app().control_tick();
   for (uint8_t a = 0; a < 3; ++a) {
     const PulsePlan& p = plans[a];
     const int64_t correction = engine.correction_steps(a);
@@ -152,7 +152,7 @@ model::Vec3 World::CommandedPoint_mm() const {
 }
 
 bool World::CheckAtRest() {
-  const ControlTick& engine = board_->app().engine();
+  const ControlTick& engine = board_->app().control_tick();
   bool ok = true;
   for (uint8_t a = 0; a < 3; ++a) {
     const int64_t expected = cnc_->count(a) + engine.correction_steps(a);

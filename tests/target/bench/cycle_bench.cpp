@@ -257,7 +257,7 @@ int BenchTickIsr() {
   g_isr_lines.homed = true;
   g_isr_app.Poll();  // the home edges: referenced at the next tick
   for (int i = 0; i < 8; ++i) volcomp_bench_isr();
-  if (!g_isr_app.engine().compensator().engaged()) {
+  if (!g_isr_app.control_tick().compensator().engaged()) {
     semihost::Write("bench: tick ISR board not compensating\n");
     return 1;
   }

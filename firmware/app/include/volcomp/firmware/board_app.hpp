@@ -127,7 +127,7 @@ class BoardApp final : private BoardControl {
     objects_.SetSettings(settings_);
     uint32_t counters[table::kMaxAxes];
     dev_.tick_io->ReadCounters(counters);
-    engine_.LatchCounters(counters);
+    control_tick_.LatchCounters(counters);
     for (uint8_t a = 0; a < table::kMaxAxes; ++a) home_level_[a] = dev_.io->Read(hal::HomeLine(a));
     const uint32_t bank =
         options.table_bank_size != 0 ? options.table_bank_size : dev_.table_flash->size() / 2;
@@ -174,10 +174,10 @@ class BoardApp final : private BoardControl {
     bool rebase = false;
     if (hand_over_.Take(&table)) {
       if (table != nullptr) {
-        engine_.compensator().BindTable(table);
+        control_tick_.compensator().BindTable(table);
         rebase = true;
       } else {
-        engine_.compensator().ClearTable();
+        control_tick_.compensator().ClearTable();
       }
     }
     // The tick runs to completion without the main loop in between (the hand-over's rule), so a
@@ -185,19 +185,19 @@ class BoardApp final : private BoardControl {
     const uint8_t refs = pending_reference_.load(std::memory_order_acquire);
     if (refs != 0) {
       pending_reference_.store(0, std::memory_order_relaxed);
-      if (engine_.MarkReferenced(refs)) rebase = true;
+      if (control_tick_.MarkReferenced(refs)) rebase = true;
     }
-    if (rebase) engine_.RebaseCompensator();
+    if (rebase) control_tick_.RebaseCompensator();
     if (pending_unreference_.load(std::memory_order_acquire)) {
       pending_unreference_.store(false, std::memory_order_relaxed);
-      engine_.Unreference();
+      control_tick_.Unreference();
     }
-    engine_.compensator().SetEnabled(enabled_.load(std::memory_order_relaxed));
-    engine_.compensator().SetFault(fault_flag_.load(std::memory_order_relaxed));
+    control_tick_.compensator().SetEnabled(enabled_.load(std::memory_order_relaxed));
+    control_tick_.compensator().SetFault(fault_flag_.load(std::memory_order_relaxed));
     uint32_t counters[table::kMaxAxes];
     dev_.tick_io->ReadCounters(counters);
-    engine_.Run(counters);
-    dev_.tick_io->Output(engine_);
+    control_tick_.Run(counters);
+    dev_.tick_io->Output(control_tick_);
   }
 
   /// Tick() timed with the clock (two clock reads, a virtual call each); the largest duration is
@@ -226,8 +226,8 @@ class BoardApp final : private BoardControl {
     return ActivateTable(*view);
   }
 
-  const ControlTick& engine() const { return engine_; }
-  ControlTick& engine() { return engine_; }
+  const ControlTick& control_tick() const { return control_tick_; }
+  ControlTick& control_tick() { return control_tick_; }
   /// The input and output stage (e.g. StepDirIo::output() for the step generators).
   const Io& tick_io() const { return *dev_.tick_io; }
   const canopen::Node& node() const { return node_; }
@@ -252,7 +252,7 @@ class BoardApp final : private BoardControl {
     *part = ConfigPart::kTickIo;
     VOLCOMP_TRY(dev_.tick_io->Configure(s.board));
     *part = ConfigPart::kDataPath;
-    VOLCOMP_TRY(engine_.Configure(s.board));
+    VOLCOMP_TRY(control_tick_.Configure(s.board));
     if (dev_.tick_timer != nullptr) {
       *part = ConfigPart::kTickTimer;
       VOLCOMP_TRY(dev_.tick_timer->SetRate(s.board.tick_hz));
@@ -288,7 +288,7 @@ class BoardApp final : private BoardControl {
   void PollLines() {
     hal::SlowIo& io = *dev_.io;
     uint8_t refs = 0;
-    for (uint8_t a = 0; a < engine_.axis_count(); ++a) {
+    for (uint8_t a = 0; a < control_tick_.axis_count(); ++a) {
       const bool level = io.Read(hal::HomeLine(a));
       if (level && !home_level_[a]) refs = static_cast<uint8_t>(refs | (1u << a));
       home_level_[a] = level;
@@ -311,7 +311,7 @@ class BoardApp final : private BoardControl {
     enabled_.store((!options_.use_enable_input || io.Read(hal::InputLine::kEnable)) && bus_enable_,
                    std::memory_order_relaxed);
     write_enable_ = io.Read(hal::InputLine::kWriteEnable);
-    io.Write(hal::OutputLine::kCompensating, engine_.compensator().engaged());
+    io.Write(hal::OutputLine::kCompensating, control_tick_.compensator().engaged());
     io.Write(hal::OutputLine::kFault, fault || !config_status_.ok());
   }
 
@@ -353,7 +353,7 @@ class BoardApp final : private BoardControl {
   // not use), hand over to the tick, mark active. On error nothing changes.
   Status DoActivateTable(const table::TableView& view) override {
     PreparedTable& slot = hand_over_.BeginWrite();
-    const Status s = slot.Prepare(view, engine_.config());
+    const Status s = slot.Prepare(view, control_tick_.config());
     if (!s.ok()) {
       hand_over_.Abandon();
       return s;
@@ -368,11 +368,11 @@ class BoardApp final : private BoardControl {
   }
   void DoSetBusEnable(bool on) override { bus_enable_ = on; }
   bool DoBusEnable() const override { return bus_enable_; }
-  const ControlTick& DoEngine() const override { return engine_; }
+  const ControlTick& DoControlTick() const override { return control_tick_; }
   OutputStatus DoOutputStatus() const override { return dev_.tick_io->output_status(); }
   bool DoMoving() const override {
-    const uint64_t still_ticks = uint64_t{kStillMs} * engine_.config().tick_hz / 1000u;
-    return engine_.idle_ticks() < still_ticks;
+    const uint64_t still_ticks = uint64_t{kStillMs} * control_tick_.config().tick_hz / 1000u;
+    return control_tick_.idle_ticks() < still_ticks;
   }
   bool DoFault() const override { return fault_; }
   bool DoWriteEnableInput() const override { return write_enable_; }
@@ -382,7 +382,7 @@ class BoardApp final : private BoardControl {
   AppOptions options_;
   BoardSettings defaults_;  // factory defaults (from the first Start); stored settings override
   BoardSettings settings_;
-  ControlTick engine_;
+  ControlTick control_tick_;
   TableStore tables_;
   SettingsStore settings_store_;
   canopen::Node node_;

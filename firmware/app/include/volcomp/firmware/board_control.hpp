@@ -27,7 +27,7 @@ class BoardControl {
   void SetBusEnable(bool on) { DoSetBusEnable(on); }
   bool bus_enable() const { return DoBusEnable(); }
   /// The data path, for reading state (positions, corrections, counters).
-  const ControlTick& engine() const { return DoEngine(); }
+  const ControlTick& control_tick() const { return DoControlTick(); }
   /// The output stage's counters (output positions, backlog).
   OutputStatus output_status() const { return DoOutputStatus(); }
   /// True while any axis moved within the last `ms` milliseconds.
@@ -46,7 +46,7 @@ class BoardControl {
   virtual void DoRequestReference(uint8_t mask) = 0;
   virtual void DoSetBusEnable(bool on) = 0;
   virtual bool DoBusEnable() const = 0;
-  virtual const ControlTick& DoEngine() const = 0;
+  virtual const ControlTick& DoControlTick() const = 0;
   virtual OutputStatus DoOutputStatus() const = 0;
   virtual bool DoMoving() const = 0;
   virtual bool DoFault() const = 0;
