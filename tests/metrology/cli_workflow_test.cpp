@@ -98,7 +98,7 @@ double Reading(double target, const std::string& dir, int run) {
   return 0.02 * target + (dir == "up" ? 1.5 : -1.5) + scatter[run % 5];
 }
 
-// Issue defect 6: X, Y and Z evaluated into one directory used to leave only Z's report.
+// X, Y and Z evaluated into one directory: each keeps its report (named by its axis).
 TEST(MetrologyWorkflow, ReportsOfSeveralAxesShareADirectory) {
   Scratch s("axes");
   for (const char* axis : {"X", "Y", "Z"}) {
