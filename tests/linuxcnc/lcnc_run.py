@@ -54,6 +54,14 @@ def g(name):
     return hal.get_value(name)
 
 
+# VOLCOMP_LCNC_MODE=comp: the machine of volcomp-comp.hal (LinuxCNC's own joint compensation
+# files, no volcomp component): joint.N.pos-cmd is the nominal, motor-pos-cmd the compensated
+# command, the step generators' counts the drives.
+COMP_MODE = os.environ.get("VOLCOMP_LCNC_MODE") == "comp"
+COMP_COLUMNS = (["pos_cmd_mm_%d" % j for j in range(JOINTS)] +
+                ["motor_cmd_mm_%d" % j for j in range(JOINTS)] +
+                ["drive_counts_%d" % j for j in range(JOINTS)])
+
 COLUMNS = (["cmd_mm_%d" % j for j in range(JOINTS)] +
            ["lcnc_counts_%d" % j for j in range(JOINTS)] +
            ["board_in_%d" % j for j in range(JOINTS)] +
@@ -66,6 +74,10 @@ COLUMNS = (["cmd_mm_%d" % j for j in range(JOINTS)] +
 
 
 def snapshot():
+    if COMP_MODE:
+        return ([g("joint.%d.pos-cmd" % j) for j in range(JOINTS)] +
+                [g("joint.%d.motor-pos-cmd" % j) for j in range(JOINTS)] +
+                [g("stepgen.%d.counts" % j) for j in range(JOINTS)])
     v = []
     v += [g("joint.%d.motor-pos-cmd" % j) for j in range(JOINTS)]
     v += [g("stepgen.%d.counts" % j) for j in range(JOINTS)]
@@ -133,12 +145,56 @@ def run_program(path, rows):
     log("%s: %d stops in %.1f s" % (name, stop, time.time() - t0))
 
 
+def raise_rtapi_priority():
+    """SCHED_FIFO for rtapi_app's threads, as LinuxCNC has on a real-time kernel: on this
+    standard kernel its threads run SCHED_OTHER, and other load on the machine would delay the
+    20 us base thread (its work is not lost, only late: stepgen falls behind the servo thread)."""
+    prio = os.environ.get("VOLCOMP_LCNC_FIFO_PRIORITY")
+    if not prio or os.geteuid() != 0:
+        return []
+    raised = []
+    for pid in os.listdir("/proc"):
+        if not pid.isdigit():
+            continue
+        try:
+            with open("/proc/%s/comm" % pid) as f:
+                if f.read().strip() != "rtapi_app":
+                    continue
+            for tid in os.listdir("/proc/%s/task" % pid):
+                os.sched_setscheduler(int(tid), os.SCHED_FIFO, os.sched_param(int(prio)))
+                raised.append(int(tid))
+        except (OSError, ValueError):
+            continue
+    # This poller too (below rtapi_app): it must see every dwell of the programs.
+    os.sched_setscheduler(0, os.SCHED_FIFO, os.sched_param(max(1, int(prio) - 30)))
+    log("SCHED_FIFO %s for rtapi_app threads %s" % (prio, raised))
+    return raised
+
+
 def main():
     out = os.environ["VOLCOMP_LCNC_OUT"]
     programs = [p for p in os.environ.get("VOLCOMP_LCNC_PROGRAMS", "").split(":") if p]
     summary = {"ok": False}
     rows = []
+    summary["fifo_threads"] = len(raise_rtapi_priority())
     try:
+        # stepgen checks maxvel against its base period when it first runs and lowers it for
+        # good if that check ran before its base thread did (seen under heavy machine load):
+        # messages before the machine is switched on are startup notes, and maxvel is set again.
+        time.sleep(0.5)
+        while True:
+            e = E.poll()
+            if not e:
+                break
+            summary.setdefault("startup_messages", []).append(e[1])
+        want = float(os.environ.get("VOLCOMP_LCNC_STEPGEN_MAXVEL", "0"))
+        if want > 0:
+            for j in range(JOINTS if COMP_MODE else 2 * JOINTS):
+                name = "stepgen.%d.maxvel" % j
+                if abs(g(name) - want) > 1e-9:
+                    log("%s was %.3f, set to %.3f again" % (name, g(name), want))
+                    hal.set_p(name, str(want))
+                    summary.setdefault("maxvel_reapplied", []).append(j)
         C.state(linuxcnc.STATE_ESTOP_RESET)
         C.wait_complete()
         C.state(linuxcnc.STATE_ON)
@@ -147,16 +203,18 @@ def main():
         C.wait_complete()
         C.home(-1)
         wait_for(lambda: S.poll() or all(S.homed[:JOINTS]), 30, "homing")
-        wait_for(lambda: g("volcomp-board.compensating") and g("volcomp.active"), 10,
-                 "both compensations engaged")
+        if not COMP_MODE:
+            wait_for(lambda: g("volcomp-board.compensating") and g("volcomp.active"), 10,
+                     "both compensations engaged")
         home = settled_snapshot(0.3, time.time() + 10)
         if home is None:
             raise RuntimeError("the corrections did not settle at home")
         rows.append(["home", 0] + home)
-        for j in range(2 * JOINTS):
+        monitors = JOINTS if COMP_MODE else 2 * JOINTS
+        for j in range(monitors):
             hal.set_p("minmax.%d.reset" % j, "1")
         time.sleep(0.05)
-        for j in range(2 * JOINTS):
+        for j in range(monitors):
             hal.set_p("minmax.%d.reset" % j, "0")
         t0 = time.time()
         for p in programs:
@@ -168,20 +226,34 @@ def main():
         log("FAILED: " + str(e))
     drain_errors()
     S.poll()
+    try:
+        import subprocess
+        threads = subprocess.run(["halcmd", "show", "thread"], capture_output=True, text=True,
+                                 timeout=10).stdout
+        log("threads:\n" + threads)
+        summary["threads"] = threads
+    except Exception as e:  # diagnostics only
+        log("halcmd show thread: %s" % e)
     summary["errors"] = errors
-    summary["stepgen_lag_mm"] = [max(-g("minmax.%d.min" % j), g("minmax.%d.max" % j))
-                                 for j in range(JOINTS)]
-    summary["ferror_mm"] = [max(-g("minmax.%d.min" % (j + JOINTS)), g("minmax.%d.max" % (j + JOINTS)))
-                            for j in range(JOINTS)]
-    for pin in ("overruns", "max-backlog", "queue-overflows", "decode-errors", "period-changes",
-                "tick-hz", "fault", "compensating", "referenced"):
-        summary["board_" + pin.replace("-", "_")] = g("volcomp-board." + pin)
-    summary["board_table_crc"] = "%08X" % (g("volcomp-board.table-crc") & 0xFFFFFFFF)
-    summary["native_table_crc"] = "%08X" % (g("volcomp.table-crc") & 0xFFFFFFFF)
-    summary["native_clamped"] = g("volcomp.clamped")
-    summary["pulses_out"] = [g("volcomp-board.%d.pulses-out" % j) for j in range(JOINTS)]
+    summary["stepgen_maxvel"] = [g("stepgen.%d.maxvel" % j)
+                                 for j in range(JOINTS if COMP_MODE else 2 * JOINTS)]
+    if COMP_MODE:
+        summary["ferror_mm"] = [max(-g("minmax.%d.min" % j), g("minmax.%d.max" % j))
+                                for j in range(JOINTS)]
+    else:
+        summary["stepgen_lag_mm"] = [max(-g("minmax.%d.min" % j), g("minmax.%d.max" % j))
+                                     for j in range(JOINTS)]
+        summary["ferror_mm"] = [max(-g("minmax.%d.min" % (j + JOINTS)),
+                                    g("minmax.%d.max" % (j + JOINTS))) for j in range(JOINTS)]
+        for pin in ("overruns", "max-backlog", "queue-overflows", "decode-errors",
+                    "period-changes", "tick-hz", "fault", "compensating", "referenced"):
+            summary["board_" + pin.replace("-", "_")] = g("volcomp-board." + pin)
+        summary["board_table_crc"] = "%08X" % (g("volcomp-board.table-crc") & 0xFFFFFFFF)
+        summary["native_table_crc"] = "%08X" % (g("volcomp.table-crc") & 0xFFFFFFFF)
+        summary["native_clamped"] = g("volcomp.clamped")
+        summary["pulses_out"] = [g("volcomp-board.%d.pulses-out" % j) for j in range(JOINTS)]
     with open(out, "w") as f:
-        f.write("program,stop," + ",".join(COLUMNS) + "\n")
+        f.write("program,stop," + ",".join(COMP_COLUMNS if COMP_MODE else COLUMNS) + "\n")
         for r in rows:
             f.write(",".join(str(x) if not isinstance(x, float) else "%.9f" % x for x in r) + "\n")
     with open(out + ".json", "w") as f:

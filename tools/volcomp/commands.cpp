@@ -81,6 +81,12 @@ const std::vector<Command>& Commands() {
        "    [--spacing X=S,...] [--wrap] [--element int16|int32|float32] [--frac-bits N]\n"
        "    [--table-id N] [--info KEY=VALUE]...",
        RunBuildAxis},
+      {"export linuxcnc",
+       "LinuxCNC joint compensation files (COMP_FILE_TYPE 0 or 1) from positioning results",
+       "--x FILE [--y FILE] [--z FILE] ... -o DIR [--type 0|1] [--joints X=0,Y=1,...]\n"
+       "    [--spacing X=S,...]   (FILE: mean deviations as `build axis`, or raw readings as\n"
+       "    `evaluate positioning`)",
+       RunExportLinuxcnc},
       {"model eval", "forward error (or --inverse command) of a model at points, CSV in/out",
        "--model s500|FILE.conf [model overrides as `build model`] [--inverse] [-o FILE]\n"
        "    [POINTS.csv|-]",
