@@ -106,6 +106,8 @@ print("native vs board at the stops: max %d step(s), %.3f um at the tool point"
       % (chk["native_vs_board_max_steps"], chk["native_vs_board_max_um"]))
 print("LinuxCNC: following error max %s mm (FERROR 5 mm); board chain's stepgen lag max %s mm"
       % (["%.3f" % v for v in lc["ferror_mm"]], ["%.3f" % v for v in lc["stepgen_lag_mm"]]))
+print("stepgen maxvel checks that saw a longer base period: %d messages, maxvel set back %d times"
+      % (len(lc.get("stepgen_notes", [])), lc.get("maxvel_reapplied", 0)))
 print("programs %.0f s, test wall time %.0f s" % (lc.get("program_wall_s", 0), wall))
 if failures:
     print("FAILED:\n  " + "\n  ".join(failures))

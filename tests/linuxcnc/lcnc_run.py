@@ -30,12 +30,21 @@ def log(msg):
     print("lcnc_run: " + msg, file=sys.stderr, flush=True)
 
 
+stepgen_notes = []
+maxvel_reapplied = []
+
+
 def drain_errors():
     while True:
         e = E.poll()
         if not e:
             return
         kind, text = e
+        if text.startswith("STEPGEN:"):
+            # stepgen's own check of maxvel against its base period (see guard_maxvel)
+            stepgen_notes.append(text)
+            log("stepgen: " + text.strip())
+            continue
         if kind in (linuxcnc.NML_ERROR, linuxcnc.OPERATOR_ERROR):
             errors.append(text)
             log("LinuxCNC error: " + text)
@@ -52,6 +61,21 @@ def wait_for(cond, timeout_s, what):
 
 def g(name):
     return hal.get_value(name)
+
+
+def guard_maxvel():
+    """stepgen compares maxvel with the rate its step timing allows and, when that check sees a
+    longer base period than configured (it did under heavy load in this non-real-time setup),
+    lowers maxvel for good. Set it back to the configured value and count it (reported)."""
+    want = float(os.environ.get("VOLCOMP_LCNC_STEPGEN_MAXVEL", "0"))
+    if want <= 0:
+        return
+    for j in range(JOINTS if COMP_MODE else 2 * JOINTS):
+        name = "stepgen.%d.maxvel" % j
+        if abs(g(name) - want) > 1e-9:
+            log("%s was %.3f, set to %.3f again" % (name, g(name), want))
+            hal.set_p(name, str(want))
+            maxvel_reapplied.append(j)
 
 
 # VOLCOMP_LCNC_MODE=comp: the machine of volcomp-comp.hal (LinuxCNC's own joint compensation
@@ -123,6 +147,7 @@ def run_program(path, rows):
         drain_errors()
         if len(errors) > errors_before:
             raise RuntimeError("%s: %s" % (name, "; ".join(errors[errors_before:])))
+        guard_maxvel()
         waiting = S.exec_state == linuxcnc.EXEC_WAITING_FOR_DELAY
         if os.environ.get("VOLCOMP_LCNC_DEBUG") and (S.exec_state, S.interp_state) != getattr(run_program, "last", None):
             run_program.last = (S.exec_state, S.interp_state)
@@ -178,23 +203,9 @@ def main():
     rows = []
     summary["fifo_threads"] = len(raise_rtapi_priority())
     try:
-        # stepgen checks maxvel against its base period when it first runs and lowers it for
-        # good if that check ran before its base thread did (seen under heavy machine load):
-        # messages before the machine is switched on are startup notes, and maxvel is set again.
         time.sleep(0.5)
-        while True:
-            e = E.poll()
-            if not e:
-                break
-            summary.setdefault("startup_messages", []).append(e[1])
-        want = float(os.environ.get("VOLCOMP_LCNC_STEPGEN_MAXVEL", "0"))
-        if want > 0:
-            for j in range(JOINTS if COMP_MODE else 2 * JOINTS):
-                name = "stepgen.%d.maxvel" % j
-                if abs(g(name) - want) > 1e-9:
-                    log("%s was %.3f, set to %.3f again" % (name, g(name), want))
-                    hal.set_p(name, str(want))
-                    summary.setdefault("maxvel_reapplied", []).append(j)
+        drain_errors()
+        guard_maxvel()
         C.state(linuxcnc.STATE_ESTOP_RESET)
         C.wait_complete()
         C.state(linuxcnc.STATE_ON)
@@ -235,6 +246,8 @@ def main():
     except Exception as e:  # diagnostics only
         log("halcmd show thread: %s" % e)
     summary["errors"] = errors
+    summary["stepgen_notes"] = stepgen_notes
+    summary["maxvel_reapplied"] = len(maxvel_reapplied)
     summary["stepgen_maxvel"] = [g("stepgen.%d.maxvel" % j)
                                  for j in range(JOINTS if COMP_MODE else 2 * JOINTS)]
     if COMP_MODE:
