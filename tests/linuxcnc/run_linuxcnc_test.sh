@@ -8,6 +8,7 @@
 # `volcomp evaluate`) and checks the figures (check_figures.py). Exit 77 (skipped) without root
 # or without LinuxCNC.
 set -euo pipefail
+trap 'echo "run_linuxcnc_test: failed at line $LINENO: $BASH_COMMAND" >&2' ERR
 volcomp=$1 evaluate=$2 modules=$3 src=$4 artifacts=$5
 here=$(cd "$(dirname "$0")" && pwd)
 if [[ $(id -u) -ne 0 ]]; then
@@ -36,7 +37,8 @@ chown nobody "$work/fifo"
 
 res_nm=2500
 step_mm=0.0025
-feed=3300  # mm/min = 55 mm/s, LinuxCNC's MAX_VELOCITY in volcomp-sim.ini
+# The programs' feed (mm/min): LinuxCNC's MAX_LINEAR_VELOCITY (mm/s) in volcomp-sim.ini.
+feed=$(awk -F' *= *' '/^MAX_LINEAR_VELOCITY/ {print $2 * 60}' "$src/linuxcnc/config/volcomp-sim.ini")
 dwell=0.3
 "$volcomp" build model --model "$src/samples/model/s500.conf" \
   --resolution-nm X=$res_nm,Y=$res_nm,Z=$res_nm --spacing-mm 10 -o "$work/table.vct" >"$work/build.txt"
@@ -69,17 +71,24 @@ diag -X-Y+Z 10,10,190 390,270,10 diag_nnp
 run_lcnc() {
   local dir=$1 mode=$2 status=0
   shift 2
+  # LinuxCNC's realtime process of a previous run may still be exiting: it would compete with the
+  # new one (its threads keep their SCHED_FIFO priority) and share its HAL.
+  for _ in $(seq 60); do pgrep -x rtapi_app >/dev/null || break; sleep 0.5; done
+  if pgrep -x rtapi_app >/dev/null; then
+    echo "run_linuxcnc_test: another LinuxCNC (rtapi_app) is running" >&2
+    exit 1
+  fi
   cp "$here/lcnc_run.py" "$dir/"
   sed -i "s|^DISPLAY = .*|DISPLAY = $dir/lcnc_run.py|" "$dir/volcomp-sim.ini"
   mkdir -p "$dir/fifo"
   chown nobody "$dir/fifo"
   chmod -R a+rX "$dir"
   (cd "$dir" && IFS=: && VOLCOMP_LCNC_MODE=$mode VOLCOMP_LCNC_FIFO_PRIORITY=60 \
-    VOLCOMP_LCNC_STEPGEN_MAXVEL=57 VOLCOMP_LCNC_OUT="$dir/rest.csv" VOLCOMP_LCNC_PROGRAMS="$*" \
+    VOLCOMP_LCNC_OUT="$dir/rest.csv" VOLCOMP_LCNC_PROGRAMS="$*" \
     RTAPI_UID=$run_uid RTAPI_FIFO_PATH="$dir/fifo/rtapi_fifo" \
     timeout 900 linuxcnc -r volcomp-sim.ini >"$dir/linuxcnc.log" 2>&1) || status=$?
   mkdir -p "$artifacts/$mode"
-  cp "$dir/linuxcnc.log" "$artifacts/$mode/" 2>/dev/null || true
+  cp "$dir/linuxcnc.log" "$dir/rest.csv" "$dir/rest.csv.json" "$artifacts/$mode/" 2>/dev/null || true
   grep -v "Running with fallback_uid\|main loop took" "$dir/linuxcnc.log" | tail -n 25 >&2 || true
   if [[ ! -f "$dir/rest.csv.json" ]]; then
     echo "run_linuxcnc_test: LinuxCNC ($mode) ended (status $status) without results" >&2
