@@ -5,6 +5,8 @@
 #   fuzz    clang 14 with libFuzzer and the sanitizer runtimes (the fuzz preset)
 #   can     CAN test peers: Debian's python3-can (the independent SDO client), can-utils
 #           (candump), user-mode-linux + kmod (real SocketCAN in a UML kernel)
+#   linuxcnc  LinuxCNC 2.9 (uspace: HAL and motion in POSIX non-realtime mode) and its development
+#           headers, for the HAL components and the LinuxCNC integration test (docs/linuxcnc.md)
 # Installs only what is missing; needs root or sudo for that, and stops with a clear message
 # otherwise.
 set -euo pipefail
@@ -13,6 +15,7 @@ declare -A GROUPS_PKGS=(
   [build]="g++ cmake ninja-build libgtest-dev libgmock-dev libbenchmark-dev"
   [can]="python3-can can-utils user-mode-linux kmod libgpiod-dev"
   [fuzz]="clang-14 libclang-rt-14-dev"
+  [linuxcnc]="linuxcnc-uspace linuxcnc-uspace-dev python3"
   [arm]="gcc-arm-none-eabi binutils-arm-none-eabi libnewlib-arm-none-eabi libstdc++-arm-none-eabi-newlib qemu-system-arm python3"
 )
 

@@ -12,6 +12,9 @@ fast=0
 [[ "${1:-}" == "--fast" ]] && fast=1
 
 scripts/setup-deps.sh build can
+# LinuxCNC before the host build: its headers decide whether the HAL components are built, and
+# the LinuxCNC integration test (label external) runs with the host tests.
+scripts/setup-deps.sh linuxcnc
 jobs=$(nproc 2>/dev/null || echo 2)
 
 run_preset() {
@@ -35,7 +38,7 @@ toolchain/size-report.sh build/arm-m4f/firmware/stm32g4/volcomp_stm32g474.elf \
 echo "== Cortex-M4 cycle table (toolchain/cyclemodel/cm4cost.py)" >&2
 cat build/arm-m4f/tests/target/cycle_budgets.md >&2
 if [[ $fast -eq 0 ]]; then
-  # Tests that start other processes (python3-can, user-mode-linux) run once, in the release
+  # Tests that start other processes (python3-can, user-mode-linux, LinuxCNC) run once, in the release
   # build; the sanitizer build runs everything in-process.
   run_preset host-asan -LE external
   # libFuzzer (clang 14 + ASan + UBSan): each target 30 s on its seed corpus (docs/reliability.md).

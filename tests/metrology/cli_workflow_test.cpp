@@ -173,8 +173,9 @@ TEST(MetrologyWorkflow, BoxGivesFourDiagonalsAndATemplateEvaluateReads) {
   for (const char* token : {"NNN", "PNN", "NPN", "PPN"}) {
     EXPECT_TRUE(std::filesystem::exists(s / ("diag_" + std::string(token) + ".ngc"))) << token;
   }
+  // The title comment names the diagonal and its ends (brackets: RS274NGC comments do not nest).
   EXPECT_NE(
-      Read(s / "diag_PPN.ngc").find("diagonal test +X+Y-Z from (390, 270, 10) to (10, 10, 190)"),
+      Read(s / "diag_PPN.ngc").find("diagonal test +X+Y-Z from [390, 270, 10] to [10, 10, 190]"),
       std::string::npos);
   Write(s / "diagonals.csv", Fill(Read(s / "diagonals.csv"), Reading, {{"machine", "MILL-7"}}));
   const Result e = Volcomp({"evaluate", "diagonal", s / "diagonals.csv", "--report", s / "before"});

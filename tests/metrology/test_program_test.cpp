@@ -142,5 +142,23 @@ TEST(MetrologyTestProgram, GcodeAlongADiagonal) {
   EXPECT_NE(g.find("G0 X9.400 Y19.200 Z30.000"), std::string::npos);
 }
 
+// RS274NGC (LinuxCNC): a comment runs from '(' to the first ')' and may not nest.
+TEST(MetrologyTestProgram, TitleCommentDoesNotNest) {
+  const std::vector<CycleMove> moves = BuildCycle({10.0, 20.0}, Cycle::kLinear, 1, 5.0);
+  GcodeOptions o;
+  o.axes = {"X"};
+  o.title = "linear cycle (fig. 1), I_x (mm)";
+  const std::string g = EmitGcode(moves, o);
+  EXPECT_EQ(g.substr(0, g.find('\n')), "(linear cycle [fig. 1], I_x [mm])");
+  for (std::size_t line = 0; line < g.size(); line = g.find('\n', line) + 1) {
+    const std::string l = g.substr(line, g.find('\n', line) - line);
+    int depth = 0;
+    for (char c : l) {
+      depth += c == '(' ? 1 : c == ')' ? -1 : 0;
+      EXPECT_LE(depth, 1) << l;
+    }
+  }
+}
+
 }  // namespace
 }  // namespace volcomp::metrology

@@ -214,6 +214,37 @@ TEST(model_cli, BuildAxisFromAPositioningTest) {
   EXPECT_NE(msg.find("is rotary"), std::string::npos) << msg;
 }
 
+// `export linuxcnc` from raw readings (the layout of `evaluate positioning`): the means per target
+// and direction become the file's trims; the INI lines name the joint and the type.
+TEST(model_cli, ExportLinuxcncFromRawReadings) {
+  const std::string csv = TempPath("raw.csv");
+  // dev = +10 um moving up, -6 um moving down, at 0, 50, 100 mm; two runs each.
+  std::ofstream(csv) << "target_mm,direction,run,deviation_um\n"
+                        "0,up,1,10\n50,up,1,10\n100,up,1,10\n100,down,1,-6\n50,down,1,-6\n"
+                        "0,down,1,-6\n0,up,2,10\n50,up,2,10\n100,up,2,10\n100,down,2,-6\n"
+                        "50,down,2,-6\n0,down,2,-6\n";
+  const std::string dir = TempPath("lcnc");
+  // Two runs: refused unless --allow-few-runs (GOST 27843 and ISO 230-2 ask for five).
+  const std::string few = ErrorOf<InputError>(RunExportLinuxcnc, {"--z", csv, "-o", dir});
+  EXPECT_NE(few.find("require at least 5"), std::string::npos) << few;
+  const std::string out = RunCommand(RunExportLinuxcnc, {"--z", csv, "-o", dir, "--type", "1",
+                                                         "--joints", "Z=4", "--allow-few-runs"});
+  EXPECT_NE(out.find("[JOINT_4]\nCOMP_FILE = "), std::string::npos) << out;
+  EXPECT_NE(out.find("COMP_FILE_TYPE = 1"), std::string::npos) << out;
+  std::ifstream f(dir + "/z.comp");
+  double n, fwd, rev;
+  int rows = 0;
+  while (f >> n >> fwd >> rev) {
+    EXPECT_NEAR(fwd, -0.010, 1e-9);  // a constant deviation is undone exactly
+    EXPECT_NEAR(rev, 0.006, 1e-9);
+    ++rows;
+  }
+  EXPECT_EQ(rows, 3);
+  const std::string msg =
+      ErrorOf<UsageError>(RunExportLinuxcnc, {"--z", csv, "-o", dir, "--type", "2"});
+  EXPECT_NE(msg.find("--type must be 0 or 1"), std::string::npos) << msg;
+}
+
 TEST(model_cli, ModelEvalForwardAndInverse) {
   const std::string points = TempPath("points.csv");
   std::ofstream(points) << "x_mm,y_mm,z_mm\n300,150,50\n";

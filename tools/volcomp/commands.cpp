@@ -84,6 +84,23 @@ const Options kJsonReport = {
      "write an HTML report and its JSON, named by the axis or diagonals, into DIR"},
 };
 
+const Options kPositioningFileOptions = {
+    {"--x", nullptr, "FILE", nullptr, nullptr, "positioning test of axis X"},
+    {"--y", nullptr, "FILE", nullptr, nullptr, "... of axis Y"},
+    {"--z", nullptr, "FILE", nullptr, nullptr, "... of axis Z"},
+    {"--a", nullptr, "FILE", nullptr, nullptr, "... of rotary axis A"},
+    {"--b", nullptr, "FILE", nullptr, nullptr, "... of rotary axis B"},
+    {"--c", nullptr, "FILE", nullptr, nullptr, "... of rotary axis C"},
+    {"--u", nullptr, "FILE", nullptr, nullptr, "... of axis U"},
+    {"--v", nullptr, "FILE", nullptr, nullptr, "... of axis V"},
+    {"--w", nullptr, "FILE", nullptr, nullptr, "... of axis W"},
+};
+
+const char* const kPositioningFileNotes =
+    "Each FILE is either the raw readings `evaluate positioning` reads (target_mm, direction,\n"
+    "run, deviation_um ...; the mean per target and direction is used) or the mean deviations\n"
+    "(position_mm, dev_forward_um [, dev_reverse_um]).";
+
 const Options kAllowFewRuns = {
     {"--allow-few-runs", nullptr, nullptr, nullptr, nullptr,
      "fewer than 5 approaches per target and direction is a warning, not an error"},
@@ -375,16 +392,8 @@ const std::vector<Command>& Commands() {
              kGridOptions}),
        RunBuildKmtpp, kGridNotes},
       {"build axis", "AXIS1D image from positioning tests (raw readings or mean deviations)", "",
-       Join({{{"--x", nullptr, "FILE", nullptr, nullptr, "positioning test of axis X"},
-              {"--y", nullptr, "FILE", nullptr, nullptr, "... of axis Y"},
-              {"--z", nullptr, "FILE", nullptr, nullptr, "... of axis Z"},
-              {"--a", nullptr, "FILE", nullptr, nullptr, "... of rotary axis A"},
-              {"--b", nullptr, "FILE", nullptr, nullptr, "... of rotary axis B"},
-              {"--c", nullptr, "FILE", nullptr, nullptr, "... of rotary axis C"},
-              {"--u", nullptr, "FILE", nullptr, nullptr, "... of axis U"},
-              {"--v", nullptr, "FILE", nullptr, nullptr, "... of axis V"},
-              {"--w", nullptr, "FILE", nullptr, nullptr, "... of axis W"},
-              {"--output", "-o", "IMAGE", nullptr, nullptr, "image file to write (required)"}},
+       Join({kPositioningFileOptions,
+             {{"--output", "-o", "IMAGE", nullptr, nullptr, "image file to write (required)"}},
              kResolutionOptions,
              {{"--reverse", nullptr, "tables|backlash|mean", nullptr, "tables",
                "negative-direction handling"},
@@ -393,10 +402,24 @@ const std::vector<Command>& Commands() {
               {"--wrap", nullptr, nullptr, nullptr, nullptr,
                "rotary table spanning exactly 360° wraps around"}},
              kImageOptions}),
-       RunBuildAxis,
-       "Each FILE is either the raw readings `evaluate positioning` reads (target_mm, direction,\n"
-       "run, deviation_um ...; the mean per target and direction is used) or the mean deviations\n"
-       "(position_mm, dev_forward_um [, dev_reverse_um])."},
+       RunBuildAxis, kPositioningFileNotes},
+      {"export linuxcnc",
+       "LinuxCNC joint compensation files (COMP_FILE_TYPE 0 or 1) from positioning tests", "",
+       Join({kPositioningFileOptions,
+             {{"--output", "-o", "DIR", nullptr, nullptr,
+               "directory for x.comp ... and joints.ini (required)"},
+              {"--type", nullptr, "0|1", nullptr, "1",
+               "COMP_FILE_TYPE: 1 the file holds the trims, 0 the positions reached"},
+              {"--joints", nullptr, "X=N,...", nullptr, nullptr,
+               "joint 0..15 of an axis in its [JOINT_n] lines (default: X=0 ... W=8)"},
+              {"--spacing", nullptr, "X=S,...", "mm (deg for A, B, C)", nullptr,
+               "point spacing per axis (default: the test's, or its smallest gap)"}},
+             kAllowFewRuns}),
+       RunExportLinuxcnc,
+       "Each FILE is either the raw readings `evaluate positioning` reads (the mean per\n"
+       "target and direction is used) or the mean deviations (position_mm, dev_forward_um\n"
+       "[, dev_reverse_um]). Writes one file per axis (x.comp, ...) and joints.ini with the\n"
+       "INI lines to paste; see docs/linuxcnc.md."},
       {"model eval", "forward error (or --inverse command) of a model at points, CSV in/out",
        "[POINTS.csv|-]",
        Join({kModelOptions,

@@ -79,5 +79,6 @@ int RunBuildTracker(Args& args);
 int RunBuildKmtpp(Args& args);
 int RunBuildAxis(Args& args);
 int RunModelEval(Args& args);
+int RunExportLinuxcnc(Args& args);
 
 }  // namespace volcomp::tools

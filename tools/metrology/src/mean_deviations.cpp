@@ -10,9 +10,10 @@
 
 namespace volcomp::metrology {
 
-MeanDeviations MeanDeviationsFromCsv(const tools::CsvTable& table) {
+MeanDeviations MeanDeviationsFromCsv(const tools::CsvTable& table,
+                                     const GroupingOptions& grouping) {
   const PositioningData data = ReadPositioningCsv(table);
-  const PositioningSet set = GroupReadings(data, GroupingOptions{});
+  const PositioningSet set = GroupReadings(data, grouping);
   if (!set.has_up) {
     throw table.error(table.header_line(),
                       "the readings have no ↑ approaches; the forward table needs them");

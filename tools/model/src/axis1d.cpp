@@ -46,11 +46,12 @@ double CorrectionAt(const std::vector<double>& pos,
 
 }  // namespace
 
-PositioningData PositioningFromCsv(const tools::CsvTable& csv) {
+PositioningData PositioningFromCsv(const tools::CsvTable& csv,
+                                   const metrology::GroupingOptions& grouping) {
   PositioningData d;
   if (!csv.find("position_mm") && !csv.find("position_deg") &&
       metrology::HoldsPositioningReadings(csv)) {
-    const metrology::MeanDeviations m = metrology::MeanDeviationsFromCsv(csv);
+    const metrology::MeanDeviations m = metrology::MeanDeviationsFromCsv(csv, grouping);
     d.rotary = m.kind == metrology::AxisKind::kRotary;
     d.position = m.target;
     d.dev_forward = m.mean_up;
@@ -86,8 +87,9 @@ PositioningData PositioningFromCsv(const tools::CsvTable& csv) {
   return d;
 }
 
-PositioningData LoadPositioningCsv(const std::string& path) {
-  return PositioningFromCsv(tools::CsvTable::ParseFile(path));
+PositioningData LoadPositioningCsv(const std::string& path,
+                                   const metrology::GroupingOptions& grouping) {
+  return PositioningFromCsv(tools::CsvTable::ParseFile(path), grouping);
 }
 
 Axis1dTable BuildAxis1d(const PositioningData& data, const Axis1dOptions& options) {

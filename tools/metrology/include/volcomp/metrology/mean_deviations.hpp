@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "volcomp/metrology/direction.hpp"
+#include "volcomp/metrology/positioning_data.hpp"
 #include "volcomp/tools/csv.hpp"
 
 namespace volcomp::metrology {
@@ -20,10 +21,11 @@ struct MeanDeviations {
   std::vector<std::string> warnings;
 };
 
-/// Reads (positioning_csv.hpp), groups and checks (GroupReadings: ≥ 5 approaches per target and
-/// direction, same targets in every run; reading_checks.hpp) and averages. Throws
-/// tools::InputError naming the line, also when the test has no ↑ approaches (the forward table
-/// needs them).
-MeanDeviations MeanDeviationsFromCsv(const tools::CsvTable& table);
+/// Reads (positioning_csv.hpp), groups and checks (GroupReadings with `grouping`: by default ≥ 5
+/// approaches per target and direction, same targets in every run; reading_checks.hpp) and
+/// averages. Throws tools::InputError naming the line, also when the test has no ↑ approaches
+/// (the forward table needs them).
+MeanDeviations MeanDeviationsFromCsv(const tools::CsvTable& table,
+                                     const GroupingOptions& grouping = GroupingOptions{});
 
 }  // namespace volcomp::metrology

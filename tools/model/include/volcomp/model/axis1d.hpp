@@ -21,6 +21,7 @@
 #include <string>
 #include <vector>
 
+#include "volcomp/metrology/positioning_data.hpp"
 #include "volcomp/tools/csv.hpp"
 
 namespace volcomp::model {
@@ -33,8 +34,14 @@ struct PositioningData {
   std::vector<std::string> warnings;  // from the checks of raw readings (outliers, ...)
 };
 
-PositioningData PositioningFromCsv(const tools::CsvTable& csv);
-PositioningData LoadPositioningCsv(const std::string& path);
+/// Either CSV layout above; raw readings are grouped and checked with `grouping` (by default
+/// ≥ 5 approaches per target and direction). Throws tools::InputError naming the line.
+PositioningData PositioningFromCsv(
+    const tools::CsvTable& csv,
+    const metrology::GroupingOptions& grouping = metrology::GroupingOptions{});
+PositioningData LoadPositioningCsv(
+    const std::string& path,
+    const metrology::GroupingOptions& grouping = metrology::GroupingOptions{});
 
 enum class ReverseMode { kTables, kBacklash, kMean };
 

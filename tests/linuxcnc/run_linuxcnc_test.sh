@@ -1,0 +1,145 @@
+#!/usr/bin/env bash
+# The volcomp integration test with a real LinuxCNC (docs/linuxcnc.md §4; ctest label external).
+#   run_linuxcnc_test.sh VOLCOMP LCNC_EVALUATE MODULE_DIR SOURCE_DIR ARTIFACT_DIR
+# Builds the S500 table with the PC tool, writes the GOST 27843 (X, Y, Z) and ISO 230-6 (four body
+# diagonals) programs with `volcomp program`, installs the two HAL components into LinuxCNC's
+# module directory (loadrt accepts no paths; needs root), runs `linuxcnc -r` headless with
+# lcnc_run.py as its display, evaluates the recorded rest points (lcnc_evaluate, then
+# `volcomp evaluate`) and checks the figures (check_figures.py). Exit 77 (skipped) without root
+# or without LinuxCNC.
+set -euo pipefail
+trap 'echo "run_linuxcnc_test: failed at line $LINENO: $BASH_COMMAND" >&2' ERR
+volcomp=$1 evaluate=$2 modules=$3 src=$4 artifacts=$5
+here=$(cd "$(dirname "$0")" && pwd)
+if [[ $(id -u) -ne 0 ]]; then
+  echo "run_linuxcnc_test: needs root (installs modules into /usr/lib/linuxcnc/modules)" >&2
+  exit 77
+fi
+if ! command -v linuxcnc >/dev/null || [[ ! -d /usr/lib/linuxcnc/modules ]]; then
+  echo "run_linuxcnc_test: LinuxCNC not installed (scripts/setup-deps.sh linuxcnc)" >&2
+  exit 77
+fi
+
+# Install (idempotent: only when the file differs).
+for m in volcomp_board volcomp; do
+  if ! cmp -s "$modules/$m.so" "/usr/lib/linuxcnc/modules/$m.so"; then
+    install -m 644 "$modules/$m.so" "/usr/lib/linuxcnc/modules/$m.so"
+  fi
+done
+
+# rtapi_app refuses to run as root: it drops to RTAPI_UID and keeps its FIFO in RTAPI_FIFO_PATH.
+run_uid=$(id -u nobody)
+work=$(mktemp -d /tmp/volcomp-linuxcnc.XXXXXX)
+trap 'rm -rf "$work"' EXIT
+chmod 755 "$work"
+mkdir "$work/fifo"
+chown nobody "$work/fifo"
+
+res_nm=2500
+step_mm=0.0025
+# The programs' feed (mm/min): LinuxCNC's MAX_LINEAR_VELOCITY (mm/s) in volcomp-sim.ini.
+feed=$(awk -F' *= *' '/^MAX_LINEAR_VELOCITY/ {print $2 * 60}' "$src/linuxcnc/config/volcomp-sim.ini")
+dwell=0.3
+"$volcomp" build model --model "$src/samples/model/s500.conf" \
+  --resolution-nm X=$res_nm,Y=$res_nm,Z=$res_nm --spacing-mm 10 -o "$work/table.vct" >"$work/build.txt"
+programs=() eval_args=()
+pos() {  # axis end pitch
+  "$volcomp" program positioning --axis "$1" --start 10 --end "$2" --pitch "$3" --count 6 \
+    --runs 2 --feed $feed --dwell-s $dwell -o "$work/gost_$1.ngc" --targets-csv "$work/gost_$1.csv"
+  programs+=("$work/gost_$1.ngc")
+  eval_args+=(--positioning "gost_$1.ngc=$work/gost_$1.csv")
+}
+pos X 390 60
+pos Y 270 40
+pos Z 190 30
+diag() {  # name p1 p2 file
+  "$volcomp" program diagonal --name "$1" --p1 "$2" --p2 "$3" --increment-mm 123.59 --runs 2 \
+    --feed $feed --dwell-s $dwell -o "$work/$4.ngc" --targets-csv "$work/$4.csv"
+  programs+=("$work/$4.ngc")
+  eval_args+=(--diagonal "$4.ngc=$work/$4.csv")
+}
+# The four body diagonals of the box 10 mm inside the S500's travel (as in volcomp-sim demo),
+# 5 targets each (the fewest ISO 230-6 §5.2 allows on 494 mm: the run time of the test counts).
+# Each is named by its start corner (ISO 230-6).
+diag -X-Y-Z 10,10,10 390,270,190 diag_nnn
+diag +X-Y-Z 390,10,10 10,270,190 diag_pnn
+diag -X+Y-Z 10,270,10 390,10,190 diag_npn
+diag -X-Y+Z 10,10,190 390,270,10 diag_nnp
+
+# run_lcnc DIR MODE PROGRAM...: LinuxCNC headless in DIR (volcomp-sim.ini there), lcnc_run.py as
+# its display; the rest points go to DIR/rest.csv, the summary to DIR/rest.csv.json.
+run_lcnc() {
+  local dir=$1 mode=$2 status=0
+  shift 2
+  # LinuxCNC's realtime process of a previous run may still be exiting: it would compete with the
+  # new one (its threads keep their SCHED_FIFO priority) and share its HAL.
+  for _ in $(seq 60); do pgrep -x rtapi_app >/dev/null || break; sleep 0.5; done
+  if pgrep -x rtapi_app >/dev/null; then
+    echo "run_linuxcnc_test: another LinuxCNC (rtapi_app) is running" >&2
+    exit 1
+  fi
+  cp "$here/lcnc_run.py" "$dir/"
+  sed -i "s|^DISPLAY = .*|DISPLAY = $dir/lcnc_run.py|" "$dir/volcomp-sim.ini"
+  mkdir -p "$dir/fifo"
+  chown nobody "$dir/fifo"
+  chmod -R a+rX "$dir"
+  (cd "$dir" && IFS=: && VOLCOMP_LCNC_MODE=$mode VOLCOMP_LCNC_FIFO_PRIORITY=60 \
+    VOLCOMP_LCNC_OUT="$dir/rest.csv" VOLCOMP_LCNC_PROGRAMS="$*" \
+    RTAPI_UID=$run_uid RTAPI_FIFO_PATH="$dir/fifo/rtapi_fifo" \
+    timeout 900 linuxcnc -r volcomp-sim.ini >"$dir/linuxcnc.log" 2>&1) || status=$?
+  mkdir -p "$artifacts/$mode"
+  cp "$dir/linuxcnc.log" "$dir/rest.csv" "$dir/rest.csv.json" "$artifacts/$mode/" 2>/dev/null || true
+  grep -v "Running with fallback_uid\|main loop took" "$dir/linuxcnc.log" | tail -n 25 >&2 || true
+  if [[ ! -f "$dir/rest.csv.json" ]]; then
+    echo "run_linuxcnc_test: LinuxCNC ($mode) ended (status $status) without results" >&2
+    exit 1
+  fi
+}
+
+# 1. The board behind stepgen and the native component in the position loop, in one run.
+cp "$src/linuxcnc/config/volcomp-sim.ini" "$src/linuxcnc/config/volcomp-sim.hal" "$work/"
+sed -i "s|^TABLE = .*|TABLE = $work/table.vct|" "$work/volcomp-sim.ini"
+echo "== LinuxCNC run 1: board and native component (${#programs[@]} programs)" >&2
+start=$(date +%s)
+run_lcnc "$work" board "${programs[@]}"
+"$evaluate" --rest "$work/rest.csv" --step-mm $step_mm --out "$work/eval" "${eval_args[@]}"
+for c in before board native; do
+  for a in X Y Z; do
+    "$volcomp" evaluate positioning "$work/eval/$c/gost_$a.csv" --standard gost27843 \
+      --allow-few-runs --json >"$work/eval/$c/gost_$a.json" 2>>"$work/evaluate.log"
+  done
+  "$volcomp" evaluate diagonal "$work/eval/$c/diagonals.csv" --allow-few-runs --json \
+    >"$work/eval/$c/diagonals.json" 2>>"$work/evaluate.log"
+done
+
+# 2. LinuxCNC's own 1-D joint compensation, from the uncompensated X and Y positioning results of
+#    run 1: X as COMP_FILE_TYPE 1, Y as type 0; the same X and Y programs again.
+comp=$work/comp
+mkdir -p "$comp"
+"$volcomp" export linuxcnc --x "$work/eval/before/gost_X.csv" --type 1 --allow-few-runs -o "$comp/type1" >&2
+"$volcomp" export linuxcnc --y "$work/eval/before/gost_Y.csv" --type 0 --allow-few-runs -o "$comp/type0" >&2
+cp "$src/linuxcnc/config/volcomp-comp.hal" "$work/volcomp-sim.ini" "$comp/"
+sed -i "s|^HALFILE = .*|HALFILE = volcomp-comp.hal|" "$comp/volcomp-sim.ini"
+sed -i "/^\[JOINT_0\]/r $comp/type1/joints.ini" "$comp/volcomp-sim.ini"
+sed -i "/^\[JOINT_1\]/r $comp/type0/joints.ini" "$comp/volcomp-sim.ini"
+sed -i "/^\[JOINT_[01]\]$/{n;/^\[JOINT_[01]\]$/d}" "$comp/volcomp-sim.ini"
+echo "== LinuxCNC run 2: joint compensation files (gost_X, gost_Y)" >&2
+run_lcnc "$comp" comp "$work/gost_X.ngc" "$work/gost_Y.ngc"
+"$evaluate" --rest "$comp/rest.csv" --step-mm $step_mm --out "$comp/eval" \
+  --positioning "gost_X.ngc=$work/gost_X.csv" --positioning "gost_Y.ngc=$work/gost_Y.csv"
+for a in X Y; do
+  "$volcomp" evaluate positioning "$comp/eval/comp1d/gost_$a.csv" --standard gost27843 \
+    --allow-few-runs --json >"$comp/eval/comp1d/gost_$a.json" 2>>"$work/evaluate.log"
+done
+wall=$(($(date +%s) - start))
+
+mkdir -p "$artifacts"
+cp -r "$work/eval" "$work/rest.csv" "$work/rest.csv.json" "$work/table.vct" "$work"/*.ngc \
+   "$artifacts/"
+cp -r "$comp/eval" "$artifacts/comp/"
+cp -r "$comp/type0" "$comp/type1" "$comp/volcomp-sim.ini" "$artifacts/comp/"
+status=0
+python3 "$here/check_comp.py" "$comp" "0:1:$comp/type1/x.comp:$work/gost_X.csv:gost_X.ngc" \
+  "1:0:$comp/type0/y.comp:$work/gost_Y.csv:gost_Y.ngc" || status=1
+python3 "$here/check_figures.py" "$work" "$wall" || status=1
+exit $status
