@@ -59,10 +59,16 @@ for spec in sys.argv[2:]:
         if abs(applied - want) > TOL_MM:
             failures.append("%s joint %d at %.4f mm (%s): LinuxCNC applied %.6f mm, the file "
                             "asks %.6f mm" % (program, joint, nominal, d, applied, want))
+# At rest LinuxCNC's command and its feedback (the step generators, its own compensation taken
+# out) agree within a step.
+rest_ferror = json.load(open(os.path.join(work, "eval", "checks.json")))["max_rest_ferror_steps"]
+if rest_ferror > 1.0:
+    failures.append("LinuxCNC's following error at rest reached %.3f steps" % rest_ferror)
 summary = json.load(open(os.path.join(work, "rest.csv.json")))
 if not summary.get("ok") or summary["errors"]:
     failures.append("LinuxCNC run: %s %s" % (summary.get("exception"), summary["errors"]))
-print("joint compensation: %d stops checked, largest |applied - file| %.2e mm" % (checked, worst))
+print("joint compensation: %d stops checked, largest |applied - file| %.2e mm; following error "
+      "at rest %.3f steps" % (checked, worst, rest_ferror))
 if failures:
     print("FAILED:\n  " + "\n  ".join(failures[:20]))
     sys.exit(1)

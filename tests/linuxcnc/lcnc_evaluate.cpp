@@ -39,6 +39,7 @@ struct Rest {
   Vec3 cmd_mm;
   Steps lcnc, board_in, board_corr, board_out, backlog, drive, native;
   Steps machine[3];  // drive positions of the evaluated cases
+  Vec3 ferror_mm;    // LinuxCNC's joint following errors
 };
 
 Steps ReadSteps(const volcomp::tools::CsvRow& r, const std::string& prefix) {
@@ -95,6 +96,7 @@ int Run(int argc, char** argv) {
     const std::string cmd = comp_run ? "pos_cmd_mm_" : "cmd_mm_";
     x.cmd_mm = {r.number(cmd + "0"), r.number(cmd + "1"), r.number(cmd + "2")};
     x.drive = ReadSteps(r, "drive_counts_");
+    x.ferror_mm = {r.number("ferror_mm_0"), r.number("ferror_mm_1"), r.number("ferror_mm_2")};
     if (comp_run) {
       x.machine[0] = x.drive;
     } else {
@@ -115,6 +117,15 @@ int Run(int argc, char** argv) {
   int lost = 0, input_mismatch = 0, output_mismatch = 0, owed = 0;
   int64_t max_native_board_steps = 0;
   double max_native_board_um = 0;
+  // The following error LinuxCNC sees at rest: the command against the feedback of the loop it
+  // closes (the native component's, which takes its correction out again; LinuxCNC's own joint
+  // compensation in the comp run). At rest the step generators stand within a step of the command.
+  double max_rest_ferror_steps = 0;
+  for (const Rest& r : rests) {
+    for (int a = 0; a < 3; ++a) {
+      max_rest_ferror_steps = std::max(max_rest_ferror_steps, std::fabs(r.ferror_mm[a]) / step_mm);
+    }
+  }
   for (const Rest& r : rests) {
     if (comp_run) break;
     for (int a = 0; a < 3; ++a) {
@@ -188,7 +199,8 @@ int Run(int argc, char** argv) {
     << ",\n \"input_mismatches\": " << input_mismatch
     << ",\n \"output_mismatches\": " << output_mismatch << ",\n \"owed_steps\": " << owed
     << ",\n \"native_vs_board_max_steps\": " << max_native_board_steps
-    << ",\n \"native_vs_board_max_um\": " << Fixed(max_native_board_um, 4);
+    << ",\n \"native_vs_board_max_um\": " << Fixed(max_native_board_um, 4)
+    << ",\n \"max_rest_ferror_steps\": " << Fixed(max_rest_ferror_steps, 4);
   for (int c = 0; c < n_cases; ++c) {
     j << ",\n \"max_tool_point_error_um_" << cases[c] << "\": " << Fixed(max_error_um[cases[c]], 4);
   }

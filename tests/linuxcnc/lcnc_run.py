@@ -99,7 +99,8 @@ STEPGEN_MAXVEL = float(linuxcnc.ini(os.environ["INI_FILE_NAME"]).find("JOINT_0",
 COMP_MODE = os.environ.get("VOLCOMP_LCNC_MODE") == "comp"
 COMP_COLUMNS = (["pos_cmd_mm_%d" % j for j in range(JOINTS)] +
                 ["motor_cmd_mm_%d" % j for j in range(JOINTS)] +
-                ["drive_counts_%d" % j for j in range(JOINTS)])
+                ["drive_counts_%d" % j for j in range(JOINTS)] +
+                ["ferror_mm_%d" % j for j in range(JOINTS)])
 
 COLUMNS = (["cmd_mm_%d" % j for j in range(JOINTS)] +
            ["lcnc_counts_%d" % j for j in range(JOINTS)] +
@@ -109,14 +110,16 @@ COLUMNS = (["cmd_mm_%d" % j for j in range(JOINTS)] +
            ["board_backlog_%d" % j for j in range(JOINTS)] +
            ["drive_counts_%d" % j for j in range(JOINTS)] +
            ["native_counts_%d" % j for j in range(JOINTS)] +
-           ["native_corr_mm_%d" % j for j in range(JOINTS)])
+           ["native_corr_mm_%d" % j for j in range(JOINTS)] +
+           ["ferror_mm_%d" % j for j in range(JOINTS)])
 
 
 def snapshot():
     if COMP_MODE:
         return ([g("joint.%d.pos-cmd" % j) for j in range(JOINTS)] +
                 [g("joint.%d.motor-pos-cmd" % j) for j in range(JOINTS)] +
-                [g("stepgen.%d.counts" % j) for j in range(JOINTS)])
+                [g("stepgen.%d.counts" % j) for j in range(JOINTS)] +
+                [g("joint.%d.f-error" % j) for j in range(JOINTS)])
     v = []
     v += [g("joint.%d.motor-pos-cmd" % j) for j in range(JOINTS)]
     v += [g("stepgen.%d.counts" % j) for j in range(JOINTS)]
@@ -127,6 +130,7 @@ def snapshot():
     v += [g("updown.%d.count" % j) for j in range(JOINTS)]
     v += [g("stepgen.%d.counts" % (j + JOINTS)) for j in range(JOINTS)]
     v += [g("volcomp.%d.correction" % j) for j in range(JOINTS)]
+    v += [g("joint.%d.f-error" % j) for j in range(JOINTS)]
     return v
 
 

@@ -89,7 +89,9 @@ run_lcnc() {
     timeout 900 linuxcnc -r volcomp-sim.ini >"$dir/linuxcnc.log" 2>&1) || status=$?
   mkdir -p "$artifacts/$mode"
   cp "$dir/linuxcnc.log" "$dir/rest.csv" "$dir/rest.csv.json" "$artifacts/$mode/" 2>/dev/null || true
-  grep -v "Running with fallback_uid\|main loop took" "$dir/linuxcnc.log" | tail -n 25 >&2 || true
+  grep "^lcnc_run: " "$dir/linuxcnc.log" | grep -v "^lcnc_run: threads" >&2 || true
+  grep -v "Running with fallback_uid\|main loop took\|^lcnc_run: " "$dir/linuxcnc.log" |
+    tail -n 25 >&2 || true
   if [[ ! -f "$dir/rest.csv.json" ]]; then
     echo "run_linuxcnc_test: LinuxCNC ($mode) ended (status $status) without results" >&2
     exit 1
