@@ -78,6 +78,9 @@ run_lcnc() {
     echo "run_linuxcnc_test: another LinuxCNC (rtapi_app) is running" >&2
     exit 1
   fi
+  # Real-time threads already running (they compete with the base thread): listed in the log.
+  ps -eLo pid,tid,cls,rtprio,pcpu,comm | awk 'NR == 1 || ($3 == "FF" || $3 == "RR") && $4 < 99' \
+    >"$dir/rt_threads_before.txt" || true
   cp "$here/lcnc_run.py" "$dir/"
   sed -i "s|^DISPLAY = .*|DISPLAY = $dir/lcnc_run.py|" "$dir/volcomp-sim.ini"
   mkdir -p "$dir/fifo"
@@ -88,7 +91,8 @@ run_lcnc() {
     RTAPI_UID=$run_uid RTAPI_FIFO_PATH="$dir/fifo/rtapi_fifo" \
     timeout 900 linuxcnc -r volcomp-sim.ini >"$dir/linuxcnc.log" 2>&1) || status=$?
   mkdir -p "$artifacts/$mode"
-  cp "$dir/linuxcnc.log" "$dir/rest.csv" "$dir/rest.csv.json" "$artifacts/$mode/" 2>/dev/null || true
+  cp "$dir/linuxcnc.log" "$dir/rest.csv" "$dir/rest.csv.json" "$dir/rt_threads_before.txt" \
+     "$artifacts/$mode/" 2>/dev/null || true
   grep "^lcnc_run: " "$dir/linuxcnc.log" | grep -v "^lcnc_run: threads" >&2 || true
   grep -v "Running with fallback_uid\|main loop took\|^lcnc_run: " "$dir/linuxcnc.log" |
     tail -n 25 >&2 || true
