@@ -41,14 +41,16 @@ if ! flock -w 540 9; then
   echo "run_linuxcnc_test: another checkout's LinuxCNC test held the lock for 540 s" >&2
   exit 1
 fi
-wait_for_no_linuxcnc 540
 
-# Install (idempotent: only when the file differs).
-for m in volcomp_board volcomp; do
-  if ! cmp -s "$modules/$m.so" "/usr/lib/linuxcnc/modules/$m.so"; then
-    install -m 644 "$modules/$m.so" "/usr/lib/linuxcnc/modules/$m.so"
-  fi
-done
+# Install (only when the file differs), right before each run: another checkout's test may have
+# installed its own build in between.
+install_modules() {
+  for m in volcomp_board volcomp; do
+    if ! cmp -s "$modules/$m.so" "/usr/lib/linuxcnc/modules/$m.so"; then
+      install -m 644 "$modules/$m.so" "/usr/lib/linuxcnc/modules/$m.so"
+    fi
+  done
+}
 
 # rtapi_app refuses to run as root: it drops to RTAPI_UID and keeps its FIFO in RTAPI_FIFO_PATH.
 run_uid=$(id -u nobody)
@@ -96,7 +98,8 @@ run_lcnc() {
   shift 2
   # LinuxCNC's realtime process of the run before may still be exiting: it would compete with the
   # new one (its threads keep their SCHED_FIFO priority) and share its HAL.
-  wait_for_no_linuxcnc 30
+  wait_for_no_linuxcnc 540
+  install_modules
   # Real-time threads already running (they compete with the base thread): listed in the log.
   ps -eLo pid,tid,cls,rtprio,pcpu,comm | awk 'NR == 1 || ($3 == "FF" || $3 == "RR") && $4 < 99' \
     >"$dir/rt_threads_before.txt" || true
