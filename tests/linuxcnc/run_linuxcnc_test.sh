@@ -20,12 +20,37 @@ if ! command -v linuxcnc >/dev/null || [[ ! -d /usr/lib/linuxcnc/modules ]]; the
   exit 77
 fi
 
-# Install (idempotent: only when the file differs).
-for m in volcomp_board volcomp; do
-  if ! cmp -s "$modules/$m.so" "/usr/lib/linuxcnc/modules/$m.so"; then
-    install -m 644 "$modules/$m.so" "/usr/lib/linuxcnc/modules/$m.so"
-  fi
-done
+# One LinuxCNC on the machine at a time: the module directory, HAL's shared memory and the
+# real-time priorities belong to the machine, and a second LinuxCNC (another checkout's test)
+# disturbs or breaks this one. The lock serialises this test between checkouts; the wait for
+# rtapi_app also covers a LinuxCNC started otherwise.
+wait_for_no_linuxcnc() {  # seconds
+  local waited=0
+  while pgrep -x rtapi_app >/dev/null; do
+    if ((waited == 0)); then echo "run_linuxcnc_test: waiting for the running LinuxCNC" >&2; fi
+    if ((waited >= $1 * 2)); then
+      echo "run_linuxcnc_test: another LinuxCNC (rtapi_app) is still running after $1 s" >&2
+      exit 1
+    fi
+    sleep 0.5
+    waited=$((waited + 1))
+  done
+}
+exec 9>/tmp/volcomp-linuxcnc-test.lock
+if ! flock -w 540 9; then
+  echo "run_linuxcnc_test: another checkout's LinuxCNC test held the lock for 540 s" >&2
+  exit 1
+fi
+
+# Install (only when the file differs), right before each run: another checkout's test may have
+# installed its own build in between.
+install_modules() {
+  for m in volcomp_board volcomp; do
+    if ! cmp -s "$modules/$m.so" "/usr/lib/linuxcnc/modules/$m.so"; then
+      install -m 644 "$modules/$m.so" "/usr/lib/linuxcnc/modules/$m.so"
+    fi
+  done
+}
 
 # rtapi_app refuses to run as root: it drops to RTAPI_UID and keeps its FIFO in RTAPI_FIFO_PATH.
 run_uid=$(id -u nobody)
@@ -71,13 +96,13 @@ diag -X-Y+Z 10,10,190 390,270,10 diag_nnp
 run_lcnc() {
   local dir=$1 mode=$2 status=0
   shift 2
-  # LinuxCNC's realtime process of a previous run may still be exiting: it would compete with the
+  # LinuxCNC's realtime process of the run before may still be exiting: it would compete with the
   # new one (its threads keep their SCHED_FIFO priority) and share its HAL.
-  for _ in $(seq 60); do pgrep -x rtapi_app >/dev/null || break; sleep 0.5; done
-  if pgrep -x rtapi_app >/dev/null; then
-    echo "run_linuxcnc_test: another LinuxCNC (rtapi_app) is running" >&2
-    exit 1
-  fi
+  wait_for_no_linuxcnc 540
+  install_modules
+  # Real-time threads already running (they compete with the base thread): listed in the log.
+  ps -eLo pid,tid,cls,rtprio,pcpu,comm | awk 'NR == 1 || ($3 == "FF" || $3 == "RR") && $4 < 99' \
+    >"$dir/rt_threads_before.txt" || true
   cp "$here/lcnc_run.py" "$dir/"
   sed -i "s|^DISPLAY = .*|DISPLAY = $dir/lcnc_run.py|" "$dir/volcomp-sim.ini"
   mkdir -p "$dir/fifo"
@@ -88,7 +113,8 @@ run_lcnc() {
     RTAPI_UID=$run_uid RTAPI_FIFO_PATH="$dir/fifo/rtapi_fifo" \
     timeout 900 linuxcnc -r volcomp-sim.ini >"$dir/linuxcnc.log" 2>&1) || status=$?
   mkdir -p "$artifacts/$mode"
-  cp "$dir/linuxcnc.log" "$dir/rest.csv" "$dir/rest.csv.json" "$artifacts/$mode/" 2>/dev/null || true
+  cp "$dir/linuxcnc.log" "$dir/rest.csv" "$dir/rest.csv.json" "$dir/rt_threads_before.txt" \
+     "$artifacts/$mode/" 2>/dev/null || true
   grep "^lcnc_run: " "$dir/linuxcnc.log" | grep -v "^lcnc_run: threads" >&2 || true
   grep -v "Running with fallback_uid\|main loop took\|^lcnc_run: " "$dir/linuxcnc.log" |
     tail -n 25 >&2 || true
