@@ -59,6 +59,7 @@ Status Compensator::Configure(const BoardConfig& config) {
     target_q8_[a] = 0;
   }
   wrap_mask_ = 0;
+  rebase_pending_ = false;
   axis_count_ = config.axis_count;
   has_table_ = false;
   UpdateEngaged();
@@ -79,6 +80,7 @@ void Compensator::ClearTable() {
 
 void Compensator::Rebase(const int32_t* machine_pos_steps) {
   phase_ = 0;  // a refresh in progress used the old coordinates
+  rebase_pending_ = false;
   for (uint8_t a = 0; a < axis_count_; ++a) {
     last_pos_[a] = machine_pos_steps[a];
     if ((wrap_mask_ >> a) & 1u) {
@@ -96,6 +98,10 @@ bool Compensator::passthrough() const {
 }
 
 void Compensator::RefreshTargets(const int32_t* machine_pos_steps) {
+  if (rebase_pending_) {
+    Rebase(machine_pos_steps);
+    return;
+  }
   if (!engaged()) {
     for (uint8_t a = 0; a < axis_count_; ++a) target_q8_[a] = 0;
     phase_ = 0;

@@ -39,6 +39,7 @@ bool ControlTick::MarkReferenced(uint32_t axis_mask) {
     reference_offset_[a] =
         static_cast<int32_t>(static_cast<uint32_t>(home) - static_cast<uint32_t>(commanded_[a]));
     machine_[a] = home;
+    compensator_.MoveAxis(static_cast<uint8_t>(a), home);
   }
   referenced_mask_ |= done;
   // The caller's one rebase covers every axis referenced at once (the same state as one

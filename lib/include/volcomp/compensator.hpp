@@ -14,7 +14,8 @@
 // z level; (3 + a) axis a: its grid component plus its AXIS1D table at its current position and
 // direction, clamped, becomes the axis's new target. So with 3 axes each target is refreshed
 // every 6 ticks (120 us at 50 kHz), from a grid position at most 5 ticks old, and a new target
-// (engaging, SetTable(), Rebase()) is in effect after at most 6 ticks. Each refresh equals
+// (engaging, SetTable(), Rebase()) is in effect after at most 6 ticks (7 after RequestRebase(),
+// whose rebase takes one tick's refresh slice). Each refresh equals
 // PreparedTable::TargetsQ8() (clamped) at those positions: compensator_test checks it against
 // an independent evaluation. The correction changes by at most the rate limit per tick (of the
 // order of 10^4 steps/s, below one step per tick), so the refresh interval only adds a few ticks
@@ -96,6 +97,14 @@ class Compensator {
   /// Machine coordinates jumped (re-referencing): restart direction and wrap tracking from
   /// `machine_pos_steps` without treating the jump as motion.
   void Rebase(const int32_t* machine_pos_steps);
+  /// Rebase() in place of the next RefreshTargets() (the tick's bounded cost: a table switch or
+  /// referencing takes that tick's refresh slice, and the refresh cycle restarts one tick later),
+  /// at the positions that tick senses. An axis whose coordinates jump before then needs
+  /// MoveAxis(), so that the tick senses its motion, not the jump.
+  void RequestRebase() { rebase_pending_ = true; }
+  /// Axis `a`'s machine coordinates jump to `machine_pos_steps` (referencing): the next
+  /// SenseAxis() measures motion from there.
+  void MoveAxis(uint8_t a, int32_t machine_pos_steps) { last_pos_[a] = machine_pos_steps; }
 
   void SetEnabled(bool on) {
     enabled_ = on;
@@ -129,7 +138,8 @@ class Compensator {
     if (delta != 0) reverse_[a] = delta < 0;
     if ((wrap_mask_ >> a) & 1u) wrap_[a].Update(delta);
   }
-  /// One phase of the table evaluation (or zero targets when not engaged).
+  /// One phase of the table evaluation (or zero targets when not engaged), or the Rebase() that
+  /// RequestRebase() asked for.
   void RefreshTargets(const int32_t* machine_pos_steps);
   /// Limiter step toward the axis's target; returns the whole-step correction (round half up).
   int32_t ApplyAxis(uint8_t a) {
@@ -175,7 +185,8 @@ class Compensator {
   bool referenced_ = false;
   bool fault_ = false;
   bool has_table_ = false;
-  uint8_t phase_ = 0;  // next refresh phase, 0..refresh_ticks()-1
+  uint8_t phase_ = 0;            // next refresh phase, 0..refresh_ticks()-1
+  bool rebase_pending_ = false;  // RequestRebase(): the next RefreshTargets() rebases instead
   int32_t target_q8_[table::kMaxAxes] = {};
   int32_t grid_q8_[3] = {};  // the grid part of the refresh
   int32_t max_q8_[table::kMaxAxes] = {};

@@ -49,7 +49,8 @@ class ControlTick {
   }
   /// ReferenceAxes() without the compensator's rebase, for a tick that rebases once after several
   /// changes (a table switch and referencing): returns true when an axis was referenced, and then
-  /// RebaseCompensator() must follow before the next Run().
+  /// a rebase must follow: RebaseCompensator() now, or compensator().RequestRebase(), which the
+  /// next Run() performs in place of its target refresh.
   bool MarkReferenced(uint32_t axis_mask);
   /// Restarts the compensator's direction and wrap tracking at the present machine positions
   /// (Compensator::Rebase()).
