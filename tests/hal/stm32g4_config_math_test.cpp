@@ -1,10 +1,11 @@
 // STM32G474 driver computations: PLL, flash wait states, FDCAN bit timing, flash layout and the
 // timer settings that execute a pulse plan (checked against the plan's own timing).
-#include "volcomp/hal/stm32g4/config_math.hpp"
-
 #include <gtest/gtest.h>
 
+#include <random>
+
 #include "volcomp/board_config.hpp"
+#include "volcomp/hal/stm32g4/config_math.hpp"
 
 namespace volcomp::stm32g4 {
 namespace {
@@ -125,6 +126,21 @@ TEST(Stm32g4PulseTimer, SettingsReproduceThePlan) {
     const Result<PulseTimerSettings> s = PlanToTimer(plan, gen.tick_length(), 16);
     ASSERT_TRUE(s.ok());
     ASSERT_EQ(s->run, plan.count > 0 || plan.dir_change);
+    // The tick's unchecked conversion (StepIo::Apply) programs the same values.
+    PulseTimerSettings f;
+    PlanToTimerFitted(plan, &f);
+    ASSERT_EQ(f.run, s->run);
+    if (s->run) {
+      EXPECT_EQ(f.pulse, s->pulse);
+      EXPECT_EQ(f.first_arr, s->first_arr);
+      EXPECT_EQ(f.first_ccr, s->first_ccr);
+      EXPECT_EQ(f.arr, s->arr);
+      EXPECT_EQ(f.ccr, s->ccr);
+      EXPECT_EQ(f.rcr, s->rcr);
+      EXPECT_EQ(f.dir_ccr, s->dir_ccr);
+      EXPECT_EQ(f.dir_change, s->dir_change);
+      EXPECT_EQ(f.negative, s->negative);
+    }
     if (plan.dir_change) {
       EXPECT_EQ(s->dir_ccr, plan.dir_edge);
     }
@@ -141,6 +157,45 @@ TEST(Stm32g4PulseTimer, SettingsReproduceThePlan) {
     }
   }
   EXPECT_GT(checked, 1000);
+}
+
+// What PlanStepIo() accepts, the timer can execute: every plan of such a generator passes
+// PlanToTimer()'s checks (so StepIo::Apply converts without them), over random drive timings,
+// tick rates and targets (forward, backward, reversing, beyond a tick's capacity).
+TEST(Stm32g4PulseTimer, EveryPlanOfAnAcceptedConfigurationFits) {
+  std::mt19937 rng(20261124);
+  auto pick = [&](uint32_t lo, uint32_t hi) {
+    return std::uniform_int_distribution<uint32_t>(lo, hi)(rng);
+  };
+  const uint32_t kTicks[] = {5000, 10000, 20000, 25000, 50000, 85000, 100000, 170000};
+  int accepted = 0, plans = 0;
+  for (int n = 0; n < 300; ++n) {
+    BoardConfig cfg = ReferenceBoardConfig();
+    cfg.tick_hz = kTicks[pick(0, 7)];
+    AxisConfig& ax = cfg.axis[0];
+    ax.drive.pulse_width_ns = pick(0, 3) == 0 ? pick(0, 20) : pick(0, 20000);
+    ax.drive.step_space_ns = pick(0, 3) == 0 ? pick(0, 20) : pick(0, 20000);
+    ax.drive.dir_setup_ns = pick(0, 20000);
+    ax.drive.dir_hold_ns = pick(0, 20000);
+    ax.drive.max_rate_hz = pick(1000, 10000000);
+    ax.max_input_rate_hz = 1000;
+    ax.max_correction_rate_steps_s = 100;
+    if (!PlanStepIo(cfg, cfg.pulse_clock_hz).ok()) continue;
+    ++accepted;
+    StepGenerator gen;
+    ASSERT_TRUE(gen.Configure(ax, cfg.tick_hz, cfg.pulse_clock_hz).ok());
+    int32_t target = 0;
+    for (int t = 0; t < 400; ++t) {
+      target += static_cast<int32_t>(pick(0, 600)) - 300;
+      const PulsePlan plan = gen.Plan(target);
+      ASSERT_TRUE(PlanToTimer(plan, gen.tick_length(), 16).ok())
+          << "width " << ax.drive.pulse_width_ns << " ns, space " << ax.drive.step_space_ns
+          << " ns, rate " << ax.drive.max_rate_hz << " Hz, tick " << cfg.tick_hz << " Hz";
+      ++plans;
+    }
+  }
+  EXPECT_GT(accepted, 50);
+  EXPECT_GT(plans, 20000);
 }
 
 TEST(Stm32g4PulseTimer, RejectsWhatTheTimerCannotDo) {

@@ -98,6 +98,13 @@ TEST(Stm32g4StepIo, TheReferenceBoardAndWhatItCannotDo) {
   c = ref;
   c.tick_hz = 2000;  // 85000 clocks: a plan's first period does not fit 16 bits
   refused.push_back({"16-bit output timers", c});
+  c = ref;
+  c.axis[1].drive.pulse_width_ns = 0;
+  refused.push_back({"a pulse needs a high time", c});
+  c = ref;
+  c.axis[1].drive.step_space_ns = 0;
+  c.axis[1].drive.max_rate_hz = 170000000;  // the rate leaves no low time either
+  refused.push_back({"a pulse needs a low time", c});
   for (const Case& r : refused) EXPECT_FALSE(PlanStepIo(r.config, kSysclkHz).ok()) << r.what;
   c = ref;
   c.tick_hz = 5000;  // 34000 clocks + the pulse width: fits
@@ -211,7 +218,8 @@ class Stm32ConfigPathTest : public ::testing::Test {
     EXPECT_TRUE(tim6_.running);
     EXPECT_EQ(uint64_t{tim6_.programmed.clocks()} * tick_hz, kSysclkHz);
     EXPECT_EQ(step_.setup.tick_clocks, tim6_.programmed.clocks());
-    EXPECT_EQ(uint64_t{app_.control_tick().config().pulse_clock_hz} / tick_hz, step_.setup.tick_clocks);
+    EXPECT_EQ(uint64_t{app_.control_tick().config().pulse_clock_hz} / tick_hz,
+              step_.setup.tick_clocks);
   }
   void ExpectBitRate(uint32_t bitrate) {
     EXPECT_EQ(can_.bitrate, bitrate);

@@ -361,5 +361,39 @@ TEST_F(CompensatorTest, NewTargetWithinOneRefreshCycle) {
   EXPECT_EQ(comp_.target_q8(2), 7 * 256);
 }
 
+// RequestRebase() (the tick's table switch or referencing) rebases in the next tick's refresh
+// slice: the refresh cycle restarts one tick later, so the new target is in effect one tick after
+// a Rebase()'s would be. MoveAxis() makes a coordinate jump before then invisible as motion.
+TEST_F(CompensatorTest, RequestedRebaseTakesOneRefreshSlice) {
+  TableFixture f(10, -20, 30), g(-5, 6, 7);
+  comp_.SetTable(Prepare(f), pos_);
+  comp_.SetReferenced(true);
+  comp_.SetEnabled(true);
+  const uint32_t n = comp_.refresh_ticks();
+  for (uint32_t i = 0; i < n + 2; ++i) comp_.Tick(pos_, corr_);  // mid-cycle
+  const PreparedTable pg = Prepare(g);
+  comp_.BindTable(&pg);
+  comp_.RequestRebase();
+  for (uint32_t i = 0; i < n; ++i) comp_.Tick(pos_, corr_);
+  EXPECT_EQ(comp_.target_q8(0), -5 * 256);
+  EXPECT_EQ(comp_.target_q8(1), 6 * 256);
+  EXPECT_EQ(comp_.target_q8(2), 30 * 256);  // axis 2's refresh comes one tick later
+  comp_.Tick(pos_, corr_);
+  EXPECT_EQ(comp_.target_q8(2), 7 * 256);
+
+  // Forward motion, then a jump back (re-referencing) announced with MoveAxis(): not a reversal.
+  pos_[0] += 10;
+  comp_.Tick(pos_, corr_);
+  EXPECT_FALSE(comp_.reverse(0));
+  pos_[0] -= 1000;
+  comp_.MoveAxis(0, pos_[0]);
+  comp_.RequestRebase();
+  comp_.Tick(pos_, corr_);
+  EXPECT_FALSE(comp_.reverse(0));
+  pos_[0] -= 1;  // real motion backwards is sensed
+  comp_.Tick(pos_, corr_);
+  EXPECT_TRUE(comp_.reverse(0));
+}
+
 }  // namespace
 }  // namespace volcomp

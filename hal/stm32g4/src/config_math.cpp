@@ -98,6 +98,9 @@ Result<StepIoSetup> PlanStepIo(const BoardConfig& config, uint32_t timer_clock_h
     if (uint64_t{t->tick} + t->width > (uint64_t{1} << kOutputTimerBits)) {
       return Error::kConfigInvalid;
     }
+    // PWM mode 2 needs a high time and a low time of at least one clock each: then every plan of
+    // the generator fits the timer (PlanToTimerFitted(), StepIo::Apply checks nothing per tick).
+    if (t->width == 0 || t->min_period <= t->width) return Error::kConfigInvalid;
     s.input_format[a] = ax.input_format;
     s.invert_input_dir[a] = ax.invert_input_dir;
     s.cw_ccw_output[a] = ax.output_format == PulseFormat::kCwCcw;

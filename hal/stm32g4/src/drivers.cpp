@@ -216,11 +216,9 @@ void StepIo::ReadCounters(uint32_t* counters) {
 
 void StepIo::Apply(const PulsePlan* plans) {
   for (uint8_t a = 0; a < axes_; ++a) {
+    // Configure() accepted only drive timing whose every plan fits the timer (PlanStepIo).
     PulseTimerSettings settings;
-    if (!PlanToTimerInto(plans[a], tick_clocks_, kOutputTimerBits, &settings)) {
-      ++rejected_;
-      continue;
-    }
+    PlanToTimerFitted(plans[a], &settings);
     const PulseTimerSettings* const s = &settings;
     if (!s->run) continue;
     const uintptr_t t = kOutput[a].base;

@@ -118,6 +118,12 @@ class Compensator {
     fault_ = on;
     UpdateEngaged();
   }
+  /// SetEnabled() and SetFault() at once (the tick takes both every tick: one update).
+  void SetEnabledAndFault(bool enabled, bool fault) {
+    enabled_ = enabled;
+    fault_ = fault;
+    UpdateEngaged();
+  }
 
   /// One control tick. `machine_pos_steps`: commanded position per axis in machine coordinates.
   /// Writes the whole-step correction to add to each axis's output position.

@@ -194,8 +194,8 @@ class BoardApp final : private BoardControl {
       pending_unreference_.store(false, std::memory_order_relaxed);
       control_tick_.Unreference();
     }
-    control_tick_.compensator().SetEnabled(enabled_.load(std::memory_order_relaxed));
-    control_tick_.compensator().SetFault(fault_flag_.load(std::memory_order_relaxed));
+    control_tick_.compensator().SetEnabledAndFault(enabled_.load(std::memory_order_relaxed),
+                                                   fault_flag_.load(std::memory_order_relaxed));
     uint32_t counters[table::kMaxAxes];
     dev_.tick_io->ReadCounters(counters);
     control_tick_.Run(counters);

@@ -124,7 +124,9 @@ struct StepIoSetup {
 /// quadrature output (not wired on this board); pulse_clock_hz != timer_clock_hz (the output
 /// timers count at SYSCLK); the tick is not a whole number of timer clocks; or a tick's pulse
 /// plans may not fit the 16-bit output timers (tick + pulse width above 65536 clocks: below about
-/// 2.6 kHz at 170 MHz).
+/// 2.6 kHz at 170 MHz); or a pulse without a high or a low time of at least one timer clock (pulse
+/// width 0, or step space and rate leaving no low time). What it accepts, every plan fits
+/// (PlanToTimerFitted()).
 Result<StepIoSetup> PlanStepIo(const BoardConfig& config, uint32_t timer_clock_hz);
 
 // ---- Flash layout of the reference board (RM0440 §3.3.1: dual-bank mode, 2 KB pages) ------------
@@ -185,38 +187,44 @@ struct PulseTimerSettings {
 /// tick length in timer clocks. kConfigInvalid if the plan does not fit the timer.
 Result<PulseTimerSettings> PlanToTimer(const PulsePlan& plan, uint32_t tick, uint32_t counter_bits);
 
-/// PlanToTimer() for the tick (StepIo::Apply): writes every field of `*s` and returns true, or
-/// returns false (`*s` then unspecified) where PlanToTimer() returns kConfigInvalid. Always
-/// inlined, so the settings stay in registers: no zero-fill of a structure (a memset call) and
-/// no copy of a Result per axis and tick.
+/// The timer settings of `plan` without checks, for the tick (StepIo::Apply): a plan of a step
+/// generator whose drive timing PlanStepIo() accepted always fits (a pulse width of at least one
+/// clock, a low time of at least one clock, at most StepGenerator::kMaxPulsesPerTick pulses, tick +
+/// width within the counter), so the tick spends no branch on a case that cannot occur
+/// (tests/hal/stm32g4_config_math_test.cpp checks it against PlanToTimer() over generated plans).
+/// Fields other than `run` are meaningful only when `run` is set. Always inlined: the settings
+/// stay in registers.
+__attribute__((always_inline)) inline void PlanToTimerFitted(const PulsePlan& plan,
+                                                             PulseTimerSettings* s) {
+  const bool pulse = plan.count != 0;
+  s->negative = plan.negative;
+  s->dir_change = plan.dir_change;
+  s->dir_ccr = plan.dir_edge;
+  s->run = pulse || plan.dir_change;
+  s->pulse = pulse;
+  // Without a pulse: one period covering the direction edge.
+  s->first_ccr = pulse ? plan.first_rise : 0u;
+  s->first_arr = pulse ? plan.first_rise + plan.width - 1u : plan.dir_edge + 1u;
+  s->arr = pulse ? plan.period - 1u : s->first_arr;
+  s->ccr = pulse ? plan.period - plan.width : 0u;
+  s->rcr = pulse ? plan.count - 1u : 0u;
+}
+
+/// PlanToTimer() without the Result: writes every field of `*s` and returns true, or returns
+/// false (`*s` then unspecified) where PlanToTimer() returns kConfigInvalid (a plan the timer
+/// cannot execute). Always inlined.
 __attribute__((always_inline)) inline bool PlanToTimerInto(const PulsePlan& plan,
                                                            uint32_t tick,
                                                            uint32_t counter_bits,
                                                            PulseTimerSettings* s) {
   const uint32_t max = counter_bits >= 32 ? 0xFFFFFFFFu : (1u << counter_bits) - 1u;
-  s->negative = plan.negative;
-  s->dir_change = plan.dir_change;
-  s->dir_ccr = plan.dir_edge;
-  s->run = plan.count != 0 || plan.dir_change;
-  s->pulse = false;
-  s->first_ccr = s->ccr = 0;
-  s->rcr = 0;
+  PlanToTimerFitted(plan, s);
   if (!s->run) {
     s->dir_ccr = s->first_arr = s->arr = 0;  // nothing this tick
     return true;
   }
-  if (plan.count == 0) {
-    // Only the direction edge: one period covering it, no pulse.
-    s->first_arr = s->arr = plan.dir_edge + 1u;
-    return s->first_arr <= max && s->first_arr <= tick;
-  }
+  if (!s->pulse) return s->first_arr <= max && s->first_arr <= tick;
   if (plan.width == 0 || plan.period <= plan.width || plan.count > 256u) return false;
-  s->pulse = true;
-  s->first_ccr = plan.first_rise;
-  s->first_arr = plan.first_rise + plan.width - 1u;
-  s->arr = plan.period - 1u;
-  s->ccr = plan.period - plan.width;
-  s->rcr = plan.count - 1u;
   return s->first_arr <= max && s->arr <= max;
 }
 

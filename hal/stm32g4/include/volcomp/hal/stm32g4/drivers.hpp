@@ -74,13 +74,10 @@ class StepIo {
   Status Configure(const BoardConfig& config);
   void ReadCounters(uint32_t* counters);
   void Apply(const PulsePlan* plans);
-  /// Plans the hardware could not execute (0 in a correct configuration).
-  uint32_t rejected_plans() const { return rejected_; }
 
  private:
   uint8_t axes_ = 0;
   uint32_t tick_clocks_ = 0;
-  uint32_t rejected_ = 0;
   bool cw_ccw_[kAxes] = {};
 };
 
