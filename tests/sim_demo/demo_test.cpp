@@ -9,6 +9,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "sanitized_build.hpp"
 #include "volcomp/firmware/board_objects.hpp"
 #include "volcomp/image/image_reader.hpp"
 #include "volcomp/model/s500.hpp"
@@ -16,11 +17,7 @@
 namespace volcomp::sim {
 namespace {
 
-#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
-constexpr bool kSanitized = true;
-#else
-constexpr bool kSanitized = false;
-#endif
+using volcomp::testing::kSanitized;
 
 DemoOptions TestOptions() {
   DemoOptions o;  // the default demo

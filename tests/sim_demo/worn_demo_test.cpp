@@ -5,6 +5,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "sanitized_build.hpp"
 #include "volcomp/firmware/board_objects.hpp"
 #include "volcomp/image/image_reader.hpp"
 #include "volcomp/sim/demo.hpp"
@@ -12,11 +13,7 @@
 namespace volcomp::sim {
 namespace {
 
-#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
-constexpr bool kSanitized = true;
-#else
-constexpr bool kSanitized = false;
-#endif
+using volcomp::testing::kSanitized;
 
 // `--machine worn --quick` (a smaller run under sanitizers).
 DemoOptions WornQuick() {
