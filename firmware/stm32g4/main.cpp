@@ -1,5 +1,8 @@
 // STM32G474 reference board: the board application on the register-level HAL.
-//   tick    TIM6 update interrupt at BoardConfig::tick_hz (highest priority): BoardApp::Tick()
+//   tick    TIM6 update interrupt at BoardConfig::tick_hz (highest priority): BoardApp::StepTick()
+//           (counters, targets, step pulses); pends the compensation interrupt when it is due
+//   compensation  TIM7_DAC's vector as a software interrupt one level below the tick, every
+//           ControlTick::compensation_divider() ticks: BoardApp::CompensationTick()
 //   main    BoardApp::Poll() in a loop (slow lines, CANopen), watchdog refresh
 // main() only creates the devices: BoardApp::Start applies the configuration in force (stored
 // settings, else the factory defaults below) to the step I/O timers, TIM6 and FDCAN, and does so
@@ -44,9 +47,14 @@ App g_app({&g_tick_io, &g_io, &g_tables, &g_settings, &g_can, &g_clock, &g_tick}
 
 }  // namespace
 
-// The control tick (vector TIM6_DAC), placed in CCM SRAM through its section name.
+// The control tick (vector TIM6_DAC) and the compensation run (vector TIM7_DAC), placed in CCM
+// SRAM through their section names.
 extern "C" __attribute__((section(".volcomp_hot.tick_isr"))) void volcomp_tick_isr() {
   volcomp::firmware::stm32g4::RunTickIsr(g_app);
+}
+extern "C" __attribute__((section(".volcomp_hot.compensation_isr"))) void
+volcomp_compensation_isr() {
+  volcomp::firmware::stm32g4::RunCompensationIsr(g_app);
 }
 
 int main() {

@@ -65,7 +65,7 @@ volcomp::firmware::GatewayApp g_app({&g_controller, &g_drives, &g_io, &g_tables,
 
 // The control tick (vector TIM6_DAC), placed in CCM SRAM through its section name.
 extern "C" __attribute__((section(".volcomp_hot.tick_isr"))) void volcomp_tick_isr() {
-  volcomp::firmware::stm32g4::RunTickIsr(g_app);
+  volcomp::firmware::stm32g4::RunWholeTickIsr(g_app);
 }
 
 int main() {

@@ -26,11 +26,15 @@ void RelocateVectors();
 
 // An unexpected interrupt or fault: stop here (the watchdog then resets the board).
 [[noreturn]] void DefaultHandler() { volcomp_runtime_panic(); }
+// The compensation interrupt (a software interrupt the tick pends): only the step/dir image has
+// one (main.cpp); elsewhere nothing pends it, and taking it stops like any unexpected interrupt.
+[[noreturn]] void volcomp_compensation_isr() __attribute__((weak, alias("DefaultHandler")));
 
 using Handler = void (*)();
 constexpr int kSystemHandlers = 15;  // after the initial SP: reset .. SysTick
 constexpr int kDeviceIrqs = 102;
 constexpr int kTim6DacIrq = 54;
+constexpr int kTim7DacIrq = 55;  // the compensation interrupt (a software interrupt)
 
 struct Handlers {
   Handler h[kSystemHandlers + kDeviceIrqs];
@@ -43,6 +47,7 @@ constexpr Handlers MakeHandlers() {
   const int reserved[] = {6, 7, 8, 9, 12};  // vectors 7-10 and 13
   for (int r : reserved) t.h[r] = nullptr;
   t.h[kSystemHandlers + kTim6DacIrq] = volcomp_tick_isr;
+  t.h[kSystemHandlers + kTim7DacIrq] = volcomp_compensation_isr;
   return t;
 }
 

@@ -36,8 +36,9 @@ ConfigRule AxisRule(const AxisConfig& a, uint32_t tick_hz) {
       a.drive.max_rate_hz) {
     return ConfigRule::kDriveKeepsUp;
   }
-  const Result<CorrectionLimiter::Params> p = CorrectionLimiter::MakeParams(
-      tick_hz, a.max_correction_rate_steps_s, a.max_correction_accel_steps_s2);
+  const Result<CorrectionLimiter::Params> p =
+      CorrectionLimiter::MakeParams(tick_hz, a.max_correction_rate_steps_s,
+                                    a.max_correction_accel_steps_s2, CompensationDivider(tick_hz));
   return p.ok() ? ConfigRule::kNone : ConfigRule::kLimiter;
 }
 

@@ -9,12 +9,16 @@ Status ControlTick::Configure(const BoardConfig& config) {
   for (uint8_t a = 0; a < config.axis_count; ++a) {
     counter_shift_[a] = static_cast<uint8_t>(32u - config.axis[a].input_counter_bits);
     last_counter_[a] = 0;
-    commanded_[a] = machine_[a] = correction_[a] = target_[a] = 0;
+    commanded_[a].store(0, std::memory_order_relaxed);
+    published_[a].store(0, std::memory_order_relaxed);
+    machine_[a] = correction_[a] = target_[a] = 0;
     reference_offset_[a] = 0;
   }
   referenced_mask_ = 0;
   config_ = config;
   axis_count_ = config.axis_count;
+  divider_ = CompensationDivider(config.tick_hz);
+  countdown_ = 1;
   idle_ticks_ = 0xFFFFFFFFu;
   ticks_ = 0;
   compensator_.SetReferenced(false);
@@ -36,8 +40,8 @@ bool ControlTick::MarkReferenced(uint32_t axis_mask) {
   for (uint32_t a = 0; a < n; ++a) {
     if (((done >> a) & 1u) == 0) continue;
     const int32_t home = config_.axis[a].home_position_steps;
-    reference_offset_[a] =
-        static_cast<int32_t>(static_cast<uint32_t>(home) - static_cast<uint32_t>(commanded_[a]));
+    reference_offset_[a] = static_cast<int32_t>(
+        static_cast<uint32_t>(home) - static_cast<uint32_t>(commanded(static_cast<uint8_t>(a))));
     machine_[a] = home;
     compensator_.MoveAxis(static_cast<uint8_t>(a), home);
   }

@@ -627,7 +627,9 @@ TEST_F(Bench, ClampingAndRateLimitingAreFlaggedCountedAndReportedOnce) {
   EXPECT_EQ(Read(ObjectId::kCorrectionLimited1), uint32_t{canopen::kLimitClamped});
   EXPECT_EQ(Read(ObjectId::kCorrectionLimited2), 0u);
   const uint32_t clamped = Read(ObjectId::kClampedRefreshes1);
-  EXPECT_GT(clamped, 20000u / 6 - 100);  // one refresh of axis 1 every 6 ticks, all clamped
+  // One refresh of axis 1 every 6 compensation runs (one run every CompensationDivider() ticks),
+  // all clamped.
+  EXPECT_GT(clamped, 20000u / (6 * CompensationDivider(config_.tick_hz)) - 100);
   EXPECT_EQ(Read(ObjectId::kClampedRefreshes2), 0u);
   EXPECT_GT(Read(ObjectId::kRateLimitedRefreshes1), 0u);  // the ramp in
   EXPECT_EQ(Read(ObjectId::kRateLimitedRefreshes2), 0u);

@@ -11,6 +11,10 @@ namespace volcomp {
 namespace {
 
 constexpr double kQ8 = 256.0;
+// The fixture's rate limit (1000 steps/s) per Tick(): the compensator runs every
+// CompensationDivider(tick_hz) ticks of the default tick.
+constexpr uint32_t kTickHz = DefaultBoardConfig().tick_hz;
+constexpr double kStepsPerRun = 1000.0 * CompensationDivider(kTickHz) / kTickHz;
 
 // A uniform grid correction (every node the same vector) plus an optional X AXIS1D table.
 struct TableFixture {
@@ -91,7 +95,7 @@ class CompensatorTest : public ::testing::Test {
   int32_t pos_[3] = {0, 0, 0};
   int32_t corr_[3] = {};
   double last_[3] = {};
-  double max_rate_ = 0;  // steps per tick
+  double max_rate_ = 0;  // steps per Tick() (one compensation run)
 };
 
 TEST_F(CompensatorTest, PassThroughUntilReferenced) {
@@ -123,19 +127,23 @@ TEST_F(CompensatorTest, EnableRampsInAndDisableRampsOutWithinLimits) {
     ramp.push_back(comp_.applied_q8(0));
   }
   EXPECT_EQ(ramp.back(), 50 * 256);
-  // Monotonic ramp, each step within the rate limit (1000 steps/s at 50 kHz = 0.02 step/tick).
+  // Monotonic ramp, each step within the rate limit (1000 steps/s at the compensation rate, one
+  // Tick() every CompensationDivider(50 kHz) ticks: 0.02 step per tick).
   for (size_t i = 1; i < ramp.size(); ++i) {
     ASSERT_GE(ramp[i], ramp[i - 1]);
-    ASSERT_LE(ramp[i] - ramp[i - 1], 0.02 * 256 + 1);
+    ASSERT_LE(ramp[i] - ramp[i - 1], kStepsPerRun * 256 + 1);
   }
-  const auto ticks_to_full = std::find(ramp.begin(), ramp.end(), 50 * 256) - ramp.begin();
-  EXPECT_GT(ticks_to_full, 2500);  // 50 steps at 0.02 steps/tick takes >= 2500 ticks
+  const auto runs_to_full = std::find(ramp.begin(), ramp.end(), 50 * 256) - ramp.begin();
+  // 50 steps at the rate limit, plus 10 ms of acceleration and braking (1000 steps/s at 100000
+  // steps/s^2): a limiter converted for one tick per run instead would take 3 times as long.
+  EXPECT_GT(runs_to_full, 50 / kStepsPerRun);
+  EXPECT_LT(runs_to_full, (50 / kStepsPerRun) * 1.3);
   last_[0] = comp_.applied_q8(0) / kQ8;
   comp_.SetEnabled(false);
   TickN(10000);
   EXPECT_TRUE(comp_.passthrough());
   EXPECT_EQ(corr_[0], 0);
-  EXPECT_LE(max_rate_, 0.02 + 1.0 / 256);
+  EXPECT_LE(max_rate_, kStepsPerRun + 1.0 / 256);
 }
 
 TEST_F(CompensatorTest, FaultRampsOut) {
@@ -177,7 +185,7 @@ TEST_F(CompensatorTest, TableChangeIsSpreadWithinLimits) {
   EXPECT_EQ(comp_.table_id(), 42u);
   TickN(10000);
   EXPECT_EQ(corr_[0], 30);
-  EXPECT_LE(max_rate_, 0.02 + 1.0 / 256);  // applied_q8() truncates to 1/256 step
+  EXPECT_LE(max_rate_, kStepsPerRun + 1.0 / 256);  // applied_q8() truncates to 1/256 step
 }
 
 TEST_F(CompensatorTest, ReverseDirectionSelectsTheReverseTable) {

@@ -6,6 +6,8 @@
 #include <cmath>
 #include <random>
 
+#include "volcomp/board_config.hpp"
+
 namespace volcomp {
 namespace {
 
@@ -47,6 +49,32 @@ TEST(CorrectionLimiter, MakeParamsConvertsUnits) {
   EXPECT_EQ(CorrectionLimiter::MakeParams(50000, 0, 1).error(), Error::kConfigInvalid);
   EXPECT_EQ(CorrectionLimiter::MakeParams(200000, 1, 1).error(), Error::kConfigInvalid);  // a -> 0
   EXPECT_EQ(CorrectionLimiter::MakeParams(1000, 1, 1000000).error(), Error::kConfigInvalid);
+}
+
+// A limiter stepped every n ticks of f is a limiter at f / n: the same parameters, bit for bit,
+// where f / n is a whole rate (its conversion computed the old way), and the factory limits
+// (2000 steps/s, 200000 steps/s^2) valid at every tick rate a board accepts.
+TEST(CorrectionLimiter, MakeParamsForEveryNthTickEqualsTheLowerRate) {
+  for (uint32_t n : {1u, 2u, 3u, 7u, 10u}) {
+    for (uint32_t f_low : {1000u, 16000u, 20000u}) {
+      for (uint32_t rate : {1u, 2000u, 20000u, 4000000000u}) {
+        for (uint32_t accel : {1u, 200000u, 2000000u, 399999999u}) {
+          const auto every_nth = CorrectionLimiter::MakeParams(f_low * n, rate, accel, n);
+          const auto low = CorrectionLimiter::MakeParams(f_low, rate, accel);
+          ASSERT_EQ(every_nth.ok(), low.ok()) << n << " " << f_low << " " << rate << " " << accel;
+          if (!low.ok()) continue;
+          EXPECT_EQ(every_nth->accel_q32, low->accel_q32) << n << " " << f_low << " " << accel;
+          EXPECT_EQ(every_nth->max_k, low->max_k) << n << " " << f_low << " " << rate;
+        }
+      }
+    }
+  }
+  for (uint32_t tick_hz = kMinTickHz; tick_hz <= kMaxTickHz; tick_hz += 1000) {
+    EXPECT_TRUE(
+        CorrectionLimiter::MakeParams(tick_hz, 2000, 200000, CompensationDivider(tick_hz)).ok())
+        << tick_hz;
+  }
+  EXPECT_EQ(CorrectionLimiter::MakeParams(50000, 2000, 200000, 0).error(), Error::kConfigInvalid);
 }
 
 TEST(CorrectionLimiter, StepChangeIsSpreadWithinLimitsAndLandsExactly) {

@@ -9,6 +9,7 @@
 // the environment variable VOLCOMP_ENGINE_STEPS raises the step count (10^8 for the long run).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <random>
@@ -252,6 +253,70 @@ TEST(StepEngineReference, SeveralAxesAtOnceEqualOneAxisAtATime) {
     }
   }
   EXPECT_TRUE(all.compensator().engaged());
+}
+
+// The two rates (control_tick.hpp): at 50 kHz the compensator runs every third tick
+// (CompensationDivider), and every tick's target is its commanded position plus the correction
+// the runs before it published. The oracle is a Compensator of its own stepped on the commanded
+// positions at those ticks.
+TEST(StepEngineTwoRates, TheCompensatorRunsEveryDividerTicksAndTheStepPathAppliesItsLastOutput) {
+  std::mt19937_64 rng(5);
+  const BoardConfig cfg = DefaultBoardConfig();
+  ASSERT_EQ(cfg.tick_hz, 50000u);
+  ASSERT_EQ(CompensationDivider(cfg.tick_hz), 3u);
+  for (uint32_t tick_hz = kMinTickHz; tick_hz <= kMaxTickHz; ++tick_hz) {
+    const uint32_t d = CompensationDivider(tick_hz);  // the smallest divider to <= 20 kHz
+    ASSERT_LE(tick_hz, d * kMaxCompensationHz) << tick_hz;
+    ASSERT_TRUE(d == 1 || tick_hz > (d - 1) * kMaxCompensationHz) << tick_hz;
+  }
+  const testing::GridCase grid = SteepGrid(rng);
+  const testing::AlignedBytes img = testing::WriteGridImage(grid);
+  const auto view = table::ParseImage(img.data(), img.size());
+  PreparedTable table;
+  ASSERT_TRUE(table.Prepare(*view, cfg).ok());
+  ControlTick engine;
+  Compensator oracle;
+  ASSERT_TRUE(engine.Configure(cfg).ok());
+  ASSERT_TRUE(oracle.Configure(cfg).ok());
+  EXPECT_EQ(engine.compensation_divider(), 3u);
+  const int32_t zero[3] = {0, 0, 0};
+  engine.compensator().SetTable(table, zero);
+  engine.compensator().SetEnabled(true);
+  engine.ReferenceAxes(0x7u);  // home 0: machine = commanded
+  oracle.SetTable(table, zero);
+  oracle.SetEnabled(true);
+  oracle.SetReferenced(true);
+  uint32_t counters[3] = {0, 0, 0};
+  int32_t published[3] = {0, 0, 0};
+  int32_t commanded[3] = {0, 0, 0};
+  uint32_t runs = 0;
+  std::uniform_int_distribution<int> step(-20, 20);
+  for (uint32_t t = 0; t < 30000; ++t) {
+    for (int a = 0; a < 3; ++a) {
+      const int d = step(rng) + (t / 3000 % 2 == 0 ? 12 : -12);
+      counters[a] += static_cast<uint32_t>(d);
+      commanded[a] += d;
+    }
+    const bool due = engine.RunSteps(counters);
+    ASSERT_EQ(due, t % 3 == 0) << t;
+    for (uint8_t a = 0; a < 3; ++a) {
+      ASSERT_EQ(engine.commanded(a), commanded[a]) << t;
+      ASSERT_EQ(engine.correction_steps(a), published[a]) << t;
+      ASSERT_EQ(engine.target(a), commanded[a] + published[a]) << t;
+    }
+    if (!due) continue;
+    engine.Compensate();
+    oracle.Tick(commanded, published);
+    ++runs;
+    for (uint8_t a = 0; a < 3; ++a) {
+      ASSERT_EQ(engine.published_correction_steps(a), published[a]) << t;
+    }
+  }
+  EXPECT_EQ(runs, 10000u);
+  EXPECT_TRUE(engine.compensator().engaged());
+  int32_t largest = 0;
+  for (int32_t c : published) largest = std::max(largest, std::abs(c));
+  EXPECT_GT(largest, 0);  // the table is in the targets
 }
 
 // The board's tick activates a table and references in the same tick with one rebase

@@ -365,13 +365,16 @@ class ConfigParser {
         ax.drive.max_rate_hz) {
       ax.drive.max_rate_hz = ax.max_input_rate_hz + ax.max_correction_rate_steps_s;
     }
+    const uint32_t divider = CompensationDivider(st.board.tick_hz);
     if (!CorrectionLimiter::MakeParams(st.board.tick_hz, ax.max_correction_rate_steps_s,
-                                       ax.max_correction_accel_steps_s2)
+                                       ax.max_correction_accel_steps_s2, divider)
              .ok()) {
+      const std::string f = "f = tick_hz / " + std::to_string(divider);
       return FailAt(s->line, "[axis " + axis_names_[a] + "]: max_rate / max_accel do not fit " +
                                  "tick_hz " + std::to_string(st.board.tick_hz) +
-                                 " (the acceleration must be at least tick_hz^2 / 2^32 and below "
-                                 "tick_hz^2 steps/s2, and max_rate at least max_accel / tick_hz)");
+                                 " (the compensation rate " + f +
+                                 ": the acceleration must be at least f^2 / 2^32 and below f^2 "
+                                 "steps/s2, and max_rate at least max_accel / f)");
     }
     return true;
   }

@@ -150,6 +150,9 @@ Status StmTickTimer::DoStart() {
   Reg(kTim6Base, tim::kDier) = tim::kDierUie;
   auto* ipr = reinterpret_cast<volatile uint8_t*>(scb::kNvicIpr);
   ipr[kTim6Irq] = static_cast<uint8_t>(irq_priority_ << 4);
+  ipr[kCompensationIrq] = static_cast<uint8_t>((irq_priority_ + 1u) << 4);
+  Reg(scb::kNvicIcpr, 4u * (kCompensationIrq / 32u)) = 1u << (kCompensationIrq % 32u);
+  Reg(scb::kNvicIser, 4u * (kCompensationIrq / 32u)) = 1u << (kCompensationIrq % 32u);
   Reg(scb::kNvicIser, 4u * (kTim6Irq / 32u)) = 1u << (kTim6Irq % 32u);
   Reg(kTim6Base, tim::kCr1) = tim::kCr1Cen;
   running_ = true;
@@ -161,11 +164,18 @@ void StmTickTimer::DoStop() {
   Reg(kTim6Base, tim::kDier) = 0;
   Reg(kTim6Base, tim::kSr) = 0;
   Reg(scb::kNvicIcpr, 4u * (kTim6Irq / 32u)) = 1u << (kTim6Irq % 32u);  // drop a pending tick
+  // ... and a pending compensation run (the main loop calls this: a pended run has either
+  // completed before it or is dropped here).
+  Reg(scb::kNvicIcpr, 4u * (kCompensationIrq / 32u)) = 1u << (kCompensationIrq % 32u);
   __asm volatile("dsb\n isb" ::: "memory");  // no tick ISR begins after this returns
   running_ = false;
 }
 
 void TickTimerAcknowledge() { Reg(kTim6Base, tim::kSr) = ~tim::kSrUif; }
+
+void PendCompensation() {
+  Reg(scb::kNvicIspr, 4u * (kCompensationIrq / 32u)) = 1u << (kCompensationIrq % 32u);
+}
 
 // ---- Step I/O
 // -------------------------------------------------------------------------------------

@@ -48,6 +48,18 @@ struct AxisConfig {
 inline constexpr uint32_t kMinTickHz = 1000;
 inline constexpr uint32_t kMaxTickHz = 200000;
 
+/// The compensator (sensing, the target refresh, the correction limiters) runs every
+/// CompensationDivider(tick_hz) ticks, at tick_hz / divider <= kMaxCompensationHz; the step path
+/// (counters, targets = commanded + correction, output) runs every tick. On the STM32 step/dir
+/// board the two are separate interrupts (docs/mcu-target.md, "Two rates"); elsewhere
+/// BoardApp::Tick() runs both in sequence. The limiters' units are converted at the compensation
+/// rate (CorrectionLimiter::MakeParams()).
+inline constexpr uint32_t kMaxCompensationHz = 20000;
+constexpr uint32_t CompensationDivider(uint32_t tick_hz) {
+  return tick_hz <= kMaxCompensationHz ? 1u
+                                       : (tick_hz + kMaxCompensationHz - 1u) / kMaxCompensationHz;
+}
+
 struct BoardConfig {
   uint32_t tick_hz = 50000;              // control tick rate
   uint32_t pulse_clock_hz = 1000000000;  // output pulse timer clock (ns resolution in the mock)

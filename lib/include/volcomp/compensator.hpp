@@ -8,19 +8,23 @@
 // disabling, losing the reference or a fault ramps it out (always within the limits). When the
 // applied correction is zero the output equals the input exactly (pass-through).
 //
-// Target refresh (the tick's cycle budget, docs/mcu-target.md): while engaged, the tables are
-// evaluated in refresh_ticks() = 3 + axis_count parts, one per tick: (0) locate the grid cell at
-// the current positions and form the y-level weights; (1) the grid's lower z level; (2) its upper
-// z level; (3 + a) axis a: its grid component plus its AXIS1D table at its current position and
-// direction, clamped, becomes the axis's new target. So with 3 axes each target is refreshed
-// every 6 ticks (120 us at 50 kHz), from a grid position at most 5 ticks old, and a new target
-// (engaging, SetTable(), Rebase()) is in effect after at most 6 ticks (7 after RequestRebase(),
-// whose rebase takes one tick's refresh slice). Each refresh equals
-// PreparedTable::TargetsQ8() (clamped) at those positions: compensator_test checks it against
-// an independent evaluation. The correction changes by at most the rate limit per tick (of the
-// order of 10^4 steps/s, below one step per tick), so the refresh interval only adds a few ticks
-// of motion to the position a target belongs to. The limiter and the whole-step correction run
-// every tick.
+// A "tick" of the compensator is one Tick() call: one compensation run, which the board makes
+// every CompensationDivider(tick_hz) control ticks (board_config.hpp; its limiters are converted
+// for that rate: 3 ticks = 60 us at the default 50 kHz, every tick at 20 kHz and below).
+//
+// Target refresh (the cycle budget, docs/mcu-target.md): while engaged, the tables are evaluated
+// in refresh_ticks() = 3 + axis_count parts, one per run: (0) locate the grid cell at the current
+// positions and form the y-level weights; (1) the grid's lower z level; (2) its upper z level;
+// (3 + a) axis a: its grid component plus its AXIS1D table at its current position and direction,
+// clamped, becomes the axis's new target. So with 3 axes each target is refreshed every 6 runs
+// (360 us at 50 kHz), from a grid position at most 5 runs old, and a new target (engaging,
+// SetTable(), Rebase()) is in effect after at most 6 runs (7 after RequestRebase(), whose rebase
+// takes one run's refresh slice). Each refresh equals PreparedTable::TargetsQ8() (clamped) at
+// those positions: compensator_test checks it against an independent evaluation. The correction
+// changes by at most the rate limit per run (of the order of 10^4 steps/s: below one step per run
+// at 20 kHz), so the refresh interval only adds a few runs of motion to the position a target
+// belongs to (at 1 m/min and a table gradient of 10 um per 100 mm, 360 us of motion is 6 um of
+// travel and 0.6 nm of correction). The limiter and the whole-step correction run every run.
 //
 // Tick() is the per-tick hot path: no division, no allocation, constant time per axis.
 // Threading: call everything from the control context (the tick ISR or the code it defers to);

@@ -25,11 +25,14 @@ class CorrectionLimiter {
  public:
   using Params = LimiterParams;
 
-  /// Converts limits in steps/s and steps/s^2 at `tick_hz`; kConfigInvalid when the acceleration
-  /// rounds to zero, exceeds one step per tick^2, or allows no velocity at all.
+  /// Converts limits in steps/s and steps/s^2 for a limiter stepped every `ticks_per_step` ticks
+  /// of `tick_hz` (its step period T = ticks_per_step / tick_hz; the board's compensator steps at
+  /// CompensationDivider(tick_hz)); kConfigInvalid when the acceleration rounds to zero, exceeds
+  /// one step per T^2, or allows no velocity at all.
   static Result<Params> MakeParams(uint32_t tick_hz,
                                    uint32_t max_rate_steps_s,
-                                   uint32_t max_accel_steps_s2);
+                                   uint32_t max_accel_steps_s2,
+                                   uint32_t ticks_per_step = 1);
 
   explicit CorrectionLimiter(Params p = Params()) : params_(p) {}
   void set_params(Params p) { params_ = p; }

@@ -23,19 +23,28 @@ volcomp_bench_mark() {
   __asm volatile("" ::: "memory");
 }
 
-// The tick's data path of a step/dir board as BoardApp::Tick() runs it between reading the
-// counters and StepIo::Apply(): ControlTick::Run() (counters to targets), then the step output
-// stage's planning (targets to pulse plans). One call per tick: the control_tick_3axes row.
-// (No sibling call: the cycle model prices the two calls as calls.)
+// The tick's step path of a step/dir board as BoardApp::StepTick() runs it between reading the
+// counters and StepIo::Apply(): ControlTick::RunSteps() (counters to targets), then the step
+// output stage's planning (targets to pulse plans). One call per tick: the control_tick_3axes
+// row. Returns true when a compensation run is due. (No sibling call: the cycle model prices the
+// two calls as calls.)
 extern "C" __attribute__((noinline,
                           optimize("no-optimize-sibling-calls"),
-                          section(".text.volcomp_bench_tick"))) void
+                          section(".text.volcomp_bench_tick"))) bool
 volcomp_bench_tick(volcomp::ControlTick* engine,
                    volcomp::StepOutput* output,
                    const uint32_t* counters,
                    volcomp::PulsePlan* plans) {
-  engine->Run(counters);
+  const bool due = engine->RunSteps(counters);
   output->Plan(engine->targets(), plans);
+  return due;
+}
+
+// One compensation run (ControlTick::Compensate(): sensing, the refresh slice, the limiters): the
+// compensation_3axes row.
+extern "C" __attribute__((noinline, section(".text.volcomp_bench_compensate"))) void
+volcomp_bench_compensate(volcomp::ControlTick* engine) {
+  engine->Compensate();
 }
 
 // ---- The whole tick interrupt of the step/dir STM32G474 image ---------------------------------
@@ -90,6 +99,10 @@ IsrApp g_isr_app({&g_isr_io, &g_isr_lines, &g_isr_flash, nullptr, nullptr, nullp
 
 extern "C" __attribute__((noinline, section(".text.volcomp_bench_isr"))) void volcomp_bench_isr() {
   volcomp::firmware::stm32g4::RunTickIsr(volcomp::target::g_isr_app);
+}
+extern "C" __attribute__((noinline, section(".text.volcomp_bench_compensation_isr"))) void
+volcomp_bench_compensation_isr() {
+  volcomp::firmware::stm32g4::RunCompensationIsr(volcomp::target::g_isr_app);
 }
 
 namespace volcomp::target {
@@ -216,19 +229,29 @@ int BenchTick() {
   }
   uint32_t counters[3] = {0, 0, 0};
   PulsePlan plans[3];
-  // The tick's data path (ControlTick::Run and the step output stage), then the same pattern
-  // again with its one remaining call, the target refresh, as its own row (each call one sample;
-  // the limiter and the step generator are inlined into the walk over the axes).
+  // The tick's step path (ControlTick::RunSteps and the step output stage) and the compensation
+  // runs when due, the same pattern once per row: the step path, the compensation run, and the
+  // compensation's one remaining call, the target refresh (each call one sample; the limiter and
+  // the step generator are inlined into the walks over the axes).
   const char* const kRuns[][2] = {
       {"control_tick_3axes", "volcomp_bench_tick"},
+      {"compensation_3axes", "volcomp_bench_compensate"},
       {"tick_part_refresh", "_ZN7volcomp11Compensator14RefreshTargets"},
   };
+  uint32_t runs = 0;
   for (const auto& run : kRuns) {
     Scenario(run[0], run[1]);
     for (uint32_t i = 0; i < kTickPatternLength; ++i) {
       for (uint32_t a = 0; a < 3; ++a) counters[a] += TickCounterDelta(i, a);
-      volcomp_bench_tick(&engine, &output, counters, plans);
+      if (volcomp_bench_tick(&engine, &output, counters, plans)) {
+        volcomp_bench_compensate(&engine);
+        ++runs;
+      }
     }
+  }
+  if (runs * engine.compensation_divider() != 3 * kTickPatternLength) {
+    semihost::Write("bench: compensation runs not every compensation_divider() ticks\n");
+    return 1;
   }
   if (!engine.compensator().engaged()) {
     semihost::Write("bench: compensation not engaged\n");
@@ -256,23 +279,37 @@ int BenchTickIsr() {
   }
   g_isr_lines.homed = true;
   g_isr_app.Poll();  // the home edges: referenced at the next tick
-  for (int i = 0; i < 8; ++i) volcomp_bench_isr();
+  // The board's two interrupts as the NVIC would run them: the tick, then (when it pended it) the
+  // compensation run before anything of lower priority. QEMU's mps2-an386 NVIC has no IRQ 55, so
+  // the bench follows the tick's own word (StepTick()'s due flag, as RunTickIsr() acts on it).
+  const uint32_t divider = g_isr_app.control_tick().compensation_divider();
+  const auto tick = [&] {
+    volcomp_bench_isr();
+    if ((g_isr_app.control_tick().ticks() - 1u) % divider == 0) volcomp_bench_compensation_isr();
+  };
+  for (int i = 0; i < 24; ++i) tick();
   if (!g_isr_app.control_tick().compensator().engaged()) {
     semihost::Write("bench: tick ISR board not compensating\n");
     return 1;
   }
   constexpr uintptr_t kCounter[3] = {stm32g4::kTim2Base, stm32g4::kTim5Base, stm32g4::kTim3Base};
-  Scenario("tick_isr_3axes", "volcomp_bench_isr");
-  for (uint32_t i = 0; i < kTickPatternLength; ++i) {
-    for (uint32_t a = 0; a < 3; ++a) {
-      const uint32_t rate = cfg.axis[a].max_input_rate_hz / cfg.tick_hz;
-      const uint32_t phase = (i / 40 + a) % 3;
-      const bool back = phase == 1 || (phase == 2 && (i & 1) != 0);
-      volatile uint32_t& cnt = stm32g4::Reg(kCounter[a], stm32g4::tim::kCnt);
-      const uint32_t mask = cfg.axis[a].input_counter_bits == 32 ? 0xFFFFFFFFu : 0xFFFFu;
-      cnt = (cnt + (back ? 0u - rate : rate)) & mask;
+  const char* const kRuns[][2] = {
+      {"tick_isr_3axes", "volcomp_bench_isr"},
+      {"compensation_isr_3axes", "volcomp_bench_compensation_isr"},
+  };
+  for (const auto& run : kRuns) {
+    Scenario(run[0], run[1]);
+    for (uint32_t i = 0; i < kTickPatternLength; ++i) {
+      for (uint32_t a = 0; a < 3; ++a) {
+        const uint32_t rate = cfg.axis[a].max_input_rate_hz / cfg.tick_hz;
+        const uint32_t phase = (i / 40 + a) % 3;
+        const bool back = phase == 1 || (phase == 2 && (i & 1) != 0);
+        volatile uint32_t& cnt = stm32g4::Reg(kCounter[a], stm32g4::tim::kCnt);
+        const uint32_t mask = cfg.axis[a].input_counter_bits == 32 ? 0xFFFFFFFFu : 0xFFFFu;
+        cnt = (cnt + (back ? 0u - rate : rate)) & mask;
+      }
+      tick();
     }
-    volcomp_bench_isr();
   }
   const IsrIo& io = g_isr_app.tick_io();
   if (io.plan(0).count == 0 && io.plan(1).count == 0 && io.plan(2).count == 0) {

@@ -423,14 +423,16 @@ std::string ConsistencyProblem(const BoardSettings& s) {
     if (firmware::ValidateSettings(first).ok()) continue;
     const AxisConfig& ax = s.board.axis[n - 1];
     const std::string axis = std::string("[axis ") + ax.name + "]";
+    const uint32_t divider = CompensationDivider(s.board.tick_hz);
     if (!CorrectionLimiter::MakeParams(s.board.tick_hz, ax.max_correction_rate_steps_s,
-                                       ax.max_correction_accel_steps_s2)
+                                       ax.max_correction_accel_steps_s2, divider)
              .ok()) {
       return axis + ": max_rate " + std::to_string(ax.max_correction_rate_steps_s) +
              " and max_accel " + std::to_string(ax.max_correction_accel_steps_s2) +
              " do not fit tick_hz " + std::to_string(s.board.tick_hz) +
-             " (both above 0, max_accel at least tick_hz^2 / 2^32 and at most tick_hz^2 "
-             "steps/s2, max_rate at least max_accel / tick_hz)";
+             " (the compensation rate f = tick_hz / " + std::to_string(divider) +
+             ": both above 0, max_accel at least f^2 / 2^32 and below f^2 steps/s2, max_rate at "
+             "least max_accel / f)";
     }
     BoardSettings faster = first;
     faster.board.axis[n - 1].drive.max_rate_hz = 0xFFFFFFFFu;

@@ -1,9 +1,13 @@
 // The board application: wires the core (lib/) to the HAL and owns the two execution contexts.
 //
-//   Tick()  the control tick (timer ISR at BoardConfig::tick_hz): apply requests handed over by
-//           the main loop (table switch, references), read the input stage's counters, run the
-//           data path (ControlTick) to the targets, hand them to the output stage (step/dir
-//           pulses or CAN setpoints). Nothing else.
+//   Tick()  the control tick (timer ISR at BoardConfig::tick_hz) in its two parts (ControlTick's
+//           two rates): StepTick() every tick reads the input stage's counters, forms the targets
+//           (ControlTick::RunSteps()) and hands them to the output stage (step/dir pulses or CAN
+//           setpoints); CompensationTick() every ControlTick::compensation_divider() ticks applies
+//           requests handed over by the main loop (table switch, references) and runs the
+//           compensator (ControlTick::Compensate()). The STM32 step/dir image runs them as two
+//           interrupts (StepTick() at the highest priority, pending CompensationTick() below it);
+//           the other boards call Tick(). Nothing else.
 //   Poll()  the main loop: slow lines (home switches, enable, e-stop, drive alarm, write enable),
 //           status outputs, and the CANopen node (NMT, heartbeat, EMCY, SDO with the object
 //           dictionary of BoardObjects: configuration, table staging, diagnostics).
@@ -164,13 +168,36 @@ class BoardApp final : private BoardControl {
     return Start(s, options);
   }
 
-  /// The control tick. No clock read and no virtual call: its cost on the MCU is a static figure
-  /// (docs/mcu-target.md, tick_isr_3axes); TimedTick() measures it where a clock is cheap.
+  /// The control tick as a whole: StepTick(), then CompensationTick() when it is due (every
+  /// ControlTick::compensation_divider() ticks). No clock read and no virtual call: its cost on
+  /// the MCU is a static figure (docs/mcu-target.md); TimedTick() measures it where a clock is
+  /// cheap.
   void Tick() {
+    if (StepTick()) CompensationTick();
+  }
+
+  /// The step path of a tick (the STM32 step/dir board's tick interrupt, row tick_isr_3axes):
+  /// read the input stage's counters, targets = commanded + the published corrections, hand them
+  /// to the output stage. Returns true when CompensationTick() is due; the caller runs it after
+  /// this (in sequence, or in a lower-priority interrupt that this one pends).
+  bool StepTick() {
+    if (!started_) return false;
+    uint32_t counters[table::kMaxAxes];
+    dev_.tick_io->ReadCounters(counters);
+    const bool due = control_tick_.RunSteps(counters);
+    dev_.tick_io->Output(control_tick_);
+    return due;
+  }
+
+  /// The compensation run (the STM32 step/dir board's compensation interrupt, row
+  /// compensation_isr_3axes): apply requests handed over by the main loop (table switch,
+  /// references, enable and fault), then ControlTick::Compensate(). It preempts the main loop and
+  /// is never preempted by it (the hand-over's rule); StepTick() may preempt it.
+  void CompensationTick() {
     if (!started_) return;
-    // A table switch and referencing in the same tick share one rebase (the state is the same as
-    // rebasing after each: a rebase overwrites all the tracking state), which takes this tick's
-    // target refresh slice (Compensator::RequestRebase()): the rare tick costs no more than a
+    // A table switch and referencing in the same run share one rebase (the state is the same as
+    // rebasing after each: a rebase overwrites all the tracking state), which takes this run's
+    // target refresh slice (Compensator::RequestRebase()): the rare run costs no more than a
     // normal one.
     const PreparedTable* table = nullptr;
     bool rebase = false;
@@ -182,8 +209,8 @@ class BoardApp final : private BoardControl {
         control_tick_.compensator().ClearTable();
       }
     }
-    // The tick runs to completion without the main loop in between (the hand-over's rule), so a
-    // load and a store take a request: no exclusive-access retry loop in the tick.
+    // The run completes without the main loop in between (the hand-over's rule), so a load and a
+    // store take a request: no exclusive-access retry loop.
     const uint8_t refs = pending_reference_.load(std::memory_order_acquire);
     if (refs != 0) {
       pending_reference_.store(0, std::memory_order_relaxed);
@@ -196,10 +223,7 @@ class BoardApp final : private BoardControl {
     }
     control_tick_.compensator().SetEnabledAndFault(enabled_.load(std::memory_order_relaxed),
                                                    fault_flag_.load(std::memory_order_relaxed));
-    uint32_t counters[table::kMaxAxes];
-    dev_.tick_io->ReadCounters(counters);
-    control_tick_.Run(counters);
-    dev_.tick_io->Output(control_tick_);
+    control_tick_.Compensate();
   }
 
   /// Tick() timed with the clock (two clock reads, a virtual call each); the largest duration is

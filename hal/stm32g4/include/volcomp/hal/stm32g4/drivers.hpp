@@ -13,7 +13,7 @@
 // The board application configures StepIo, StmTickTimer and StmFdcan from the settings in force
 // (BoardApp::Start); each programs what config_math computes for them. The clock tree setup is a
 // free function. Everything here is for the main loop except StepIo::ReadCounters/Apply and
-// TickTimerAcknowledge, which the tick ISR calls (and which live in CCM SRAM).
+// TickTimerAcknowledge and PendCompensation, which the tick ISR calls (and which live in CCM SRAM).
 #pragma once
 
 #include <cstdint>
@@ -63,6 +63,12 @@ class StmTickTimer final : public hal::TickTimer {
   bool running_ = false;
 };
 void TickTimerAcknowledge();
+/// The compensation interrupt (BoardApp::CompensationTick()): TIM7_DAC's vector (IRQ 55; TIM7 and
+/// the DACs are unused on this board) taken as a software interrupt one priority level below the
+/// tick's. StmTickTimer enables it with the tick and clears it when the tick stops; the tick ISR
+/// pends it when a compensation run is due.
+inline constexpr uint32_t kCompensationIrq = 55;
+void PendCompensation();
 
 /// Step inputs and outputs of up to three axes (X, Y, Z; see docs/mcu-target.md for pins).
 class StepIo {

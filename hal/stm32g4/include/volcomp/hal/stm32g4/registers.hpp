@@ -160,7 +160,8 @@ inline constexpr uint32_t kRamStdFilter = 0x000, kRamExtFilter = 0x070, kRamRxFi
 // ---- Cortex-M4 system control (ARMv7-M ARM B3.2, Cortex-M4 Generic User Guide §4)
 // ----------------
 namespace scb {
-inline constexpr uintptr_t kNvicIser = 0xE000E100u, kNvicIcpr = 0xE000E280u, kNvicIpr = 0xE000E400u;
+inline constexpr uintptr_t kNvicIser = 0xE000E100u, kNvicIspr = 0xE000E200u,
+                           kNvicIcpr = 0xE000E280u, kNvicIpr = 0xE000E400u;
 inline constexpr uintptr_t kScbVtor = 0xE000ED08u, kScbAircr = 0xE000ED0Cu;
 }  // namespace scb
 
