@@ -18,9 +18,10 @@ struct InputTimer {
   Pin ti2;  // step (step/dir), CW (cw/ccw) or B (quadrature)
   uint8_t af;
 };
-// The timer tables are read by the tick (StepIo::ReadCounters/Apply): tick data in CCM SRAM
-// (zero wait states; from flash a read may wait 4 cycles on an ART data-cache miss).
-// Counter widths: kInputCounterBits (config_math.hpp).
+// The input timer table is read by the tick (StepIo::ReadCounters): tick data in CCM SRAM (zero
+// wait states; from flash a read may wait 4 cycles on an ART data-cache miss); the output timers'
+// addresses are copied into the StepIo (Configure()). Counter widths: kInputCounterBits
+// (config_math.hpp).
 __attribute__((section(".ccm_data.step_io_input"))) constexpr InputTimer kInput[StepIo::kAxes] = {
     {kTim2Base, {0, 15}, {1, 3}, 1},  // X: TIM2 CH1 PA15, CH2 PB3 (AF1), 32-bit
     {kTim5Base, {0, 0}, {0, 1}, 2},   // Y: TIM5 CH1 PA0, CH2 PA1 (AF2), 32-bit
@@ -34,8 +35,7 @@ struct OutputTimer {
   uint8_t af;
   uint8_t trigger_itr;  // ITR input carrying TIM6 TRGO (RM0440 "internal trigger connection")
 };
-__attribute__((
-    section(".ccm_data.step_io_output"))) constexpr OutputTimer kOutput[StepIo::kAxes] = {
+constexpr OutputTimer kOutput[StepIo::kAxes] = {
     {kTim1Base, {0, 8}, {0, 9}, 6, 0},     // X: TIM1 CH1 PA8, CH2 PA9 (AF6)
     {kTim8Base, {2, 6}, {2, 7}, 4, 0},     // Y: TIM8 CH1 PC6, CH2 PC7 (AF4)
     {kTim15Base, {1, 14}, {1, 15}, 1, 0},  // Z: TIM15 CH1 PB14, CH2 PB15 (AF1)
@@ -205,6 +205,7 @@ Status StepIo::Configure(const BoardConfig& config) {
 
     const OutputTimer& out = kOutput[a];
     cw_ccw_[a] = setup->cw_ccw_output[a];
+    output_base_[a] = out.base;
     Reg(out.base, tim::kCr1) = tim::kCr1Opm | tim::kCr1Arpe;
     Reg(out.base, tim::kPsc) = 0;
     Reg(out.base, tim::kRcr) = 0;
@@ -225,32 +226,7 @@ void StepIo::ReadCounters(uint32_t* counters) {
 }
 
 void StepIo::Apply(const PulsePlan* plans) {
-  for (uint8_t a = 0; a < axes_; ++a) {
-    // Configure() accepted only drive timing whose every plan fits the timer (PlanStepIo).
-    PulseTimerSettings settings;
-    PlanToTimerFitted(plans[a], &settings);
-    const PulseTimerSettings* const s = &settings;
-    if (!s->run) continue;
-    const uintptr_t t = kOutput[a].base;
-    // First period into the active registers (UG while stopped), the rest into the preloads;
-    // the slave trigger (next tick boundary) starts the counter.
-    Reg(t, tim::kArr) = s->first_arr;
-    Reg(t, tim::kCcr1) = s->pulse ? s->first_ccr : 0xFFFFu;
-    Reg(t, tim::kCcr2) = s->dir_ccr;
-    Reg(t, tim::kRcr) = s->rcr;
-    uint32_t ccmr1 = tim::Ocm(0, tim::kOcmPwm2) | tim::OcPreload(0);
-    if (s->dir_change) {
-      ccmr1 |= tim::Ocm(1, s->negative ? tim::kOcmActiveOnMatch : tim::kOcmInactiveOnMatch);
-    }
-    Reg(t, tim::kCcmr1) = ccmr1;
-    Reg(t, tim::kCnt) = 0;
-    Reg(t, tim::kEgr) = tim::kEgrUg;
-    Reg(t, tim::kSr) = 0;
-    Reg(t, tim::kArr) = s->arr;
-    Reg(t, tim::kCcr1) = s->pulse ? s->ccr : 0xFFFFu;
-    // CW/CCW: the pulse goes to CH1 (CW) or CH2 (CCW); the other channel stays idle.
-    if (cw_ccw_[a]) Reg(t, tim::kCcer) = s->negative ? tim::CcE(2) : tim::CcE(1);
-  }
+  for (uint8_t a = 0; a < axes_; ++a) ApplyAxis(a, plans[a]);
 }
 
 // ---- Slow lines

@@ -32,15 +32,17 @@ class StepOutput {
   /// the walk over the axes becomes part of the tick routine that calls it (one routine, one
   /// prologue); each axis is one call of StepGenerator::PlanTick().
   __attribute__((always_inline)) void Plan(const int32_t* target_steps, PulsePlan* plans) {
-    // Pointer walk, overrun count in a register: few live registers around the calls.
-    uint32_t overruns = overruns_;
-    Axis* const end = axis_ + axis_count_;
-    for (Axis* ax = axis_; ax != end; ++ax, ++target_steps, ++plans) {
-      const uint32_t left = ax->generator.PlanTick(*target_steps, plans);
-      ax->max_backlog = left > ax->max_backlog ? left : ax->max_backlog;
-      overruns += left > ax->generator.max_pulses_per_tick() ? 1u : 0u;
-    }
-    overruns_ = overruns;
+    Walk(
+        target_steps, [plans](uint32_t a, PulsePlan&) -> PulsePlan& { return plans[a]; },
+        [](uint32_t, const PulsePlan&) {});
+  }
+  /// Plan() handing each axis's plan to `sink(a, plan)` as soon as it is made, in axis order
+  /// (a step I/O that programs its timers per axis takes the plan from registers: no plan array
+  /// between planning and output).
+  template <class Sink>
+  __attribute__((always_inline)) void PlanEach(const int32_t* target_steps, Sink&& sink) {
+    Walk(
+        target_steps, [](uint32_t, PulsePlan& local) -> PulsePlan& { return local; }, sink);
   }
 
   uint8_t axis_count() const { return axis_count_; }
@@ -61,6 +63,23 @@ class StepOutput {
     StepGenerator generator;
     uint32_t max_backlog = 0;
   };
+  // The walk of Plan() and PlanEach(): axis a's plan goes to slot(a, local), then to sink(a, plan).
+  template <class Slot, class Sink>
+  __attribute__((always_inline)) void Walk(const int32_t* target_steps, Slot&& slot, Sink&& sink) {
+    // Pointer walk, overrun count in a register: few live registers around the calls.
+    uint32_t overruns = overruns_;
+    Axis* const end = axis_ + axis_count_;
+    uint32_t a = 0;
+    for (Axis* ax = axis_; ax != end; ++ax, ++target_steps, ++a) {
+      PulsePlan local;
+      PulsePlan& plan = slot(a, local);
+      const uint32_t left = ax->generator.PlanTick(*target_steps, &plan);
+      ax->max_backlog = left > ax->max_backlog ? left : ax->max_backlog;
+      overruns += left > ax->generator.max_pulses_per_tick() ? 1u : 0u;
+      sink(a, plan);
+    }
+    overruns_ = overruns;
+  }
   uint8_t axis_count_ = 0;
   uint32_t overruns_ = 0;
   Axis axis_[table::kMaxAxes];

@@ -311,8 +311,8 @@ int BenchTickIsr() {
       tick();
     }
   }
-  const IsrIo& io = g_isr_app.tick_io();
-  if (io.plan(0).count == 0 && io.plan(1).count == 0 && io.plan(2).count == 0) {
+  const StepOutput& out = g_isr_app.tick_io().output();
+  if (out.position(0) == 0 && out.position(1) == 0 && out.position(2) == 0) {
     semihost::Write("bench: tick ISR planned no pulses\n");
     return 1;
   }

@@ -15,6 +15,12 @@
 //       Program the output pulse timers with this tick's plans (one per axis); times in the plan
 //       are pulse-clock units from the start of the tick being planned.
 //
+// and optionally
+//
+//   void ApplyAxis(uint32_t axis, const volcomp::PulsePlan& plan);
+//       Apply() for one axis; the output stage then hands over each plan as it is made
+//       (HasApplyAxis<T>), and Apply() is the same as ApplyAxis() for every axis in order.
+//
 // ReadCounters and Apply are called from the control tick only (and ReadCounters from the main
 // loop while the tick is stopped, to latch the counters at start). IsStepIo<T> checks the shape at
 // compile time.
@@ -39,5 +45,12 @@ struct IsStepIo<
                 decltype(std::declval<T&>().Apply(static_cast<const PulsePlan*>(nullptr))),
                 decltype(static_cast<Status>(std::declval<T&>().Configure(
                     std::declval<const BoardConfig&>())))>> : std::true_type {};
+
+template <typename T, typename = void>
+struct HasApplyAxis : std::false_type {};
+template <typename T>
+struct HasApplyAxis<T,
+                    std::void_t<decltype(std::declval<T&>().ApplyAxis(
+                        uint32_t{0}, std::declval<const PulsePlan&>()))>> : std::true_type {};
 
 }  // namespace volcomp::hal

@@ -181,7 +181,7 @@ class BoardApp final : private BoardControl {
   /// to the output stage. Returns true when CompensationTick() is due; the caller runs it after
   /// this (in sequence, or in a lower-priority interrupt that this one pends).
   bool StepTick() {
-    if (!started_) return false;
+    if (__builtin_expect(!started_, 0)) return false;
     uint32_t counters[table::kMaxAxes];
     dev_.tick_io->ReadCounters(counters);
     const bool due = control_tick_.RunSteps(counters);

@@ -32,9 +32,18 @@ class StepDirIo {
     return output_.Configure(config);
   }
   void ReadCounters(uint32_t* counters) { step_io_->ReadCounters(counters); }
+  /// Plans this tick's pulses toward the targets and programs the outputs: axis by axis where the
+  /// step I/O has ApplyAxis() (the STM32: each plan goes from registers to its timer), else all
+  /// plans, then Apply().
   __attribute__((always_inline)) void Output(const ControlTick& tick) {
-    output_.Plan(tick.targets(), plans_);
-    step_io_->Apply(plans_);
+    if constexpr (hal::HasApplyAxis<StepIo>::value) {
+      StepIo* const io = step_io_;
+      output_.PlanEach(tick.targets(),
+                       [io](uint32_t a, const PulsePlan& plan) { io->ApplyAxis(a, plan); });
+    } else {
+      output_.Plan(tick.targets(), plans_);
+      step_io_->Apply(plans_);
+    }
   }
   OutputStatus output_status() const {
     OutputStatus s;
@@ -48,14 +57,12 @@ class StepDirIo {
 
   /// The output stage (positions, backlog, generators).
   const StepOutput& output() const { return output_; }
-  /// The plans of the last tick (what went to StepIo::Apply).
-  const PulsePlan& plan(uint8_t a) const { return plans_[a]; }
   StepIo& step_io() { return *step_io_; }
 
  private:
   StepIo* step_io_;
   StepOutput output_;
-  PulsePlan plans_[table::kMaxAxes];
+  PulsePlan plans_[table::kMaxAxes];  // Output()'s plans for Apply() (step I/O without ApplyAxis)
 };
 
 }  // namespace volcomp::firmware

@@ -24,6 +24,7 @@
 #include "volcomp/hal/flash.hpp"
 #include "volcomp/hal/slow_io.hpp"
 #include "volcomp/hal/stm32g4/config_math.hpp"
+#include "volcomp/hal/stm32g4/registers.hpp"
 #include "volcomp/hal/tick_timer.hpp"
 #include "volcomp/step_generator.hpp"
 
@@ -80,12 +81,44 @@ class StepIo {
   Status Configure(const BoardConfig& config);
   void ReadCounters(uint32_t* counters);
   void Apply(const PulsePlan* plans);
+  /// Apply() for axis `a` alone (a < the configured axes): the step output stage calls it as it
+  /// makes each axis's plan (StepDirIo::Output()), so the plan goes from registers to the timer.
+  /// Always inlined.
+  inline void ApplyAxis(uint32_t a, const PulsePlan& plan);
 
  private:
   uint8_t axes_ = 0;
   uint32_t tick_clocks_ = 0;
   bool cw_ccw_[kAxes] = {};
+  uintptr_t output_base_[kAxes] = {};  // the axes' output timers (Configure())
 };
+
+__attribute__((always_inline)) inline void StepIo::ApplyAxis(uint32_t a, const PulsePlan& plan) {
+  // Configure() accepted only drive timing whose every plan fits the timer (PlanStepIo).
+  PulseTimerSettings settings;
+  PlanToTimerFitted(plan, &settings);
+  const PulseTimerSettings* const s = &settings;
+  if (!s->run) return;
+  const uintptr_t t = output_base_[a];
+  // First period into the active registers (UG while stopped), the rest into the preloads;
+  // the slave trigger (next tick boundary) starts the counter.
+  Reg(t, tim::kArr) = s->first_arr;
+  Reg(t, tim::kCcr1) = s->pulse ? s->first_ccr : 0xFFFFu;
+  Reg(t, tim::kCcr2) = s->dir_ccr;
+  Reg(t, tim::kRcr) = s->rcr;
+  // CH2 (direction): set or cleared on the match at dir_ccr when the direction changes, else
+  // frozen (mode 0). Selects, no branch.
+  const uint32_t dir_mode = s->negative ? tim::kOcmActiveOnMatch : tim::kOcmInactiveOnMatch;
+  Reg(t, tim::kCcmr1) =
+      tim::Ocm(0, tim::kOcmPwm2) | tim::OcPreload(0) | tim::Ocm(1, s->dir_change ? dir_mode : 0u);
+  Reg(t, tim::kCnt) = 0;
+  Reg(t, tim::kEgr) = tim::kEgrUg;
+  Reg(t, tim::kSr) = 0;
+  Reg(t, tim::kArr) = s->arr;
+  Reg(t, tim::kCcr1) = s->pulse ? s->ccr : 0xFFFFu;
+  // CW/CCW: the pulse goes to CH1 (CW) or CH2 (CCW); the other channel stays idle.
+  if (__builtin_expect(cw_ccw_[a], 0)) Reg(t, tim::kCcer) = s->negative ? tim::CcE(2) : tim::CcE(1);
+}
 
 class StmSlowIo final : public hal::SlowIo {
  public:
