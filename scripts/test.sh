@@ -37,6 +37,8 @@ toolchain/size-report.sh build/arm-m4f/firmware/stm32g4/volcomp_stm32g474.elf \
   build/arm-m4f/firmware/stm32g4/volcomp_stm32g474_gateway.elf >&2
 echo "== Cortex-M4 cycle table (toolchain/cyclemodel/cm4cost.py)" >&2
 cat build/arm-m4f/tests/target/cycle_budgets.md >&2
+echo "== main loop under an SDO block download (tests/target main_loop_cycles)" >&2
+cat build/arm-m4f/tests/target/main_loop_cycles.md >&2
 if [[ $fast -eq 0 ]]; then
   # Tests that start other processes (python3-can, user-mode-linux, LinuxCNC) run once, in the release
   # build; the sanitizer build runs everything in-process.

@@ -260,5 +260,9 @@ SdoAbort Node::DoDomainWriteData(const uint8_t* data, uint32_t size) {
   return app_->DomainWriteData(data, size);
 }
 SdoAbort Node::DoEndDomainWrite(SdoAbort outcome) { return app_->EndDomainWrite(outcome); }
+// The application's pacing of a domain download (how much it takes between flushes, and its
+// flush steps), so the server sizes sub-blocks and holds acknowledgements as it asks.
+uint32_t Node::DoDomainWriteWindow() { return app_->DomainWriteWindow(); }
+SdoAbort Node::DoDomainWriteFlush(bool* done) { return app_->DomainWriteFlush(done); }
 
 }  // namespace volcomp::canopen

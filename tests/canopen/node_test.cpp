@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <set>
 
 #include "frames.hpp"
@@ -57,6 +58,36 @@ TEST(Node, BootUpHeartbeatAndNmtStates) {
   EXPECT_EQ(n.TakeResetRequest(), canopen::ResetRequest::kNode);
   n.OnFrame(F(0x000, "81"), 340);  // malformed NMT (DLC 1)
   EXPECT_EQ(n.malformed(), 1u);
+}
+
+// The node passes the application's pacing of a domain download on to its SDO server (CiA 301
+// block download): the sub-block size follows the application's window (300 bytes: 42 segments of
+// 7), and a sub-block's acknowledgement waits until the application's flush reports done (here
+// after 3 steps, one per Poll()). Without it the table store programs flash in the receive path.
+TEST(Node, DomainBlockDownloadFollowsTheApplicationsPacing) {
+  testing::TestValues v;
+  v.window = 300;
+  v.flush_steps = 3;
+  canopen::Node n;
+  n.Start(0x05, &v, 0, canopen::CommunicationParameters{0, 0});
+  Drain(n);
+  // Initiate: ccs 6, CRC, size indicated (400 bytes), 0x2100:0.
+  n.OnFrame(F(0x605, "C600210090010000"), 1);
+  // scs 5 with CRC support, 0x2100:0, blksize 42.
+  EXPECT_EQ(Drain(n), Frames{"585#A40021002A000000"});
+  for (int seq = 1; seq <= 42; ++seq) {
+    char data[17];
+    std::snprintf(data, sizeof data, "%02X%014X", seq, 0);
+    n.OnFrame(F(0x605, data), 2);
+  }
+  n.Poll(2);
+  n.Poll(2);
+  EXPECT_EQ(Drain(n), Frames{});  // two flush steps: still holding the acknowledgement
+  EXPECT_EQ(v.flushes, 2);
+  n.Poll(3);
+  EXPECT_EQ(v.flushes, 3);
+  EXPECT_EQ(Drain(n), Frames{"585#A22A2A0000000000"});  // 42 segments taken, next blksize 42
+  EXPECT_EQ(v.domain.size(), 41u * 7u);  // the last segment of a sub-block is held back
 }
 
 TEST(Node, EmcyErrorRegisterAndHistory) {

@@ -22,6 +22,11 @@ class TestValues : public canopen::ObjectValues {
   canopen::SdoAbort fail_write_with = canopen::SdoAbort::kNone;  // returned by Write if set
   // Returned by DomainWriteData if set (the application refusing data in mid-transfer).
   canopen::SdoAbort fail_domain_data_with = canopen::SdoAbort::kNone;
+  // Pacing (ObjectValues::DomainWriteWindow/DomainWriteFlush): the window reported, and how many
+  // flush steps each flush takes until it reports done; flush calls counted.
+  uint32_t window = 0;
+  int flush_steps = 1;
+  int flushes = 0;
 
  private:
   canopen::SdoAbort DoRead(const canopen::ObjectEntry& e,
@@ -66,6 +71,12 @@ class TestValues : public canopen::ObjectValues {
   canopen::SdoAbort DoDomainWriteData(const uint8_t* data, uint32_t size) override {
     if (canopen::Failed(fail_domain_data_with)) return fail_domain_data_with;
     domain.insert(domain.end(), data, data + size);
+    return canopen::SdoAbort::kNone;
+  }
+  uint32_t DoDomainWriteWindow() override { return window; }
+  canopen::SdoAbort DoDomainWriteFlush(bool* done) override {
+    ++flushes;
+    *done = flushes % flush_steps == 0;
     return canopen::SdoAbort::kNone;
   }
   canopen::SdoAbort DoEndDomainWrite(canopen::SdoAbort outcome) override {

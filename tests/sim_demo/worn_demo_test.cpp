@@ -15,11 +15,14 @@ namespace {
 
 using volcomp::testing::kSanitized;
 
-// `--machine worn --quick` (a smaller run under sanitizers).
+// `--machine worn --quick` (without the benchmark moves under sanitizers). 50 random points in
+// both builds: with 30 the sag check below (the lattice pass lowers the true maximum by 1 um)
+// depended on the seed (seeds 1 and 5 of 1-7 failed the worn goals, seed 7 before the two-rate
+// tick); with 50, seeds 1-8 pass.
 DemoOptions WornQuick() {
   DemoOptions o;
   UseWornMachine(&o);
-  o.random_points = kSanitized ? 30 : 50;
+  o.random_points = 50;
   o.diagonal_targets = 6;
   o.gost_targets = 6;
   o.benchmark_moves = kSanitized ? 0 : 2;

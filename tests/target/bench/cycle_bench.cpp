@@ -6,6 +6,7 @@
 // after that mark to the scenario. Results are also checked for sanity (exit code != 0 on error).
 #include <cstdint>
 
+#include "bench_support.hpp"
 #include "cases.hpp"
 #include "semihost.hpp"
 #include "volcomp/control_tick.hpp"
@@ -17,11 +18,6 @@
 #include "volcomp/hal/stm32g4/registers.hpp"
 #include "volcomp/step_output.hpp"
 #include "volcomp/table_image.hpp"
-
-extern "C" __attribute__((noinline, section(".text.volcomp_bench_mark"))) void
-volcomp_bench_mark() {
-  __asm volatile("" ::: "memory");
-}
 
 // The tick's step path of a step/dir board as BoardApp::StepTick() runs it between reading the
 // counters and StepIo::Apply(): ControlTick::RunSteps() (counters to targets), then the step
@@ -56,38 +52,8 @@ volcomp_bench_compensate(volcomp::ControlTick* engine) {
 namespace volcomp::target {
 namespace {
 
-// Table flash in RAM: two 16 KB banks of 2 KB sectors (NOR semantics are not needed here).
-class BenchFlash final : public hal::Flash {
- private:
-  uint32_t DoSize() const override { return sizeof bytes_; }
-  uint32_t DoSectorSize() const override { return 2048; }
-  uint32_t DoProgramUnit() const override { return 8; }
-  Status DoErase(uint32_t offset) override {
-    for (uint32_t i = 0; i < 2048; ++i) bytes_[offset + i] = 0xFF;
-    return Status::Ok();
-  }
-  Status DoProgram(uint32_t offset, const uint8_t* data, uint32_t n) override {
-    for (uint32_t i = 0; i < n; ++i) bytes_[offset + i] &= data[i];
-    return Status::Ok();
-  }
-  const uint8_t* DoMap(uint32_t offset) const override { return bytes_ + offset; }
-  alignas(8) uint8_t bytes_[32768];
-};
-
-// Home switches closed once `homed`, no fault lines, no enable wiring.
-class BenchLines final : public hal::SlowIo {
- public:
-  bool homed = false;
-
- private:
-  bool DoRead(hal::InputLine line) override {
-    return homed && static_cast<uint8_t>(line) < static_cast<uint8_t>(hal::InputLine::kEnable);
-  }
-  void DoWrite(hal::OutputLine, bool) override {}
-};
-
-using IsrIo = firmware::StepDirIo<stm32g4::StepIo>;
-using IsrApp = firmware::BoardApp<IsrIo>;
+using IsrIo = BenchIo;
+using IsrApp = BenchApp;
 stm32g4::StepIo g_isr_step_io;
 IsrIo g_isr_io(&g_isr_step_io);
 BenchLines g_isr_lines;
@@ -110,15 +76,6 @@ namespace {
 
 alignas(8) uint8_t g_image[kMaxCaseImage];
 volatile int32_t g_sink;
-
-void Scenario(const char* name, const char* symbol) {
-  semihost::Write("SCENARIO ");
-  semihost::Write(name);
-  semihost::Write(" ");
-  semihost::Write(symbol);
-  semihost::Write("\n");
-  volcomp_bench_mark();
-}
 
 // The whole lookup of each element type (GridLookup::Lookup dispatches to these: the three parts
 // the tick spreads over ticks, run back to back).

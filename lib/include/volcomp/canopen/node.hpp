@@ -139,6 +139,8 @@ class Node : private ObjectValues {
   SdoAbort DoBeginDomainWrite(const ObjectEntry& e, uint32_t size) override;
   SdoAbort DoDomainWriteData(const uint8_t* data, uint32_t size) override;
   SdoAbort DoEndDomainWrite(SdoAbort outcome) override;
+  uint32_t DoDomainWriteWindow() override;
+  SdoAbort DoDomainWriteFlush(bool* done) override;
   bool ReadCommunication(const ObjectEntry& e, uint32_t* value) const;
   void Boot(uint32_t now_ms);
   void QueueUrgent(const CanFrame& f);

@@ -1,0 +1,254 @@
+// Main-loop cycle bench (QEMU mps2-an386): the board application's main loop receiving a table by
+// SDO block download (CiA 301), one frame per pass, as on the STM32G474 reference board (polled
+// FDCAN receive FIFO: docs/mcu-target.md, "Main loop under the tick"). The image links every
+// function into the traced range (mps2_an386.ld with bench-extra-hot.ld from hot-extra/all), and
+// toolchain/cyclemodel/cm4cost.py prices each pass from the trace (--trace-only: the main loop has
+// virtual calls, so it has no static bound). Rows, each one call of its wrapper per pass:
+//   main_loop_segment  a pass that receives one block segment (the FIFO's per-frame path: node,
+//                      SDO server with its CRC-16, board objects, the table store's buffer)
+//   main_loop_pass     a pass that receives nothing (while the server holds a sub-block's
+//                      acknowledgement: one flush step of the store, programming or a page erase)
+//   main_loop_request  a pass that receives any other request (expedited writes, block initiate
+//                      and end)
+// The whole download runs once per row (each after its scenario mark); the image exits non-zero
+// if a download does not complete, so a row never prices a broken transfer.
+#include <cstdint>
+
+#include "bench_support.hpp"
+#include "cases.hpp"
+#include "semihost.hpp"
+#include "volcomp/canopen/board_protocol.hpp"
+#include "volcomp/canopen/node_defaults.hpp"
+#include "volcomp/canopen/object_dictionary.hpp"
+#include "volcomp/firmware/board_app.hpp"
+#include "volcomp/firmware/step_dir_io.hpp"
+#include "volcomp/hal/stm32g4/drivers.hpp"
+
+namespace volcomp::target {
+namespace {
+
+// The bus side of FDCAN1: one received frame at a time (the bench delivers one per pass), sent
+// frames collected for the client.
+class BenchCan final : public hal::CanPort {
+ public:
+  void Deliver(const CanFrame& f) {
+    rx_ = f;
+    have_rx_ = true;
+  }
+  bool TakeSent(CanFrame* f) {
+    if (sent_count_ == 0) return false;
+    *f = sent_[0];
+    for (uint32_t i = 1; i < sent_count_; ++i) sent_[i - 1] = sent_[i];
+    --sent_count_;
+    return true;
+  }
+
+ private:
+  Status DoSend(const CanFrame& frame) override {
+    if (sent_count_ == kSent) return Error::kFull;
+    sent_[sent_count_++] = frame;
+    return Status::Ok();
+  }
+  bool DoReceive(CanFrame* frame) override {
+    if (!have_rx_) return false;
+    *frame = rx_;
+    have_rx_ = false;
+    return true;
+  }
+  Status DoSetBitrate(uint32_t) override { return Status::Ok(); }
+  static constexpr uint32_t kSent = 8;
+  CanFrame rx_;
+  bool have_rx_ = false;
+  CanFrame sent_[kSent];
+  uint32_t sent_count_ = 0;
+};
+
+// Time advances one frame time (111 us at 1 Mbit/s) per pass.
+class BenchClock final : public hal::Clock {
+ public:
+  void Advance(uint64_t ns) { now_ns_ += ns; }
+
+ private:
+  uint64_t DoNowNs() override { return now_ns_; }
+  uint64_t now_ns_ = 0;
+};
+
+stm32g4::StepIo g_step_io;
+BenchIo g_io(&g_step_io);
+BenchLines g_lines;  // never homed
+BenchFlash g_flash;
+BenchCan g_can;
+BenchClock g_clock;
+BenchApp g_app({&g_io, &g_lines, &g_flash, nullptr, &g_can, &g_clock, nullptr});
+// The payload: a table image followed by filler, 6000 bytes (more than the store takes between
+// flushes, 1017 bytes, and across 2 KB pages: the download runs flush steps, programming and
+// erases, between its sub-blocks). Staging checks no content before verification.
+constexpr uint32_t kPayloadBytes = 6000;
+static_assert(kPayloadBytes >= kMaxCaseImage, "the payload starts with a whole table image");
+alignas(8) uint8_t g_image[kPayloadBytes];
+
+}  // namespace
+}  // namespace volcomp::target
+
+// One main-loop pass per call, by what it received (the rows above).
+extern "C" __attribute__((noinline, section(".text.volcomp_bench_poll_segment"))) void
+volcomp_bench_poll_segment() {
+  volcomp::target::g_app.Poll();
+}
+extern "C" __attribute__((noinline, section(".text.volcomp_bench_poll_pass"))) void
+volcomp_bench_poll_pass() {
+  volcomp::target::g_app.Poll();
+}
+extern "C" __attribute__((noinline, section(".text.volcomp_bench_poll_request"))) void
+volcomp_bench_poll_request() {
+  volcomp::target::g_app.Poll();
+}
+
+namespace volcomp::target {
+namespace {
+
+constexpr uint8_t kNode = canopen::kDefaultNodeId;
+constexpr uint64_t kFrameNs = 111000;
+
+// CRC-16/XMODEM (CiA 301 block transfer), bit by bit.
+uint16_t Crc16(const uint8_t* d, uint32_t n) {
+  uint16_t crc = 0;
+  for (uint32_t i = 0; i < n; ++i) {
+    crc = static_cast<uint16_t>(crc ^ (d[i] << 8));
+    for (int k = 0; k < 8; ++k) {
+      crc = static_cast<uint16_t>((crc & 0x8000) ? (crc << 1) ^ 0x1021 : crc << 1);
+    }
+  }
+  return crc;
+}
+
+CanFrame Request() {
+  CanFrame f;
+  f.id = 0x600u + kNode;
+  f.dlc = 8;
+  return f;
+}
+
+CanFrame ExpeditedWrite(uint16_t index, uint32_t value, uint8_t bytes) {
+  CanFrame f = Request();
+  f.data[0] = static_cast<uint8_t>(0x23 | ((4 - bytes) << 2));  // expedited, size indicated
+  f.data[1] = static_cast<uint8_t>(index);
+  f.data[2] = static_cast<uint8_t>(index >> 8);
+  for (int i = 0; i < 4; ++i) f.data[4 + i] = static_cast<uint8_t>(value >> (8 * i));
+  return f;
+}
+
+enum class Pass { kSegment, kNothing, kRequest };
+
+void RunPass(Pass p) {
+  g_clock.Advance(kFrameNs);
+  if (p == Pass::kSegment) volcomp_bench_poll_segment();
+  if (p == Pass::kNothing) volcomp_bench_poll_pass();
+  if (p == Pass::kRequest) volcomp_bench_poll_request();
+}
+
+// Sends `f` and runs passes until the server answers (at most `limit` passes); returns the answer
+// (data[0] == 0x80 for an abort, 0 when none came).
+CanFrame Transact(const CanFrame* f, Pass kind, uint32_t limit) {
+  if (f != nullptr) g_can.Deliver(*f);
+  RunPass(kind);
+  for (uint32_t i = 0;; ++i) {
+    CanFrame r;
+    while (g_can.TakeSent(&r)) {
+      if (r.id == 0x580u + kNode) return r;
+    }
+    if (i == limit) return CanFrame();
+    RunPass(Pass::kNothing);
+  }
+}
+
+// One block download of g_image[0, size) into 0x2100:0 after unlocking and clearing the staging
+// bank; true when the server confirmed its end.
+bool Download(uint32_t size) {
+  CanFrame f = ExpeditedWrite(0x2110, canopen::kUnlockSignature, 4);
+  if (Transact(&f, Pass::kRequest, 100).data[0] != 0x60) return false;
+  f = ExpeditedWrite(0x2101, static_cast<uint32_t>(canopen::TableCommand::kClear), 1);
+  if (Transact(&f, Pass::kRequest, 10000).data[0] != 0x60) return false;
+  f = Request();
+  f.data[0] = 0xC6;  // block download initiate: CRC supported, size indicated
+  f.data[1] = 0x00;
+  f.data[2] = 0x21;  // 0x2100:0
+  for (int i = 0; i < 4; ++i) f.data[4 + i] = static_cast<uint8_t>(size >> (8 * i));
+  CanFrame r = Transact(&f, Pass::kRequest, 100);
+  if ((r.data[0] & 0xE3) != 0xA0) return false;
+  uint32_t blksize = r.data[4], pos = 0, last_len = 0;
+  while (pos < size) {
+    const uint32_t block_start = pos;
+    uint32_t seq = 0;
+    r = CanFrame();
+    while (seq < blksize && pos < size) {
+      CanFrame s = Request();
+      const uint32_t n = size - pos < 7 ? size - pos : 7;
+      ++seq;
+      s.data[0] = static_cast<uint8_t>(seq | (pos + n == size ? 0x80u : 0u));
+      for (uint32_t i = 0; i < n; ++i) s.data[1 + i] = g_image[pos + i];
+      pos += n;
+      last_len = n;
+      const bool block_end = seq == blksize || pos == size;
+      if (!block_end) {
+        g_can.Deliver(s);
+        RunPass(Pass::kSegment);
+        continue;
+      }
+      r = Transact(&s, Pass::kSegment, 100000);  // the ack may wait for the paced programming
+    }
+    if (r.data[0] != 0xA2 || r.data[1] != seq || r.data[2] == 0) return false;
+    (void)block_start;
+    blksize = r.data[2];
+    RunPass(Pass::kNothing);  // the bus gap before the client's next sub-block
+  }
+  f = Request();
+  f.data[0] = static_cast<uint8_t>(0xC1 | ((7 - last_len) << 2));
+  const uint16_t crc = Crc16(g_image, size);
+  f.data[1] = static_cast<uint8_t>(crc);
+  f.data[2] = static_cast<uint8_t>(crc >> 8);
+  r = Transact(&f, Pass::kRequest, 100000);
+  return r.data[0] == 0xA1;
+}
+
+}  // namespace
+}  // namespace volcomp::target
+
+int main() {
+  using namespace volcomp;
+  using namespace volcomp::target;
+  BoardConfig cfg = TickBoardConfig();
+  for (uint8_t a = 0; a < stm32g4::kStepAxes; ++a) {
+    cfg.axis[a].input_counter_bits = stm32g4::kInputCounterBits[a];
+  }
+  firmware::AppOptions options;
+  options.use_enable_input = false;
+  const uint32_t image = BuildTickImage(g_image, sizeof g_image);
+  for (uint32_t i = image; i < kPayloadBytes; ++i) g_image[i] = static_cast<uint8_t>(i * 7u);
+  const uint32_t size = kPayloadBytes;
+  if (image == 0 || !g_app.Start(cfg, options).ok()) {
+    semihost::Write("bench: main-loop board setup failed\n");
+    return 1;
+  }
+  semihost::Write("bench: download of ");
+  semihost::WriteUint(size);
+  semihost::Write(" bytes (a table image of ");
+  semihost::WriteUint(image);
+  semihost::Write(" bytes first)\n");
+  const char* const kRows[][2] = {
+      {"main_loop_segment", "volcomp_bench_poll_segment"},
+      {"main_loop_pass", "volcomp_bench_poll_pass"},
+      {"main_loop_request", "volcomp_bench_poll_request"},
+  };
+  int rc = 0;
+  for (const auto& row : kRows) {
+    Scenario(row[0], row[1]);
+    if (!Download(size)) {
+      semihost::Write("bench: block download did not complete\n");
+      rc = 1;
+    }
+  }
+  if (g_app.tables().staged_bytes() != size) rc = 1;
+  semihost::Write(rc == 0 ? "bench: done\n" : "bench: FAILED\n");
+  return rc;
+}
