@@ -1,8 +1,6 @@
 // Board configuration checks.
 #include "volcomp/board_config.hpp"
 
-#include "volcomp/correction_limiter.hpp"
-
 namespace volcomp {
 namespace {
 
@@ -36,10 +34,7 @@ ConfigRule AxisRule(const AxisConfig& a, uint32_t tick_hz) {
       a.drive.max_rate_hz) {
     return ConfigRule::kDriveKeepsUp;
   }
-  const Result<CorrectionLimiter::Params> p =
-      CorrectionLimiter::MakeParams(tick_hz, a.max_correction_rate_steps_s,
-                                    a.max_correction_accel_steps_s2, CompensationDivider(tick_hz));
-  return p.ok() ? ConfigRule::kNone : ConfigRule::kLimiter;
+  return AxisLimiterParams(a, tick_hz).ok() ? ConfigRule::kNone : ConfigRule::kLimiter;
 }
 
 ConfigFinding FirstBrokenRule(const BoardConfig& config) {

@@ -47,9 +47,7 @@ Status Compensator::Configure(const BoardConfig& config) {
   VOLCOMP_TRY(ValidateBoardConfig(config));
   for (uint8_t a = 0; a < config.axis_count; ++a) {
     const AxisConfig& ax = config.axis[a];
-    const Result<CorrectionLimiter::Params> p = CorrectionLimiter::MakeParams(
-        config.tick_hz, ax.max_correction_rate_steps_s, ax.max_correction_accel_steps_s2,
-        CompensationDivider(config.tick_hz));
+    const Result<LimiterParams> p = AxisLimiterParams(ax, config.tick_hz);
     if (!p.ok()) return p.status();
     limiter_[a] = CorrectionLimiter(*p);
     max_q8_[a] = ax.max_correction_steps * (1 << table::kCorrectionFracBits);

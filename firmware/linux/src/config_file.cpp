@@ -11,8 +11,6 @@
 #include <utility>
 #include <vector>
 
-#include "volcomp/correction_limiter.hpp"
-
 namespace volcomp::fw_linux {
 namespace {
 
@@ -366,9 +364,7 @@ class ConfigParser {
       ax.drive.max_rate_hz = ax.max_input_rate_hz + ax.max_correction_rate_steps_s;
     }
     const uint32_t divider = CompensationDivider(st.board.tick_hz);
-    if (!CorrectionLimiter::MakeParams(st.board.tick_hz, ax.max_correction_rate_steps_s,
-                                       ax.max_correction_accel_steps_s2, divider)
-             .ok()) {
+    if (!AxisLimiterParams(ax, st.board.tick_hz).ok()) {
       const std::string f = "f = tick_hz / " + std::to_string(divider);
       return FailAt(s->line, "[axis " + axis_names_[a] + "]: max_rate / max_accel do not fit " +
                                  "tick_hz " + std::to_string(st.board.tick_hz) +

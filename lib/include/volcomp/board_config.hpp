@@ -6,6 +6,7 @@
 
 #include <cstdint>
 
+#include "volcomp/correction_limiter.hpp"
 #include "volcomp/status.hpp"
 #include "volcomp/table_format.hpp"
 #include "volcomp/table_image.hpp"
@@ -127,6 +128,14 @@ struct ConfigFinding {
 /// Checks ranges and consistency (rates versus tick, timing versus rate); kConfigInvalid if bad,
 /// with the first broken rule and its axis in *finding (optional; kNone when ok).
 Status ValidateBoardConfig(const BoardConfig& config, ConfigFinding* finding = nullptr);
+
+/// The correction limiter of `axis` on a board ticking at `tick_hz`: its limits converted for the
+/// compensation rate (CompensationDivider()). kConfigInvalid as CorrectionLimiter::MakeParams().
+inline Result<LimiterParams> AxisLimiterParams(const AxisConfig& axis, uint32_t tick_hz) {
+  return CorrectionLimiter::MakeParams(tick_hz, axis.max_correction_rate_steps_s,
+                                       axis.max_correction_accel_steps_s2,
+                                       CompensationDivider(tick_hz));
+}
 
 /// Checks that an image was built for this board: axis count, names, kinds, units per step.
 Status CheckImageMatchesBoard(const table::TableView& image, const BoardConfig& config);

@@ -129,8 +129,9 @@ class Compensator {
     UpdateEngaged();
   }
 
-  /// One control tick. `machine_pos_steps`: commanded position per axis in machine coordinates.
-  /// Writes the whole-step correction to add to each axis's output position.
+  /// One compensation run (a control tick where the board runs it every tick). `machine_pos_steps`:
+  /// commanded position per axis in machine coordinates. Writes the whole-step correction to add to
+  /// each axis's output position.
   void Tick(const int32_t* machine_pos_steps, int32_t* correction_steps) {
     for (uint8_t a = 0; a < axis_count_; ++a) SenseAxis(a, machine_pos_steps[a]);
     RefreshTargets(machine_pos_steps);

@@ -178,7 +178,6 @@ bool Download(uint32_t size) {
   if ((r.data[0] & 0xE3) != 0xA0) return false;
   uint32_t blksize = r.data[4], pos = 0, last_len = 0;
   while (pos < size) {
-    const uint32_t block_start = pos;
     uint32_t seq = 0;
     r = CanFrame();
     while (seq < blksize && pos < size) {
@@ -198,7 +197,6 @@ bool Download(uint32_t size) {
       r = Transact(&s, Pass::kSegment, 100000);  // the ack may wait for the paced programming
     }
     if (r.data[0] != 0xA2 || r.data[1] != seq || r.data[2] == 0) return false;
-    (void)block_start;
     blksize = r.data[2];
     RunPass(Pass::kNothing);  // the bus gap before the client's next sub-block
   }

@@ -6,7 +6,6 @@
 #include <fstream>
 #include <sstream>
 
-#include "volcomp/correction_limiter.hpp"
 #include "volcomp/table_format.hpp"
 #include "volcomp/tools/csv.hpp"
 
@@ -424,9 +423,7 @@ std::string ConsistencyProblem(const BoardSettings& s) {
     const AxisConfig& ax = s.board.axis[n - 1];
     const std::string axis = std::string("[axis ") + ax.name + "]";
     const uint32_t divider = CompensationDivider(s.board.tick_hz);
-    if (!CorrectionLimiter::MakeParams(s.board.tick_hz, ax.max_correction_rate_steps_s,
-                                       ax.max_correction_accel_steps_s2, divider)
-             .ok()) {
+    if (!AxisLimiterParams(ax, s.board.tick_hz).ok()) {
       return axis + ": max_rate " + std::to_string(ax.max_correction_rate_steps_s) +
              " and max_accel " + std::to_string(ax.max_correction_accel_steps_s2) +
              " do not fit tick_hz " + std::to_string(s.board.tick_hz) +
