@@ -43,11 +43,11 @@ void PreparedTable::TargetsQ8(const int32_t* pos_steps,
   }
 }
 
-Status Compensator::Configure(const BoardConfig& config) {
+Status Compensator::Configure(const BoardConfig& config, uint32_t ticks_per_run) {
   VOLCOMP_TRY(ValidateBoardConfig(config));
   for (uint8_t a = 0; a < config.axis_count; ++a) {
     const AxisConfig& ax = config.axis[a];
-    const Result<LimiterParams> p = AxisLimiterParams(ax, config.tick_hz);
+    const Result<LimiterParams> p = AxisLimiterParams(ax, config.tick_hz, ticks_per_run);
     if (!p.ok()) return p.status();
     limiter_[a] = CorrectionLimiter(*p);
     max_q8_[a] = ax.max_correction_steps * (1 << table::kCorrectionFracBits);

@@ -5,7 +5,7 @@ namespace volcomp {
 
 Status ControlTick::Configure(const BoardConfig& config) {
   VOLCOMP_TRY(ValidateBoardConfig(config));
-  VOLCOMP_TRY(compensator_.Configure(config));
+  VOLCOMP_TRY(compensator_.Configure(config, CompensationDivider(config.tick_hz)));
   for (uint8_t a = 0; a < config.axis_count; ++a) {
     counter_shift_[a] = static_cast<uint8_t>(32u - config.axis[a].input_counter_bits);
     last_counter_[a] = 0;

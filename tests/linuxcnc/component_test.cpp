@@ -284,6 +284,37 @@ TEST(LinuxcncNative, AppliesTheTableAndRampsOut) {
   EXPECT_FALSE(c.engaged());
 }
 
+// The native component steps its compensator every thread period, so its limits hold per period
+// at any thread rate, also above the board's 20 kHz compensation rate (where a board runs its
+// compensator every CompensationDivider() ticks): at 50 kHz the correction moves at most
+// rate / 50000 steps a period, and still reaches the table.
+TEST(LinuxcncNative, LimitsHoldPerPeriodOnAFastThread) {
+  const testing::GridCase g = Grid(14, 40.0);
+  NativeCompensator c;
+  const uint32_t hz = 50000;
+  ASSERT_GT(CompensationDivider(hz), 1u);
+  NativeLimits limits;  // 2000 steps/s, 200000 steps/s^2
+  ASSERT_TRUE(c.Load(Bytes(testing::WriteGridImage(g)), hz, limits).ok());
+  const double pos[3] = {0.0, 0.0, 0.0};
+  double corr[3], last[3] = {0.0, 0.0, 0.0};
+  double largest_step = 0;
+  for (int i = 0; i < 100000; ++i) {  // 2 s
+    c.Tick(pos, true, true, corr);
+    for (int a = 0; a < 3; ++a) {
+      largest_step = std::max(largest_step, std::fabs(corr[a] - last[a]) / kMmPerStep);
+      last[a] = corr[a];
+    }
+  }
+  EXPECT_GT(largest_step, 0.0);
+  // 2000 steps/s at 50 kHz: 0.04 step a period (the output is the applied correction in 1/256
+  // steps). Converted for a run every third period instead, it would move 0.12.
+  EXPECT_LE(largest_step, 2000.0 / hz + 1.0 / 256);
+  const int32_t at[3] = {0, 0, 0};
+  for (int a = 0; a < 3; ++a) {
+    EXPECT_NEAR(corr[a] / kMmPerStep, testing::ExactTrilinear(g, at, a), 1.0 / 256 + 1e-9) << a;
+  }
+}
+
 TEST(LinuxcncNative, ClampsVisiblyAndKeepsTheActiveTable) {
   const testing::GridCase g = Grid(12, 200.0);
   NativeCompensator c;

@@ -129,12 +129,17 @@ struct ConfigFinding {
 /// with the first broken rule and its axis in *finding (optional; kNone when ok).
 Status ValidateBoardConfig(const BoardConfig& config, ConfigFinding* finding = nullptr);
 
-/// The correction limiter of `axis` on a board ticking at `tick_hz`: its limits converted for the
-/// compensation rate (CompensationDivider()). kConfigInvalid as CorrectionLimiter::MakeParams().
-inline Result<LimiterParams> AxisLimiterParams(const AxisConfig& axis, uint32_t tick_hz) {
+/// The correction limiter of `axis` stepped every `ticks_per_step` ticks of `tick_hz`; without it,
+/// at the board's compensation rate (CompensationDivider()). kConfigInvalid as
+/// CorrectionLimiter::MakeParams().
+inline Result<LimiterParams> AxisLimiterParams(const AxisConfig& axis,
+                                               uint32_t tick_hz,
+                                               uint32_t ticks_per_step) {
   return CorrectionLimiter::MakeParams(tick_hz, axis.max_correction_rate_steps_s,
-                                       axis.max_correction_accel_steps_s2,
-                                       CompensationDivider(tick_hz));
+                                       axis.max_correction_accel_steps_s2, ticks_per_step);
+}
+inline Result<LimiterParams> AxisLimiterParams(const AxisConfig& axis, uint32_t tick_hz) {
+  return AxisLimiterParams(axis, tick_hz, CompensationDivider(tick_hz));
 }
 
 /// Checks that an image was built for this board: axis count, names, kinds, units per step.

@@ -75,8 +75,14 @@ class Compensator {
   Compensator(const Compensator&) = delete;
   Compensator& operator=(const Compensator&) = delete;
 
-  /// Sets axis count and limits from a validated board configuration; resets all state.
-  Status Configure(const BoardConfig& config);
+  /// Sets axis count and limits from a validated board configuration; resets all state. The
+  /// limits are converted for one Tick() every `ticks_per_run` ticks of config.tick_hz: a board
+  /// runs it every CompensationDivider(tick_hz) ticks (the one-argument form), a caller that
+  /// steps it every tick passes 1. kConfigInvalid when the limits do not fit that rate.
+  Status Configure(const BoardConfig& config, uint32_t ticks_per_run);
+  Status Configure(const BoardConfig& config) {
+    return Configure(config, CompensationDivider(config.tick_hz));
+  }
 
   /// Makes `table` the active table (copied; the image bytes it points to must stay valid until
   /// the next SetTable/ClearTable). The applied correction moves to the new target within limits.

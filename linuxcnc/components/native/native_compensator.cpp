@@ -44,7 +44,7 @@ Status NativeCompensator::Load(std::vector<uint8_t> image,
     }
     c = config_;
   } else {
-    VOLCOMP_TRY(comp_.Configure(c));
+    VOLCOMP_TRY(comp_.Configure(c, /*ticks_per_run=*/1));  // Tick() every servo period
   }
   // The view the prepared table uses points into the bytes: prepare on the vector that keeps them.
   PreparedTable t;
