@@ -18,3 +18,15 @@ target_compile_options(volcomp_freestanding INTERFACE ${VOLCOMP_FREESTANDING_FLA
 # Host floating point: no contraction, so host and target agree on float32 results.
 add_library(volcomp_fp INTERFACE)
 target_compile_options(volcomp_fp INTERFACE -ffp-contract=off)
+
+# Checked results: Result<T>::value() / Expected<T>::value() of an error traps (lib/base status.hpp,
+# hosted/ expected.hpp). On in Debug builds and in the sanitizer build (preset host-asan).
+if(CMAKE_BUILD_TYPE STREQUAL "Debug")
+  set(volcomp_checked_default ON)
+else()
+  set(volcomp_checked_default OFF)
+endif()
+option(VOLCOMP_CHECKED_RESULTS "value() of an error result traps" ${volcomp_checked_default})
+if(VOLCOMP_CHECKED_RESULTS)
+  add_compile_definitions(VOLCOMP_CHECKED_RESULTS=1)
+endif()

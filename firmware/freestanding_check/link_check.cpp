@@ -4,14 +4,14 @@
 #include <cstddef>
 #include <cstdint>
 
-#include "volcomp/control_tick.hpp"
-#include "volcomp/crc32.hpp"
+#include "volcomp/control/control_tick.hpp"
+#include "volcomp/base/crc32.hpp"
 #include "volcomp/firmware/board_app.hpp"
 #include "volcomp/firmware/gateway_app.hpp"
 #include "volcomp/firmware/step_dir_io.hpp"
-#include "volcomp/step_output.hpp"
-#include "volcomp/table_image.hpp"
-#include "volcomp/table_writer.hpp"
+#include "volcomp/output/step_output.hpp"
+#include "volcomp/table/table_image.hpp"
+#include "volcomp/table/table_writer.hpp"
 
 namespace {
 

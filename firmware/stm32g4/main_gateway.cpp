@@ -13,7 +13,7 @@
 #include <cstdint>
 
 #include "cm4_runtime.hpp"
-#include "volcomp/csp_gateway.hpp"
+#include "volcomp/gateway/csp_gateway.hpp"
 #include "volcomp/firmware/gateway_app.hpp"
 #include "volcomp/firmware/stm32g4/tick_isr.hpp"
 #include "volcomp/hal/stm32g4/drivers.hpp"

@@ -10,7 +10,7 @@
 #include <cstdio>
 #include <vector>
 
-#include "volcomp/status.hpp"
+#include "volcomp/base/status.hpp"
 
 namespace volcomp::linuxcnc {
 

@@ -7,9 +7,9 @@
 #include <random>
 
 #include "test_tables.hpp"
-#include "volcomp/control_tick.hpp"
-#include "volcomp/grid_lookup.hpp"
-#include "volcomp/step_output.hpp"
+#include "volcomp/control/control_tick.hpp"
+#include "volcomp/lookup/grid_lookup.hpp"
+#include "volcomp/output/step_output.hpp"
 
 namespace volcomp {
 namespace {

@@ -7,7 +7,7 @@
 #include <cstdio>
 
 #include "test_tables.hpp"
-#include "volcomp/crc32.hpp"
+#include "volcomp/base/crc32.hpp"
 #include "volcomp/hal/mock/mock_devices.hpp"
 
 namespace volcomp {

@@ -3,7 +3,7 @@
 #include <cstdint>
 #include <cstdlib>
 
-#include "volcomp/slcan.hpp"
+#include "volcomp/can/slcan.hpp"
 
 namespace {
 void Check(volcomp::slcan::Role role, const uint8_t* data, size_t size) {

@@ -6,11 +6,11 @@
 #include <cstring>
 #include <vector>
 
-#include "volcomp/board_config.hpp"
-#include "volcomp/byte_order.hpp"
-#include "volcomp/compensator.hpp"
-#include "volcomp/crc32.hpp"
-#include "volcomp/table_image.hpp"
+#include "volcomp/config/board_config.hpp"
+#include "volcomp/base/byte_order.hpp"
+#include "volcomp/control/compensator.hpp"
+#include "volcomp/base/crc32.hpp"
+#include "volcomp/table/table_image.hpp"
 
 namespace {
 

@@ -6,7 +6,7 @@
 #include <benchmark/benchmark.h>
 
 #include "csp_drives.hpp"
-#include "volcomp/csp_gateway.hpp"
+#include "volcomp/gateway/csp_gateway.hpp"
 #include "volcomp/firmware/gateway_app.hpp"
 #include "volcomp/hal/mock/mock_devices.hpp"
 

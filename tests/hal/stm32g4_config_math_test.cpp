@@ -4,7 +4,7 @@
 
 #include <random>
 
-#include "volcomp/board_config.hpp"
+#include "volcomp/config/board_config.hpp"
 #include "volcomp/hal/stm32g4/config_math.hpp"
 
 namespace volcomp::stm32g4 {

@@ -22,7 +22,7 @@
 #include "volcomp/firmware/board_app.hpp"
 #include "volcomp/firmware/step_dir_io.hpp"
 #include "volcomp/hal/mock/mock_devices.hpp"
-#include "volcomp/step_generator.hpp"
+#include "volcomp/output/step_generator.hpp"
 
 namespace volcomp::linuxcnc {
 namespace {

@@ -29,7 +29,7 @@ Result Volcomp(const std::vector<std::string>& words) {
   std::ostringstream out, err;
   auto* old_out = std::cout.rdbuf(out.rdbuf());
   auto* old_err = std::cerr.rdbuf(err.rdbuf());
-  r.code = RunCommandLine(words);
+  r.code = cli::RunCommandLine(words);
   std::cout.rdbuf(old_out);
   std::cerr.rdbuf(old_err);
   r.out = out.str();

@@ -13,14 +13,14 @@
 #include <map>
 #include <random>
 
-#include "volcomp/byte_order.hpp"
+#include "volcomp/base/byte_order.hpp"
 #include "volcomp/canopen/object_dictionary.hpp"
 #include "volcomp/canopen/sdo_abort.hpp"
 #include "volcomp/canopen/sdo_protocol.hpp"
 #include "volcomp/canopen_client/sdo_client.hpp"
 #include "volcomp/canopen_client/table_staging.hpp"
 #include "volcomp/sim/sim_sdo_host.hpp"
-#include "volcomp/table_image.hpp"
+#include "volcomp/table/table_image.hpp"
 #include "xyz_image.hpp"
 
 namespace volcomp {

@@ -10,7 +10,7 @@
 #include <cstdlib>
 #include <random>
 
-#include "volcomp/byte_order.hpp"
+#include "volcomp/base/byte_order.hpp"
 #include "volcomp/canopen/board_protocol.hpp"
 #include "volcomp/canopen/object_dictionary.hpp"
 #include "volcomp/canopen/sdo_abort.hpp"

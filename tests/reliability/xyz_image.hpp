@@ -4,7 +4,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "volcomp/table_writer.hpp"
+#include "volcomp/table/table_writer.hpp"
 
 namespace volcomp::testing {
 

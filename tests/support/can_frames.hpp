@@ -4,7 +4,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "volcomp/can_frame.hpp"
+#include "volcomp/can/can_frame.hpp"
 
 namespace volcomp::testing {
 

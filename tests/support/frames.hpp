@@ -4,7 +4,7 @@
 #include <cstdio>
 #include <string>
 
-#include "volcomp/can_frame.hpp"
+#include "volcomp/can/can_frame.hpp"
 
 namespace volcomp::testing {
 

@@ -5,7 +5,7 @@
 
 #include <cstdint>
 
-#include "volcomp/can_frame.hpp"
+#include "volcomp/can/can_frame.hpp"
 
 namespace volcomp::testing {
 

@@ -8,11 +8,11 @@
 #include <random>
 #include <vector>
 
-#include "volcomp/byte_order.hpp"
-#include "volcomp/crc32.hpp"
-#include "volcomp/table_format.hpp"
-#include "volcomp/table_image.hpp"
-#include "volcomp/table_writer.hpp"
+#include "volcomp/base/byte_order.hpp"
+#include "volcomp/base/crc32.hpp"
+#include "volcomp/table/table_format.hpp"
+#include "volcomp/table/table_image.hpp"
+#include "volcomp/table/table_writer.hpp"
 
 namespace volcomp::testing {
 

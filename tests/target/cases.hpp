@@ -8,11 +8,11 @@
 #include <cstddef>
 #include <cstdint>
 
-#include "volcomp/board_config.hpp"
-#include "volcomp/control_tick.hpp"
-#include "volcomp/step_output.hpp"
-#include "volcomp/table_format.hpp"
-#include "volcomp/table_writer.hpp"
+#include "volcomp/config/board_config.hpp"
+#include "volcomp/control/control_tick.hpp"
+#include "volcomp/output/step_output.hpp"
+#include "volcomp/table/table_format.hpp"
+#include "volcomp/table/table_writer.hpp"
 
 namespace volcomp::target {
 

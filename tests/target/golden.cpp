@@ -2,15 +2,15 @@
 #include "golden.hpp"
 
 #include "cases.hpp"
-#include "volcomp/axis_lookup.hpp"
-#include "volcomp/byte_order.hpp"
-#include "volcomp/control_tick.hpp"
-#include "volcomp/correction_limiter.hpp"
-#include "volcomp/crc32.hpp"
-#include "volcomp/grid_lookup.hpp"
-#include "volcomp/step_generator.hpp"
-#include "volcomp/step_output.hpp"
-#include "volcomp/table_image.hpp"
+#include "volcomp/lookup/axis_lookup.hpp"
+#include "volcomp/base/byte_order.hpp"
+#include "volcomp/control/control_tick.hpp"
+#include "volcomp/limiter/correction_limiter.hpp"
+#include "volcomp/base/crc32.hpp"
+#include "volcomp/lookup/grid_lookup.hpp"
+#include "volcomp/output/step_generator.hpp"
+#include "volcomp/output/step_output.hpp"
+#include "volcomp/table/table_image.hpp"
 
 namespace volcomp::target {
 namespace {

@@ -7,7 +7,7 @@
 
 #include "golden_stream.hpp"
 #include "test_tables.hpp"
-#include "volcomp/grid_lookup.hpp"
+#include "volcomp/lookup/grid_lookup.hpp"
 
 namespace volcomp::target {
 namespace {

@@ -13,9 +13,9 @@
 #include "cases.hpp"
 #include "golden_stream.hpp"
 #include "semihost.hpp"
-#include "volcomp/correction_limiter.hpp"
-#include "volcomp/crc32.hpp"
-#include "volcomp/step_generator.hpp"
+#include "volcomp/limiter/correction_limiter.hpp"
+#include "volcomp/base/crc32.hpp"
+#include "volcomp/output/step_generator.hpp"
 
 namespace volcomp::target {
 namespace {

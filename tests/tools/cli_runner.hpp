@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "commands.hpp"
+#include "command.hpp"
 
 namespace volcomp::testing {
 
@@ -25,7 +25,7 @@ inline CliResult RunCli(const std::vector<std::string>& words, const std::string
   auto* old_in = std::cin.rdbuf(in.rdbuf());
   auto* old_out = std::cout.rdbuf(out.rdbuf());
   auto* old_err = std::cerr.rdbuf(err.rdbuf());
-  r.code = tools::RunCommandLine(words);
+  r.code = cli::RunCommandLine(words);
   std::cin.rdbuf(old_in);
   std::cout.rdbuf(old_out);
   std::cerr.rdbuf(old_err);

@@ -4,7 +4,7 @@
 #include <type_traits>
 #include <utility>
 
-#include "volcomp/byte_order.hpp"
+#include "volcomp/base/byte_order.hpp"
 #include "volcomp/canopen/sdo_abort.hpp"
 
 namespace volcomp::firmware {

@@ -1,8 +1,8 @@
 // Power-loss-safe A/B blob store on NOR flash.
 #include "volcomp/firmware/dual_bank_store.hpp"
 
-#include "volcomp/byte_order.hpp"
-#include "volcomp/crc32.hpp"
+#include "volcomp/base/byte_order.hpp"
+#include "volcomp/base/crc32.hpp"
 
 namespace volcomp::firmware {
 namespace {

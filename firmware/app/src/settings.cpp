@@ -1,7 +1,7 @@
 // Board settings: validation, serialization, persistent store.
 #include "volcomp/firmware/settings.hpp"
 
-#include "volcomp/byte_order.hpp"
+#include "volcomp/base/byte_order.hpp"
 
 namespace volcomp::firmware {
 namespace {

@@ -3,14 +3,14 @@
 
 #include <cmath>
 
-#include "volcomp/byte_order.hpp"
+#include "volcomp/base/byte_order.hpp"
 #include "volcomp/canopen/crc16.hpp"
 #include "volcomp/canopen/object_dictionary.hpp"
 #include "volcomp/canopen/sdo_protocol.hpp"
 #include "volcomp/canopen_client/sdo_client.hpp"
 #include "volcomp/canopen_client/table_staging.hpp"
 #include "volcomp/sim/sim_sdo_host.hpp"
-#include "volcomp/table_writer.hpp"
+#include "volcomp/table/table_writer.hpp"
 
 namespace volcomp::sim {
 namespace {

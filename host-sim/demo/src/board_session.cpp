@@ -4,7 +4,7 @@
 #include <cstdio>
 #include <string>
 
-#include "volcomp/byte_order.hpp"
+#include "volcomp/base/byte_order.hpp"
 #include "volcomp/canopen_client/table_staging.hpp"
 #include "volcomp/tools/hex.hpp"
 

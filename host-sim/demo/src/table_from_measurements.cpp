@@ -4,7 +4,7 @@
 #include <cstdio>
 #include <fstream>
 
-#include "volcomp/byte_order.hpp"
+#include "volcomp/base/byte_order.hpp"
 #include "volcomp/image/image_builder.hpp"
 #include "volcomp/model/grid_section.hpp"
 #include "volcomp/model/image_glue.hpp"

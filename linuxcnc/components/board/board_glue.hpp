@@ -11,9 +11,9 @@
 #include <cstdint>
 
 #include "board/hal_step_io.hpp"
-#include "volcomp/board_config.hpp"
+#include "volcomp/config/board_config.hpp"
 #include "volcomp/canopen/board_protocol.hpp"
-#include "volcomp/status.hpp"
+#include "volcomp/base/status.hpp"
 
 namespace volcomp::linuxcnc {
 

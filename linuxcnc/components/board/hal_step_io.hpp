@@ -25,9 +25,9 @@
 #include <cstdint>
 
 #include "board/sampled_step_counter.hpp"
-#include "volcomp/board_config.hpp"
-#include "volcomp/status.hpp"
-#include "volcomp/step_generator.hpp"
+#include "volcomp/config/board_config.hpp"
+#include "volcomp/base/status.hpp"
+#include "volcomp/output/step_generator.hpp"
 
 namespace volcomp::linuxcnc {
 

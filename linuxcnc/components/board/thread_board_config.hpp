@@ -11,7 +11,7 @@
 
 #include <cstdint>
 
-#include "volcomp/board_config.hpp"
+#include "volcomp/config/board_config.hpp"
 
 namespace volcomp::linuxcnc {
 

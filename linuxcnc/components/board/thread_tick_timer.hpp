@@ -13,7 +13,7 @@
 #include <cstdint>
 
 #include "volcomp/hal/tick_timer.hpp"
-#include "volcomp/status.hpp"
+#include "volcomp/base/status.hpp"
 
 namespace volcomp::linuxcnc {
 

@@ -26,7 +26,7 @@
 #include "board/hal_step_io.hpp"
 #include "board/thread_board_config.hpp"
 #include "hal_module.hpp"
-#include "volcomp/table_image.hpp"
+#include "volcomp/table/table_image.hpp"
 
 namespace lc = volcomp::linuxcnc;
 

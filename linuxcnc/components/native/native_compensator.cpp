@@ -5,8 +5,8 @@
 #include <cstdlib>
 #include <utility>
 
-#include "volcomp/table_format.hpp"
-#include "volcomp/table_image.hpp"
+#include "volcomp/table/table_format.hpp"
+#include "volcomp/table/table_image.hpp"
 
 namespace volcomp::linuxcnc {
 

@@ -10,9 +10,9 @@
 #include <cstdint>
 #include <vector>
 
-#include "volcomp/board_config.hpp"
-#include "volcomp/compensator.hpp"
-#include "volcomp/status.hpp"
+#include "volcomp/config/board_config.hpp"
+#include "volcomp/control/compensator.hpp"
+#include "volcomp/base/status.hpp"
 
 namespace volcomp::linuxcnc {
 

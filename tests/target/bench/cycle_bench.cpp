@@ -9,15 +9,15 @@
 #include "bench_support.hpp"
 #include "cases.hpp"
 #include "semihost.hpp"
-#include "volcomp/control_tick.hpp"
+#include "volcomp/control/control_tick.hpp"
 #include "volcomp/firmware/board_app.hpp"
 #include "volcomp/firmware/step_dir_io.hpp"
 #include "volcomp/firmware/stm32g4/tick_isr.hpp"
-#include "volcomp/grid_lookup.hpp"
+#include "volcomp/lookup/grid_lookup.hpp"
 #include "volcomp/hal/stm32g4/drivers.hpp"
 #include "volcomp/hal/stm32g4/registers.hpp"
-#include "volcomp/step_output.hpp"
-#include "volcomp/table_image.hpp"
+#include "volcomp/output/step_output.hpp"
+#include "volcomp/table/table_image.hpp"
 
 // The tick's step path of a step/dir board as BoardApp::StepTick() runs it between reading the
 // counters and StepIo::Apply(): ControlTick::RunSteps() (counters to targets), then the step

@@ -6,7 +6,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "volcomp/table_format.hpp"
+#include "volcomp/table/table_format.hpp"
 #include "volcomp/tools/csv.hpp"
 
 namespace volcomp::board_ini {

@@ -17,7 +17,7 @@
 #include <stdexcept>
 
 #include "fd_io.hpp"
-#include "volcomp/slcan.hpp"
+#include "volcomp/can/slcan.hpp"
 
 namespace volcomp::can_io {
 

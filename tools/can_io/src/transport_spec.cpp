@@ -5,7 +5,7 @@
 #include "volcomp/can_io/slcan_transport.hpp"
 #include "volcomp/can_io/socketcan_transport.hpp"
 #include "volcomp/can_io/transport.hpp"
-#include "volcomp/slcan.hpp"
+#include "volcomp/can/slcan.hpp"
 
 namespace volcomp::can_io {
 namespace {

@@ -3,7 +3,7 @@
 
 #include <cstdio>
 
-#include "volcomp/byte_order.hpp"
+#include "volcomp/base/byte_order.hpp"
 #include "volcomp/canopen/crc16.hpp"
 #include "volcomp/canopen/sdo_abort.hpp"
 #include "volcomp/canopen/sdo_protocol.hpp"

@@ -29,6 +29,16 @@ bool IsNumberWord(const std::string& word) {
   return end == word.c_str() + word.size() && errno == 0;
 }
 
+void Args::Record(Error code, const std::string& message) {
+  if (status_.ok()) status_ = Fail(code, message);
+}
+
+void Args::ThrowIfFailed() const {
+  if (status_.ok()) return;
+  if (status_.error().code == Error::kUsage) throw UsageError(status_.error().message);
+  throw std::logic_error(status_.error().message);
+}
+
 Args::Args(std::vector<std::string> args) : args_(std::move(args)), used_(args_.size()) {
   for (std::size_t i = 0; i < args_.size(); ++i) {
     if (args_[i] == "--") {
@@ -42,7 +52,7 @@ Args::Args(std::vector<std::string> args) : args_(std::move(args)), used_(args_.
 Args::Args(std::vector<std::string> args, const std::vector<OptionSpec>* spec)
     : args_(std::move(args)), used_(args_.size()), spec_(spec), words_(args_.size()) {
   std::vector<int> count(spec_->size(), 0);
-  for (std::size_t i = 0; i < args_.size(); ++i) {
+  for (std::size_t i = 0; i < args_.size() && status_.ok(); ++i) {
     const std::string& w = args_[i];
     if (end_of_options_ < i) continue;  // positional after "--"
     if (w == "--") {
@@ -56,17 +66,19 @@ Args::Args(std::vector<std::string> args, const std::vector<OptionSpec>* spec)
     const std::string name = w.substr(0, eq);
     std::size_t k = 0;
     while (k < spec_->size() && !IsOptionName((*spec_)[k], name)) ++k;
-    if (k == spec_->size()) throw UsageError("unknown option \"" + name + "\"");
+    if (k == spec_->size()) {
+      Record(Error::kUsage, "unknown option \"" + name + "\"");
+      break;
+    }
     const OptionSpec& o = (*spec_)[k];
     if (++count[k] > 1 && !o.repeatable) {
-      throw UsageError(std::string("option ") + o.name + " is given twice");
+      Record(Error::kUsage, std::string("option ") + o.name + " is given twice");
+      break;
     }
     words_[i].kind = Kind::kOption;
     words_[i].option = k;
     if (o.value == nullptr) {
-      if (eq != std::string::npos) {
-        throw UsageError(std::string("option ") + o.name + " takes no value");
-      }
+      if (eq != std::string::npos) Record(Error::kUsage, std::string("option ") + o.name + " takes no value");
       continue;
     }
     if (eq != std::string::npos) {
@@ -74,23 +86,28 @@ Args::Args(std::vector<std::string> args, const std::vector<OptionSpec>* spec)
       continue;
     }
     if (i + 1 >= args_.size() || args_[i + 1] == "--") {
-      throw UsageError(std::string("option ") + o.name + " needs a value (" + o.value + ")");
+      Record(Error::kUsage, std::string("option ") + o.name + " needs a value (" + o.value + ")");
+      break;
     }
     words_[i].value = args_[i + 1];
     words_[++i].kind = Kind::kOptionValue;
   }
 }
 
-const OptionSpec* Args::Declared(const std::string& name, bool want_value) const {
+const OptionSpec* Args::Declared(const std::string& name, bool want_value) {
   for (const OptionSpec& o : *spec_) {
     if (!IsOptionName(o, name)) continue;
     if ((o.value != nullptr) != want_value) {
-      throw std::logic_error("option " + name +
-                             (want_value ? " is declared as a flag" : " is declared with a value"));
+      Record(Error::kInvalidArgument,
+             "option " + name +
+                 (want_value ? " is declared as a flag" : " is declared with a value"));
+      return nullptr;
     }
     return &o;
   }
-  throw std::logic_error("option " + name + " is not declared in the command's option table");
+  Record(Error::kInvalidArgument,
+         "option " + name + " is not declared in the command's option table");
+  return nullptr;
 }
 
 std::vector<std::size_t> Args::Occurrences(const OptionSpec& o) const {
@@ -101,9 +118,11 @@ std::vector<std::size_t> Args::Occurrences(const OptionSpec& o) const {
   return out;
 }
 
-bool Args::flag(const std::string& name, const std::string& alias) {
+bool Args::Flag(const std::string& name, const std::string& alias) {
   if (spec_ != nullptr) {
-    const auto occ = Occurrences(*Declared(name, false));
+    const OptionSpec* o = Declared(name, false);
+    if (o == nullptr) return false;
+    const auto occ = Occurrences(*o);
     for (std::size_t i : occ) used_[i] = true;
     return !occ.empty();
   }
@@ -114,16 +133,17 @@ bool Args::flag(const std::string& name, const std::string& alias) {
   return found;
 }
 
-std::optional<std::string> Args::value(const std::string& name, const std::string& alias) {
+std::optional<std::string> Args::Value(const std::string& name, const std::string& alias) {
   if (spec_ != nullptr) {
-    const OptionSpec& o = *Declared(name, true);
+    const OptionSpec* o = Declared(name, true);
+    if (o == nullptr) return std::nullopt;
     std::optional<std::string> result;
-    for (std::size_t i : Occurrences(o)) {
+    for (std::size_t i : Occurrences(*o)) {
       used_[i] = true;
       if (i + 1 < words_.size() && words_[i + 1].kind == Kind::kOptionValue) used_[i + 1] = true;
       result = words_[i].value;
     }
-    if (!result && o.default_value != nullptr) result = o.default_value;
+    if (!result && o->default_value != nullptr) result = o->default_value;
     return result;
   }
   std::optional<std::string> result;
@@ -132,7 +152,8 @@ std::optional<std::string> Args::value(const std::string& name, const std::strin
     const std::string& a = args_[i];
     if (Matches(a, name, alias)) {
       if (i + 1 >= args_.size() || i + 1 == end_of_options_) {
-        throw UsageError("option " + a + " needs a value");
+        Record(Error::kUsage, "option " + a + " needs a value");
+        return std::nullopt;
       }
       used_[i] = used_[i + 1] = true;
       result = args_[++i];
@@ -147,10 +168,12 @@ std::optional<std::string> Args::value(const std::string& name, const std::strin
   return result;
 }
 
-std::vector<std::string> Args::values(const std::string& name) {
+std::vector<std::string> Args::Values(const std::string& name) {
   std::vector<std::string> out;
   if (spec_ != nullptr) {
-    for (std::size_t i : Occurrences(*Declared(name, true))) {
+    const OptionSpec* o = Declared(name, true);
+    if (o == nullptr) return out;
+    for (std::size_t i : Occurrences(*o)) {
       used_[i] = true;
       if (i + 1 < words_.size() && words_[i + 1].kind == Kind::kOptionValue) used_[i + 1] = true;
       out.push_back(words_[i].value);
@@ -161,7 +184,8 @@ std::vector<std::string> Args::values(const std::string& name) {
     if (used_[i]) continue;
     if (args_[i] == name) {
       if (i + 1 >= args_.size() || i + 1 == end_of_options_) {
-        throw UsageError("option " + name + " needs a value");
+        Record(Error::kUsage, "option " + name + " needs a value");
+        return out;
       }
       used_[i] = used_[i + 1] = true;
       out.push_back(args_[++i]);
@@ -173,29 +197,32 @@ std::vector<std::string> Args::values(const std::string& name) {
   return out;
 }
 
-std::string Args::required(const std::string& name, const std::string& alias) {
-  auto v = value(name, alias);
-  if (!v) throw UsageError("missing required option " + name);
+std::string Args::Required(const std::string& name, const std::string& alias) {
+  auto v = Value(name, alias);
+  if (!v) {
+    Record(Error::kUsage, "missing required option " + name);
+    return std::string();
+  }
   return *v;
 }
 
-std::optional<double> Args::number(const std::string& name) {
-  auto v = value(name);
+std::optional<double> Args::Number(const std::string& name) {
+  auto v = Value(name);
   if (!v) return std::nullopt;
   auto d = ParseDouble(*v);
-  if (!d) throw UsageError("option " + name + ": \"" + *v + "\" is not a number");
+  if (!d) Record(Error::kUsage, "option " + name + ": \"" + *v + "\" is not a number");
   return d;
 }
 
-std::optional<long long> Args::integer(const std::string& name) {
-  auto v = value(name);
+std::optional<long long> Args::Integer(const std::string& name) {
+  auto v = Value(name);
   if (!v) return std::nullopt;
   auto d = ParseInteger(*v);
-  if (!d) throw UsageError("option " + name + ": \"" + *v + "\" is not an integer");
+  if (!d) Record(Error::kUsage, "option " + name + ": \"" + *v + "\" is not an integer");
   return d;
 }
 
-std::vector<std::string> Args::positionals() {
+std::vector<std::string> Args::Positionals() {
   std::vector<std::string> out;
   for (std::size_t i = 0; i < args_.size(); ++i) {
     if (used_[i]) continue;
@@ -210,15 +237,54 @@ std::vector<std::string> Args::positionals() {
   return out;
 }
 
-void Args::finish() const {
+Outcome Args::Finish() const {
+  if (!status_.ok()) return status_;
   for (std::size_t i = 0; i < args_.size(); ++i) {
     if (used_[i]) continue;
     if (spec_ != nullptr && words_[i].kind == Kind::kOptionValue) continue;
     if (spec_ != nullptr && words_[i].kind == Kind::kOption) {
-      throw UsageError("option " + args_[i] + " does not apply here");
+      return Fail(Error::kUsage, "option " + args_[i] + " does not apply here");
     }
-    throw UsageError("unexpected argument \"" + args_[i] + "\"");
+    return Fail(Error::kUsage, "unexpected argument \"" + args_[i] + "\"");
   }
+  return Outcome::Ok();
+}
+
+// TRANSITION: the throwing API.
+bool Args::flag(const std::string& name, const std::string& alias) {
+  const bool r = Flag(name, alias);
+  ThrowIfFailed();
+  return r;
+}
+std::optional<std::string> Args::value(const std::string& name, const std::string& alias) {
+  auto r = Value(name, alias);
+  ThrowIfFailed();
+  return r;
+}
+std::vector<std::string> Args::values(const std::string& name) {
+  auto r = Values(name);
+  ThrowIfFailed();
+  return r;
+}
+std::string Args::required(const std::string& name, const std::string& alias) {
+  auto r = Required(name, alias);
+  ThrowIfFailed();
+  return r;
+}
+std::optional<double> Args::number(const std::string& name) {
+  auto r = Number(name);
+  ThrowIfFailed();
+  return r;
+}
+std::optional<long long> Args::integer(const std::string& name) {
+  auto r = Integer(name);
+  ThrowIfFailed();
+  return r;
+}
+std::vector<std::string> Args::positionals() { return Positionals(); }
+void Args::finish() const {
+  const Outcome r = Finish();
+  if (!r.ok()) throw UsageError(r.error().message);
 }
 
 }  // namespace volcomp::tools

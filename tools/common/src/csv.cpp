@@ -5,11 +5,15 @@
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
-#include <regex>
 #include <sstream>
 
 namespace volcomp::tools {
 namespace {
+
+bool IsBlank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\n' || c == '\f' || c == '\v'; }
+bool IsDigit(char c) { return c >= '0' && c <= '9'; }
+bool IsAlpha(char c) { return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z'); }
+bool IsWordChar(char c) { return IsAlpha(c) || IsDigit(c) || c == '_'; }
 
 std::string Trim(const std::string& s) {
   std::size_t b = 0, e = s.size();
@@ -62,24 +66,60 @@ bool SplitLine(const std::string& line, char sep, std::vector<std::string>* out)
   return true;
 }
 
+// A decimal number with `mark` as its decimal separator: \s*[+-]?(\d+M\d*|M\d+)([eE][+-]?\d+)?\s*
+// (one pass, no backtracking: the whole field is scanned once).
+bool IsDecimalNumber(const std::string& f, char mark) {
+  std::size_t i = 0;
+  const std::size_t n = f.size();
+  while (i < n && IsBlank(f[i])) ++i;
+  if (i < n && (f[i] == '+' || f[i] == '-')) ++i;
+  std::size_t int_digits = 0, frac_digits = 0;
+  while (i < n && IsDigit(f[i])) ++i, ++int_digits;
+  if (i >= n || f[i] != mark) return false;
+  ++i;
+  while (i < n && IsDigit(f[i])) ++i, ++frac_digits;
+  if (int_digits == 0 && frac_digits == 0) return false;
+  if (i < n && (f[i] == 'e' || f[i] == 'E')) {
+    ++i;
+    if (i < n && (f[i] == '+' || f[i] == '-')) ++i;
+    std::size_t exp_digits = 0;
+    while (i < n && IsDigit(f[i])) ++i, ++exp_digits;
+    if (exp_digits == 0) return false;
+  }
+  while (i < n && IsBlank(f[i])) ++i;
+  return i == n;
+}
+
 // "12,5", "-,5", "1,5e3": a number written with a decimal comma (and no point).
-bool IsDecimalCommaNumber(const std::string& field) {
-  static const std::regex kPattern(R"(\s*[+-]?(\d+,\d*|,\d+)([eE][+-]?\d+)?\s*)");
-  return std::regex_match(field, kPattern);
-}
+bool IsDecimalCommaNumber(const std::string& field) { return IsDecimalNumber(field, ','); }
+bool IsDecimalPointNumber(const std::string& field) { return IsDecimalNumber(field, '.'); }
 
-bool IsDecimalPointNumber(const std::string& field) {
-  static const std::regex kPattern(R"(\s*[+-]?(\d+\.\d*|\.\d+)([eE][+-]?\d+)?\s*)");
-  return std::regex_match(field, kPattern);
-}
-
-// `# key: value` before the header.
+// `# key: value` before the header: key is a letter, then word characters, then up to four more
+// space-separated words; blanks around key and value are dropped.
 std::optional<CsvPreambleEntry> PreambleEntry(const std::string& line, std::size_t line_no) {
-  static const std::regex kPattern(
-      R"(\s*#\s*([A-Za-z][A-Za-z0-9_]*(?: [A-Za-z0-9_]+){0,4})\s*:\s*(.*?)\s*)");
-  std::smatch m;
-  if (!std::regex_match(line, m, kPattern)) return std::nullopt;
-  return CsvPreambleEntry{m[1], m[2], line_no};
+  std::size_t i = 0;
+  const std::size_t n = line.size();
+  while (i < n && IsBlank(line[i])) ++i;
+  if (i >= n || line[i] != '#') return std::nullopt;
+  ++i;
+  while (i < n && IsBlank(line[i])) ++i;
+  if (i >= n || !IsAlpha(line[i])) return std::nullopt;
+  const std::size_t key_begin = i;
+  while (i < n && IsWordChar(line[i])) ++i;
+  for (int words = 0; words < 4 && i + 1 < n && line[i] == ' ' && IsWordChar(line[i + 1]);
+       ++words) {
+    ++i;
+    while (i < n && IsWordChar(line[i])) ++i;
+  }
+  const std::size_t key_end = i;
+  while (i < n && IsBlank(line[i])) ++i;
+  if (i >= n || line[i] != ':') return std::nullopt;
+  ++i;
+  std::size_t e = n;
+  while (i < e && IsBlank(line[i])) ++i;
+  while (e > i && IsBlank(line[e - 1])) --e;
+  return CsvPreambleEntry{line.substr(key_begin, key_end - key_begin), line.substr(i, e - i),
+                          line_no};
 }
 
 // Decides the decimal mark of a ';' or TAB separated file from its numbers.
@@ -98,6 +138,12 @@ void DetectDecimalMark(CsvMeta* meta, const std::vector<CsvRow>& rows) {
       }
     }
   }
+}
+
+template <typename T>
+T OrThrow(Expected<T> r) {
+  if (!r.ok()) throw InputError(r.error().message);
+  return std::move(r).value();
 }
 
 }  // namespace
@@ -122,19 +168,22 @@ std::optional<long long> ParseInteger(const std::string& text) {
   return v;
 }
 
-const std::string& CsvRow::text(const std::string& column) const {
-  return fields_[meta_->require(column)];
+Expected<std::string> CsvRow::Text(const std::string& column) const {
+  VOLCOMP_TRY_ASSIGN(const std::size_t c, meta_->Require(column));
+  return fields_[c];
 }
 
-double CsvRow::number(std::size_t column) const {
-  const std::string& field = fields_.at(column);
+Expected<double> CsvRow::Number(std::size_t column) const {
+  if (column >= fields_.size()) return Fail(Error::kInvalidArgument, "CSV column out of range");
+  const std::string& field = fields_[column];
+  const std::string& name = meta_->header[column];
   std::optional<double> v;
   if (meta_->decimal_comma && IsDecimalPointNumber(field)) {
-    throw meta_->error(line_, "column \"" + meta_->header[column] + "\": \"" + field +
-                                  "\" has a decimal point, but this file writes decimal commas "
-                                  "(line " +
-                                  std::to_string(meta_->decimal_line) +
-                                  "); use one decimal mark throughout");
+    return Fail(meta_->LineFailure(line_, "column \"" + name + "\": \"" + field +
+                                        "\" has a decimal point, but this file writes decimal "
+                                        "commas (line " +
+                                        std::to_string(meta_->decimal_line) +
+                                        "); use one decimal mark throughout"));
   }
   if (meta_->decimal_comma && IsDecimalCommaNumber(field)) {
     std::string dotted = field;
@@ -144,38 +193,73 @@ double CsvRow::number(std::size_t column) const {
     v = ParseDouble(field);
   }
   if (!v && meta_->separator != ',' && !meta_->decimal_comma && IsDecimalCommaNumber(field)) {
-    throw meta_->error(line_, "column \"" + meta_->header[column] + "\": \"" + field +
-                                  "\" has a decimal comma, but this file writes decimal points "
-                                  "(line " +
-                                  std::to_string(meta_->decimal_line) +
-                                  "); use one decimal mark throughout");
+    return Fail(meta_->LineFailure(line_, "column \"" + name + "\": \"" + field +
+                                        "\" has a decimal comma, but this file writes decimal "
+                                        "points (line " +
+                                        std::to_string(meta_->decimal_line) +
+                                        "); use one decimal mark throughout"));
   }
   if (!v) {
-    throw meta_->error(line_, "column \"" + meta_->header[column] + "\": \"" + fields_[column] +
-                                  "\" is not a number");
+    return Fail(meta_->LineFailure(line_, "column \"" + name + "\": \"" + field + "\" is not a number"));
   }
   return *v;
 }
 
-double CsvRow::number(const std::string& column) const { return number(meta_->require(column)); }
+Expected<double> CsvRow::Number(const std::string& column) const {
+  VOLCOMP_TRY_ASSIGN(const std::size_t c, meta_->Require(column));
+  return Number(c);
+}
 
-long long CsvRow::integer(const std::string& column) const {
-  const std::size_t c = meta_->require(column);
+Expected<long long> CsvRow::Integer(const std::string& column) const {
+  VOLCOMP_TRY_ASSIGN(const std::size_t c, meta_->Require(column));
   const auto v = ParseInteger(fields_[c]);
   if (!v) {
-    throw meta_->error(line_,
-                       "column \"" + column + "\": \"" + fields_[c] + "\" is not an integer");
+    return Fail(meta_->LineFailure(line_, "column \"" + column + "\": \"" + fields_[c] +
+                                        "\" is not an integer"));
   }
   return *v;
 }
 
-std::optional<double> CsvRow::optional_number(const std::string& column) const {
+Expected<std::optional<double>> CsvRow::OptionalNumber(const std::string& column) const {
   const auto c = meta_->find(column);
-  if (!c || Trim(fields_[*c]).empty()) return std::nullopt;
-  return number(*c);
+  if (!c || Trim(fields_[*c]).empty()) return std::optional<double>();
+  VOLCOMP_TRY_ASSIGN(const double v, Number(*c));
+  return std::optional<double>(v);
 }
 
-CsvTable CsvTable::Parse(std::istream& in, const std::string& source) {
+const std::string& CsvRow::text(const std::string& column) const {
+  return fields_[meta_->require(column)];
+}
+double CsvRow::number(std::size_t column) const { return OrThrow(Number(column)); }
+double CsvRow::number(const std::string& column) const { return OrThrow(Number(column)); }
+long long CsvRow::integer(const std::string& column) const { return OrThrow(Integer(column)); }
+std::optional<double> CsvRow::optional_number(const std::string& column) const {
+  return OrThrow(OptionalNumber(column));
+}
+
+template <typename T>
+T CsvFields::Take(Expected<T> r, T fallback) {
+  if (!status_.ok()) return fallback;
+  if (!r.ok()) {
+    status_ = Fail(r.error());
+    return fallback;
+  }
+  return std::move(r).value();
+}
+
+double CsvFields::Number(const std::string& column) { return Take(row_.Number(column), 0.0); }
+double CsvFields::Number(std::size_t column) { return Take(row_.Number(column), 0.0); }
+long long CsvFields::Integer(const std::string& column) {
+  return Take(row_.Integer(column), 0LL);
+}
+std::optional<double> CsvFields::OptionalNumber(const std::string& column) {
+  return Take(row_.OptionalNumber(column), std::optional<double>());
+}
+std::string CsvFields::Text(const std::string& column) {
+  return Take(row_.Text(column), std::string());
+}
+
+Expected<CsvTable> CsvTable::Read(std::istream& in, const std::string& source) {
   auto meta = std::make_shared<CsvMeta>();
   meta->source = source;
   CsvTable t;
@@ -197,24 +281,26 @@ CsvTable CsvTable::Parse(std::istream& in, const std::string& source) {
     if (meta->header.empty()) {
       sep = meta->separator = DetectSeparator(line);
       if (!SplitLine(line, sep, &meta->header)) {
-        throw meta->error(line_no, "unterminated quote in header");
+        return Fail(meta->LineFailure(line_no, "unterminated quote in header"));
       }
       meta->header_line = line_no;
       for (std::size_t i = 0; i < meta->header.size(); ++i) {
-        if (meta->header[i].empty()) throw meta->error(line_no, "empty column name in header");
+        if (meta->header[i].empty()) {
+          return Fail(meta->LineFailure(line_no, "empty column name in header"));
+        }
         for (std::size_t j = 0; j < i; ++j) {
           if (meta->header[i] == meta->header[j]) {
-            throw meta->error(line_no,
-                              "column \"" + meta->header[i] + "\" appears twice in header");
+            return Fail(meta->LineFailure(line_no, "column \"" + meta->header[i] +
+                                                 "\" appears twice in header"));
           }
         }
       }
       continue;
     }
-    if (!SplitLine(line, sep, &fields)) throw meta->error(line_no, "unterminated quote");
+    if (!SplitLine(line, sep, &fields)) return Fail(meta->LineFailure(line_no, "unterminated quote"));
     if (fields.size() != meta->header.size()) {
-      throw meta->error(line_no, "expected " + std::to_string(meta->header.size()) +
-                                     " fields, found " + std::to_string(fields.size()));
+      return Fail(meta->LineFailure(line_no, "expected " + std::to_string(meta->header.size()) +
+                                           " fields, found " + std::to_string(fields.size())));
     }
     CsvRow row;
     row.meta_ = meta;
@@ -222,22 +308,32 @@ CsvTable CsvTable::Parse(std::istream& in, const std::string& source) {
     row.fields_ = fields;
     t.rows_.push_back(std::move(row));
   }
-  if (in.bad()) throw InputError(source + ": read error");
-  if (meta->header.empty()) throw InputError(source + ": no header line (empty input)");
+  if (in.bad()) return Fail(Error::kIoError, source + ": read error");
+  if (meta->header.empty()) {
+    return Fail(Error::kInputInvalid, source + ": no header line (empty input)");
+  }
   DetectDecimalMark(meta.get(), t.rows_);
   t.meta_ = meta;
   return t;
 }
 
-CsvTable CsvTable::ParseFile(const std::string& path) {
+Expected<CsvTable> CsvTable::ReadFile(const std::string& path) {
   std::ifstream f(path, std::ios::binary);
-  if (!f) throw InputError(path + ": cannot open");
-  return Parse(f, path);
+  if (!f) return Fail(Error::kIoError, path + ": cannot open");
+  return Read(f, path);
 }
 
-CsvTable CsvTable::ParseString(const std::string& text, const std::string& source) {
+Expected<CsvTable> CsvTable::ReadString(const std::string& text, const std::string& source) {
   std::istringstream s(text);
-  return Parse(s, source);
+  return Read(s, source);
+}
+
+CsvTable CsvTable::Parse(std::istream& in, const std::string& source) {
+  return OrThrow(Read(in, source));
+}
+CsvTable CsvTable::ParseFile(const std::string& path) { return OrThrow(ReadFile(path)); }
+CsvTable CsvTable::ParseString(const std::string& text, const std::string& source) {
+  return OrThrow(ReadString(text, source));
 }
 
 std::optional<std::size_t> CsvMeta::find(const std::string& column) const {
@@ -247,14 +343,20 @@ std::optional<std::size_t> CsvMeta::find(const std::string& column) const {
   return std::nullopt;
 }
 
-std::size_t CsvMeta::require(const std::string& column) const {
+Expected<std::size_t> CsvMeta::Require(const std::string& column) const {
   const auto c = find(column);
-  if (!c) throw error(header_line, "missing column \"" + column + "\"");
+  if (!c) return Fail(LineFailure(header_line, "missing column \"" + column + "\""));
   return *c;
 }
 
+Failure CsvMeta::LineFailure(std::size_t line, const std::string& message) const {
+  return Failure{Error::kInputInvalid, source + ":" + std::to_string(line) + ": " + message};
+}
+
+std::size_t CsvMeta::require(const std::string& column) const { return OrThrow(Require(column)); }
+
 InputError CsvMeta::error(std::size_t line, const std::string& message) const {
-  return InputError(source + ":" + std::to_string(line) + ": " + message);
+  return InputError(LineFailure(line, message).message);
 }
 
 std::optional<std::string> CsvTable::first_of(const std::vector<std::string>& names) const {

@@ -5,6 +5,8 @@
 #include <cstdio>
 #include <cstdlib>
 
+#include "volcomp/tools/json_value.hpp"
+
 namespace volcomp::tools {
 
 JsonWriter::~JsonWriter() {
@@ -12,6 +14,7 @@ JsonWriter::~JsonWriter() {
 }
 
 void JsonWriter::Newline() {
+  if (compact_) return;
   out_ << "\n";
   for (std::size_t i = 0; i < first_.size(); ++i) out_ << "  ";
 }
@@ -22,7 +25,7 @@ void JsonWriter::BeforeValue() {
     return;
   }
   if (!first_.empty()) {
-    if (!first_.back()) out_ << ",";
+    if (!first_.back()) out_ << (compact_ ? ", " : ",");
     first_.back() = false;
     Newline();
   }
@@ -88,6 +91,30 @@ JsonWriter& JsonWriter::value(uint64_t u) {
 JsonWriter& JsonWriter::value(bool b) {
   BeforeValue();
   out_ << (b ? "true" : "false");
+  return *this;
+}
+
+JsonWriter& JsonWriter::value(const JsonValue& v) {
+  switch (v.type) {
+    case JsonValue::Type::kNull:
+      return null();
+    case JsonValue::Type::kBool:
+      return value(v.boolean);
+    case JsonValue::Type::kNumber:
+      if (v.is_unsigned) return value(static_cast<uint64_t>(v.uinteger));
+      if (v.is_int) return value(static_cast<int64_t>(v.integer));
+      return value(v.number);
+    case JsonValue::Type::kString:
+      return value(v.string);
+    case JsonValue::Type::kArray:
+      begin_array();
+      for (const JsonValue& e : v.array) value(e);
+      return end_array();
+    case JsonValue::Type::kObject:
+      begin_object();
+      for (const auto& [k, e] : v.object) key(k).value(e);
+      return end_object();
+  }
   return *this;
 }
 

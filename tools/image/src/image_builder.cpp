@@ -6,7 +6,7 @@
 #include <iterator>
 #include <sstream>
 
-#include "volcomp/table_writer.hpp"
+#include "volcomp/table/table_writer.hpp"
 #include "volcomp/tools/csv.hpp"
 
 namespace volcomp::image {

@@ -5,18 +5,33 @@
 
 #include "volcomp/image/image_builder.hpp"
 #include "volcomp/tools/csv.hpp"
+#include "volcomp/tools/file_io.hpp"
 
 namespace volcomp::image {
 
-LoadedImage::LoadedImage(const std::vector<uint8_t>& bytes, const std::string& source)
-    : storage_((bytes.size() + 3) / 4) {
-  if (!bytes.empty()) std::memcpy(storage_.data(), bytes.data(), bytes.size());
-  const Result<table::TableView> v = table::ParseImage(data(), bytes.size());
+Expected<LoadedImage> LoadedImage::FromBytes(const std::vector<uint8_t>& bytes,
+                                             const std::string& source) {
+  LoadedImage image;
+  image.storage_.resize((bytes.size() + 3) / 4);
+  if (!bytes.empty()) std::memcpy(image.storage_.data(), bytes.data(), bytes.size());
+  const Result<table::TableView> v = table::ParseImage(image.data(), bytes.size());
   if (!v.ok()) {
-    throw tools::InputError(source + ": invalid table image: " + ErrorText(v.error()) + " (" +
-                            ErrorName(v.error()) + ")");
+    return Fail(Error::kInputInvalid, source + ": invalid table image: " + ErrorText(v.error()) +
+                                          " (" + ErrorName(v.error()) + ")");
   }
-  view_ = *v;
+  image.view_ = *v;
+  return image;
+}
+
+LoadedImage::LoadedImage(const std::vector<uint8_t>& bytes, const std::string& source) {
+  auto r = FromBytes(bytes, source);
+  if (!r.ok()) throw tools::InputError(r.error().message);
+  *this = std::move(r).value();
+}
+
+Expected<LoadedImage> ReadImageFile(const std::string& path) {
+  VOLCOMP_TRY_ASSIGN(const std::vector<uint8_t> bytes, tools::ReadFileBytes(path));
+  return LoadedImage::FromBytes(bytes, path);
 }
 
 LoadedImage LoadImageFile(const std::string& path) {

@@ -212,7 +212,9 @@ std::vector<LoadedResult> LoadResults(const std::string& path) {
   }
   std::vector<LoadedResult> out;
   for (const std::string& f : files) {
-    LoadedResult r{std::filesystem::path(f).stem().string(), f, tools::ParseJson(ReadAll(f), f)};
+    auto json = tools::ParseJson(ReadAll(f), f);
+    if (!json.ok()) throw InputError(json.error().message);  // TRANSITION (metrology returns results)
+    LoadedResult r{std::filesystem::path(f).stem().string(), f, std::move(json).value()};
     const std::string command = Command(r.json);
     if (command == "evaluate positioning" || command == "evaluate diagonal") {
       out.push_back(std::move(r));

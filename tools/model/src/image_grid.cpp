@@ -3,7 +3,7 @@
 
 #include <cmath>
 
-#include "volcomp/byte_order.hpp"
+#include "volcomp/base/byte_order.hpp"
 #include "volcomp/tools/csv.hpp"
 
 namespace volcomp::model {

@@ -7,8 +7,8 @@
 
 #include <cstdint>
 
-#include "volcomp/can_frame.hpp"
-#include "volcomp/status.hpp"
+#include "volcomp/can/can_frame.hpp"
+#include "volcomp/base/status.hpp"
 
 namespace volcomp::hal {
 

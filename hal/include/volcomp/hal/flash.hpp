@@ -8,7 +8,7 @@
 #include <cstddef>
 #include <cstdint>
 
-#include "volcomp/status.hpp"
+#include "volcomp/base/status.hpp"
 
 namespace volcomp::hal {
 

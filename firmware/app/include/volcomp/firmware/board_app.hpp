@@ -46,11 +46,11 @@
 #include <atomic>
 #include <cstdint>
 
-#include "volcomp/board_config.hpp"
+#include "volcomp/config/board_config.hpp"
 #include "volcomp/canopen/board_protocol.hpp"
 #include "volcomp/canopen/node.hpp"
-#include "volcomp/compensator.hpp"
-#include "volcomp/control_tick.hpp"
+#include "volcomp/control/compensator.hpp"
+#include "volcomp/control/control_tick.hpp"
 #include "volcomp/firmware/board_control.hpp"
 #include "volcomp/firmware/board_objects.hpp"
 #include "volcomp/firmware/settings.hpp"
@@ -62,8 +62,8 @@
 #include "volcomp/hal/flash.hpp"
 #include "volcomp/hal/slow_io.hpp"
 #include "volcomp/hal/tick_timer.hpp"
-#include "volcomp/status.hpp"
-#include "volcomp/table_image.hpp"
+#include "volcomp/base/status.hpp"
+#include "volcomp/table/table_image.hpp"
 
 namespace volcomp::firmware {
 

@@ -5,10 +5,10 @@
 
 #include <cstdint>
 
-#include "volcomp/compensator.hpp"
-#include "volcomp/control_tick.hpp"
-#include "volcomp/status.hpp"
-#include "volcomp/table_image.hpp"
+#include "volcomp/control/compensator.hpp"
+#include "volcomp/control/control_tick.hpp"
+#include "volcomp/base/status.hpp"
+#include "volcomp/table/table_image.hpp"
 #include "volcomp/firmware/tick_io.hpp"
 
 namespace volcomp::firmware {

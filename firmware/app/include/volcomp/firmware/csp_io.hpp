@@ -6,12 +6,12 @@
 
 #include <cstdint>
 
-#include "volcomp/board_config.hpp"
-#include "volcomp/control_tick.hpp"
-#include "volcomp/csp_gateway.hpp"
-#include "volcomp/csp_stages.hpp"
+#include "volcomp/config/board_config.hpp"
+#include "volcomp/control/control_tick.hpp"
+#include "volcomp/gateway/csp_gateway.hpp"
+#include "volcomp/gateway/csp_stages.hpp"
 #include "volcomp/firmware/tick_io.hpp"
-#include "volcomp/status.hpp"
+#include "volcomp/base/status.hpp"
 
 namespace volcomp::firmware {
 

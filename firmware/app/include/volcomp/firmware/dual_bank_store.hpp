@@ -35,7 +35,7 @@
 #include <cstdint>
 
 #include "volcomp/hal/flash.hpp"
-#include "volcomp/status.hpp"
+#include "volcomp/base/status.hpp"
 
 namespace volcomp::firmware {
 

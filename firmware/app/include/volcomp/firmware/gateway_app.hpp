@@ -26,7 +26,7 @@
 
 #include <cstdint>
 
-#include "volcomp/csp_gateway.hpp"
+#include "volcomp/gateway/csp_gateway.hpp"
 #include "volcomp/firmware/board_app.hpp"
 #include "volcomp/firmware/csp_io.hpp"
 #include "volcomp/hal/can.hpp"

@@ -5,11 +5,11 @@
 
 #include <cstdint>
 
-#include "volcomp/board_config.hpp"
+#include "volcomp/config/board_config.hpp"
 #include "volcomp/canopen/node_defaults.hpp"
 #include "volcomp/firmware/dual_bank_store.hpp"
 #include "volcomp/hal/flash.hpp"
-#include "volcomp/status.hpp"
+#include "volcomp/base/status.hpp"
 
 namespace volcomp::firmware {
 

@@ -6,14 +6,14 @@
 
 #include <cstdint>
 
-#include "volcomp/board_config.hpp"
-#include "volcomp/control_tick.hpp"
+#include "volcomp/config/board_config.hpp"
+#include "volcomp/control/control_tick.hpp"
 #include "volcomp/firmware/tick_io.hpp"
 #include "volcomp/hal/step_io.hpp"
-#include "volcomp/status.hpp"
-#include "volcomp/step_generator.hpp"
-#include "volcomp/step_output.hpp"
-#include "volcomp/table_format.hpp"
+#include "volcomp/base/status.hpp"
+#include "volcomp/output/step_generator.hpp"
+#include "volcomp/output/step_output.hpp"
+#include "volcomp/table/table_format.hpp"
 
 namespace volcomp::firmware {
 

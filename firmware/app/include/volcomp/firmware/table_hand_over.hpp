@@ -20,7 +20,7 @@
 #include <atomic>
 #include <cstdint>
 
-#include "volcomp/compensator.hpp"
+#include "volcomp/control/compensator.hpp"
 
 namespace volcomp::firmware {
 

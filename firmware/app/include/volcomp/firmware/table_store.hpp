@@ -17,12 +17,12 @@
 
 #include <cstdint>
 
-#include "volcomp/board_config.hpp"
+#include "volcomp/config/board_config.hpp"
 #include "volcomp/canopen/board_protocol.hpp"
 #include "volcomp/firmware/dual_bank_store.hpp"
 #include "volcomp/hal/flash.hpp"
-#include "volcomp/status.hpp"
-#include "volcomp/table_image.hpp"
+#include "volcomp/base/status.hpp"
+#include "volcomp/table/table_image.hpp"
 
 namespace volcomp::firmware {
 

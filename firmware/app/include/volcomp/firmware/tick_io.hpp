@@ -25,10 +25,10 @@
 #include <cstdint>
 #include <type_traits>
 
-#include "volcomp/board_config.hpp"
-#include "volcomp/control_tick.hpp"
-#include "volcomp/status.hpp"
-#include "volcomp/table_format.hpp"
+#include "volcomp/config/board_config.hpp"
+#include "volcomp/control/control_tick.hpp"
+#include "volcomp/base/status.hpp"
+#include "volcomp/table/table_format.hpp"
 
 namespace volcomp::firmware {
 

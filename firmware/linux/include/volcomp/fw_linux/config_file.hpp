@@ -25,9 +25,9 @@
 #include <cstdint>
 #include <string>
 
-#include "volcomp/csp_gateway.hpp"
+#include "volcomp/gateway/csp_gateway.hpp"
 #include "volcomp/firmware/settings.hpp"
-#include "volcomp/hal/linux/expected.hpp"
+#include "volcomp/hosted/expected.hpp"
 #include "volcomp/hal/linux/gpio_lines.hpp"
 
 namespace volcomp::fw_linux {

@@ -22,7 +22,7 @@
 #include "volcomp/firmware/gateway_app.hpp"
 #include "volcomp/fw_linux/config_file.hpp"
 #include "volcomp/hal/can.hpp"
-#include "volcomp/hal/linux/expected.hpp"
+#include "volcomp/hosted/expected.hpp"
 #include "volcomp/hal/linux/file_flash.hpp"
 #include "volcomp/hal/linux/gpio_lines.hpp"
 #include "volcomp/hal/linux/linux_slow_io.hpp"

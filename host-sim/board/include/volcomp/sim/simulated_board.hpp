@@ -24,7 +24,7 @@
 #include "volcomp/sim/sim_bus.hpp"
 #include "volcomp/sim/sim_bus_can_port.hpp"
 #include "volcomp/sim/write_through_flash.hpp"
-#include "volcomp/step_output.hpp"
+#include "volcomp/output/step_output.hpp"
 
 namespace volcomp::sim {
 

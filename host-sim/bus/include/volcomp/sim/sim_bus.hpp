@@ -38,7 +38,7 @@
 #include <string>
 #include <vector>
 
-#include "volcomp/can_frame.hpp"
+#include "volcomp/can/can_frame.hpp"
 
 namespace volcomp::sim {
 

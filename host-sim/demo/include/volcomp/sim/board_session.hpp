@@ -1,6 +1,6 @@
 // The PC tool's table transfer, run against the simulated board in virtual time with the PC tool's
 // own protocol code (tools/canopen: NodeObjects, the staging steps of table_staging.hpp, SdoClient
-// through sdo_runner), in the same order as `volcomp upload` (tools/volcomp/cmd_upload.cpp): read
+// through sdo_runner), in the same order as `volcomp upload` (tools/cli/cmd_upload.cpp): read
 // the active CRC-32 and the bank size, PrepareStaging (unlock if needed, clear the staging bank),
 // block-download the image into 0x2100, VerifyStaged (verify on the board, compare the staged
 // CRC-32); then activation (0x2101 = 1) and a check of the active CRC-32 (0x2104) and device

@@ -1,5 +1,5 @@
 // SimStatus and SimResult<T>: the error type of the simulator's sessions (hosted code). The same
-// shape as volcomp::Status / Result<T> (lib/include/volcomp/status.hpp), plus the reason in words,
+// shape as volcomp::Status / Result<T> (lib/base/include/volcomp/base/status.hpp), plus the reason in words,
 // because a session's failures need them: an SDO abort with its object, a program that did not
 // finish, a board that refused to activate. Errors are returned, never thrown; the command line
 // (demo_cli.cpp) is where they are printed.
@@ -8,7 +8,7 @@
 #include <string>
 #include <utility>
 
-#include "volcomp/status.hpp"
+#include "volcomp/base/status.hpp"
 
 namespace volcomp::sim {
 

@@ -13,10 +13,10 @@
 
 #include <cstdint>
 
-#include "volcomp/board_config.hpp"
-#include "volcomp/correction_limiter.hpp"
-#include "volcomp/status.hpp"
-#include "volcomp/step_generator.hpp"
+#include "volcomp/config/board_config.hpp"
+#include "volcomp/limiter/correction_limiter.hpp"
+#include "volcomp/base/status.hpp"
+#include "volcomp/output/step_generator.hpp"
 
 namespace volcomp {
 

@@ -14,7 +14,7 @@
 
 #include <cstdint>
 
-#include "volcomp/board_config.hpp"
+#include "volcomp/config/board_config.hpp"
 
 namespace volcomp {
 

@@ -15,7 +15,7 @@
 #include <string>
 
 #include "volcomp/can_io/transport.hpp"
-#include "volcomp/slcan.hpp"
+#include "volcomp/can/slcan.hpp"
 
 namespace volcomp::can_io {
 

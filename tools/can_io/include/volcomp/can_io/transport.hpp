@@ -21,7 +21,7 @@
 #include <string>
 #include <vector>
 
-#include "volcomp/can_frame.hpp"
+#include "volcomp/can/can_frame.hpp"
 
 namespace volcomp::can_io {
 

@@ -18,7 +18,7 @@
 #include <string>
 #include <vector>
 
-#include "volcomp/can_frame.hpp"
+#include "volcomp/can/can_frame.hpp"
 #include "volcomp/canopen/sdo_abort.hpp"
 
 namespace volcomp::canopen_client {

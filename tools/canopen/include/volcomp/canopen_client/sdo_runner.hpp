@@ -5,7 +5,7 @@
 #include <functional>
 #include <optional>
 
-#include "volcomp/can_frame.hpp"
+#include "volcomp/can/can_frame.hpp"
 #include "volcomp/canopen_client/sdo_client.hpp"
 
 namespace volcomp::canopen_client {

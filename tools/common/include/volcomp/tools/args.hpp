@@ -1,7 +1,7 @@
 // Command-line options for the PC tool: `--name value`, `--name=value`, flags and positionals.
 //
 // Every `volcomp` command declares its options in one table of OptionSpec rows
-// (tools/volcomp/commands.cpp). The same rows drive `volcomp help COMMAND` and this parser, so
+// (tools/cli/commands.cpp). The same rows drive `volcomp help COMMAND` and this parser, so
 // the help cannot disagree with what is parsed. With a table, Args classifies the words once:
 //   - a word naming a declared option is that option; a value option takes the next word as its
 //     value whatever it looks like (`--tool-offset-mm -1,2,3`, `--name -X-Y-Z`), or the text
@@ -13,12 +13,17 @@
 //   - a non-repeatable option given twice is a UsageError;
 //   - an absent option with a declared default yields that default, so the default shown by the
 //     help is the one in force.
-// Asking for an option the table does not declare is a programming error (std::logic_error).
-// Without a table (`Args(words)`, used by in-process tests and other tools) options are
+// Asking for an option the table does not declare is a programming error (a kInvalidArgument
+// failure naming it). Without a table (`Args(words)`, used by in-process tests) options are
 // recognised as they are queried, with the same rules for numbers and `--`.
 //
-// Usage: auto out = a.value("-o", "--output"); bool json = a.flag("--json"); a.finish();
-// finish() throws UsageError for anything given but not consumed, so typos are never ignored.
+// Errors are sticky, like a stream's fail state: a query that fails (missing value, bad number,
+// missing required option) returns an empty value and keeps the first failure (kUsage); Finish()
+// returns it, or a failure naming the first word given but not consumed, so typos are never
+// ignored. Read every option, then check once:
+//   const auto out = args.Value("--output", "-o");
+//   const bool json = args.Flag("--json");
+//   VOLCOMP_TRY(args.Finish());
 #pragma once
 
 #include <cstddef>
@@ -27,8 +32,11 @@
 #include <string>
 #include <vector>
 
+#include "volcomp/hosted/expected.hpp"
+
 namespace volcomp::tools {
 
+/// TRANSITION: thrown by the lower-case (throwing) API below; goes with it.
 class UsageError : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
@@ -49,9 +57,31 @@ class Args {
  public:
   /// Options recognised as they are queried (no table).
   explicit Args(std::vector<std::string> args);
-  /// Options classified against `spec` (which must outlive this object); throws UsageError for
-  /// an unknown option, a missing value, a value given to a flag or a repeated option.
+  /// Options classified against `spec` (which must outlive this object); an unknown option, a
+  /// missing value, a value given to a flag or a repeated option is the failure status() holds.
   Args(std::vector<std::string> args, const std::vector<OptionSpec>* spec);
+
+  /// True when `name` (or `alias`) is present as a flag; consumes it.
+  bool Flag(const std::string& name, const std::string& alias = "");
+  /// Value of `--name value` or `--name=value`; the declared default when absent (nullopt when
+  /// there is none).
+  std::optional<std::string> Value(const std::string& name, const std::string& alias = "");
+  /// Every value of a repeatable option, in order.
+  std::vector<std::string> Values(const std::string& name);
+  /// Like Value(), but absent is a failure ("missing required option --name"); "" then.
+  std::string Required(const std::string& name, const std::string& alias = "");
+  /// Numeric options (a value that is not a number is a failure; nullopt then).
+  std::optional<double> Number(const std::string& name);
+  std::optional<long long> Integer(const std::string& name);
+  /// Remaining non-option arguments, in order; consumes them.
+  std::vector<std::string> Positionals();
+  /// The first failure, or one naming the first word given but not consumed, or success.
+  Outcome Finish() const;
+  /// The first failure so far (classification included), or success.
+  const Outcome& status() const { return status_; }
+
+  // TRANSITION: the throwing forms of the above (UsageError; std::logic_error for an undeclared
+  // option), for the commands not yet converted. Removed with them.
 
   /// True when `name` (or `alias`) is present as a flag; consumes it.
   bool flag(const std::string& name, const std::string& alias = "");
@@ -77,7 +107,9 @@ class Args {
     std::size_t option = 0;  // index into spec_ for kOption
     std::string value;       // kOption: its value (value options)
   };
-  const OptionSpec* Declared(const std::string& name, bool want_value) const;
+  const OptionSpec* Declared(const std::string& name, bool want_value);
+  void Record(Error code, const std::string& message);
+  void ThrowIfFailed() const;
   std::vector<std::size_t> Occurrences(const OptionSpec& o) const;
   bool AfterEnd(std::size_t i) const { return i > end_of_options_; }
 
@@ -86,6 +118,7 @@ class Args {
   const std::vector<OptionSpec>* spec_ = nullptr;
   std::vector<Word> words_;  // with a table: the classification of args_
   std::size_t end_of_options_ = static_cast<std::size_t>(-1);  // index of "--", or none
+  Outcome status_;
 };
 
 /// True for a word that parses as a number (a value, never an option), e.g. "-5000".

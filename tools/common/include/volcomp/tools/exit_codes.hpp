@@ -8,7 +8,7 @@
 //
 // Commands return these codes or throw: UsageError (args.hpp) → 2, CommunicationError → 3, any
 // other exception (InputError of csv.hpp, ...) → 1. The mapping is done once, in
-// RunCommandLine (tools/volcomp/commands.hpp).
+// RunCommandLine (tools/cli/commands.hpp).
 #pragma once
 
 #include <stdexcept>

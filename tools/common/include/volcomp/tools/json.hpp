@@ -1,8 +1,8 @@
 // Minimal JSON writer for `--json` outputs (objects, arrays, strings, numbers, booleans, null).
 //
 // JsonWriter w(std::cout); w.begin_object(); w.key("a").value(1.5); w.end_object();
-// Output is indented with two spaces; doubles are printed with up to 17 significant digits
-// (shortest round-trip form where possible), NaN/Inf as null.
+// Output is indented with two spaces (or on one line: JsonWriter(out, true)); doubles are printed
+// with up to 17 significant digits (shortest round-trip form where possible), NaN/Inf as null.
 #pragma once
 
 #include <cstdint>
@@ -12,9 +12,11 @@
 
 namespace volcomp::tools {
 
+struct JsonValue;
+
 class JsonWriter {
  public:
-  explicit JsonWriter(std::ostream& out) : out_(out) {}
+  explicit JsonWriter(std::ostream& out, bool compact = false) : out_(out), compact_(compact) {}
   ~JsonWriter();
 
   JsonWriter& begin_object();
@@ -31,6 +33,8 @@ class JsonWriter {
   JsonWriter& value(int i) { return value(static_cast<int64_t>(i)); }
   JsonWriter& value(unsigned u) { return value(static_cast<uint64_t>(u)); }
   JsonWriter& value(bool b);
+  /// A whole document value (objects and arrays recursively).
+  JsonWriter& value(const JsonValue& v);
   JsonWriter& null();
 
   /// Escapes a string for JSON (without the surrounding quotes).
@@ -43,6 +47,7 @@ class JsonWriter {
   JsonWriter& End(char close);
   void Newline();
   std::ostream& out_;
+  bool compact_ = false;
   std::vector<bool> first_;  // per open container: no element written yet
   bool after_key_ = false;
 };

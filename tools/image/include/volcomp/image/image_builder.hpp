@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-#include "volcomp/table_format.hpp"
+#include "volcomp/table/table_format.hpp"
 
 namespace volcomp::image {
 

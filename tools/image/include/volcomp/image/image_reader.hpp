@@ -6,18 +6,24 @@
 #include <string>
 #include <vector>
 
-#include "volcomp/board_config.hpp"
-#include "volcomp/compensator.hpp"
-#include "volcomp/table_image.hpp"
+#include "volcomp/config/board_config.hpp"
+#include "volcomp/control/compensator.hpp"
+#include "volcomp/hosted/expected.hpp"
+#include "volcomp/table/table_image.hpp"
 
 namespace volcomp::image {
 
 /// A validated image in 4-byte aligned memory. Move-only (the view points into the storage).
 class LoadedImage {
  public:
-  /// Validates `bytes`; throws tools::InputError "SOURCE: invalid table image: TEXT (kName)".
+  /// Validates `bytes` with the firmware's parser; the failure (kInputInvalid) reads
+  /// "SOURCE: invalid table image: TEXT (kName)".
+  static Expected<LoadedImage> FromBytes(const std::vector<uint8_t>& bytes,
+                                         const std::string& source);
+  /// TRANSITION: throws tools::InputError with that text; goes once every caller uses FromBytes.
   LoadedImage(const std::vector<uint8_t>& bytes, const std::string& source);
   LoadedImage(LoadedImage&&) = default;
+  LoadedImage& operator=(LoadedImage&&) = default;
   LoadedImage(const LoadedImage&) = delete;
   LoadedImage& operator=(const LoadedImage&) = delete;
 
@@ -26,10 +32,14 @@ class LoadedImage {
   uint32_t size() const { return view_.image_size; }
 
  private:
+  LoadedImage() = default;
   std::vector<uint32_t> storage_;
   table::TableView view_;
 };
 
+/// Reads and validates the image file at `path` (kIoError when it cannot be read).
+Expected<LoadedImage> ReadImageFile(const std::string& path);
+/// TRANSITION: the throwing form of ReadImageFile.
 LoadedImage LoadImageFile(const std::string& path);
 
 /// A board configuration whose axes are exactly the image's (for tools and the simulator).

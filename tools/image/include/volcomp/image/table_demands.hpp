@@ -17,8 +17,8 @@
 #include <array>
 #include <vector>
 
-#include "volcomp/table_format.hpp"
-#include "volcomp/table_image.hpp"
+#include "volcomp/table/table_format.hpp"
+#include "volcomp/table/table_image.hpp"
 
 namespace volcomp::image {
 

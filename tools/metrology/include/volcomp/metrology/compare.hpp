@@ -16,7 +16,7 @@
 #include <vector>
 
 #include "volcomp/report/html_page.hpp"
-#include "volcomp/tools/json_reader.hpp"
+#include "volcomp/tools/json_value.hpp"
 
 namespace volcomp::metrology {
 

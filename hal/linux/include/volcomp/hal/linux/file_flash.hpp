@@ -39,7 +39,7 @@
 #include <vector>
 
 #include "volcomp/hal/flash.hpp"
-#include "volcomp/hal/linux/expected.hpp"
+#include "volcomp/hosted/expected.hpp"
 
 namespace volcomp::hal::linux_board {
 

@@ -16,7 +16,7 @@
 #include <cstdint>
 #include <string>
 
-#include "volcomp/hal/linux/expected.hpp"
+#include "volcomp/hosted/expected.hpp"
 #include "volcomp/hal/slow_io.hpp"
 
 namespace volcomp::hal::linux_board {

@@ -8,7 +8,7 @@
 
 #include <signal.h>
 
-#include "volcomp/hal/linux/expected.hpp"
+#include "volcomp/hosted/expected.hpp"
 
 namespace volcomp::hal::linux_board {
 

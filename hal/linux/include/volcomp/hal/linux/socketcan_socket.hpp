@@ -16,8 +16,8 @@
 #include <string>
 #include <vector>
 
-#include "volcomp/can_frame.hpp"
-#include "volcomp/hal/linux/expected.hpp"
+#include "volcomp/can/can_frame.hpp"
+#include "volcomp/hosted/expected.hpp"
 
 namespace volcomp::hal::socketcan {
 

@@ -14,7 +14,7 @@
 
 #include <cstdint>
 
-#include "volcomp/hal/linux/expected.hpp"
+#include "volcomp/hosted/expected.hpp"
 #include "volcomp/hal/tick_timer.hpp"
 
 namespace volcomp::hal::linux_board {

@@ -17,7 +17,7 @@
 #include <string>
 #include <vector>
 
-#include "volcomp/board_config.hpp"
+#include "volcomp/config/board_config.hpp"
 
 namespace volcomp::hal::mock {
 

@@ -11,10 +11,10 @@
 #include <memory>
 #include <vector>
 
-#include "volcomp/board_config.hpp"
+#include "volcomp/config/board_config.hpp"
 #include "volcomp/hal/mock/drive_model.hpp"
 #include "volcomp/hal/mock/timeline.hpp"
-#include "volcomp/step_generator.hpp"
+#include "volcomp/output/step_generator.hpp"
 
 namespace volcomp::hal::mock {
 

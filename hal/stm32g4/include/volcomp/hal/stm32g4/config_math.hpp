@@ -7,10 +7,10 @@
 
 #include <cstdint>
 
-#include "volcomp/board_config.hpp"
+#include "volcomp/config/board_config.hpp"
 #include "volcomp/hal/stm32g4/registers.hpp"
-#include "volcomp/status.hpp"
-#include "volcomp/step_generator.hpp"
+#include "volcomp/base/status.hpp"
+#include "volcomp/output/step_generator.hpp"
 
 namespace volcomp::stm32g4 {
 

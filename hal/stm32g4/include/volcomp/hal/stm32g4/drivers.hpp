@@ -18,7 +18,7 @@
 
 #include <cstdint>
 
-#include "volcomp/board_config.hpp"
+#include "volcomp/config/board_config.hpp"
 #include "volcomp/hal/can.hpp"
 #include "volcomp/hal/clock.hpp"
 #include "volcomp/hal/flash.hpp"
@@ -26,7 +26,7 @@
 #include "volcomp/hal/stm32g4/config_math.hpp"
 #include "volcomp/hal/stm32g4/registers.hpp"
 #include "volcomp/hal/tick_timer.hpp"
-#include "volcomp/step_generator.hpp"
+#include "volcomp/output/step_generator.hpp"
 
 namespace volcomp::stm32g4 {
 

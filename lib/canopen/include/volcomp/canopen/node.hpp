@@ -1,0 +1,177 @@
+// CiA 301 node: NMT slave (boot-up, pre-operational / operational / stopped, resets), heartbeat
+// producer (0x1017), EMCY producer with inhibit time (0x1015), error register (0x1001) and error
+// history (0x1003), and the SDO server, over one CAN channel with the pre-defined connection set
+// (COB-IDs from the node-ID: NMT 0x000, EMCY 0x080+id, SDO 0x600+id / 0x580+id, heartbeat
+// 0x700+id).
+//
+// The node answers the communication objects itself (0x1001, 0x1003, 0x1014, 0x1015, 0x1017,
+// 0x1200) and passes every other object to the application's ObjectValues. Frames out are drained
+// with PopTx(): boot-up and heartbeat first, then EMCY (as the inhibit time allows), then SDO
+// traffic. Single-threaded (main loop).
+//
+// Communication parameters (CommunicationParameters: 0x1015, 0x1017) have two values: the one in
+// force (written over SDO, takes effect at once) and the stored one (given to Start(): the stored
+// settings or the defaults; replaced by set_stored_communication() after a store). NMT reset
+// communication (and reset node) puts the stored values back in force (CiA 301 7.3.2.2.2).
+//
+// EMCY inhibit time: two EMCYs leave at least 0x1015 x 100 us apart. The node's clock counts
+// milliseconds, so the gap is enforced as ceil(0x1015 / 10) + 1 clock milliseconds (never shorter
+// than the inhibit time, at most 2 ms longer). EMCYs raised meanwhile wait, in order, in a queue of
+// kEmcyQueueLength; when it is full the newest waiting EMCY is replaced by the new one (the last
+// EMCY sent always gives the current error register) and counted in emcy_suppressed(). Every
+// raised error is in the 0x1003 history whether its EMCY was sent or not.
+#pragma once
+
+#include <cstdint>
+
+#include "volcomp/can/can_frame.hpp"
+#include "volcomp/canopen/node_defaults.hpp"
+#include "volcomp/canopen/object_values.hpp"
+#include "volcomp/canopen/sdo_server.hpp"
+
+namespace volcomp::canopen {
+
+enum class NmtState : uint8_t {
+  kInitialising = 0x00,
+  kStopped = 0x04,
+  kOperational = 0x05,
+  kPreOperational = 0x7F,
+};
+
+/// NMT command specifiers (CiA 301 7.2.8.3.1): byte 0 of the NMT frame 0x000 [command, node-ID]
+/// (node-ID 0: every node).
+enum class NmtCommand : uint8_t {
+  kStart = 0x01,  // to operational
+  kStop = 0x02,   // to stopped (only NMT and heartbeat answered)
+  kEnterPreOperational = 0x80,
+  kResetNode = 0x81,           // the application restarts from its stored settings
+  kResetCommunication = 0x82,  // the communication restarts from its stored parameters
+};
+
+enum class ResetRequest : uint8_t { kNone, kNode, kCommunication };
+
+/// The communication parameters the node keeps (CiA 301 area 0x1000-0x1FFF that is writable).
+struct CommunicationParameters {
+  uint16_t heartbeat_ms = kDefaultHeartbeatMs;             // 0x1017 (0 = off)
+  uint16_t emcy_inhibit_100us = kDefaultEmcyInhibit100us;  // 0x1015 (0 = no inhibit)
+};
+
+inline constexpr uint8_t kEmcyQueueLength = 8;
+
+/// COB-IDs of the pre-defined connection set (EMCY and heartbeat: + node-ID; SDO:
+/// sdo_protocol.hpp).
+inline constexpr uint32_t kNmtCobId = 0x000;
+inline constexpr uint32_t kEmcyCobBase = 0x080;
+inline constexpr uint32_t kHeartbeatCobBase = 0x700;
+
+/// Error register (0x1001) bits.
+enum ErrorRegisterBit : uint8_t {
+  kErrGeneric = 0x01,
+  kErrCurrent = 0x02,
+  kErrVoltage = 0x04,
+  kErrTemperature = 0x08,
+  kErrCommunication = 0x10,
+  kErrDeviceProfile = 0x20,
+  kErrManufacturer = 0x80,
+};
+
+class Node : private ObjectValues {
+ public:
+  /// Starts (or restarts after a reset node) with `node_id` (1..127) and the `stored`
+  /// communication parameters in force: queues the boot-up message and enters pre-operational.
+  /// `app` answers the non-communication objects. EMCYs raised before Start() go out after the
+  /// boot-up message.
+  void Start(uint8_t node_id,
+             ObjectValues* app,
+             uint32_t now_ms,
+             const CommunicationParameters& stored = CommunicationParameters(),
+             const SdoServerConfig& sdo = SdoServerConfig());
+  /// NMT reset communication: the stored communication parameters back in force, the SDO server
+  /// reset (a transfer in progress ends), boot-up, pre-operational.
+  void ResetCommunication(uint32_t now_ms);
+
+  void OnFrame(const CanFrame& frame, uint32_t now_ms);
+  void Poll(uint32_t now_ms);
+  bool PopTx(CanFrame* frame);
+
+  /// Records an error: sets `register_bits` (plus the generic bit) in 0x1001, pushes `code` into
+  /// the 0x1003 history and sends EMCY `code` with 5 manufacturer bytes (may be null).
+  void RaiseError(uint16_t code, uint8_t register_bits, const uint8_t* manufacturer = nullptr);
+  /// Clears the error register and sends the "error reset" EMCY (code 0x0000).
+  void ClearErrors();
+  /// Reports a one-off event that leaves no error standing (a refused request, a failed transfer
+  /// or verification): RaiseError(code, register_bits) with `detail` little-endian in bytes 3..6
+  /// and 0 in byte 7, then ClearErrors().
+  void ReportEvent(uint16_t code, uint8_t register_bits, uint32_t detail);
+
+  NmtState state() const { return state_; }
+  uint8_t node_id() const { return node_id_; }
+  uint8_t error_register() const { return error_register_; }
+  /// A reset commanded over NMT, returned once; the application performs it: reset node
+  /// restarts the application and calls Start(), reset communication calls ResetCommunication().
+  ResetRequest TakeResetRequest() {
+    const ResetRequest r = reset_;
+    reset_ = ResetRequest::kNone;
+    return r;
+  }
+  /// The communication parameters in force, and the stored ones (restored by the resets).
+  const CommunicationParameters& communication() const { return comm_; }
+  const CommunicationParameters& stored_communication() const { return stored_; }
+  /// After the application stored the parameters (0x1010): they are what a reset restores.
+  void set_stored_communication(const CommunicationParameters& c) { stored_ = c; }
+  uint16_t heartbeat_ms() const { return comm_.heartbeat_ms; }
+  /// Sets 0x1017 in force (as an SDO write does).
+  void set_heartbeat_ms(uint16_t ms) { comm_.heartbeat_ms = ms; }
+  const SdoServer& sdo() const { return sdo_; }
+  /// EMCY frames handed to PopTx, and EMCYs replaced in a full queue (never sent).
+  uint32_t emcy_sent() const { return emcy_sent_; }
+  uint32_t emcy_suppressed() const { return emcy_suppressed_; }
+  uint32_t malformed() const { return malformed_ + sdo_.malformed(); }
+
+ private:
+  SdoAbort DoRead(const ObjectEntry& e,
+                  uint32_t offset,
+                  uint8_t* buf,
+                  uint32_t cap,
+                  uint32_t* copied,
+                  uint32_t* total) override;
+  SdoAbort DoWrite(const ObjectEntry& e, const uint8_t* data, uint32_t size) override;
+  SdoAbort DoBeginDomainWrite(const ObjectEntry& e, uint32_t size) override;
+  SdoAbort DoDomainWriteData(const uint8_t* data, uint32_t size) override;
+  SdoAbort DoEndDomainWrite(SdoAbort outcome) override;
+  uint32_t DoDomainWriteWindow() override;
+  SdoAbort DoDomainWriteFlush(bool* done) override;
+  bool ReadCommunication(const ObjectEntry& e, uint32_t* value) const;
+  void Boot(uint32_t now_ms);
+  void QueueUrgent(const CanFrame& f);
+  void QueueEmcy(const CanFrame& f);
+  bool PopEmcy(CanFrame* frame);
+
+  uint8_t node_id_ = 1;
+  ObjectValues* app_ = nullptr;
+  SdoServerConfig sdo_config_;
+  SdoServer sdo_;
+  NmtState state_ = NmtState::kInitialising;
+  ResetRequest reset_ = ResetRequest::kNone;
+  CommunicationParameters stored_;
+  CommunicationParameters comm_;
+  uint32_t now_ms_ = 0;  // of the last Start / OnFrame / Poll (PopTx has no clock)
+  uint32_t last_heartbeat_ms_ = 0;
+  uint8_t error_register_ = 0;
+  uint32_t history_[8] = {};
+  uint8_t history_count_ = 0;
+  CanFrame urgent_[4];  // boot-up, heartbeat
+  uint8_t urgent_head_ = 0;
+  uint8_t urgent_count_ = 0;
+  CanFrame emcy_[kEmcyQueueLength];
+  uint8_t emcy_head_ = 0;
+  uint8_t emcy_count_ = 0;
+  bool emcy_ever_sent_ = false;
+  uint32_t last_emcy_ms_ = 0;
+  uint32_t emcy_sent_ = 0;
+  uint32_t emcy_suppressed_ = 0;
+  uint32_t malformed_ = 0;
+  uint32_t reported_aborts_ = 0;
+};
+
+}  // namespace volcomp::canopen

@@ -1,0 +1,164 @@
+// CiA 301 SDO server: expedited, segmented and block download and upload, for one node.
+//
+// Frames in: OnFrame() with every frame the node receives on 0x600 + node-ID (DLC must be 8;
+// others are counted as malformed and ignored). Frames out: PopTx(), drained by the node while
+// the CAN port accepts them (block upload segments are generated lazily, so no buffer grows).
+// Poll() runs the timeouts. Single-threaded: call everything from the main loop.
+//
+// Block download (the table upload path): the server offers `block_size` segments per sub-block
+// (client told in every ack), accepts segments only in sequence, ignores duplicates, acknowledges
+// a gap at once with the last good sequence number (the client resends from there, renumbered
+// from 1), re-acknowledges after `block_gap_ms` of silence inside a sub-block (a lost tail),
+// acknowledges a repeated last segment again (a lost final ack), checks the CRC-16/XMODEM over the
+// data bytes and the indicated size, and streams the data to ObjectValues as it arrives (so no
+// buffer of the whole object is needed). Any transfer idle for `timeout_ms` is aborted with
+// 0x05040000.
+//
+// Pacing (values whose data takes time to make durable, e.g. a table staged into flash): when
+// ObjectValues::DomainWriteWindow() is not 0, the server offers at most window / 7 segments per
+// sub-block (never more than `block_size`), and holds back each block acknowledgement until
+// DomainWriteFlush() reports the data so far durable, one flush step per Poll(). The client sends
+// nothing between the end of a sub-block and its acknowledgement (CiA 301 block download), so the
+// slow work happens while the bus is quiet and the receive path only copies segments. Segments
+// that arrive while an acknowledgement is held back are ignored (the acknowledgement tells the
+// client where to go on).
+//
+// An abort (sent or received) in the middle of a block download sub-block leaves segments of that
+// sub-block in flight (the client sends a whole sub-block before it reads an answer). They are
+// discarded silently: after the abort, frames that continue the sub-block exactly (the next
+// sequence number, then the one after, ...; the c bit set exactly on the transfer's last segment
+// when the size was indicated) are dropped without an answer, until the sub-block's last segment
+// (sequence number = block size, or the c bit), a frame that does not continue it (served as a new
+// request) or `block_gap_ms` of silence. A client's own abort is handled the same way (a client
+// that aborts from another thread than the one sending may have segments queued behind it). The
+// price: a new request sent within `block_gap_ms` whose first byte happens to equal the next
+// segment's is dropped too; the client's timeout and retry recover it.
+#pragma once
+
+#include <cstdint>
+
+#include "volcomp/can/can_frame.hpp"
+#include "volcomp/canopen/object_values.hpp"
+
+namespace volcomp::canopen {
+
+struct SdoServerConfig {
+  uint32_t timeout_ms = 1000;
+  uint32_t block_gap_ms = 100;
+  uint8_t block_size = 127;  // 1..127
+};
+
+class SdoServer {
+ public:
+  void Init(uint8_t node_id,
+            ObjectValues* values,
+            const SdoServerConfig& config = SdoServerConfig());
+
+  void OnFrame(const CanFrame& frame, uint32_t now_ms);
+  void Poll(uint32_t now_ms);
+  /// Next frame to send, if any.
+  bool PopTx(CanFrame* frame);
+
+  bool busy() const { return state_ != State::kIdle; }
+  /// Transfers ended by an abort (sent or received), since Init().
+  uint32_t aborts() const { return aborts_; }
+  uint32_t malformed() const { return malformed_; }
+  /// Abort code of the last aborted transfer (kNone if none).
+  SdoAbort last_abort() const { return last_abort_; }
+
+ private:
+  enum class State : uint8_t {
+    kIdle,
+    kDownloadSegmented,
+    kUploadSegmented,
+    kBlockDownload,     // receiving sub-block segments
+    kBlockDownloadEnd,  // last segment seen, waiting for the end frame
+    kBlockUploadWaitStart,
+    kBlockUploadSend,
+    kBlockUploadWaitAck,
+    kBlockUploadWaitEndAck,
+  };
+
+  void HandleIdle(const CanFrame& f);
+  void InitiateDownload(const CanFrame& f);
+  void DownloadSegment(const CanFrame& f);
+  void InitiateUpload(const CanFrame& f);
+  void UploadSegment(const CanFrame& f);
+  void InitiateBlockDownload(const CanFrame& f);
+  void BlockDownloadSegment(const CanFrame& f);
+  void BlockDownloadEnd(const CanFrame& f);
+  void InitiateBlockUpload(const CanFrame& f);
+  void BlockUploadAck(const CanFrame& f);
+  void BlockUploadEndAck(const CanFrame& f);
+
+  // Checks the entry for reading or writing.
+  SdoAbort Lookup(uint16_t index, uint8_t sub, bool write);
+  // Start of a segmented or block download of `size` bytes (if known) into entry_: opens a domain
+  // write or checks the size against the small-value buffer.
+  SdoAbort BeginTransfer(bool size_known, uint32_t size);
+  // Delivers download data to the value or the small-object buffer.
+  SdoAbort Deliver(const uint8_t* data, uint32_t size);
+  SdoAbort FinishDownload();
+  void SendBlockAck();
+  // A block acknowledgement now, or once the value's data is durable (paced transfers).
+  void RequestBlockAck();
+  void Respond(uint8_t cmd, const uint8_t* payload4 = nullptr);
+  void Abort(SdoAbort code);
+  // Ends the transfer in progress with `outcome` (kNone = completed).
+  void EndTransfer(SdoAbort outcome);
+  // On an abort inside a block download sub-block: drop what follows of that sub-block.
+  void OpenDiscardWindow();
+  // True (and the frame is dropped) when byte 0 `cmd` continues the aborted sub-block.
+  bool DiscardLeftover(uint8_t cmd, uint32_t now_ms);
+  void Queue(const CanFrame& f);
+  CanFrame Frame(uint8_t cmd) const;  // a response frame with byte 0 = cmd, the rest 0
+
+  uint8_t node_id_ = 1;
+  ObjectValues* values_ = nullptr;
+  SdoServerConfig config_;
+
+  State state_ = State::kIdle;
+  const ObjectEntry* entry_ = nullptr;
+  uint16_t index_ = 0;
+  uint8_t sub_ = 0;
+  bool domain_ = false;  // streaming into the value vs. buffering a small value
+  bool size_known_ = false;
+  uint32_t size_ = 0;    // indicated size (download) or value size (upload)
+  uint32_t offset_ = 0;  // bytes delivered (download) / bytes acknowledged (upload)
+  uint8_t toggle_ = 0;
+  uint16_t crc_ = 0;
+  bool crc_on_ = false;
+  uint32_t last_rx_ms_ = 0;
+
+  // Block download sub-block state.
+  uint8_t blksize_ = 127;
+  bool paced_ = false;        // the value asks for flushes before acknowledgements
+  bool ack_pending_ = false;  // an acknowledgement waits for the flush to complete
+  uint8_t last_seq_ = 0;      // last in-sequence segment of this sub-block
+  bool awaiting_first_ = false;
+  uint8_t held_[7] = {};  // the last in-sequence segment, held until its length is known
+  bool have_held_ = false;
+  bool last_segment_seen_ = false;
+  uint32_t taken_segments_ = 0;  // in-sequence segments of this transfer
+  uint8_t discard_seq_ = 0;      // next sequence number of an aborted sub-block to drop (0 = none)
+  uint32_t discard_segments_left_ = 0;  // segments of the transfer still to come (0 = unknown)
+  uint32_t discard_rx_ms_ = 0;
+
+  // Block upload state.
+  uint8_t up_seq_ = 0;  // next segment number to send in this sub-block
+  uint8_t up_blksize_ = 0;
+
+  // Small (non-domain) values written segmented/block are collected here.
+  uint8_t small_[64] = {};
+  uint32_t small_len_ = 0;
+
+  CanFrame tx_[4];
+  uint8_t tx_head_ = 0;
+  uint8_t tx_count_ = 0;
+
+  uint32_t aborts_ = 0;
+  uint32_t malformed_ = 0;
+  SdoAbort last_abort_ = SdoAbort::kNone;
+};
+
+}  // namespace volcomp::canopen

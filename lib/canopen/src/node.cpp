@@ -1,0 +1,268 @@
+// CiA 301 node: NMT, heartbeat, EMCY, communication objects, SDO routing.
+#include "volcomp/base/byte_order.hpp"
+#include "volcomp/canopen/board_protocol.hpp"
+#include "volcomp/canopen/node.hpp"
+#include "volcomp/canopen/sdo_abort.hpp"
+#include "volcomp/canopen/sdo_protocol.hpp"
+
+namespace volcomp::canopen {
+
+namespace {
+
+constexpr uint8_t kUrgentLength = 4;
+
+// The EMCY gap on the millisecond clock: 0x1015 rounded up to whole milliseconds, plus one for
+// the clock's own resolution (two readings 1 ms apart may be only just over 0 ms apart).
+uint32_t EmcyGapMs(uint16_t inhibit_100us) {
+  return inhibit_100us == 0 ? 0u : (inhibit_100us + 9u) / 10u + 1u;
+}
+
+}  // namespace
+
+void Node::Start(uint8_t node_id,
+                 ObjectValues* app,
+                 uint32_t now_ms,
+                 const CommunicationParameters& stored,
+                 const SdoServerConfig& sdo) {
+  node_id_ = node_id;
+  app_ = app;
+  stored_ = stored;
+  sdo_config_ = sdo;
+  Boot(now_ms);
+}
+
+void Node::ResetCommunication(uint32_t now_ms) { Boot(now_ms); }
+
+void Node::Boot(uint32_t now_ms) {
+  comm_ = stored_;
+  sdo_.Init(node_id_, this, sdo_config_);
+  reported_aborts_ = 0;
+  urgent_count_ = 0;
+  reset_ = ResetRequest::kNone;
+  CanFrame boot;
+  boot.id = kHeartbeatCobBase + node_id_;
+  boot.dlc = 1;
+  boot.data[0] = 0x00;
+  QueueUrgent(boot);
+  state_ = NmtState::kPreOperational;
+  now_ms_ = now_ms;
+  last_heartbeat_ms_ = now_ms;
+}
+
+void Node::QueueUrgent(const CanFrame& f) {
+  if (urgent_count_ == kUrgentLength) {  // drop the oldest heartbeat rather than block
+    urgent_head_ = static_cast<uint8_t>((urgent_head_ + 1) % kUrgentLength);
+    --urgent_count_;
+  }
+  urgent_[(urgent_head_ + urgent_count_) % kUrgentLength] = f;
+  ++urgent_count_;
+}
+
+void Node::QueueEmcy(const CanFrame& e) {
+  if (emcy_count_ == kEmcyQueueLength) {
+    // Full: the newest waiting EMCY gives way to this one, so the last EMCY sent still tells
+    // the current state.
+    emcy_[(emcy_head_ + emcy_count_ - 1) % kEmcyQueueLength] = e;
+    ++emcy_suppressed_;
+    return;
+  }
+  emcy_[(emcy_head_ + emcy_count_) % kEmcyQueueLength] = e;
+  ++emcy_count_;
+}
+
+bool Node::PopEmcy(CanFrame* frame) {
+  // Not before the boot-up message, not while stopped (CiA 301: only NMT and heartbeat).
+  if (emcy_count_ == 0 || state_ == NmtState::kInitialising || state_ == NmtState::kStopped) {
+    return false;
+  }
+  if (emcy_ever_sent_ &&
+      static_cast<uint32_t>(now_ms_ - last_emcy_ms_) < EmcyGapMs(comm_.emcy_inhibit_100us)) {
+    return false;
+  }
+  *frame = emcy_[emcy_head_];
+  frame->id = kEmcyCobBase + node_id_;  // the node-ID in force when it leaves
+  emcy_head_ = static_cast<uint8_t>((emcy_head_ + 1) % kEmcyQueueLength);
+  --emcy_count_;
+  emcy_ever_sent_ = true;
+  last_emcy_ms_ = now_ms_;
+  ++emcy_sent_;
+  return true;
+}
+
+void Node::OnFrame(const CanFrame& f, uint32_t now_ms) {
+  now_ms_ = now_ms;
+  if (f.extended) return;
+  if (f.id == kNmtCobId) {
+    if (f.rtr || f.dlc != 2) {
+      ++malformed_;
+      return;
+    }
+    if (f.data[1] != 0 && f.data[1] != node_id_) return;
+    switch (static_cast<NmtCommand>(f.data[0])) {
+      case NmtCommand::kStart:
+        state_ = NmtState::kOperational;
+        break;
+      case NmtCommand::kStop:
+        state_ = NmtState::kStopped;
+        break;
+      case NmtCommand::kEnterPreOperational:
+        state_ = NmtState::kPreOperational;
+        break;
+      case NmtCommand::kResetNode:
+        reset_ = ResetRequest::kNode;
+        break;
+      case NmtCommand::kResetCommunication:
+        reset_ = ResetRequest::kCommunication;
+        break;
+      default:
+        ++malformed_;
+        break;
+    }
+    return;
+  }
+  if (f.id == sdo::kRequestCobBase + node_id_ && state_ != NmtState::kStopped)
+    sdo_.OnFrame(f, now_ms);
+}
+
+void Node::Poll(uint32_t now_ms) {
+  now_ms_ = now_ms;
+  if (state_ != NmtState::kStopped) sdo_.Poll(now_ms);
+  // Report failed transfers (protocol aborts: toggle, timeout, sequence, CRC, ...) by EMCY; the
+  // application reports the requests it refuses itself.
+  if (sdo_.aborts() != reported_aborts_) {
+    reported_aborts_ = sdo_.aborts();
+    const SdoAbort code = sdo_.last_abort();
+    if (IsProtocolAbort(code)) {
+      ReportEvent(kEmcySdoTransferFailed, kErrCommunication, Code(code));
+    }
+  }
+  const uint16_t heartbeat_ms = comm_.heartbeat_ms;
+  if (heartbeat_ms != 0 && static_cast<uint32_t>(now_ms - last_heartbeat_ms_) >= heartbeat_ms) {
+    last_heartbeat_ms_ = now_ms;
+    CanFrame hb;
+    hb.id = kHeartbeatCobBase + node_id_;
+    hb.dlc = 1;
+    hb.data[0] = static_cast<uint8_t>(state_);
+    QueueUrgent(hb);
+  }
+}
+
+bool Node::PopTx(CanFrame* frame) {
+  if (urgent_count_ > 0) {
+    *frame = urgent_[urgent_head_];
+    urgent_head_ = static_cast<uint8_t>((urgent_head_ + 1) % kUrgentLength);
+    --urgent_count_;
+    return true;
+  }
+  if (PopEmcy(frame)) return true;
+  return state_ != NmtState::kStopped && sdo_.PopTx(frame);
+}
+
+void Node::RaiseError(uint16_t code, uint8_t register_bits, const uint8_t* manufacturer) {
+  error_register_ = static_cast<uint8_t>(error_register_ | register_bits | kErrGeneric);
+  for (int i = 7; i > 0; --i) history_[i] = history_[i - 1];
+  history_[0] = code;
+  if (history_count_ < 8) ++history_count_;
+  if (state_ == NmtState::kStopped) return;  // EMCY is not sent while stopped
+  Emcy e;
+  e.code = code;
+  e.error_register = error_register_;
+  for (int i = 0; i < 5; ++i) e.data[i] = manufacturer != nullptr ? manufacturer[i] : 0;
+  QueueEmcy(EncodeEmcy(node_id_, e));
+}
+
+void Node::ClearErrors() {
+  if (error_register_ == 0) return;
+  error_register_ = 0;
+  if (state_ == NmtState::kStopped) return;
+  Emcy reset;
+  reset.code = kEmcyErrorReset;
+  QueueEmcy(EncodeEmcy(node_id_, reset));
+}
+
+void Node::ReportEvent(uint16_t code, uint8_t register_bits, uint32_t detail) {
+  uint8_t m[5];
+  StoreLe32(m, detail);
+  m[4] = 0;
+  RaiseError(code, register_bits, m);
+  ClearErrors();
+}
+
+bool Node::ReadCommunication(const ObjectEntry& e, uint32_t* value) const {
+  switch (e.id) {
+    case ObjectId::kErrorRegister:
+      *value = error_register_;
+      return true;
+    case ObjectId::kErrorCount:
+      *value = history_count_;
+      return true;
+    case ObjectId::kCobIdEmcy:
+      *value = kEmcyCobBase + node_id_;
+      return true;
+    case ObjectId::kEmcyInhibitTime:
+      *value = comm_.emcy_inhibit_100us;
+      return true;
+    case ObjectId::kHeartbeatTime:
+      *value = comm_.heartbeat_ms;
+      return true;
+    case ObjectId::kSdoCobIdRx:
+      *value = sdo::kRequestCobBase + node_id_;
+      return true;
+    case ObjectId::kSdoCobIdTx:
+      *value = sdo::kResponseCobBase + node_id_;
+      return true;
+    default:
+      if (e.index == 0x1003 && e.sub >= 1 && e.sub <= 8) {
+        *value = e.sub <= history_count_ ? history_[e.sub - 1] : 0;
+        return true;
+      }
+      return false;
+  }
+}
+
+SdoAbort Node::DoRead(const ObjectEntry& e,
+                      uint32_t offset,
+                      uint8_t* buf,
+                      uint32_t cap,
+                      uint32_t* copied,
+                      uint32_t* total) {
+  uint32_t value = 0;
+  if (!ReadCommunication(e, &value)) return app_->Read(e, offset, buf, cap, copied, total);
+  uint8_t bytes[4];
+  StoreLe32(bytes, value);
+  *total = FixedSize(e.type);
+  *copied = 0;
+  for (uint32_t i = offset; i < *total && *copied < cap; ++i) buf[(*copied)++] = bytes[i];
+  return SdoAbort::kNone;
+}
+
+SdoAbort Node::DoWrite(const ObjectEntry& e, const uint8_t* data, uint32_t size) {
+  switch (e.id) {
+    case ObjectId::kErrorCount:
+      if (size != 1 || data[0] != 0) return SdoAbort::kInvalidValue;  // only 0 (clear) allowed
+      history_count_ = 0;
+      return SdoAbort::kNone;
+    case ObjectId::kEmcyInhibitTime:
+      comm_.emcy_inhibit_100us = LoadLe16(data);
+      return SdoAbort::kNone;
+    case ObjectId::kHeartbeatTime:
+      comm_.heartbeat_ms = LoadLe16(data);
+      return SdoAbort::kNone;
+    default:
+      return app_->Write(e, data, size);
+  }
+}
+
+SdoAbort Node::DoBeginDomainWrite(const ObjectEntry& e, uint32_t size) {
+  return app_->BeginDomainWrite(e, size);
+}
+SdoAbort Node::DoDomainWriteData(const uint8_t* data, uint32_t size) {
+  return app_->DomainWriteData(data, size);
+}
+SdoAbort Node::DoEndDomainWrite(SdoAbort outcome) { return app_->EndDomainWrite(outcome); }
+// The application's pacing of a domain download (how much it takes between flushes, and its
+// flush steps), so the server sizes sub-blocks and holds acknowledgements as it asks.
+uint32_t Node::DoDomainWriteWindow() { return app_->DomainWriteWindow(); }
+SdoAbort Node::DoDomainWriteFlush(bool* done) { return app_->DomainWriteFlush(done); }
+
+}  // namespace volcomp::canopen

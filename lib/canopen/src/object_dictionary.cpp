@@ -1,0 +1,69 @@
+// The object dictionary tables, expanded from od_entries.def.
+#include "volcomp/canopen/object_dictionary.hpp"
+
+#include "volcomp/config/board_config.hpp"
+#include "volcomp/canopen/node_defaults.hpp"
+
+namespace volcomp::canopen {
+
+const ObjectEntry kObjectEntries[] = {
+#define VOLCOMP_OD_LIMITS(low, high) (low, high, true)
+#define VOLCOMP_OD_NO_LIMITS (0, 0, false)
+#define VOLCOMP_OD_LIMIT_FIELDS(low, high, limited) low, high, limited
+#define VOLCOMP_OD_OBJECT(index, kind, name)
+#define VOLCOMP_OD_ENTRY(id, index, sub, type, access, def, name) \
+  {ObjectId::id, index, sub, DataType::type, Access::access, def, name, 0, 0, false},
+#define VOLCOMP_OD_SETTING(id, index, sub, type, limits, def, field, name) \
+  {ObjectId::id, index,                                                    \
+   sub,          DataType::type,                                           \
+   Access::kRw,  static_cast<int64_t>(def),                                \
+   name,         VOLCOMP_OD_LIMIT_FIELDS limits},
+#include "volcomp/canopen/od_entries.def"
+#undef VOLCOMP_OD_OBJECT
+#undef VOLCOMP_OD_ENTRY
+#undef VOLCOMP_OD_SETTING
+#undef VOLCOMP_OD_LIMITS
+#undef VOLCOMP_OD_NO_LIMITS
+#undef VOLCOMP_OD_LIMIT_FIELDS
+};
+const size_t kObjectEntryCount = sizeof(kObjectEntries) / sizeof(kObjectEntries[0]);
+
+const ObjectHeader kObjectHeaders[] = {
+#define VOLCOMP_OD_OBJECT(index, kind, name) {index, ObjectKind::kind, name},
+#define VOLCOMP_OD_ENTRY(id, index, sub, type, access, def, name)
+#include "volcomp/canopen/od_entries.def"
+#undef VOLCOMP_OD_OBJECT
+#undef VOLCOMP_OD_ENTRY
+};
+const size_t kObjectHeaderCount = sizeof(kObjectHeaders) / sizeof(kObjectHeaders[0]);
+
+static_assert(sizeof(kObjectEntries) / sizeof(kObjectEntries[0]) ==
+                  static_cast<size_t>(ObjectId::kCount),
+              "one entry per ObjectId");
+
+const ObjectEntry* FindEntry(uint16_t index, uint8_t sub, bool* index_exists) {
+  // Binary search on (index, sub); the table is sorted (checked by a unit test).
+  const uint32_t key = (uint32_t{index} << 8) | sub;
+  size_t lo = 0, hi = kObjectEntryCount;
+  while (lo < hi) {
+    const size_t mid = (lo + hi) / 2;
+    const uint32_t k = (uint32_t{kObjectEntries[mid].index} << 8) | kObjectEntries[mid].sub;
+    if (k < key) {
+      lo = mid + 1;
+    } else {
+      hi = mid;
+    }
+  }
+  const bool hit =
+      lo < kObjectEntryCount && kObjectEntries[lo].index == index && kObjectEntries[lo].sub == sub;
+  if (index_exists != nullptr) {
+    // The insertion point is next to the index's entries if it has any.
+    *index_exists = hit || (lo < kObjectEntryCount && kObjectEntries[lo].index == index) ||
+                    (lo > 0 && kObjectEntries[lo - 1].index == index);
+  }
+  return hit ? &kObjectEntries[lo] : nullptr;
+}
+
+const ObjectEntry& Entry(ObjectId id) { return kObjectEntries[static_cast<size_t>(id)]; }
+
+}  // namespace volcomp::canopen

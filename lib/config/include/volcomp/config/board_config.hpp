@@ -1,0 +1,167 @@
+// The board configuration: what the installation is (axes, units per step, signal formats, drive
+// timing, limits). It is set by the integrator, stored on the board, and never changed by a table:
+// a table may only be activated if it was built for the same axes and units per step, and the
+// limits here (maximum correction, rate, acceleration) bound whatever a table asks for.
+#pragma once
+
+#include <cstdint>
+
+#include "volcomp/limiter/correction_limiter.hpp"
+#include "volcomp/base/status.hpp"
+#include "volcomp/table/table_format.hpp"
+#include "volcomp/table/table_image.hpp"
+
+namespace volcomp {
+
+/// Signal format of a step input or output.
+enum class PulseFormat : uint8_t {
+  kStepDir = 0,     // step pulse + direction level
+  kCwCcw = 1,       // pulse on CW line = +1, pulse on CCW line = -1
+  kQuadrature = 2,  // A/B quadrature, 4 counts per cycle (each edge is one step)
+};
+
+/// Timing the drive needs on its step/dir inputs (from its datasheet), in nanoseconds.
+struct DriveTiming {
+  uint32_t pulse_width_ns = 2500;  // minimum step high time
+  uint32_t step_space_ns = 2500;   // minimum step low time
+  uint32_t dir_setup_ns = 5000;    // direction change -> next step edge
+  uint32_t dir_hold_ns = 10000;    // step edge -> direction change
+  uint32_t max_rate_hz = 200000;   // maximum step rate the drive accepts
+};
+
+struct AxisConfig {
+  char name = 'X';
+  table::AxisKind kind = table::AxisKind::kLinear;
+  uint32_t resolution_e9 = 1000000;  // units per step x 1e9 (pm/step or ndeg/step)
+  PulseFormat input_format = PulseFormat::kStepDir;
+  PulseFormat output_format = PulseFormat::kStepDir;
+  bool invert_input_dir = false;
+  uint8_t input_counter_bits = 32;  // width of the hardware input counter (16 or 32)
+  DriveTiming drive;
+  uint32_t max_input_rate_hz = 1000000;             // fastest input step rate to accept
+  int32_t max_correction_steps = 1000;              // |applied correction| bound
+  uint32_t max_correction_rate_steps_s = 2000;      // correction velocity limit
+  uint32_t max_correction_accel_steps_s2 = 200000;  // correction acceleration limit
+  int32_t home_position_steps = 0;  // machine position assigned at the home (reference) edge
+};
+
+/// Control tick rates ValidateBoardConfig accepts.
+inline constexpr uint32_t kMinTickHz = 1000;
+inline constexpr uint32_t kMaxTickHz = 200000;
+
+/// The compensator (sensing, the target refresh, the correction limiters) runs every
+/// CompensationDivider(tick_hz) ticks, at tick_hz / divider <= kMaxCompensationHz; the step path
+/// (counters, targets = commanded + correction, output) runs every tick. On the STM32 step/dir
+/// board the two are separate interrupts (docs/mcu-target.md, "Two rates"); elsewhere
+/// BoardApp::Tick() runs both in sequence. The limiters' units are converted at the compensation
+/// rate (CorrectionLimiter::MakeParams()).
+inline constexpr uint32_t kMaxCompensationHz = 20000;
+constexpr uint32_t CompensationDivider(uint32_t tick_hz) {
+  return tick_hz <= kMaxCompensationHz ? 1u
+                                       : (tick_hz + kMaxCompensationHz - 1u) / kMaxCompensationHz;
+}
+
+struct BoardConfig {
+  uint32_t tick_hz = 50000;              // control tick rate
+  uint32_t pulse_clock_hz = 1000000000;  // output pulse timer clock (ns resolution in the mock)
+  uint8_t axis_count = 3;
+  AxisConfig axis[table::kMaxAxes];
+};
+
+/// The rules a configuration must keep, one per check of ValidateBoardConfig() (and of the node
+/// settings, firmware ValidateSettings()); kConfigRuleTexts says each in words. Values are stable
+/// (they travel in 0x2123): append, never renumber.
+enum class ConfigRule : uint8_t {
+  kNone = 0,
+  kTickRate = 1,       // tick_hz within kMinTickHz..kMaxTickHz
+  kPulseClock = 2,     // pulse clock >= 100 x tick rate
+  kAxisCount = 3,      // 1..kMaxAxes axes
+  kAxisName = 4,       // one of XYZABCUVW, each once
+  kResolution = 5,     // units per step not zero
+  kAxisKind = 6,       // linear or rotary
+  kPulseFormat = 7,    // input/output pulse format 0..2
+  kCounterBits = 8,    // input counter 16 or 32 bits
+  kMaxCorrection = 9,  // max correction 0..table::kMaxCorrectionSteps
+  kRateNotZero = 10,   // max input rate and drive max rate not zero
+  kCounterWrap = 11,   // a 16-bit counter does not wrap by half within a tick
+  kDriveKeepsUp = 12,  // max input rate + max correction rate <= drive max rate
+  kLimiter = 13,       // correction rate/accel representable at the tick rate
+  kNodeId = 14,        // node-ID 1..127
+  kBitrate = 15,       // bit rate 10..1000 kbit/s
+  kCount = 16,
+};
+
+inline constexpr const char* kConfigRuleTexts[] = {
+    "none",
+    "tick rate must be 1000..200000 Hz",
+    "pulse clock must be at least 100 x the tick rate",
+    "axis count must be 1..6",
+    "axis name must be one of XYZABCUVW and used once",
+    "units per step (0x2012) must not be zero",
+    "axis kind (0x2011) must be 0 linear or 1 rotary",
+    "pulse format (0x2013/0x2014) must be 0..2",
+    "input counter must be 16 or 32 bits",
+    "max correction (0x2015) must be 0..65536 steps",
+    "max input rate (0x201E) and drive max rate (0x201D) must not be zero",
+    "a 16-bit input counter must not wrap by half its range within one tick",
+    "max input rate (0x201E) + max correction rate (0x2016) must not exceed the drive max rate "
+    "(0x201D)",
+    "max correction rate (0x2016) and acceleration (0x2017) must fit the tick rate f: "
+    "acceleration from f^2/2^32 to below f^2 steps/s2, rate at least acceleration/f steps/s",
+    "node-ID must be 1..127",
+    "bit rate must be 10..1000 kbit/s",
+};
+static_assert(sizeof(kConfigRuleTexts) / sizeof(kConfigRuleTexts[0]) ==
+                  static_cast<size_t>(ConfigRule::kCount),
+              "one text per rule");
+
+constexpr const char* ConfigRuleText(ConfigRule r) {
+  return r < ConfigRule::kCount ? kConfigRuleTexts[static_cast<int>(r)] : "?";
+}
+
+/// Which rule a configuration breaks first, and on which axis (1-based; 0: not an axis rule).
+struct ConfigFinding {
+  ConfigRule rule = ConfigRule::kNone;
+  uint8_t axis = 0;
+};
+
+/// Checks ranges and consistency (rates versus tick, timing versus rate); kConfigInvalid if bad,
+/// with the first broken rule and its axis in *finding (optional; kNone when ok).
+Status ValidateBoardConfig(const BoardConfig& config, ConfigFinding* finding = nullptr);
+
+/// The correction limiter of `axis` stepped every `ticks_per_step` ticks of `tick_hz`; without it,
+/// at the board's compensation rate (CompensationDivider()). kConfigInvalid as
+/// CorrectionLimiter::MakeParams().
+inline Result<LimiterParams> AxisLimiterParams(const AxisConfig& axis,
+                                               uint32_t tick_hz,
+                                               uint32_t ticks_per_step) {
+  return CorrectionLimiter::MakeParams(tick_hz, axis.max_correction_rate_steps_s,
+                                       axis.max_correction_accel_steps_s2, ticks_per_step);
+}
+inline Result<LimiterParams> AxisLimiterParams(const AxisConfig& axis, uint32_t tick_hz) {
+  return AxisLimiterParams(axis, tick_hz, CompensationDivider(tick_hz));
+}
+
+/// Checks that an image was built for this board: axis count, names, kinds, units per step.
+Status CheckImageMatchesBoard(const table::TableView& image, const BoardConfig& config);
+
+/// The factory configuration: three linear axes X, Y, Z at 1 um/step, and on every axis drive
+/// timing (200 ns pulses, 2 MHz) that keeps up with the 1 MHz input plus the correction rate. What
+/// a board without stored settings runs with; od_entries.def takes the EDS defaults from it.
+constexpr BoardConfig DefaultBoardConfig() {
+  BoardConfig c;
+  c.axis_count = 3;
+  const char names[3] = {'X', 'Y', 'Z'};
+  for (uint32_t i = 0; i < table::kMaxAxes; ++i) {
+    c.axis[i] = AxisConfig();
+    if (i < 3) c.axis[i].name = names[i];
+    c.axis[i].drive.pulse_width_ns = 200;
+    c.axis[i].drive.step_space_ns = 200;
+    c.axis[i].drive.dir_setup_ns = 200;
+    c.axis[i].drive.dir_hold_ns = 200;
+    c.axis[i].drive.max_rate_hz = 2000000;
+  }
+  return c;
+}
+
+}  // namespace volcomp

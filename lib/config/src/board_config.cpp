@@ -1,0 +1,80 @@
+// Board configuration checks.
+#include "volcomp/config/board_config.hpp"
+
+namespace volcomp {
+namespace {
+
+bool ValidAxisName(char c) {
+  for (const char* p = table::kAxisNames; *p != '\0'; ++p) {
+    if (*p == c) return true;
+  }
+  return false;
+}
+
+ConfigRule AxisRule(const AxisConfig& a, uint32_t tick_hz) {
+  if (!ValidAxisName(a.name)) return ConfigRule::kAxisName;
+  if (a.resolution_e9 == 0) return ConfigRule::kResolution;
+  if (a.kind != table::AxisKind::kLinear && a.kind != table::AxisKind::kRotary) {
+    return ConfigRule::kAxisKind;
+  }
+  if (static_cast<uint8_t>(a.input_format) > 2 || static_cast<uint8_t>(a.output_format) > 2) {
+    return ConfigRule::kPulseFormat;
+  }
+  if (a.input_counter_bits != 16 && a.input_counter_bits != 32) return ConfigRule::kCounterBits;
+  if (a.max_correction_steps < 0 || a.max_correction_steps > table::kMaxCorrectionSteps) {
+    return ConfigRule::kMaxCorrection;
+  }
+  if (a.max_input_rate_hz == 0 || a.drive.max_rate_hz == 0) return ConfigRule::kRateNotZero;
+  // A 16-bit counter must not wrap by half its range within one tick.
+  if (a.input_counter_bits == 16 && a.max_input_rate_hz / tick_hz >= 32768u) {
+    return ConfigRule::kCounterWrap;
+  }
+  // The output must keep up with the fastest input plus the fastest correction.
+  if (static_cast<uint64_t>(a.max_input_rate_hz) + a.max_correction_rate_steps_s >
+      a.drive.max_rate_hz) {
+    return ConfigRule::kDriveKeepsUp;
+  }
+  return AxisLimiterParams(a, tick_hz).ok() ? ConfigRule::kNone : ConfigRule::kLimiter;
+}
+
+ConfigFinding FirstBrokenRule(const BoardConfig& config) {
+  ConfigFinding f;
+  if (config.tick_hz < kMinTickHz || config.tick_hz > kMaxTickHz) {
+    f.rule = ConfigRule::kTickRate;
+  } else if (config.pulse_clock_hz < config.tick_hz * 100u) {
+    f.rule = ConfigRule::kPulseClock;
+  } else if (config.axis_count < 1 || config.axis_count > table::kMaxAxes) {
+    f.rule = ConfigRule::kAxisCount;
+  }
+  for (uint8_t i = 0; f.rule == ConfigRule::kNone && i < config.axis_count; ++i) {
+    f.axis = static_cast<uint8_t>(i + 1);
+    f.rule = AxisRule(config.axis[i], config.tick_hz);
+    for (uint8_t j = 0; f.rule == ConfigRule::kNone && j < i; ++j) {
+      if (config.axis[j].name == config.axis[i].name) f.rule = ConfigRule::kAxisName;
+    }
+  }
+  if (f.rule == ConfigRule::kNone) f.axis = 0;
+  return f;
+}
+
+}  // namespace
+
+Status ValidateBoardConfig(const BoardConfig& config, ConfigFinding* finding) {
+  const ConfigFinding f = FirstBrokenRule(config);
+  if (finding != nullptr) *finding = f;
+  if (f.rule != ConfigRule::kNone) return Error::kConfigInvalid;
+  return Status::Ok();
+}
+
+Status CheckImageMatchesBoard(const table::TableView& image, const BoardConfig& config) {
+  if (image.axis_count > config.axis_count) return Error::kConfigTooManyAxes;
+  for (uint8_t i = 0; i < image.axis_count; ++i) {
+    const table::AxisInfo& img = image.axes[i];
+    const AxisConfig& cfg = config.axis[i];
+    if (img.name != cfg.name || img.kind != cfg.kind) return Error::kConfigAxisMismatch;
+    if (img.resolution_e9 != cfg.resolution_e9) return Error::kConfigResolutionMismatch;
+  }
+  return Status::Ok();
+}
+
+}  // namespace volcomp

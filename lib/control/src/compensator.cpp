@@ -1,0 +1,149 @@
+// Compensator: table lookup -> clamp -> rate/acceleration limiter -> whole steps.
+#include "volcomp/control/compensator.hpp"
+
+namespace volcomp {
+
+Status PreparedTable::Prepare(const table::TableView& image, const BoardConfig& config) {
+  VOLCOMP_TRY(CheckImageMatchesBoard(image, config));
+  PreparedTable t;
+  if (image.grid.present) {
+    VOLCOMP_TRY(t.grid.Init(image.grid));
+    t.has_grid = true;
+  }
+  for (uint8_t i = 0; i < image.axis1d_count; ++i) {
+    VOLCOMP_TRY(t.axis_table[i].Init(image.axis1d[i]));
+    t.axis_table_of[image.axis1d[i].axis] = static_cast<int8_t>(i);
+    if (t.axis_table[i].wraps())
+      t.wrap_mask = static_cast<uint8_t>(t.wrap_mask | 1u << image.axis1d[i].axis);
+  }
+  if (t.has_grid) {
+    for (int8_t c = 0; c < 3; ++c) t.grid_component_of[t.grid.axis(c)] = c;
+  }
+  t.axis_table_count = image.axis1d_count;
+  t.table_id = image.table_id;
+  t.crc32 = image.crc32;
+  *this = t;
+  return Status::Ok();
+}
+
+void PreparedTable::TargetsQ8(const int32_t* pos_steps,
+                              const int32_t* axis_pos_steps,
+                              const bool* reverse,
+                              uint8_t axis_count,
+                              int32_t* target_q8) const {
+  for (uint8_t a = 0; a < axis_count; ++a) target_q8[a] = 0;
+  if (has_grid) {
+    int32_t g[3];
+    grid.Lookup(pos_steps, g);
+    for (int c = 0; c < 3; ++c) target_q8[grid.axis(c)] += g[c];
+  }
+  for (uint8_t a = 0; a < axis_count; ++a) {
+    const int8_t i = axis_table_of[a];
+    if (i >= 0) target_q8[a] += axis_table[i].Lookup(axis_pos_steps[a], reverse[a]);
+  }
+}
+
+Status Compensator::Configure(const BoardConfig& config, uint32_t ticks_per_run) {
+  VOLCOMP_TRY(ValidateBoardConfig(config));
+  for (uint8_t a = 0; a < config.axis_count; ++a) {
+    const AxisConfig& ax = config.axis[a];
+    const Result<LimiterParams> p = AxisLimiterParams(ax, config.tick_hz, ticks_per_run);
+    if (!p.ok()) return p.status();
+    limiter_[a] = CorrectionLimiter(*p);
+    max_q8_[a] = ax.max_correction_steps * (1 << table::kCorrectionFracBits);
+    clamped_refreshes_[a] = 0;
+    rate_limited_refreshes_[a] = 0;
+    last_pos_[a] = 0;
+    reverse_[a] = false;
+    target_q8_[a] = 0;
+  }
+  wrap_mask_ = 0;
+  rebase_pending_ = false;
+  axis_count_ = config.axis_count;
+  has_table_ = false;
+  UpdateEngaged();
+  phase_ = 0;
+  return Status::Ok();
+}
+
+void Compensator::SetTable(const PreparedTable& table, const int32_t* machine_pos_steps) {
+  own_ = table;
+  UseTable(&own_, machine_pos_steps);
+}
+
+void Compensator::ClearTable() {
+  has_table_ = false;
+  UpdateEngaged();
+  wrap_mask_ = 0;
+}
+
+void Compensator::Rebase(const int32_t* machine_pos_steps) {
+  phase_ = 0;  // a refresh in progress used the old coordinates
+  rebase_pending_ = false;
+  for (uint8_t a = 0; a < axis_count_; ++a) {
+    last_pos_[a] = machine_pos_steps[a];
+    if ((wrap_mask_ >> a) & 1u) {
+      const AxisLookup& t = table_->axis_table[table_->axis_table_of[a]];
+      wrap_[a].Init(machine_pos_steps[a], t.origin_steps(), t.period_divider());
+    }
+  }
+}
+
+bool Compensator::passthrough() const {
+  for (uint8_t a = 0; a < axis_count_; ++a) {
+    if (limiter_[a].position_q32() != 0 || !limiter_[a].at_rest()) return false;
+  }
+  return true;
+}
+
+void Compensator::RefreshTargets(const int32_t* machine_pos_steps) {
+  if (rebase_pending_) {
+    Rebase(machine_pos_steps);
+    return;
+  }
+  if (!engaged()) {
+    for (uint8_t a = 0; a < axis_count_; ++a) target_q8_[a] = 0;
+    phase_ = 0;
+    return;
+  }
+  // One part per tick; an if-chain, not a switch (a jump table would be an indirect jump, which
+  // the static cycle bound of toolchain/cyclemodel refuses).
+  const uint32_t phase = phase_;
+  uint32_t next = phase + 1u;
+  if (phase < kGridPhases) {
+    const GridLookup* grid = grid_;
+    if (grid != nullptr) {
+      if (phase == 0) {
+        grid->Begin(machine_pos_steps, &grid_partial_);
+      } else if (phase == 1) {
+        grid->AccumulateZ0(&grid_partial_);
+      } else {
+        grid->FinishZ1(grid_partial_, grid_q8_);
+      }
+    }
+  } else {
+    // Axis a: its grid component (from the positions latched in part 0), its AXIS1D table at
+    // its current position and direction, clamped: the new target of the axis.
+    const uint32_t a = phase - kGridPhases;
+    const PreparedTable& table = *table_;
+    const int8_t c = table.grid_component_of[a];
+    const int8_t i = table.axis_table_of[a];
+    int32_t t = c >= 0 ? grid_q8_[c] : 0;
+    if (i >= 0) {
+      const int32_t pos = (wrap_mask_ >> a) & 1u ? wrap_[a].position() : machine_pos_steps[a];
+      t += table.axis_table[i].Lookup(pos, reverse_[a]);
+    }
+    const int32_t max = max_q8_[a];
+    const int32_t asked = t;
+    t = t > max ? max : t;
+    t = t < -max ? -max : t;
+    target_q8_[a] = t;
+    // Selects, not branches: whether the table was clamped, whether the limiter is at its rate.
+    clamped_refreshes_[a] += t != asked ? 1u : 0u;
+    rate_limited_refreshes_[a] += limiter_[a].at_rate_limit() ? 1u : 0u;
+    next = a + 1u == axis_count_ ? 0u : next;
+  }
+  phase_ = static_cast<uint8_t>(next);
+}
+
+}  // namespace volcomp

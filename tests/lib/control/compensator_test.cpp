@@ -1,0 +1,407 @@
+// Compensator behaviour: pass-through until referenced, ramps, clamp, table changes, directions.
+#include "volcomp/control/compensator.hpp"
+
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "test_tables.hpp"
+
+namespace volcomp {
+namespace {
+
+constexpr double kQ8 = 256.0;
+// The fixture's rate limit (1000 steps/s) per Tick(): the compensator runs every
+// CompensationDivider(tick_hz) ticks of the default tick.
+constexpr uint32_t kTickHz = DefaultBoardConfig().tick_hz;
+constexpr double kStepsPerRun = 1000.0 * CompensationDivider(kTickHz) / kTickHz;
+
+// A uniform grid correction (every node the same vector) plus an optional X AXIS1D table.
+struct TableFixture {
+  std::vector<int32_t> values;
+  std::vector<int32_t> x_fwd, x_rev;
+  testing::AlignedBytes img;
+  table::TableView view;
+
+  TableFixture(double cx, double cy, double cz, bool x_table = false) {
+    values.assign(2 * 2 * 2 * 3, 0);
+    for (size_t i = 0; i < values.size(); i += 3) {
+      values[i] = static_cast<int32_t>(cx * kQ8);
+      values[i + 1] = static_cast<int32_t>(cy * kQ8);
+      values[i + 2] = static_cast<int32_t>(cz * kQ8);
+    }
+    table::GridSpec g;
+    g.frac_bits = 8;
+    for (auto& d : g.dim) d = {2, -100000, 200000};
+    g.values.type = table::ElementType::kInt32;
+    g.values.i32 = values.data();
+    table::ImageSpec s;
+    s.table_id = 42;
+    s.axis_count = 3;
+    s.axes[0] = testing::LinearAxis('X');
+    s.axes[1] = testing::LinearAxis('Y');
+    s.axes[2] = testing::LinearAxis('Z');
+    s.grid = &g;
+    if (x_table) {
+      x_fwd = {0, 0};
+      x_rev = {static_cast<int32_t>(3 * kQ8), static_cast<int32_t>(3 * kQ8)};  // +3 steps reversing
+      table::Axis1dSpec& a = s.axis1d[0];
+      a.axis = 0;
+      a.frac_bits = 8;
+      a.dim = {2, -100000, 200000};
+      a.forward.type = a.reverse.type = table::ElementType::kInt32;
+      a.forward.i32 = x_fwd.data();
+      a.has_reverse = true;
+      a.reverse.i32 = x_rev.data();
+      s.axis1d_count = 1;
+    }
+    img = testing::AlignedBytes(*table::ImageSize(s));
+    EXPECT_TRUE(table::WriteImage(s, img.data(), img.size()).ok());
+    view = *table::ParseImage(img.data(), img.size());
+  }
+};
+
+class CompensatorTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    config_ = DefaultBoardConfig();
+    for (int a = 0; a < 3; ++a) {
+      config_.axis[a].max_correction_steps = 100;
+      config_.axis[a].max_correction_rate_steps_s = 1000;
+      config_.axis[a].max_correction_accel_steps_s2 = 100000;
+    }
+    ASSERT_TRUE(comp_.Configure(config_).ok());
+  }
+  // Ticks with the axes at `pos_`; returns the last correction of axis 0.
+  int32_t TickN(int n) {
+    for (int i = 0; i < n; ++i) {
+      comp_.Tick(pos_, corr_);
+      for (int a = 0; a < 3; ++a) {
+        const double applied = comp_.applied_q8(a) / kQ8;
+        max_rate_ = std::max(max_rate_, std::fabs(applied - last_[a]));
+        last_[a] = applied;
+      }
+    }
+    return corr_[0];
+  }
+  PreparedTable Prepare(const TableFixture& f) {
+    PreparedTable t;
+    EXPECT_TRUE(t.Prepare(f.view, config_).ok());
+    return t;
+  }
+
+  BoardConfig config_;
+  Compensator comp_;
+  int32_t pos_[3] = {0, 0, 0};
+  int32_t corr_[3] = {};
+  double last_[3] = {};
+  double max_rate_ = 0;  // steps per Tick() (one compensation run)
+};
+
+TEST_F(CompensatorTest, PassThroughUntilReferenced) {
+  TableFixture f(10, -20, 30);
+  comp_.SetTable(Prepare(f), pos_);
+  comp_.SetEnabled(true);
+  TickN(20000);
+  EXPECT_EQ(corr_[0], 0);
+  EXPECT_EQ(corr_[1], 0);
+  EXPECT_TRUE(comp_.passthrough());
+  EXPECT_FALSE(comp_.engaged());
+  comp_.SetReferenced(true);
+  EXPECT_TRUE(comp_.engaged());
+  TickN(20000);
+  EXPECT_EQ(corr_[0], 10);
+  EXPECT_EQ(corr_[1], -20);
+  EXPECT_EQ(corr_[2], 30);
+  EXPECT_FALSE(comp_.passthrough());
+}
+
+TEST_F(CompensatorTest, EnableRampsInAndDisableRampsOutWithinLimits) {
+  TableFixture f(50, 0, 0);
+  comp_.SetTable(Prepare(f), pos_);
+  comp_.SetReferenced(true);
+  comp_.SetEnabled(true);
+  std::vector<int32_t> ramp;
+  for (int i = 0; i < 10000; ++i) {
+    comp_.Tick(pos_, corr_);
+    ramp.push_back(comp_.applied_q8(0));
+  }
+  EXPECT_EQ(ramp.back(), 50 * 256);
+  // Monotonic ramp, each step within the rate limit (1000 steps/s at the compensation rate, one
+  // Tick() every CompensationDivider(50 kHz) ticks: 0.02 step per tick).
+  for (size_t i = 1; i < ramp.size(); ++i) {
+    ASSERT_GE(ramp[i], ramp[i - 1]);
+    ASSERT_LE(ramp[i] - ramp[i - 1], kStepsPerRun * 256 + 1);
+  }
+  const auto runs_to_full = std::find(ramp.begin(), ramp.end(), 50 * 256) - ramp.begin();
+  // 50 steps at the rate limit, plus 10 ms of acceleration and braking (1000 steps/s at 100000
+  // steps/s^2): a limiter converted for one tick per run instead would take 3 times as long.
+  EXPECT_GT(runs_to_full, 50 / kStepsPerRun);
+  EXPECT_LT(runs_to_full, (50 / kStepsPerRun) * 1.3);
+  last_[0] = comp_.applied_q8(0) / kQ8;
+  comp_.SetEnabled(false);
+  TickN(10000);
+  EXPECT_TRUE(comp_.passthrough());
+  EXPECT_EQ(corr_[0], 0);
+  EXPECT_LE(max_rate_, kStepsPerRun + 1.0 / 256);
+}
+
+TEST_F(CompensatorTest, FaultRampsOut) {
+  TableFixture f(0, 40, 0);
+  comp_.SetTable(Prepare(f), pos_);
+  comp_.SetReferenced(true);
+  comp_.SetEnabled(true);
+  TickN(10000);
+  EXPECT_EQ(corr_[1], 40);
+  comp_.SetFault(true);
+  comp_.Tick(pos_, corr_);
+  EXPECT_GE(corr_[1], 39);  // no jump
+  TickN(10000);
+  EXPECT_EQ(corr_[1], 0);
+  EXPECT_TRUE(comp_.passthrough());
+}
+
+TEST_F(CompensatorTest, ClampHoldsTheConfiguredMaximum) {
+  TableFixture f(5000, -5000, 99.5);
+  comp_.SetTable(Prepare(f), pos_);
+  comp_.SetReferenced(true);
+  comp_.SetEnabled(true);
+  TickN(30000);
+  EXPECT_EQ(corr_[0], 100);
+  EXPECT_EQ(corr_[1], -100);
+  EXPECT_EQ(corr_[2], 100);  // 99.5 rounds half up
+  EXPECT_EQ(comp_.target_q8(0), 100 * 256);
+}
+
+TEST_F(CompensatorTest, TableChangeIsSpreadWithinLimits) {
+  TableFixture a(-30, 0, 0), b(30, 0, 0);
+  comp_.SetTable(Prepare(a), pos_);
+  comp_.SetReferenced(true);
+  comp_.SetEnabled(true);
+  TickN(10000);
+  ASSERT_EQ(corr_[0], -30);
+  max_rate_ = 0;
+  comp_.SetTable(Prepare(b), pos_);
+  EXPECT_EQ(comp_.table_id(), 42u);
+  TickN(10000);
+  EXPECT_EQ(corr_[0], 30);
+  EXPECT_LE(max_rate_, kStepsPerRun + 1.0 / 256);  // applied_q8() truncates to 1/256 step
+}
+
+TEST_F(CompensatorTest, ReverseDirectionSelectsTheReverseTable) {
+  TableFixture f(0, 0, 0, /*x_table=*/true);
+  comp_.SetTable(Prepare(f), pos_);
+  comp_.SetReferenced(true);
+  comp_.SetEnabled(true);
+  pos_[0] = 100;
+  TickN(5000);
+  EXPECT_EQ(corr_[0], 0);
+  EXPECT_FALSE(comp_.reverse(0));
+  pos_[0] = 99;  // one step back: reversal
+  TickN(5000);
+  EXPECT_TRUE(comp_.reverse(0));
+  EXPECT_EQ(corr_[0], 3);
+  pos_[0] = 99;  // standing still keeps the direction
+  TickN(100);
+  EXPECT_TRUE(comp_.reverse(0));
+  pos_[0] = 150;
+  TickN(5000);
+  EXPECT_FALSE(comp_.reverse(0));
+  EXPECT_EQ(corr_[0], 0);
+}
+
+TEST_F(CompensatorTest, ImageForAnotherBoardIsRefusedAndNothingChanges) {
+  TableFixture f(1, 2, 3);
+  PreparedTable t;
+  BoardConfig other = config_;
+  other.axis[1].resolution_e9 = 500000;  // a different steps/mm on Y
+  t.table_id = 99;
+  EXPECT_EQ(t.Prepare(f.view, other).error(), Error::kConfigResolutionMismatch);
+  EXPECT_EQ(t.table_id, 99u);
+  other = config_;
+  other.axis[2].name = 'W';
+  EXPECT_EQ(t.Prepare(f.view, other).error(), Error::kConfigAxisMismatch);
+  other.axis_count = 2;
+  EXPECT_EQ(t.Prepare(f.view, other).error(), Error::kConfigTooManyAxes);
+}
+
+// The target refresh (compensator.hpp): while engaged, part p of the refresh runs on the p-th tick
+// of a cycle of 3 + axis_count ticks: the grid is located at the positions of part 0; on part 3 + a
+// axis a gets clamp(grid component + its AXIS1D table at its position and direction of that tick).
+// Checked tick by tick against an evaluation written from that description with the reference
+// lookups (GridLookup::Interpolate, AxisLookup::LookupReference) and independent direction and
+// wrap tracking, for every element type, with random motion, reversals and wrap-around.
+template <class Loader>
+void CheckRefreshSchedule(table::ElementType type, uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  testing::GridCase g = testing::RandomGrid(rng, type, 5, 3000, 40);
+  std::vector<int16_t> v16[3];
+  std::vector<int32_t> v32[3];
+  std::vector<float> vf[3];
+  table::Axis1dSpec axis1d[2];
+  for (int t = 0; t < 2; ++t) {
+    table::Axis1dSpec& a = axis1d[t];
+    a.axis = static_cast<uint8_t>(t == 0 ? 0 : 2);  // X (forward/reverse/backlash), Z (wrap)
+    a.frac_bits = type == table::ElementType::kFloat32 ? 0 : 4;
+    a.dim = t == 0 ? table::Dimension{6, -7000, 2500} : table::Dimension{5, 100, 1000};
+    if (t == 1) a.period_steps = 4000;
+    const uint32_t n = a.dim.nodes;
+    for (int k = 0; k < (t == 0 ? 2 : 1); ++k) {
+      const int idx = t == 0 ? k : 2;
+      for (uint32_t i = 0; i < n; ++i) {
+        const int32_t val = static_cast<int32_t>(rng() % 1601) - 800;  // +-50 steps
+        v16[idx].push_back(static_cast<int16_t>(val));
+        v32[idx].push_back(val);
+        vf[idx].push_back(static_cast<float>(val) / 16.0f);
+      }
+      if (t == 1) {  // continuous across the seam
+        v16[idx].back() = v16[idx].front();
+        v32[idx].back() = v32[idx].front();
+        vf[idx].back() = vf[idx].front();
+      }
+    }
+    const int f = t == 0 ? 0 : 2;
+    a.forward = {type, v16[f].data(), v32[f].data(), vf[f].data()};
+    if (t == 0) {
+      a.has_reverse = true;
+      a.reverse = {type, v16[1].data(), v32[1].data(), vf[1].data()};
+      a.backlash_q8 = 77;
+    }
+  }
+  const testing::AlignedBytes img = testing::WriteGridImage(g, 9, axis1d, 2);
+  ASSERT_GT(img.size(), 0u);
+  const auto view = table::ParseImage(img.data(), img.size());
+  ASSERT_TRUE(view.ok()) << view.status().name();
+  BoardConfig config = DefaultBoardConfig();
+  for (int a = 0; a < 3; ++a) {
+    config.axis[a].max_correction_steps = 30;  // some targets clamp
+    config.axis[a].max_correction_rate_steps_s = 20000;
+    config.axis[a].max_correction_accel_steps_s2 = 4000000;
+  }
+  Compensator comp;
+  ASSERT_TRUE(comp.Configure(config).ok());
+  PreparedTable table;
+  ASSERT_TRUE(table.Prepare(*view, config).ok());
+  int32_t pos[3] = {static_cast<int32_t>(rng() % 20000) - 10000, 0, 0};
+  comp.SetTable(table, pos);
+  comp.SetReferenced(true);
+  comp.SetEnabled(true);
+
+  // Independent tracking: last motion direction, wrapped Z position.
+  bool reverse[3] = {false, false, false};
+  auto wrapped = [](int64_t p) {
+    int64_t o = (p - 100) % 4000;
+    return static_cast<int32_t>((o < 0 ? o + 4000 : o) + 100);
+  };
+  const uint32_t cycle = Compensator::kGridPhases + 3;
+  EXPECT_EQ(comp.refresh_ticks(), cycle);
+  int32_t grid_pos[3] = {};
+  int32_t expect[3] = {0, 0, 0};
+  int dir[3] = {1, -1, 1};
+  int refreshes = 0;
+  for (uint32_t tick = 0; tick < 6000; ++tick) {
+    int32_t last[3];
+    for (int a = 0; a < 3; ++a) {
+      last[a] = pos[a];
+      if (rng() % 50 == 0) dir[a] = -dir[a];
+      pos[a] += dir[a] * static_cast<int32_t>(rng() % 30);
+      if (pos[a] != last[a]) reverse[a] = pos[a] < last[a];
+    }
+    const uint32_t part = tick % cycle;
+    if (part == 0) std::copy(pos, pos + 3, grid_pos);
+    if (part >= Compensator::kGridPhases) {
+      const int a = static_cast<int>(part - Compensator::kGridPhases);
+      int32_t gq[3];
+      table.grid.Interpolate<Loader>(grid_pos, gq);
+      int32_t t = 0;
+      for (int c = 0; c < 3; ++c) {
+        if (table.grid.axis(c) == a) t += gq[c];
+      }
+      if (a == 0) t += table.axis_table[0].LookupReference(pos[0], reverse[0]);
+      if (a == 2) t += table.axis_table[1].LookupReference(wrapped(pos[2]), reverse[2]);
+      const int32_t max = 30 * 256;
+      expect[a] = t > max ? max : (t < -max ? -max : t);
+      ++refreshes;
+    }
+    int32_t corr[3];
+    comp.Tick(pos, corr);
+    for (int a = 0; a < 3; ++a) {
+      ASSERT_EQ(comp.target_q8(a), expect[a]) << "tick " << tick << " axis " << a;
+      ASSERT_EQ(comp.reverse(a), reverse[a]);
+    }
+  }
+  EXPECT_EQ(refreshes, 3000);  // parts 3..5 of each 6-tick cycle refresh one axis each
+  // Disengaging zeroes the targets on the next tick and restarts the cycle.
+  comp.SetEnabled(false);
+  int32_t corr[3];
+  comp.Tick(pos, corr);
+  for (int a = 0; a < 3; ++a) EXPECT_EQ(comp.target_q8(a), 0);
+}
+
+TEST(CompensatorRefresh, ScheduleAndValuesInt16) {
+  CheckRefreshSchedule<LoadInt16>(table::ElementType::kInt16, 31);
+}
+TEST(CompensatorRefresh, ScheduleAndValuesInt32) {
+  CheckRefreshSchedule<LoadInt32>(table::ElementType::kInt32, 32);
+}
+TEST(CompensatorRefresh, ScheduleAndValuesFloat32) {
+  CheckRefreshSchedule<LoadFloat32>(table::ElementType::kFloat32, 33);
+}
+
+// A new target is in effect within refresh_ticks() ticks of engaging, of SetTable() and of
+// Rebase() (the latency the refresh adds on top of the limiter).
+TEST_F(CompensatorTest, NewTargetWithinOneRefreshCycle) {
+  TableFixture f(10, -20, 30), g(-5, 6, 7);
+  comp_.SetTable(Prepare(f), pos_);
+  comp_.SetReferenced(true);
+  comp_.SetEnabled(true);
+  const uint32_t n = comp_.refresh_ticks();
+  EXPECT_EQ(n, 6u);
+  for (uint32_t i = 0; i < n; ++i) comp_.Tick(pos_, corr_);
+  EXPECT_EQ(comp_.target_q8(0), 10 * 256);
+  EXPECT_EQ(comp_.target_q8(1), -20 * 256);
+  EXPECT_EQ(comp_.target_q8(2), 30 * 256);
+  for (uint32_t i = 0; i < 2; ++i) comp_.Tick(pos_, corr_);  // mid-cycle
+  comp_.SetTable(Prepare(g), pos_);
+  for (uint32_t i = 0; i < n; ++i) comp_.Tick(pos_, corr_);
+  EXPECT_EQ(comp_.target_q8(0), -5 * 256);
+  EXPECT_EQ(comp_.target_q8(1), 6 * 256);
+  EXPECT_EQ(comp_.target_q8(2), 7 * 256);
+}
+
+// RequestRebase() (the tick's table switch or referencing) rebases in the next tick's refresh
+// slice: the refresh cycle restarts one tick later, so the new target is in effect one tick after
+// a Rebase()'s would be. MoveAxis() makes a coordinate jump before then invisible as motion.
+TEST_F(CompensatorTest, RequestedRebaseTakesOneRefreshSlice) {
+  TableFixture f(10, -20, 30), g(-5, 6, 7);
+  comp_.SetTable(Prepare(f), pos_);
+  comp_.SetReferenced(true);
+  comp_.SetEnabled(true);
+  const uint32_t n = comp_.refresh_ticks();
+  for (uint32_t i = 0; i < n + 2; ++i) comp_.Tick(pos_, corr_);  // mid-cycle
+  const PreparedTable pg = Prepare(g);
+  comp_.BindTable(&pg);
+  comp_.RequestRebase();
+  for (uint32_t i = 0; i < n; ++i) comp_.Tick(pos_, corr_);
+  EXPECT_EQ(comp_.target_q8(0), -5 * 256);
+  EXPECT_EQ(comp_.target_q8(1), 6 * 256);
+  EXPECT_EQ(comp_.target_q8(2), 30 * 256);  // axis 2's refresh comes one tick later
+  comp_.Tick(pos_, corr_);
+  EXPECT_EQ(comp_.target_q8(2), 7 * 256);
+
+  // Forward motion, then a jump back (re-referencing) announced with MoveAxis(): not a reversal.
+  pos_[0] += 10;
+  comp_.Tick(pos_, corr_);
+  EXPECT_FALSE(comp_.reverse(0));
+  pos_[0] -= 1000;
+  comp_.MoveAxis(0, pos_[0]);
+  comp_.RequestRebase();
+  comp_.Tick(pos_, corr_);
+  EXPECT_FALSE(comp_.reverse(0));
+  pos_[0] -= 1;  // real motion backwards is sensed
+  comp_.Tick(pos_, corr_);
+  EXPECT_TRUE(comp_.reverse(0));
+}
+
+}  // namespace
+}  // namespace volcomp

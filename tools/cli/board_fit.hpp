@@ -1,0 +1,55 @@
+// Does a table fit the board it is going to? Before `upload` transfers and `activate` activates a
+// table, the PC tool reads the board's installation (axis count 0x2000:4, and per axis name
+// 0x2010, kind 0x2011, units per step 0x2012, max correction 0x2015, max correction rate 0x2016,
+// max input rate 0x201E) and compares it with what the table asks (image/table_demands.hpp):
+//   * axis count, names, kinds and units per step must match (the board would refuse the table);
+//   * the table's largest correction must not exceed the max correction (the board would clamp);
+//   * its gradient x the fastest input rates must not exceed the max correction rate (the board
+//     would rate-limit the correction while the machine moves fast).
+// The last two are refused unless the caller allows them (`--allow-clamp`); then they are warned
+// about, and the board shows them in force (0x2134-0x2136, EMCY 0xFF20).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "volcomp/canopen_client/node_objects.hpp"
+#include "volcomp/table/table_image.hpp"
+
+namespace volcomp::tools {
+
+struct BoardAxis {
+  char name = '?';
+  uint32_t kind = 0;
+  uint32_t resolution_e9 = 0;
+  int32_t max_correction_steps = 0;
+  uint32_t max_rate_steps_s = 0;
+  uint32_t max_input_rate_hz = 0;
+};
+
+struct BoardInstallation {
+  std::vector<BoardAxis> axes;
+  bool settings_pending = false;  // edited settings not yet in force (the values read are those)
+};
+
+/// Reads the installation objects; throws (SdoFailure / CommunicationError) when they cannot be
+/// read.
+BoardInstallation ReadInstallation(canopen_client::NodeObjects& node);
+
+struct FitProblem {
+  bool limit = false;  // a clamp or rate limit (allowed with --allow-clamp), else a mismatch
+  std::string message;
+};
+
+/// Everything about `view` the board at `board` would refuse, clamp or rate-limit.
+std::vector<FitProblem> CheckTableFits(const table::TableView& view,
+                                       const BoardInstallation& board);
+
+/// Reads the installation and checks `view` against it: prints warnings to stderr, and throws
+/// InputError (exit 1) naming every problem when there is a mismatch, or a limit and not
+/// `allow_limits`. Returns the problems that were allowed (for a --json report).
+std::vector<FitProblem> RequireTableFits(canopen_client::NodeObjects& node,
+                                         const table::TableView& view,
+                                         bool allow_limits);
+
+}  // namespace volcomp::tools

@@ -1,0 +1,186 @@
+// `volcomp inspect IMAGE [--json]`: what an image holds, validated by the firmware's parser.
+#include <algorithm>
+#include <cstdio>
+#include <limits>
+#include <ostream>
+
+#include "commands.hpp"
+#include "volcomp/image/image_reader.hpp"
+#include "volcomp/tools/hex.hpp"
+
+namespace volcomp::cli {
+namespace {
+
+const char* TypeName(table::ElementType t) {
+  switch (t) {
+    case table::ElementType::kInt16:
+      return "int16";
+    case table::ElementType::kInt32:
+      return "int32";
+    case table::ElementType::kFloat32:
+      return "float32";
+  }
+  return "?";
+}
+
+struct Range {
+  double min = std::numeric_limits<double>::infinity();
+  double max = -std::numeric_limits<double>::infinity();
+  void Add(double v) {
+    min = std::min(min, v);
+    max = std::max(max, v);
+  }
+};
+
+bool IsRotary(const table::AxisInfo& a) { return a.kind == table::AxisKind::kRotary; }
+
+// Display unit of a correction and its factor from steps: µm (arcsec on a rotary axis).
+std::pair<const char*, double> CorrectionUnit(const table::AxisInfo& a) {
+  if (IsRotary(a)) return {"arcsec", a.resolution_e9 * 1e-9 * 3600.0};
+  return {"um", a.resolution_e9 * 1e-9 * 1000.0};
+}
+
+// Everything `inspect` reports, from the validated view.
+JsonValue InspectData(const std::string& file, const table::TableView& v) {
+  JsonValue d = JsonValue::Object();
+  d.Set("file", file);
+  d.Set("image_size", uint64_t{v.image_size});
+  d.Set("crc32", tools::Hex32(v.crc32));
+  d.Set("table_id", uint64_t{v.table_id});
+  d.Set("format_version",
+        std::to_string(table::kVersionMajor) + "." + std::to_string(v.version_minor));
+  JsonValue& axes = d["axes"] = JsonValue::Array();
+  for (uint8_t i = 0; i < v.axis_count; ++i) {
+    const auto& a = v.axes[i];
+    JsonValue x = JsonValue::Object();
+    x.Set("name", std::string(1, a.name));
+    x.Set("kind", IsRotary(a) ? "rotary" : "linear");
+    x.Set("resolution_e9", uint64_t{a.resolution_e9});
+    x.Set("units_per_step", a.resolution_e9 * 1e-9);
+    axes.Push(std::move(x));
+  }
+  if (v.grid.present) {
+    std::vector<Range> range(3);
+    const uint64_t n = uint64_t{v.grid.dim[0].nodes} * v.grid.dim[1].nodes * v.grid.dim[2].nodes;
+    for (uint64_t i = 0; i < n * 3; ++i) {
+      range[i % 3].Add(table::ElementSteps(v.grid.data, v.grid.type, v.grid.frac_bits,
+                                           static_cast<uint32_t>(i)));
+    }
+    JsonValue& g = d["grid3"] = JsonValue::Object();
+    g.Set("element", TypeName(v.grid.type));
+    g.Set("frac_bits", unsigned{v.grid.frac_bits});
+    JsonValue& dims = g["dimensions"] = JsonValue::Array();
+    for (int k = 0; k < 3; ++k) {
+      const auto& a = v.axes[v.grid.axis[k]];
+      const auto& dim = v.grid.dim[k];
+      const double per = a.resolution_e9 * 1e-9;
+      const auto unit = CorrectionUnit(a);
+      JsonValue x = JsonValue::Object();
+      x.Set("axis", std::string(1, a.name));
+      x.Set("nodes", uint64_t{dim.nodes});
+      x.Set("origin_steps", int64_t{dim.origin_steps});
+      x.Set("spacing_steps", uint64_t{dim.spacing_steps});
+      x.Set("correction_min_steps", range[k].min);
+      x.Set("correction_max_steps", range[k].max);
+      x.Set("position_unit", IsRotary(a) ? "deg" : "mm");
+      x.Set("from", dim.origin_steps * per);
+      x.Set("to", (dim.origin_steps + double(dim.nodes - 1) * dim.spacing_steps) * per);
+      x.Set("spacing", dim.spacing_steps * per);
+      x.Set("correction_unit", unit.first);
+      x.Set("correction_min", range[k].min * unit.second);
+      x.Set("correction_max", range[k].max * unit.second);
+      dims.Push(std::move(x));
+    }
+  }
+  JsonValue& tables = d["axis1d"] = JsonValue::Array();
+  for (uint8_t i = 0; i < v.axis1d_count; ++i) {
+    const auto& t = v.axis1d[i];
+    JsonValue x = JsonValue::Object();
+    x.Set("axis", std::string(1, v.axes[t.axis].name));
+    x.Set("element", TypeName(t.type));
+    x.Set("frac_bits", unsigned{t.frac_bits});
+    x.Set("nodes", uint64_t{t.dim.nodes});
+    x.Set("origin_steps", int64_t{t.dim.origin_steps});
+    x.Set("spacing_steps", uint64_t{t.dim.spacing_steps});
+    x.Set("has_reverse", t.reverse != nullptr);
+    x.Set("wrap_period_steps", uint64_t{t.period_steps});
+    x.Set("backlash_steps", t.backlash_q8 / 256.0);
+    tables.Push(std::move(x));
+  }
+  d.Set("info", v.info ? std::string(v.info, v.info_size) : std::string());
+  return d;
+}
+
+void InspectText(const JsonValue& d, std::ostream& out) {
+  out << d.get("file")->string << ": valid volcomp table image, format "
+      << d.get("format_version")->string << ", " << d.get("image_size")->integer
+      << " bytes, CRC-32 " << d.get("crc32")->string << ", table id "
+      << d.get("table_id")->integer << "\n";
+  out << "axes:";
+  for (const JsonValue& a : d.get("axes")->array) {
+    const bool rotary = a.get("kind")->string == "rotary";
+    out << " " << a.get("name")->string << " (" << (rotary ? "rotary, " : "")
+        << a.get("units_per_step")->number << (rotary ? " deg" : " mm") << "/step)";
+  }
+  out << "\n";
+  if (const JsonValue* g = d.get("grid3")) {
+    const auto& dims = g->get("dimensions")->array;
+    out << "GRID3: " << g->get("element")->string << " Q." << g->get("frac_bits")->integer << ", "
+        << dims[0].get("nodes")->integer << " x " << dims[1].get("nodes")->integer << " x "
+        << dims[2].get("nodes")->integer << " nodes\n";
+    for (const JsonValue& x : dims) {
+      char line[256];
+      std::snprintf(line, sizeof line,
+                    "  %s: from %.6g to %.6g %s every %.6g (%d steps), correction %.4g .. %.4g %s\n",
+                    x.get("axis")->string.c_str(), x.get("from")->number, x.get("to")->number,
+                    x.get("position_unit")->string.c_str(), x.get("spacing")->number,
+                    static_cast<int>(x.get("spacing_steps")->integer),
+                    x.get("correction_min")->number, x.get("correction_max")->number,
+                    x.get("correction_unit")->string.c_str());
+      out << line;
+    }
+  }
+  for (const JsonValue& t : d.get("axis1d")->array) {
+    const int64_t period = t.get("wrap_period_steps")->integer;
+    out << "AXIS1D " << t.get("axis")->string << ": " << t.get("element")->string << " Q."
+        << t.get("frac_bits")->integer << ", " << t.get("nodes")->integer << " nodes from step "
+        << t.get("origin_steps")->integer << " every " << t.get("spacing_steps")->integer
+        << " steps" << (t.get("has_reverse")->boolean ? ", forward+reverse" : ", one direction")
+        << ", backlash " << t.get("backlash_steps")->number << " steps"
+        << (period != 0 ? ", wraps every " + std::to_string(period) + " steps" : std::string())
+        << "\n";
+  }
+  const std::string& info = d.get("info")->string;
+  if (!info.empty()) {
+    out << "info:\n";
+    std::size_t start = 0;
+    while (start < info.size()) {
+      const std::size_t end = std::min(info.find('\n', start), info.size());
+      out << "  " << info.substr(start, end - start) << "\n";
+      start = end + 1;
+    }
+  }
+}
+
+Expected<Output> RunInspect(Args& args, Context&) {
+  args.Flag("--json");  // the command layer prints the data as JSON
+  const auto files = args.Positionals();
+  VOLCOMP_TRY(args.Finish());
+  if (files.size() != 1) return UsageFailure("expected one IMAGE file");
+  VOLCOMP_TRY_ASSIGN(const image::LoadedImage img, image::ReadImageFile(files[0]));
+  return Output{InspectData(files[0], img.view()), InspectText};
+}
+
+}  // namespace
+
+const Command& InspectCommand() {
+  static const Command kCommand{
+      "inspect",
+      "summarise a table image",
+      "IMAGE",
+      {{"--json", nullptr, nullptr, nullptr, nullptr, "machine-readable output"}},
+      RunInspect};
+  return kCommand;
+}
+
+}  // namespace volcomp::cli

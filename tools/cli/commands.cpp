@@ -1,0 +1,40 @@
+// The command list of `volcomp`, in the order `volcomp help` shows it.
+#include "commands.hpp"
+
+namespace volcomp::cli {
+
+const std::vector<const Command*>& Commands() {
+  static const std::vector<const Command*> kCommands = {
+      &BuildGridCommand(),
+      &InspectCommand(),
+      &LookupCommand(),
+      &UploadCommand(),
+      &VerifyCommand(),
+      &ActivateCommand(),
+      &DeactivateCommand(),
+      &ReferenceCommand(),
+      &StatusCommand(),
+      &MonitorCommand(),
+      &SdoCommand(),
+      &ConfigShowCommand(),
+      &ConfigSaveCommand(),
+      &ConfigApplyCommand(),
+      &NmtCommand(),
+      &EdsCommand(),
+      &EvaluatePositioningCommand(),
+      &EvaluateDiagonalCommand(),
+      &EvaluateRotaryCommand(),
+      &ProgramPositioningCommand(),
+      &ProgramDiagonalCommand(),
+      &ReportCompareCommand(),
+      &BuildModelCommand(),
+      &BuildTrackerCommand(),
+      &BuildKmtppCommand(),
+      &BuildAxisCommand(),
+      &ExportLinuxcncCommand(),
+      &ModelEvalCommand(),
+  };
+  return kCommands;
+}
+
+}  // namespace volcomp::cli

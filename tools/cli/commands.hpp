@@ -1,0 +1,74 @@
+// The commands of the `volcomp` tool. Each command is declared in its own cmd_*.cpp beside its
+// code: `const Command& FooCommand()` returns its name, summary, options (option_groups.hpp for
+// the shared ones), run function and notes; commands.cpp lists them in the order of `volcomp help`.
+//
+// To add a command: write cmd_foo.cpp with `Expected<Output> RunFoo(Args&, Context&)` and
+// `const Command& FooCommand()` (command.hpp), declare FooCommand here and add it to commands.cpp.
+#pragma once
+
+#include "command.hpp"
+
+namespace volcomp::cli {
+
+const Command& BuildGridCommand();
+const Command& InspectCommand();
+const Command& LookupCommand();
+const Command& UploadCommand();
+const Command& VerifyCommand();
+const Command& ActivateCommand();
+const Command& DeactivateCommand();
+const Command& ReferenceCommand();
+const Command& StatusCommand();
+const Command& MonitorCommand();
+const Command& SdoCommand();
+const Command& ConfigShowCommand();
+const Command& ConfigSaveCommand();
+const Command& ConfigApplyCommand();
+const Command& NmtCommand();
+const Command& EdsCommand();
+const Command& EvaluatePositioningCommand();
+const Command& EvaluateDiagonalCommand();
+const Command& EvaluateRotaryCommand();
+const Command& ProgramPositioningCommand();
+const Command& ProgramDiagonalCommand();
+const Command& ReportCompareCommand();
+const Command& BuildModelCommand();
+const Command& BuildTrackerCommand();
+const Command& BuildKmtppCommand();
+const Command& BuildAxisCommand();
+const Command& ExportLinuxcncCommand();
+const Command& ModelEvalCommand();
+
+}  // namespace volcomp::cli
+
+// TRANSITION: the run functions of the commands not yet converted (int, may throw: UsageError of
+// args.hpp -> 2, CommunicationError of exit_codes.hpp -> 3, anything else -> 1).
+namespace volcomp::tools {
+int RunBuildGrid(Args& args);
+int RunLookup(Args& args);
+int RunUpload(Args& args);
+int RunVerify(Args& args);
+int RunActivate(Args& args);
+int RunDeactivate(Args& args);
+int RunReference(Args& args);
+int RunStatus(Args& args);
+int RunMonitor(Args& args);
+int RunSdo(Args& args);
+int RunConfigShow(Args& args);
+int RunConfigSave(Args& args);
+int RunConfigApply(Args& args);
+int RunNmt(Args& args);
+int RunEds(Args& args);
+int RunEvaluatePositioning(Args& args);
+int RunEvaluateDiagonal(Args& args);
+int RunEvaluateRotary(Args& args);
+int RunProgramPositioning(Args& args);
+int RunProgramDiagonal(Args& args);
+int RunReportCompare(Args& args);
+int RunBuildModel(Args& args);
+int RunBuildTracker(Args& args);
+int RunBuildKmtpp(Args& args);
+int RunBuildAxis(Args& args);
+int RunExportLinuxcnc(Args& args);
+int RunModelEval(Args& args);
+}  // namespace volcomp::tools

@@ -1,0 +1,29 @@
+// Option groups shared by several commands of the `volcomp` tool (declared once, so the help and
+// the parser agree everywhere they appear).
+#pragma once
+
+#include <initializer_list>
+#include <vector>
+
+#include "volcomp/tools/args.hpp"
+
+namespace volcomp::cli {
+
+using Options = std::vector<tools::OptionSpec>;
+
+/// The options of `parts`, in order.
+Options Join(std::initializer_list<Options> parts);
+
+const Options& CanOptions();
+const Options& ResolutionOptions();
+const Options& ImageOptions();
+const Options& GridOptions();
+const Options& ModelOptions();
+const Options& JsonReport();
+const Options& PositioningFileOptions();
+const char* PositioningFileNotes();
+const Options& AllowFewRuns();
+const Options& TemplateOutput();
+const char* GridNotes();
+
+}  // namespace volcomp::cli
