@@ -106,7 +106,7 @@ void Compensator::RefreshTargets(const int32_t* machine_pos_steps) {
     phase_ = 0;
     return;
   }
-  // One part per tick; an if-chain, not a switch (a jump table would be an indirect jump, which
+  // One part per run; an if-chain, not a switch (a jump table would be an indirect jump, which
   // the static cycle bound of toolchain/cyclemodel refuses).
   const uint32_t phase = phase_;
   uint32_t next = phase + 1u;

@@ -44,7 +44,7 @@ Status NativeCompensator::Load(std::vector<uint8_t> image,
     }
     c = config_;
   } else {
-    VOLCOMP_TRY(comp_.Configure(c, /*ticks_per_run=*/1));  // Tick() every servo period
+    VOLCOMP_TRY(comp_.Configure(c, /*ticks_per_run=*/1));  // Run() every servo period
   }
   // The view the prepared table uses points into the bytes: prepare on the vector that keeps them.
   PreparedTable t;
@@ -70,7 +70,7 @@ void NativeCompensator::Tick(const double* pos_mm,
   comp_.SetEnabled(enable);
   comp_.SetReferenced(referenced);
   int32_t whole[table::kMaxAxes];
-  comp_.Tick(last_steps_, whole);
+  comp_.Run(last_steps_, whole);
   bool reverse[table::kMaxAxes] = {};
   for (uint8_t a = 0; a < n; ++a) reverse[a] = comp_.reverse(a);
   int32_t wanted_q8[table::kMaxAxes] = {};

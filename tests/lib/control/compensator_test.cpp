@@ -11,7 +11,7 @@ namespace volcomp {
 namespace {
 
 constexpr double kQ8 = 256.0;
-// The fixture's rate limit (1000 steps/s) per Tick(): the compensator runs every
+// The fixture's rate limit (1000 steps/s) per Run(): the compensator runs every
 // CompensationDivider(tick_hz) ticks of the default tick.
 constexpr uint32_t kTickHz = DefaultBoardConfig().tick_hz;
 constexpr double kStepsPerRun = 1000.0 * CompensationDivider(kTickHz) / kTickHz;
@@ -72,10 +72,10 @@ class CompensatorTest : public ::testing::Test {
     }
     ASSERT_TRUE(comp_.Configure(config_).ok());
   }
-  // Ticks with the axes at `pos_`; returns the last correction of axis 0.
-  int32_t TickN(int n) {
+  // Runs with the axes at `pos_`; returns the last correction of axis 0.
+  int32_t RunN(int n) {
     for (int i = 0; i < n; ++i) {
-      comp_.Tick(pos_, corr_);
+      comp_.Run(pos_, corr_);
       for (int a = 0; a < 3; ++a) {
         const double applied = comp_.applied_q8(a) / kQ8;
         max_rate_ = std::max(max_rate_, std::fabs(applied - last_[a]));
@@ -95,21 +95,21 @@ class CompensatorTest : public ::testing::Test {
   int32_t pos_[3] = {0, 0, 0};
   int32_t corr_[3] = {};
   double last_[3] = {};
-  double max_rate_ = 0;  // steps per Tick() (one compensation run)
+  double max_rate_ = 0;  // steps per Run() (one compensation run)
 };
 
 TEST_F(CompensatorTest, PassThroughUntilReferenced) {
   TableFixture f(10, -20, 30);
   comp_.SetTable(Prepare(f), pos_);
   comp_.SetEnabled(true);
-  TickN(20000);
+  RunN(20000);
   EXPECT_EQ(corr_[0], 0);
   EXPECT_EQ(corr_[1], 0);
   EXPECT_TRUE(comp_.passthrough());
   EXPECT_FALSE(comp_.engaged());
   comp_.SetReferenced(true);
   EXPECT_TRUE(comp_.engaged());
-  TickN(20000);
+  RunN(20000);
   EXPECT_EQ(corr_[0], 10);
   EXPECT_EQ(corr_[1], -20);
   EXPECT_EQ(corr_[2], 30);
@@ -123,12 +123,12 @@ TEST_F(CompensatorTest, EnableRampsInAndDisableRampsOutWithinLimits) {
   comp_.SetEnabled(true);
   std::vector<int32_t> ramp;
   for (int i = 0; i < 10000; ++i) {
-    comp_.Tick(pos_, corr_);
+    comp_.Run(pos_, corr_);
     ramp.push_back(comp_.applied_q8(0));
   }
   EXPECT_EQ(ramp.back(), 50 * 256);
   // Monotonic ramp, each step within the rate limit (1000 steps/s at the compensation rate, one
-  // Tick() every CompensationDivider(50 kHz) ticks: 0.02 step per tick).
+  // Run() every CompensationDivider(50 kHz) ticks: 0.02 step per control tick).
   for (size_t i = 1; i < ramp.size(); ++i) {
     ASSERT_GE(ramp[i], ramp[i - 1]);
     ASSERT_LE(ramp[i] - ramp[i - 1], kStepsPerRun * 256 + 1);
@@ -140,7 +140,7 @@ TEST_F(CompensatorTest, EnableRampsInAndDisableRampsOutWithinLimits) {
   EXPECT_LT(runs_to_full, (50 / kStepsPerRun) * 1.3);
   last_[0] = comp_.applied_q8(0) / kQ8;
   comp_.SetEnabled(false);
-  TickN(10000);
+  RunN(10000);
   EXPECT_TRUE(comp_.passthrough());
   EXPECT_EQ(corr_[0], 0);
   EXPECT_LE(max_rate_, kStepsPerRun + 1.0 / 256);
@@ -151,12 +151,12 @@ TEST_F(CompensatorTest, FaultRampsOut) {
   comp_.SetTable(Prepare(f), pos_);
   comp_.SetReferenced(true);
   comp_.SetEnabled(true);
-  TickN(10000);
+  RunN(10000);
   EXPECT_EQ(corr_[1], 40);
   comp_.SetFault(true);
-  comp_.Tick(pos_, corr_);
+  comp_.Run(pos_, corr_);
   EXPECT_GE(corr_[1], 39);  // no jump
-  TickN(10000);
+  RunN(10000);
   EXPECT_EQ(corr_[1], 0);
   EXPECT_TRUE(comp_.passthrough());
 }
@@ -166,7 +166,7 @@ TEST_F(CompensatorTest, ClampHoldsTheConfiguredMaximum) {
   comp_.SetTable(Prepare(f), pos_);
   comp_.SetReferenced(true);
   comp_.SetEnabled(true);
-  TickN(30000);
+  RunN(30000);
   EXPECT_EQ(corr_[0], 100);
   EXPECT_EQ(corr_[1], -100);
   EXPECT_EQ(corr_[2], 100);  // 99.5 rounds half up
@@ -178,12 +178,12 @@ TEST_F(CompensatorTest, TableChangeIsSpreadWithinLimits) {
   comp_.SetTable(Prepare(a), pos_);
   comp_.SetReferenced(true);
   comp_.SetEnabled(true);
-  TickN(10000);
+  RunN(10000);
   ASSERT_EQ(corr_[0], -30);
   max_rate_ = 0;
   comp_.SetTable(Prepare(b), pos_);
   EXPECT_EQ(comp_.table_id(), 42u);
-  TickN(10000);
+  RunN(10000);
   EXPECT_EQ(corr_[0], 30);
   EXPECT_LE(max_rate_, kStepsPerRun + 1.0 / 256);  // applied_q8() truncates to 1/256 step
 }
@@ -194,18 +194,18 @@ TEST_F(CompensatorTest, ReverseDirectionSelectsTheReverseTable) {
   comp_.SetReferenced(true);
   comp_.SetEnabled(true);
   pos_[0] = 100;
-  TickN(5000);
+  RunN(5000);
   EXPECT_EQ(corr_[0], 0);
   EXPECT_FALSE(comp_.reverse(0));
   pos_[0] = 99;  // one step back: reversal
-  TickN(5000);
+  RunN(5000);
   EXPECT_TRUE(comp_.reverse(0));
   EXPECT_EQ(corr_[0], 3);
   pos_[0] = 99;  // standing still keeps the direction
-  TickN(100);
+  RunN(100);
   EXPECT_TRUE(comp_.reverse(0));
   pos_[0] = 150;
-  TickN(5000);
+  RunN(5000);
   EXPECT_FALSE(comp_.reverse(0));
   EXPECT_EQ(corr_[0], 0);
 }
@@ -225,10 +225,10 @@ TEST_F(CompensatorTest, ImageForAnotherBoardIsRefusedAndNothingChanges) {
   EXPECT_EQ(t.Prepare(f.view, other).error(), Error::kConfigTooManyAxes);
 }
 
-// The target refresh (compensator.hpp): while engaged, part p of the refresh runs on the p-th tick
-// of a cycle of 3 + axis_count ticks: the grid is located at the positions of part 0; on part 3 + a
-// axis a gets clamp(grid component + its AXIS1D table at its position and direction of that tick).
-// Checked tick by tick against an evaluation written from that description with the reference
+// The target refresh (compensator.hpp): while engaged, part p of the refresh runs on the p-th run
+// of a cycle of 3 + axis_count runs: the grid is located at the positions of part 0; on part 3 + a
+// axis a gets clamp(grid component + its AXIS1D table at its position and direction of that run).
+// Checked run by run against an evaluation written from that description with the reference
 // lookups (GridLookup::Interpolate, AxisLookup::LookupReference) and independent direction and
 // wrap tracking, for every element type, with random motion, reversals and wrap-around.
 template <class Loader>
@@ -294,12 +294,12 @@ void CheckRefreshSchedule(table::ElementType type, uint64_t seed) {
     return static_cast<int32_t>((o < 0 ? o + 4000 : o) + 100);
   };
   const uint32_t cycle = Compensator::kGridPhases + 3;
-  EXPECT_EQ(comp.refresh_ticks(), cycle);
+  EXPECT_EQ(comp.refresh_runs(), cycle);
   int32_t grid_pos[3] = {};
   int32_t expect[3] = {0, 0, 0};
   int dir[3] = {1, -1, 1};
   int refreshes = 0;
-  for (uint32_t tick = 0; tick < 6000; ++tick) {
+  for (uint32_t run = 0; run < 6000; ++run) {
     int32_t last[3];
     for (int a = 0; a < 3; ++a) {
       last[a] = pos[a];
@@ -307,7 +307,7 @@ void CheckRefreshSchedule(table::ElementType type, uint64_t seed) {
       pos[a] += dir[a] * static_cast<int32_t>(rng() % 30);
       if (pos[a] != last[a]) reverse[a] = pos[a] < last[a];
     }
-    const uint32_t part = tick % cycle;
+    const uint32_t part = run % cycle;
     if (part == 0) std::copy(pos, pos + 3, grid_pos);
     if (part >= Compensator::kGridPhases) {
       const int a = static_cast<int>(part - Compensator::kGridPhases);
@@ -324,17 +324,17 @@ void CheckRefreshSchedule(table::ElementType type, uint64_t seed) {
       ++refreshes;
     }
     int32_t corr[3];
-    comp.Tick(pos, corr);
+    comp.Run(pos, corr);
     for (int a = 0; a < 3; ++a) {
-      ASSERT_EQ(comp.target_q8(a), expect[a]) << "tick " << tick << " axis " << a;
+      ASSERT_EQ(comp.target_q8(a), expect[a]) << "run " << run << " axis " << a;
       ASSERT_EQ(comp.reverse(a), reverse[a]);
     }
   }
-  EXPECT_EQ(refreshes, 3000);  // parts 3..5 of each 6-tick cycle refresh one axis each
-  // Disengaging zeroes the targets on the next tick and restarts the cycle.
+  EXPECT_EQ(refreshes, 3000);  // parts 3..5 of each 6-run cycle refresh one axis each
+  // Disengaging zeroes the targets on the next run and restarts the cycle.
   comp.SetEnabled(false);
   int32_t corr[3];
-  comp.Tick(pos, corr);
+  comp.Run(pos, corr);
   for (int a = 0; a < 3; ++a) EXPECT_EQ(comp.target_q8(a), 0);
 }
 
@@ -348,58 +348,58 @@ TEST(CompensatorRefresh, ScheduleAndValuesFloat32) {
   CheckRefreshSchedule<LoadFloat32>(table::ElementType::kFloat32, 33);
 }
 
-// A new target is in effect within refresh_ticks() ticks of engaging, of SetTable() and of
+// A new target is in effect within refresh_runs() runs of engaging, of SetTable() and of
 // Rebase() (the latency the refresh adds on top of the limiter).
 TEST_F(CompensatorTest, NewTargetWithinOneRefreshCycle) {
   TableFixture f(10, -20, 30), g(-5, 6, 7);
   comp_.SetTable(Prepare(f), pos_);
   comp_.SetReferenced(true);
   comp_.SetEnabled(true);
-  const uint32_t n = comp_.refresh_ticks();
+  const uint32_t n = comp_.refresh_runs();
   EXPECT_EQ(n, 6u);
-  for (uint32_t i = 0; i < n; ++i) comp_.Tick(pos_, corr_);
+  for (uint32_t i = 0; i < n; ++i) comp_.Run(pos_, corr_);
   EXPECT_EQ(comp_.target_q8(0), 10 * 256);
   EXPECT_EQ(comp_.target_q8(1), -20 * 256);
   EXPECT_EQ(comp_.target_q8(2), 30 * 256);
-  for (uint32_t i = 0; i < 2; ++i) comp_.Tick(pos_, corr_);  // mid-cycle
+  for (uint32_t i = 0; i < 2; ++i) comp_.Run(pos_, corr_);  // mid-cycle
   comp_.SetTable(Prepare(g), pos_);
-  for (uint32_t i = 0; i < n; ++i) comp_.Tick(pos_, corr_);
+  for (uint32_t i = 0; i < n; ++i) comp_.Run(pos_, corr_);
   EXPECT_EQ(comp_.target_q8(0), -5 * 256);
   EXPECT_EQ(comp_.target_q8(1), 6 * 256);
   EXPECT_EQ(comp_.target_q8(2), 7 * 256);
 }
 
-// RequestRebase() (the tick's table switch or referencing) rebases in the next tick's refresh
-// slice: the refresh cycle restarts one tick later, so the new target is in effect one tick after
+// RequestRebase() (the run's table switch or referencing) rebases in the next run's refresh
+// slice: the refresh cycle restarts one run later, so the new target is in effect one run after
 // a Rebase()'s would be. MoveAxis() makes a coordinate jump before then invisible as motion.
 TEST_F(CompensatorTest, RequestedRebaseTakesOneRefreshSlice) {
   TableFixture f(10, -20, 30), g(-5, 6, 7);
   comp_.SetTable(Prepare(f), pos_);
   comp_.SetReferenced(true);
   comp_.SetEnabled(true);
-  const uint32_t n = comp_.refresh_ticks();
-  for (uint32_t i = 0; i < n + 2; ++i) comp_.Tick(pos_, corr_);  // mid-cycle
+  const uint32_t n = comp_.refresh_runs();
+  for (uint32_t i = 0; i < n + 2; ++i) comp_.Run(pos_, corr_);  // mid-cycle
   const PreparedTable pg = Prepare(g);
   comp_.BindTable(&pg);
   comp_.RequestRebase();
-  for (uint32_t i = 0; i < n; ++i) comp_.Tick(pos_, corr_);
+  for (uint32_t i = 0; i < n; ++i) comp_.Run(pos_, corr_);
   EXPECT_EQ(comp_.target_q8(0), -5 * 256);
   EXPECT_EQ(comp_.target_q8(1), 6 * 256);
-  EXPECT_EQ(comp_.target_q8(2), 30 * 256);  // axis 2's refresh comes one tick later
-  comp_.Tick(pos_, corr_);
+  EXPECT_EQ(comp_.target_q8(2), 30 * 256);  // axis 2's refresh comes one run later
+  comp_.Run(pos_, corr_);
   EXPECT_EQ(comp_.target_q8(2), 7 * 256);
 
   // Forward motion, then a jump back (re-referencing) announced with MoveAxis(): not a reversal.
   pos_[0] += 10;
-  comp_.Tick(pos_, corr_);
+  comp_.Run(pos_, corr_);
   EXPECT_FALSE(comp_.reverse(0));
   pos_[0] -= 1000;
   comp_.MoveAxis(0, pos_[0]);
   comp_.RequestRebase();
-  comp_.Tick(pos_, corr_);
+  comp_.Run(pos_, corr_);
   EXPECT_FALSE(comp_.reverse(0));
   pos_[0] -= 1;  // real motion backwards is sensed
-  comp_.Tick(pos_, corr_);
+  comp_.Run(pos_, corr_);
   EXPECT_TRUE(comp_.reverse(0));
 }
 

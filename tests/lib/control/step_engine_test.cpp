@@ -18,8 +18,8 @@
 #include "test_tables.hpp"
 #include "volcomp/control/control_tick.hpp"
 #include "volcomp/hal/mock/mock_step_io.hpp"
-#include "volcomp/reference/step_decoder.hpp"
 #include "volcomp/output/step_output.hpp"
+#include "volcomp/reference/step_decoder.hpp"
 
 namespace volcomp {
 namespace {
@@ -306,7 +306,7 @@ TEST(StepEngineTwoRates, TheCompensatorRunsEveryDividerTicksAndTheStepPathApplie
     }
     if (!due) continue;
     engine.Compensate();
-    oracle.Tick(commanded, published);
+    oracle.Run(commanded, published);
     ++runs;
     for (uint8_t a = 0; a < 3; ++a) {
       ASSERT_EQ(engine.published_correction_steps(a), published[a]) << t;

@@ -1,42 +1,18 @@
-// The per-tick data path of the board from the input stage's counters to the target positions, as
-// pure logic, in two parts at two rates:
-//
-//   step path, every tick (RunSteps()):
-//     input counters -> commanded position; target = commanded + applied correction
-//   compensation, every compensation_divider() ticks (Compensate()):
-//     commanded (+ reference offset) -> machine position -> compensator (sensing, one target
-//     refresh slice, limiters) -> the correction the following ticks apply
-//
-// Run() is one tick as a whole: RunSteps(), then Compensate() when it is due. The STM32 step/dir
-// board runs the two parts in two interrupts (the step path at the tick's highest priority, the
-// compensation in a lower-priority interrupt the step path pends: docs/mcu-target.md, "Two
-// rates"); every other board runs Run(). Either way the order is the same: a tick's target uses
-// the correction of the compensation runs before it (up to compensation_divider() ticks old),
-// and a compensation run senses the commanded positions of the tick that pended it (or later
-// ones, when the step path preempts it).
-//
-// The targets (and the corrections in them) go to one output stage: StepOutput (step/dir pulses,
-// step_output.hpp) or the CSP gateway's CspOutput (corrected CAN setpoints, csp_stages.hpp). The
-// input counters come from the matching input stage: hardware step counters or the commanded
-// positions of the controller's target PDOs (CspInput). Target = input position + applied
-// correction, exactly, every tick; an input step counted before tick k's counter read is in tick
-// k's target.
-//
-// Shared between the two parts (each a single aligned word, written by one side only, relaxed
-// atomics: plain loads and stores on the Cortex-M4): the commanded positions (step path ->
-// compensation) and the published corrections (compensation -> step path). Referencing, the table
-// and the compensator's state belong to the compensation side.
-//
-// RunSteps() and Compensate() are the tick's hot paths: no division, no allocation, O(axes).
-// Everything else is for the control context between ticks.
+// The board's data path from the input stage's counters to the target positions (whole steps,
+// wrapping int32; target = commanded + applied correction, exactly, every tick), in two parts:
+// RunSteps() every tick and Compensate() every compensation_divider() ticks; Run() is both in
+// order. Both: no division, no allocation, O(axes). Threading: RunSteps() may preempt Compensate()
+// (they share only single-word relaxed atomics, each written by one side); everything else from
+// the compensation context between runs. The schedule and its rules: docs/mcu-target.md, "Two
+// rates"; the output stages that take targets(): docs/architecture.md.
 #pragma once
 
 #include <atomic>
 #include <cstdint>
 
+#include "volcomp/base/status.hpp"
 #include "volcomp/config/board_config.hpp"
 #include "volcomp/control/compensator.hpp"
-#include "volcomp/base/status.hpp"
 #include "volcomp/table/table_format.hpp"
 
 namespace volcomp {
@@ -162,7 +138,7 @@ __attribute__((always_inline)) inline bool ControlTick::RunSteps(const uint32_t*
 }
 
 __attribute__((always_inline)) inline void ControlTick::Compensate() {
-  // Compensator::Tick() in its three steps, fused with the machine-position work of each axis.
+  // Compensator::Run() in its three steps, fused with the machine-position work of each axis.
   const uint32_t n = axis_count_;
   for (uint32_t a = 0; a < n; ++a) {
     const int32_t machine =
@@ -173,7 +149,7 @@ __attribute__((always_inline)) inline void ControlTick::Compensate() {
   }
   compensator_.RefreshTargets(machine_);
   for (uint32_t a = 0; a < n; ++a) {
-    published_[a].store(compensator_.ApplyAxis(static_cast<uint8_t>(a)), std::memory_order_relaxed);
+    published_[a].store(compensator_.LimitAxis(static_cast<uint8_t>(a)), std::memory_order_relaxed);
   }
 }
 
