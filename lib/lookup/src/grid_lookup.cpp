@@ -346,7 +346,7 @@ template void GridLookup::LookupAs<grid_kernel::Int16>(const int32_t*, int32_t*)
 template void GridLookup::LookupAs<grid_kernel::Float32>(const int32_t*, int32_t*) const;
 #endif
 
-// ---- The lookup in three parts (the control tick spreads it over ticks) ------------------------
+// ---- The lookup in three parts (the compensator spreads it over its runs) ----------------------
 // An if-chain on the element type, not a switch (a jump table would be an indirect jump, which the
 // static cycle bound of toolchain/cyclemodel refuses).
 

@@ -1,36 +1,18 @@
-// Step I/O: the hardware end of the per-tick data path. A static interface (no virtual calls on
-// the tick path): the board application is a template over a StepIo type that provides
-//
-//   volcomp::Status Configure(const volcomp::BoardConfig& config);
-//       Set up the input counters and output timers for `config` (pulse formats, counter widths,
-//       pulse clock, tick length). Main loop only, while the tick is stopped (the board
-//       application calls it at start and at every node reset, before it configures the data
-//       path). kConfigInvalid when the hardware cannot do what `config` asks (then the previous
-//       setup may be partly changed: the board application does not tick until a Configure()
-//       succeeds).
-//   void ReadCounters(uint32_t* counters);
-//       Latch the input step counters of all configured axes (hardware: timers in encoder or
-//       clock+direction mode; counters wrap at their width, see AxisConfig::input_counter_bits).
-//   void Apply(const volcomp::PulsePlan* plans);
-//       Program the output pulse timers with this tick's plans (one per axis); times in the plan
-//       are pulse-clock units from the start of the tick being planned.
-//
-// and optionally
-//
-//   void ApplyAxis(uint32_t axis, const volcomp::PulsePlan& plan);
-//       Apply() for one axis; the output stage then hands over each plan as it is made
-//       (HasApplyAxis<T>), and Apply() is the same as ApplyAxis() for every axis in order.
-//
-// ReadCounters and Apply are called from the control tick only (and ReadCounters from the main
-// loop while the tick is stopped, to latch the counters at start). IsStepIo<T> checks the shape at
-// compile time.
+// Step I/O: the hardware end of the per-tick data path, a static interface (a template parameter
+// of the board application: no virtual call on the tick path). A StepIo type provides
+//   Status Configure(const BoardConfig&)  main loop, tick stopped; kConfigInvalid if the hardware
+//                                         cannot (it may then be partly changed)
+//   void ReadCounters(uint32_t*)          tick (and main loop while stopped): latch the counters
+//   void Apply(const PulsePlan*)          tick: program the output timers, one plan per axis
+// and optionally ApplyAxis(axis, plan) (HasApplyAxis: Apply() for one axis). Rules and units:
+// docs/control-path.md, "Step I/O".
 #pragma once
 
 #include <cstdint>
 #include <type_traits>
 
-#include "volcomp/config/board_config.hpp"
 #include "volcomp/base/status.hpp"
+#include "volcomp/config/board_config.hpp"
 #include "volcomp/output/step_generator.hpp"
 
 namespace volcomp::hal {

@@ -1,21 +1,8 @@
-// Arithmetic of the interpolators: the weights and the element policies shared by the clear
-// reference (GridLookup::Interpolate<Loader>) and the optimised hot path (GridLookup::Lookup).
-//
-// Fractions come from LatticeLocator as Q0.32 (never 1.0). Fixed-point weights:
-//   * x level, Q0.32: x1 = tx, x0 = ~tx (= 2^32 - 1 - tx);
-//   * y level, Q0.32: x?y1 = MulHi(x?, ty), x?y0 = x? - x?y1 (the pair sums to its parent);
-//   * z level, Q1.31: w1 = MulHi(w, tz >> 1), w0 = (w >> 1) - w1.
-// All eight are in [0, 2^31), products only ever take the high word of a 32x32 multiply (one UMULL
-// on a Cortex-M4), and the weights sum to 2^31 - 1 minus at most 3 (the halvings), so the weight
-// error is below 2^-29 in total.
-// Element policies (per table element type):
-//   int16   S = sum_k floor(w_k * v_k / 2^16) in int32 (the Cortex-M4 SMLAWB operation); Q8 result
-//           (S + 2^(6+f)) >> (7+f). Product truncation <= 8 * 2^-15 element LSB.
-//   int32   S = sum_k w_k * v_k exactly in int64 (SMLAL); Q8 result (S + 2^(22+f)) >> (23+f).
-//   float32 the same tree in float from tx, ty, tz (converted from Q0.32); S in float, converted to
-//           Q8 rounding half away from zero (compile with -ffp-contract=off on every target).
-// Error bound (docs/table-image-format.md): fixed point <= 1/2 (rounding) + 1/16 (weights) +
-// 1/16 (int16 products) + 2^-6 (fraction) LSB < 1 LSB of Q8 over the whole valid value range.
+// Arithmetic of the interpolators, shared by the clear reference (GridLookup::Interpolate<Loader>)
+// and the hot path (GridLookup::Lookup and its parts): Q1.31 weights from Q0.32 fractions (high
+// words of 32x32 multiplies only) and one element policy per type (int16, int32, float32) giving a
+// Q8 result within 1 LSB of the exact interpolation. Freestanding; float32 needs -ffp-contract=off.
+// The weights, policies and error bound: docs/table-image-format.md, "Interpolation and accuracy".
 #pragma once
 
 #include <cstdint>

@@ -1,17 +1,8 @@
-// SLCAN (Lawicel ASCII) codec: encodes frames and commands into lines, decodes a byte stream into
-// messages. Freestanding (no heap, no exceptions), bounded memory, safe on arbitrary input
-// (fuzzable): a malformed or over-long line yields a Kind::kMalformed message, never an over-read.
-//
-// Line syntax (see docs/can-transports.md for the full dialect):
-//   frames     tiiildd..  Tiiiiiiiildd..  riiil  Riiiiiiiil   (l = '0'..'8', hex either case on
-//              input, uppercase on output; 4 trailing hex digits = a device timestamp in ms)
-//   commands   O L C Sn sxxyy F V v N Zn Xn Mxxxxxxxx mxxxxxxxx Un P A
-//   responses  "\r" ok, "\a" error, z / Z transmit acks, Fxx, Vxxxx, vxxxx, Nxxxx
-// A line ends at '\r' or '\a'. Some letters mean a command from the host and a response from the
-// device ("Z" alone is an extended-frame ack, "Z1" a command), so the decoder is told its role.
-//
-// Thread-safety: a Decoder is plain data; use one per byte stream from one thread. The free
-// functions are pure.
+// SLCAN (Lawicel ASCII) codec: frames and commands to lines, a byte stream to messages; the decoder
+// is told its role (host or device: some letters mean a command one way and a response the
+// other). Freestanding, bounded memory, safe on arbitrary input: a malformed or over-long line is
+// a Kind::kMalformed message, never an over-read. Threading: a Decoder per byte stream and thread;
+// the free functions are pure. The dialect: docs/can-transports.md, "SLCAN dialect".
 #pragma once
 
 #include <cstddef>

@@ -1,25 +1,8 @@
-// CiA 301 node: NMT slave (boot-up, pre-operational / operational / stopped, resets), heartbeat
-// producer (0x1017), EMCY producer with inhibit time (0x1015), error register (0x1001) and error
-// history (0x1003), and the SDO server, over one CAN channel with the pre-defined connection set
-// (COB-IDs from the node-ID: NMT 0x000, EMCY 0x080+id, SDO 0x600+id / 0x580+id, heartbeat
-// 0x700+id).
-//
-// The node answers the communication objects itself (0x1001, 0x1003, 0x1014, 0x1015, 0x1017,
-// 0x1200) and passes every other object to the application's ObjectValues. Frames out are drained
-// with PopTx(): boot-up and heartbeat first, then EMCY (as the inhibit time allows), then SDO
-// traffic. Single-threaded (main loop).
-//
-// Communication parameters (CommunicationParameters: 0x1015, 0x1017) have two values: the one in
-// force (written over SDO, takes effect at once) and the stored one (given to Start(): the stored
-// settings or the defaults; replaced by set_stored_communication() after a store). NMT reset
-// communication (and reset node) puts the stored values back in force (CiA 301 7.3.2.2.2).
-//
-// EMCY inhibit time: two EMCYs leave at least 0x1015 x 100 us apart. The node's clock counts
-// milliseconds, so the gap is enforced as ceil(0x1015 / 10) + 1 clock milliseconds (never shorter
-// than the inhibit time, at most 2 ms longer). EMCYs raised meanwhile wait, in order, in a queue of
-// kEmcyQueueLength; when it is full the newest waiting EMCY is replaced by the new one (the last
-// EMCY sent always gives the current error register) and counted in emcy_suppressed(). Every
-// raised error is in the 0x1003 history whether its EMCY was sent or not.
+// CiA 301 node over one CAN channel with the pre-defined connection set: NMT slave, heartbeat and
+// EMCY producers (inhibit time 0x1015 in 100 us units), error register and history, and the SDO
+// server. The node answers the communication objects itself and passes every other object to
+// the application's ObjectValues; frames out are drained with PopTx(). Single-threaded (main
+// loop). States, objects, EMCY queueing and frame order: docs/canopen.md, "Node".
 #pragma once
 
 #include <cstdint>

@@ -1,17 +1,7 @@
 // CiA 301 SDO frame protocol (section 7.2.4.3): the COB-IDs of the pre-defined connection set and
-// byte 0 of every SDO frame (command specifier and its flag bits), with the encoders and decoders
-// the SDO server (lib) and the PC tool's SDO client both use. Bytes 1-2 carry the index (LE) and
-// byte 3 the sub-index in initiate and abort frames; segments carry up to 7 data bytes in 1..7.
-//
-//   byte 0 = cs << 5 | flags      cs: client (ccs) or server (scs) command specifier, bits 7..5
-//   initiate download / upload response:  bits 3..2 n (unused bytes), 1 e (expedited), 0 s (size)
-//   download segment / upload segment:    bit 4 t (toggle), bits 3..1 n, bit 0 c (last)
-//   segment acknowledgements:             bit 4 t
-//   block download (ccs 6, scs 5) and block upload (ccs 5, scs 6): bit 2 CRC supported, bit 1 size
-//   indicated (initiate), bits 4..2 n (end); the sub-command in bit 0 (ccs 6, scs 6) or bits 1..0
-//   (ccs 5, scs 5): 0 initiate, 1 end, 2 acknowledge, 3 start upload
-//   block segment: bit 7 c (last), bits 6..0 sequence number 1..127
-//   abort: 0x80, bytes 4..7 the abort code (sdo_abort.hpp)
+// byte 0 of every SDO frame (command specifier and flag bits), with the encoders and decoders the
+// SDO server (lib) and the PC tool's SDO client both use. Pure functions on 8-byte frames. The bit
+// layout of byte 0: docs/canopen.md, "Node" (frame layouts).
 #pragma once
 
 #include <cstdint>

@@ -1,38 +1,8 @@
-// CiA 301 SDO server: expedited, segmented and block download and upload, for one node.
-//
-// Frames in: OnFrame() with every frame the node receives on 0x600 + node-ID (DLC must be 8;
-// others are counted as malformed and ignored). Frames out: PopTx(), drained by the node while
-// the CAN port accepts them (block upload segments are generated lazily, so no buffer grows).
-// Poll() runs the timeouts. Single-threaded: call everything from the main loop.
-//
-// Block download (the table upload path): the server offers `block_size` segments per sub-block
-// (client told in every ack), accepts segments only in sequence, ignores duplicates, acknowledges
-// a gap at once with the last good sequence number (the client resends from there, renumbered
-// from 1), re-acknowledges after `block_gap_ms` of silence inside a sub-block (a lost tail),
-// acknowledges a repeated last segment again (a lost final ack), checks the CRC-16/XMODEM over the
-// data bytes and the indicated size, and streams the data to ObjectValues as it arrives (so no
-// buffer of the whole object is needed). Any transfer idle for `timeout_ms` is aborted with
-// 0x05040000.
-//
-// Pacing (values whose data takes time to make durable, e.g. a table staged into flash): when
-// ObjectValues::DomainWriteWindow() is not 0, the server offers at most window / 7 segments per
-// sub-block (never more than `block_size`), and holds back each block acknowledgement until
-// DomainWriteFlush() reports the data so far durable, one flush step per Poll(). The client sends
-// nothing between the end of a sub-block and its acknowledgement (CiA 301 block download), so the
-// slow work happens while the bus is quiet and the receive path only copies segments. Segments
-// that arrive while an acknowledgement is held back are ignored (the acknowledgement tells the
-// client where to go on).
-//
-// An abort (sent or received) in the middle of a block download sub-block leaves segments of that
-// sub-block in flight (the client sends a whole sub-block before it reads an answer). They are
-// discarded silently: after the abort, frames that continue the sub-block exactly (the next
-// sequence number, then the one after, ...; the c bit set exactly on the transfer's last segment
-// when the size was indicated) are dropped without an answer, until the sub-block's last segment
-// (sequence number = block size, or the c bit), a frame that does not continue it (served as a new
-// request) or `block_gap_ms` of silence. A client's own abort is handled the same way (a client
-// that aborts from another thread than the one sending may have segments queued behind it). The
-// price: a new request sent within `block_gap_ms` whose first byte happens to equal the next
-// segment's is dropped too; the client's timeout and retry recover it.
+// CiA 301 SDO server for one node: expedited, segmented and block download and upload. Frames in:
+// OnFrame() (0x600 + node-ID; DLC other than 8 counted as malformed and ignored); frames out:
+// PopTx(); timeouts and paced flushes: Poll(). Failures are SDO aborts (sdo_abort.hpp) sent to the
+// client. Bounded memory (block data streamed to ObjectValues as it arrives). Single-threaded: the
+// main loop. Block transfer rules, pacing and abort handling: docs/canopen.md, "Node".
 #pragma once
 
 #include <cstdint>

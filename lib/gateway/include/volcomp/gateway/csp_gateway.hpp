@@ -1,47 +1,18 @@
-// CAN gateway for CiA 402 cyclic synchronous position (CSP): the board sits between the
-// controller's bus (CNC side) and the drives' bus and forwards every frame both ways, correcting
-// two process-data fields on the way:
-//
-//   controller -> drives  a PDO carrying target position 0x607A (the drive's RPDO): the axis's
-//                         correction is added to the INTEGER32 at the configured byte offset;
-//   drives -> controller  a PDO carrying position actual value 0x6064 (the drive's TPDO): the
-//                         correction that was in force for that sample is subtracted, so the
-//                         controller sees its own target back and no following error.
-//
-// Everything else (SYNC, NMT, SDO to and from the drives, EMCY, heartbeats, other PDO fields,
-// remote and extended frames) is forwarded bit for bit. Frames for the board's own SDO server
-// (0x600 + own node-ID) are not forwarded: the board's CANopen node answers them on the
-// controller side. Frames from the drive side that carry one of the board's own COB-IDs (SDO
-// response 0x580 + id, heartbeat 0x700 + id, EMCY 0x080 + id) are dropped and counted: they would
-// collide with the board's own frames on the controller bus (a node-ID conflict).
-//
-// Units: positions are drive increments (INTEGER32, wrapping); the board axis's units per step is
-// one drive increment, so the compensator's whole-step correction is added as is (negated for an
-// axis whose drive counts against the machine axis, `invert`).
-//
-// Which correction is removed from an actual position (FeedbackMode):
-//   kAtSync  the correction added to the last target forwarded before the latest SYNC: with
-//            synchronous PDOs the drive takes over at SYNC n the target received before it and
-//            samples its actual position at SYNC n, whichever order the controller sends SYNC and
-//            RPDOs in (CiA 301 synchronous PDO transfer). Default; needs SYNC on the CNC side.
-//   kLatest  the correction added to the last target forwarded (drives without SYNC).
-//
-// The correction itself comes from the control tick (SetCorrection: the compensator's output for
-// the commanded position that InputCounter() reports; csp_stages.hpp holds the tick's two ends).
-// Per frame: a scan of at most kMaxPdoMaps entries, no division, no allocation.
-//
-// Thread-safety: Configure, FromController and FromDrive from one context (the main loop, or the
-// CAN interrupt). The control tick's two calls, InputCounter() and SetCorrection(), may preempt
-// them (the tick ISR on an MCU): each axis's commanded counter and correction is one atomic word,
-// so the tick reads either the previous or the new commanded position of an axis, and a target
-// being forwarded gets either the previous or the new correction, never a mix.
+// CAN gateway for CiA 402 cyclic synchronous position (CSP) between the controller's bus and the
+// drives' bus: forwards every frame both ways bit for bit, except that the mapped target positions
+// (0x607A) get the axis's correction added and the mapped actual positions (0x6064) get the
+// correction in force for that sample subtracted (FeedbackMode); frames of the board's own node
+// are not forwarded. Units: drive increments = board steps, INTEGER32 wrapping. Per frame: at most
+// kMaxPdoMaps entries scanned, no division, no allocation. Threading: Configure/FromController/
+// FromDrive from one context; the tick's InputCounter()/SetCorrection() may preempt them (one
+// atomic word per axis). Rules: docs/linux-board.md, "How the gateway works".
 #pragma once
 
 #include <atomic>
 #include <cstdint>
 
-#include "volcomp/can/can_frame.hpp"
 #include "volcomp/base/status.hpp"
+#include "volcomp/can/can_frame.hpp"
 #include "volcomp/table/table_format.hpp"
 
 namespace volcomp::gateway {
@@ -55,6 +26,9 @@ enum class PdoField : uint8_t {
   kActualPosition = 1,  // 0x6064, in a frame from a drive (the drive's TPDO)
 };
 
+/// Which correction is removed from an actual position: the one added to the last target
+/// forwarded before the latest SYNC (the target the drive took over at that SYNC; needs SYNC), or
+/// the one added to the last target forwarded (drives without SYNC).
 enum class FeedbackMode : uint8_t { kAtSync = 0, kLatest = 1 };
 
 /// One mapped field: the INTEGER32 (little-endian) at data[offset .. offset + 3] of the PDO with

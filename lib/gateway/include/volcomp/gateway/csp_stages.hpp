@@ -1,23 +1,16 @@
-// The control tick's two ends in CAN gateway mode, peers of the step/dir ones (the hardware step
-// counters and StepOutput):
-//
-//   CspInput   input stage: each axis's commanded position, taken from the controller's CiA 402
-//              target PDOs by the gateway (CspGateway::InputCounter: drive increments in machine
-//              direction, a wrapping 32-bit counter), read as the tick's input counters.
-//   CspOutput  output stage: each axis's correction of this tick (ControlTick::corrections())
-//              goes into every target forwarded from now on (CspGateway::SetCorrection), so the
-//              drive receives the controller's target + correction: the tick's target.
-//
-// Units: one drive increment is one machine step (the gateway's contract, csp_gateway.hpp).
-// Both are called from the control tick (they may preempt the gateway's frame handling: see
-// CspGateway's thread-safety notes). O(axes), no division, no allocation.
+// The control tick's two ends in CAN gateway mode, peers of the step/dir ones: CspInput reads each
+// axis's commanded position from the controller's targets (CspGateway::InputCounter: drive
+// increments, a wrapping 32-bit counter) as the tick's input counters; CspOutput hands the tick's
+// corrections (ControlTick::corrections()) to every target forwarded from then on
+// (CspGateway::SetCorrection). Called from the control tick (may preempt the frame handling);
+// O(axes), no division, no allocation. docs/linux-board.md, "How the gateway works".
 #pragma once
 
 #include <cstdint>
 
+#include "volcomp/base/status.hpp"
 #include "volcomp/config/board_config.hpp"
 #include "volcomp/gateway/csp_gateway.hpp"
-#include "volcomp/base/status.hpp"
 #include "volcomp/table/table_format.hpp"
 
 namespace volcomp::gateway {

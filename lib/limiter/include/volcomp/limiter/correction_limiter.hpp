@@ -1,13 +1,8 @@
-// Moves the applied correction toward its target within a velocity and an acceleration limit.
-//
-// State: position p (Q32.32 steps, int64) and velocity v = k * a, where a is the acceleration per
-// tick squared (Q32) and k an integer in [-k_max, k_max]. Each tick k changes by at most one, so
-// |dv| <= a and |v| <= k_max * a always hold: the step rate the correction adds never exceeds the
-// configured rate, and its change never exceeds the configured acceleration. The largest k toward
-// the target is taken for which braking a*k*(k+1)/2 still stops at the target, so a fixed target
-// is reached without overshoot; a residue below one acceleration step is taken in one tick.
-// Integer only, no division per tick. LimiterStepReference() (tests/reference,
-// hot_path_reference.hpp) is the clear version; Step() decides identically.
+// Moves the applied correction (Q32.32 steps) toward its target within a velocity and an
+// acceleration limit, one Step() per limiter period: never faster than the rate, never a change of
+// velocity above the acceleration, no overshoot of a fixed target. Integer only, no division per
+// Step(); MakeParams() converts steps/s and steps/s^2 for the period (kConfigInvalid when they do
+// not fit). The method and its reference: docs/control-path.md, "Correction limiter".
 #pragma once
 
 #include <cstdint>
@@ -17,8 +12,8 @@
 namespace volcomp {
 
 struct LimiterParams {
-  uint32_t accel_q32 = 1;  // |dv| per tick, 2^-32 steps / tick^2, >= 1
-  uint32_t max_k = 1;      // velocity limit = max_k * accel_q32 per tick, 1..65535
+  uint32_t accel_q32 = 1;  // |dv| per step, 2^-32 steps / T^2 (T: the step period), >= 1
+  uint32_t max_k = 1;      // velocity limit = max_k * accel_q32 per step, 1..65535
 };
 
 class CorrectionLimiter {
@@ -42,8 +37,8 @@ class CorrectionLimiter {
     k_ = 0;
   }
 
-  /// One tick toward `target_q32`; returns the new position. Always inlined: the tick runs it
-  /// inside its walk over the axes, without a call.
+  /// One step period toward `target_q32`; returns the new position. Always inlined: the
+  /// compensation run runs it inside its walk over the axes, without a call.
   inline int64_t Step(int64_t target_q32);
 
   /// True while the velocity is at its limit (|k| = max_k): the rate limit is in force.

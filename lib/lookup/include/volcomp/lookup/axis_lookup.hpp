@@ -9,10 +9,10 @@
 #include <cstdint>
 #include <type_traits>
 
-#include "volcomp/lookup/cell_locator.hpp"
 #include "volcomp/base/interp_arith.hpp"
 #include "volcomp/base/invariant_divider.hpp"
 #include "volcomp/base/status.hpp"
+#include "volcomp/lookup/cell_locator.hpp"
 #include "volcomp/table/table_image.hpp"
 
 namespace volcomp {
@@ -44,7 +44,8 @@ class AxisLookup {
   uint8_t axis() const { return axis_; }
   bool wraps() const { return period_steps_ != 0; }
   uint32_t period_steps() const { return period_steps_; }
-  /// The period as a divisor without a divide instruction (WrapTracker::Init in the tick).
+  /// The period as a divisor without a divide instruction (WrapTracker::Init in a compensation
+  /// run).
   const InvariantDivider& period_divider() const { return period_divider_; }
   int32_t origin_steps() const { return origin_steps_; }
 
@@ -84,15 +85,15 @@ class AxisLookup {
   LatticeLocator loc_;               // the reference's locator (same constants as dim_)
 };
 
-/// Keeps a rotary position reduced modulo a period, updated by small deltas (no division per
-/// tick). Precondition: |delta| per Update() < period (validation bounds the period to the
+/// Keeps a rotary position reduced modulo a period, updated by small deltas (no division in
+/// Update()). Precondition: |delta| per Update() < period (validation bounds the period to the
 /// extent of a table, < 2^31 steps, so 32-bit arithmetic holds every intermediate).
 class WrapTracker {
  public:
   /// Sets the tracked position from an absolute one (divides; call at activation).
   void Init(int32_t pos_steps, int32_t origin_steps, uint32_t period_steps);
   /// Init() with the period as a prepared divisor (AxisLookup::period_divider()): no divide
-  /// instruction, so the tick may call it (referencing, table switch).
+  /// instruction, so a compensation run may call it (referencing, table switch).
   __attribute__((always_inline)) void Init(int32_t pos_steps,
                                            int32_t origin_steps,
                                            const InvariantDivider& period) {

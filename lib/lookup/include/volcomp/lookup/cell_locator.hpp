@@ -62,7 +62,7 @@ class LatticeLocator {
 /// The hot-path form of LatticeLocator::Locate(), for the Cortex-M4: the clamp is QSUB (pos - lo
 /// saturated: a true difference above INT32_MAX is above span too, because validation bounds the
 /// extent to 2^31 - 1), USAT (max with 0) and one compare (min with span); then
-/// UMULL + UMLAL. Bit-identical to Locate() (tests/lib/hot_path_reference_test.cpp).
+/// UMULL + UMLAL. Bit-identical to Locate() (tests/reference/hot_path_reference_test.cpp).
 inline LatticeCell LocateFast(int32_t pos_steps, const LatticeDim& d) {
   uint32_t u = SatUnsigned31(SubSat(pos_steps, d.lo));
   u = u > d.span ? d.span : u;

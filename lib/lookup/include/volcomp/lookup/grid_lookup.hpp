@@ -1,34 +1,17 @@
-// Trilinear interpolation of the GRID3 correction vector at a position (the per-tick hot path).
-//
-// GridLookup::Init() takes a validated Grid3View and precomputes the lattice locators and byte
-// strides (may divide; call at activation). A lookup clamps the position to the grid (values at the
-// boundary hold outside), finds the cell and its Q0.32 fractions (LatticeLocator), forms the 8
-// trilinear weights once (interp_arith.hpp) and sums the 8 corner values of each of the 3
-// components: no division, no data-dependent branch except the clamp, constant time. Output: the
-// 3 components in Q24.8 steps; component c corrects axis axis(c).
-//
-// Two implementations of the same arithmetic:
-//   Interpolate<Loader>()  the clear reference: one template for every element type, written as
-//                          the definition reads.
-//   the kernels            the hot path, written once over an element kernel (grid_lookup.cpp:
-//                          int16, int32, float32): corner rows loaded together and the components
-//                          accumulated in registers. The control tick runs them in three parts,
-//                          Begin() / AccumulateZ0() / FinishZ1(), one per tick; Lookup() runs the
-//                          same parts back to back (the PC tool's evaluation, the cycle bench).
-//                          Bit-identical to the reference: tests/target checks it on the host and
-//                          on the Cortex-M4 (QEMU).
-//
-// Accuracy (tests/lib/grid_lookup_test.cpp measures it): int16/int32 tables are within 1 LSB of
-// the Q8 output (2^-8 step) of the exact real-valued trilinear interpolation; float32 tables
-// within 1 LSB + 2^-20 relative (see docs/table-image-format.md and interp_arith.hpp).
+// Trilinear interpolation of the GRID3 correction vector at a position (steps) into 3 components
+// in Q24.8 steps (component c corrects axis axis(c)), clamped to the grid. Init() may divide (call
+// at activation); Lookup() and its three parts Begin()/AccumulateZ0()/FinishZ1() (what the
+// compensator spreads over its runs) do not: constant time, bit-identical to the clear reference
+// Interpolate<Loader>(). Arithmetic and accuracy: docs/table-image-format.md, "Interpolation and
+// accuracy"; the kernels: docs/mcu-target.md.
 #pragma once
 
 #include <cstdint>
 #include <type_traits>
 
-#include "volcomp/lookup/cell_locator.hpp"
 #include "volcomp/base/interp_arith.hpp"
 #include "volcomp/base/status.hpp"
+#include "volcomp/lookup/cell_locator.hpp"
 #include "volcomp/table/table_image.hpp"
 
 namespace volcomp {
@@ -52,8 +35,8 @@ class GridLookup {
   template <class Loader>
   void Interpolate(const int32_t* pos_steps, int32_t out_q8[3]) const;
 
-  /// The same lookup in three parts, for spreading it over control ticks (the compensator does
-  /// one part per tick): Begin() locates the cell and forms the y-level weights, AccumulateZ0()
+  /// The same lookup in three parts, for spreading it over compensation runs (the compensator does
+  /// one part per run): Begin() locates the cell and forms the y-level weights, AccumulateZ0()
   /// adds the four corners of the lower z level, FinishZ1() the upper four and writes the result.
   /// Lookup() is these three in sequence: the result is bit-identical.
   struct Partial {

@@ -1,32 +1,17 @@
-// Per-axis output step planning: turns "output position should be N" into the pulses of one tick,
-// honouring the drive's minimum pulse width, step space, direction setup and hold, and maximum
-// rate, across tick boundaries.
-//
-// Each tick Plan() returns a PulsePlan: `count` pulses in one direction, the first rising edge at
-// `first_rise` and then every `period` (times in pulse-clock units from the tick start), and, if
-// the direction changes, the moment of the direction edge. A timer with a repetition counter (or
-// DMA) executes it on the MCU; the mock HAL expands it into edges. The generator never plans a
-// pulse it cannot place legally this tick: the rest stays as backlog for the next tick, so the
-// output position converges to the target and never loses or invents a step.
-//
-// Timing rules enforced (all measured at the output pins, pulse = rising edge + width):
-//   rise-to-rise >= max(width + space, ceil(clock / max_rate)); a direction edge comes >= dir_hold
-//   after the last falling edge and >= dir_setup before the next rising edge. For quadrature
-//   output each step is one edge and `width` is unused; for CW/CCW the "direction" is which line
-//   pulses and the same setup/hold apply between lines.
-//
-// Hot path: no division (the reciprocals of the pulse counts are one constant table, generated at
-// compile time and shared by every axis's generator), O(1) per tick, int32 time arithmetic (times
-// relative to the tick start, floored at -2^30 by one SSAT; the clear int64 version is
-// StepGeneratorReference in tests/reference and plans bit-identically).
+// Per-axis output step planning: each tick, the pulses (a PulsePlan, times in pulse-clock units
+// from the tick start) that move the output toward its target under the drive's timing rules
+// (pulse width, step space, direction setup and hold, maximum rate), across tick boundaries; what
+// does not fit stays owed, so no step is lost or invented. PlanTick(): no division, O(1).
+// Configure(): control context between ticks; kConfigInvalid when the tick cannot carry one pulse
+// or a time is out of range. Rules and arithmetic: docs/control-path.md, "Step generator".
 #pragma once
 
 #include <cstdint>
 
-#include "volcomp/config/board_config.hpp"
 #include "volcomp/base/interp_arith.hpp"
 #include "volcomp/base/invariant_divider.hpp"
 #include "volcomp/base/status.hpp"
+#include "volcomp/config/board_config.hpp"
 
 namespace volcomp {
 

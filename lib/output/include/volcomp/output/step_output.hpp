@@ -1,21 +1,13 @@
-// The step/dir output stage: one StepGenerator per axis. Each tick it takes the control tick's
-// per-axis target positions (ControlTick::targets()) and plans the pulses that move every output
-// toward its target under the drive's timing rules; the plans go to the hardware
-// (hal StepIo::Apply).
-//
-// Output position = target exactly once the backlog is worked off: a generator never drops or
-// adds a step; whatever does not fit a tick's timing stays owed for the next. Latency: a target
-// planned in tick k starts in tick k (<= 2 ticks from input edge to output while the owed steps
-// stay within one tick's pulse capacity; max_backlog() and overruns() show whether they did).
-//
-// Plan() is the tick ISR's output step: no division, no allocation, O(axes). Configure() is for
-// the control context between ticks.
+// The step/dir output stage: one StepGenerator per axis, planning each tick the pulses that move
+// every output toward ControlTick::targets(); output = target exactly once the owed steps are
+// worked off. Plan()/PlanEach(): the tick's output step, no division, no allocation, O(axes);
+// Configure(): control context between ticks. Latency and backlog: docs/control-path.md.
 #pragma once
 
 #include <cstdint>
 
-#include "volcomp/config/board_config.hpp"
 #include "volcomp/base/status.hpp"
+#include "volcomp/config/board_config.hpp"
 #include "volcomp/output/step_generator.hpp"
 #include "volcomp/table/table_format.hpp"
 

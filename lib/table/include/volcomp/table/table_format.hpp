@@ -1,18 +1,8 @@
-// The table image format: the one definition shared by firmware, simulator, PC tool and docs.
-//
-// A table image is a little-endian byte string:
-//
-//   header (24 bytes) | section 1 | ... | section N | CRC-32 trailer (4 bytes)
-//
-// Every section is an 8-byte section header followed by a body whose length is a multiple of 4, so
-// every section (and every int32/float32 array in it) starts 4-byte aligned when the image does.
-// The CRC-32 (IEEE 802.3, reflected, init and final XOR 0xFFFFFFFF: the zlib crc32) covers every
-// byte before the trailer. The byte-level layout is documented in docs/table-image-format.md; the
-// offsets below are the single source of truth for it.
-//
-// Units. Every position is in input steps of its axis (the image is tied to the board's units per
-// step, recorded in the AXES section). Correction values are fixed point in steps: an element v
-// with `frac_bits` f means v * 2^-f steps; float32 elements are steps directly (f must be 0).
+// The table image format: the one definition of its offsets, types and limits, shared by firmware,
+// simulator, PC tool and docs/table-image-format.md (the byte-level description: where the two
+// disagree, this header is right). A little-endian image: header | sections | CRC-32 trailer.
+// Units: positions in input steps of their axis; an element v with `frac_bits` f is v * 2^-f steps
+// (float32 elements are steps, f = 0).
 #pragma once
 
 #include <cstddef>

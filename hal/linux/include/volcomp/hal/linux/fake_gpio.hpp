@@ -1,16 +1,7 @@
-// A fake GPIO backend: the slow lines without any GPIO hardware (tests, development machines,
-// user-mode-linux, whose kernel has no GPIOLIB). Always built.
-//
-// In memory: SetInput() sets an input's logical level, output() reads what the firmware drove.
-// With a state file (the `gpio = fake:PATH` configuration): inputs also come from PATH, a text
-// file of "name=0|1" lines ('#' starts a comment; the names of gpio_lines.hpp; missing file or
-// missing names mean inactive), re-read whenever its modification time or size changes (one
-// stat() per ReadInputs()). Outputs are written to PATH.out as "name=0|1" lines, replaced
-// atomically (temporary file + rename) when an output changes. So a shell can drive the inputs:
-//   echo "estop=1" > /tmp/board.gpio
-// The line specs of the configuration are ignored: every line exists.
-//
-// Thread-safety: one thread.
+// A fake GPIO backend: the slow lines without GPIO hardware (tests, development machines,
+// user-mode-linux). In memory (SetInput(), output()), or with a state file PATH of "name=0|1"
+// lines (inputs re-read when it changes; outputs written atomically to PATH.out). Every line
+// exists; line specs are ignored. Threading: one thread. docs/linux-board.md, "GPIO wiring".
 #pragma once
 
 #include <cstdint>

@@ -1,32 +1,9 @@
-// hal::Flash backed by a file (Linux board): the table banks and the stored settings persist in
-// ordinary files with the same NOR semantics as the MCU flash and MockFlash, so the firmware's
-// power-loss-safe stores (DualBankStore) work unchanged:
-//
-//   Erase(offset)     the sector becomes 0xFF;
-//   Program(...)      may only clear bits (a 0 -> 1 change is refused with kIoError and nothing
-//                     is written); offsets and sizes in program units;
-//   Map(offset)       a pointer into an in-memory copy (8-byte aligned), valid until the next
-//                     Erase/Program of that range.
-//
-// Durability: every Erase/Program is written with pwrite() at its offset and, with `sync` on (the
-// default), fdatasync()ed before the next one is written. Operations therefore reach the disk in
-// program order, which is what the dual-bank store relies on (data before commit record); a power
-// loss during one operation tears at most that operation, and a power loss with operations still
-// queued loses them from the tail, which the store treats like power lost before them (the old
-// table stays). A new file is created at the full size filled with 0xFF (temporary file, fsync,
-// rename, fsync of the directory), so a crash while creating never leaves a short file. A file of
-// another size is refused (the layout would not match). The file is locked (flock, exclusive)
-// while open, so two processes cannot share one flash.
-//
-// Write-behind (`background`, the default): the in-memory copy changes at once and the file writes
-// run in order on a writer thread, so the caller (the gateway's event loop, which must keep
-// forwarding frames during a table upload) never waits for the disk; fdatasync on an SD card can
-// take tens of milliseconds. Flush() and Close() wait until everything queued is on disk. A write
-// error is sticky: every later Erase/Program fails with kIoError (write_error() says why). Without
-// `background` each operation is written (and synced) before it returns.
-//
-// Thread-safety: the hal::Flash interface from one thread (the firmware's main loop); the writer
-// thread is internal.
+// hal::Flash backed by a file (Linux board), with the NOR semantics of the MCU flash and MockFlash
+// so DualBankStore works unchanged: Erase() sets a sector to 0xFF, Program() may only clear bits
+// (else kIoError, nothing written), Map() points into an in-memory copy valid until the next
+// Erase/Program of that range. Operations reach the disk in program order (fdatasync with `sync`),
+// optionally written behind on an internal thread; a write error is sticky (kIoError). Threading:
+// the hal::Flash interface from one thread. Durability rules: docs/linux-board.md, "Flash files".
 #pragma once
 
 #include <condition_variable>

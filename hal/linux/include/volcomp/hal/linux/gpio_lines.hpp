@@ -1,23 +1,15 @@
-// The board's slow lines on Linux GPIO: which chip line each hal::SlowIo line is wired to, and the
-// backend interface that reads and drives them (libgpiod on a real board, a fake for tests and
-// development machines without GPIO).
-//
-// Line names (configuration file keys, fake-GPIO state file keys):
-//   inputs   home0 .. home5 (home switch of axis 0..5), enable, estop, drive_alarm, write_enable
-//   outputs  ready, compensating, fault
-// A line spec is "CHIP:OFFSET [flags]" (CHIP: anything gpiod_chip_open_lookup() accepts:
-// gpiochip0, /dev/gpiochip0, 0, or a chip label) or "NAME [flags]" (a line name from the device
-// tree, found with gpiod_line_find()). Flags: active-low, pull-up, pull-down, bias-disable.
-// Levels are logical everywhere: true = active (after active-low inversion).
-//
-// Thread-safety: backends are used from one thread (the main loop).
+// The board's slow lines on Linux GPIO: the line names (home0..home5, enable, estop, drive_alarm,
+// write_enable in; ready, compensating, fault out), a line spec "CHIP:OFFSET [flags]" or
+// "NAME [flags]" per line, and the backend interface that reads and drives them (libgpiod, or a
+// fake). Levels are logical (true = active, after active-low). Threading: one thread (the main
+// loop). Spec syntax and wiring: docs/linux-board.md, "GPIO wiring".
 #pragma once
 
 #include <cstdint>
 #include <string>
 
-#include "volcomp/hosted/expected.hpp"
 #include "volcomp/hal/slow_io.hpp"
+#include "volcomp/hosted/expected.hpp"
 
 namespace volcomp::hal::linux_board {
 

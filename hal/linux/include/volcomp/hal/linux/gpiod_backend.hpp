@@ -1,12 +1,8 @@
-// The libgpiod backend of the slow lines (Debian bookworm: libgpiod 1.6.3, v1 API, kernel GPIO
-// character device uAPI v1). Each configured line is requested once at Open(): inputs with their
-// bias flag, outputs driven inactive; active-low is applied by the kernel, so levels are logical.
-// libgpiod 1.6 has no debounce: LinuxSlowIo debounces in software.
-//
-// Built only when libgpiod-dev is found (VOLCOMP_HAVE_LIBGPIOD); MakeGpiodBackend() returns null
-// otherwise, and the firmware then accepts only the fake backend.
-//
-// Thread-safety: one thread.
+// The libgpiod backend of the slow lines (libgpiod v1 API). Each configured line is requested once
+// at Open(): inputs with their bias flag, outputs driven inactive; active-low is applied by the
+// kernel, so levels are logical (no kernel debounce: LinuxSlowIo debounces). Built only with
+// libgpiod-dev (VOLCOMP_HAVE_LIBGPIOD); otherwise MakeGpiodBackend() returns null and only the fake
+// backend is accepted. Threading: one thread.
 #pragma once
 
 #include <memory>

@@ -1,17 +1,8 @@
-// hal::SlowIo over a GpioBackend (libgpiod or fake) for the Linux board.
-//
-// Refresh(now) reads all inputs once (the first call takes the levels as they are) (call it from
-// the main loop, e.g. every 1-2 ms) and updates software-debounced levels: a level change is
-// reported after it has been stable for `debounce_ms` (libgpiod 1.6 has no kernel debounce).
-// Fail-safe lines are not delayed in their active direction: e-stop and drive alarm become active
-// at the first Refresh() that sees them active and return to inactive only after the debounce time.
-// Read() returns the debounced level (no system call); Write() drives the output when its level
-// changes.
-//
-// Backend failures are counted and the last one kept (last_failure()); a line that cannot be read
-// keeps its level.
-//
-// Thread-safety: one thread (the main loop), like every hal::SlowIo.
+// hal::SlowIo over a GpioBackend (libgpiod or fake) for the Linux board. Refresh(now) reads every
+// input once and debounces in software (`debounce_ms`; e-stop and drive alarm go active at once,
+// inactive only after the debounce time); Read() returns the debounced level, Write() drives an
+// output when its level changes. Backend failures are counted (last_failure()); an unreadable
+// line keeps its level. Threading: one thread (the main loop). docs/linux-board.md, "GPIO wiring".
 #pragma once
 
 #include <cstdint>

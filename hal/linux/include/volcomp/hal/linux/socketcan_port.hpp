@@ -1,22 +1,9 @@
-// volcomp::hal::CanPort on a Linux SocketCAN interface (the firmware's CAN port when the board
-// application runs on a Linux board or inside user-mode-linux on vcan0).
-//
-// Send() never blocks: frames go to a bounded software queue that is flushed to the socket on
-// every Send()/Receive()/Service() call. When the interface queue is full (ENOBUFS, CAN netdevs
-// default to txqueuelen 10) the port stops writing for `enobufs_backoff` and retries, so a burst
-// is paced instead of lost. Error frames are counted and tracked into bus_state(); on bus-off the
-// port asks the kernel to restart the controller (rtnetlink; needs CAP_NET_ADMIN, at most once per
-// `restart_interval`). While bus-off, Send() keeps queueing (kFull once the queue is full), so the
-// traffic resumes after a restart.
-//
-// Bit rate: it belongs to the network interface (`ip link set IFACE type can bitrate N`, which
-// needs CAP_NET_ADMIN), so SetBitrate() cannot set it: it reads the interface's rate from the
-// kernel (ReadCanBitrate) and compares. Same rate: Ok. Another rate: kCanBitrateMismatch, and
-// last_failure() names both; the port keeps working at the interface's rate. No rate to compare
-// (virtual interfaces such as vcan have none, or the query failed): Ok, and bitrate_check() says
-// why nothing was compared.
-//
-// Thread-safety: main-loop use from one thread, like every CanPort.
+// hal::CanPort on a Linux SocketCAN interface (the Linux board, or user-mode-linux on vcan0).
+// Send() never blocks: a bounded software queue (kFull when full) flushed on every Send()/
+// Receive()/Service(), paced on ENOBUFS; bus-off restarts requested over rtnetlink. SetBitrate()
+// cannot set the interface's rate: it compares (kCanBitrateMismatch; Ok when there is nothing to
+// compare, bitrate_check() says why). Threading: one thread (the main loop), like every CanPort.
+// Pacing, error frames and bus-off: docs/can-transports.md, "SocketCAN".
 #pragma once
 
 #include <chrono>

@@ -1,14 +1,7 @@
-// A Linux SocketCAN raw socket (CAN_RAW, classic frames): the one SocketCAN implementation that
-// both the firmware's Linux backend (SocketCanPort) and the PC tool's transport (tools/can_io)
-// use. Hosted C++17, Linux only. Never throws: failures come back as Expected (an error code and
-// a readable message) or as IoResult + errno, so each caller maps them to its own error style
-// (Status or, at a command line, exceptions).
-//
-// The socket is non-blocking; callers wait with poll() on fd() (or WaitReadable/WaitWritable).
-// Error frames (CAN_ERR_FLAG) are enabled by default and decoded into CanErrorInfo.
-//
-// Thread-safety: one thread per object (the kernel socket itself is thread-safe, this wrapper's
-// state is not).
+// A Linux SocketCAN raw socket (CAN_RAW, classic frames), the one SocketCAN implementation of the
+// firmware's port (SocketCanPort) and the PC tool's transport. Never throws: failures are Expected
+// (code and message) or IoResult + errno. Non-blocking (wait with poll() on fd()); error frames on
+// by default, decoded into CanErrorInfo. Threading: one thread per object.
 #pragma once
 
 #include <chrono>

@@ -1,21 +1,14 @@
-// The control tick of the board application when it runs as a Linux process: a hal::TickTimer on
-// a timerfd (CLOCK_MONOTONIC, periodic, absolute period: no drift). The board application sets
-// its rate and starts and stops it (at start and at every node reset); the event loop polls fd(),
-// which becomes readable at each expiry, and Take() reads how many periods elapsed since the
-// last Take() (more than one means the process was late: the caller runs the missed ticks or
-// counts them). fd() stays the same from Open() to Close(), across rate changes.
-//
-// The period is 1e9 / tick_hz ns, truncated: exact for rates that divide 1e9 (1000, 2000, 4000,
-// 5000, 8000, 10000, ..., 50000, 200000 Hz), otherwise less than 1 ns short per period.
-// Stop() disarms the timer and discards expirations not yet taken.
-//
-// Thread-safety: one thread per object.
+// hal::TickTimer on a timerfd (CLOCK_MONOTONIC, periodic, absolute: no drift) for the board
+// application as a Linux process. The event loop polls fd() (the same from Open() to Close()) and
+// Take() returns the periods elapsed since the last Take() (more than one: the process was late).
+// Period 1e9 / tick_hz ns, truncated. Stop() discards expirations not yet taken. Threading: one
+// thread per object. docs/linux-board.md, "Configuration in force".
 #pragma once
 
 #include <cstdint>
 
-#include "volcomp/hosted/expected.hpp"
 #include "volcomp/hal/tick_timer.hpp"
+#include "volcomp/hosted/expected.hpp"
 
 namespace volcomp::hal::linux_board {
 

@@ -1,16 +1,7 @@
 // A stepper/servo drive's pulse input, as a checker: counts the steps it receives and flags every
-// edge that breaks its timing requirements. Written from the drive's point of view (datasheet
-// rules on line levels), independently of the firmware's step generator it checks.
-//
-// Rules (times in ns, from DriveTiming):
-//   step/dir:   STEP high >= pulse_width; STEP low >= step_space; rising-to-rising >= 1/max_rate;
-//               DIR stable >= dir_setup before a STEP rising edge; DIR changes >= dir_hold after
-//               the last STEP falling edge and never while STEP is high.
-//   CW/CCW:     the same per line, with "DIR" meaning which line pulses: a pulse on the other
-//               line may rise only >= dir_hold + dir_setup after this line's last falling edge;
-//               both lines high together is a violation.
-//   quadrature: every edge is a step; edges >= 1/max_rate apart; both lines changing at the same
-//               instant is a violation.
+// edge that breaks its timing requirements (times in ns, from DriveTiming). Written from the
+// drive's side (datasheet rules on line levels), independently of the step generator it checks;
+// the rules per output format: docs/control-path.md, "Step generator".
 #pragma once
 
 #include <cstdint>

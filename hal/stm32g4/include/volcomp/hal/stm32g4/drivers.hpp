@@ -1,19 +1,9 @@
-// STM32G474 backends of the volcomp HAL, register level (registers.hpp, RM0440):
-//   StepIo       input counters in timer encoder / clock+direction modes, pulse outputs from
-//                timers in PWM mode 2 + one-pulse mode + repetition counter, started by the tick
-//                timer's trigger output (Configure / ReadCounters / Apply: the static StepIo
-//                interface).
-//   StmTickTimer TIM6, the control tick (hal::TickTimer): update interrupt and TRGO.
-//   StmSlowIo    GPIO lines (hal::SlowIo).
-//   StmFlash     a region of main flash (hal::Flash): 2 KB page erase, double-word programming.
-//   StmFdcan     an FDCAN instance (FDCAN1 or FDCAN2) in classic CAN mode (hal::CanPort), Rx FIFO
-//                0, Tx FIFO queue.
-//   CycleClock   monotonic time from the DWT cycle counter (hal::Clock).
-//   Iwdg         the independent watchdog.
-// The board application configures StepIo, StmTickTimer and StmFdcan from the settings in force
-// (BoardApp::Start); each programs what config_math computes for them. The clock tree setup is a
-// free function. Everything here is for the main loop except StepIo::ReadCounters/Apply and
-// TickTimerAcknowledge and PendCompensation, which the tick ISR calls (and which live in CCM SRAM).
+// STM32G474 backends of the volcomp HAL, register level (registers.hpp, RM0440): StepIo (the
+// static step I/O: timer input counters, one-pulse timer outputs started by the tick's TRGO),
+// StmTickTimer (TIM6), StmSlowIo (GPIO), StmFlash (main flash region), StmFdcan (FDCAN1/2, classic
+// CAN), CycleClock (DWT), Iwdg. Main loop only, except StepIo::ReadCounters/Apply/ApplyAxis,
+// TickTimerAcknowledge and PendCompensation (the tick ISR; in CCM SRAM). What each programs:
+// docs/mcu-target.md, "Drivers".
 #pragma once
 
 #include <cstdint>
