@@ -389,36 +389,5 @@ TEST(StepEngineMixed, SixteenBitCountersAndFormatConversion) {
   EXPECT_GE(r.input_steps, 300000u);
 }
 
-TEST(StepGenerator, RespectsSlowDriveTimingAcrossDirectionChanges) {
-  // A slow drive (Leadshine-like: 2.5 us width/space, 5 us setup, 10 us hold, 200 kHz): the
-  // direction change does not fit one 20 us tick with pulses, so it waits.
-  AxisConfig ax;
-  ax.drive = {2500, 2500, 5000, 10000, 200000};
-  StepGenerator gen;
-  ASSERT_TRUE(gen.Configure(ax, 50000, 1000000000).ok());
-  DriveTiming timing = ax.drive;
-  hal::mock::DriveModel drive(PulseFormat::kStepDir, timing);
-  bool dir_level = true;
-  uint64_t t0 = 0;
-  std::mt19937_64 rng(8);
-  int32_t target = 0;
-  for (int tick = 0; tick < 200000; ++tick, t0 += 20000) {
-    if (tick % 7 == 0) target += static_cast<int32_t>(rng() % 9) - 4;
-    const PulsePlan p = gen.Plan(target);
-    if (p.dir_change) {
-      dir_level = !p.negative;
-      drive.OnEdge(t0 + p.dir_edge, true, dir_level);
-    }
-    for (uint32_t j = 0; j < p.count; ++j) {
-      drive.OnEdge(t0 + p.first_rise + uint64_t{j} * p.period, false, true);
-      drive.OnEdge(t0 + p.first_rise + uint64_t{j} * p.period + p.width, false, false);
-    }
-  }
-  for (const auto& v : drive.violation_log()) ADD_FAILURE() << v;
-  EXPECT_EQ(drive.violations(), 0u);
-  EXPECT_EQ(drive.position() + gen.backlog(target), target);
-  EXPECT_LE(std::abs(gen.backlog(target)), 8);
-}
-
 }  // namespace
 }  // namespace volcomp

@@ -1,45 +1,12 @@
-// Division-free quotients and lattice locations against exact integer arithmetic.
+// Division-free lattice locations against exact integer arithmetic.
 #include "volcomp/lookup/cell_locator.hpp"
 
 #include <gtest/gtest.h>
 
 #include <random>
 
-#include "volcomp/base/invariant_divider.hpp"
-
 namespace volcomp {
 namespace {
-
-TEST(InvariantDivider, ExactForRandomAndEdgeOperands) {
-  std::mt19937_64 rng(1);
-  const uint32_t divisors[] = {
-      1, 2, 3, 7, 10, 1000, 65535, 65536, 99991, 0x7FFFFFFF, 0x80000000u, 0xFFFFFFFEu, 0xFFFFFFFFu};
-  const uint32_t edges[] = {0, 1, 2, 0x7FFFFFFF, 0x80000000u, 0xFFFFFFFEu, 0xFFFFFFFFu};
-  for (uint32_t d : divisors) {
-    InvariantDivider div;
-    div.Init(d);
-    for (uint32_t n : edges) {
-      const auto qr = div.Divide(n);
-      ASSERT_EQ(qr.quotient, n / d) << n << "/" << d;
-      ASSERT_EQ(qr.remainder, n % d) << n << "/" << d;
-    }
-  }
-  for (int i = 0; i < 200000; ++i) {
-    const uint32_t d = static_cast<uint32_t>(rng() >> (32 + rng() % 32)) | 1u;
-    const uint32_t n = static_cast<uint32_t>(rng());
-    InvariantDivider div;
-    div.Init(d);
-    const auto qr = div.Divide(n);
-    ASSERT_EQ(qr.quotient, n / d) << n << "/" << d;
-    ASSERT_EQ(qr.remainder, n % d);
-    // Multiples and their neighbours, where an estimate one low would show.
-    const uint32_t m = (n / d) * d;
-    ASSERT_EQ(div.Divide(m).quotient, m / d);
-    if (m != 0) {
-      ASSERT_EQ(div.Divide(m - 1).quotient, (m - 1) / d);
-    }
-  }
-}
 
 // LatticeLocator against exact integer arithmetic: with u = clamp(pos) - origin and the exact cell
 // coordinate E = u * 2^32 / spacing, the result X = cell * 2^32 + frac is E for u = 0 and otherwise

@@ -1,5 +1,5 @@
 // Pure computations behind the STM32G474 drivers (no register access, host-tested in
-// tests/hal/): PLL and flash wait states, FDCAN bit timing and instances, the tick timer's
+// tests/hal/stm32g4/): PLL and flash wait states, FDCAN bit timing and instances, the tick timer's
 // period, the step I/O timer setup for a board configuration, the flash layout, and the timer
 // settings that execute one PulsePlan. The drivers program exactly what these return, so the
 // configuration path (settings in force -> register values) is checked on the host.
@@ -191,7 +191,7 @@ Result<PulseTimerSettings> PlanToTimer(const PulsePlan& plan, uint32_t tick, uin
 /// generator whose drive timing PlanStepIo() accepted always fits (a pulse width of at least one
 /// clock, a low time of at least one clock, at most StepGenerator::kMaxPulsesPerTick pulses, tick +
 /// width within the counter), so the tick spends no branch on a case that cannot occur
-/// (tests/hal/stm32g4_config_math_test.cpp checks it against PlanToTimer() over generated plans).
+/// (tests/hal/stm32g4/config_math_test.cpp checks it against PlanToTimer() over generated plans).
 /// Fields other than `run` are meaningful only when `run` is set. Always inlined: the settings
 /// stay in registers.
 __attribute__((always_inline)) inline void PlanToTimerFitted(const PulsePlan& plan,
