@@ -1,7 +1,8 @@
 // The four memory primitives a freestanding compiler may call even without a C library (struct
 // copies, zeroing): linked into the Cortex-M4F images (volcomp_cm4_runtime) and into the host's
 // no-runtime link check (firmware/freestanding_check). Build with
-// -fno-tree-loop-distribute-patterns, or the compiler turns these loops into calls to themselves.
+// -fno-tree-loop-distribute-patterns (GCC; clang with -ffreestanding needs nothing), or the
+// compiler turns these loops into calls to themselves.
 #include <cstddef>
 #include <cstdint>
 

@@ -102,11 +102,18 @@ const rtattr* FindAttribute(const void* data, int len, uint16_t type) {
   return nullptr;
 }
 
+// NLMSG_OK with the remaining length kept signed (NLMSG_NEXT may take it below zero) and compared
+// without the macro's signed/unsigned mix.
+bool MessageFits(const nlmsghdr* h, int len) {
+  return len >= static_cast<int>(sizeof(nlmsghdr)) && h->nlmsg_len >= sizeof(nlmsghdr) &&
+         static_cast<int64_t>(h->nlmsg_len) <= len;
+}
+
 }  // namespace
 
 Expected<uint32_t> ParseLinkBitrate(const uint8_t* message, size_t size) {
   int len = static_cast<int>(size);
-  for (auto* h = reinterpret_cast<const nlmsghdr*>(message); NLMSG_OK(h, len);
+  for (auto* h = reinterpret_cast<const nlmsghdr*>(message); MessageFits(h, len);
        h = NLMSG_NEXT(h, len)) {
     if (h->nlmsg_type == NLMSG_ERROR) {
       const auto* e = static_cast<const nlmsgerr*>(NLMSG_DATA(h));
@@ -174,7 +181,7 @@ Expected<void> RequestCanRestart(const std::string& iface) {
   const Expected<size_t> n = Exchange(m.Finish(), reply, sizeof reply, "restart");
   if (!n.ok()) return Fail(n.error());
   int len = static_cast<int>(*n);
-  for (auto* h = reinterpret_cast<nlmsghdr*>(reply); NLMSG_OK(h, len); h = NLMSG_NEXT(h, len)) {
+  for (auto* h = reinterpret_cast<nlmsghdr*>(reply); MessageFits(h, len); h = NLMSG_NEXT(h, len)) {
     if (h->nlmsg_type == NLMSG_ERROR) {
       const auto* e = static_cast<const nlmsgerr*>(NLMSG_DATA(h));
       if (e->error == 0) return Expected<void>::Ok();
