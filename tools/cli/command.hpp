@@ -21,6 +21,7 @@
 
 #include <iosfwd>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "volcomp/hosted/expected.hpp"
@@ -47,6 +48,9 @@ using TextLayout = void (*)(const JsonValue& data, std::ostream& out);
 
 /// What a command reports.
 struct Output {
+  Output() = default;
+  Output(JsonValue d, TextLayout layout = nullptr) : data(std::move(d)), text(layout) {}  // NOLINT
+
   JsonValue data;                     // every figure the command reports (null: nothing)
   TextLayout text = nullptr;          // its text view (nullptr: nothing on stdout in text mode)
   std::vector<std::string> warnings;  // printed on stderr as "warning: ..." in both modes
