@@ -21,10 +21,11 @@
 #include "volcomp/firmware/step_dir_io.hpp"
 #include "volcomp/hal/mock/mock_devices.hpp"
 #include "volcomp/hal/mock/mock_step_io.hpp"
+#include "volcomp/hosted/expected.hpp"
+#include "volcomp/output/step_output.hpp"
 #include "volcomp/sim/sim_bus.hpp"
 #include "volcomp/sim/sim_bus_can_port.hpp"
 #include "volcomp/sim/write_through_flash.hpp"
-#include "volcomp/output/step_output.hpp"
 
 namespace volcomp::sim {
 
@@ -48,8 +49,10 @@ class SimulatedBoard {
   SimulatedBoard(SimBus& bus, const SimulatedBoardOptions& options);
   ~SimulatedBoard();
 
-  /// Starts the firmware (loads flash files first when configured).
-  Status Start();
+  /// Starts the firmware (opens and loads the flash files first when configured). Fails with
+  /// kIoError naming a flash file that cannot be opened or written, or with the firmware's error
+  /// ("the firmware did not start: ...").
+  Outcome Start();
   /// Runs ticks and main-loop passes up to virtual time `t_ns` (the bus must be advanced in step:
   /// see StepTo() and AdvanceInEventOrder() below).
   void AdvanceTo(uint64_t t_ns);
@@ -73,6 +76,7 @@ class SimulatedBoard {
   uint64_t now_ns() const { return now_ns_; }
 
  private:
+  Outcome OpenFlashFiles();
   void LoadFlash();
   // Follows the tick timer after the firmware ran: a (re)start schedules the next tick.
   void FollowTickTimer();

@@ -136,7 +136,7 @@ class SimBus {
   using FaultHook = std::function<FaultDecision(const CanFrame& frame, const Endpoint& sender)>;
   using Monitor = std::function<void(const FrameRecord& record)>;
 
-  /// `bitrate` in bit/s (> 0).
+  /// `bitrate` in bit/s. Precondition: bitrate > 0.
   explicit SimBus(uint32_t bitrate);
   SimBus(const SimBus&) = delete;
   SimBus& operator=(const SimBus&) = delete;

@@ -58,14 +58,19 @@ class Cnc {
   using SwitchReader = std::function<bool(int axis)>;
   using DwellHandler = std::function<void(uint64_t end_ns)>;
 
+  /// Preconditions: every step length, the step rate and the acceleration > 0.
   Cnc(const CncConfig& config, StepSink* sink, SwitchReader home_switch);
   ~Cnc();
 
-  /// Queue a rapid (G0) or feed (G1, `feed_mm_s`) move to a position in machine steps.
+  /// Queue a rapid (G0) or feed (G1, `feed_mm_s` > 0) move to a position in machine steps.
   void QueueRapid(const std::array<int64_t, 3>& target_steps);
   void QueueLinear(const std::array<int64_t, 3>& target_steps, double feed_mm_s);
+  /// Precondition: seconds >= 0.
   void QueueDwell(double seconds);
-  /// Homes the axes in `mask` (bit a = axis a) together.
+  /// Homes the axes in `mask` (bit a = axis a) together: jog toward the switch at
+  /// home_fast_mm_s until it closes, pause, back off until it opens plus home_backoff_mm,
+  /// approach at home_slow_mm_s and stop on the step that closes it, which becomes
+  /// home_position_steps. The switch is read at every AdvanceTo(); jogs have no ramps.
   void QueueHome(uint8_t mask);
   /// Queues a parsed G-code program (coordinates in mm of the machine frame).
   void QueueProgram(const Program& program);
@@ -76,7 +81,9 @@ class Cnc {
   void AdvanceTo(uint64_t t_ns);
   bool idle() const { return !active_ && queue_.empty(); }
 
+  /// Net steps emitted on `axis` since power-up.
   int64_t count(int axis) const { return count_[static_cast<size_t>(axis)]; }
+  /// The CNC's machine coordinate (steps): count + the offset homing set (the count before).
   int64_t position(int axis) const {
     return count_[static_cast<size_t>(axis)] + offset_[static_cast<size_t>(axis)];
   }

@@ -26,12 +26,12 @@
 #include <string>
 #include <vector>
 
+#include "volcomp/hosted/expected.hpp"
 #include "volcomp/model/tracker_lattice.hpp"
 #include "volcomp/sim/board_session.hpp"
 #include "volcomp/sim/instruments.hpp"
 #include "volcomp/sim/latency_meter.hpp"
 #include "volcomp/sim/measurements.hpp"
-#include "volcomp/sim/sim_status.hpp"
 #include "volcomp/sim/table_from_measurements.hpp"
 #include "volcomp/sim/world.hpp"
 #include "volcomp/sim/worn_profile.hpp"
@@ -170,16 +170,17 @@ struct DemoResult {
   std::vector<std::string> failures;  // "must show" checks that failed (empty: all passed)
 };
 
-/// Runs the demo; progress goes to `log`. Fails when a step cannot go on (the board refused a
-/// table, a program did not finish, the model's tables miss the reference point); a model file
-/// that cannot be read throws tools::InputError (the builders' error, printed by the command).
-SimResult<DemoResult> RunDemo(const DemoOptions& options, std::ostream& log);
+/// Runs the demo; progress goes to `log`. Fails when a step cannot go on (a model file that cannot
+/// be read, the board refused a table, a program did not finish, the model's tables miss the
+/// reference point, a builder refused the measurements). A run that completes is a value even
+/// when checks failed (DemoResult::failures).
+Expected<DemoResult> RunDemo(const DemoOptions& options, std::ostream& log);
 
 /// Prints the before/after summary and the checks (worn: the goals and the error budget).
 void PrintSummary(const DemoResult& result, std::ostream& out);
 
 /// Writes DIR/index.html and the data files (CSV, G-code, model, image) of a demo run; kIoError
-/// names a file that cannot be written.
-SimStatus WriteDemoReport(const DemoResult& result, const std::string& dir);
+/// names a file or directory that cannot be written.
+Outcome WriteDemoReport(const DemoResult& result, const std::string& dir);
 
 }  // namespace volcomp::sim

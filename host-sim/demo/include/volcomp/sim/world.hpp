@@ -27,6 +27,7 @@
 
 #include "volcomp/canopen_client/sdo_runner.hpp"
 #include "volcomp/firmware/settings.hpp"
+#include "volcomp/hosted/expected.hpp"
 #include "volcomp/model/vec3.hpp"
 #include "volcomp/sim/cnc.hpp"
 #include "volcomp/sim/latency_meter.hpp"
@@ -57,13 +58,16 @@ struct StepAudit {
   uint64_t ticks = 0;
 };
 
-class World : private StepSink {
+class World final : private StepSink {
  public:
-  explicit World(const WorldOptions& options);
+  /// The installation; fails when the machine refuses its options (Machine::Create).
+  static Expected<std::unique_ptr<World>> Create(const WorldOptions& options);
   ~World();
+  World(const World&) = delete;
+  World& operator=(const World&) = delete;
 
   /// Starts the firmware. Fails if the board rejects its configuration.
-  Status Start();
+  Outcome Start();
 
   uint64_t now_ns() const { return now_ns_; }
   uint64_t tick_ns() const { return tick_ns_; }
@@ -95,6 +99,7 @@ class World : private StepSink {
   StepAudit Audit() const;
 
  private:
+  World(const WorldOptions& options, Machine machine);
   void OnStep(int axis, uint64_t t_ns, int dir) override;
   void StepOnce(uint64_t limit_ns);
   void AfterTick(uint64_t t_ns);

@@ -42,8 +42,8 @@ double ApplyChannelErrors(const ChannelErrors& e, double true_value, Random& rng
 struct InterferometerOptions {
   ChannelErrors linear_um = {0.05, 16, 0.02, 0.001};   // XL-80: 1 nm resolution
   ChannelErrors angular_urad = {0.2, 16, 0.05, 0.01};  // angular optics / level
-  double angular_baseline_mm = 100;
-  double misalignment_mrad = 0;  // angle θ between the linear beam and the line of motion
+  double angular_baseline_mm = 100;  // to the second point of the tool side angular optics read
+  double misalignment_mrad = 0;      // angle θ between the linear beam and the line of motion
 };
 
 struct TrackerOptions {
@@ -66,7 +66,9 @@ class LaserInterferometer {
   /// along it: the positioning deviation of this approach (µm).
   double Deviation_um(const model::Vec3& q_mm, const model::Vec3& cmd_mm, const model::Vec3& beam);
   /// All six error motions since the datum (linear: deviation of each component, µm) of a run
-  /// along `moving_axis`, whose component the linear beam measures (with its cosine error).
+  /// along `moving_axis`, whose component the linear beam measures (with its cosine error). The
+  /// straightness and angular optics are aligned with the machine's nominal axes: no slope is
+  /// removed (the straightness keeps the squareness).
   SixDofReading SixDof(const model::Vec3& q_mm, const model::Vec3& cmd_mm, int moving_axis);
   /// The same without instrument errors (for comparisons in reports and tests).
   SixDofReading SixDofTrue(const model::Vec3& q_mm, const model::Vec3& cmd_mm);

@@ -29,6 +29,7 @@
 #include <cstdint>
 #include <string>
 
+#include "volcomp/hosted/expected.hpp"
 #include "volcomp/model/rigid_body.hpp"
 #include "volcomp/model/vec3.hpp"
 #include "volcomp/sim/error_sources.hpp"
@@ -48,18 +49,18 @@ struct MachineOptions {
   WornMachineProfile wear;  // all off: the rigid-body machine alone
 };
 
-/// "s500" (the built-in STAN S500 model) or a model config file (tools/model io.hpp format).
-/// Throws std::runtime_error / tools::InputError naming the problem.
-model::Model LoadMachineModel(const std::string& spec);
+/// "s500" (the built-in STAN S500 model) or a model config file (tools/model io.hpp format); the
+/// failure names the file and the problem.
+Expected<model::Model> LoadMachineModel(const std::string& spec);
 
 /// The error functions, squareness, tool offset and chain of a model, as the machine's data.
 MachineGeometry GeometryOf(const model::Model& model);
 
 class Machine {
  public:
-  /// Throws std::invalid_argument naming a bad option (step length, power-up below the switch,
-  /// a model in the dissertation's formulation, a model ValidateModel refuses).
-  explicit Machine(MachineOptions options);
+  /// The machine, or kInvalidArgument naming a bad option (step length, power-up below the
+  /// switch, a model in the dissertation's formulation, a model ValidateModel refuses).
+  static Expected<Machine> Create(MachineOptions options);
 
   const model::Model& model() const { return options_.model; }
   const WornMachineProfile& wear() const { return options_.wear; }
@@ -93,6 +94,8 @@ class Machine {
   bool HomeSwitchClosed(int axis, int64_t drive_steps) const;
 
  private:
+  explicit Machine(MachineOptions options);  // options checked by Create
+
   MachineOptions options_;
   RigidBodyKinematics kinematics_;
   std::array<int64_t, 3> switch_steps_ = {0, 0, 0};

@@ -25,12 +25,13 @@ namespace volcomp::sim {
 
 struct WornMachineProfile {
   bool lost_motion = false;
-  std::array<double, 3> lost_motion_um = {15, 20, 8};
+  std::array<double, 3> lost_motion_um = {15, 20, 8};  // play: the drive travels it after a
+                                                       // reversal before the carriage follows
 
   bool scatter = false;
-  std::array<double, 3> scatter_sigma_um = {0.7, 0.8, 0.6};
+  std::array<double, 3> scatter_sigma_um = {0.7, 0.8, 0.6};  // a new offset at every rest
 
-  bool screw_error = false;
+  bool screw_error = false;  // A·sin(2π·d/P + φ) of the drive position d
   double screw_period_mm = 5;
   std::array<double, 3> screw_amplitude_um = {1.5, 1.5, 1.0};
   std::array<double, 3> screw_phase_rad = {0.4, 2.1, 4.0};
@@ -45,7 +46,7 @@ struct WornMachineProfile {
   double screw_fixed_end_mm = 0;            // X position of the screw's fixed bearing
 
   bool cross_axis_sag = false;
-  double sag_um = 12;
+  double sag_um = 12;  // S: the tool rises by S·((x − x_c)/(X/2))²·((y − y_min)/Y)²
 
   uint64_t seed = 1;  // the scatter's random numbers
 
