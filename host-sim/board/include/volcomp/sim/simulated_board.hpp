@@ -1,15 +1,10 @@
-// The real board application (firmware/app BoardApp) on the mock HAL, attached to a simulated CAN
-// bus, advanced in virtual time: the control tick and a main-loop pass every `poll_period_ns` (the
-// node's response latency). The tick is the board's tick timer (a MockTickTimer): it ticks while
-// the firmware keeps the timer running, at the rate the firmware programmed (the rate of the
-// configuration in force, which a node reset may change), with the period 1e9 / rate ns
-// (truncated) from the moment the timer was started. The bus endpoint runs at the bit rate the
-// firmware set (at another rate than the bus's the board is off the bus: sim_bus.hpp).
-//
-// Flash is kept in memory; with a flash directory it is loaded from its files at Start() and every
-// erase and program is written through to them at once (write_through_flash.hpp), so a simulated
-// board keeps its tables and settings across runs (`volcomp-sim node --flash-dir DIR`) and
-// killing the process is a real power loss.
+// The real board application (firmware/app BoardApp) on the mock HAL, on a simulated CAN bus
+// endpoint, in virtual time (ns): a control tick at the rate the firmware programmed into its
+// tick timer (period 1e9 / rate ns, truncated, while the timer runs; a node reset may change it)
+// and a main-loop pass every `poll_period_ns`; the endpoint at the bit rate the firmware set.
+// Flash is in memory; with a flash directory it is loaded from its files at Start() and every
+// operation is written through at once (write_through_flash.hpp), so killing the process is a
+// real power loss. Thread-safety: none (one thread drives the board and its bus).
 #pragma once
 
 #include <cstdint>

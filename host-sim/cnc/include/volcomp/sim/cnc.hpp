@@ -1,24 +1,9 @@
-// The simulated CNC controller: executes moves, dwells and homing cycles and emits step pulses
-// for three axes in virtual time (nanoseconds).
-//
-// Step generation: a linear move from A to B (steps) follows a rest-to-rest trapezoidal profile
-// along the straight path (TrapezoidProfile); axis a makes |B_a - A_a| steps, step k at the time
-// the path position reaches k/n of the path (so the axis position rounds down to whole steps, like
-// a DDA). Each step's exact time (ns) goes to the StepSink, which plays the part of the board's
-// hardware input counter: the count latched at a tick is the number of steps whose time is <= the
-// tick's time. Feed and rapid speeds are capped so that no axis exceeds `max_step_rate_hz`
-// (1 MHz default), acceleration is `accel_mm_s2` along the path, and every move ends at rest
-// (exact stop, G61).
-//
-// Homing (one block for any set of axes, in parallel): jog toward the switch at home_fast_mm_s,
-// stop when the switch closes, pause, back off until it opens plus home_backoff_mm, approach again
-// at home_slow_mm_s and stop on the step that closes it; that position becomes
-// home_position_steps in the CNC's machine coordinates. The switch is sampled at every
-// AdvanceTo() (every tick/poll of the simulation); jogs start and stop without ramps (they are
-// slow).
-//
-// Coordinates: count(a) = net steps emitted since power-up; position(a) = count + offset set by
-// homing (before homing: the count itself).
+// The simulated CNC controller: moves, dwells and homing cycles for three axes, emitted as step
+// times in virtual time (ns) to a StepSink, which plays the board's hardware input counter (the
+// count a tick latches is the number of steps whose time is <= the tick's). Moves follow a
+// rest-to-rest trapezoid along the straight path with no axis above `max_step_rate_hz`; homing
+// stops on the step that closes the switch (docs/simulator.md "CNC and the input counter").
+// Lengths mm, speeds mm/s, positions in steps. Thread-safety: none (the simulation's thread).
 #pragma once
 
 #include <array>

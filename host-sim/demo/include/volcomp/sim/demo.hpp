@@ -1,23 +1,7 @@
-// `volcomp-sim demo`: the main job on the simulated installation, end to end.
-//
-// Ideal machine (`--machine ideal`, the default: the S500's rigid-body geometry alone):
-//   1. power up, home the axes (the board references on the home switch edges)
-//   2. measure the uncompensated machine: GOST 27843-88 per axis (laser), ISO 230-6 body diagonals
-//      (laser), volumetric error at random points (laser tracker); evaluate with tools/metrology
-//   3. measure the six error motions of X, Y and Z through the reference point (6-DOF laser)
-//   4. build the table: measured 21-parameter model -> inverse GRID3 (tools/model) -> image
-//   5. upload it over the simulated CAN bus with the PC tool's SDO code, verify on the board
-//   6. home again (reference), activate, let the correction ramp in
-//   7. re-measure exactly as in 2
-//   8. speed benchmark (all three axes at 1 MHz through the compensating board) and the summary
-// Worn machine (`--machine worn`, worn_profile.hpp): the same start, then three tables, each
-// re-measured as in 2: (1) the 21-parameter GRID3; (2) plus AXIS1D forward/reverse tables from
-// bidirectional ISO 230-2 runs measured with table 1 active; (3) a GRID3 from laser-tracker
-// readings at every node of a lattice measured through table 2 (composed with its GRID3), plus
-// the same AXIS1D tables.
-// A drift check point is read with the tracker before and after every test. The summary adds the
-// goals of the worn profile and the error budget of what remains.
-// Deterministic for a given seed (the wall-clock figures aside).
+// `volcomp-sim demo`'s run: the main job on the simulated installation, end to end (measure,
+// evaluate, build the table, upload, reference, activate, re-measure; the steps of the ideal
+// machine are docs/simulator.md §2, the worn machine's three tables §7.2), its summary and its
+// report. Deterministic for a given seed (the wall-clock figures aside). Lengths mm, errors µm.
 #pragma once
 
 #include <array>

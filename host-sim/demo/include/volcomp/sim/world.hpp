@@ -1,24 +1,9 @@
 // The simulated installation: machine + CNC + the real firmware (BoardApp on the mock HAL) + the
-// drives (DriveModel checkers) + the CAN bus with the PC's endpoint, advanced together in virtual
-// time (ns).
-//
-// Each step of the simulation goes to the next event of the board (a control tick or a main-loop
-// pass) or of the bus (a frame ends). Before a board event at time t:
-//   * the CNC runs up to t; each step it emits goes into the board's input counter (the mock
-//     hardware counter), so the count latched by the tick at t is the number of steps whose time
-//     is <= t, and to the latency meter with its exact time;
-//   * the home switches are set from the drives' positions (machine model);
-//   * the bus runs up to t (frames for the board are in its receive queue for the poll at t).
-// After a tick the pulses it planned (MockStepIo::last_plans) are expanded to times for the
-// latency meter, and the drive positions are checked against the board's own output position.
-//
-// Step audit ("zero lost steps"): at every rest point (CheckAtRest, called at each dwell end) every
-// drive's position must equal the CNC's emitted steps plus the board's whole-step correction, with
-// nothing owed; every tick the drive's count must equal what the board planned. Timing violations
-// are the DriveModels' count.
-//
-// The PC's SDO client (tools/canopen, the PC tool's protocol code) talks to the board through
-// SdoLink(): a blocking FrameLink whose receive() advances the whole simulation.
+// drives (DriveModel checkers) + the CAN bus with the PC's endpoint, advanced together from event
+// to event in virtual time (ns), with the step audit (zero lost steps, drive = board output every
+// tick) and the latency meter (docs/simulator.md "Virtual time", "Drives and the step audit").
+// The PC's SDO client (tools/canopen) reaches the board through SdoLink(), a blocking FrameLink
+// whose receive() advances the whole simulation. Thread-safety: none (one thread).
 #pragma once
 
 #include <array>

@@ -1,24 +1,9 @@
-// Virtual measuring instruments. They read the actual tool point from the machine model at the
-// drives' (output) positions, add their own errors, and quantise to their resolution.
-//
-//   LaserInterferometer (Renishaw XL-80 style), one setup at a time:
-//     * linear: displacement of the tool point along the beam since the last Zero() (µm);
-//     * straightness: the two components across the beam since Zero() (µm);
-//     * angular: rotation of the tool side since Zero() (µrad) about x, y, z, taken as angular
-//       optics and an electronic level do: from the displacement of a second point of the tool
-//       side at `angular_baseline_mm` from the tool point.
-//     The straightness and angular optics are aligned with the machine's nominal axes (no
-//     straightness slope removed; a real straightness run fits the slope out and measures
-//     squareness separately, see docs/simulator.md). The linear beam may be misaligned by
-//     `misalignment_mrad` from the line of motion: it then reads cos θ times the displacement
-//     along the line (the cosine error, -L·θ²/2).
-//   LaserTracker: the tool point's 3-D position (mm) in the machine frame, relative to the point
-//     where it was last zeroed (the tracker is registered at the machine's reference point).
-//
-// Errors per reading (each channel independently, Gaussian, from one seeded generator):
-//   noise_*          sigma of a single sample; a reading averages `samples` of them;
-//   repeatability_*  sigma of the reading-to-reading scatter that averaging does not remove
-//                    (set-up, air, thermal); then rounded to `resolution_*`.
+// Virtual measuring instruments: a laser interferometer (linear, straightness and angular
+// optics, one setup at a time) and a laser tracker. They read the actual tool point from the
+// machine at the drives' positions since their last Zero(), add their errors per channel (noise
+// averaged over samples, repeatability, then rounding to the resolution; Gaussian, from one seeded
+// generator) and a misaligned beam's cosine error (docs/simulator.md "Instruments").
+// Lengths mm, readings µm and µrad. Thread-safety: none (the simulation's thread).
 #pragma once
 
 #include <cstdint>

@@ -1,26 +1,9 @@
 // The simulated machine's own rigid-body kinematics: where the tool point is for given axis
-// positions, computed from the definitions of the error motions (ISO 230-1 names) by homogeneous
-// transforms. It is written apart from the table builders' model (tools/model rigid_body.hpp)
-// and this library does not link tools/model: the demo's truth must not be the formula the
-// builders invert, so a sign or convention error on either side shows as a disagreement
-// (tests/sim_demo/kinematics_test.cpp compares both on the pure 21-parameter case).
-//
-// Definitions (frames right-handed, lengths mm):
-//   * Each linear axis K of X, Y, Z has six error motions, functions of its own position
-//     (ISO 230-1): E_XK, E_YK, E_ZK, the translation of the tool side relative to the workpiece
-//     side along x, y, z (µm), and E_AK, E_BK, E_CK, its rotation about x, y, z (µrad). They are
-//     given at rows of increasing position; linear between rows, the end rows hold outside.
-//   * Axis directions with the squareness (location) errors: X along x; Y along Rz(E_C0Y)·y;
-//     Z along Ry(E_B0Z)·Rx(E_A0Z)·z (Rx, Ry, Rz: rotations about x, y, z).
-//   * Axis K at position q moves everything after it in the chain by the homogeneous transform
-//         H_K(q) = T(q·d_K + E_lin,K(q)) · R(E_ang,K(q)),
-//     T a translation, R(w) the rotation by the angle |w| about the axis w/|w|.
-//   * Chain from the workpiece to the tool, axes K1, K2, K3: a point p fixed on the tool side
-//     (p = tool offset + the point's own offset) is at H_K1·H_K2·H_K3·p in the workpiece frame,
-//     whose origin is where every axis is at 0.
-//   * Tables of axes that carry the workpiece may be given as the carriage's own motion
-//     (`workpiece_tables_are_carriage_motion`): their values are then taken with the opposite sign.
-//   * `angle_scale` multiplies every rotation (1 = as tabulated).
+// positions, by homogeneous transforms from the ISO 230-1 error motions of each axis: axis K at q
+// moves everything after it in the chain by T(q·d_K + E_lin,K(q))·R(E_ang,K(q)), d_K its direction
+// with the squareness, R the rotation about the rotation vector; tables linear between rows and
+// held beyond (docs/simulator.md "The machine"). Deliberately apart from tools/model's formulas,
+// which tests/host-sim/machine compares it with. Lengths mm, errors µm and µrad.
 // Thread-safety: const methods may be called concurrently.
 #pragma once
 
