@@ -1,8 +1,11 @@
 // Tool point from drive counts through host-sim's Machine (see the header).
 #include "machine_tool_point.hpp"
 
+#include <cstdio>
+#include <cstdlib>
 #include <map>
 #include <memory>
+#include <utility>
 
 #include "volcomp/sim/machine.hpp"
 
@@ -15,7 +18,12 @@ model::Vec3 ToolPoint_mm(const std::array<int64_t, 3>& drive_steps, double step_
     sim::MachineOptions o;  // the built-in S500 model
     o.step_mm = {step_mm, step_mm, step_mm};
     o.power_up_mm = {0.0, 0.0, 0.0};
-    m = std::make_unique<sim::Machine>(o);
+    Expected<sim::Machine> created = sim::Machine::Create(o);
+    if (!created.ok()) {  // fixed options: a failure here is a broken build
+      std::fprintf(stderr, "lcnc_evaluate: %s\n", created.error().message.c_str());
+      std::exit(1);
+    }
+    m = std::make_unique<sim::Machine>(std::move(created).value());
   }
   return m->ToolPoint_mm(m->AxisPositions_mm(drive_steps));
 }

@@ -19,7 +19,7 @@ using canopen::ObjectId;
 using canopen::TableCommand;
 namespace sdo = canopen::sdo;
 
-std::vector<uint8_t> BuildGridImage(uint32_t n) {
+Expected<std::vector<uint8_t>> BuildGridImage(uint32_t n) {
   std::vector<int16_t> values(size_t{n} * n * n * 3);
   for (uint32_t k = 0; k < n; ++k) {
     for (uint32_t j = 0; j < n; ++j) {
@@ -42,10 +42,13 @@ std::vector<uint8_t> BuildGridImage(uint32_t n) {
   s.axes[1] = {'Y', table::AxisKind::kLinear, 1000000};
   s.axes[2] = {'Z', table::AxisKind::kLinear, 1000000};
   s.grid = &g;
-  std::vector<uint32_t> words((*table::ImageSize(s) + 3) / 4);
+  const Result<uint32_t> bytes = table::ImageSize(s);
+  if (!bytes.ok()) return Fail(bytes.status(), "the benchmark's grid image");
+  std::vector<uint32_t> words((*bytes + 3) / 4);
   uint8_t* out = reinterpret_cast<uint8_t*>(words.data());
   const Result<uint32_t> size = table::WriteImage(s, out, words.size() * 4);
-  return std::vector<uint8_t>(out, out + (size.ok() ? *size : 0));
+  if (!size.ok()) return Fail(size.status(), "the benchmark's grid image");
+  return std::vector<uint8_t>(out, out + *size);
 }
 
 }  // namespace
@@ -98,9 +101,10 @@ uint64_t IdealBlockDownloadBits(const std::vector<uint8_t>& payload, uint8_t nod
   return bits;
 }
 
-UploadBenchResult RunUploadBench(const UploadBenchOptions& options) {
+Expected<UploadBenchResult> RunUploadBench(const UploadBenchOptions& options) {
+  if (options.bitrate == 0) return Fail(Error::kInvalidArgument, "the bit rate must be > 0");
   UploadBenchResult r;
-  const std::vector<uint8_t> image = BuildGridImage(options.grid_nodes);
+  VOLCOMP_TRY_ASSIGN(const std::vector<uint8_t> image, BuildGridImage(options.grid_nodes));
   r.image_bytes = static_cast<uint32_t>(image.size());
   r.image_crc = LoadLe32(image.data() + image.size() - 4);
   SimBus bus(options.bitrate);
@@ -108,18 +112,14 @@ UploadBenchResult RunUploadBench(const UploadBenchOptions& options) {
   bo.poll_period_ns = options.poll_period_ns;
   SimulatedBoard board(bus, bo);
   Endpoint& pc = bus.Attach("pc");
-  if (!board.Start().ok()) {
-    r.message = "the simulated board did not start";
-    return r;
-  }
+  VOLCOMP_TRY(board.Start());
   const uint8_t node = bo.settings.node_id;
   SimSdoHost host(bus, board, pc, node);
   host.Idle(5000000);
   // The PC tool's staging steps around the timed transfer, which runs event by event.
   canopen_client::NodeObjects pc_tool(host.Link(), node);
-  auto fail = [&](const std::string& what, const canopen_client::SdoResult& res) {
-    r.message = what + ": " + res.message;
-    return r;
+  auto fail = [](const std::string& what, const canopen_client::SdoResult& res) {
+    return Fail(Error::kIoError, what + ": " + res.message);
   };
   auto res = canopen_client::PrepareStaging(pc_tool);
   if (!res.ok) return fail("staging", res);
@@ -154,8 +154,6 @@ UploadBenchResult RunUploadBench(const UploadBenchOptions& options) {
   }
   res = pc_tool.Read(ObjectId::kActiveTableCrc, &r.active_crc);
   if (!res.ok) return fail("read active CRC", res);
-  r.ok = true;
-  r.message = "ok";
   return r;
 }
 

@@ -1,7 +1,17 @@
 // Pumps between external CAN links and SimBus endpoints.
 #include "volcomp/sim/bus_bridge.hpp"
 
+#include "volcomp/sim/from_tools.hpp"
+
 namespace volcomp::sim {
+namespace {
+
+// TRANSITION(tools): SlcanServer::Poll throws when poll() fails.
+Outcome Poll(can_io::SlcanServer& server, std::chrono::microseconds timeout) {
+  return FromTools([&] { server.Poll(timeout); }, Error::kCommunication);
+}
+
+}  // namespace
 
 size_t PumpSlcan(can_io::SlcanServer& server, Endpoint& endpoint) {
   size_t moved = 0;
@@ -17,12 +27,13 @@ size_t PumpSlcan(can_io::SlcanServer& server, Endpoint& endpoint) {
   return moved;
 }
 
-void ServeSlcan(can_io::SlcanServer& server,
-                Endpoint& endpoint,
-                std::chrono::microseconds timeout) {
+Outcome ServeSlcan(can_io::SlcanServer& server,
+                   Endpoint& endpoint,
+                   std::chrono::microseconds timeout) {
   PumpSlcan(server, endpoint);
-  server.Poll(timeout);
+  VOLCOMP_TRY(Poll(server, timeout));
   PumpSlcan(server, endpoint);
+  return Outcome::Ok();
 }
 
 void SlcanBridge::Pump() {
@@ -62,24 +73,30 @@ void SlcanBridge::Pump() {
   }
 }
 
-void SlcanBridge::Serve(std::chrono::microseconds timeout) {
+Outcome SlcanBridge::Serve(std::chrono::microseconds timeout) {
   Pump();
-  server_.Poll(timeout);
+  VOLCOMP_TRY(Poll(server_, timeout));
   Pump();
+  return Outcome::Ok();
 }
 
-size_t PumpTransport(can_io::CanTransport& transport, Endpoint& endpoint) {
-  size_t moved = 0;
-  while (auto f = transport.Receive(std::chrono::microseconds(0))) {
-    endpoint.Send(*f);
-    ++moved;
-  }
-  CanFrame f;
-  while (endpoint.Receive(&f)) {
-    transport.Send(f);
-    ++moved;
-  }
-  return moved;
+Expected<size_t> PumpTransport(can_io::CanTransport& transport, Endpoint& endpoint) {
+  // TRANSITION(tools): the transport throws when the link fails.
+  return FromTools(
+      [&] {
+        size_t moved = 0;
+        while (auto f = transport.Receive(std::chrono::microseconds(0))) {
+          endpoint.Send(*f);
+          ++moved;
+        }
+        CanFrame f;
+        while (endpoint.Receive(&f)) {
+          transport.Send(f);
+          ++moved;
+        }
+        return moved;
+      },
+      Error::kCommunication);
 }
 
 }  // namespace volcomp::sim

@@ -17,13 +17,13 @@ using canopen_client::SdoResult;
 
 namespace {
 
-SimStatus Failed(const SdoResult& res) { return SimStatus(Error::kIoError, res.message); }
+Unexpected<Failure> Failed(const SdoResult& res) { return Fail(Error::kIoError, res.message); }
 
 }  // namespace
 
-SimResult<UploadReport> UploadTable(World& world,
-                                    const std::vector<uint8_t>& image,
-                                    std::ostream& log) {
+Expected<UploadReport> UploadTable(World& world,
+                                   const std::vector<uint8_t>& image,
+                                   std::ostream& log) {
   UploadReport r;
   r.bytes = static_cast<uint32_t>(image.size());
   r.image_crc = LoadLe32(image.data() + image.size() - 4);
@@ -35,9 +35,9 @@ SimResult<UploadReport> UploadTable(World& world,
   res = Explain(node.Read(ObjectId::kTableBankSize, &bank), "reading the bank size (0x2108)");
   if (!res.ok) return Failed(res);
   if (image.size() > bank) {
-    return SimStatus(Error::kImageTooLarge, "the image (" + std::to_string(image.size()) +
-                                                " bytes) does not fit the board's table bank (" +
-                                                std::to_string(bank) + " bytes)");
+    return Fail(Error::kImageTooLarge, "the image (" + std::to_string(image.size()) +
+                                           " bytes) does not fit the board's table bank (" +
+                                           std::to_string(bank) + " bytes)");
   }
   res = canopen_client::PrepareStaging(node);
   if (!res.ok) return Failed(res);
@@ -71,7 +71,7 @@ SimResult<UploadReport> UploadTable(World& world,
   return r;
 }
 
-SimResult<ActivationReport> ActivateTable(World& world, uint32_t expected_crc) {
+Expected<ActivationReport> ActivateTable(World& world, uint32_t expected_crc) {
   ActivationReport r;
   NodeObjects node(world.SdoLink(), world.node_id());
   SdoResult res = canopen_client::WriteTableCommand(node, canopen::TableCommand::kActivate);
@@ -80,9 +80,8 @@ SimResult<ActivationReport> ActivateTable(World& world, uint32_t expected_crc) {
                 "reading the active CRC-32 (0x2104)");
   if (!res.ok) return Failed(res);
   if (r.active_crc != expected_crc) {
-    return SimStatus(Error::kImageBadCrc, "the active CRC-32 is " + tools::Hex32(r.active_crc) +
-                                              ", the uploaded image's " +
-                                              tools::Hex32(expected_crc));
+    return Fail(Error::kImageBadCrc, "the active CRC-32 is " + tools::Hex32(r.active_crc) +
+                                         ", the uploaded image's " + tools::Hex32(expected_crc));
   }
   r.device_state = ReadDeviceState(world);
   return r;

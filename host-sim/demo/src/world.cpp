@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <limits>
+#include <utility>
 
 namespace volcomp::sim {
 
@@ -20,9 +21,14 @@ firmware::BoardSettings BoardSettingsFor(const Machine& machine) {
   return s;
 }
 
-World::World(const WorldOptions& options)
+Expected<std::unique_ptr<World>> World::Create(const WorldOptions& options) {
+  VOLCOMP_TRY_ASSIGN(Machine machine, Machine::Create(options.machine));
+  return std::unique_ptr<World>(new World(options, std::move(machine)));
+}
+
+World::World(const WorldOptions& options, Machine machine)
     : options_(options), bus_(options.can_bitrate), latency_(20000) {
-  machine_ = std::make_unique<Machine>(options_.machine);
+  machine_ = std::make_unique<Machine>(std::move(machine));
   SimulatedBoardOptions bo;
   bo.settings = options_.board;
   bo.poll_period_ns = options_.poll_period_ns;
@@ -60,7 +66,7 @@ World::World(const WorldOptions& options)
 
 World::~World() = default;
 
-Status World::Start() { return board_->Start(); }
+Outcome World::Start() { return board_->Start(); }
 
 void World::OnStep(int axis, uint64_t t_ns, int dir) {
   board_->step_io().add_steps(static_cast<uint8_t>(axis), dir);

@@ -2,6 +2,8 @@
 // table builders' formulation (tools/model rigid_body, Rodrigues' rotations applied axis by axis):
 // two independent implementations of the same definitions must agree to 1e-6 µm, so a sign or
 // convention error on either side fails here. Plus cases worked out by hand.
+#include "volcomp/sim/rigid_body_kinematics.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -10,7 +12,6 @@
 #include "volcomp/model/s500.hpp"
 #include "volcomp/sim/machine.hpp"
 #include "volcomp/sim/random.hpp"
-#include "volcomp/sim/rigid_body_kinematics.hpp"
 
 namespace volcomp::sim {
 namespace {

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <utility>
 
 #include "volcomp/model/s500.hpp"
 #include "volcomp/sim/machine.hpp"
@@ -27,7 +28,14 @@ TEST(SimWear, LostMotionIsAPlayOperator) {
 Machine WornWith(void (*set)(WornMachineProfile&)) {
   MachineOptions o;
   set(o.wear);
-  return Machine(o);
+  Expected<Machine> m = Machine::Create(o);
+  EXPECT_TRUE(m.ok()) << m.error().message;
+  return std::move(m).value();
+}
+
+// The rigid-body S500 alone.
+Machine Perfect() {
+  return WornWith([](WornMachineProfile&) {});
 }
 
 TEST(SimWear, LostMotionFollowsTheDriveStepsAndWorksTheHomeSwitch) {
@@ -95,7 +103,7 @@ TEST(SimWear, ThermalGrowthAfterTheWarmUp) {
   Machine m = WornWith([](WornMachineProfile& w) { w.thermal = true; });
   const model::Vec3 q = {0, 100, 50};
   const double cold = model::S500Model().tool_offset_mm.z;  // 0: the tool point is q + e(q)
-  Machine perfect{MachineOptions{}};
+  const Machine perfect = Perfect();
   // t = 0, 60 min warm-up, τ = 60 min: spindle −30 (1 − e^−1) = −18.9636 µm; X screw at drive
   // 200 mm: 11.5 ppm/K · 4 K (1 − e^−1) · 200 mm = 5.8155 µm.
   m.OnDriveTick({160000, 0, 0}, 0);
@@ -109,7 +117,7 @@ TEST(SimWear, ThermalGrowthAfterTheWarmUp) {
 
 TEST(SimWear, CrossAxisSagDependsOnXAndY) {
   Machine m = WornWith([](WornMachineProfile& w) { w.cross_axis_sag = true; });
-  Machine perfect{MachineOptions{}};
+  const Machine perfect = Perfect();
   auto sag_um = [&](double x, double y) {
     const model::Vec3 q = {x, y, 100};
     return 1e3 * (m.ToolPoint_mm(q).z - perfect.ToolPoint_mm(q).z);

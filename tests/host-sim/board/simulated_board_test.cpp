@@ -2,11 +2,18 @@
 // changed over the simulated bus (0x2000:3, 0x2000:2, 0x1010 "save", NMT reset node) it ticks at
 // the new rate — counted at the step I/O, and the drive model sees exact, rule-abiding steps from
 // the data path planned for that rate — and its CAN controller runs at the new bit rate, which
-// takes it off a bus running at another one.
+// takes it off a bus running at another one. With a flash directory it keeps its flash in files,
+// and a directory it cannot use is a failure of Start().
+#include "volcomp/sim/simulated_board.hpp"
+
 #include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
 
 #include "sdo_frames.hpp"
-#include "volcomp/sim/simulated_board.hpp"
 
 namespace volcomp {
 namespace {
@@ -96,6 +103,44 @@ TEST_F(SimConfigTest, TickAndBitRateChangedOverCanAreInForceAfterAResetNode) {
   EXPECT_TRUE(board_.endpoint().bus_off());
   EXPECT_GE(bus_.stats().bitrate_errors, 32u);
   EXPECT_FALSE(Write(0x2000, 3, 50000, 4));  // and it hears nobody
+}
+
+// A fresh directory under the test's temporary directory.
+std::string TempDir(const std::string& name) {
+  const auto dir = std::filesystem::temp_directory_path() /
+                   ("volcomp_sim_board_" + std::to_string(::getpid()) + "_" + name);
+  std::filesystem::remove_all(dir);
+  return dir.string();
+}
+
+TEST(SimBoardFlash, FlashFilesAreCreatedAtStartAndKeepTheSettings) {
+  const std::string dir = TempDir("files") + "/flash";  // created with its parent
+  sim::SimBus bus(1000000);
+  sim::SimulatedBoardOptions o;
+  o.flash_dir = dir;
+  sim::SimulatedBoard board(bus, o);
+  EXPECT_FALSE(std::filesystem::exists(dir));  // nothing on disk before Start()
+  const Outcome started = board.Start();
+  ASSERT_TRUE(started.ok()) << started.error().message;
+  EXPECT_EQ(std::filesystem::file_size(dir + "/tables.bin"), o.table_flash_bytes);
+  EXPECT_EQ(std::filesystem::file_size(dir + "/settings.bin"), o.settings_flash_bytes);
+  std::filesystem::remove_all(std::filesystem::path(dir).parent_path());
+}
+
+TEST(SimBoardFlash, AFlashDirectoryThatCannotBeCreatedFailsStart) {
+  const std::string base = TempDir("blocked");
+  std::filesystem::create_directories(base);
+  std::ofstream(base + "/file") << "not a directory\n";
+  sim::SimBus bus(1000000);
+  sim::SimulatedBoardOptions o;
+  o.flash_dir = base + "/file/flash";
+  sim::SimulatedBoard board(bus, o);
+  const Outcome started = board.Start();
+  ASSERT_FALSE(started.ok());
+  EXPECT_EQ(started.error().code, Error::kIoError);
+  EXPECT_EQ(started.error().message.rfind(o.flash_dir + ": cannot create: ", 0), 0u)
+      << started.error().message;
+  std::filesystem::remove_all(base);
 }
 
 }  // namespace

@@ -5,8 +5,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <memory>
 #include <sstream>
 #include <string>
+#include <utility>
 
 #include "volcomp/firmware/board_objects.hpp"
 #include "volcomp/image/image_builder.hpp"
@@ -15,11 +17,28 @@
 namespace volcomp::sim {
 namespace {
 
+// Board settings for the machine of `wo`.
+firmware::BoardSettings SettingsFor(const WorldOptions& wo) {
+  const Expected<Machine> m = Machine::Create(wo.machine);
+  EXPECT_TRUE(m.ok()) << m.error().message;
+  return m.ok() ? BoardSettingsFor(*m) : firmware::BoardSettings{};
+}
+
 WorldOptions Options(PulseFormat output = PulseFormat::kStepDir) {
   WorldOptions wo;
-  wo.board = BoardSettingsFor(Machine(wo.machine));
+  wo.board = SettingsFor(wo);
   for (int a = 0; a < 3; ++a) wo.board.board.axis[a].output_format = output;
   return wo;
+}
+
+// The installation of `wo`, started.
+std::unique_ptr<World> Started(const WorldOptions& wo) {
+  Expected<std::unique_ptr<World>> w = World::Create(wo);
+  EXPECT_TRUE(w.ok()) << w.error().message;
+  if (!w.ok()) return nullptr;
+  const Outcome started = (*w)->Start();
+  EXPECT_TRUE(started.ok()) << started.error().message;
+  return std::move(w).value();
 }
 
 void ExpectCleanRun(World& w) {
@@ -40,8 +59,9 @@ void ExpectCleanRun(World& w) {
 class SimWorldFormats : public ::testing::TestWithParam<PulseFormat> {};
 
 TEST_P(SimWorldFormats, PassThroughAtOneMegahertzLosesNothing) {
-  World w(Options(GetParam()));
-  ASSERT_TRUE(w.Start().ok());
+  const std::unique_ptr<World> world = Started(Options(GetParam()));
+  ASSERT_TRUE(world);
+  World& w = *world;
   w.cnc().QueueRapid({250000, 0, 0});       // X alone at 1 MHz
   w.cnc().QueueRapid({0, 200000, 150000});  // back on X, Y and Z together
   w.cnc().QueueRapid({120000, -30000, 0});
@@ -63,8 +83,9 @@ INSTANTIATE_TEST_SUITE_P(Outputs,
 
 TEST(SimWorld, HomingReferencesTheBoardWhereTheSwitchCloses) {
   const WorldOptions wo = Options();
-  World w(wo);
-  ASSERT_TRUE(w.Start().ok());
+  const std::unique_ptr<World> world = Started(wo);
+  ASSERT_TRUE(world);
+  World& w = *world;
   w.cnc().QueueHome(7);
   ASSERT_TRUE(w.RunUntilCncIdle(60000000000ull));
   w.RunFor(1000000);
@@ -107,27 +128,28 @@ std::vector<uint8_t> ConstantImage() {
 }
 
 TEST(SimWorld, TableOverTheBusThenCompensatedMotionLosesNothing) {
-  World w(Options());
-  ASSERT_TRUE(w.Start().ok());
+  const std::unique_ptr<World> world = Started(Options());
+  ASSERT_TRUE(world);
+  World& w = *world;
   const std::vector<uint8_t> image = ConstantImage();
   std::ostringstream log;
-  const SimResult<UploadReport> uploaded = UploadTable(w, image, log);
-  ASSERT_TRUE(uploaded.ok()) << uploaded.status().reason();
+  const Expected<UploadReport> uploaded = UploadTable(w, image, log);
+  ASSERT_TRUE(uploaded.ok()) << uploaded.error().message;
   const UploadReport& up = uploaded.value();
   EXPECT_EQ(up.staged_crc, up.image_crc);
   EXPECT_GT(up.transfer_s, 0);
   // Not referenced yet: the board refuses to activate.
-  const SimResult<ActivationReport> refused = ActivateTable(w, up.image_crc);
-  EXPECT_FALSE(refused.ok());
-  EXPECT_EQ(refused.status().code(), Error::kIoError);
-  EXPECT_NE(refused.status().reason().find("referenced"), std::string::npos)
-      << refused.status().reason();
+  const Expected<ActivationReport> refused = ActivateTable(w, up.image_crc);
+  ASSERT_FALSE(refused.ok());
+  EXPECT_EQ(refused.error().code, Error::kIoError);
+  EXPECT_NE(refused.error().message.find("referenced"), std::string::npos)
+      << refused.error().message;
 
   w.cnc().QueueHome(7);
   ASSERT_TRUE(w.RunUntilCncIdle(60000000000ull));
   w.RunFor(150000000);
-  const SimResult<ActivationReport> act = ActivateTable(w, up.image_crc);
-  ASSERT_TRUE(act.ok()) << act.status().reason();
+  const Expected<ActivationReport> act = ActivateTable(w, up.image_crc);
+  ASSERT_TRUE(act.ok()) << act.error().message;
   w.RunFor(300000000);
   EXPECT_NE(ReadDeviceState(w) & canopen::kStateEngaged, 0);
   EXPECT_TRUE(w.CheckAtRest());
@@ -155,9 +177,10 @@ TEST(SimWorld, CorrectionDrivenReversalIsNotBacklashCompensated) {
   WorldOptions wo = Options();
   wo.machine.wear.lost_motion = true;
   wo.machine.wear.lost_motion_um = {0, 20, 0};
-  wo.board = BoardSettingsFor(Machine(wo.machine));
-  World w(wo);
-  ASSERT_TRUE(w.Start().ok());
+  wo.board = SettingsFor(wo);
+  const std::unique_ptr<World> world = Started(wo);
+  ASSERT_TRUE(world);
+  World& w = *world;
   image::ImageRequest req;
   req.table_id = 9;
   for (char name : {'X', 'Y', 'Z'}) {
@@ -186,8 +209,8 @@ TEST(SimWorld, CorrectionDrivenReversalIsNotBacklashCompensated) {
   req.frac_bits = 0;
   const std::vector<uint8_t> image = image::BuildImage(req);
   std::ostringstream log;
-  const SimResult<UploadReport> up = UploadTable(w, image, log);
-  ASSERT_TRUE(up.ok()) << up.status().reason();
+  const Expected<UploadReport> up = UploadTable(w, image, log);
+  ASSERT_TRUE(up.ok()) << up.error().message;
   w.cnc().QueueHome(7);
   ASSERT_TRUE(w.RunUntilCncIdle(60000000000ull));
   w.RunFor(150000000);

@@ -35,8 +35,8 @@ double Reduction(double before, double after) { return 100 * (1 - after / before
 TEST(SimDemo, WornQuickMeetsTheGoals) {
   std::ostringstream log;
   const DemoOptions o = WornQuick();
-  const SimResult<DemoResult> run = RunDemo(o, log);
-  ASSERT_TRUE(run.ok()) << run.status().reason();
+  const Expected<DemoResult> run = RunDemo(o, log);
+  ASSERT_TRUE(run.ok()) << run.error().message;
   const DemoResult& r = run.value();
   EXPECT_TRUE(r.failures.empty()) << log.str();
   ASSERT_EQ(r.intermediate.size(), 2u);
@@ -76,9 +76,11 @@ TEST(SimDemo, WornQuickMeetsTheGoals) {
   {
     SCOPED_TRACE("tables, budget, the chain");
     EXPECT_EQ(r.earlier_tables.size(), 2u);
-    const image::LoadedImage last(r.table.image, "table 3");
-    EXPECT_TRUE(last.view().grid.present);
-    EXPECT_EQ(last.view().axis1d_count, 3);  // GRID3 and AXIS1D in force together
+    const Expected<image::LoadedImage> last =
+        image::LoadedImage::FromBytes(r.table.image, "table 3");
+    ASSERT_TRUE(last.ok()) << last.error().message;
+    EXPECT_TRUE(last->view().grid.present);
+    EXPECT_EQ(last->view().axis1d_count, 3);  // GRID3 and AXIS1D in force together
     EXPECT_EQ(r.activation.active_crc, r.table.crc32);
     EXPECT_NE(r.activation.device_state & canopen::kStateEngaged, 0);
     // Repeatability measured by GOST 27843 before compensation: the machine's scatter

@@ -11,10 +11,12 @@ namespace {
 using Kind = ProgramBlock::Kind;
 
 TEST(SimGcode, ModalMotionFeedAndCoordinates) {
-  const Program p = ParseGcode(
+  const Expected<Program> parsed = ParseGcode(
       "%\n(title)\nN10 G21 G90 G94\nG0 X1 Y2 Z3 ; rapid\nG1 X4 F1200 (feed 20 mm/s)\nY5\n"
       "G4 P0.25\nG0\nZ-7.5\nM2\nG1 X99\n",
       "t.ngc");
+  ASSERT_TRUE(parsed.ok()) << parsed.error().message;
+  const Program& p = *parsed;
   ASSERT_EQ(p.size(), 5u);
   EXPECT_EQ(p[0].kind, Kind::kRapid);
   EXPECT_TRUE(p[0].has[0] && p[0].has[1] && p[0].has[2]);
@@ -35,7 +37,9 @@ TEST(SimGcode, ModalMotionFeedAndCoordinates) {
 }
 
 TEST(SimGcode, IncrementalMode) {
-  const Program p = ParseGcode("G91 G0 X1\nG90 X2\n");
+  const Expected<Program> parsed = ParseGcode("G91 G0 X1\nG90 X2\n");
+  ASSERT_TRUE(parsed.ok()) << parsed.error().message;
+  const Program& p = *parsed;
   ASSERT_EQ(p.size(), 2u);
   EXPECT_TRUE(p[0].incremental);
   EXPECT_FALSE(p[1].incremental);
@@ -58,13 +62,11 @@ TEST(SimGcode, RefusesWhatItDoesNotModelWithTheLine) {
       {"G0 X1 P2\n", "prog:1: P without G4"},
   };
   for (const auto& c : cases) {
-    try {
-      ParseGcode(c.text, "prog");
-      ADD_FAILURE() << "accepted: " << c.text;
-    } catch (const std::runtime_error& e) {
-      EXPECT_NE(std::string(e.what()).find(c.message), std::string::npos)
-          << c.text << " -> " << e.what();
-    }
+    const Expected<Program> p = ParseGcode(c.text, "prog");
+    ASSERT_FALSE(p.ok()) << "accepted: " << c.text;
+    EXPECT_EQ(p.error().code, Error::kInputInvalid) << c.text;
+    EXPECT_NE(p.error().message.find(c.message), std::string::npos)
+        << c.text << " -> " << p.error().message;
   }
 }
 

@@ -1,15 +1,17 @@
 // The table from parametric measurements: the measured model reproduces the machine, and the
 // image built from it lands the tool on its targets. Reference: the machine's own model
 // (tools/model S500Model), evaluated directly.
+#include "volcomp/sim/table_from_measurements.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <memory>
 
 #include "volcomp/image/image_reader.hpp"
 #include "volcomp/model/s500.hpp"
 #include "volcomp/sim/measurements.hpp"
 #include "volcomp/sim/random.hpp"
-#include "volcomp/sim/table_from_measurements.hpp"
 
 namespace volcomp::sim {
 namespace {
@@ -18,8 +20,12 @@ class SimTable : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
     WorldOptions wo;
-    wo.board = BoardSettingsFor(Machine(wo.machine));
-    World w(wo);
+    const Expected<Machine> machine = Machine::Create(wo.machine);
+    ASSERT_TRUE(machine.ok()) << machine.error().message;
+    wo.board = BoardSettingsFor(*machine);
+    const Expected<std::unique_ptr<World>> world = World::Create(wo);
+    ASSERT_TRUE(world.ok()) << world.error().message;
+    World& w = **world;
     ASSERT_TRUE(w.Start().ok());
     w.cnc().QueueHome(7);
     ASSERT_TRUE(w.RunUntilCncIdle(60000000000ull));
@@ -34,12 +40,12 @@ class SimTable : public ::testing::Test {
     for (int a = 0; a < 3; ++a) {
       std::vector<double> pos;
       for (double x = 0; x <= travel[a] + 1e-9; x += 10) pos.push_back(x);
-      SimResult<ParametricResult> run = MeasureParametric(w, laser, a, {0, 0, 0}, pos, c);
-      ASSERT_TRUE(run.ok()) << run.status().reason();
+      Expected<ParametricResult> run = MeasureParametric(w, laser, a, {0, 0, 0}, pos, c);
+      ASSERT_TRUE(run.ok()) << run.error().message;
       runs_[static_cast<size_t>(a)] = run.value();
     }
-    const SimResult<model::Model> measured = ModelFromParametric(runs_, model::S500Model().chain);
-    ASSERT_TRUE(measured.ok()) << measured.status().reason();
+    const Expected<model::Model> measured = ModelFromParametric(runs_, model::S500Model().chain);
+    ASSERT_TRUE(measured.ok()) << measured.error().message;
     measured_ = new model::Model(measured.value());
   }
   static void TearDownTestSuite() { delete measured_; }
@@ -66,10 +72,13 @@ TEST_F(SimTable, MeasuredModelReproducesTheMachineUpToItsValueAtTheReference) {
 }
 
 TEST_F(SimTable, ImageLandsTheToolOnItsTargets) {
-  const TableBuildResult t =
+  const Expected<TableBuildResult> built =
       BuildTableImage(*measured_, {0, 0, 0}, {400, 280, 200}, {10, 10, 10}, {1e-3, 1e-3, 1e-3}, 3);
-  const image::LoadedImage img(t.image, "built");
-  const image::ImageEvaluator eval(img);
+  ASSERT_TRUE(built.ok()) << built.error().message;
+  const TableBuildResult& t = *built;
+  const Expected<image::LoadedImage> img = image::LoadedImage::FromBytes(t.image, "built");
+  ASSERT_TRUE(img.ok()) << img.error().message;
+  const image::ImageEvaluator eval(*img);
   const model::Model truth = model::S500Model();
   const model::Vec3 e0 = model::ToolPointError_um(truth, {0, 0, 0});
   Random rng(12);

@@ -1,21 +1,9 @@
-// SimBus: arbitration, frame timing, delivery, fault hooks, the CanPort adapter, realtime pacing
-// and the SLCAN bridge.
+// SimBus: arbitration, frame timing, delivery, fault hooks, an endpoint at another bit rate.
 #include "volcomp/sim/sim_bus.hpp"
 
-#include <arpa/inet.h>
 #include <gtest/gtest.h>
-#include <netinet/in.h>
-#include <sys/socket.h>
-#include <unistd.h>
-
-#include <atomic>
-#include <thread>
 
 #include "can_frames.hpp"
-#include "volcomp/can_io/slcan_server.hpp"
-#include "volcomp/can_io/transport.hpp"
-#include "volcomp/sim/bus_bridge.hpp"
-#include "volcomp/sim/realtime.hpp"
 #include "volcomp/sim/sim_bus_can_port.hpp"
 
 namespace volcomp::sim {
@@ -267,25 +255,6 @@ TEST(CanIoSimBus, ReceiveQueueOverrun) {
   EXPECT_EQ(bus.stats().rx_overruns, 3u);
 }
 
-TEST(CanIoSimBus, CanPortAdapter) {
-  SimBus bus(1000000);
-  SimBusCanPort board(bus.Attach("board"), /*tx_capacity=*/2);
-  SimBusCanPort pc(bus.Attach("pc"));
-  hal::CanPort& port = board;  // used through the firmware's interface
-  EXPECT_TRUE(port.Send(Frame(0x701, {0x7F})).ok());
-  EXPECT_TRUE(port.Send(Frame(0x181, {1})).ok());
-  EXPECT_EQ(port.Send(Frame(0x182)).error(), Error::kFull);
-  EXPECT_EQ(port.Send(Frame(0x800)).error(), Error::kInvalidArgument);
-  bus.RunUntilIdle();
-  CanFrame f;
-  ASSERT_TRUE(static_cast<hal::CanPort&>(pc).Receive(&f));
-  EXPECT_EQ(f.id, 0x701u);  // FIFO within the node
-  ASSERT_TRUE(static_cast<hal::CanPort&>(pc).Receive(&f));
-  EXPECT_EQ(f.id, 0x181u);
-  EXPECT_FALSE(static_cast<hal::CanPort&>(pc).Receive(&f));
-  EXPECT_TRUE(port.Send(Frame(0x182)).ok());
-}
-
 // A node whose controller runs at another bit rate is off the bus (ISO 11898-1 error handling:
 // transmit error counter +8 per failed transmission, bus-off at 256).
 TEST(CanIoSimBus, AnEndpointAtAnotherBitRateIsOffTheBus) {
@@ -326,170 +295,6 @@ TEST(CanIoSimBus, AnEndpointAtAnotherBitRateIsOffTheBus) {
   EXPECT_TRUE(port.Send(Frame(0x701, {0x00})).ok());
   bus.RunUntilIdle();
   EXPECT_EQ(Drain(pc).size(), 1u);
-}
-
-TEST(CanIoSimBus, RealtimePacing) {
-  SimBus bus(1000000);
-  Endpoint& a = bus.Attach("a");
-  Endpoint& b = bus.Attach("b");
-  uint64_t bits = 0;
-  for (int i = 0; i < 20; ++i) {
-    const CanFrame f = Frame(0x100 + i, {1, 2, 3, 4, 5, 6, 7, 8});
-    bits += CanFrameBits(f);
-    a.Send(f);
-  }
-  const uint64_t busy_ns = bits * 1000;  // ~2.5 ms
-  const RealtimeClock clock;
-  const auto t0 = std::chrono::steady_clock::now();
-  int waits = 0;
-  RunRealtime(bus, clock, busy_ns, [&](std::chrono::microseconds timeout) {
-    ++waits;
-    std::this_thread::sleep_for(timeout);
-  });
-  const auto wall = std::chrono::steady_clock::now() - t0;
-  EXPECT_GE(wall, std::chrono::nanoseconds(busy_ns));
-  EXPECT_LT(wall, std::chrono::milliseconds(200));
-  EXPECT_EQ(b.rx_pending(), 20u);
-  EXPECT_GT(waits, 0);
-  const RealtimeClock fast(1000, 4.0);
-  EXPECT_GE(fast.Now(), 1000u);
-  EXPECT_EQ(fast.Until(0), std::chrono::microseconds(0));
-}
-
-TEST(CanIoSimBus, SlcanBridgeServesAClientOverTheBus) {
-  // The simulator shape: an SLCAN TCP server bridged to endpoint "pc", a responder node on the
-  // bus, the bus paced to the wall clock on a thread; the client talks through OpenTransport.
-  SimBus bus(1000000);
-  Endpoint& pc = bus.Attach("pc");
-  Endpoint& node = bus.Attach("node");
-  node.SetReceiveCallback([&](const CanFrame& f, uint64_t) {
-    CanFrame r = f;
-    r.id = 0x580 + (f.id & 0x7F);
-    node.Send(r);
-  });
-  auto server = can_io::SlcanServer::CreateTcp("127.0.0.1", 0);
-  const std::string spec = server->client_spec();
-  std::atomic<bool> stop{false};
-  std::thread sim([&] {
-    const RealtimeClock clock;
-    while (!stop) {
-      RunRealtime(bus, clock, clock.Now() + 2000000, [&](std::chrono::microseconds t) {
-        ServeSlcan(*server, pc, std::min(t, std::chrono::microseconds(1000)));
-      });
-    }
-  });
-  {
-    auto client = can_io::OpenTransport(spec + "@1M");
-    const auto t0 = std::chrono::steady_clock::now();
-    constexpr int kFrames = 200;
-    for (int i = 0; i < kFrames; ++i) {
-      client->Send(Frame(0x601, {uint8_t(i), 0, 0, 0, 0, 0, 0, 0}));
-      const auto got = client->Receive(std::chrono::milliseconds(1000));
-      ASSERT_TRUE(got) << i;
-      EXPECT_EQ(got->id, 0x581u);
-      EXPECT_EQ(got->data[0], uint8_t(i));
-    }
-    const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    std::printf("[ sim bus + slcan-tcp ] request/response pairs: %.0f /s\n", kFrames / s);
-  }
-  stop = true;
-  sim.join();
-  EXPECT_EQ(bus.stats().frames, 400u);
-}
-
-// A raw SLCAN-over-TCP client for frame-level checks: what it sends and every line it received.
-class RawSlcanClient {
- public:
-  explicit RawSlcanClient(uint16_t port) {
-    fd_ = ::socket(AF_INET, SOCK_STREAM, 0);
-    sockaddr_in a{};
-    a.sin_family = AF_INET;
-    a.sin_port = htons(port);
-    a.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-    EXPECT_EQ(::connect(fd_, reinterpret_cast<sockaddr*>(&a), sizeof a), 0);
-  }
-  ~RawSlcanClient() { Close(); }
-  void Write(const std::string& text) {
-    ASSERT_EQ(::send(fd_, text.data(), text.size(), MSG_NOSIGNAL), ssize_t(text.size()));
-  }
-  void Close() {
-    if (fd_ >= 0) ::close(fd_);
-    fd_ = -1;
-  }
-  // Frame lines ("t...") received so far.
-  std::vector<std::string> Frames() {
-    char buf[4096];
-    for (;;) {
-      const ssize_t n = ::recv(fd_, buf, sizeof buf, MSG_DONTWAIT);
-      if (n <= 0) break;
-      text_.append(buf, size_t(n));
-    }
-    std::vector<std::string> out;
-    size_t start = 0;
-    for (size_t i = 0; i < text_.size(); ++i) {
-      if (text_[i] != '\r') continue;
-      if (text_[start] == 't') out.push_back(text_.substr(start, i - start));
-      start = i + 1;
-    }
-    return out;
-  }
-
- private:
-  int fd_ = -1;
-  std::string text_;
-};
-
-// A client that disconnects leaves the node's answers to it queued on the bus (here 40 frames
-// 0x590 from "node"); they are dropped, not handed to the next client. The next client's request
-// reaches the node once that traffic is over, and its answer (0x591) reaches the client.
-TEST(CanIoSimBus, SlcanBridgeDropsWhatWasQueuedForADisconnectedClient) {
-  SimBus bus(1000000);
-  Endpoint& pc = bus.Attach("pc");
-  Endpoint& node = bus.Attach("node");
-  auto server = can_io::SlcanServer::CreateTcp("127.0.0.1", 0);
-  SlcanBridge bridge(bus, *server, pc);
-  const auto serve = [&] { bridge.Serve(std::chrono::microseconds(200)); };
-  const auto advance = [&](uint64_t ns) {  // bus time in 100 us steps, serving in between
-    for (uint64_t t = 0; t < ns; t += 100000) {
-      bus.RunUntil(bus.now() + 100000);
-      serve();
-    }
-  };
-  RawSlcanClient first(server->port());
-  first.Write("O\r");
-  for (int i = 0; i < 50 && !server->channel_open(); ++i) serve();
-  ASSERT_TRUE(server->channel_open());
-  first.Write("t6018A300000000000000\r");  // the request the node answers with a burst
-  advance(1000000);
-  CanFrame request;
-  ASSERT_TRUE(node.Receive(&request));
-  for (int i = 0; i < 40; ++i) node.Send(Frame(0x590, {uint8_t(i), 0, 0, 0, 0, 0, 0, 0}));
-  advance(500000);  // a few of them reach the first client
-  EXPECT_FALSE(first.Frames().empty());
-  first.Close();
-  RawSlcanClient second(server->port());
-  for (int i = 0; i < 50 && server->stats().clients < 2; ++i) serve();
-  ASSERT_EQ(server->stats().clients, 2u);
-  second.Write("O\rt60184004210000000000\r");
-  for (int i = 0; i < 10; ++i) serve();
-  // The node answers whatever reaches it with 0x591.
-  std::vector<CanFrame> requests;
-  for (int step = 0; step < 200; ++step) {
-    advance(100000);
-    CanFrame f;
-    while (node.Receive(&f)) {
-      requests.push_back(f);
-      node.Send(Frame(0x591, {f.data[0], 0, 0, 0, 0, 0, 0, 0}));
-    }
-  }
-  ASSERT_EQ(requests.size(), 1u) << "dropped " << bridge.dropped() << ", from client "
-                                 << server->stats().frames_from_client << ", pc queued "
-                                 << pc.tx_pending() << ", bus idle " << bus.idle();
-  EXPECT_EQ(requests[0].id, 0x601u);
-  EXPECT_EQ(requests[0].data[0], 0x40);
-  const std::vector<std::string> got = second.Frames();
-  EXPECT_EQ(got, std::vector<std::string>{"t59184000000000000000"});
-  EXPECT_GT(bridge.dropped(), 0u);
 }
 
 }  // namespace

@@ -110,8 +110,10 @@ void CheckPointsAgainstTheModel(const DemoResult& r, int points) {
   const model::Vec3 e0 = model::ToolPointError_um(s500, {0, 0, 0});
   ASSERT_EQ(r.before.points.targets_mm.size(), static_cast<size_t>(points));
   ASSERT_EQ(r.after.points.targets_mm.size(), static_cast<size_t>(points));
-  const image::LoadedImage img(r.table.image, "demo table");
-  const image::ImageEvaluator eval(img);
+  const Expected<image::LoadedImage> img =
+      image::LoadedImage::FromBytes(r.table.image, "demo table");
+  ASSERT_TRUE(img.ok()) << img.error().message;
+  const image::ImageEvaluator eval(*img);
   double worst = 0;
   for (size_t i = 0; i < static_cast<size_t>(points); ++i) {
     int32_t pos[3], q8[3];
@@ -136,8 +138,8 @@ void CheckPointsAgainstTheModel(const DemoResult& r, int points) {
 TEST(SimDemo, DefaultRunShowsTheIssueFigures) {
   std::ostringstream log;
   const DemoOptions o = TestOptions();
-  const SimResult<DemoResult> run = RunDemo(o, log);
-  ASSERT_TRUE(run.ok()) << run.status().reason();
+  const Expected<DemoResult> run = RunDemo(o, log);
+  ASSERT_TRUE(run.ok()) << run.error().message;
   const DemoResult& r = run.value();
   EXPECT_TRUE(r.failures.empty()) << log.str();
   {
@@ -162,6 +164,18 @@ TEST(SimDemo, DefaultRunShowsTheIssueFigures) {
   }
 }
 
+// A model file that cannot be read ends the run before it starts, as a failure naming the file.
+TEST(SimDemo, AModelFileThatCannotBeReadIsAFailure) {
+  DemoOptions o;
+  o.model_spec = "/nonexistent/machine.conf";
+  std::ostringstream log;
+  const Expected<DemoResult> run = RunDemo(o, log);
+  ASSERT_FALSE(run.ok());
+  EXPECT_EQ(run.error().code, Error::kInputInvalid);
+  EXPECT_EQ(run.error().message.rfind("/nonexistent/machine.conf: ", 0), 0u) << run.error().message;
+  EXPECT_EQ(log.str(), "");
+}
+
 // A reduced run (2 approaches, few targets and points), twice: same seed, same figures.
 TEST(SimDemo, SameSeedSameFigures) {
   DemoOptions o;
@@ -173,8 +187,8 @@ TEST(SimDemo, SameSeedSameFigures) {
   o.parametric_step_mm = 40;
   o.benchmark_moves = 0;
   std::ostringstream l1, l2;
-  const SimResult<DemoResult> ra = RunDemo(o, l1);
-  const SimResult<DemoResult> rb = RunDemo(o, l2);
+  const Expected<DemoResult> ra = RunDemo(o, l1);
+  const Expected<DemoResult> rb = RunDemo(o, l2);
   ASSERT_TRUE(ra.ok() && rb.ok());
   const DemoResult& a = ra.value();
   const DemoResult& b = rb.value();

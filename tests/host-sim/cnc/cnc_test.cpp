@@ -1,5 +1,5 @@
-// The simulated CNC: trapezoidal profile, step emission (counts, times, rates), linear
-// interpolation, homing, dwells. References are closed-form kinematics written here.
+// The simulated CNC: step emission (counts, times, rates), linear interpolation, homing, dwells,
+// programs. References are closed-form kinematics (trapezoid_reference.hpp).
 #include "volcomp/sim/cnc.hpp"
 
 #include <gtest/gtest.h>
@@ -8,6 +8,7 @@
 #include <cmath>
 #include <vector>
 
+#include "trapezoid_reference.hpp"
 #include "volcomp/sim/trapezoid.hpp"
 
 namespace volcomp::sim {
@@ -32,38 +33,8 @@ class Recorder : public StepSink {
   }
 };
 
-// Path position of a rest-to-rest trapezoid (closed form, independent of TrapezoidProfile).
-double TrapezoidPosition(double L, double v, double a, double t) {
-  const double vp = std::min(v, std::sqrt(a * L));
-  const double ta = vp / a, sa = 0.5 * vp * ta;
-  const double T = 2 * ta + (L - 2 * sa) / vp;
-  if (t <= 0) return 0;
-  if (t >= T) return L;
-  if (t < ta) return 0.5 * a * t * t;
-  if (t < T - ta) return sa + vp * (t - ta);
-  return L - 0.5 * a * (T - t) * (T - t);
-}
-
 void RunAll(Cnc& cnc, uint64_t step_ns = 20000, uint64_t limit_ns = 100000000000ull) {
   for (uint64_t t = 0; !cnc.idle() && t < limit_ns; t += step_ns) cnc.AdvanceTo(t);
-}
-
-TEST(SimTrapezoid, TrapezoidAndTriangleMatchClosedForm) {
-  // L = 100 mm, v = 50 mm/s, a = 100 mm/s^2: 0.5 s ramps over 12.5 mm, 1.5 s cruise: 2.5 s.
-  const TrapezoidProfile p(100, 50, 100);
-  EXPECT_NEAR(p.duration_s(), 2.5, 1e-12);
-  EXPECT_NEAR(p.peak_speed_mm_s(), 50, 1e-12);
-  // L = 4 mm with the same limits: triangle, v_peak = sqrt(a L) = 20 mm/s, 0.2 s + 0.2 s.
-  const TrapezoidProfile q(4, 50, 100);
-  EXPECT_NEAR(q.duration_s(), 0.4, 1e-12);
-  EXPECT_NEAR(q.peak_speed_mm_s(), 20, 1e-12);
-  for (double t = 0; t <= 2.5; t += 0.01) {
-    EXPECT_NEAR(p.PositionAt(t), TrapezoidPosition(100, 50, 100, t), 1e-9) << t;
-    EXPECT_NEAR(p.TimeAt(TrapezoidPosition(100, 50, 100, t)), t, 1e-6) << t;
-  }
-  for (double t = 0; t <= 0.4; t += 0.005) {
-    EXPECT_NEAR(q.PositionAt(t), TrapezoidPosition(4, 50, 100, t), 1e-9) << t;
-  }
 }
 
 TEST(SimCnc, RapidMoveEmitsEveryStepAtTheKinematicTimesWithinOneMegahertz) {
@@ -78,9 +49,9 @@ TEST(SimCnc, RapidMoveEmitsEveryStepAtTheKinematicTimesWithinOneMegahertz) {
   EXPECT_EQ(cnc.count(0), 300000);
   // Step k happens when the ideal path position reaches k um (to 1 ns of time).
   for (size_t k = 0; k < t.size(); k += 997) {
-    const double s = TrapezoidPosition(300, 1000, 10000, static_cast<double>(t[k]) * 1e-9);
+    const double s = testing::TrapezoidPosition(300, 1000, 10000, static_cast<double>(t[k]) * 1e-9);
     const double s_before =
-        TrapezoidPosition(300, 1000, 10000, static_cast<double>(t[k] - 1) * 1e-9);
+        testing::TrapezoidPosition(300, 1000, 10000, static_cast<double>(t[k] - 1) * 1e-9);
     EXPECT_GE(s, (static_cast<double>(k) + 1) * 1e-3 - 1e-9) << k;
     EXPECT_LT(s_before, (static_cast<double>(k) + 1) * 1e-3 + 1e-9) << k;
   }
@@ -196,7 +167,9 @@ TEST(SimCnc, ProgramCoordinatesAreMillimetresInTheHomedFrame) {
   Cnc cnc(c, &rec, [&](int a) { return self->count(a) <= -2000; });
   self = &cnc;
   cnc.QueueHome(7);
-  cnc.QueueProgram(ParseGcode("G90 G0 X10 Y-1.5\nG91 G1 Z2.25 F600\n"));
+  const Expected<Program> program = ParseGcode("G90 G0 X10 Y-1.5\nG91 G1 Z2.25 F600\n");
+  ASSERT_TRUE(program.ok()) << program.error().message;
+  cnc.QueueProgram(*program);
   RunAll(cnc, 20000, 60000000000ull);
   EXPECT_EQ(cnc.position(0), 10000);
   EXPECT_EQ(cnc.position(1), -1500);

@@ -8,13 +8,15 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
+#include <string>
 
 namespace volcomp {
 namespace {
 
 TEST(UploadBench, Grid31Int16AtOneMegabit) {
-  const sim::UploadBenchResult r = sim::RunUploadBench(sim::UploadBenchOptions());
-  ASSERT_TRUE(r.ok) << r.message;
+  const Expected<sim::UploadBenchResult> run = sim::RunUploadBench(sim::UploadBenchOptions());
+  ASSERT_TRUE(run.ok()) << run.error().message;
+  const sim::UploadBenchResult& r = *run;
   std::printf(
       "[ metric ] 31^3 int16 grid, %u bytes at 1 Mbit/s: %.3f s, %.1f kB/s; SDO-block "
       "limit %.3f s, %.1f kB/s; efficiency %.1f %%; bus ceiling %.1f kB/s (%.1f %% of it); "
@@ -30,6 +32,21 @@ TEST(UploadBench, Grid31Int16AtOneMegabit) {
   EXPECT_LE(r.efficiency, 1.0);
   EXPECT_TRUE(r.activated);
   EXPECT_EQ(r.active_crc, r.image_crc);
+}
+
+TEST(UploadBench, OptionsTheBenchCannotRunAreFailures) {
+  sim::UploadBenchOptions o;
+  o.bitrate = 0;
+  const Expected<sim::UploadBenchResult> no_bus = sim::RunUploadBench(o);
+  ASSERT_FALSE(no_bus.ok());
+  EXPECT_EQ(no_bus.error().code, Error::kInvalidArgument);
+  o = sim::UploadBenchOptions();
+  o.grid_nodes = 1;  // GRID3 needs 2..1024 nodes per dimension
+  const Expected<sim::UploadBenchResult> no_grid = sim::RunUploadBench(o);
+  ASSERT_FALSE(no_grid.ok());
+  EXPECT_EQ(no_grid.error().code, Error::kGridBadNodeCount);
+  EXPECT_NE(no_grid.error().message.find("grid image"), std::string::npos)
+      << no_grid.error().message;
 }
 
 TEST(UploadBench, NoStuffingCeilingMatchesAHandCount) {
