@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
+#include <utility>
 
 #include "volcomp/metrology/diagonal.hpp"
 
@@ -22,6 +23,13 @@ std::string Seconds(double s) {
   return buf;
 }
 
+// H3: the metrology planners return their failure; these builders still throw it, as before.
+template <typename T>
+T Planned(Expected<T> r) {
+  if (!r.ok()) throw std::invalid_argument(r.error().message);
+  return std::move(r).value();
+}
+
 Point3 OnLine(const Point3& origin, const Point3& dir, double along) {
   return {origin[0] + along * dir[0], origin[1] + along * dir[1], origin[2] + along * dir[2]};
 }
@@ -37,8 +45,8 @@ TestProgram LineTestProgram(const std::string& name,
   p.name = name;
   p.origin_mm = origin_mm;
   p.direction = direction;
-  const std::vector<metrology::CycleMove> moves = metrology::BuildCycle(
-      targets_mm, metrology::Cycle::kLinear, options.runs, options.overrun_mm);
+  const std::vector<metrology::CycleMove> moves = Planned(metrology::BuildCycle(
+      targets_mm, metrology::Cycle::kLinear, options.runs, options.overrun_mm));
   std::string g = "(" + name + ": linear cycle, " + std::to_string(targets_mm.size()) +
                   " targets, " + std::to_string(options.runs) + " runs each way)\n";
   g += "(the instrument is zeroed at the first stop and read at the end of every G4)\n";
@@ -96,8 +104,8 @@ TestProgram DiagonalProgram(const std::string& name,
                             const Point3& p2_mm,
                             double increment_mm,
                             const CycleOptions& options) {
-  const metrology::DiagonalPlan plan = metrology::PlanDiagonal(
-      {p1_mm[0], p1_mm[1], p1_mm[2]}, {p2_mm[0], p2_mm[1], p2_mm[2]}, increment_mm);
+  const metrology::DiagonalPlan plan = Planned(metrology::PlanDiagonal(
+      {p1_mm[0], p1_mm[1], p1_mm[2]}, {p2_mm[0], p2_mm[1], p2_mm[2]}, increment_mm));
   const Point3 dir = {plan.travel_mm.x / plan.length_mm, plan.travel_mm.y / plan.length_mm,
                       plan.travel_mm.z / plan.length_mm};
   return LineTestProgram(name, p1_mm, dir, plan.distances, options);

@@ -223,10 +223,13 @@ void AddWornSections(report::HtmlPage* page, const DemoResult& r) {
 }  // namespace
 
 SimStatus WriteDemoReport(const DemoResult& r, const std::string& dir) {
-  const std::string index = report::PrepareReportPath(dir, "index.html");
-  report::PrepareReportPath(dir + "/data", "x");
-  report::PrepareReportPath(dir + "/programs", "x");
-  report::PrepareReportPath(dir + "/model", "x");
+  // The report library returns its failures (H3); they become the session's status.
+  std::string index;
+  for (const char* sub : {"", "/data", "/programs", "/model"}) {
+    const auto path = report::PrepareReportPath(dir + sub, "index.html");
+    if (!path.ok()) return SimStatus(path.error().code, path.error().message);
+    if (*sub == '\0') index = *path;
+  }
 
   // Data files, in the formats the PC tool reads.
   for (const Phase& ph : Phases(r)) {
@@ -369,7 +372,8 @@ SimStatus WriteDemoReport(const DemoResult& r, const std::string& dir) {
       metrology::AddPositioningSection(&page, ph.results->gost[a].gost);
     }
   }
-  page.WriteFile(index);
+  const Outcome written = page.WriteFile(index);
+  if (!written.ok()) return SimStatus(written.error().code, written.error().message);
   return SimStatus::Ok();
 }
 

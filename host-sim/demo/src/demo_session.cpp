@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <stdexcept>
+#include <utility>
 
 #include "volcomp/firmware/board_objects.hpp"
 #include "volcomp/metrology/test_program.hpp"
@@ -105,7 +107,10 @@ void PlanTests(Session& s, Random& rng) {
     tp.count = s.o.gost_targets;
     tp.pitch = s.o.gost_pitch_mm;
     tp.seed = static_cast<uint32_t>(rng.Next() & 0x7FFFFFFF);
-    s.gost[i].targets_mm = metrology::PlanGostTargets(tp);
+    // H3: PlanGostTargets returns its failure; this step still throws it, as before.
+    auto targets = metrology::PlanGostTargets(tp);
+    if (!targets.ok()) throw std::invalid_argument(targets.error().message);
+    s.gost[i].targets_mm = std::move(targets).value();
     s.gost[i].line_point_mm = l.centre;
     s.gost[i].cycle.runs = s.o.gost_runs;
     s.gost[i].cycle.dwell_s = s.o.dwell_s;

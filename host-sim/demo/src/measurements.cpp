@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <map>
+#include <utility>
 
 #include "volcomp/sim/gcode.hpp"
 #include "volcomp/tools/csv.hpp"
@@ -19,6 +20,9 @@ std::string Fixed(double v, int decimals) {
   std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
   return buf;
 }
+
+// A metrology failure (the evaluations return results since H3) as the session's status.
+SimStatus Refused(const Failure& f) { return SimStatus(f.code, f.message); }
 
 }  // namespace
 
@@ -76,13 +80,18 @@ SimResult<GostAxisResult> MeasureGostAxis(World& world,
   }
   metrology::GroupingOptions grouping;  // GOST 27843 §2.10: 5 approaches (fewer only if asked)
   grouping.min_approaches = std::max(2, std::min(5, plan.cycle.runs));
-  const metrology::PositioningSet set = metrology::GroupReadings(r.data, grouping);
+  const auto set = metrology::GroupReadings(r.data, grouping);
+  if (!set.ok()) return Refused(set.error());
   metrology::EvaluationOptions gost;
   gost.standard = metrology::Standard::kGost27843;
-  r.gost = metrology::EvaluatePositioning(set, gost);
+  auto gost_result = metrology::EvaluatePositioning(*set, gost);
+  if (!gost_result.ok()) return Refused(gost_result.error());
+  r.gost = std::move(gost_result).value();
   metrology::EvaluationOptions iso;
   iso.standard = metrology::Standard::kIso230_2;
-  r.iso = metrology::EvaluatePositioning(set, iso);
+  auto iso_result = metrology::EvaluatePositioning(*set, iso);
+  if (!iso_result.ok()) return Refused(iso_result.error());
+  r.iso = std::move(iso_result).value();
   return r;
 }
 
@@ -116,7 +125,9 @@ SimResult<DiagonalSetResult> MeasureDiagonals(World& world,
   const tools::CsvTable table = tools::CsvTable::ParseString(r.csv, "ISO 230-6 diagonals");
   metrology::GroupingOptions grouping;  // ISO 230-6 §5.3: 5 approaches (fewer only if asked)
   grouping.min_approaches = std::max(2, std::min(5, cycle.runs));
-  r.evaluation = metrology::EvaluateDiagonals(table, grouping);
+  auto evaluation = metrology::EvaluateDiagonals(table, grouping);
+  if (!evaluation.ok()) return Refused(evaluation.error());
+  r.evaluation = std::move(evaluation).value();
   return r;
 }
 

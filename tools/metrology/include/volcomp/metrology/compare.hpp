@@ -27,8 +27,8 @@ struct LoadedResult {
 };
 
 /// The results in `path`: a directory (its *.json files of positioning and diagonal results,
-/// by name) or one .json file. Throws tools::InputError naming the path for anything else.
-std::vector<LoadedResult> LoadResults(const std::string& path);
+/// by name) or one .json file. A failure naming the path for anything else.
+Expected<std::vector<LoadedResult>> LoadResults(const std::string& path);
 
 struct ComparedValue {
   std::string symbol;   // "A", "E_d", "E_i"
@@ -66,11 +66,14 @@ struct Comparison {
   std::vector<std::string> warnings;  // unpaired or mismatched results
 };
 
-/// Pairs and compares; throws tools::InputError when nothing can be paired.
-Comparison CompareResults(const std::vector<LoadedResult>& before,
-                          const std::vector<LoadedResult>& after);
+/// Pairs and compares; a failure when nothing can be paired.
+Expected<Comparison> CompareResults(const std::vector<LoadedResult>& before,
+                                    const std::vector<LoadedResult>& after);
 
-void WriteComparisonText(std::ostream& out, const Comparison& comparison);
+/// Every compared value (what `report compare` reports; the charts' series stay in the HTML).
+tools::JsonValue ComparisonJson(const Comparison& comparison);
+/// Per result and table: each value before -> after with its reduction, from ComparisonJson().
+void WriteComparisonText(std::ostream& out, const tools::JsonValue& comparison);
 void AddComparisonSections(report::HtmlPage* page, const Comparison& comparison);
 
 }  // namespace volcomp::metrology

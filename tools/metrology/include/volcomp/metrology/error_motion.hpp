@@ -18,6 +18,8 @@
 #include <optional>
 #include <vector>
 
+#include "volcomp/hosted/expected.hpp"
+
 namespace volcomp::metrology {
 
 /// u[k][j]: revolution k, angle j.
@@ -54,11 +56,11 @@ struct ErrorMotion {
   int revolutions = 0;
 };
 
-/// Requires K ≥ 1 revolutions of equal length N ≥ 4 matching angle_deg (throws
-/// std::invalid_argument otherwise).
-ErrorMotion AnalyseErrorMotion(const std::vector<double>& angle_deg,
-                               const Revolutions& u,
-                               bool min_zone);
+/// Needs K ≥ 1 revolutions of equal length N ≥ 4 matching angle_deg (kInvalidArgument
+/// otherwise).
+Expected<ErrorMotion> AnalyseErrorMotion(const std::vector<double>& angle_deg,
+                                         const Revolutions& u,
+                                         bool min_zone);
 
 /// The values about one centre, for the chosen CentreKind.
 const CentreValues& ValuesAbout(const ErrorMotion& em, CentreKind kind);

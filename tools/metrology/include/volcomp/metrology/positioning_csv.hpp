@@ -28,9 +28,9 @@
 
 namespace volcomp::metrology {
 
-/// Detects the layout and converts the rows; throws tools::InputError naming the line and the
+/// Detects the layout and converts the rows; a failure (kInputInvalid) naming the line and the
 /// problem for a missing or conflicting column, a bad number, direction or run index.
-PositioningData ReadPositioningCsv(const tools::CsvTable& table);
+Expected<PositioningData> ReadPositioningCsv(const tools::CsvTable& table);
 
 /// True when `table` has the header of raw positioning readings (either layout above).
 bool HoldsPositioningReadings(const tools::CsvTable& table);

@@ -107,8 +107,10 @@ struct PositioningResult {
   std::vector<std::string> warnings;
 };
 
-/// Evaluates grouped readings. Throws tools::InputError when the range method is chosen and a
-/// position has a number of approaches outside 5..10 (the a_n table of GOST formula (6)).
-PositioningResult EvaluatePositioning(const PositioningSet& set, const EvaluationOptions& options);
+/// Evaluates grouped readings. A failure (kInputInvalid, naming the line) when the range method is
+/// chosen and a position has a number of approaches outside 5..10 (the a_n table of GOST
+/// formula (6)).
+Expected<PositioningResult> EvaluatePositioning(const PositioningSet& set,
+                                                const EvaluationOptions& options);
 
 }  // namespace volcomp::metrology

@@ -36,9 +36,9 @@ struct RotaryRecord {
   bool equally_spaced = true;                   // angles equally spaced over the full turn
 };
 
-/// Throws tools::InputError with the line for: missing rev/angle_deg column, no channel column,
-/// bad numbers, angles out of [0, 360) or not increasing, a revolution split in two parts, a
-/// revolution whose angles differ from the first one's, fewer than 4 angles per revolution.
-RotaryRecord ReadRotaryCsv(const tools::CsvTable& table);
+/// A failure (kInputInvalid) naming the line for: missing rev/angle_deg column, no channel
+/// column, bad numbers, angles out of [0, 360) or not increasing, a revolution split in two parts,
+/// a revolution whose angles differ from the first one's, fewer than 4 angles per revolution.
+Expected<RotaryRecord> ReadRotaryCsv(const tools::CsvTable& table);
 
 }  // namespace volcomp::metrology

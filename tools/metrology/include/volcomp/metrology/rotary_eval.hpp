@@ -64,10 +64,10 @@ struct RotaryEvaluation {
   std::vector<std::string> warnings;
 };
 
-/// Throws tools::InputError naming the file when the options need channels the file lacks
+/// A failure (kInputInvalid) naming the file when the options need channels the file lacks
 /// (e.g. a rotating sensitive direction without both x_um and y_um). Tilt needs
 /// options.tilt_distance_mm; without it x2/y2 give the second radial plane and a warning.
-RotaryEvaluation EvaluateRotary(const RotaryRecord& record, const RotaryOptions& options);
+Expected<RotaryEvaluation> EvaluateRotary(const RotaryRecord& record, const RotaryOptions& options);
 
 /// Sign conventions of the second record of a Donaldson reversal (ISO 230-7 annex B).
 enum class ReversalProcedure {
@@ -87,11 +87,19 @@ struct ReversalResult {
 
 /// Donaldson reversal (ISO 230-7 annex B) from the synchronous profiles T1 and T2 recorded in
 /// setups 1 and 2 at the same angles: procedure P gives P = (T1 + T2P)/2, S = (T1 − T2P)/2;
-/// procedure S gives S = (T1 + T2S)/2, P = (T1 − T2S)/2. Throws std::invalid_argument for
+/// procedure S gives S = (T1 + T2S)/2, P = (T1 − T2S)/2. A failure (kInvalidArgument) for
 /// profiles of different lengths.
-ReversalResult DonaldsonReversal(const std::vector<double>& angle_deg,
-                                 const std::vector<double>& t1,
-                                 const std::vector<double>& t2,
-                                 ReversalProcedure procedure);
+Expected<ReversalResult> DonaldsonReversal(const std::vector<double>& angle_deg,
+                                           const std::vector<double>& t1,
+                                           const std::vector<double>& t2,
+                                           ReversalProcedure procedure);
+
+/// The reversal of `channel` (e.g. "x_um") from its synchronous profiles in the two setups'
+/// records; a failure (kInputInvalid, naming the file) when setup 2 is sampled at other angles than
+/// setup 1 or a record lacks the channel.
+Expected<ReversalResult> DonaldsonReversal(const RotaryRecord& setup1,
+                                           const RotaryRecord& setup2,
+                                           const std::string& channel,
+                                           ReversalProcedure procedure);
 
 }  // namespace volcomp::metrology
