@@ -1,13 +1,7 @@
-// ISO 230-6 diagonal displacement tests: diagonal names, target positions along a diagonal
-// (§5.2) and the evaluation of E and B per diagonal (§3.4-3.7, §6).
-//
-// Each diagonal is measured like a linear axis of ISO 230-2 whose coordinate is the distance
-// along the diagonal from its start P1 (mm); deviations are in µm. Only the bidirectional
-// systematic positioning error E and the reversal value B are evaluated (§6, §5.3 note):
-//   E_i = max_j max(x̄_j↑, x̄_j↓) − min_j min(x̄_j↑, x̄_j↓),   B_i = max_j |x̄_j↑ − x̄_j↓|;
-//   E_d = max(E_1..E_4), B_d = max(B_1..B_4) over the four body diagonals (§3.4, §3.6);
-//   E_d(ab) = max(E_1(ab), E_2(ab)), B_d(ab) likewise, for the face diagonals of plane ab
-//   (§3.5, §3.7).
+// ISO 230-6 diagonal displacement tests: diagonal names, target positions along a diagonal (§5.2),
+// and E_i, B_i per diagonal and E_d, B_d per body or face group, each diagonal evaluated like an
+// ISO 230-2 axis whose coordinate is the distance from its start (mm; deviations in µm).
+// Definitions: docs/metrology.md "ISO 230-6 diagonal tests".
 #pragma once
 
 #include <array>

@@ -1,16 +1,8 @@
-// ISO 230-7 evaluation of a rotary-axis or spindle error-motion record: builds the polar
-// profiles from the sensor channels (§5.3, §5.4, §6) and analyses each with AnalyseErrorMotion().
-//
-// Profiles (u in µm unless noted; θ the rotation angle, θ_f the fixed sensitive direction):
-//   radial, rotating sensitive direction (RSD), formula (1)/(6): u = ΔX·cos θ + ΔY·sin θ
-//   radial, fixed sensitive direction (FSD), formulas (3)/(4):   u = ΔX·cos θ_f + ΔY·sin θ_f
-//   tilt (two planes a distance L apart, A.6 / formula (5), §5.3.3 method 2): the radial
-//     profile of the difference plane2 − plane1, divided by L; in µrad (= µm/m)
-//   tilt from axial and face (A.5): (z − face)/R, µrad
-//   axial: u = Δz;  face: u = face channel
-// Preferred centres (Table 1): radial and tilt LSC, axial and face PC. The fundamental axial
-// value (§3.8.5) is reported for axial and face. For radial data from two sensors, the positive
-// and negative fundamentals c₊, c₋ of ΔX + iΔY (A.10, ref. Lu & Jamalian) describe the 2D effect.
+// ISO 230-7 evaluation of an error-motion record: the profiles formed from the sensor channels
+// (radial for a rotating or fixed sensitive direction, tilt, axial, face), each analysed with
+// AnalyseErrorMotion() and reported about its preferred centre of Table 1, and the Donaldson
+// reversal; profiles and clauses in docs/metrology.md. Options the channels cannot serve are
+// failures naming the file.
 #pragma once
 
 #include <optional>
