@@ -10,12 +10,22 @@
 
 #include "commands.hpp"
 #include "volcomp/image/axis_units.hpp"
-#include "volcomp/metrology/cli_support.hpp"
 #include "volcomp/model/axis1d.hpp"
 #include "volcomp/model/linuxcnc_comp.hpp"
 #include "volcomp/tools/csv.hpp"
+#include "volcomp/tools/file_io.hpp"
 
 namespace volcomp::tools {
+namespace {
+
+// H3: metrology's WriteTextOutput is gone (files: tools::WriteTextFile); this legacy command still
+// reports failures by throwing.
+void WriteOrThrow(const std::string& path, const std::string& text) {
+  const Outcome written = WriteTextFile(path, text);
+  if (!written.ok()) throw InputError(written.error().message);
+}
+
+}  // namespace
 
 int RunExportLinuxcnc(Args& args) {
   static const std::string kAxes = "XYZABCUVW";
@@ -65,7 +75,7 @@ int RunExportLinuxcnc(Args& args) {
     }
     std::string file = std::string(1, static_cast<char>(name - 'A' + 'a')) + ".comp";
     const std::string full = (std::filesystem::path(out_dir) / file).string();
-    metrology::WriteTextOutput(model::FormatLinuxcncComp(comp), full, std::cout);
+    WriteOrThrow(full, model::FormatLinuxcncComp(comp));
     std::cout << "  axis " << name << ": " << comp.rows.size() << " points from "
               << comp.rows.front().nominal << " to " << comp.rows.back().nominal << ", "
               << (data.dev_reverse.empty() ? "one direction (reverse = forward)" : "bidirectional")
@@ -75,7 +85,7 @@ int RunExportLinuxcnc(Args& args) {
            "\nCOMP_FILE_TYPE = " + std::to_string(type) + "\n";
   }
   const std::string ini_path = (std::filesystem::path(out_dir) / "joints.ini").string();
-  metrology::WriteTextOutput(ini, ini_path, std::cout);
+  WriteOrThrow(ini_path, ini);
   std::cout << "\nINI lines (also in " << ini_path << "):\n\n" << ini;
   return 0;
 }

@@ -49,7 +49,9 @@ using TextLayout = void (*)(const JsonValue& data, std::ostream& out);
 /// What a command reports.
 struct Output {
   Output() = default;
-  Output(JsonValue d, TextLayout layout = nullptr) : data(std::move(d)), text(layout) {}  // NOLINT
+  Output(JsonValue d, TextLayout layout = nullptr, std::vector<std::string> w = {},  // NOLINT
+         int code = tools::kExitOk)
+      : data(std::move(d)), text(layout), warnings(std::move(w)), exit_code(code) {}
 
   JsonValue data;                     // every figure the command reports (null: nothing)
   TextLayout text = nullptr;          // its text view (nullptr: nothing on stdout in text mode)

@@ -20,12 +20,6 @@ using tools::RunConfigSave;
 using tools::RunConfigApply;
 using tools::RunNmt;
 using tools::RunEds;
-using tools::RunEvaluatePositioning;
-using tools::RunEvaluateDiagonal;
-using tools::RunEvaluateRotary;
-using tools::RunProgramPositioning;
-using tools::RunProgramDiagonal;
-using tools::RunReportCompare;
 using tools::RunBuildModel;
 using tools::RunBuildTracker;
 using tools::RunBuildKmtpp;
@@ -229,115 +223,6 @@ const Command& EdsCommand() {
        {{"--output", "-o", "FILE", nullptr, "-", "file to write (- = stdout)"}}, nullptr,
                                 "",
                                 RunEds};
-  return kCommand;
-}
-
-const Command& EvaluatePositioningCommand() {
-  static const Command kCommand{"evaluate positioning", "GOST 27843-88 / ISO 230-2 positioning test from CSV", "FILE|-",
-       Join({{{"--standard", nullptr, "gost27843|iso230-2|both", nullptr, "gost27843",
-               "standard(s) to evaluate"},
-              {"--sigma", nullptr, "formula|range", nullptr, "formula",
-               "GOST 27843 S by formula (5) or by the range method (6)"},
-              {"--axis-length-mm", nullptr, "L", "mm", nullptr,
-               "axis travel for the target-count checks (default: the targets' span)"}},
-             AllowFewRuns(),
-             JsonReport()}), nullptr,
-                                "Input: target_mm|target_deg, direction, run, deviation_um|deviation_mm|measured_mm|\n"
-       "deviation_arcsec|...; ',' or ';' or TAB separated (decimal comma with ';' or TAB);\n"
-       "'# key: value' lines before the header are the test conditions of the report.\n"
-       "Non-finite readings are refused; implausible magnitudes and Grubbs outliers (99 %)\n"
-       "are warned about with their line. See docs/metrology.md.",
-                                RunEvaluatePositioning};
-  return kCommand;
-}
-
-const Command& EvaluateDiagonalCommand() {
-  static const Command kCommand{"evaluate diagonal", "ISO 230-6 body/face diagonal test (E, B, E_d, B_d) from CSV", "FILE|-",
-       Join({AllowFewRuns(), JsonReport()}), nullptr,
-                                "Input: the positioning long layout with a `diagonal` column naming each row's diagonal.",
-                                RunEvaluateDiagonal};
-  return kCommand;
-}
-
-const Command& EvaluateRotaryCommand() {
-  static const Command kCommand{"evaluate rotary", "ISO 230-7 error motion (synchronous, asynchronous, tilt, reversal)",
-       "FILE|-",
-       Join({{{"--sensitive", nullptr, "rotating|fixed", nullptr, "rotating",
-               "sensitive direction of the radial measurement"},
-              {"--fsd-angle-deg", nullptr, "A", "deg", nullptr,
-               "angle of the fixed sensitive direction (with --sensitive fixed; default 0)"},
-              {"--tilt-distance-mm", nullptr, "L", "mm", nullptr,
-               "distance of the second radial plane (x2_um, y2_um) for tilt"},
-              {"--face-radius-mm", nullptr, "R", "mm", nullptr, "radius of the face sensor"},
-              {"--min-zone", nullptr, nullptr, nullptr, nullptr,
-               "also evaluate about the minimum-zone centre"},
-              {"--reversal", nullptr, "FILE2", nullptr, nullptr,
-               "Donaldson reversal: the second (reversed) setup"},
-              {"--reversal-channel", nullptr, "COLUMN", nullptr, "x_um",
-               "channel used for the reversal"},
-              {"--reversal-procedure", nullptr, "P|S", nullptr, "P",
-               "reversal procedure (same or reversed sign convention)"}},
-             JsonReport()}), nullptr,
-                                "",
-                                RunEvaluateRotary};
-  return kCommand;
-}
-
-const Command& ProgramPositioningCommand() {
-  static const Command kCommand{"program positioning", "GOST 27843 test program: targets P_j=(N+r)P and G-code cycle", "",
-       Join({{{"--pitch", nullptr, "P", "mm (deg with --rotary)", nullptr,
-               "largest repeating step of the axis: screw pitch, scale period (required)"},
-              {"--start", nullptr, "S", "mm (deg with --rotary)", "0",
-               "first end of the measured travel"},
-              {"--end", nullptr, "E", "mm", nullptr,
-               "other end of the measured travel (required for a linear axis)"},
-              {"--count", nullptr, "M", nullptr, "11", "number of target positions"},
-              {"--seed", nullptr, "N", nullptr, "1", "seed of the random fractions r_j"},
-              {"--fraction-digits", nullptr, "D", nullptr, "2", "digits of r_j, 1..4"},
-              {"--rotary", nullptr, nullptr, nullptr, nullptr,
-               "full-turn rotary axis (0°, 90°, 180°, 270° included)"},
-              {"--cycle", nullptr, "linear|pilgrim", nullptr, "linear",
-               "GOST fig. 1 linear cycle or fig. 2 pseudo-pilgrim"},
-              {"--overrun", nullptr, "O", "mm (deg with --rotary)", "5",
-               "travel beyond the end targets for the reversal"},
-              {"--axis", nullptr, "NAME", nullptr, nullptr,
-               "axis word of the G-code and of the template (default: X, C with --rotary)"}},
-             TemplateOutput()}), nullptr,
-                                "The readings template names the axis in its preamble; `evaluate positioning` names the\n"
-       "report after it. A template that already holds readings is not overwritten.",
-                                RunProgramPositioning};
-  return kCommand;
-}
-
-const Command& ProgramDiagonalCommand() {
-  static const Command kCommand{"program diagonal", "ISO 230-6 diagonal targets and G-code cycle (one diagonal or all four)",
-       "",
-       Join({{{"--p1", nullptr, "X,Y,Z", "mm", nullptr, "start point of one diagonal"},
-              {"--p2", nullptr, "X,Y,Z", "mm", nullptr, "end point of that diagonal"},
-              {"--box", nullptr, "X0,Y0,Z0:X1,Y1,Z1", "mm", nullptr,
-               "instead of --p1/--p2: the four body diagonals of this box"},
-              {"--increment-mm", nullptr, "I", "mm", nullptr,
-               "target spacing along the diagonal (required)"},
-              {"--name", nullptr, "+X+Y-Z", nullptr, nullptr,
-               "diagonal name; checked against P1→P2 (default: derived from P1→P2)"},
-              {"--overrun-mm", nullptr, "O", "mm", "5", "travel beyond the end targets"}},
-             TemplateOutput()}), nullptr,
-                                "A diagonal is named by its start corner (ISO 230-6): P1 at the low end of X and Y and\n"
-       "the high end of Z is -X-Y+Z. With --box, -o FILE.ngc writes FILE_NNN.ngc, FILE_PNN.ngc,\n"
-       "FILE_NPN.ngc and FILE_PPN.ngc (start corners -X-Y-Z, +X-Y-Z, -X+Y-Z, +X+Y-Z) and\n"
-       "--targets-csv one template for all four, which `evaluate diagonal` reads.",
-                                RunProgramDiagonal};
-  return kCommand;
-}
-
-const Command& ReportCompareCommand() {
-  static const Command kCommand{"report compare",
-       "before/after page: positioning and diagonal results with reductions",
-       "BEFORE AFTER",
-       {{"--output", "-o", "DIR", nullptr, nullptr, "directory for compare.html (required)"}}, nullptr,
-                                "BEFORE and AFTER are report directories written by `evaluate ... --report DIR` (or\n"
-       "single .json results of it); results are paired by name (axis, diagonals).",
-                                RunReportCompare};
   return kCommand;
 }
 

@@ -5,7 +5,6 @@
 #include <cstdio>
 
 #include "volcomp/metrology/diagonal.hpp"
-#include "volcomp/sim/from_tools.hpp"
 
 namespace volcomp::sim {
 namespace {
@@ -51,13 +50,9 @@ Expected<TestProgram> LineTestProgram(const std::string& name,
   p.name = name;
   p.origin_mm = origin_mm;
   p.direction = direction;
-  // TRANSITION(tools): BuildCycle throws std::invalid_argument.
-  const auto cycle = [&] {
-    return metrology::BuildCycle(targets_mm, metrology::Cycle::kLinear, options.runs,
-                                 options.overrun_mm);
-  };
   VOLCOMP_TRY_ASSIGN(const std::vector<metrology::CycleMove> moves,
-                     FromTools(cycle, Error::kInvalidArgument));
+                     metrology::BuildCycle(targets_mm, metrology::Cycle::kLinear, options.runs,
+                                           options.overrun_mm));
   std::string g = "(" + name + ": linear cycle, " + std::to_string(targets_mm.size()) +
                   " targets, " + std::to_string(options.runs) + " runs each way)\n";
   g += "(the instrument is zeroed at the first stop and read at the end of every G4)\n";
@@ -109,13 +104,9 @@ Expected<TestProgram> DiagonalProgram(const std::string& name,
                                       const Point3& p2_mm,
                                       double increment_mm,
                                       const CycleOptions& options) {
-  // TRANSITION(tools): PlanDiagonal throws std::invalid_argument.
-  const auto plan_diagonal = [&] {
-    return metrology::PlanDiagonal({p1_mm[0], p1_mm[1], p1_mm[2]}, {p2_mm[0], p2_mm[1], p2_mm[2]},
-                                   increment_mm);
-  };
   VOLCOMP_TRY_ASSIGN(const metrology::DiagonalPlan plan,
-                     FromTools(plan_diagonal, Error::kInvalidArgument));
+                     metrology::PlanDiagonal({p1_mm[0], p1_mm[1], p1_mm[2]},
+                                             {p2_mm[0], p2_mm[1], p2_mm[2]}, increment_mm));
   const Point3 dir = {plan.travel_mm.x / plan.length_mm, plan.travel_mm.y / plan.length_mm,
                       plan.travel_mm.z / plan.length_mm};
   return LineTestProgram(name, p1_mm, dir, plan.distances, options);

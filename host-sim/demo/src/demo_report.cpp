@@ -1,9 +1,6 @@
 // HTML report and data files of a demo run.
 #include <cmath>
 #include <cstdio>
-#include <filesystem>
-#include <fstream>
-#include <system_error>
 
 #include "volcomp/metrology/diagonal_report.hpp"
 #include "volcomp/metrology/positioning_report.hpp"
@@ -17,24 +14,6 @@ namespace volcomp::sim {
 namespace {
 
 using report::FormatFixed;
-
-Outcome WriteText(const std::string& path, const std::string& text) {
-  std::ofstream f(path);
-  if (!f) return Fail(Error::kIoError, "cannot write " + path);
-  f << text;
-  return Outcome::Ok();
-}
-
-// `dir` and its parents (the text of report::PrepareReportPath, which throws).
-Outcome MakeDirectory(const std::string& dir) {
-  std::error_code ec;
-  std::filesystem::create_directories(dir, ec);
-  if (ec || !std::filesystem::is_directory(dir)) {
-    return Fail(Error::kIoError, dir + ": cannot create report directory" +
-                                     (ec ? " (" + ec.message() + ")" : std::string()));
-  }
-  return Outcome::Ok();
-}
 
 std::string PointsCsv(const PointSetResult& p) {
   std::string csv = "x_mm,y_mm,z_mm,dx_um,dy_um,dz_um,norm_um,true_dx_um,true_dy_um,true_dz_um\n";
@@ -157,15 +136,15 @@ std::vector<Phase> Phases(const DemoResult& r) {
 Outcome WriteWornData(const DemoResult& r, const std::string& dir) {
   for (size_t a = 0; a < 3; ++a) {
     const std::string axis(1, "xyz"[a]);
-    VOLCOMP_TRY(
-        WriteText(dir + "/data/axis_run_" + axis + ".csv", PositioningCsv(r.axis_runs[a].data)));
+    VOLCOMP_TRY(tools::WriteTextFile(dir + "/data/axis_run_" + axis + ".csv",
+                                     PositioningCsv(r.axis_runs[a].data)));
     const model::PositioningData d = PairMeans(MeanDeviations(r.axis_runs[a].iso));
     std::string csv = "position_mm,dev_forward_um,dev_reverse_um\n";
     for (size_t i = 0; i < d.position.size(); ++i) {
       csv += FormatFixed(d.position[i], 4) + "," + FormatFixed(d.dev_forward[i], 4) + "," +
              FormatFixed(d.dev_reverse[i], 4) + "\n";
     }
-    VOLCOMP_TRY(WriteText(dir + "/data/axis_" + axis + ".csv", csv));
+    VOLCOMP_TRY(tools::WriteTextFile(dir + "/data/axis_" + axis + ".csv", csv));
   }
   const model::GridAxes& g = r.lattice.lattice;
   std::string csv = "x_cmd_mm,y_cmd_mm,z_cmd_mm,x_mm,y_mm,z_mm\n";
@@ -181,14 +160,14 @@ Outcome WriteWornData(const DemoResult& r, const std::string& dir) {
       }
     }
   }
-  VOLCOMP_TRY(WriteText(dir + "/data/tracker_lattice.csv", csv));
+  VOLCOMP_TRY(tools::WriteTextFile(dir + "/data/tracker_lattice.csv", csv));
   std::string drift = "after,time_s,table,dx_um,dy_um,dz_um\n";
   for (const DriftCheck& c : r.drift) {
     drift += "\"" + c.after + "\"," + FormatFixed(c.time_s, 2) + "," + std::to_string(c.epoch) +
              "," + FormatFixed(c.reading_um.x, 3) + "," + FormatFixed(c.reading_um.y, 3) + "," +
              FormatFixed(c.reading_um.z, 3) + "\n";
   }
-  VOLCOMP_TRY(WriteText(dir + "/data/drift_checks.csv", drift));
+  VOLCOMP_TRY(tools::WriteTextFile(dir + "/data/drift_checks.csv", drift));
   for (size_t i = 0; i < r.earlier_tables.size(); ++i) {
     VOLCOMP_TRY(tools::WriteFileBytes(dir + "/table" + std::to_string(i + 1) + ".vct",
                                       r.earlier_tables[i].table.image));
@@ -237,29 +216,32 @@ void AddWornSections(report::HtmlPage* page, const DemoResult& r) {
 
 Outcome WriteDemoReport(const DemoResult& r, const std::string& dir) {
   for (const char* sub : {"", "/data", "/programs", "/model"})
-    VOLCOMP_TRY(MakeDirectory(dir + sub));
+    VOLCOMP_TRY(report::PrepareReportPath(dir + sub, "index.html"));
 
   // Data files, in the formats the PC tool reads.
   for (const Phase& ph : Phases(r)) {
     const std::string tag = ph.tag;
     for (size_t a = 0; a < 3; ++a) {
-      VOLCOMP_TRY(WriteText(dir + "/data/gost_" + std::string(1, "xyz"[a]) + "_" + tag + ".csv",
-                            PositioningCsv(ph.results->gost[a].data)));
+      VOLCOMP_TRY(
+          tools::WriteTextFile(dir + "/data/gost_" + std::string(1, "xyz"[a]) + "_" + tag + ".csv",
+                               PositioningCsv(ph.results->gost[a].data)));
     }
-    VOLCOMP_TRY(WriteText(dir + "/data/diagonals_" + tag + ".csv", ph.results->diagonals.csv));
-    VOLCOMP_TRY(WriteText(dir + "/data/points_" + tag + ".csv", PointsCsv(ph.results->points)));
+    VOLCOMP_TRY(
+        tools::WriteTextFile(dir + "/data/diagonals_" + tag + ".csv", ph.results->diagonals.csv));
+    VOLCOMP_TRY(
+        tools::WriteTextFile(dir + "/data/points_" + tag + ".csv", PointsCsv(ph.results->points)));
   }
   if (r.options.machine == MachineProfile::kWorn) VOLCOMP_TRY(WriteWornData(r, dir));
   for (size_t a = 0; a < 3; ++a) {
-    VOLCOMP_TRY(WriteText(dir + "/programs/gost_" + std::string(1, "xyz"[a]) + ".ngc",
-                          r.before.gost[a].program.gcode));
+    VOLCOMP_TRY(tools::WriteTextFile(dir + "/programs/gost_" + std::string(1, "xyz"[a]) + ".ngc",
+                                     r.before.gost[a].program.gcode));
   }
   for (const TestProgram& p : r.before.diagonals.programs) {
     std::string name = p.name;
     for (char& c : name) c = c == '+' ? 'P' : c == '-' ? 'N' : c;
-    VOLCOMP_TRY(WriteText(dir + "/programs/diagonal_" + name + ".ngc", p.gcode));
+    VOLCOMP_TRY(tools::WriteTextFile(dir + "/programs/diagonal_" + name + ".ngc", p.gcode));
   }
-  VOLCOMP_TRY(WriteText(dir + "/programs/points.ngc", r.before.points.program.gcode));
+  VOLCOMP_TRY(tools::WriteTextFile(dir + "/programs/points.ngc", r.before.points.program.gcode));
   VOLCOMP_TRY(WriteModelFiles(r.measured_model, dir + "/model"));
   VOLCOMP_TRY(tools::WriteFileBytes(dir + "/table.vct", r.table.image));
 

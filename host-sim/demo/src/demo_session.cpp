@@ -7,7 +7,6 @@
 
 #include "volcomp/firmware/board_objects.hpp"
 #include "volcomp/metrology/test_program.hpp"
-#include "volcomp/sim/from_tools.hpp"
 #include "volcomp/tools/hex.hpp"
 
 namespace volcomp::sim {
@@ -106,10 +105,7 @@ Outcome PlanTests(Session& s, Random& rng) {
     tp.count = s.o.gost_targets;
     tp.pitch = s.o.gost_pitch_mm;
     tp.seed = static_cast<uint32_t>(rng.Next() & 0x7FFFFFFF);
-    // TRANSITION(tools): PlanGostTargets throws std::invalid_argument (a travel too short).
-    VOLCOMP_TRY_ASSIGN(
-        s.gost[i].targets_mm,
-        FromTools([&] { return metrology::PlanGostTargets(tp); }, Error::kInvalidArgument));
+    VOLCOMP_TRY_ASSIGN(s.gost[i].targets_mm, metrology::PlanGostTargets(tp));
     s.gost[i].line_point_mm = l.centre;
     s.gost[i].cycle.runs = s.o.gost_runs;
     s.gost[i].cycle.dwell_s = s.o.dwell_s;

@@ -6,7 +6,6 @@
 #include <cstdio>
 #include <map>
 
-#include "volcomp/sim/from_tools.hpp"
 #include "volcomp/sim/gcode.hpp"
 #include "volcomp/tools/csv.hpp"
 
@@ -27,12 +26,11 @@ Outcome EvaluateAxis(const metrology::GroupingOptions& grouping, GostAxisResult&
   gost.standard = metrology::Standard::kGost27843;
   metrology::EvaluationOptions iso;
   iso.standard = metrology::Standard::kIso230_2;
-  // TRANSITION(tools): GroupReadings and EvaluatePositioning throw tools::InputError.
-  return FromTools([&] {
-    const metrology::PositioningSet set = metrology::GroupReadings(r.data, grouping);
-    r.gost = metrology::EvaluatePositioning(set, gost);
-    r.iso = metrology::EvaluatePositioning(set, iso);
-  });
+  VOLCOMP_TRY_ASSIGN(const metrology::PositioningSet set,
+                     metrology::GroupReadings(r.data, grouping));
+  VOLCOMP_TRY_ASSIGN(r.gost, metrology::EvaluatePositioning(set, gost));
+  VOLCOMP_TRY_ASSIGN(r.iso, metrology::EvaluatePositioning(set, iso));
+  return Outcome::Ok();
 }
 
 }  // namespace
@@ -125,9 +123,7 @@ Expected<DiagonalSetResult> MeasureDiagonals(World& world,
                      tools::CsvTable::ReadString(r.csv, "ISO 230-6 diagonals"));
   metrology::GroupingOptions grouping;  // ISO 230-6 §5.3: 5 approaches (fewer only if asked)
   grouping.min_approaches = std::max(2, std::min(5, cycle.runs));
-  // TRANSITION(tools): EvaluateDiagonals throws tools::InputError.
-  VOLCOMP_TRY_ASSIGN(r.evaluation,
-                     FromTools([&] { return metrology::EvaluateDiagonals(table, grouping); }));
+  VOLCOMP_TRY_ASSIGN(r.evaluation, metrology::EvaluateDiagonals(table, grouping));
   return r;
 }
 

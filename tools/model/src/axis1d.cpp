@@ -51,7 +51,11 @@ PositioningData PositioningFromCsv(const tools::CsvTable& csv,
   PositioningData d;
   if (!csv.find("position_mm") && !csv.find("position_deg") &&
       metrology::HoldsPositioningReadings(csv)) {
-    const metrology::MeanDeviations m = metrology::MeanDeviationsFromCsv(csv, grouping);
+    // H3: MeanDeviationsFromCsv returns its failure; this function still throws it.
+    const Expected<metrology::MeanDeviations> means =
+        metrology::MeanDeviationsFromCsv(csv, grouping);
+    if (!means.ok()) throw tools::InputError(means.error().message);
+    const metrology::MeanDeviations& m = *means;
     d.rotary = m.kind == metrology::AxisKind::kRotary;
     d.position = m.target;
     d.dev_forward = m.mean_up;

@@ -1,5 +1,5 @@
-// ISO 230-6: diagonal names, target positions (§5.2) and E/B per diagonal on synthetic data with
-// known mean deviations.
+// ISO 230-6 (diagonal.hpp): target positions (§5.2) and E/B per diagonal on synthetic data with
+// known mean deviations; bad input is a failure naming the line.
 #include "volcomp/metrology/diagonal.hpp"
 
 #include <gtest/gtest.h>
@@ -12,44 +12,13 @@
 namespace volcomp::metrology {
 namespace {
 
-using testing::ExpectThrowWith;
-using tools::InputError;
-
-TEST(MetrologyDiagonalName, AcceptedForms) {
-  auto d = ParseDiagonalName("+X+Y-Z");
-  ASSERT_TRUE(d);
-  EXPECT_TRUE(d->body);
-  EXPECT_EQ(d->text, "+X+Y-Z");
-  d = ParseDiagonalName("PPN");
-  ASSERT_TRUE(d);
-  EXPECT_EQ(d->text, "+X+Y-Z");
-  d = ParseDiagonalName("npp");
-  ASSERT_TRUE(d);
-  EXPECT_EQ(d->text, "-X+Y+Z");
-  d = ParseDiagonalName("+X -Y Z300");
-  ASSERT_TRUE(d);
-  EXPECT_FALSE(d->body);
-  EXPECT_EQ(d->plane, "XY");
-  EXPECT_EQ(d->offset, "Z300");
-  EXPECT_EQ(d->text, "+X-Y Z300");
-  d = ParseDiagonalName("NP300");
-  ASSERT_TRUE(d);
-  EXPECT_EQ(d->text, "-X+Y Z300");
-  d = ParseDiagonalName("-Y+Z");
-  ASSERT_TRUE(d);
-  EXPECT_EQ(d->plane, "YZ");
-  d = ParseDiagonalName("+Z-X");
-  ASSERT_TRUE(d);
-  EXPECT_EQ(d->text, "-X+Z");
-  for (const char* bad :
-       {"", "+X", "+X+X", "PPNP", "+X+Y+Z Z3", "+X+Y Z", "+X+Y Y100", "PNPN", "+Q+Y", "X+Y"}) {
-    EXPECT_FALSE(ParseDiagonalName(bad)) << bad;
-  }
-}
+using testing::Csv;
+using testing::ExpectFailure;
+using testing::Must;
 
 TEST(MetrologyDiagonalPlan, TargetsAndAxisIncrementsOfSection5_2) {
   // 3-4-12 box: D = 13·50 = 650 mm.
-  const DiagonalPlan p = PlanDiagonal({0, 0, 0}, {150, 200, 600}, 65.0);
+  const DiagonalPlan p = Must(PlanDiagonal({0, 0, 0}, {150, 200, 600}, 65.0));
   EXPECT_NEAR(p.length_mm, 650.0, 1e-9);
   EXPECT_EQ(p.steps, 10);
   EXPECT_NEAR(p.increment_mm, 65.0, 1e-12);
@@ -62,17 +31,19 @@ TEST(MetrologyDiagonalPlan, TargetsAndAxisIncrementsOfSection5_2) {
   EXPECT_NEAR(p.distances.back(), 650.0, 1e-12);
   EXPECT_TRUE(p.warnings.empty());
   // An increment that does not divide D is rounded (650/90 = 7.2 -> 7 steps), with a warning.
-  const DiagonalPlan q = PlanDiagonal({0, 0, 0}, {150, 200, 600}, 90.0);
+  const DiagonalPlan q = Must(PlanDiagonal({0, 0, 0}, {150, 200, 600}, 90.0));
   EXPECT_EQ(q.steps, 7);
   EXPECT_NEAR(q.increment_mm, 650.0 / 7, 1e-12);
   ASSERT_FALSE(q.warnings.empty());
   EXPECT_NE(q.warnings[0].find("increment adjusted"), std::string::npos);
   // Too few targets: 2 m diagonal, 500 mm increment -> 5 targets, 10 needed.
-  const DiagonalPlan r = PlanDiagonal({0, 0, 0}, {0, 1200, 1600}, 500.0);
+  const DiagonalPlan r = Must(PlanDiagonal({0, 0, 0}, {0, 1200, 1600}, 500.0));
   ASSERT_FALSE(r.warnings.empty());
   EXPECT_NE(r.warnings.back().find("§5.2"), std::string::npos);
-  EXPECT_THROW(PlanDiagonal({1, 1, 1}, {1, 1, 1}, 10.0), std::invalid_argument);
-  EXPECT_THROW(PlanDiagonal({0, 0, 0}, {1, 1, 1}, 0.0), std::invalid_argument);
+  ExpectFailure(PlanDiagonal({1, 1, 1}, {1, 1, 1}, 10.0), Error::kInvalidArgument,
+                {"P1 and P2 are the same point"});
+  ExpectFailure(PlanDiagonal({0, 0, 0}, {1, 1, 1}, 0.0), Error::kInvalidArgument,
+                {"the diagonal increment must be positive"});
 }
 
 // One diagonal's rows: x̄↑_j = up[j], x̄↓_j = down[j]; runs scatter symmetrically about them.
@@ -103,7 +74,7 @@ TEST(MetrologyDiagonalEvaluation, KnownEAndB) {
   AddDiagonal(&csv, "NPP", {-3, -2, -1, 0, 1, 2}, {-2, -2, -2, -2, -2, -2}, 200);  // E 5, B 4
   AddDiagonal(&csv, "+X+Y Z0", {0, 1, 2, 3, 4}, {0, 1, 2, 3, 4}, 250);             // E 4, B 0
   AddDiagonal(&csv, "+X-Y Z0", {0, 0, 0, 0, 0}, {-6, 0, 0, 0, 0}, 250);            // E 6, B 6
-  const auto ev = EvaluateDiagonals(tools::CsvTable::ParseString(csv, "d.csv"), GroupingOptions{});
+  const auto ev = Must(EvaluateDiagonals(Csv(csv, "d.csv"), GroupingOptions{}));
   ASSERT_EQ(ev.diagonals.size(), 6u);
   const double e[6] = {11, 4, 2.5, 5, 4, 6}, b[6] = {1, 4, 2.5, 4, 0, 6};
   for (int i = 0; i < 6; ++i) {
@@ -131,7 +102,7 @@ TEST(MetrologyDiagonalEvaluation, WarnsAboutMissingAndRepeatedBodyDiagonals) {
   std::string csv = "diagonal,target_mm,direction,run,deviation_um\n";
   AddDiagonal(&csv, "+X+Y+Z", {0, 1, 2, 3, 4, 5}, {0, 1, 2, 3, 4, 5}, 200);
   AddDiagonal(&csv, "-X-Y-Z", {0, 1, 2, 3, 4, 5}, {0, 1, 2, 3, 4, 5}, 200);
-  const auto ev = EvaluateDiagonals(tools::CsvTable::ParseString(csv, "d.csv"), GroupingOptions{});
+  const auto ev = Must(EvaluateDiagonals(Csv(csv, "d.csv"), GroupingOptions{}));
   std::string all;
   for (const auto& w : ev.warnings) all += w + "\n";
   EXPECT_NE(all.find("same body diagonal"), std::string::npos) << all;
@@ -141,7 +112,7 @@ TEST(MetrologyDiagonalEvaluation, WarnsAboutMissingAndRepeatedBodyDiagonals) {
 TEST(MetrologyDiagonalEvaluation, TooFewTargetsPerMetreWarns) {
   std::string csv = "diagonal,target_mm,direction,run,deviation_um\n";
   AddDiagonal(&csv, "+X+Y", {0, 1, 2, 3, 4}, {0, 1, 2, 3, 4}, 500);  // 5 targets on 2 m
-  const auto ev = EvaluateDiagonals(tools::CsvTable::ParseString(csv, "d.csv"), GroupingOptions{});
+  const auto ev = Must(EvaluateDiagonals(Csv(csv, "d.csv"), GroupingOptions{}));
   std::string all;
   for (const auto& w : ev.warnings) all += w + "\n";
   EXPECT_NE(all.find("§5.2: 5 targets on 2000 mm; at least 10"), std::string::npos) << all;
@@ -152,33 +123,22 @@ TEST(MetrologyDiagonalEvaluation, BadInput) {
   AddDiagonal(&csv, "PPP", {0, 1, 2, 3, 4}, {0, 1, 2, 3, 4}, 200);
   std::string bad_name = csv;
   bad_name.replace(bad_name.find("\"PPP\""), 5, "\"PQP\"");
-  ExpectThrowWith<InputError>(
-      [&] {
-        EvaluateDiagonals(tools::CsvTable::ParseString(bad_name, "d.csv"), GroupingOptions{});
-      },
-      {"d.csv:2:", "\"PQP\" is not a diagonal name"});
-  ExpectThrowWith<InputError>(
-      [&] {
-        EvaluateDiagonals(tools::CsvTable::ParseString(
-                              "target_mm,direction,run,deviation_um\n0,up,1,1\n", "d.csv"),
-                          GroupingOptions{});
-      },
-      {"d.csv:1:", "missing column \"diagonal\""});
+  ExpectFailure(EvaluateDiagonals(Csv(bad_name, "d.csv"), GroupingOptions{}), Error::kInputInvalid,
+                {"d.csv:2:", "\"PQP\" is not a diagonal name"});
+  ExpectFailure(EvaluateDiagonals(Csv("target_mm,direction,run,deviation_um\n0,up,1,1\n", "d.csv"),
+                                  GroupingOptions{}),
+                Error::kInputInvalid, {"d.csv:1:", "missing column \"diagonal\""});
   std::string up_only = "diagonal,target_mm,direction,run,deviation_um\n";
   for (int run = 1; run <= 5; ++run) {
     for (int t = 0; t < 5; ++t) {
       up_only += "PPP," + std::to_string(t * 100) + ",up," + std::to_string(run) + ",0\n";
     }
   }
-  ExpectThrowWith<InputError>(
-      [&] { EvaluateDiagonals(tools::CsvTable::ParseString(up_only, "d.csv"), GroupingOptions{}); },
-      {"d.csv:2:", "diagonal +X+Y+Z has only one direction", "§5.3"});
+  ExpectFailure(EvaluateDiagonals(Csv(up_only, "d.csv"), GroupingOptions{}), Error::kInputInvalid,
+                {"d.csv:2:", "diagonal +X+Y+Z has only one direction", "§5.3"});
   std::string wrong_unit = "diagonal,target_deg,direction,run,deviation_arcsec\nPPP,0,up,1,0\n";
-  ExpectThrowWith<InputError>(
-      [&] {
-        EvaluateDiagonals(tools::CsvTable::ParseString(wrong_unit, "d.csv"), GroupingOptions{});
-      },
-      {"d.csv:1:", "target_mm"});
+  ExpectFailure(EvaluateDiagonals(Csv(wrong_unit, "d.csv"), GroupingOptions{}),
+                Error::kInputInvalid, {"d.csv:1:", "target_mm"});
 }
 
 }  // namespace

@@ -1,33 +1,42 @@
-// The worked example of GOST 27843-88 (appendix), evaluated from the reconstructed readings in
-// tests/metrology/data/gost27843_example_reconstructed.csv.
+// Positioning evaluation (positioning_eval.hpp): the worked example of GOST 27843-88 (appendix),
+// evaluated from the reconstructed readings in
+// tests/tools/metrology/data/gost27843_example_reconstructed.csv, and ISO 230-2:2014 / GOST 27843
+// parameters on a small data set whose values are worked out by hand in the comments.
 //
 // Expected values come from the standard's printed table and results, and from an independent
 // recomputation by hand/with a separate script of formulas (2)-(10) on the reconstructed
 // readings (the "exact" values below, to 1e-4 µm). Printed values that are inconsistent with the
 // printed readings/statistics themselves are listed with the reason; see docs/metrology.md.
+#include "volcomp/metrology/positioning_eval.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 #include "test_support.hpp"
 #include "volcomp/metrology/positioning_csv.hpp"
-#include "volcomp/metrology/positioning_eval.hpp"
 
 namespace volcomp::metrology {
 namespace {
 
+using testing::Csv;
+using testing::ExpectFailure;
+using testing::Must;
 using testing::RepoPath;
 
+PositioningSet Grouped(const tools::CsvTable& table) {
+  return Must(GroupReadings(Must(ReadPositioningCsv(table)), GroupingOptions{}));
+}
+
 PositioningResult Evaluate(const std::string& relative, SigmaMethod sigma = SigmaMethod::kFormula) {
-  const auto table = tools::CsvTable::ParseFile(RepoPath(relative));
-  const PositioningSet set = GroupReadings(ReadPositioningCsv(table), GroupingOptions{});
+  const PositioningSet set = Grouped(Must(tools::CsvTable::ReadFile(RepoPath(relative))));
   EvaluationOptions o;
   o.standard = Standard::kGost27843;
   o.sigma = sigma;
-  return EvaluatePositioning(set, o);
+  return Must(EvaluatePositioning(set, o));
 }
 
-const char* const kFixture = "tests/metrology/data/gost27843_example_reconstructed.csv";
+const char* const kFixture = "tests/tools/metrology/data/gost27843_example_reconstructed.csv";
 
 // Printed per-position table. Corrected entries (the printed value is inconsistent with its own
 // readings or with the other printed columns) carry the corrected value here and are listed in
@@ -169,6 +178,109 @@ TEST(MetrologyGost27843Example, RangeMethodUsesTheCoefficientA5) {
   // 11↓ readings -2.9 -1.8 -0.2 0.0 -2.8: W = 2.9.
   EXPECT_NEAR(r.positions[10].down->s, 2.9 * 0.4299, 1e-12);
   EXPECT_NEAR(r.positions[10].down->upper, -1.54 + 3 * 2.9 * 0.4299, 1e-12);
+}
+
+// P=0:   ↑ 1 2 3 4 5 (x̄ 3, s √2.5)   ↓ -1 ×5 (x̄ -1, s 0)          B = 4
+// P=100: ↑ 0 ×5      (x̄ 0, s 0)       ↓ 2 ×5  (x̄ 2, s 0)           B = -2
+// P=200: ↑ -2 ×5     (x̄ -2, s 0)      ↓ -3 -1 -3 -1 -2 (x̄ -2, s 1)  B = 0
+std::string HandData() {
+  const double up[3][5] = {{1, 2, 3, 4, 5}, {0, 0, 0, 0, 0}, {-2, -2, -2, -2, -2}};
+  const double down[3][5] = {{-1, -1, -1, -1, -1}, {2, 2, 2, 2, 2}, {-3, -1, -3, -1, -2}};
+  std::string csv = "target_mm,direction,run,deviation_um\n";
+  for (int run = 0; run < 5; ++run) {
+    for (int j = 0; j < 3; ++j) {
+      csv += std::to_string(100 * j) + ",+," + std::to_string(run + 1) + "," +
+             std::to_string(up[j][run]) + "\n";
+    }
+    for (int j = 2; j >= 0; --j) {
+      csv += std::to_string(100 * j) + ",-," + std::to_string(run + 1) + "," +
+             std::to_string(down[j][run]) + "\n";
+    }
+  }
+  return csv;
+}
+
+PositioningResult Evaluate(const std::string& csv, Standard s) {
+  EvaluationOptions o;
+  o.standard = s;
+  return Must(EvaluatePositioning(Grouped(Csv(csv, "hand.csv")), o));
+}
+
+TEST(MetrologyIso230_2, HandComputedParameters) {
+  const PositioningResult r = Evaluate(HandData(), Standard::kIso230_2);
+  const double s1 = std::sqrt(2.5);
+  EXPECT_DOUBLE_EQ(r.k, 2.0);
+  EXPECT_NEAR(r.systematic_up->value, 5.0, 1e-12);             // 3 - (-2)
+  EXPECT_NEAR(r.systematic_down->value, 4.0, 1e-12);           // 2 - (-2)
+  EXPECT_NEAR(r.systematic->value, 5.0, 1e-12);                // max(3, 2) - min(-2, -2)
+  EXPECT_NEAR(r.mean_bidirectional_range->value, 3.0, 1e-12);  // x̄_j = 1, 1, -2
+  EXPECT_NEAR(r.accuracy_up->value, 3 + 2 * s1 + 2, 1e-12);
+  EXPECT_NEAR(r.accuracy_down->value, 2 + 4, 1e-12);  // max 2 (P100), min -2 - 2·1 (P200)
+  EXPECT_NEAR(r.accuracy->value, 3 + 2 * s1 + 4, 1e-12);
+  EXPECT_NEAR(r.repeatability_up->value, 4 * s1, 1e-12);
+  EXPECT_NEAR(r.repeatability_down->value, 4.0, 1e-12);
+  // R_1 = max(2s↑ + 2s↓ + |B|, 4s↑, 4s↓) = max(2√2.5 + 4, 4√2.5) = 2√2.5 + 4.
+  EXPECT_NEAR(r.repeatability->value, 2 * s1 + 4, 1e-12);
+  EXPECT_EQ(r.repeatability->position, 0u);
+  EXPECT_NEAR(r.reversal_max->value, 4.0, 1e-12);
+  EXPECT_NEAR(*r.reversal_mean, 2.0 / 3.0, 1e-12);
+  EXPECT_EQ(r.systematic->min.position, 2u);
+  EXPECT_EQ(r.accuracy->min.direction, Direction::kDown);
+}
+
+TEST(MetrologyGost27843, SameDataWithThreeSigma) {
+  const PositioningResult r = Evaluate(HandData(), Standard::kGost27843);
+  const double s1 = std::sqrt(2.5);
+  EXPECT_NEAR(r.accuracy->value, 3 + 3 * s1 + 5, 1e-12);  // min is -2 - 3·1 at P200↓
+  // Formula (8): 6S↑ = 6√2.5 = 9.49 exceeds 3S↑ + 3S↓ + |B| = 8.74 at P0.
+  EXPECT_NEAR(r.repeatability->value, 6 * s1, 1e-12);
+  // Formula (9): (ΣR↑ + ΣR↓)/2m = (6√2.5 + 6)/6.
+  EXPECT_NEAR(*r.mean_repeatability, (6 * s1 + 6) / 6.0, 1e-12);
+}
+
+TEST(MetrologyPositioning, UnidirectionalDataGiveUnidirectionalValuesOnly) {
+  const std::string csv =
+      "target_mm,direction,run,deviation_um\n"
+      "0,up,1,1\n0,up,2,2\n0,up,3,3\n0,up,4,4\n0,up,5,5\n"
+      "50,up,1,0\n50,up,2,0\n50,up,3,0\n50,up,4,0\n50,up,5,0\n";
+  const PositioningResult r = Evaluate(csv, Standard::kIso230_2);
+  EXPECT_FALSE(r.bidirectional);
+  EXPECT_FALSE(r.accuracy.has_value());
+  EXPECT_FALSE(r.repeatability.has_value());
+  EXPECT_FALSE(r.accuracy_down.has_value());
+  ASSERT_TRUE(r.accuracy_up.has_value());
+  EXPECT_NEAR(r.accuracy_up->value, 4 * std::sqrt(2.5), 1e-12);  // (3 + 2s) - (3 - 2s)
+  ASSERT_FALSE(r.warnings.empty());
+  EXPECT_NE(r.warnings[0].find("unidirectional"), std::string::npos);
+}
+
+TEST(MetrologyPositioning, RotaryMeasuredAnglesWrapAndConvertToArcSeconds) {
+  std::string csv = "target_deg,direction,run,measured_deg\n";
+  for (int run = 1; run <= 5; ++run) {
+    for (int a : {0, 90, 180, 270}) {
+      const double measured = a == 0 ? 359.999 : a + 0.001;  // -3.6″ and +3.6″
+      csv +=
+          std::to_string(a) + ",up," + std::to_string(run) + "," + std::to_string(measured) + "\n";
+    }
+  }
+  const auto data = Must(ReadPositioningCsv(Csv(csv, "rot.csv")));
+  EXPECT_EQ(data.kind, AxisKind::kRotary);
+  const auto set = Must(GroupReadings(data, GroupingOptions{}));
+  const PositioningResult r = Must(EvaluatePositioning(set, EvaluationOptions{}));
+  EXPECT_NEAR(r.positions[0].up->mean, -3.6, 1e-6);
+  EXPECT_NEAR(r.positions[1].up->mean, 3.6, 1e-6);
+}
+
+TEST(MetrologyPositioningInput, RangeMethodNeedsFiveToTenApproaches) {
+  std::string csv = "target_mm,direction,run,deviation_um\n";
+  for (int run = 1; run <= 11; ++run) {
+    for (int t : {0, 100}) csv += std::to_string(t) + ",up," + std::to_string(run) + ",1\n";
+  }
+  const PositioningSet s = Grouped(Csv(csv, "p.csv"));
+  EvaluationOptions o;
+  o.sigma = SigmaMethod::kRange;
+  ExpectFailure(EvaluatePositioning(s, o), Error::kInputInvalid,
+                {"p.csv:2:", "range method", "has 11"});
 }
 
 }  // namespace

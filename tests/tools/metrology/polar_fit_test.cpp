@@ -1,14 +1,20 @@
-// Minimum-zone (MRS) centre: exact on equi-oscillating profiles, never worse than LSC or PC, and
-// locally optimal (the zone is convex in the centre, so local = global).
+// Centres of polar profiles (polar_fit.hpp): the minimum-zone (MRS) centre is exact on
+// equi-oscillating profiles, never worse than LSC or PC, and locally optimal (the zone is convex in
+// the centre, so local = global); the LSC closed form; too few angles are failures.
+#include "volcomp/metrology/polar_fit.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <random>
 
-#include "volcomp/metrology/polar_fit.hpp"
+#include "test_support.hpp"
 
 namespace volcomp::metrology {
 namespace {
+
+using testing::ExpectFailure;
+using testing::Must;
 
 constexpr double kPi = 3.14159265358979323846;
 
@@ -22,7 +28,7 @@ TEST(MetrologyMinimumZone, RecoversTheCentreOfAnOffsetLobedProfile) {
     a.push_back(4.0 * j);
     p.push_back(1 + 0.3 * std::cos(th) + 0.2 * std::sin(th) + A * std::cos(3 * th));
   }
-  const CentreFit mz = FitMinimumZoneCentre(a, p);
+  const CentreFit mz = Must(FitMinimumZoneCentre(a, p));
   EXPECT_NEAR(mz.a, 0.3, 1e-9);
   EXPECT_NEAR(mz.b, 0.2, 1e-9);
   EXPECT_NEAR(ValueAbout(a, p, mz.a, mz.b), 2 * A, 1e-9);
@@ -39,8 +45,8 @@ TEST(MetrologyMinimumZone, NeverWiderThanLscOrPcAndLocallyOptimal) {
       a.push_back(360.0 * (j + 0.3 * u(rng) + 0.3) / n);
       p.push_back(u(rng) + 0.5 * std::cos(a.back() * kPi / 180 + 1.0));
     }
-    const CentreFit lsc = FitLeastSquaresCentre(a, p);
-    const CentreFit mz = FitMinimumZoneCentre(a, p);
+    const CentreFit lsc = Must(FitLeastSquaresCentre(a, p));
+    const CentreFit mz = Must(FitMinimumZoneCentre(a, p));
     const double v = ValueAbout(a, p, mz.a, mz.b);
     EXPECT_LE(v, ValueAbout(a, p, lsc.a, lsc.b) + 1e-12) << trial;
     EXPECT_LE(v, ValueAbout(a, p, 0.0, 0.0) + 1e-12) << trial;
@@ -59,15 +65,17 @@ TEST(MetrologyLeastSquaresCentre, ClosedFormForEqualSpacing) {
     a.push_back(10.0 * j);
     p.push_back(0.7 - 0.4 * std::cos(th) + 0.9 * std::sin(th) + 0.1 * std::cos(2 * th));
   }
-  const CentreFit c = FitLeastSquaresCentre(a, p);
+  const CentreFit c = Must(FitLeastSquaresCentre(a, p));
   EXPECT_NEAR(c.mean, 0.7, 1e-12);
   EXPECT_NEAR(c.a, -0.4, 1e-12);
   EXPECT_NEAR(c.b, 0.9, 1e-12);
 }
 
 TEST(MetrologyCentres, RejectTooFewAngles) {
-  EXPECT_THROW(FitLeastSquaresCentre({0, 0, 360}, {1, 2, 3}), std::invalid_argument);
-  EXPECT_THROW(FitMinimumZoneCentre({0, 90, 180}, {1, 2, 3}), std::invalid_argument);
+  ExpectFailure(FitLeastSquaresCentre({0, 0, 360}, {1, 2, 3}), Error::kInvalidArgument,
+                {"least-squares centre needs at least 3 distinct angles"});
+  ExpectFailure(FitMinimumZoneCentre({0, 90, 180}, {1, 2, 3}), Error::kInvalidArgument,
+                {"minimum-zone centre needs at least 4 distinct angles"});
 }
 
 }  // namespace

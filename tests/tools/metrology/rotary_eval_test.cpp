@@ -1,60 +1,30 @@
-// ISO 230-7 closed-form cases (reference digest §8): eccentricity, two-lobe motion (A.11),
-// stiffness asymmetry (A.10), half-speed component, noise averaging, FFT equivalence, Donaldson
-// reversal round trip, tilt and face consistency (A.2, A.3, A.5, A.6).
-#include "volcomp/metrology/error_motion.hpp"
+// ISO 230-7 evaluation of a record (rotary_eval.hpp): profiles from the channels for both
+// sensitive directions, tilt, axial and face, the Donaldson reversal, and options that do not fit
+// the channels (failures naming the file).
+#include "volcomp/metrology/rotary_eval.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <complex>
 #include <random>
+#include <utility>
 
-#include "volcomp/metrology/polar_fit.hpp"
-#include "volcomp/metrology/rotary_eval.hpp"
+#include "rotary_fixtures.hpp"
+#include "test_support.hpp"
 
 namespace volcomp::metrology {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+using testing::Angles;
+using testing::Csv;
+using testing::ExpectFailure;
+using testing::kPi;
+using testing::Make;
+using testing::Must;
+using testing::Record;
 
-std::vector<double> Angles(int n) {
-  std::vector<double> a(n);
-  for (int j = 0; j < n; ++j) a[j] = 360.0 * j / n;
-  return a;
-}
-
-// u[k][j] = f(θ_total) with θ_total = θ_j + 360°·k in radians.
-template <typename F>
-Revolutions Make(int n, int k_revs, F f) {
-  Revolutions u(k_revs, std::vector<double>(n));
-  for (int k = 0; k < k_revs; ++k) {
-    for (int j = 0; j < n; ++j) u[k][j] = f(2 * kPi * (j / static_cast<double>(n) + k));
-  }
-  return u;
-}
-
-// A record with the given channels, sampled at n angles over k revolutions.
-RotaryRecord Record(int n, int k_revs, const std::map<std::string, Revolutions>& channels) {
-  RotaryRecord r;
-  r.source = "synthetic";
-  r.angle_deg = Angles(n);
-  for (int k = 0; k < k_revs; ++k) r.revs.push_back(k + 1);
-  r.channels = channels;
-  return r;
-}
-
-TEST(MetrologyErrorMotion, PureEccentricityFixedDirection) {
-  const double e = 3.0, phi = 35.0 * kPi / 180;  // peaks fall on the 5° sampling grid
-  const auto em = AnalyseErrorMotion(
-      Angles(72), Make(72, 4, [&](double t) { return e * std::cos(t + phi); }), true);
-  EXPECT_NEAR(em.lsc.synchronous, 0.0, 1e-9);
-  EXPECT_NEAR(em.pc.synchronous, 2 * e, 1e-9);
-  EXPECT_NEAR(em.fundamental_value, 2 * e, 1e-9);
-  EXPECT_NEAR(std::hypot(em.lsc.a, em.lsc.b), e, 1e-9);
-  EXPECT_NEAR(em.fundamental_angle_deg, -phi * 180 / kPi, 1e-7);
-  EXPECT_NEAR(em.asynchronous_value, 0.0, 1e-12);
-  EXPECT_NEAR(em.mz->synchronous, 0.0, 1e-7);
-}
+RotaryRecord Load(const std::string& csv) { return Must(ReadRotaryCsv(Csv(csv, "r.csv"))); }
 
 TEST(MetrologyErrorMotion, TwoLobeMotionFixedVersusRotatingSensitiveDirection) {
   // A.11-A.18: ΔX = A cos 2θ, ΔY = A sin 2θ.
@@ -65,10 +35,10 @@ TEST(MetrologyErrorMotion, TwoLobeMotionFixedVersusRotatingSensitiveDirection) {
   RotaryOptions fsd;
   fsd.sensitive = SensitiveDirection::kFixed;
   fsd.fsd_angle_deg = 0.0;
-  const auto f = EvaluateRotary(Record(n, k, {{"x_um", x}, {"y_um", y}}), fsd);
+  const auto f = Must(EvaluateRotary(Record(n, k, {{"x_um", x}, {"y_um", y}}), fsd));
   EXPECT_NEAR(f.measurements[0].motion.lsc.synchronous, 2 * A, 1e-9);  // (A.14): 2A
   EXPECT_NEAR(f.measurements[0].motion.pc.synchronous, 2 * A, 1e-9);
-  const auto r = EvaluateRotary(Record(n, k, {{"x_um", x}, {"y_um", y}}), RotaryOptions{});
+  const auto r = Must(EvaluateRotary(Record(n, k, {{"x_um", x}, {"y_um", y}}), RotaryOptions{}));
   // (A.15)-(A.18): r = r0 + A cos θ, a circle: 0 about LSC, 2A about PC.
   EXPECT_NEAR(r.measurements[0].motion.lsc.synchronous, 0.0, 1e-9);
   EXPECT_NEAR(r.measurements[0].motion.pc.synchronous, 2 * A, 1e-9);
@@ -80,7 +50,7 @@ TEST(MetrologyErrorMotion, StiffnessAsymmetry) {
   const int n = 64, k = 2;
   const auto x = Make(n, k, [&](double t) { return (e - d) * std::cos(t); });
   const auto y = Make(n, k, [&](double t) { return (e + d) * std::sin(t); });
-  const auto rsd = EvaluateRotary(Record(n, k, {{"x_um", x}, {"y_um", y}}), RotaryOptions{});
+  const auto rsd = Must(EvaluateRotary(Record(n, k, {{"x_um", x}, {"y_um", y}}), RotaryOptions{}));
   EXPECT_NEAR(rsd.measurements[0].motion.lsc.synchronous, 2 * d, 1e-9);  // r = r0 + e − δ cos 2θ
   ASSERT_TRUE(rsd.radial_fundamentals);
   EXPECT_NEAR(rsd.radial_fundamentals->positive_um, e, 1e-9);  // c₊ = e
@@ -90,67 +60,8 @@ TEST(MetrologyErrorMotion, StiffnessAsymmetry) {
     RotaryOptions o;
     o.sensitive = SensitiveDirection::kFixed;
     o.fsd_angle_deg = angle;
-    const auto f = EvaluateRotary(Record(n, k, {{"x_um", x}, {"y_um", y}}), o);
+    const auto f = Must(EvaluateRotary(Record(n, k, {{"x_um", x}, {"y_um", y}}), o));
     EXPECT_NEAR(f.measurements[0].motion.lsc.synchronous, 0.0, 1e-9) << angle;
-  }
-}
-
-TEST(MetrologyErrorMotion, HalfSpeedComponentIsAsynchronous) {
-  const double B = 0.4;
-  const int n = 48;
-  for (int k : {2, 4, 8}) {
-    const auto base = Make(n, k, [](double t) { return 0.5 * std::cos(3 * t); });
-    const auto with =
-        Make(n, k, [&](double t) { return 0.5 * std::cos(3 * t) + B * std::cos(t / 2); });
-    const auto a = AnalyseErrorMotion(Angles(n), base, false);
-    const auto b = AnalyseErrorMotion(Angles(n), with, false);
-    for (int j = 0; j < n; ++j) EXPECT_NEAR(a.synchronous[j], b.synchronous[j], 1e-12);
-    EXPECT_NEAR(b.asynchronous_value, 2 * B, 1e-12) << k;  // at θ = 0 where |cos(θ/2)| = 1
-    EXPECT_NEAR(b.asynchronous_angle_deg, 0.0, 1e-12);
-    EXPECT_LE(b.pc.total, a.pc.synchronous + 2 * B + 1e-12);
-    EXPECT_GE(b.pc.total, b.asynchronous_value);
-  }
-}
-
-TEST(MetrologyErrorMotion, NoiseInTheSynchronousPlotFallsAsOneOverRootK) {
-  std::mt19937 rng(42);
-  std::normal_distribution<double> noise(0.0, 1.0);
-  const int n = 256;
-  auto sync_rms = [&](int k) {
-    const auto em =
-        AnalyseErrorMotion(Angles(n), Make(n, k, [&](double) { return noise(rng); }), false);
-    double s = 0;
-    for (double v : em.synchronous) s += v * v;
-    return std::sqrt(s / n);
-  };
-  const double r4 = sync_rms(4), r64 = sync_rms(64);
-  EXPECT_NEAR(r4, 0.5, 0.08);     // 1/√4
-  EXPECT_NEAR(r64, 0.125, 0.02);  // 1/√64
-}
-
-TEST(MetrologyErrorMotion, AveragingEqualsKeepingTheHarmonicBinsOfTheWholeRecord) {
-  std::mt19937 rng(5);
-  std::uniform_real_distribution<double> v(-1.0, 1.0);
-  const int n = 16, k = 4, total = n * k;
-  Revolutions u(k, std::vector<double>(n));
-  std::vector<double> flat;
-  for (auto& rev : u) {
-    for (double& x : rev) {
-      x = v(rng);
-      flat.push_back(x);
-    }
-  }
-  // DFT of the K·N record; keep the bins at multiples of K (integer multiples of the rotation
-  // frequency), inverse transform, compare with the revolution average.
-  std::vector<std::complex<double>> spec(total);
-  for (int f = 0; f < total; ++f) {
-    for (int t = 0; t < total; ++t) spec[f] += flat[t] * std::polar(1.0, -2 * kPi * f * t / total);
-  }
-  const auto em = AnalyseErrorMotion(Angles(n), u, false);
-  for (int t = 0; t < n; ++t) {
-    std::complex<double> s = 0;
-    for (int f = 0; f < total; f += k) s += spec[f] * std::polar(1.0, 2 * kPi * f * t / total);
-    EXPECT_NEAR(s.real() / total, em.synchronous[t], 1e-10);
   }
 }
 
@@ -170,7 +81,7 @@ TEST(MetrologyErrorMotion, DonaldsonReversalRoundTrip) {
   }
   for (const auto& [t2, proc] :
        {std::make_pair(t2p, ReversalProcedure::kP), std::make_pair(t2s, ReversalProcedure::kS)}) {
-    const ReversalResult r = DonaldsonReversal(a, t1, t2, proc);
+    const ReversalResult r = Must(DonaldsonReversal(a, t1, t2, proc));
     for (int j = 0; j < n; ++j) {
       EXPECT_NEAR(r.artefact[j], p[j], 0.01);
       EXPECT_NEAR(r.spindle[j], s[j], 0.01);
@@ -196,11 +107,11 @@ TEST(MetrologyErrorMotion, TiltFromTwoPlanesAndFromAxialAndFace) {
   o.sensitive = SensitiveDirection::kFixed;
   o.tilt_distance_mm = L;
   o.face_radius_mm = R;
-  const auto ev = EvaluateRotary(
+  const auto ev = Must(EvaluateRotary(
       Record(
           n, k,
           {{"x_um", at(z1)}, {"x2_um", at(z1 + L)}, {"z_um", Make(n, k, e_z)}, {"face_um", face}}),
-      o);
+      o));
   const RotaryMeasurement* tilt = nullptr;
   const RotaryMeasurement* tilt_af = nullptr;
   const RotaryMeasurement* axial = nullptr;
@@ -240,8 +151,8 @@ TEST(MetrologyErrorMotion, RotatingTiltUsesThePlaneDifferenceInFormulaOne) {
       Make(n, k, [&](double t) { return L * 1000.0 * 2e-6 * std::sin(t) * std::cos(2 * t); });
   RotaryOptions o;
   o.tilt_distance_mm = L;
-  const auto ev = EvaluateRotary(
-      Record(n, k, {{"x_um", zero}, {"y_um", zero}, {"x2_um", x2}, {"y2_um", y2}}), o);
+  const auto ev = Must(EvaluateRotary(
+      Record(n, k, {{"x_um", zero}, {"y_um", zero}, {"x2_um", x2}, {"y2_um", y2}}), o));
   for (const auto& m : ev.measurements) {
     if (m.key != "tilt") continue;
     // r = ΔX cos θ + ΔY sin θ = 2 µrad · cos 2θ.
@@ -249,6 +160,46 @@ TEST(MetrologyErrorMotion, RotatingTiltUsesThePlaneDifferenceInFormulaOne) {
     return;
   }
   FAIL() << "no tilt measurement";
+}
+
+TEST(MetrologyRotaryEvaluation, OptionsThatDoNotFitTheChannels) {
+  const RotaryRecord only_x = Load("rev,angle_deg,x_um\n1,0,0\n1,90,1\n1,180,0\n1,270,1\n");
+  ExpectFailure(EvaluateRotary(only_x, RotaryOptions{}), Error::kInputInvalid,
+                {"r.csv: ", "rotating sensitive direction", "y_um"});
+  RotaryOptions fixed45;
+  fixed45.sensitive = SensitiveDirection::kFixed;
+  fixed45.fsd_angle_deg = 45.0;
+  ExpectFailure(EvaluateRotary(only_x, fixed45), Error::kInputInvalid, {"y_um"});
+  std::string csv = "rev,angle_deg,x_um,y_um,x2_um,y2_um\n";
+  for (int j = 0; j < 8; ++j) csv += "1," + std::to_string(45 * j) + ",0,0,0,0\n";
+  const auto ev = Must(EvaluateRotary(Load(csv), RotaryOptions{}));
+  ASSERT_EQ(ev.measurements.size(), 2u);  // radial at both planes, no tilt
+  ASSERT_FALSE(ev.warnings.empty());
+  EXPECT_NE(ev.warnings.front().find("--tilt-distance-mm"), std::string::npos);
+}
+
+TEST(MetrologyRotaryEvaluation, ReversalOfTwoRecordsNeedsTheSameAnglesAndTheChannel) {
+  const int n = 8;
+  const auto lobes = Make(n, 2, [](double t) { return std::cos(2 * t); });
+  const RotaryRecord one = Record(n, 2, {{"x_um", lobes}});
+  RotaryRecord two = Record(n, 2, {{"x_um", lobes}});
+  two.source = "setup2.csv";
+  const ReversalResult r = Must(DonaldsonReversal(one, two, "x_um", ReversalProcedure::kS));
+  EXPECT_NEAR(r.spindle_value, 2.0, 1e-9);  // S = (T1 + T2)/2 = cos 2θ
+  EXPECT_NEAR(r.artefact_value, 0.0, 1e-9);
+  ExpectFailure(DonaldsonReversal(one, two, "y_um", ReversalProcedure::kP), Error::kInputInvalid,
+                {"synthetic: no column \"y_um\" for the reversal"});
+  RotaryRecord other = Record(n + 1, 2, {{"x_um", Make(n + 1, 2, [](double) { return 0.0; })}});
+  other.source = "setup2.csv";
+  ExpectFailure(DonaldsonReversal(one, other, "x_um", ReversalProcedure::kP), Error::kInputInvalid,
+                {"setup2.csv: the reversal record has 9 angles per revolution, synthetic has 8"});
+  other = Record(n, 2, {{"x_um", lobes}});
+  other.source = "setup2.csv";
+  other.angle_deg[1] += 1.0;
+  ExpectFailure(DonaldsonReversal(one, other, "x_um", ReversalProcedure::kP), Error::kInputInvalid,
+                {"setup2.csv: the reversal record must use the angles of synthetic"});
+  ExpectFailure(DonaldsonReversal(Angles(n), {1.0}, {1.0}, ReversalProcedure::kP),
+                Error::kInvalidArgument, {"same angles"});
 }
 
 }  // namespace

@@ -1,40 +1,28 @@
-// The integrator's workflow through the commands, as `volcomp` runs them (RunCommandLine): no
+// The integrator's workflow through the metrology commands, as `volcomp` runs them (RunCli): no
 // measurement is lost, reports are named after what they evaluate, test conditions reach the
 // reports, data in the shapes users have (';' and decimal comma) evaluate like plain CSV.
 #include <gtest/gtest.h>
 
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <functional>
-#include <iostream>
 #include <map>
 #include <regex>
 #include <sstream>
 
-#include "commands.hpp"
-#include "test_support.hpp"
+#include "cli_runner.hpp"
 
 namespace volcomp::tools {
 namespace {
 
-using metrology::testing::RepoPath;
+using Result = volcomp::testing::CliResult;
 
-struct Result {
-  int code = -1;
-  std::string out, err;
-};
+Result Volcomp(const std::vector<std::string>& words) { return volcomp::testing::RunCli(words); }
 
-Result Volcomp(const std::vector<std::string>& words) {
-  Result r;
-  std::ostringstream out, err;
-  auto* old_out = std::cout.rdbuf(out.rdbuf());
-  auto* old_err = std::cerr.rdbuf(err.rdbuf());
-  r.code = cli::RunCommandLine(words);
-  std::cout.rdbuf(old_out);
-  std::cerr.rdbuf(old_err);
-  r.out = out.str();
-  r.err = err.str();
-  return r;
+std::string RepoPath(const std::string& relative) {
+  const char* root = std::getenv("VOLCOMP_SOURCE_DIR");
+  return std::string(root ? root : ".") + "/" + relative;
 }
 
 std::string Read(const std::string& path) {
