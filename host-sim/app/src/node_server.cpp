@@ -8,6 +8,7 @@
 #include <fstream>
 #include <memory>
 #include <stdexcept>
+#include <type_traits>
 
 #include "volcomp/can_io/slcan_server.hpp"
 #include "volcomp/can_io/transport.hpp"
@@ -90,21 +91,26 @@ int RunNodeServer(const std::vector<std::string>& args) {
   std::unique_ptr<can_io::SlcanServer> server;
   std::unique_ptr<can_io::CanTransport> transport;
   std::string spec;
+  // The can_io results as this command reports errors (it throws; main prints the message).
+  const auto opened = [](auto result) {
+    if (!result.ok()) throw std::runtime_error(result.error().message);
+    if constexpr (!std::is_same_v<decltype(result), Outcome>) return std::move(result).value();
+  };
   switch (o.link) {
     case NodeOptions::Link::kSlcanTcp:
-      server = can_io::SlcanServer::CreateTcp("127.0.0.1", o.port);
+      server = opened(can_io::SlcanServer::CreateTcp("127.0.0.1", o.port));
       spec = server->client_spec();
       break;
     case NodeOptions::Link::kSlcanPty: {
       can_io::SlcanServerOptions so;
       so.symlink = o.pty_link;
-      server = can_io::SlcanServer::CreatePty(so);
+      server = opened(can_io::SlcanServer::CreatePty(so));
       spec = server->client_spec();
       break;
     }
     case NodeOptions::Link::kSocketCan:
       spec = "socketcan:" + o.iface;
-      transport = can_io::OpenTransport(spec);
+      transport = opened(can_io::OpenTransport(spec));
       break;
   }
   if (!board.Start().ok()) throw std::runtime_error("the firmware did not start (configuration)");
@@ -141,12 +147,12 @@ int RunNodeServer(const std::vector<std::string>& args) {
     auto wait = clock.Until(NextEventTime(bus, board));
     if (wait > std::chrono::microseconds(1000)) wait = std::chrono::microseconds(1000);
     if (server) {
-      bridge->Serve(wait);
+      opened(bridge->Serve(wait));
     } else {
       CanFrame f;
-      while (ext.Receive(&f)) transport->Send(f);
-      if (auto f2 = transport->Receive(wait)) ext.Send(*f2);
-      PumpTransport(*transport, ext);
+      while (ext.Receive(&f)) opened(transport->Send(f));
+      if (auto f2 = opened(transport->Receive(wait))) ext.Send(*f2);
+      opened(PumpTransport(*transport, ext));
     }
     if (o.duration_s > 0 &&
         std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count() >=

@@ -37,28 +37,27 @@ TEST(CanIoCandump, FormatsLikeCandump) {
 }
 
 TEST(CanIoCandump, ParsesCandumpAndPythonCanLines) {
-  std::string why;
-  auto r = ParseCandumpLine("(1795301836.647088) vcan0 710#05 R", &why);
-  ASSERT_TRUE(r) << why;
+  auto r = ParseCandumpLine("(1795301836.647088) vcan0 710#05 R");
+  ASSERT_TRUE(r.ok()) << r.error().message;
   EXPECT_EQ(r->timestamp_us, 1795301836647088ull);
   EXPECT_EQ(r->iface, "vcan0");
   EXPECT_EQ(r->frame, Frame(0x710, false, false, {0x05}));
   EXPECT_EQ(r->direction, Direction::kRx);
 
-  r = ParseCandumpLine("(0.000001) slcan0 1abcdef0#deadBEEF\r\n", &why);
-  ASSERT_TRUE(r) << why;
+  r = ParseCandumpLine("(0.000001) slcan0 1abcdef0#deadBEEF\r\n");
+  ASSERT_TRUE(r.ok()) << r.error().message;
   EXPECT_TRUE(r->frame.extended);
   EXPECT_EQ(r->frame, Frame(0x1ABCDEF0, true, false, {0xDE, 0xAD, 0xBE, 0xEF}));
 
-  r = ParseCandumpLine("(5.500000) can0 123#R", &why);
-  ASSERT_TRUE(r) << why;
+  r = ParseCandumpLine("(5.500000) can0 123#R");
+  ASSERT_TRUE(r.ok()) << r.error().message;
   EXPECT_TRUE(r->frame.rtr);
   EXPECT_EQ(r->frame.dlc, 0);
-  r = ParseCandumpLine("(5.500000) can0 123#R8", &why);
-  ASSERT_TRUE(r) << why;
+  r = ParseCandumpLine("(5.500000) can0 123#R8");
+  ASSERT_TRUE(r.ok()) << r.error().message;
   EXPECT_EQ(r->frame.dlc, 8);
-  r = ParseCandumpLine("(5.500000)   can0   123#11.22.33", &why);
-  ASSERT_TRUE(r) << why;
+  r = ParseCandumpLine("(5.500000)   can0   123#11.22.33");
+  ASSERT_TRUE(r.ok()) << r.error().message;
   EXPECT_EQ(r->frame, Frame(0x123, false, false, {0x11, 0x22, 0x33}));
 }
 
@@ -87,9 +86,10 @@ TEST(CanIoCandump, RejectsMalformedLines) {
       "(1.000000) can0 123#00 T extra",
   };
   for (const char* line : bad) {
-    std::string why;
-    EXPECT_FALSE(ParseCandumpLine(line, &why)) << line;
-    EXPECT_FALSE(why.empty()) << line;
+    const Expected<CandumpRecord> r = ParseCandumpLine(line);
+    ASSERT_FALSE(r.ok()) << line;
+    EXPECT_EQ(r.error().code, Error::kInputInvalid) << line;
+    EXPECT_FALSE(r.error().message.empty()) << line;
   }
 }
 
@@ -107,7 +107,9 @@ TEST(CanIoCandump, WriterReaderRoundTrip) {
   }
   EXPECT_EQ(w.lines(), frames.size());
   log << "\n";  // blank lines are skipped
-  auto records = ReadCandumpLog(log);
+  const auto read = ReadCandumpLog(log);
+  ASSERT_TRUE(read.ok()) << read.error().message;
+  const std::vector<CandumpRecord>& records = *read;
   ASSERT_EQ(records.size(), frames.size());
   for (size_t i = 0; i < frames.size(); ++i) {
     EXPECT_EQ(records[i].frame, frames[i]);
@@ -120,19 +122,19 @@ TEST(CanIoCandump, WriterReaderRoundTrip) {
 
 TEST(CanIoCandump, ReaderNamesTheBadLine) {
   std::stringstream log("(1.000000) can0 123#00\n(1.000000) can0 123#0\n");
-  try {
-    ReadCandumpLog(log);
-    FAIL() << "no exception";
-  } catch (const std::runtime_error& e) {
-    EXPECT_NE(std::string(e.what()).find("line 2"), std::string::npos) << e.what();
-  }
+  const auto read = ReadCandumpLog(log);
+  ASSERT_FALSE(read.ok());
+  EXPECT_EQ(read.error().code, Error::kInputInvalid);
+  EXPECT_EQ(read.error().message.rfind("line 2: ", 0), 0u) << read.error().message;
 }
 
 TEST(CanIoCandump, WallClockWriterAndNoDirection) {
   std::stringstream log;
   CandumpLogWriter w(log, "can1", /*direction_markers=*/false);
   w.Write(Frame(0x100, false, false, {0x01}), Direction::kTx);
-  auto records = ReadCandumpLog(log);
+  const auto read = ReadCandumpLog(log);
+  ASSERT_TRUE(read.ok()) << read.error().message;
+  const std::vector<CandumpRecord>& records = *read;
   ASSERT_EQ(records.size(), 1u);
   EXPECT_EQ(records[0].direction, Direction::kNone);
   EXPECT_GT(records[0].timestamp_us, 1600000000000000ull);  // a real wall-clock time
@@ -141,16 +143,22 @@ TEST(CanIoCandump, WallClockWriterAndNoDirection) {
 // A scripted transport for the decorator.
 class FakeTransport : public CanTransport {
  public:
-  void Send(const CanFrame& f) override { sent.push_back(f); }
-  std::optional<CanFrame> Receive(std::chrono::microseconds) override {
-    if (inbox.empty()) return std::nullopt;
+  Outcome Send(const CanFrame& f) override {
+    if (broken) return Fail(Error::kCommunication, "fake: gone");
+    sent.push_back(f);
+    return Outcome::Ok();
+  }
+  Expected<std::optional<CanFrame>> Receive(std::chrono::microseconds) override {
+    if (broken) return Fail(Error::kCommunication, "fake: gone");
+    if (inbox.empty()) return std::optional<CanFrame>();
     CanFrame f = inbox.front();
     inbox.pop_front();
-    return f;
+    return std::optional<CanFrame>(f);
   }
   std::string description() const override { return "fake"; }
   std::vector<CanFrame> sent;
   std::deque<CanFrame> inbox;
+  bool broken = false;
 };
 
 TEST(CanIoCandump, LoggingTransportRecordsBothDirections) {
@@ -159,13 +167,24 @@ TEST(CanIoCandump, LoggingTransportRecordsBothDirections) {
   raw->inbox.push_back(Frame(0x581, false, false, {0x60, 0, 0x21, 1, 0, 0, 0, 0}));
   std::stringstream log;
   LoggingTransport t(std::move(fake), std::make_unique<CandumpLogWriter>(log, "slcan0"));
-  t.Send(Frame(0x601, false, false, {0x23, 0, 0x21, 1, 1, 2, 3, 4}));
+  ASSERT_TRUE(t.Send(Frame(0x601, false, false, {0x23, 0, 0x21, 1, 1, 2, 3, 4})).ok());
   auto got = t.Receive(std::chrono::microseconds(0));
-  ASSERT_TRUE(got);
-  EXPECT_FALSE(t.Receive(std::chrono::microseconds(0)));  // nothing logged for a timeout
+  ASSERT_TRUE(got.ok() && *got);
+  got = t.Receive(std::chrono::microseconds(0));
+  ASSERT_TRUE(got.ok());
+  EXPECT_FALSE(*got);  // nothing logged for a timeout
   EXPECT_EQ(raw->sent.size(), 1u);
   EXPECT_EQ(t.description(), "fake (logged)");
-  auto records = ReadCandumpLog(log);
+  // The wrapped transport's failures pass through, and nothing is logged for them.
+  raw->broken = true;
+  const Outcome sent = t.Send(Frame(0x602, false, false, {}));
+  ASSERT_FALSE(sent.ok());
+  EXPECT_EQ(sent.error().code, Error::kCommunication);
+  EXPECT_EQ(sent.error().message, "fake: gone");
+  EXPECT_FALSE(t.Receive(std::chrono::microseconds(0)).ok());
+  const auto read = ReadCandumpLog(log);
+  ASSERT_TRUE(read.ok()) << read.error().message;
+  const std::vector<CandumpRecord>& records = *read;
   ASSERT_EQ(records.size(), 2u);
   EXPECT_EQ(records[0].direction, Direction::kTx);
   EXPECT_EQ(records[0].frame.id, 0x601u);
@@ -175,9 +194,13 @@ TEST(CanIoCandump, LoggingTransportRecordsBothDirections) {
 }
 
 TEST(CanIoCandump, OpenFileErrors) {
-  EXPECT_THROW(CandumpLogWriter::OpenFile("/nonexistent-dir/x.log", "can0"), std::runtime_error);
-  EXPECT_EQ(LogInterfaceName("socketcan:vcan0"), "vcan0");
-  EXPECT_EQ(LogInterfaceName("slcan-tcp:localhost:5"), "slcan0");
+  const auto opened = CandumpLogWriter::OpenFile("/nonexistent-dir/x.log", "can0");
+  ASSERT_FALSE(opened.ok());
+  EXPECT_EQ(opened.error().code, Error::kIoError);
+  EXPECT_EQ(opened.error().message, "cannot write CAN log '/nonexistent-dir/x.log'");
+  EXPECT_EQ(*LogInterfaceName("socketcan:vcan0"), "vcan0");
+  EXPECT_EQ(*LogInterfaceName("slcan-tcp:localhost:5"), "slcan0");
+  EXPECT_FALSE(LogInterfaceName("bogus").ok());
 }
 
 }  // namespace

@@ -28,6 +28,31 @@ using Clock = std::chrono::steady_clock;
 
 using testing::Frame;
 
+// The object a factory made, or null after recording its failure (check with ASSERT_TRUE).
+template <typename T>
+std::unique_ptr<T> Created(Expected<std::unique_ptr<T>> made) {
+  if (!made.ok()) {
+    ADD_FAILURE() << made.error().message;
+    return nullptr;
+  }
+  return std::move(made).value();
+}
+
+// The next frame within `timeout`, or nullopt (a failure of the link is recorded).
+std::optional<CanFrame> Next(CanTransport& t, microseconds timeout) {
+  const Expected<std::optional<CanFrame>> got = t.Receive(timeout);
+  if (!got.ok()) {
+    ADD_FAILURE() << got.error().message;
+    return std::nullopt;
+  }
+  return *got;
+}
+
+void Sent(CanTransport& t, const CanFrame& f) {
+  const Outcome sent = t.Send(f);
+  EXPECT_TRUE(sent.ok()) << sent.error().message;
+}
+
 // The i-th frame of a test sequence: standard, extended and remote frames of every length.
 CanFrame TestFrame(uint32_t i) {
   CanFrame f;
@@ -52,7 +77,7 @@ class ServerThread {
     spec_ = server_->client_spec();
     thread_ = std::thread([this] {
       while (!stop_) {
-        server_->Poll(milliseconds(1));
+        EXPECT_TRUE(server_->Poll(milliseconds(1)).ok());
         for (const CanFrame& f : server_->TakeReceived()) server_->Send(Echo(f));
       }
     });
@@ -99,7 +124,7 @@ class RawClient {
     std::string got;
     const auto deadline = Clock::now() + limit;
     while (got.size() < expect && Clock::now() < deadline) {
-      server_->Poll(microseconds(500));
+      EXPECT_TRUE(server_->Poll(microseconds(500)).ok());
       char buf[256];
       const ssize_t n = ::read(fd_, buf, sizeof buf);
       if (n > 0) got.append(buf, static_cast<size_t>(n));
@@ -179,7 +204,8 @@ void CheckAdapterDialogue(SlcanServer& server, RawClient& c) {
 }
 
 TEST(CanIoSlcanServer, TcpAnswersLikeAnAdapter) {
-  auto server = SlcanServer::CreateTcp("127.0.0.1", 0);
+  auto server = Created(SlcanServer::CreateTcp("127.0.0.1", 0));
+  ASSERT_TRUE(server);
   ASSERT_NE(server->port(), 0);
   EXPECT_EQ(server->client_spec(), "slcan-tcp:127.0.0.1:" + std::to_string(server->port()));
   RawClient c(server.get(), ConnectTcp(server->port()));
@@ -188,14 +214,16 @@ TEST(CanIoSlcanServer, TcpAnswersLikeAnAdapter) {
 }
 
 TEST(CanIoSlcanServer, PtyAnswersLikeAnAdapter) {
-  auto server = SlcanServer::CreatePty();
+  auto server = Created(SlcanServer::CreatePty());
+  ASSERT_TRUE(server);
   EXPECT_EQ(server->endpoint().rfind("/dev/pts/", 0), 0u) << server->endpoint();
   RawClient c(server.get(), OpenPtyRaw(server->endpoint()));
   CheckAdapterDialogue(*server, c);
 }
 
 TEST(CanIoSlcanServer, TcpServesTheNextClientAfterADisconnect) {
-  auto server = SlcanServer::CreateTcp("127.0.0.1", 0);
+  auto server = Created(SlcanServer::CreateTcp("127.0.0.1", 0));
+  ASSERT_TRUE(server);
   RawClient a(server.get(), ConnectTcp(server->port()));
   EXPECT_EQ(a.Say("O\r", 1), "\r");
   EXPECT_TRUE(server->channel_open());
@@ -219,11 +247,13 @@ TEST(CanIoSlcanServer, PtySymlink) {
   {
     SlcanServerOptions o;
     o.symlink = link.string();
-    auto server = SlcanServer::CreatePty(o);
+    auto server = Created(SlcanServer::CreatePty(o));
+    ASSERT_TRUE(server);
     ASSERT_TRUE(std::filesystem::is_symlink(link));
     EXPECT_EQ(std::filesystem::read_symlink(link).string(), server->endpoint());
     // A stale symlink is replaced by the next server.
-    auto second = SlcanServer::CreatePty(o);
+    auto second = Created(SlcanServer::CreatePty(o));
+    ASSERT_TRUE(second);
     EXPECT_EQ(std::filesystem::read_symlink(link).string(), second->endpoint());
     second.reset();
     EXPECT_FALSE(std::filesystem::exists(std::filesystem::symlink_status(link)));
@@ -235,39 +265,48 @@ TEST(CanIoSlcanServer, PtySymlink) {
   }
   SlcanServerOptions o;
   o.symlink = link.string();
-  EXPECT_THROW(SlcanServer::CreatePty(o), std::runtime_error);
+  const auto refused = SlcanServer::CreatePty(o);
+  ASSERT_FALSE(refused.ok());
+  EXPECT_EQ(refused.error().code, Error::kIoError);
+  EXPECT_NE(refused.error().message.find("exists and is not a symlink"), std::string::npos)
+      << refused.error().message;
   std::filesystem::remove_all(dir);
 }
 
 // Ping-pong through OpenTransport(): every frame kind, then the adapter queries.
 void RoundTrip(ServerThread& st, const std::string& spec, const char* label) {
-  auto client = OpenTransport(spec + "@1M");
+  auto client = Created(OpenTransport(spec + "@1M"));
+  ASSERT_TRUE(client);
   EXPECT_NE(client->description().find("@1000000"), std::string::npos);
   constexpr uint32_t kFrames = 300;
   const auto t0 = Clock::now();
   for (uint32_t i = 0; i < kFrames; ++i) {
     const CanFrame f = TestFrame(i);
-    client->Send(f);
-    const auto got = client->Receive(milliseconds(1000));
+    Sent(*client, f);
+    const auto got = Next(*client, milliseconds(1000));
     ASSERT_TRUE(got) << "frame " << i;
     ASSERT_EQ(*got, Echo(f)) << "frame " << i;
   }
   const double s = std::chrono::duration<double>(Clock::now() - t0).count();
   std::printf("[ %s ] ping-pong round trips: %.0f /s\n", label, kFrames / s);
-  EXPECT_FALSE(client->Receive(microseconds(0)));
+  EXPECT_FALSE(Next(*client, microseconds(0)));
   EXPECT_TRUE(client->TakeEvents().empty());
   auto* slcan = dynamic_cast<SlcanTransport*>(client.get());
   ASSERT_NE(slcan, nullptr);
-  EXPECT_EQ(slcan->Command("V", milliseconds(500)), "V0100");
-  EXPECT_EQ(slcan->Command("N", milliseconds(500)), "NVC01");
-  EXPECT_EQ(slcan->Command("F", milliseconds(500)), "F00");
-  EXPECT_THROW(slcan->Command("P", milliseconds(500)), std::runtime_error);
+  EXPECT_EQ(*slcan->Command("V", milliseconds(500)), "V0100");
+  EXPECT_EQ(*slcan->Command("N", milliseconds(500)), "NVC01");
+  EXPECT_EQ(*slcan->Command("F", milliseconds(500)), "F00");
+  const auto refused = slcan->Command("P", milliseconds(500));
+  ASSERT_FALSE(refused.ok());
+  EXPECT_EQ(refused.error().code, Error::kCommunication);
+  EXPECT_NE(refused.error().message.find("adapter answered BEL to 'P'"), std::string::npos)
+      << refused.error().message;
   client.reset();  // sends C and disconnects
   st.Stop();
   // Let the server see the C / the disconnect (it is ours to poll now).
   const auto deadline = Clock::now() + milliseconds(1000);
   while (st.server().channel_open() && Clock::now() < deadline) {
-    st.server().Poll(milliseconds(1));
+    EXPECT_TRUE(st.server().Poll(milliseconds(1)).ok());
   }
   EXPECT_EQ(st.server().bitrate(), 1000000u);
   EXPECT_FALSE(st.server().channel_open());
@@ -276,26 +315,31 @@ void RoundTrip(ServerThread& st, const std::string& spec, const char* label) {
 }
 
 TEST(CanIoSlcanLoopback, TcpRoundTrip) {
-  ServerThread st(SlcanServer::CreateTcp("127.0.0.1", 0));
+  auto server = Created(SlcanServer::CreateTcp("127.0.0.1", 0));
+  ASSERT_TRUE(server);
+  ServerThread st(std::move(server));
   RoundTrip(st, st.spec(), "slcan-tcp");
 }
 
 TEST(CanIoSlcanLoopback, PtyRoundTrip) {
-  ServerThread st(SlcanServer::CreatePty());
+  auto server = Created(SlcanServer::CreatePty());
+  ASSERT_TRUE(server);
+  ServerThread st(std::move(server));
   RoundTrip(st, st.spec(), "slcan pty");
 }
 
 // Streaming with up to 64 frames in flight: the rate an SDO block transfer can use.
 void Stream(const std::string& spec, const char* label) {
-  auto client = OpenTransport(spec);
+  auto client = Created(OpenTransport(spec));
+  ASSERT_TRUE(client);
   constexpr uint32_t kFrames = 4000;
   constexpr uint32_t kWindow = 64;
   uint32_t sent = 0;
   uint32_t received = 0;
   const auto t0 = Clock::now();
   while (received < kFrames) {
-    while (sent < kFrames && sent - received < kWindow) client->Send(TestFrame(sent++));
-    const auto got = client->Receive(milliseconds(1000));
+    while (sent < kFrames && sent - received < kWindow) Sent(*client, TestFrame(sent++));
+    const auto got = Next(*client, milliseconds(1000));
     ASSERT_TRUE(got) << "after " << received;
     ASSERT_EQ(*got, Echo(TestFrame(received))) << received;  // order is kept
     ++received;
@@ -307,44 +351,51 @@ void Stream(const std::string& spec, const char* label) {
 }
 
 TEST(CanIoSlcanLoopback, TcpStreaming) {
-  ServerThread st(SlcanServer::CreateTcp("127.0.0.1", 0));
+  auto server = Created(SlcanServer::CreateTcp("127.0.0.1", 0));
+  ASSERT_TRUE(server);
+  ServerThread st(std::move(server));
   Stream(st.spec(), "slcan-tcp");
 }
 
 TEST(CanIoSlcanLoopback, PtyStreaming) {
-  ServerThread st(SlcanServer::CreatePty());
+  auto server = Created(SlcanServer::CreatePty());
+  ASSERT_TRUE(server);
+  ServerThread st(std::move(server));
   Stream(st.spec(), "slcan pty");
 }
 
 TEST(CanIoSlcanLoopback, ClientSeesTheServerGo) {
   for (bool pty : {false, true}) {
-    ServerThread st(pty ? SlcanServer::CreatePty() : SlcanServer::CreateTcp("127.0.0.1", 0));
-    auto client = OpenTransport(st.spec());
-    client->Send(TestFrame(1));
-    ASSERT_TRUE(client->Receive(milliseconds(1000)));
+    auto server = Created(pty ? SlcanServer::CreatePty() : SlcanServer::CreateTcp("127.0.0.1", 0));
+    ASSERT_TRUE(server);
+    ServerThread st(std::move(server));
+    auto client = Created(OpenTransport(st.spec()));
+    ASSERT_TRUE(client);
+    Sent(*client, TestFrame(1));
+    ASSERT_TRUE(Next(*client, milliseconds(1000)));
     st.Destroy();
-    try {
-      client->Receive(milliseconds(1000));
-      ADD_FAILURE() << "no error after the server closed (" << (pty ? "pty" : "tcp") << ")";
-    } catch (const std::runtime_error& e) {
-      const std::string what = e.what();
-      EXPECT_TRUE(what.find("closed") != std::string::npos ||
-                  what.find("device gone") != std::string::npos)
-          << what;
-    }
+    const auto gone = client->Receive(milliseconds(1000));
+    ASSERT_FALSE(gone.ok()) << "no error after the server closed (" << (pty ? "pty" : "tcp") << ")";
+    EXPECT_EQ(gone.error().code, Error::kCommunication);
+    const std::string& what = gone.error().message;
+    EXPECT_TRUE(what.find("closed") != std::string::npos ||
+                what.find("device gone") != std::string::npos)
+        << what;
   }
 }
 
 TEST(CanIoSlcanLoopback, SilentAdapterIsTolerated) {
   // A TCP peer that never answers: opening waits once for the C answer, then carries on.
-  auto server = SlcanServer::CreateTcp("127.0.0.1", 0);  // never polled: nobody answers
+  auto server = Created(SlcanServer::CreateTcp("127.0.0.1", 0));  // never polled: nobody answers
+  ASSERT_TRUE(server);
   SlcanOptions o;
   o.bitrate = 500000;
   o.open_timeout = milliseconds(50);
   const auto t0 = Clock::now();
-  auto client = OpenSlcanTcp("127.0.0.1", server->port(), o);
+  auto client = Created(OpenSlcanTcp("127.0.0.1", server->port(), o));
+  ASSERT_TRUE(client);
   EXPECT_LT(Clock::now() - t0, milliseconds(500));
-  EXPECT_FALSE(client->Receive(microseconds(0)));
+  EXPECT_FALSE(Next(*client, microseconds(0)));
 }
 
 // A scripted fake adapter on a TCP listener: answers each line with answer(line).
@@ -397,14 +448,12 @@ TEST(CanIoSlcanLoopback, RefusedBitrateOrOpenIsAnError) {
     });
     SlcanOptions o;
     o.bitrate = 500000;
-    try {
-      OpenSlcanTcp("127.0.0.1", fake.port(), o);
-      ADD_FAILURE() << "no error when the adapter refuses " << refused;
-    } catch (const std::runtime_error& e) {
-      EXPECT_NE(std::string(e.what()).find(std::string("adapter refused '") + refused + "'"),
-                std::string::npos)
-          << e.what();
-    }
+    const auto opened = OpenSlcanTcp("127.0.0.1", fake.port(), o);
+    ASSERT_FALSE(opened.ok()) << "no error when the adapter refuses " << refused;
+    EXPECT_EQ(opened.error().code, Error::kCommunication);
+    EXPECT_NE(opened.error().message.find(std::string("adapter refused '") + refused + "'"),
+              std::string::npos)
+        << opened.error().message;
   }
 }
 
@@ -416,16 +465,17 @@ TEST(CanIoSlcanLoopback, SlcanpytStyleAcksAndBelEvents) {
     if (line == "t1240") return std::string("\rt5551AA\r");  // ack, then a frame from the bus
     return std::string("\r");
   });
-  auto client = OpenSlcanTcp("127.0.0.1", fake.port(), SlcanOptions());
-  client->Send(Frame(0x124, false, false, {}));
-  const auto got = client->Receive(milliseconds(1000));
+  auto client = Created(OpenSlcanTcp("127.0.0.1", fake.port(), SlcanOptions()));
+  ASSERT_TRUE(client);
+  Sent(*client, Frame(0x124, false, false, {}));
+  const auto got = Next(*client, milliseconds(1000));
   ASSERT_TRUE(got);
   EXPECT_EQ(*got, Frame(0x555, false, false, {0xAA}));
-  client->Send(Frame(0x123, false, false, {}));
+  Sent(*client, Frame(0x123, false, false, {}));
   std::vector<BusEvent> events;
   const auto deadline = Clock::now() + milliseconds(1000);
   while (events.empty() && Clock::now() < deadline) {
-    client->Receive(milliseconds(5));
+    Next(*client, milliseconds(5));
     events = client->TakeEvents();
   }
   ASSERT_EQ(events.size(), 1u);

@@ -59,7 +59,7 @@ LinkRun Transfer(canopen::Node& node,
   for (int i = 0; i < 1500 && node.sdo().busy(); ++i) node.Poll(static_cast<uint32_t>(++*now_ms));
   while (node.PopTx(&f)) {
   }
-  return {client.result().ok, client.result().abort_code};
+  return {client.result().ok(), canopen_client::AbortOf(client.result())};
 }
 
 TEST(SdoFaultInjection, EveryTransferSucceedsExactlyOrFailsCleanly) {
@@ -77,7 +77,7 @@ TEST(SdoFaultInjection, EveryTransferSucceedsExactlyOrFailsCleanly) {
     std::vector<uint8_t> data(1 + rng() % 3000);
     for (auto& b : data) b = static_cast<uint8_t>(rng());
     canopen_client::SdoClient client(0x10);
-    client.StartDownload(0x2100, 0, data);
+    client.StartWrite(0x2100, 0, data);
     const int ends_before = values.ends_ok;
     const LinkRun r = Transfer(node, client, rng, faults, &now_ms);
     resent += client.resent_segments();
@@ -96,7 +96,7 @@ TEST(SdoFaultInjection, EveryTransferSucceedsExactlyOrFailsCleanly) {
       }
       // A retry over a clean link succeeds.
       canopen_client::SdoClient retry(0x10);
-      retry.StartDownload(0x2100, 0, data);
+      retry.StartWrite(0x2100, 0, data);
       const LinkRun again = Transfer(node, retry, rng, Faults{}, &now_ms);
       ASSERT_TRUE(again.ok) << "retry after trial " << t;
       ASSERT_EQ(values.domain, data);
@@ -122,9 +122,9 @@ TEST(SdoFaultInjection, UploadsAndSmallWritesOverACleanLink) {
     for (auto& b : values.domain_readback) b = static_cast<uint8_t>(rng());
     for (bool block : {false, true}) {
       canopen_client::SdoClient c(0x10);
-      c.StartUpload(0x2100, 0, block);
+      c.StartRead(0x2100, 0, block);
       ASSERT_TRUE(Transfer(node, c, rng, Faults{}, &now_ms).ok) << n << (block ? " block" : "");
-      EXPECT_EQ(c.result().data, values.domain_readback) << n;
+      EXPECT_EQ(*c.result(), values.domain_readback) << n;
     }
   }
   // Segmented (non-block) download and expedited writes.
@@ -132,20 +132,23 @@ TEST(SdoFaultInjection, UploadsAndSmallWritesOverACleanLink) {
   seg.use_block = false;
   std::vector<uint8_t> data(100, 0x5A);
   canopen_client::SdoClient c(0x10, seg);
-  c.StartDownload(0x2100, 0, data);
+  c.StartWrite(0x2100, 0, data);
   ASSERT_TRUE(Transfer(node, c, rng, Faults{}, &now_ms).ok);
   EXPECT_EQ(values.domain, data);
   canopen_client::SdoClient w(0x10);
-  w.StartDownload(0x1017, 0, {0x34, 0x12});
+  w.StartWrite(0x1017, 0, {0x34, 0x12});
   ASSERT_TRUE(Transfer(node, w, rng, Faults{}, &now_ms).ok);
   EXPECT_EQ(node.heartbeat_ms(), 0x1234);
   canopen_client::SdoClient bad(0x10);
-  bad.StartDownload(0x1000, 0, {1, 2, 3, 4});
+  bad.StartWrite(0x1000, 0, {1, 2, 3, 4});
   const LinkRun r = Transfer(node, bad, rng, Faults{}, &now_ms);
   EXPECT_FALSE(r.ok);
   EXPECT_EQ(canopen::Code(r.abort_code), 0x06010002u);
-  EXPECT_NE(bad.result().message.find("attempt to write a read-only object"), std::string::npos)
-      << bad.result().message;
+  ASSERT_FALSE(bad.result().ok());
+  EXPECT_TRUE(bad.result().error().by_server);
+  EXPECT_NE(bad.result().error().message.find("attempt to write a read-only object"),
+            std::string::npos)
+      << bad.result().error().message;
 }
 
 }  // namespace

@@ -15,10 +15,13 @@ struct SilentLink {
   int sent = 0;
   FrameLink link() {
     FrameLink l;
-    l.send = [this](const CanFrame&) { ++sent; };
-    l.receive = [this](uint64_t timeout_us) -> std::optional<CanFrame> {
+    l.send = [this](const CanFrame&) {
+      ++sent;
+      return Outcome::Ok();
+    };
+    l.receive = [this](uint64_t timeout_us) -> Expected<std::optional<CanFrame>> {
       now_us += timeout_us;
-      return std::nullopt;
+      return std::optional<CanFrame>();
     };
     l.now_us = [this] { return now_us; };
     return l;
@@ -31,11 +34,10 @@ TEST(SdoRunner, ReadU32TimesOutAfterTheGivenTimeout) {
   SilentLink s;
   SdoClient::Options o;
   o.timeout_ms = 50;
-  uint32_t v = 7;
-  const SdoResult r = ReadU32(s.link(), 0x10, 0x2104, 0, &v, o);
-  EXPECT_FALSE(r.ok);
-  EXPECT_EQ(canopen::Code(r.abort_code), kAbortTimeout);
-  EXPECT_EQ(v, 7u);
+  const SdoExpected<uint32_t> r = ReadU32(s.link(), 0x10, 0x2104, 0, o);
+  ASSERT_FALSE(r.ok());
+  EXPECT_EQ(canopen::Code(r.error().abort), kAbortTimeout);
+  EXPECT_EQ(r.error().code, Error::kCommunication);
   const uint64_t waited_us = s.now_us - 1000;
   EXPECT_GE(waited_us, 50000u);
   EXPECT_LT(waited_us, 70000u);  // not the 1000 ms default
@@ -47,10 +49,11 @@ TEST(SdoRunner, WriteU32TimesOutAfterTheGivenTimeout) {
   SdoClient::Options o;
   o.timeout_ms = 20;
   const canopen::ObjectEntry& control = canopen::Entry(canopen::ObjectId::kTableControl);
-  const SdoResult r = WriteU32(s.link(), 0x10, control.index, control.sub,
-                               canopen::Value(canopen::TableCommand::kVerify), 1, o);
-  EXPECT_FALSE(r.ok);
-  EXPECT_EQ(canopen::Code(r.abort_code), kAbortTimeout);
+  const SdoOutcome r = WriteU32(s.link(), 0x10, control.index, control.sub,
+                                canopen::Value(canopen::TableCommand::kVerify), 1, o);
+  ASSERT_FALSE(r.ok());
+  EXPECT_EQ(canopen::Code(r.error().abort), kAbortTimeout);
+  EXPECT_EQ(r.error().code, Error::kCommunication);
   const uint64_t waited_us = s.now_us - 1000;
   EXPECT_GE(waited_us, 20000u);
   EXPECT_LT(waited_us, 40000u);
@@ -58,8 +61,7 @@ TEST(SdoRunner, WriteU32TimesOutAfterTheGivenTimeout) {
 
 TEST(SdoRunner, DefaultTimeoutIsOneSecond) {
   SilentLink s;
-  uint32_t v = 0;
-  EXPECT_FALSE(ReadU32(s.link(), 0x10, 0x2104, 0, &v).ok);
+  EXPECT_FALSE(ReadU32(s.link(), 0x10, 0x2104, 0).ok());
   EXPECT_GE(s.now_us - 1000, 1000000u);
   EXPECT_LT(s.now_us - 1000, 1020000u);
 }

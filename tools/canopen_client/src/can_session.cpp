@@ -6,12 +6,19 @@
 
 namespace volcomp::canopen_client {
 
-CanSession::CanSession(const std::string& spec,
+Expected<std::unique_ptr<CanSession>> CanSession::Open(const std::string& spec,
+                                                       uint8_t node,
+                                                       const std::string& log_path,
+                                                       SdoClient::Options options) {
+  VOLCOMP_TRY_ASSIGN(auto transport, can_io::OpenTransportWithLog(spec, log_path));
+  return std::unique_ptr<CanSession>(new CanSession(std::move(transport), node, options));
+}
+
+CanSession::CanSession(std::unique_ptr<can_io::CanTransport> transport,
                        uint8_t node,
-                       const std::string& log_path,
                        SdoClient::Options options)
-    : NodeObjects(link_, node, options), transport_(can_io::OpenTransportWithLog(spec, log_path)) {
-  link_.send = [this](const CanFrame& f) { transport_->Send(f); };
+    : NodeObjects(link_, node, options), transport_(std::move(transport)) {
+  link_.send = [this](const CanFrame& f) { return transport_->Send(f); };
   link_.receive = [this](uint64_t timeout_us) {
     return transport_->Receive(std::chrono::microseconds(timeout_us));
   };
@@ -29,13 +36,14 @@ void CanSession::Observe(const CanFrame& f) {
   if (f.id == canopen::kEmcyCobBase + node() && f.dlc == 8) emcy_.push_back(f);
 }
 
-void CanSession::Listen(std::chrono::milliseconds duration) {
+Outcome CanSession::Listen(std::chrono::milliseconds duration) {
   const auto end = std::chrono::steady_clock::now() + duration;
   for (;;) {
     const auto now = std::chrono::steady_clock::now();
-    if (now >= end) return;
+    if (now >= end) return Outcome::Ok();
     const auto left = std::chrono::duration_cast<std::chrono::microseconds>(end - now);
-    if (auto f = transport_->Receive(left)) Observe(*f);
+    VOLCOMP_TRY_ASSIGN(const std::optional<CanFrame> f, transport_->Receive(left));
+    if (f) Observe(*f);
   }
 }
 
@@ -45,22 +53,23 @@ std::vector<CanFrame> CanSession::TakeEmcy() {
   return out;
 }
 
-void CanSession::SendNmt(uint8_t command) {
+Outcome CanSession::SendNmt(uint8_t command) {
   CanFrame f;
   f.id = canopen::kNmtCobId;
   f.dlc = 2;
   f.data[0] = command;
   f.data[1] = node();
-  transport_->Send(f);
+  return transport_->Send(f);
 }
 
-bool CanSession::ReceiveUntil(std::chrono::milliseconds timeout,
-                              const std::function<bool(const CanFrame&)>& done) {
+Expected<bool> CanSession::ReceiveUntil(std::chrono::milliseconds timeout,
+                                        const std::function<bool(const CanFrame&)>& done) {
   const auto end = std::chrono::steady_clock::now() + timeout;
   for (auto now = std::chrono::steady_clock::now(); now < end;
        now = std::chrono::steady_clock::now()) {
-    const auto f =
-        transport_->Receive(std::chrono::duration_cast<std::chrono::microseconds>(end - now));
+    VOLCOMP_TRY_ASSIGN(
+        const std::optional<CanFrame> f,
+        transport_->Receive(std::chrono::duration_cast<std::chrono::microseconds>(end - now)));
     if (!f) continue;
     Observe(*f);
     if (!f->extended && !f->rtr && done(*f)) return true;
@@ -68,25 +77,27 @@ bool CanSession::ReceiveUntil(std::chrono::milliseconds timeout,
   return false;
 }
 
-std::optional<uint8_t> CanSession::WaitForBootUp(uint8_t expected,
-                                                 std::chrono::milliseconds timeout) {
+Expected<std::optional<uint8_t>> CanSession::WaitForBootUp(uint8_t expected,
+                                                           std::chrono::milliseconds timeout) {
   std::optional<uint8_t> other;
-  const bool seen = ReceiveUntil(timeout, [&](const CanFrame& f) {
-    const bool boot_up = f.dlc == 1 && f.data[0] == 0 && f.id > canopen::kHeartbeatCobBase &&
-                         f.id <= canopen::kHeartbeatCobBase + 127;
-    if (boot_up) other = static_cast<uint8_t>(f.id - canopen::kHeartbeatCobBase);
-    return boot_up && *other == expected;
-  });
+  VOLCOMP_TRY_ASSIGN(const bool seen, ReceiveUntil(timeout, [&](const CanFrame& f) {
+                       const bool boot_up = f.dlc == 1 && f.data[0] == 0 &&
+                                            f.id > canopen::kHeartbeatCobBase &&
+                                            f.id <= canopen::kHeartbeatCobBase + 127;
+                       if (boot_up) other = static_cast<uint8_t>(f.id - canopen::kHeartbeatCobBase);
+                       return boot_up && *other == expected;
+                     }));
   return seen ? std::optional<uint8_t>(expected) : other;
 }
 
-std::optional<uint8_t> CanSession::WaitForState(uint8_t state, std::chrono::milliseconds timeout) {
+Expected<std::optional<uint8_t>> CanSession::WaitForState(uint8_t state,
+                                                          std::chrono::milliseconds timeout) {
   std::optional<uint8_t> last;
-  ReceiveUntil(timeout, [&](const CanFrame& f) {
+  VOLCOMP_TRY(ReceiveUntil(timeout, [&](const CanFrame& f) {
     if (f.dlc != 1 || f.id != canopen::kHeartbeatCobBase + node()) return false;
     last = f.data[0];
     return *last == state;
-  });
+  }));
   return last;
 }
 

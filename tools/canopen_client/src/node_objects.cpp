@@ -10,35 +10,32 @@ std::vector<uint8_t> NumericPayload(canopen::ObjectId id, uint32_t value) {
   return bytes;
 }
 
-SdoResult NodeObjects::Write(canopen::ObjectId id, uint32_t value) {
-  return Download(id, NumericPayload(id, value));
+SdoOutcome NodeObjects::Write(canopen::ObjectId id, uint32_t value) {
+  return WriteDomain(id, NumericPayload(id, value));
 }
 
-SdoResult NodeObjects::Read(canopen::ObjectId id, uint32_t* value) {
+SdoExpected<uint32_t> NodeObjects::Read(canopen::ObjectId id) {
   const canopen::ObjectEntry& e = canopen::Entry(id);
-  return ReadU32(*link_, node_, e.index, e.sub, value, options_);
+  return ReadU32(*link_, node_, e.index, e.sub, options_);
 }
 
-SdoResult NodeObjects::ReadString(canopen::ObjectId id, std::string* value) {
+SdoExpected<std::string> NodeObjects::ReadString(canopen::ObjectId id) {
   const canopen::ObjectEntry& e = canopen::Entry(id);
-  SdoResult r = Upload(*link_, node_, e.index, e.sub, false, options_);
-  if (r.ok) value->assign(r.data.begin(), r.data.end());
-  return r;
+  VOLCOMP_TRY_ASSIGN(const std::vector<uint8_t> data,
+                     ReadObject(*link_, node_, e.index, e.sub, false, options_));
+  return std::string(data.begin(), data.end());
 }
 
-SdoResult NodeObjects::Download(canopen::ObjectId id,
-                                const std::vector<uint8_t>& data,
-                                std::function<void(uint32_t, uint32_t)> progress) {
+SdoOutcome NodeObjects::WriteDomain(canopen::ObjectId id,
+                                    const std::vector<uint8_t>& data,
+                                    std::function<void(uint32_t, uint32_t)> progress) {
   const canopen::ObjectEntry& e = canopen::Entry(id);
-  return canopen_client::Download(*link_, node_, e.index, e.sub, data, options_,
-                                  std::move(progress));
+  return WriteObject(*link_, node_, e.index, e.sub, data, options_, std::move(progress));
 }
 
-SdoResult NodeObjects::UploadDomain(canopen::ObjectId id, std::vector<uint8_t>* data) {
+SdoExpected<std::vector<uint8_t>> NodeObjects::ReadDomain(canopen::ObjectId id) {
   const canopen::ObjectEntry& e = canopen::Entry(id);
-  SdoResult r = Upload(*link_, node_, e.index, e.sub, true, options_);
-  if (r.ok) *data = r.data;
-  return r;
+  return ReadObject(*link_, node_, e.index, e.sub, true, options_);
 }
 
 }  // namespace volcomp::canopen_client

@@ -18,6 +18,12 @@ std::string Hex(uint32_t v) {
   std::snprintf(b, sizeof b, "0x%08X", v);
   return b;
 }
+
+// The result of a transfer that is still running (or was given up by its driver).
+Unexpected<SdoFailure> NotFinished() {
+  return SdoFail(Error::kNotReady, "the transfer did not finish");
+}
+
 }  // namespace
 
 SdoClient::SdoClient(uint8_t node_id, Options options) : node_id_(node_id), opt_(options) {}
@@ -39,27 +45,46 @@ CanFrame SdoClient::Request(uint8_t cmd) const {
 
 void SdoClient::Queue(const CanFrame& f) { tx_.push_back(f); }
 
-void SdoClient::Finish(bool ok, const std::string& message) {
-  result_.ok = ok;
-  result_.message = message;
+void SdoClient::Succeed() {
+  result_ = std::move(received_);
+  received_.clear();
   state_ = State::kDone;
+}
+
+void SdoClient::FailWith(Error code, std::string message, canopen::SdoAbort abort, bool by_server) {
+  SdoFailure f;
+  f.code = code;
+  f.message = std::move(message);
+  f.abort = abort;
+  f.by_server = by_server;
+  result_ = Fail(std::move(f));
+  state_ = State::kDone;
+}
+
+void SdoClient::Abandon(const Failure& why) {
+  if (state_ == State::kDone) return;
+  FailWith(why.code, why.message, canopen::SdoAbort::kNone, false);
+  tx_.clear();
+  tx_pos_ = 0;
 }
 
 void SdoClient::SendAbort(canopen::SdoAbort code, const std::string& message) {
   CanFrame f = Request(kAbort);
   StoreLe32(f.data + 4, canopen::Code(code));
   Queue(f);
-  result_.abort_code = code;
-  result_.aborted_by_server = false;
-  Finish(false, message + " (sent abort " + Hex(canopen::Code(code)) + ": " +
-                    canopen::SdoAbortText(code) + ")");
+  // Our own timeout: the node did not answer (absent, off, another node-ID): no board to talk to.
+  FailWith(code == canopen::SdoAbort::kTimeout ? Error::kCommunication : Error::kTransferAborted,
+           message + " (sent abort " + Hex(canopen::Code(code)) + ": " +
+               canopen::SdoAbortText(code) + ")",
+           code, false);
 }
 
-void SdoClient::StartDownload(uint16_t index,
-                              uint8_t sub,
-                              std::vector<uint8_t> data,
-                              std::function<void(uint32_t, uint32_t)> progress) {
-  result_ = SdoResult();
+void SdoClient::StartWrite(uint16_t index,
+                           uint8_t sub,
+                           std::vector<uint8_t> data,
+                           std::function<void(uint32_t, uint32_t)> progress) {
+  result_ = NotFinished();
+  received_.clear();
   index_ = index;
   sub_ = sub;
   data_ = std::move(data);
@@ -87,8 +112,9 @@ void SdoClient::StartDownload(uint16_t index,
   deadline_us_ = 0;  // armed by the next Poll/OnFrame, which know the time
 }
 
-void SdoClient::StartUpload(uint16_t index, uint8_t sub, bool block) {
-  result_ = SdoResult();
+void SdoClient::StartRead(uint16_t index, uint8_t sub, bool block) {
+  result_ = NotFinished();
+  received_.clear();
   index_ = index;
   sub_ = sub;
   data_.clear();
@@ -169,13 +195,13 @@ void SdoClient::OnFrame(const CanFrame& f, uint64_t now_us) {
 SdoClient::Reply SdoClient::OnAbort(const CanFrame& f) {
   // An abort names its object: one for another object ends an earlier transfer, not this one.
   if (!ForThisObject(f)) return Reply::kIgnored;
-  result_.abort_code = canopen::AbortFromCode(LoadLe32(f.data + 4));
-  result_.aborted_by_server = true;
+  const canopen::SdoAbort abort = canopen::AbortFromCode(LoadLe32(f.data + 4));
   char where[32];
   std::snprintf(where, sizeof where, "%04X:%02X", index_, sub_);
-  Finish(false, std::string("node ") + std::to_string(node_id_) + " refused " + where + ": abort " +
-                    Hex(canopen::Code(result_.abort_code)) + " (" +
-                    canopen::SdoAbortText(result_.abort_code) + ")");
+  FailWith(Error::kTransferAborted,
+           std::string("node ") + std::to_string(node_id_) + " refused " + where + ": abort " +
+               Hex(canopen::Code(abort)) + " (" + canopen::SdoAbortText(abort) + ")",
+           abort, true);
   return Reply::kTaken;
 }
 
@@ -221,7 +247,7 @@ SdoClient::Reply SdoClient::OnDownloadReply(const CanFrame& f) {
     if (cmd != Command(kScsInitiateDownload)) return Reply::kUnexpected;
     if (size <= 4 && size > 0) {
       if (progress_) progress_(size, size);
-      Finish(true, "ok");
+      Succeed();
       return Reply::kTaken;
     }
     state_ = State::kSegDownload;
@@ -232,7 +258,7 @@ SdoClient::Reply SdoClient::OnDownloadReply(const CanFrame& f) {
   pos_ += size - pos_ < kSegmentBytes ? size - pos_ : kSegmentBytes;
   if (progress_) progress_(pos_, size);
   if (pos_ >= size) {
-    Finish(true, "ok");
+    Succeed();
     return Reply::kTaken;
   }
   toggle_ = static_cast<uint8_t>(toggle_ ^ 1);
@@ -261,7 +287,7 @@ SdoClient::Reply SdoClient::OnBlockDownloadReply(const CanFrame& f) {
       return Reply::kTaken;
     default:  // kBlockEnd
       if (cmd != Block(kScsBlockDownload, kBlockEnd)) return Reply::kUnexpected;
-      Finish(true, "ok");
+      Succeed();
       return Reply::kTaken;
   }
 }
@@ -300,8 +326,8 @@ SdoClient::Reply SdoClient::OnUploadReply(const CanFrame& f) {
     if (Specifier(cmd) != kScsInitiateUpload) return Reply::kUnexpected;
     if ((cmd & kExpedited) != 0) {
       const uint32_t n = ExpeditedBytes(cmd);
-      result_.data.assign(f.data + 4, f.data + 4 + n);
-      Finish(true, "ok");
+      received_.assign(f.data + 4, f.data + 4 + n);
+      Succeed();
       return Reply::kTaken;
     }
     upload_size_ = (cmd & kSizeIndicated) != 0 ? LoadLe32(f.data + 4) : 0;
@@ -312,9 +338,9 @@ SdoClient::Reply SdoClient::OnUploadReply(const CanFrame& f) {
   }
   if (Specifier(cmd) != kScsUploadSegment || ToggleOf(cmd) != toggle_) return Reply::kUnexpected;
   const uint32_t n = SegmentBytes(cmd);
-  result_.data.insert(result_.data.end(), f.data + 1, f.data + 1 + n);
+  received_.insert(received_.end(), f.data + 1, f.data + 1 + n);
   if ((cmd & kLastSegment) != 0) {
-    Finish(true, "ok");
+    Succeed();
     return Reply::kTaken;
   }
   toggle_ = static_cast<uint8_t>(toggle_ ^ 1);
@@ -350,7 +376,7 @@ void SdoClient::OnBlockUploadSegment(const CanFrame& f) {
   const bool last = (cmd & kBlockLastSegment) != 0;
   if (seq == up_last_seq_ + 1) {
     up_last_seq_ = seq;
-    result_.data.insert(result_.data.end(), f.data + 1, f.data + 1 + kSegmentBytes);
+    received_.insert(received_.end(), f.data + 1, f.data + 1 + kSegmentBytes);
     up_last_ = last;
   }
   if (seq != opt_.upload_block_size && !last) return;
@@ -367,15 +393,15 @@ void SdoClient::OnBlockUploadSegment(const CanFrame& f) {
 
 void SdoClient::OnBlockUploadEnd(const CanFrame& f) {
   const uint32_t unused = BlockEndUnused(f.data[0]);
-  if (unused <= result_.data.size()) result_.data.resize(result_.data.size() - unused);
-  if (upload_size_ != 0 && result_.data.size() != upload_size_) {
+  if (unused <= received_.size()) received_.resize(received_.size() - unused);
+  if (upload_size_ != 0 && received_.size() != upload_size_) {
     return SendAbort(canopen::SdoAbort::kTypeMismatch, "block upload size differs from announced");
   }
-  if (LoadLe16(f.data + 1) != canopen::Crc16Update(0, result_.data.data(), result_.data.size())) {
+  if (LoadLe16(f.data + 1) != canopen::Crc16Update(0, received_.data(), received_.size())) {
     return SendAbort(canopen::SdoAbort::kCrc, "block upload CRC mismatch");
   }
   Queue(Plain(Block(kCcsBlockUpload, kBlockEnd)));
-  Finish(true, "ok");
+  Succeed();
 }
 
 }  // namespace volcomp::canopen_client

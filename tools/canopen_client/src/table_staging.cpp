@@ -25,37 +25,36 @@ std::string AbortHint(canopen::SdoAbort abort_code) {
   }
 }
 
-SdoResult Explain(SdoResult r, const std::string& step) {
-  if (r.ok) return r;
-  const std::string hint = AbortHint(r.abort_code);
-  r.message = step + ": " + r.message + (hint.empty() ? "" : "; " + hint);
-  return r;
+SdoFailure Explain(SdoFailure f, const std::string& step) {
+  const std::string hint = AbortHint(f.abort);
+  f.message = step + ": " + f.message + (hint.empty() ? "" : "; " + hint);
+  return f;
 }
 
 std::string StagingFailureReason(NodeObjects& node) {
-  uint32_t word = 0;
-  if (!node.Read(ObjectId::kTableStatus, &word).ok) return "";
-  const canopen::TableStatus st = canopen::DecodeTableStatus(word);
+  const SdoExpected<uint32_t> word = node.Read(ObjectId::kTableStatus);
+  if (!word.ok()) return "";
+  const canopen::TableStatus st = canopen::DecodeTableStatus(*word);
   if (st.staged == canopen::StagedState::kEmpty) return "nothing is staged (upload a table first)";
   if (st.staged != canopen::StagedState::kFailed || st.error == Error::kOk) return "";
   return std::string(ErrorText(st.error)) + " (" + ErrorName(st.error) + ")";
 }
 
 std::string SettingsRefusalReason(NodeObjects& node) {
-  uint32_t word = 0;
-  if (!node.Read(ObjectId::kSettingsCheck, &word).ok) return "";
-  const canopen::SettingsCheck c = canopen::DecodeSettingsCheck(word);
+  const SdoExpected<uint32_t> word = node.Read(ObjectId::kSettingsCheck);
+  if (!word.ok()) return "";
+  const canopen::SettingsCheck c = canopen::DecodeSettingsCheck(*word);
   if (c.finding.rule == ConfigRule::kNone) return "";
   const std::string axis =
       c.finding.axis != 0 ? "axis " + std::to_string(c.finding.axis) + ": " : std::string();
   return axis + ConfigRuleText(c.finding.rule);
 }
 
-SdoResult WithStagingReason(NodeObjects& node, SdoResult r) {
-  if (r.ok || !r.aborted_by_server) return r;
+SdoFailure WithStagingReason(NodeObjects& node, SdoFailure f) {
+  if (!f.by_server) return f;
   const std::string why = StagingFailureReason(node);
-  if (!why.empty()) r.message += "; the board says: " + why;
-  return r;
+  if (!why.empty()) f.message += "; the board says: " + why;
+  return f;
 }
 
 std::string TableCommandStep(TableCommand command) {
@@ -81,41 +80,35 @@ std::string TableCommandStep(TableCommand command) {
   return what + std::string(object);
 }
 
-SdoResult WriteTableCommand(NodeObjects& node, TableCommand command) {
-  SdoResult r = node.Write(ObjectId::kTableControl, canopen::Value(command));
+SdoOutcome WriteTableCommand(NodeObjects& node, TableCommand command) {
+  SdoOutcome r = node.Write(ObjectId::kTableControl, canopen::Value(command));
   if (command == TableCommand::kVerify || command == TableCommand::kActivate) {
-    r = WithStagingReason(node, r);
+    r = WithStagingReason(node, std::move(r));
   }
-  return Explain(r, TableCommandStep(command));
+  return Explain(std::move(r), TableCommandStep(command));
 }
 
-SdoResult EnsureWritable(NodeObjects& node) {
-  uint32_t writable = 0;
-  SdoResult r =
-      Explain(node.Read(ObjectId::kWriteAccess, &writable), "reading write access (0x2111)");
-  if (!r.ok || writable != 0) return r;
+SdoOutcome EnsureWritable(NodeObjects& node) {
+  VOLCOMP_TRY_ASSIGN(const uint32_t writable,
+                     Explain(node.Read(ObjectId::kWriteAccess), "reading write access (0x2111)"));
+  if (writable != 0) return SdoOutcome::Ok();
   return Explain(node.Write(ObjectId::kUnlock, canopen::kUnlockSignature), "unlocking (0x2110)");
 }
 
-SdoResult PrepareStaging(NodeObjects& node) {
-  const SdoResult r = EnsureWritable(node);
-  if (!r.ok) return r;
+SdoOutcome PrepareStaging(NodeObjects& node) {
+  VOLCOMP_TRY(EnsureWritable(node));
   return WriteTableCommand(node, TableCommand::kClear);
 }
 
-SdoResult VerifyStaged(NodeObjects& node, uint32_t image_crc, uint32_t* staged_crc) {
-  SdoResult r = WriteTableCommand(node, TableCommand::kVerify);
-  if (!r.ok) return r;
-  uint32_t staged = 0;
-  r = Explain(node.Read(ObjectId::kStagedTableCrc, &staged), "reading the staged CRC-32 (0x2105)");
-  if (!r.ok) return r;
-  if (staged_crc != nullptr) *staged_crc = staged;
+SdoOutcome VerifyStaged(NodeObjects& node, uint32_t image_crc) {
+  VOLCOMP_TRY(WriteTableCommand(node, TableCommand::kVerify));
+  VOLCOMP_TRY_ASSIGN(const uint32_t staged, Explain(node.Read(ObjectId::kStagedTableCrc),
+                                                    "reading the staged CRC-32 (0x2105)"));
   if (staged != image_crc) {
-    r.ok = false;
-    r.abort_code = canopen::SdoAbort::kNone;
-    r.message = "the board staged CRC-32 " + Hex32(staged) + ", expected " + Hex32(image_crc);
+    return SdoFail(Error::kImageBadCrc,
+                   "the board staged CRC-32 " + Hex32(staged) + ", expected " + Hex32(image_crc));
   }
-  return r;
+  return SdoOutcome::Ok();
 }
 
 }  // namespace volcomp::canopen_client

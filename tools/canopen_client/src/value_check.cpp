@@ -66,38 +66,35 @@ ValueRange WritableRange(const canopen::ObjectEntry& e) {
   return r;
 }
 
-bool EncodeWriteValue(const canopen::ObjectEntry& e,
-                      const std::string& text,
-                      std::vector<uint8_t>* payload,
-                      std::string* why) {
+Expected<std::vector<uint8_t>> EncodeWriteValue(const canopen::ObjectEntry& e,
+                                                const std::string& text) {
   const std::string object = std::string("\"") + e.name + "\"";
   if (e.access == canopen::Access::kRo || e.access == canopen::Access::kConst) {
-    *why = object + " is read-only";
-    return false;
+    return Fail(Error::kInvalidArgument, object + " is read-only");
   }
   const uint32_t size = canopen::FixedSize(e.type);
   if (size == 0) {
-    *why = object + " is a " + TypeName(e.type) + " object: `sdo write` writes numbers only";
-    return false;
+    return Fail(Error::kInvalidArgument,
+                object + " is a " + TypeName(e.type) + " object: `sdo write` writes numbers only");
   }
   const char* begin = text.c_str();
   char* end = nullptr;
   errno = 0;
   const long long v = std::strtoll(begin, &end, 0);
   if (text.empty() || *end != '\0' || errno == ERANGE) {
-    *why = "\"" + text + "\" is not an integer (decimal, 0x-hex or negative)";
-    return false;
+    return Fail(Error::kInvalidArgument,
+                "\"" + text + "\" is not an integer (decimal, 0x-hex or negative)");
   }
   const ValueRange r = WritableRange(e);
   if (v < r.low || v > r.high) {
-    *why = text + " is outside what " + object + " (" + TypeName(e.type) +
-           ") accepts: " + std::to_string(r.low) + ".." + std::to_string(r.high);
-    return false;
+    return Fail(Error::kInvalidArgument,
+                text + " is outside what " + object + " (" + TypeName(e.type) +
+                    ") accepts: " + std::to_string(r.low) + ".." + std::to_string(r.high));
   }
-  payload->assign(size, 0);
+  std::vector<uint8_t> payload(size, 0);
   const uint64_t bits = static_cast<uint64_t>(v);
-  for (uint32_t i = 0; i < size; ++i) (*payload)[i] = static_cast<uint8_t>(bits >> (8 * i));
-  return true;
+  for (uint32_t i = 0; i < size; ++i) payload[i] = static_cast<uint8_t>(bits >> (8 * i));
+  return payload;
 }
 
 }  // namespace volcomp::canopen_client

@@ -1,5 +1,6 @@
 // Typed access to one node's objects by ObjectId (addresses and sizes from the shared object
-// dictionary) over any frame link: a real transport (CanSession) or the simulator's bus.
+// dictionary) over any frame link: a real transport (CanSession) or the simulator's bus. Every
+// access runs to completion; a failure is an SdoFailure (sdo_client.hpp).
 #pragma once
 
 #include <cstdint>
@@ -27,14 +28,17 @@ class NodeObjects {
   const SdoClient::Options& options() const { return options_; }
 
   /// Numeric objects: written with the entry's size (4 bytes for non-numeric types).
-  SdoResult Write(canopen::ObjectId id, uint32_t value);
-  SdoResult Read(canopen::ObjectId id, uint32_t* value);
-  SdoResult ReadString(canopen::ObjectId id, std::string* value);
-  /// Domains: block transfer (segmented when the options say so).
-  SdoResult Download(canopen::ObjectId id,
-                     const std::vector<uint8_t>& data,
-                     std::function<void(uint32_t, uint32_t)> progress = {});
-  SdoResult UploadDomain(canopen::ObjectId id, std::vector<uint8_t>* data);
+  SdoOutcome Write(canopen::ObjectId id, uint32_t value);
+  /// Numeric objects of 1..4 bytes, zero-extended.
+  SdoExpected<uint32_t> Read(canopen::ObjectId id);
+  SdoExpected<std::string> ReadString(canopen::ObjectId id);
+  /// Domains (a table image): written by block transfer (segmented when the options say so);
+  /// `progress(bytes_done, total)` as the node acknowledges.
+  SdoOutcome WriteDomain(canopen::ObjectId id,
+                         const std::vector<uint8_t>& data,
+                         std::function<void(uint32_t, uint32_t)> progress = {});
+  /// Domains, read by block transfer.
+  SdoExpected<std::vector<uint8_t>> ReadDomain(canopen::ObjectId id);
 
  private:
   const FrameLink* link_;

@@ -1,16 +1,16 @@
-// CiA 301 SDO client (the PC tool's side of uploads, reads and writes), as an event-driven state
-// machine so the same code runs against a real bus (Run() with a CanTransport-like link) and in
-// virtual time inside the simulator (OnFrame / Poll / PopTx driven by the simulated bus).
+// CiA 301 SDO client: the PC tool's side of every object read and write, the table transfer
+// included, as an event-driven state machine so the same code runs over a real bus (sdo_runner.hpp)
+// and in the simulator's virtual time (OnFrame / Poll / PopTx). Directions are named from the PC:
+// a write sends data to the node (an SDO download: expedited up to 4 bytes, else block transfer
+// with CRC-16, or segmented), a read fetches it (an SDO upload; block transfer when asked).
 //
-// Download picks the protocol by size: expedited for <= 4 bytes, block transfer (CRC-16 on,
-// size indicated) for larger values when `use_block` (default), segmented otherwise. Upload: block
-// for DOMAIN reads when asked, expedited/segmented otherwise. Block download honours the server's
-// block size from every ack and resends from the acknowledged sequence number.
+// An answer counts only when it names the transfer's object (index and sub-index of initiate
+// responses and aborts): a late answer to an earlier request is ignored, its timeout running on;
+// a frame that fits neither the state nor the object aborts the transfer (0x05040001).
 //
-// Answers are matched to the transfer: an initiate response or an abort that names another object
-// (index and sub-index, bytes 1-3) is a late answer to an earlier request and is ignored (the
-// transfer keeps waiting, its timeout still running); a frame that fits neither the transfer's
-// state nor its object aborts the transfer (0x05040001).
+// A failed access is an SdoFailure: the Failure for people (kCommunication when the node did not
+// answer in time or the link failed, kTransferAborted for an abort from either side, ...) and the
+// abort code behind it, for the callers' decisions (retry a protocol abort, explain a refusal).
 #pragma once
 
 #include <cstdint>
@@ -20,18 +20,36 @@
 
 #include "volcomp/can/can_frame.hpp"
 #include "volcomp/canopen/sdo_abort.hpp"
+#include "volcomp/hosted/expected.hpp"
 
 namespace volcomp::canopen_client {
 
-struct SdoResult {
-  bool ok = false;
-  // From the server, or the one we sent (timeout, protocol error); kNone when the transfer
-  // succeeded or failed without an abort (e.g. a check of the caller's).
-  canopen::SdoAbort abort_code = canopen::SdoAbort::kNone;
-  bool aborted_by_server = false;
-  std::string message;        // readable: what failed and why
-  std::vector<uint8_t> data;  // upload result
+/// Why an SDO access failed. `code` is kCommunication when nothing answered in time (the client's
+/// timeout abort) or the link failed, kTransferAborted for any other abort, sent or received;
+/// `message` says what failed and why ("node 16 refused 2101:00: abort 0x08000022 (...)").
+struct SdoFailure : Failure {
+  /// The abort received (by_server) or sent; kNone for a failure without one (the link, a check).
+  canopen::SdoAbort abort = canopen::SdoAbort::kNone;
+  bool by_server = false;
 };
+
+template <typename T>
+using SdoExpected = Expected<T, SdoFailure>;
+using SdoOutcome = Expected<void, SdoFailure>;
+
+/// A failure of the caller's own (no abort): `code` and `message`.
+inline Unexpected<SdoFailure> SdoFail(Error code, std::string message) {
+  SdoFailure f;
+  f.code = code;
+  f.message = std::move(message);
+  return Fail(std::move(f));
+}
+
+/// The abort behind `r`: kNone when it succeeded or failed without one.
+template <typename T>
+canopen::SdoAbort AbortOf(const SdoExpected<T>& r) {
+  return r.ok() ? canopen::SdoAbort::kNone : r.error().abort;
+}
 
 class SdoClient {
  public:
@@ -44,21 +62,24 @@ class SdoClient {
   SdoClient(uint8_t node_id, Options options);
   explicit SdoClient(uint8_t node_id) : SdoClient(node_id, Options()) {}
 
-  /// Starts a download of `data` to (index, sub). `progress(bytes_done, total)` is called as
-  /// acknowledgements arrive (may be empty).
-  void StartDownload(uint16_t index,
-                     uint8_t sub,
-                     std::vector<uint8_t> data,
-                     std::function<void(uint32_t, uint32_t)> progress = {});
-  /// Starts an upload of (index, sub); `block` asks for block transfer.
-  void StartUpload(uint16_t index, uint8_t sub, bool block = false);
+  /// Starts writing `data` to (index, sub) (an SDO download). `progress(bytes_done, total)` is
+  /// called as acknowledgements arrive (may be empty).
+  void StartWrite(uint16_t index,
+                  uint8_t sub,
+                  std::vector<uint8_t> data,
+                  std::function<void(uint32_t, uint32_t)> progress = {});
+  /// Starts reading (index, sub) (an SDO upload); `block` asks for block transfer.
+  void StartRead(uint16_t index, uint8_t sub, bool block = false);
+  /// Ends the transfer with `why` without sending anything (the link to the node failed).
+  void Abandon(const Failure& why);
 
   void OnFrame(const CanFrame& frame, uint64_t now_us);
   void Poll(uint64_t now_us);
   bool PopTx(CanFrame* frame);
 
   bool done() const { return state_ == State::kDone; }
-  const SdoResult& result() const { return result_; }
+  /// The bytes read (empty for a write), or why the transfer failed (kNotReady while it runs).
+  const SdoExpected<std::vector<uint8_t>>& result() const { return result_; }
   uint8_t node_id() const { return node_id_; }
   /// Segments resent after a gap acknowledgement (block download), for reports.
   uint32_t resent_segments() const { return resent_; }
@@ -99,7 +120,8 @@ class SdoClient {
   // Bytes 1-3 of an initiate response or abort name this transfer's object.
   bool ForThisObject(const CanFrame& f) const;
 
-  void Finish(bool ok, const std::string& message);
+  void Succeed();
+  void FailWith(Error code, std::string message, canopen::SdoAbort abort, bool by_server);
   void SendAbort(canopen::SdoAbort code, const std::string& message);
   void Queue(const CanFrame& f);
   CanFrame Request(uint8_t cmd) const;  // with index and sub-index
@@ -109,7 +131,8 @@ class SdoClient {
   uint8_t node_id_;
   Options opt_;
   State state_ = State::kDone;
-  SdoResult result_;
+  SdoExpected<std::vector<uint8_t>> result_{std::vector<uint8_t>()};
+  std::vector<uint8_t> received_;  // what a read has received so far
   uint16_t index_ = 0;
   uint8_t sub_ = 0;
   std::vector<uint8_t> data_;

@@ -3,12 +3,12 @@
 //
 //   PrepareStaging: read write access (0x2111), unlock (0x2110 = "unlk") if it is off, clear the
 //                   staging bank (0x2101 = 3);
-//   (the caller block-downloads the image into 0x2100, with its own progress and timing);
+//   (the caller writes the image into 0x2100 by block transfer, with its own progress and timing);
 //   VerifyStaged:   verify on the board (0x2101 = 4), read the staged CRC-32 (0x2105) and compare
 //                   it with the image's.
 //
-// Every failure comes back as an SdoResult whose message names the step and explains the common
-// refusals (see Explain()); abort_code is the server's (kNone for a CRC mismatch).
+// Every failure is an SdoFailure whose message names the step and explains the common refusals
+// (see Explain()); its abort is the server's (kNone, code kImageBadCrc, for a CRC mismatch).
 #pragma once
 
 #include <cstdint>
@@ -23,8 +23,14 @@ namespace volcomp::canopen_client {
 /// staged); empty for other codes.
 std::string AbortHint(canopen::SdoAbort abort_code);
 
-/// `r` with its message prefixed by `step` ("step: reason; hint") when it failed; unchanged if ok.
-SdoResult Explain(SdoResult r, const std::string& step);
+/// `f` with its message prefixed by `step` and followed by what to do ("step: reason; hint").
+SdoFailure Explain(SdoFailure f, const std::string& step);
+/// `r` explained by `step` when it failed; unchanged if ok.
+template <typename T>
+SdoExpected<T> Explain(SdoExpected<T> r, const std::string& step) {
+  if (r.ok()) return r;
+  return Fail(Explain(r.error(), step));
+}
 
 /// The board's own reason for a failed staging step (a refused verification, activation or
 /// transfer), from its table status (0x2102): the error of the last staging failure in words
@@ -37,26 +43,31 @@ std::string StagingFailureReason(NodeObjects& node);
 /// empty when they break none or 0x2123 cannot be read.
 std::string SettingsRefusalReason(NodeObjects& node);
 
-/// `r` with the board's reason appended when the board refused (aborted_by_server) and its staging
-/// bank says why (StagingFailureReason); unchanged otherwise.
-SdoResult WithStagingReason(NodeObjects& node, SdoResult r);
+/// `f` with the board's reason appended when the board refused (by_server) and its staging bank
+/// says why (StagingFailureReason); unchanged otherwise.
+SdoFailure WithStagingReason(NodeObjects& node, SdoFailure f);
+template <typename T>
+SdoExpected<T> WithStagingReason(NodeObjects& node, SdoExpected<T> r) {
+  if (r.ok()) return r;
+  return Fail(WithStagingReason(node, r.error()));
+}
 
 /// What writing `command` to table control does, with the write: "activating (0x2101 = 1)".
 std::string TableCommandStep(canopen::TableCommand command);
 
 /// Writes `command` to table control (0x2101); a failure is Explain()ed with TableCommandStep(),
 /// a refused verification or activation also WithStagingReason().
-SdoResult WriteTableCommand(NodeObjects& node, canopen::TableCommand command);
+SdoOutcome WriteTableCommand(NodeObjects& node, canopen::TableCommand command);
 
 /// Reads write access (0x2111) and unlocks the board (0x2110) if it is off: before every write to
 /// tables or settings (staging, activation, deactivation).
-SdoResult EnsureWritable(NodeObjects& node);
+SdoOutcome EnsureWritable(NodeObjects& node);
 
 /// EnsureWritable(), then clears the staging bank.
-SdoResult PrepareStaging(NodeObjects& node);
+SdoOutcome PrepareStaging(NodeObjects& node);
 
-/// Verifies the staged image on the board and checks its CRC-32 against `image_crc`;
-/// `*staged_crc` (optional) receives the board's value when it could be read.
-SdoResult VerifyStaged(NodeObjects& node, uint32_t image_crc, uint32_t* staged_crc = nullptr);
+/// Verifies the staged image on the board and checks its CRC-32 (then equal to `image_crc`);
+/// another CRC-32 is a failure naming both (kImageBadCrc, no abort).
+SdoOutcome VerifyStaged(NodeObjects& node, uint32_t image_crc);
 
 }  // namespace volcomp::canopen_client

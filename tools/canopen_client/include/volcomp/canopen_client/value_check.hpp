@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "volcomp/canopen/object_dictionary.hpp"
+#include "volcomp/hosted/expected.hpp"
 
 namespace volcomp::canopen_client {
 
@@ -22,11 +23,9 @@ struct ValueRange {
 ValueRange WritableRange(const canopen::ObjectEntry& entry);
 
 /// Checks `text` as a value for `entry` and encodes it as the write's payload (little-endian, the
-/// type's size). On refusal returns false and sets *why, naming the value and the limit or the
-/// reason (read-only object, string or domain object, not an integer).
-bool EncodeWriteValue(const canopen::ObjectEntry& entry,
-                      const std::string& text,
-                      std::vector<uint8_t>* payload,
-                      std::string* why);
+/// type's size). A refusal (kInvalidArgument) names the value and the limit or the reason
+/// (read-only object, string or domain object, not an integer).
+Expected<std::vector<uint8_t>> EncodeWriteValue(const canopen::ObjectEntry& entry,
+                                                const std::string& text);
 
 }  // namespace volcomp::canopen_client
