@@ -105,9 +105,9 @@ TEST(Eds, DefaultsAreWhatAFreshBoardReports) {
     if (!configuration || e.access == "wo" || e.default_value.empty()) continue;
     const canopen::ObjectEntry* entry = canopen::FindEntry(e.index, e.sub);
     ASSERT_NE(entry, nullptr) << std::hex << e.index << " sub " << int{e.sub};
-    uint32_t value = 0;
-    const auto r = node.Read(entry->id, &value);
-    ASSERT_TRUE(r.ok) << r.message;
+    const auto r = node.Read(entry->id);
+    ASSERT_TRUE(r.ok()) << r.error().message;
+    const uint32_t value = *r;
     EXPECT_EQ(value, static_cast<uint32_t>(std::stoll(e.default_value, nullptr, 0)))
         << entry->name << " (" << std::hex << e.index << " sub " << int{e.sub}
         << "): the board reports " << std::dec << value << ", the EDS says " << e.default_value;

@@ -11,7 +11,6 @@
 #include "volcomp/can_io/slcan_server.hpp"
 #include "volcomp/can_io/transport.hpp"
 #include "volcomp/sim/bus_bridge.hpp"
-#include "volcomp/sim/from_tools.hpp"
 #include "volcomp/sim/realtime.hpp"
 #include "volcomp/sim/simulated_board.hpp"
 
@@ -29,44 +28,37 @@ struct Link {
 };
 
 Expected<Link> OpenLink(const NodeOptions& o) {
-  // TRANSITION(tools): the servers' factories and OpenTransport throw.
-  return FromTools(
-      [&] {
-        Link link;
-        switch (o.link) {
-          case NodeOptions::Link::kSlcanTcp:
-            link.server = can_io::SlcanServer::CreateTcp("127.0.0.1", o.port);
-            link.spec = link.server->client_spec();
-            break;
-          case NodeOptions::Link::kSlcanPty: {
-            can_io::SlcanServerOptions so;
-            so.symlink = o.pty_link;
-            link.server = can_io::SlcanServer::CreatePty(so);
-            link.spec = link.server->client_spec();
-            break;
-          }
-          case NodeOptions::Link::kSocketCan:
-            link.spec = "socketcan:" + o.iface;
-            link.transport = can_io::OpenTransport(link.spec);
-            break;
-        }
-        return link;
-      },
-      Error::kCommunication);
+  Link link;
+  switch (o.link) {
+    case NodeOptions::Link::kSlcanTcp: {
+      VOLCOMP_TRY_ASSIGN(link.server, can_io::SlcanServer::CreateTcp("127.0.0.1", o.port));
+      link.spec = link.server->client_spec();
+      break;
+    }
+    case NodeOptions::Link::kSlcanPty: {
+      can_io::SlcanServerOptions so;
+      so.symlink = o.pty_link;
+      VOLCOMP_TRY_ASSIGN(link.server, can_io::SlcanServer::CreatePty(so));
+      link.spec = link.server->client_spec();
+      break;
+    }
+    case NodeOptions::Link::kSocketCan: {
+      link.spec = "socketcan:" + o.iface;
+      VOLCOMP_TRY_ASSIGN(link.transport, can_io::OpenTransport(link.spec));
+      break;
+    }
+  }
+  return link;
 }
 
 // One exchange with a SocketCAN transport: what the node sent out, then up to `wait` for a frame.
 Outcome ServeTransport(can_io::CanTransport& transport,
                        Endpoint& ext,
                        std::chrono::microseconds wait) {
-  // TRANSITION(tools): the transport throws when the link fails.
-  VOLCOMP_TRY(FromTools(
-      [&] {
-        CanFrame f;
-        while (ext.Receive(&f)) transport.Send(f);
-        if (auto f2 = transport.Receive(wait)) ext.Send(*f2);
-      },
-      Error::kCommunication));
+  CanFrame f;
+  while (ext.Receive(&f)) VOLCOMP_TRY(transport.Send(f));
+  VOLCOMP_TRY_ASSIGN(const std::optional<CanFrame> received, transport.Receive(wait));
+  if (received) ext.Send(*received);
   VOLCOMP_TRY(PumpTransport(transport, ext));
   return Outcome::Ok();
 }

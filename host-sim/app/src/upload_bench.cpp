@@ -118,19 +118,19 @@ Expected<UploadBenchResult> RunUploadBench(const UploadBenchOptions& options) {
   host.Idle(5000000);
   // The PC tool's staging steps around the timed transfer, which runs event by event.
   canopen_client::NodeObjects pc_tool(host.Link(), node);
-  auto fail = [](const std::string& what, const canopen_client::SdoResult& res) {
-    return Fail(Error::kIoError, what + ": " + res.message);
+  auto fail = [](const std::string& what, const canopen_client::SdoFailure& failure) {
+    return Fail(failure.code, what + ": " + failure.message);
   };
-  auto res = canopen_client::PrepareStaging(pc_tool);
-  if (!res.ok) return fail("staging", res);
+  const auto prepared = canopen_client::PrepareStaging(pc_tool);
+  if (!prepared.ok()) return fail("staging", prepared.error());
 
   uint64_t frames_before = bus.stats().frames;
   const canopen::ObjectEntry& data = canopen::Entry(ObjectId::kTableData);
   canopen_client::SdoClient c(node);
-  c.StartDownload(data.index, data.sub, image);
+  c.StartWrite(data.index, data.sub, image);
   const uint64_t t0 = bus.now();
   host.Run(c, 60000000000ull);
-  if (!c.done() || !c.result().ok) return fail("block download", c.result());
+  if (!c.result().ok()) return fail("block download", c.result().error());
   const double bytes = static_cast<double>(image.size());
   r.transfer_s = static_cast<double>(bus.now() - t0) * 1e-9;
   r.frames = bus.stats().frames - frames_before;
@@ -142,18 +142,19 @@ Expected<UploadBenchResult> RunUploadBench(const UploadBenchOptions& options) {
   r.ceiling_bytes_s = NoStuffingCeilingBytesPerS(options.bitrate);
   r.ceiling_share = r.rate_bytes_s / r.ceiling_bytes_s;
 
-  res = canopen_client::VerifyStaged(pc_tool, r.image_crc);
-  if (!res.ok) return fail("verify", res);
+  const auto verified = canopen_client::VerifyStaged(pc_tool, r.image_crc);
+  if (!verified.ok()) return fail("verify", verified.error());
   if (options.activate) {
-    res = pc_tool.Write(ObjectId::kReferenceAxes, 0x07);
-    if (!res.ok) return fail("reference", res);
+    const auto referenced = pc_tool.Write(ObjectId::kReferenceAxes, 0x07);
+    if (!referenced.ok()) return fail("reference", referenced.error());
     host.Idle(200000000);
-    res = canopen_client::WriteTableCommand(pc_tool, TableCommand::kActivate);
-    if (!res.ok) return fail("activate", res);
+    const auto activated = canopen_client::WriteTableCommand(pc_tool, TableCommand::kActivate);
+    if (!activated.ok()) return fail("activate", activated.error());
     r.activated = true;
   }
-  res = pc_tool.Read(ObjectId::kActiveTableCrc, &r.active_crc);
-  if (!res.ok) return fail("read active CRC", res);
+  const auto active = pc_tool.Read(ObjectId::kActiveTableCrc);
+  if (!active.ok()) return fail("read active CRC", active.error());
+  r.active_crc = *active;
   return r;
 }
 

@@ -1,17 +1,7 @@
 // Pumps between external CAN links and SimBus endpoints.
 #include "volcomp/sim/bus_bridge.hpp"
 
-#include "volcomp/sim/from_tools.hpp"
-
 namespace volcomp::sim {
-namespace {
-
-// TRANSITION(tools): SlcanServer::Poll throws when poll() fails.
-Outcome Poll(can_io::SlcanServer& server, std::chrono::microseconds timeout) {
-  return FromTools([&] { server.Poll(timeout); }, Error::kCommunication);
-}
-
-}  // namespace
 
 size_t PumpSlcan(can_io::SlcanServer& server, Endpoint& endpoint) {
   size_t moved = 0;
@@ -31,7 +21,7 @@ Outcome ServeSlcan(can_io::SlcanServer& server,
                    Endpoint& endpoint,
                    std::chrono::microseconds timeout) {
   PumpSlcan(server, endpoint);
-  VOLCOMP_TRY(Poll(server, timeout));
+  VOLCOMP_TRY(server.Poll(timeout));
   PumpSlcan(server, endpoint);
   return Outcome::Ok();
 }
@@ -75,28 +65,26 @@ void SlcanBridge::Pump() {
 
 Outcome SlcanBridge::Serve(std::chrono::microseconds timeout) {
   Pump();
-  VOLCOMP_TRY(Poll(server_, timeout));
+  VOLCOMP_TRY(server_.Poll(timeout));
   Pump();
   return Outcome::Ok();
 }
 
 Expected<size_t> PumpTransport(can_io::CanTransport& transport, Endpoint& endpoint) {
-  // TRANSITION(tools): the transport throws when the link fails.
-  return FromTools(
-      [&] {
-        size_t moved = 0;
-        while (auto f = transport.Receive(std::chrono::microseconds(0))) {
-          endpoint.Send(*f);
-          ++moved;
-        }
-        CanFrame f;
-        while (endpoint.Receive(&f)) {
-          transport.Send(f);
-          ++moved;
-        }
-        return moved;
-      },
-      Error::kCommunication);
+  size_t moved = 0;
+  for (;;) {
+    VOLCOMP_TRY_ASSIGN(const std::optional<CanFrame> f,
+                       transport.Receive(std::chrono::microseconds(0)));
+    if (!f) break;
+    endpoint.Send(*f);
+    ++moved;
+  }
+  CanFrame f;
+  while (endpoint.Receive(&f)) {
+    VOLCOMP_TRY(transport.Send(f));
+    ++moved;
+  }
+  return moved;
 }
 
 }  // namespace volcomp::sim

@@ -51,13 +51,14 @@ World::World(const WorldOptions& options, Machine machine)
   link_.send = [this](const CanFrame& f) {
     bus_.RunUntil(now_ns_);
     pc_->Send(f);
+    return Outcome::Ok();
   };
-  link_.receive = [this](uint64_t timeout_us) -> std::optional<CanFrame> {
+  link_.receive = [this](uint64_t timeout_us) -> Expected<std::optional<CanFrame>> {
     const uint64_t deadline = now_ns_ + timeout_us * 1000;
     CanFrame f;
     for (;;) {
-      if (pc_->Receive(&f)) return f;
-      if (now_ns_ >= deadline) return std::nullopt;
+      if (pc_->Receive(&f)) return std::optional<CanFrame>(f);
+      if (now_ns_ >= deadline) return std::optional<CanFrame>();
       StepOnce(deadline);
     }
   };

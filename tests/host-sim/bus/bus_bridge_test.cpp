@@ -35,7 +35,9 @@ TEST(CanIoSimBus, SlcanBridgeServesAClientOverTheBus) {
     r.id = 0x580 + (f.id & 0x7F);
     node.Send(r);
   });
-  auto server = can_io::SlcanServer::CreateTcp("127.0.0.1", 0);
+  auto created = can_io::SlcanServer::CreateTcp("127.0.0.1", 0);
+  ASSERT_TRUE(created.ok()) << created.error().message;
+  auto& server = *created;
   const std::string spec = server->client_spec();
   std::atomic<bool> stop{false};
   std::string failure;  // the serving thread's, read after join
@@ -53,12 +55,16 @@ TEST(CanIoSimBus, SlcanBridgeServesAClientOverTheBus) {
     }
   });
   {
-    auto client = can_io::OpenTransport(spec + "@1M");
+    auto opened = can_io::OpenTransport(spec + "@1M");
+    ASSERT_TRUE(opened.ok()) << opened.error().message;
+    auto& client = *opened;
     const auto t0 = std::chrono::steady_clock::now();
     constexpr int kFrames = 200;
     for (int i = 0; i < kFrames; ++i) {
-      client->Send(Frame(0x601, {uint8_t(i), 0, 0, 0, 0, 0, 0, 0}));
-      const auto got = client->Receive(std::chrono::milliseconds(1000));
+      ASSERT_TRUE(client->Send(Frame(0x601, {uint8_t(i), 0, 0, 0, 0, 0, 0, 0})).ok());
+      const auto received = client->Receive(std::chrono::milliseconds(1000));
+      ASSERT_TRUE(received.ok()) << received.error().message;
+      const std::optional<CanFrame>& got = *received;
       ASSERT_TRUE(got) << i;
       EXPECT_EQ(got->id, 0x581u);
       EXPECT_EQ(got->data[0], uint8_t(i));
@@ -121,7 +127,9 @@ TEST(CanIoSimBus, SlcanBridgeDropsWhatWasQueuedForADisconnectedClient) {
   SimBus bus(1000000);
   Endpoint& pc = bus.Attach("pc");
   Endpoint& node = bus.Attach("node");
-  auto server = can_io::SlcanServer::CreateTcp("127.0.0.1", 0);
+  auto created = can_io::SlcanServer::CreateTcp("127.0.0.1", 0);
+  ASSERT_TRUE(created.ok()) << created.error().message;
+  auto& server = *created;
   SlcanBridge bridge(bus, *server, pc);
   const auto serve = [&] { EXPECT_TRUE(bridge.Serve(std::chrono::microseconds(200)).ok()); };
   const auto advance = [&](uint64_t ns) {  // bus time in 100 us steps, serving in between

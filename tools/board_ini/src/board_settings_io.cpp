@@ -12,12 +12,9 @@ namespace volcomp::board_ini {
 using canopen::ObjectId;
 using firmware::BoardSettings;
 
-void Require(const canopen_client::SdoResult& r, const std::string& what) {
-  if (r.ok) return;
-  // No answer at all is a communication failure; everything else the board said.
-  if (!r.aborted_by_server && r.abort_code == canopen::SdoAbort::kTimeout) {
-    throw tools::CommunicationError(what + ": " + r.message);
-  }
+void Require(const canopen_client::SdoFailure& r, const std::string& what) {
+  // No answer at all (or no link) is a communication failure; everything else the board said.
+  if (r.code == Error::kCommunication) throw tools::CommunicationError(what + ": " + r.message);
   throw tools::InputError(canopen_client::Explain(r, what).message);
 }
 
@@ -25,23 +22,21 @@ BoardSettings ReadSettings(canopen_client::NodeObjects& node) {
   BoardSettings s = FactorySettings();
   for (const SettingObject& o : SettingObjects()) {
     const canopen::ObjectEntry& e = canopen::Entry(o.id);
-    uint32_t raw = 0;
-    Require(node.Read(o.id, &raw), "reading " + ObjectAddress(e) + " " + e.name);
+    const uint32_t raw = Require(node.Read(o.id), "reading " + ObjectAddress(e) + " " + e.name);
     o.set(s, FromRaw(e, raw));
   }
   return s;
 }
 
 bool SettingsPending(canopen_client::NodeObjects& node) {
-  uint32_t state = 0;
-  Require(node.Read(ObjectId::kDeviceState, &state), "reading the device state (2122:0)");
+  const uint32_t state =
+      Require(node.Read(ObjectId::kDeviceState), "reading the device state (2122:0)");
   return canopen::DecodeDeviceState(static_cast<uint16_t>(state)).settings_pending;
 }
 
 BoardSettings ReadSettingsInForce(canopen_client::NodeObjects& node) {
-  std::vector<uint8_t> record;
-  Require(node.UploadDomain(ObjectId::kSettingsInForce, &record),
-          "reading the settings in force (2124:0)");
+  const std::vector<uint8_t> record = Require(node.ReadDomain(ObjectId::kSettingsInForce),
+                                              "reading the settings in force (2124:0)");
   BoardSettings s;
   const Status st =
       firmware::DeserializeSettings(record.data(), static_cast<uint32_t>(record.size()), &s);

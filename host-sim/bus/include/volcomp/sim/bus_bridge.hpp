@@ -25,7 +25,7 @@ namespace volcomp::sim {
 size_t PumpSlcan(can_io::SlcanServer& server, Endpoint& endpoint);
 /// One step of a realtime loop serving SLCAN clients (use it as RunRealtime's wait): forwards
 /// what the endpoint received (so it is written before waiting), Poll(timeout), then queues what
-/// the client sent on the endpoint.
+/// the client sent on the endpoint. Fails when the server's Poll() does.
 Outcome ServeSlcan(can_io::SlcanServer& server,
                    Endpoint& endpoint,
                    std::chrono::microseconds timeout);
@@ -43,6 +43,7 @@ class SlcanBridge {
               uint64_t quiet_ns = 1000000)
       : bus_(bus), server_(server), endpoint_(endpoint), quiet_ns_(quiet_ns) {}
 
+  /// Fails when the server's Poll() does.
   Outcome Serve(std::chrono::microseconds timeout);
   /// Frames dropped because their client had disconnected.
   uint64_t dropped() const { return dropped_; }
@@ -62,7 +63,7 @@ class SlcanBridge {
   uint64_t dropped_ = 0;
 };
 
-/// Same for a transport (non-blocking Receive(0) until empty); the number of frames moved.
+/// Same for a transport (non-blocking Receive(0) until empty); the transport's failure, if any.
 Expected<size_t> PumpTransport(can_io::CanTransport& transport, Endpoint& endpoint);
 
 }  // namespace volcomp::sim

@@ -13,6 +13,7 @@
 #pragma once
 
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "volcomp/board_ini/setting_objects.hpp"
@@ -57,6 +58,12 @@ void WriteObjects(canopen_client::NodeObjects& node,
 void StoreSettings(canopen_client::NodeObjects& node);
 
 /// Throws CommunicationError (no answer) or InputError (refused: `what`, the board's reason).
-void Require(const canopen_client::SdoResult& r, const std::string& what);
+void Require(const canopen_client::SdoFailure& failure, const std::string& what);
+/// The value of `r`, or Require()'s exception when it failed.
+template <typename T>
+T Require(canopen_client::SdoExpected<T> r, const std::string& what) {
+  if (!r.ok()) Require(r.error(), what);
+  if constexpr (!std::is_void_v<T>) return std::move(r).value();
+}
 
 }  // namespace volcomp::board_ini

@@ -1,0 +1,52 @@
+// The configuration objects as the `config` commands show them.
+#include "config_view.hpp"
+
+#include "board_ini_call.hpp"
+#include "volcomp/board_ini/board_ini.hpp"
+
+namespace volcomp::cli {
+
+using board_ini::IniKey;
+using canopen::ObjectId;
+
+std::string AxisOf(const canopen::ObjectEntry& e, const firmware::BoardSettings& s) {
+  const IniKey* k = board_ini::KeyOf(e.id);
+  if (k == nullptr || e.id == ObjectId::kAxisCountConfig ||
+      !(k->per_axis || k->form == board_ini::ValueForm::kAxisNames)) {
+    return "";
+  }
+  const uint32_t a = e.sub - 1u;
+  return a < s.board.axis_count ? std::string(1, s.board.axis[a].name) : std::to_string(e.sub);
+}
+
+std::string KeyName(const canopen::ObjectEntry& e) {
+  if (e.id == ObjectId::kAxisCountConfig) return "axes (count)";
+  const IniKey* k = board_ini::KeyOf(e.id);
+  if (k == nullptr) return e.name;
+  return k->form == board_ini::ValueForm::kAxisNames ? "axes (name)" : k->key;
+}
+
+std::string ValueText(const canopen::ObjectEntry& e, int64_t v) {
+  const IniKey* k = board_ini::KeyOf(e.id);
+  if (k == nullptr || e.id == ObjectId::kAxisCountConfig) return std::to_string(v);
+  return board_ini::FormatValue(*k, v);
+}
+
+std::string UnitOf(const canopen::ObjectEntry& e) {
+  const IniKey* k = board_ini::KeyOf(e.id);
+  return k != nullptr && e.id != ObjectId::kAxisCountConfig ? k->unit : "";
+}
+
+const char* PendingNote() {
+  return "settings pending: these values are edited or stored but not in force until NMT reset "
+         "node (`volcomp nmt reset`; edits not stored are then lost)";
+}
+
+Expected<BoardConfiguration> ReadConfiguration(canopen_client::NodeObjects& node) {
+  BoardConfiguration c;
+  VOLCOMP_TRY_ASSIGN(c.settings, CallBoardIni([&] { return board_ini::ReadSettings(node); }));
+  VOLCOMP_TRY_ASSIGN(c.pending, CallBoardIni([&] { return board_ini::SettingsPending(node); }));
+  return c;
+}
+
+}  // namespace volcomp::cli
