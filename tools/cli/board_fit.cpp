@@ -6,8 +6,8 @@
 #include <iostream>
 
 #include "sdo_failure.hpp"
-#include "volcomp/board_ini/board_settings_io.hpp"
 #include "volcomp/canopen/board_protocol.hpp"
+#include "volcomp/canopen_client/board_settings_io.hpp"
 #include "volcomp/image/table_demands.hpp"
 
 namespace volcomp::tools {
@@ -38,7 +38,7 @@ BoardInstallation ReadInstallation(canopen_client::NodeObjects& node) {
   BoardInstallation b;
   b.settings_pending =
       canopen::DecodeDeviceState(ReadObject(node, ObjectId::kDeviceState)).settings_pending;
-  const firmware::BoardSettings s = board_ini::ReadSettingsInForce(node);
+  const BoardSettings s = canopen_client::ReadSettingsInForce(node);
   for (size_t a = 0; a < s.board.axis_count && a < table::kMaxAxes; ++a) {
     const AxisConfig& c = s.board.axis[a];
     BoardAxis x;

@@ -11,20 +11,20 @@
 
 #include "can_options.hpp"
 #include "commands.hpp"
-#include "volcomp/board_ini/board_ini.hpp"
-#include "volcomp/board_ini/board_settings_io.hpp"
-#include "volcomp/canopen/board_protocol.hpp"
-#include "volcomp/canopen_client/can_session.hpp"
 #include "volcomp/base/status.hpp"
+#include "volcomp/canopen/board_protocol.hpp"
+#include "volcomp/canopen/setting_objects.hpp"
+#include "volcomp/canopen_client/board_settings_io.hpp"
+#include "volcomp/canopen_client/can_session.hpp"
+#include "volcomp/hosted/settings_ini.hpp"
 #include "volcomp/tools/json.hpp"
 
 namespace volcomp::tools {
 namespace {
 
-using board_ini::IniKey;
 using canopen::ObjectId;
 using canopen_client::NmtCommand;
-using firmware::BoardSettings;
+using hosted::SettingKey;
 
 constexpr auto kBootUpWait = std::chrono::milliseconds(3000);
 
@@ -35,9 +35,9 @@ bool Exists(const std::string& path) {
 
 // The axis a configuration object belongs to ("X", "4 (not used)"), "" for board objects.
 std::string AxisOf(const canopen::ObjectEntry& e, const BoardSettings& s) {
-  const IniKey* k = board_ini::KeyOf(e.id);
+  const SettingKey* k = hosted::SettingKeyOf(e.id);
   if (k == nullptr || e.id == ObjectId::kAxisCountConfig ||
-      !(k->per_axis || k->form == board_ini::ValueForm::kAxisNames)) {
+      !(k->per_axis || k->form == hosted::SettingForm::kAxisNames)) {
     return "";
   }
   const uint32_t a = e.sub - 1u;
@@ -46,15 +46,15 @@ std::string AxisOf(const canopen::ObjectEntry& e, const BoardSettings& s) {
 
 std::string KeyName(const canopen::ObjectEntry& e) {
   if (e.id == ObjectId::kAxisCountConfig) return "axes (count)";
-  const IniKey* k = board_ini::KeyOf(e.id);
+  const SettingKey* k = hosted::SettingKeyOf(e.id);
   if (k == nullptr) return e.name;
-  return k->form == board_ini::ValueForm::kAxisNames ? "axes (name)" : k->key;
+  return k->form == hosted::SettingForm::kAxisNames ? "axes (name)" : k->key;
 }
 
 std::string ValueText(const canopen::ObjectEntry& e, int64_t v) {
-  const IniKey* k = board_ini::KeyOf(e.id);
+  const SettingKey* k = hosted::SettingKeyOf(e.id);
   if (k == nullptr || e.id == ObjectId::kAxisCountConfig) return std::to_string(v);
-  return board_ini::FormatValue(*k, v);
+  return hosted::FormatSettingValue(*k, v);
 }
 
 const char* PendingNote() {
@@ -70,10 +70,10 @@ int RunConfigShow(Args& args) {
   const bool all = args.flag("--all");
   args.finish();
   auto s = OpenSession(can);
-  const BoardSettings board = board_ini::ReadSettings(*s);
-  const bool pending = board_ini::SettingsPending(*s);
-  const BoardSettings in_force = board_ini::ReadSettingsInForce(*s);
-  const BoardSettings factory = board_ini::FactorySettings();
+  const BoardSettings board = canopen_client::ReadSettings(*s);
+  const bool pending = canopen_client::SettingsPending(*s);
+  const BoardSettings in_force = canopen_client::ReadSettingsInForce(*s);
+  const BoardSettings factory = BoardSettings();
   auto shown = [&](const canopen::ObjectEntry& e) {
     const std::string axis = AxisOf(e, board);
     return all || axis.empty() || !std::isdigit(static_cast<unsigned char>(axis[0]));
@@ -84,12 +84,12 @@ int RunConfigShow(Args& args) {
     w.key("node").value(unsigned{can.node});
     w.key("settings_pending").value(pending);
     w.key("objects").begin_array();
-    for (const board_ini::SettingObject& o : board_ini::SettingObjects()) {
+    for (const canopen::SettingObject& o : canopen::SettingObjects()) {
       const canopen::ObjectEntry& e = canopen::Entry(o.id);
       if (!shown(e)) continue;
-      const IniKey* k = board_ini::KeyOf(o.id);
+      const SettingKey* k = hosted::SettingKeyOf(o.id);
       w.begin_object();
-      w.key("object").value(board_ini::ObjectAddress(e));
+      w.key("object").value(hosted::ObjectAddress(e));
       w.key("name").value(e.name);
       w.key("key").value(KeyName(e));
       w.key("axis").value(AxisOf(e, board));
@@ -108,13 +108,13 @@ int RunConfigShow(Args& args) {
               pending ? PendingNote() : "settings in force (no edit or store pending)");
   std::printf("%-7s %-4s %-19s %-11s %-11s %-11s %s\n", "object", "axis", "key", "value",
               "in force", "factory", "unit (* = not the factory value, ! = not in force)");
-  for (const board_ini::SettingObject& o : board_ini::SettingObjects()) {
+  for (const canopen::SettingObject& o : canopen::SettingObjects()) {
     const canopen::ObjectEntry& e = canopen::Entry(o.id);
     if (!shown(e)) continue;
-    const IniKey* k = board_ini::KeyOf(o.id);
+    const SettingKey* k = hosted::SettingKeyOf(o.id);
     const bool changed = o.get(board) != o.get(factory);
     const bool not_in_force = o.get(board) != o.get(in_force);
-    std::printf("%-7s %-4s %-19s %-11s %-11s %-11s %s%s%s\n", board_ini::ObjectAddress(e).c_str(),
+    std::printf("%-7s %-4s %-19s %-11s %-11s %-11s %s%s%s\n", hosted::ObjectAddress(e).c_str(),
                 AxisOf(e, board).c_str(), KeyName(e).c_str(), ValueText(e, o.get(board)).c_str(),
                 ValueText(e, o.get(in_force)).c_str(), ValueText(e, o.get(factory)).c_str(),
                 changed ? "* " : "", not_in_force ? "! " : "",
@@ -138,8 +138,8 @@ int RunConfigSave(Args& args) {
     throw InputError(path + ": exists; give --force to replace it");
   }
   auto s = OpenSession(can);
-  const BoardSettings board = board_ini::ReadSettings(*s);
-  const bool pending = board_ini::SettingsPending(*s);
+  const BoardSettings board = canopen_client::ReadSettings(*s);
+  const bool pending = canopen_client::SettingsPending(*s);
   std::vector<std::string> header = {
       "volcomp board configuration: `volcomp config apply FILE --can ...` writes it to a board.",
       "Each key is one object (its address and unit in the comment); a key left out takes the",
@@ -148,7 +148,7 @@ int RunConfigSave(Args& args) {
     header.push_back("Read while settings were pending: these values were not yet in force.");
     std::cerr << "volcomp config save: warning: " << PendingNote() << "\n";
   }
-  const std::string text = board_ini::FormatBoardIni(board, header);
+  const std::string text = hosted::FormatSettingsIni(board, header);
   if (path == "-") {
     std::cout << text;
     return kExitOk;
@@ -158,7 +158,7 @@ int RunConfigSave(Args& args) {
   f.close();
   if (!f) throw InputError(path + ": cannot write");
   std::printf("node %u: %zu objects saved to %s (%u axes)\n", can.node,
-              board_ini::SettingObjects().size(), path.c_str(), board.board.axis_count);
+              canopen::SettingObjects().size(), path.c_str(), board.board.axis_count);
   return kExitOk;
 }
 
@@ -169,34 +169,37 @@ int RunConfigApply(Args& args) {
   args.finish();
   if (pos.size() != 1) throw UsageError("expected one FILE");
   // Everything is checked before the board is touched.
-  const BoardSettings wanted = board_ini::LoadBoardIni(pos[0]);
+  const hosted::IniExpected<BoardSettings> file = hosted::ReadSettingsIniFile(pos[0]);
+  if (!file.ok()) throw InputError(file.error().ToString());
+  const BoardSettings& wanted = *file;
 
   auto s = OpenSession(can);
-  const BoardSettings before = board_ini::ReadSettings(*s);
-  const bool pending_before = board_ini::SettingsPending(*s);
-  const std::vector<board_ini::Difference> changes = board_ini::Differences(before, wanted);
+  const BoardSettings before = canopen_client::ReadSettings(*s);
+  const bool pending_before = canopen_client::SettingsPending(*s);
+  const std::vector<canopen_client::Difference> changes =
+      canopen_client::Differences(before, wanted);
   if (changes.empty() && !pending_before) {
     std::printf("node %u: the board has %s in force already; nothing written\n", can.node,
                 pos[0].c_str());
     return kExitOk;
   }
-  for (const board_ini::Difference& d : changes) {
-    std::printf("  %s\n", board_ini::DescribeDifference(d, wanted).c_str());
+  for (const canopen_client::Difference& d : changes) {
+    std::printf("  %s\n", canopen_client::DescribeDifference(d, wanted).c_str());
   }
   // A refusal part-way leaves the objects as they were (the edits written so far are undone).
   size_t written = 0;
   try {
-    board_ini::WriteObjects(*s, changes, &written);
-    board_ini::StoreSettings(*s);
+    canopen_client::WriteObjects(*s, changes, &written);
+    canopen_client::StoreSettings(*s);
   } catch (const CommunicationError&) {
     throw;
   } catch (const std::exception& e) {
-    std::vector<board_ini::Difference> undo;
+    std::vector<canopen_client::Difference> undo;
     for (size_t i = 0; i < written; ++i)
       undo.push_back({changes[i].id, changes[i].to, changes[i].from});
     try {
       size_t undone = 0;
-      board_ini::WriteObjects(*s, undo, &undone);
+      canopen_client::WriteObjects(*s, undo, &undone);
     } catch (const std::exception& u) {
       throw InputError(std::string(e.what()) + "; undoing the " + std::to_string(written) +
                        " edits written failed too (" + u.what() +
@@ -226,9 +229,9 @@ int RunConfigApply(Args& args) {
                              (boot ? " (node " + std::to_string(*boot) + " booted)" : ""));
   }
   canopen_client::NodeObjects node(s->link(), wanted.node_id, s->options());
-  const BoardSettings after = board_ini::ReadSettings(node);
-  const bool pending_after = board_ini::SettingsPending(node);
-  const std::vector<board_ini::Difference> left = board_ini::Differences(wanted, after);
+  const BoardSettings after = canopen_client::ReadSettings(node);
+  const bool pending_after = canopen_client::SettingsPending(node);
+  const std::vector<canopen_client::Difference> left = canopen_client::Differences(wanted, after);
   for (const CanFrame& f : s->TakeEmcy()) {
     canopen::Emcy e;
     if (canopen::DecodeEmcy(f, wanted.node_id, &e) && e.code == canopen::kEmcyConfigRefused) {
@@ -241,13 +244,13 @@ int RunConfigApply(Args& args) {
   if (!left.empty() || pending_after) {
     std::printf("read back after the reset: %zu objects differ from %s%s\n", left.size(),
                 pos[0].c_str(), pending_after ? ", settings still pending" : "");
-    for (const board_ini::Difference& d : left) {
-      std::printf("  %s\n", board_ini::DescribeDifference(d, after).c_str());
+    for (const canopen_client::Difference& d : left) {
+      std::printf("  %s\n", canopen_client::DescribeDifference(d, after).c_str());
     }
     return kExitFailed;
   }
   std::printf("node reset (boot-up as node %u); read back: all %zu objects as in %s, in force\n",
-              wanted.node_id, board_ini::SettingObjects().size(), pos[0].c_str());
+              wanted.node_id, canopen::SettingObjects().size(), pos[0].c_str());
   return kExitOk;
 }
 

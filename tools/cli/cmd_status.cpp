@@ -7,10 +7,10 @@
 
 #include "can_options.hpp"
 #include "commands.hpp"
-#include "volcomp/board_ini/board_settings_io.hpp"
+#include "volcomp/base/status.hpp"
 #include "volcomp/canopen/board_protocol.hpp"
 #include "volcomp/canopen/sdo_abort.hpp"
-#include "volcomp/base/status.hpp"
+#include "volcomp/canopen_client/board_settings_io.hpp"
 #include "volcomp/tools/hex.hpp"
 #include "volcomp/tools/json.hpp"
 
@@ -57,7 +57,7 @@ ObjectId AxisObject(ObjectId first, uint32_t axis) {
 uint32_t Get(canopen_client::CanSession& s, ObjectId id) {
   uint32_t v = 0;
   // No answer is a communication failure (exit 3), a refusal the board's reason (exit 1).
-  board_ini::Require(s.Read(id, &v), "reading " + std::string(canopen::Entry(id).name));
+  canopen_client::Require(s.Read(id, &v), "reading " + std::string(canopen::Entry(id).name));
   return v;
 }
 

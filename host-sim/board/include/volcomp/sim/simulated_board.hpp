@@ -21,15 +21,15 @@
 #include "volcomp/firmware/step_dir_io.hpp"
 #include "volcomp/hal/mock/mock_devices.hpp"
 #include "volcomp/hal/mock/mock_step_io.hpp"
+#include "volcomp/output/step_output.hpp"
 #include "volcomp/sim/sim_bus.hpp"
 #include "volcomp/sim/sim_bus_can_port.hpp"
 #include "volcomp/sim/write_through_flash.hpp"
-#include "volcomp/output/step_output.hpp"
 
 namespace volcomp::sim {
 
 struct SimulatedBoardOptions {
-  firmware::BoardSettings settings;       // factory defaults (stored settings override)
+  BoardSettings settings;                 // factory defaults (stored settings override)
   uint32_t table_flash_bytes = 1u << 20;  // two banks of 512 KiB
   uint32_t settings_flash_bytes = 8192;
   uint32_t flash_sector_bytes = 2048;        // STM32G4 page size
