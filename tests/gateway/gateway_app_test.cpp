@@ -71,8 +71,8 @@ testing::AlignedBytes LinearTable(uint32_t id) {
   return testing::WriteGridImage(g, id);
 }
 
-firmware::BoardSettings Settings() {
-  firmware::BoardSettings s;
+BoardSettings Settings() {
+  BoardSettings s;
   s.node_id = kNode;
   s.board.tick_hz = 1000;
   for (int a = 0; a < 3; ++a) {
@@ -377,7 +377,7 @@ TEST(GatewayAppMappingTest, StartRefusesAMappingForMissingAxes) {
   hal::mock::MockFlash tables(256 * 1024, 2048, 8, &clock, nullptr);
   Machine m(&tables, nullptr);
   m.io_.SetInput(InputLine::kEnable, true);
-  firmware::BoardSettings s = Settings();
+  BoardSettings s = Settings();
   s.board.axis_count = 2;  // the mapping uses axis 2
   EXPECT_EQ(m.app_.Start(s, Mapping()).error(), Error::kConfigInvalid);
   EXPECT_FALSE(m.app_.gateway_active());
@@ -395,7 +395,7 @@ TEST(GatewayAppMappingTest, StepPulseTimingDoesNotConcernTheGateway) {
   hal::mock::MockClock clock;
   hal::mock::MockFlash tables(256 * 1024, 2048, 8, &clock, nullptr);
   Machine m(&tables, nullptr);
-  firmware::BoardSettings s = Settings();
+  BoardSettings s = Settings();
   for (AxisConfig& ax : s.board.axis) ax.drive.pulse_width_ns = ax.drive.step_space_ns = 15000;
   EXPECT_TRUE(m.app_.Start(s, Mapping()).ok());
   EXPECT_TRUE(m.app_.gateway_active());

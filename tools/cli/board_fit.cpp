@@ -4,10 +4,9 @@
 #include <cmath>
 #include <cstdio>
 
-#include "board_ini_call.hpp"
 #include "sdo_failure.hpp"
-#include "volcomp/board_ini/board_settings_io.hpp"
 #include "volcomp/canopen/board_protocol.hpp"
+#include "volcomp/canopen_client/board_settings_io.hpp"
 #include "volcomp/image/table_demands.hpp"
 
 namespace volcomp::cli {
@@ -36,8 +35,7 @@ Expected<BoardInstallation> ReadInstallation(canopen_client::NodeObjects& node) 
   BoardInstallation b;
   VOLCOMP_TRY_ASSIGN(const uint32_t state, ReadObject(node, ObjectId::kDeviceState));
   b.settings_pending = canopen::DecodeDeviceState(state).settings_pending;
-  VOLCOMP_TRY_ASSIGN(const firmware::BoardSettings s,
-                     CallBoardIni([&] { return board_ini::ReadSettingsInForce(node); }));
+  VOLCOMP_TRY_ASSIGN(const BoardSettings s, canopen_client::ReadSettingsInForce(node));
   for (size_t a = 0; a < s.board.axis_count && a < table::kMaxAxes; ++a) {
     const AxisConfig& c = s.board.axis[a];
     BoardAxis x;

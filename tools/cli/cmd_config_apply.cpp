@@ -1,40 +1,38 @@
 // `volcomp config apply FILE [--no-reset]`: a configuration file onto a board. The file is checked
-// first (board_ini's parser and the firmware's rules: refused with its line, nothing sent); then
-// the objects that differ are written and stored (1010:1), the node reset (NMT 0x81), and every
-// object read back and compared. A refused write or store undoes the edits written before it.
+// first (the settings file's reader and the firmware's rules: refused with its line, nothing sent);
+// then the objects that differ are written and stored (1010:1), the node reset (NMT 0x81), and
+// every object read back and compared. A refused write or store undoes the edits written before it.
 // The changes and the store stream as they happen; the verdict is the command's result.
 #include <chrono>
 #include <ostream>
 
-#include "board_ini_call.hpp"
 #include "can_options.hpp"
 #include "commands.hpp"
 #include "config_view.hpp"
-#include "volcomp/board_ini/board_ini.hpp"
 #include "volcomp/canopen/board_protocol.hpp"
+#include "volcomp/canopen/setting_objects.hpp"
+#include "volcomp/canopen_client/board_settings_io.hpp"
+#include "volcomp/hosted/settings_ini.hpp"
 
 namespace volcomp::cli {
 namespace {
 
-using board_ini::Difference;
 using canopen_client::CanSession;
-using firmware::BoardSettings;
+using canopen_client::Difference;
 
 constexpr auto kBootUpWait = std::chrono::milliseconds(3000);
 
 JsonValue Descriptions(const std::vector<Difference>& list, const BoardSettings& names) {
   JsonValue a = JsonValue::Array();
-  for (const Difference& d : list) a.Push(board_ini::DescribeDifference(d, names));
+  for (const Difference& d : list) a.Push(canopen_client::DescribeDifference(d, names));
   return a;
 }
 
 // Writes and stores `changes`; a refusal part-way undoes the edits written so far.
 Expected<size_t> WriteAndStore(CanSession& s, const std::vector<Difference>& changes) {
   size_t written = 0;
-  const Outcome stored = CallBoardIni([&] {
-    board_ini::WriteObjects(s, changes, &written);
-    board_ini::StoreSettings(s);
-  });
+  Outcome stored = canopen_client::WriteObjects(s, changes, &written);
+  if (stored.ok()) stored = canopen_client::StoreSettings(s);
   if (stored.ok()) return written;
   const Failure& f = stored.error();
   if (f.code == Error::kCommunication) return Fail(f);
@@ -42,7 +40,7 @@ Expected<size_t> WriteAndStore(CanSession& s, const std::vector<Difference>& cha
   for (size_t i = 0; i < written; ++i)
     undo.push_back({changes[i].id, changes[i].to, changes[i].from});
   size_t undone = 0;
-  const Outcome undid = CallBoardIni([&] { board_ini::WriteObjects(s, undo, &undone); });
+  const Outcome undid = canopen_client::WriteObjects(s, undo, &undone);
   if (!undid.ok()) {
     return Fail(Error::kInputInvalid, f.message + "; undoing the " + std::to_string(written) +
                                           " edits written failed too (" + undid.error().message +
@@ -64,7 +62,7 @@ Expected<JsonValue> ResetAndReadBack(CanSession& s, const BoardSettings& wanted,
   }
   canopen_client::NodeObjects node(s.link(), wanted.node_id, s.options());
   VOLCOMP_TRY_ASSIGN(const BoardConfiguration after, ReadConfiguration(node));
-  const std::vector<Difference> left = board_ini::Differences(wanted, after.settings);
+  const std::vector<Difference> left = canopen_client::Differences(wanted, after.settings);
   JsonValue& refused = d["refused_emcy"] = JsonValue::Array();
   for (const CanFrame& f : s.TakeEmcy()) {
     canopen::Emcy e;
@@ -124,16 +122,17 @@ Expected<Output> RunConfigApply(Args& args, Context& ctx) {
   VOLCOMP_TRY(args.Finish());
   if (files.size() != 1) return UsageFailure("expected one FILE");
   // Everything is checked before the board is touched.
-  VOLCOMP_TRY_ASSIGN(const BoardSettings wanted,
-                     CallBoardIni([&] { return board_ini::LoadBoardIni(files[0]); }));
+  const hosted::IniExpected<BoardSettings> file = hosted::ReadSettingsIniFile(files[0]);
+  if (!file.ok()) return Fail(file.error().ToFailure());
+  const BoardSettings& wanted = *file;
   VOLCOMP_TRY_ASSIGN(const auto session, OpenSession(can));
   CanSession& s = *session;
   VOLCOMP_TRY_ASSIGN(const BoardConfiguration before, ReadConfiguration(s));
-  const std::vector<Difference> changes = board_ini::Differences(before.settings, wanted);
+  const std::vector<Difference> changes = canopen_client::Differences(before.settings, wanted);
   JsonValue d = JsonValue::Object();
   d.Set("node", unsigned{can.node});
   d.Set("file", files[0]);
-  d.Set("objects", uint64_t{board_ini::SettingObjects().size()});
+  d.Set("objects", uint64_t{canopen::SettingObjects().size()});
   d.Set("changes", Descriptions(changes, wanted));
   if (changes.empty() && !before.pending) {
     d.Set("outcome", "already in force");

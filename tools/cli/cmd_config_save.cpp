@@ -1,5 +1,5 @@
 // `volcomp config save FILE|- [--force]`: a board's configuration objects as an INI file
-// (board_ini.hpp), which `config apply` reads back. With "-" the file goes to stdout.
+// (hosted/settings_ini.hpp), which `config apply` reads back. With "-" the file goes to stdout.
 #include <sys/stat.h>
 
 #include <ostream>
@@ -7,7 +7,8 @@
 #include "can_options.hpp"
 #include "commands.hpp"
 #include "config_view.hpp"
-#include "volcomp/board_ini/board_ini.hpp"
+#include "volcomp/canopen/setting_objects.hpp"
+#include "volcomp/hosted/settings_ini.hpp"
 #include "volcomp/tools/file_io.hpp"
 
 namespace volcomp::cli {
@@ -49,7 +50,7 @@ Expected<Output> RunConfigSave(Args& args, Context& ctx) {
   VOLCOMP_TRY_ASSIGN(const auto session, OpenSession(can));
   VOLCOMP_TRY_ASSIGN(const BoardConfiguration c, ReadConfiguration(*session));
   if (c.pending) ctx.err << "volcomp config save: warning: " << PendingNote() << "\n";
-  const std::string text = board_ini::FormatBoardIni(c.settings, Header(c.pending));
+  const std::string text = hosted::FormatSettingsIni(c.settings, Header(c.pending));
   if (path == "-") {
     ctx.out << text;
     return Output{};
@@ -57,7 +58,7 @@ Expected<Output> RunConfigSave(Args& args, Context& ctx) {
   if (!tools::WriteTextFile(path, text).ok()) return Fail(Error::kIoError, path + ": cannot write");
   JsonValue d = JsonValue::Object();
   d.Set("node", unsigned{can.node});
-  d.Set("objects", uint64_t{board_ini::SettingObjects().size()});
+  d.Set("objects", uint64_t{canopen::SettingObjects().size()});
   d.Set("file", path);
   d.Set("axes", unsigned{c.settings.board.axis_count});
   d.Set("settings_pending", c.pending);

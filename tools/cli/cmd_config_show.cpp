@@ -4,24 +4,23 @@
 #include <cstdio>
 #include <ostream>
 
-#include "board_ini_call.hpp"
 #include "can_options.hpp"
 #include "commands.hpp"
 #include "config_view.hpp"
+#include "volcomp/canopen/setting_objects.hpp"
+#include "volcomp/hosted/settings_ini.hpp"
 
 namespace volcomp::cli {
 namespace {
 
-using firmware::BoardSettings;
-
 // One row: the object, its key and axis, and its three values as numbers and as the file's text.
-JsonValue ObjectData(const board_ini::SettingObject& o,
+JsonValue ObjectData(const canopen::SettingObject& o,
                      const BoardSettings& board,
                      const BoardSettings& in_force,
                      const BoardSettings& factory) {
   const canopen::ObjectEntry& e = canopen::Entry(o.id);
   JsonValue x = JsonValue::Object();
-  x.Set("object", board_ini::ObjectAddress(e));
+  x.Set("object", hosted::ObjectAddress(e));
   x.Set("name", e.name);
   x.Set("key", KeyName(e));
   x.Set("axis", AxisOf(e, board));
@@ -39,12 +38,12 @@ JsonValue ShowData(uint8_t node,
                    const BoardConfiguration& c,
                    const BoardSettings& in_force,
                    bool all) {
-  const BoardSettings factory = board_ini::FactorySettings();
+  const BoardSettings factory;  // a fresh board's
   JsonValue d = JsonValue::Object();
   d.Set("node", unsigned{node});
   d.Set("settings_pending", c.pending);
   JsonValue& objects = d["objects"] = JsonValue::Array();
-  for (const board_ini::SettingObject& o : board_ini::SettingObjects()) {
+  for (const canopen::SettingObject& o : canopen::SettingObjects()) {
     const std::string axis = AxisOf(canopen::Entry(o.id), c.settings);
     const bool unused_axis = !axis.empty() && std::isdigit(static_cast<unsigned char>(axis[0]));
     if (all || !unused_axis) objects.Push(ObjectData(o, c.settings, in_force, factory));
@@ -89,8 +88,7 @@ Expected<Output> RunConfigShow(Args& args, Context&) {
   VOLCOMP_TRY(args.Finish());
   VOLCOMP_TRY_ASSIGN(const auto session, OpenSession(can));
   VOLCOMP_TRY_ASSIGN(const BoardConfiguration c, ReadConfiguration(*session));
-  VOLCOMP_TRY_ASSIGN(const BoardSettings in_force,
-                     CallBoardIni([&] { return board_ini::ReadSettingsInForce(*session); }));
+  VOLCOMP_TRY_ASSIGN(const BoardSettings in_force, canopen_client::ReadSettingsInForce(*session));
   return Output{ShowData(can.node, c, in_force, all), ShowText, {}};
 }
 

@@ -1,18 +1,17 @@
 // The configuration objects as the `config` commands show them.
 #include "config_view.hpp"
 
-#include "board_ini_call.hpp"
-#include "volcomp/board_ini/board_ini.hpp"
+#include "volcomp/hosted/settings_ini.hpp"
 
 namespace volcomp::cli {
 
-using board_ini::IniKey;
 using canopen::ObjectId;
+using hosted::SettingKey;
 
-std::string AxisOf(const canopen::ObjectEntry& e, const firmware::BoardSettings& s) {
-  const IniKey* k = board_ini::KeyOf(e.id);
+std::string AxisOf(const canopen::ObjectEntry& e, const BoardSettings& s) {
+  const SettingKey* k = hosted::SettingKeyOf(e.id);
   if (k == nullptr || e.id == ObjectId::kAxisCountConfig ||
-      !(k->per_axis || k->form == board_ini::ValueForm::kAxisNames)) {
+      !(k->per_axis || k->form == hosted::SettingForm::kAxisNames)) {
     return "";
   }
   const uint32_t a = e.sub - 1u;
@@ -21,19 +20,19 @@ std::string AxisOf(const canopen::ObjectEntry& e, const firmware::BoardSettings&
 
 std::string KeyName(const canopen::ObjectEntry& e) {
   if (e.id == ObjectId::kAxisCountConfig) return "axes (count)";
-  const IniKey* k = board_ini::KeyOf(e.id);
+  const SettingKey* k = hosted::SettingKeyOf(e.id);
   if (k == nullptr) return e.name;
-  return k->form == board_ini::ValueForm::kAxisNames ? "axes (name)" : k->key;
+  return k->form == hosted::SettingForm::kAxisNames ? "axes (name)" : k->key;
 }
 
 std::string ValueText(const canopen::ObjectEntry& e, int64_t v) {
-  const IniKey* k = board_ini::KeyOf(e.id);
+  const SettingKey* k = hosted::SettingKeyOf(e.id);
   if (k == nullptr || e.id == ObjectId::kAxisCountConfig) return std::to_string(v);
-  return board_ini::FormatValue(*k, v);
+  return hosted::FormatSettingValue(*k, v);
 }
 
 std::string UnitOf(const canopen::ObjectEntry& e) {
-  const IniKey* k = board_ini::KeyOf(e.id);
+  const SettingKey* k = hosted::SettingKeyOf(e.id);
   return k != nullptr && e.id != ObjectId::kAxisCountConfig ? k->unit : "";
 }
 
@@ -44,8 +43,8 @@ const char* PendingNote() {
 
 Expected<BoardConfiguration> ReadConfiguration(canopen_client::NodeObjects& node) {
   BoardConfiguration c;
-  VOLCOMP_TRY_ASSIGN(c.settings, CallBoardIni([&] { return board_ini::ReadSettings(node); }));
-  VOLCOMP_TRY_ASSIGN(c.pending, CallBoardIni([&] { return board_ini::SettingsPending(node); }));
+  VOLCOMP_TRY_ASSIGN(c.settings, canopen_client::ReadSettings(node));
+  VOLCOMP_TRY_ASSIGN(c.pending, canopen_client::SettingsPending(node));
   return c;
 }
 

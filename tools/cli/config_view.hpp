@@ -1,18 +1,18 @@
-// How the `config` commands name and show the board's configuration objects (board_ini's keys,
-// units and value forms), and what the board reads back (through board_ini_call.hpp).
+// How the `config` commands name and show the board's configuration objects (the settings file's
+// keys, units and value forms, hosted/settings_ini.hpp), and what the board reads back.
 #pragma once
 
 #include <string>
 
 #include "command.hpp"
-#include "volcomp/board_ini/board_settings_io.hpp"
+#include "volcomp/canopen_client/board_settings_io.hpp"
 #include "volcomp/canopen_client/node_objects.hpp"
 
 namespace volcomp::cli {
 
 /// The axis a configuration object belongs to ("X", or its number "4" beyond the axis count), ""
 /// for board objects.
-std::string AxisOf(const canopen::ObjectEntry& e, const firmware::BoardSettings& s);
+std::string AxisOf(const canopen::ObjectEntry& e, const BoardSettings& s);
 /// Its key in the configuration file ("max_correction", "axes (name)", "axes (count)").
 std::string KeyName(const canopen::ObjectEntry& e);
 /// Its value as the file writes it ("linear", "0.001", "-5000").
@@ -25,7 +25,7 @@ const char* PendingNote();
 
 /// The board's configuration objects and whether they are pending (not in force).
 struct BoardConfiguration {
-  firmware::BoardSettings settings;
+  BoardSettings settings;
   bool pending = false;
 };
 Expected<BoardConfiguration> ReadConfiguration(canopen_client::NodeObjects& node);

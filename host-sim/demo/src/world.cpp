@@ -9,8 +9,8 @@
 
 namespace volcomp::sim {
 
-firmware::BoardSettings BoardSettingsFor(const Machine& machine) {
-  firmware::BoardSettings s;
+BoardSettings BoardSettingsFor(const Machine& machine) {
+  BoardSettings s;
   s.board = DefaultBoardConfig();
   for (int a = 0; a < 3; ++a) {
     AxisConfig& ax = s.board.axis[a];

@@ -76,7 +76,7 @@ TEST_F(SimConfigTest, TickAndBitRateChangedOverCanAreInForceAfterAResetNode) {
   Run(5000000);
 
   // The tick: what the data path assumes, what the timer was set to, what the board runs at.
-  const uint32_t tick_hz = board_.app().control_tick().config().tick_hz;
+  const uint32_t tick_hz = board_.app().settings().board.tick_hz;
   EXPECT_EQ(tick_hz, 25000u);
   EXPECT_EQ(board_.tick_timer().rate_hz(), 25000u);
   EXPECT_EQ(board_.tick_period_ns(), 40000u);

@@ -18,10 +18,10 @@ namespace volcomp::sim {
 namespace {
 
 // Board settings for the machine of `wo`.
-firmware::BoardSettings SettingsFor(const WorldOptions& wo) {
+BoardSettings SettingsFor(const WorldOptions& wo) {
   const Expected<Machine> m = Machine::Create(wo.machine);
   EXPECT_TRUE(m.ok()) << m.error().message;
-  return m.ok() ? BoardSettingsFor(*m) : firmware::BoardSettings{};
+  return m.ok() ? BoardSettingsFor(*m) : BoardSettings{};
 }
 
 WorldOptions Options(PulseFormat output = PulseFormat::kStepDir) {

@@ -25,7 +25,7 @@
 namespace volcomp::sim {
 
 struct SimulatedBoardOptions {
-  firmware::BoardSettings settings;       // factory defaults (stored settings override)
+  BoardSettings settings;                 // factory defaults (stored settings override)
   uint32_t table_flash_bytes = 1u << 20;  // two banks of 512 KiB
   uint32_t settings_flash_bytes = 8192;
   uint32_t flash_sector_bytes = 2048;        // STM32G4 page size

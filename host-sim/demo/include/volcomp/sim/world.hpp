@@ -11,7 +11,7 @@
 #include <memory>
 
 #include "volcomp/canopen_client/sdo_runner.hpp"
-#include "volcomp/firmware/settings.hpp"
+#include "volcomp/config/board_settings.hpp"
 #include "volcomp/hosted/expected.hpp"
 #include "volcomp/model/vec3.hpp"
 #include "volcomp/sim/cnc.hpp"
@@ -24,8 +24,8 @@ namespace volcomp::sim {
 
 struct WorldOptions {
   MachineOptions machine;
-  CncConfig cnc;  // step_mm and home_position_steps are taken from the machine and the board
-  firmware::BoardSettings board;  // axes X, Y, Z; home positions are set to the switch positions
+  CncConfig cnc;        // step_mm and home_position_steps are taken from the machine and the board
+  BoardSettings board;  // axes X, Y, Z; home positions are set to the switch positions
   uint32_t can_bitrate = 1000000;
   uint64_t poll_period_ns = 100000;
 };
@@ -106,6 +106,6 @@ class World final : private StepSink {
 
 /// Board settings for a machine: three linear axes at the machine's step lengths, default
 /// drive timing and limits, home position = the home switch position (in steps).
-firmware::BoardSettings BoardSettingsFor(const Machine& machine);
+BoardSettings BoardSettingsFor(const Machine& machine);
 
 }  // namespace volcomp::sim
