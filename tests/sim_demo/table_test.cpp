@@ -1,12 +1,12 @@
 // The table from parametric measurements: the measured model reproduces the machine, and the
 // image built from it lands the tool on its targets. Reference: the machine's own model
-// (tools/model S500Model), evaluated directly.
+// (tools/datasets S500Model), evaluated directly.
 #include <gtest/gtest.h>
 
 #include <cmath>
 
+#include "volcomp/datasets/s500.hpp"
 #include "volcomp/image/image_reader.hpp"
-#include "volcomp/model/s500.hpp"
 #include "volcomp/sim/measurements.hpp"
 #include "volcomp/sim/random.hpp"
 #include "volcomp/sim/table_from_measurements.hpp"
@@ -38,7 +38,8 @@ class SimTable : public ::testing::Test {
       ASSERT_TRUE(run.ok()) << run.status().reason();
       runs_[static_cast<size_t>(a)] = run.value();
     }
-    const SimResult<model::Model> measured = ModelFromParametric(runs_, model::S500Model().chain);
+    const SimResult<model::Model> measured =
+        ModelFromParametric(runs_, datasets::S500Model().chain);
     ASSERT_TRUE(measured.ok()) << measured.status().reason();
     measured_ = new model::Model(measured.value());
   }
@@ -52,7 +53,7 @@ std::array<ParametricResult, 3> SimTable::runs_;
 model::Model* SimTable::measured_ = nullptr;
 
 TEST_F(SimTable, MeasuredModelReproducesTheMachineUpToItsValueAtTheReference) {
-  const model::Model truth = model::S500Model();
+  const model::Model truth = datasets::S500Model();
   const model::Vec3 e0 = model::ToolPointError_um(truth, {0, 0, 0});
   Random rng(11);
   double worst = 0;
@@ -68,9 +69,9 @@ TEST_F(SimTable, MeasuredModelReproducesTheMachineUpToItsValueAtTheReference) {
 TEST_F(SimTable, ImageLandsTheToolOnItsTargets) {
   const TableBuildResult t =
       BuildTableImage(*measured_, {0, 0, 0}, {400, 280, 200}, {10, 10, 10}, {1e-3, 1e-3, 1e-3}, 3);
-  const image::LoadedImage img(t.image, "built");
-  const image::ImageEvaluator eval(img);
-  const model::Model truth = model::S500Model();
+  const image::LoadedImage img = image::LoadedImage::FromBytes(t.image, "built").value();
+  const image::ImageEvaluator eval = image::ImageEvaluator::Create(img).value();
+  const model::Model truth = datasets::S500Model();
   const model::Vec3 e0 = model::ToolPointError_um(truth, {0, 0, 0});
   Random rng(12);
   double worst = 0, before = 0;

@@ -76,7 +76,7 @@ TEST(SimDemo, WornQuickMeetsTheGoals) {
   {
     SCOPED_TRACE("tables, budget, the chain");
     EXPECT_EQ(r.earlier_tables.size(), 2u);
-    const image::LoadedImage last(r.table.image, "table 3");
+    const image::LoadedImage last = image::LoadedImage::FromBytes(r.table.image, "table 3").value();
     EXPECT_TRUE(last.view().grid.present);
     EXPECT_EQ(last.view().axis1d_count, 3);  // GRID3 and AXIS1D in force together
     EXPECT_EQ(r.activation.active_crc, r.table.crc32);

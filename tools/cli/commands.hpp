@@ -44,8 +44,6 @@ const Command& ModelEvalCommand();
 // TRANSITION: the run functions of the commands not yet converted (int, may throw: UsageError of
 // args.hpp -> 2, CommunicationError of exit_codes.hpp -> 3, anything else -> 1).
 namespace volcomp::tools {
-int RunBuildGrid(Args& args);
-int RunLookup(Args& args);
 int RunUpload(Args& args);
 int RunVerify(Args& args);
 int RunActivate(Args& args);
@@ -65,10 +63,4 @@ int RunEvaluateRotary(Args& args);
 int RunProgramPositioning(Args& args);
 int RunProgramDiagonal(Args& args);
 int RunReportCompare(Args& args);
-int RunBuildModel(Args& args);
-int RunBuildTracker(Args& args);
-int RunBuildKmtpp(Args& args);
-int RunBuildAxis(Args& args);
-int RunExportLinuxcnc(Args& args);
-int RunModelEval(Args& args);
 }  // namespace volcomp::tools

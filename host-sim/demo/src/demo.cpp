@@ -49,7 +49,7 @@ SimStatus RunIdeal(Session& s, DemoResult& r) {
   VOLCOMP_SIM_TRY(demo::MeasureErrorMotions(s, r));
   progress.Step("building the table from the measurements");
   const auto t0 = Clock::now();
-  model::GridSection grid;
+  builders::GridSection grid;
   VOLCOMP_SIM_ASSIGN(grid, demo::BuildModelGrid(s, r));
   r.table = AssembleTable(
       grid, {}, s.step_mm(), 1,
@@ -76,7 +76,7 @@ SimStatus RunWorn(Session& s, DemoResult& r) {
 
   progress.Step("table 1: GRID3 from the 21-parameter measurements; upload, reference, activate");
   auto t0 = Clock::now();
-  model::GridSection model_grid;
+  builders::GridSection model_grid;
   VOLCOMP_SIM_ASSIGN(model_grid, demo::BuildModelGrid(s, r));
   TableBuildResult t1 = AssembleTable(
       model_grid, {}, step, 1,
@@ -93,7 +93,7 @@ SimStatus RunWorn(Session& s, DemoResult& r) {
   progress.Step(
       "table 2: AXIS1D forward/reverse tables from bidirectional ISO 230-2 runs (table 1 "
       "active), with the GRID3 of table 1");
-  std::vector<model::AxisSection> axis_tables;
+  std::vector<builders::AxisSection> axis_tables;
   VOLCOMP_SIM_ASSIGN(axis_tables, demo::MeasureAxisTables(s, r));
   t0 = Clock::now();
   TableBuildResult t2 = AssembleTable(
@@ -111,7 +111,7 @@ SimStatus RunWorn(Session& s, DemoResult& r) {
       "table 3: laser tracker at every node of a lattice, measured through table 2; its GRID3 "
       "(composed with table 2's) with the AXIS1D tables");
   const size_t first_check = r.drift.size() - 1;  // the check after the last test of table 2
-  model::GridSection lattice_grid;
+  builders::GridSection lattice_grid;
   VOLCOMP_SIM_ASSIGN(lattice_grid,
                      demo::MeasureTrackerLattice(s, r, r.earlier_tables.back().table.image));
   t0 = Clock::now();

@@ -3,13 +3,13 @@
 #include <cstdio>
 #include <fstream>
 
-#include "volcomp/image/image_builder.hpp"
 #include "volcomp/metrology/diagonal_report.hpp"
 #include "volcomp/metrology/positioning_report.hpp"
 #include "volcomp/report/format.hpp"
 #include "volcomp/report/html_page.hpp"
 #include "volcomp/report/xy_chart.hpp"
 #include "volcomp/sim/demo.hpp"
+#include "volcomp/tools/file_io.hpp"
 
 namespace volcomp::sim {
 namespace {
@@ -177,8 +177,9 @@ SimStatus WriteWornData(const DemoResult& r, const std::string& dir) {
   }
   VOLCOMP_SIM_TRY(WriteText(dir + "/data/drift_checks.csv", drift));
   for (size_t i = 0; i < r.earlier_tables.size(); ++i) {
-    image::WriteFileBytes(dir + "/table" + std::to_string(i + 1) + ".vct",
-                          r.earlier_tables[i].table.image);
+    const Outcome written = tools::WriteFileBytes(dir + "/table" + std::to_string(i + 1) + ".vct",
+                                                  r.earlier_tables[i].table.image);
+    if (!written.ok()) return SimStatus(written.error().code, written.error().message);
   }
   return SimStatus::Ok();
 }
@@ -250,7 +251,10 @@ SimStatus WriteDemoReport(const DemoResult& r, const std::string& dir) {
   }
   VOLCOMP_SIM_TRY(WriteText(dir + "/programs/points.ngc", r.before.points.program.gcode));
   VOLCOMP_SIM_TRY(WriteModelFiles(r.measured_model, dir + "/model"));
-  image::WriteFileBytes(dir + "/table.vct", r.table.image);
+  if (const Outcome written = tools::WriteFileBytes(dir + "/table.vct", r.table.image);
+      !written.ok()) {
+    return SimStatus(written.error().code, written.error().message);
+  }
 
   report::HtmlPage page("volcomp-sim demo report");
   page.Heading(1, "volcomp-sim demo: volumetric compensation of a simulated machine");

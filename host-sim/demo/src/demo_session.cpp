@@ -246,13 +246,15 @@ SimStatus MeasureErrorMotions(Session& s, DemoResult& r) {
   return SimStatus::Ok();
 }
 
-SimResult<model::GridSection> BuildModelGrid(Session& s, DemoResult& r) {
+SimResult<builders::GridSection> BuildModelGrid(Session& s, DemoResult& r) {
   VOLCOMP_SIM_ASSIGN(r.measured_model,
                      ModelFromParametric(r.parametric, s.world.machine().model().chain));
   const double h = s.o.grid_spacing_mm;
-  model::GridSection grid =
-      model::BuildGridSection(LatticeOptions(s.layout.lo, s.layout.hi, {h, h, h}, s.step_mm()),
-                              ImageAxes(s.step_mm()), model::ModelGridSource(r.measured_model));
+  auto built = builders::BuildGridSection(
+      LatticeOptions(s.layout.lo, s.layout.hi, {h, h, h}, s.step_mm()), ImageAxes(s.step_mm()),
+      builders::ModelGridSource(r.measured_model));
+  if (!built.ok()) return SimStatus(built.error().code, built.error().message);
+  builders::GridSection grid = std::move(built).value();
   const model::GridAxes& g = grid.build.grid.axes;
   s.progress.Line(
       "source: the measured six error motions of each axis (18 functions; the three "

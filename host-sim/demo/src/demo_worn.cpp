@@ -5,7 +5,7 @@
 #include <cstdio>
 
 #include "demo_session.hpp"
-#include "volcomp/model/image_grid.hpp"
+#include "volcomp/builders/image_grid.hpp"
 
 namespace volcomp::sim::demo {
 
@@ -77,8 +77,8 @@ std::vector<double> PitchTargets(double lo, double hi, double pitch) {
 
 }  // namespace
 
-SimResult<std::vector<model::AxisSection>> MeasureAxisTables(Session& s, DemoResult& r) {
-  std::vector<model::AxisSection> tables;
+SimResult<std::vector<builders::AxisSection>> MeasureAxisTables(Session& s, DemoResult& r) {
+  std::vector<builders::AxisSection> tables;
   const std::vector<image::AxisDef> axes = ImageAxes(s.step_mm());
   const double quarter_lead = 0.25 * s.o.gost_pitch_mm;
   for (int a = 0; a < 3; ++a) {
@@ -101,13 +101,15 @@ SimResult<std::vector<model::AxisSection>> MeasureAxisTables(Session& s, DemoRes
     plan.cycle.feed_mm_s = s.o.test_feed_mm_s;
     VOLCOMP_SIM_ASSIGN(r.axis_runs[i], MeasureGostAxis(s.world, s.laser, a, plan));
     VOLCOMP_SIM_TRY(CheckDrift(s, r, std::string("ISO 230-2 run ") + "XYZ"[a]));
-    model::Axis1dOptions o;
-    o.reverse = model::ReverseMode::kTables;
+    builders::Axis1dOptions o;
+    o.reverse = builders::ReverseMode::kTables;
     o.spacing = s.o.axis_run_pitch_mm;
     // `volcomp build axis --reverse tables` on the pairs' mean deviations x̄↑, x̄↓.
-    tables.push_back(model::BuildAxisSection(PairMeans(MeanDeviations(r.axis_runs[i].iso)), o,
-                                             axes[i], static_cast<uint8_t>(a), false));
-    const model::Axis1dTable& t = tables.back().table;
+    auto section = builders::BuildAxisSection(PairMeans(MeanDeviations(r.axis_runs[i].iso)), o,
+                                              axes[i], static_cast<uint8_t>(a), false);
+    if (!section.ok()) return SimStatus(section.error().code, section.error().message);
+    tables.push_back(std::move(section).value());
+    const builders::Axis1dTable& t = tables.back().table;
     double reversal = 0, largest = 0;
     for (size_t k = 0; k < t.forward.size(); ++k) {
       reversal += (t.forward[k] - t.reverse[k]) / static_cast<double>(t.forward.size());
@@ -125,9 +127,9 @@ SimResult<std::vector<model::AxisSection>> MeasureAxisTables(Session& s, DemoRes
   return tables;
 }
 
-SimResult<model::GridSection> MeasureTrackerLattice(Session& s,
-                                                    DemoResult& r,
-                                                    const std::vector<uint8_t>& in_force) {
+SimResult<builders::GridSection> MeasureTrackerLattice(Session& s,
+                                                       DemoResult& r,
+                                                       const std::vector<uint8_t>& in_force) {
   const auto t0 = Clock::now();
   const double machine_t0 = s.world.machine().time_s();
   const double h = s.o.lattice_spacing_mm;
@@ -180,11 +182,19 @@ SimResult<model::GridSection> MeasureTrackerLattice(Session& s,
   }
   const double gs = s.o.grid_spacing_mm;
   // `volcomp build tracker --lattice FILE --through TABLE2` on these readings.
-  const image::LoadedImage table_in_force(in_force, "table 2");
-  model::GridSection grid = model::BuildGridSection(
+  auto table_in_force = image::LoadedImage::FromBytes(in_force, "table 2");
+  if (!table_in_force.ok()) {
+    return SimStatus(table_in_force.error().code, table_in_force.error().message);
+  }
+  auto lattice = model::TrackerLattice::Create(data);
+  if (!lattice.ok()) return SimStatus(lattice.error().code, lattice.error().message);
+  auto table2 = builders::GridOfImage(*table_in_force, "table 2");
+  if (!table2.ok()) return SimStatus(table2.error().code, table2.error().message);
+  auto built = builders::BuildGridSection(
       LatticeOptions(s.layout.lo, s.layout.hi, {gs, gs, gs}, s.step_mm()), ImageAxes(s.step_mm()),
-      model::TrackerLatticeThroughGridSource(model::TrackerLattice(data),
-                                             model::GridOfImage(table_in_force, "table 2")));
+      builders::TrackerLatticeThroughGridSource(*lattice, *table2));
+  if (!built.ok()) return SimStatus(built.error().code, built.error().message);
+  builders::GridSection grid = std::move(built).value();
   const model::GridAxes& gg = grid.build.grid.axes;
   char b[400];
   std::snprintf(b, sizeof b,

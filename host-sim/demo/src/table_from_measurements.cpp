@@ -3,13 +3,25 @@
 
 #include <cstdio>
 #include <fstream>
+#include <stdexcept>
 
 #include "volcomp/base/byte_order.hpp"
+#include "volcomp/builders/grid_section.hpp"
+#include "volcomp/builders/image_glue.hpp"
 #include "volcomp/image/image_builder.hpp"
-#include "volcomp/model/grid_section.hpp"
-#include "volcomp/model/image_glue.hpp"
 
 namespace volcomp::sim {
+namespace {
+
+// TRANSITION(host-sim): AssembleTable and BuildTableImage report a builder's failure by throwing
+// it, as before the builders returned results; goes when host-sim returns results.
+template <typename T>
+T OrThrow(Expected<T> r) {
+  if (!r.ok()) throw std::runtime_error(r.error().message);
+  return std::move(r).value();
+}
+
+}  // namespace
 
 SimResult<model::Model> ModelFromParametric(const std::array<ParametricResult, 3>& runs,
                                             const model::KinematicChain& chain) {
@@ -22,13 +34,17 @@ SimResult<model::Model> ModelFromParametric(const std::array<ParametricResult, 3
     }
     std::vector<model::AxisErrorSample> rows;
     for (const SixDofReading& s : r.measured) rows.push_back({s.linear_um, s.angular_urad});
-    m.axes[static_cast<size_t>(a)] = model::AxisErrorTable(r.position_mm, rows);
+    auto table = model::AxisErrorTable::Create(r.position_mm, rows);
+    if (!table.ok()) return SimStatus(table.error().code, table.error().message);
+    m.axes[static_cast<size_t>(a)] = std::move(table).value();
   }
   m.chain = chain;
   m.chain.workpiece_errors = model::ErrorSide::kRelative;  // measured tool vs workpiece
   m.formulation = model::Formulation::kPhysical;
   m.order = model::Order::kSecond;
-  model::ValidateModel(m);
+  if (const Outcome valid = model::ValidateModel(m); !valid.ok()) {
+    return SimStatus(valid.error().code, valid.error().message);
+  }
   return m;
 }
 
@@ -44,11 +60,11 @@ std::vector<image::AxisDef> ImageAxes(const std::array<double, 3>& step_mm) {
   return axes;
 }
 
-model::GridBuildOptions LatticeOptions(const std::array<double, 3>& lo_mm,
-                                       const std::array<double, 3>& hi_mm,
-                                       const std::array<double, 3>& spacing_mm,
-                                       const std::array<double, 3>& step_mm) {
-  model::GridBuildOptions o;
+builders::GridBuildOptions LatticeOptions(const std::array<double, 3>& lo_mm,
+                                          const std::array<double, 3>& hi_mm,
+                                          const std::array<double, 3>& spacing_mm,
+                                          const std::array<double, 3>& step_mm) {
+  builders::GridBuildOptions o;
   o.min_mm = lo_mm;
   o.max_mm = hi_mm;
   o.spacing_mm = spacing_mm;
@@ -79,8 +95,8 @@ model::PositioningData PairMeans(const model::PositioningData& t) {
   return d;
 }
 
-TableBuildResult AssembleTable(const std::optional<model::GridSection>& grid,
-                               const std::vector<model::AxisSection>& axis_tables,
+TableBuildResult AssembleTable(const std::optional<builders::GridSection>& grid,
+                               const std::vector<builders::AxisSection>& axis_tables,
                                const std::array<double, 3>& step_mm,
                                uint32_t table_id,
                                const std::map<std::string, std::string>& info) {
@@ -94,14 +110,14 @@ TableBuildResult AssembleTable(const std::optional<model::GridSection>& grid,
     req.grid = grid->section;
     r.info = grid->info;
   }
-  for (const model::AxisSection& a : axis_tables) req.axis_tables.push_back(a.section);
+  for (const builders::AxisSection& a : axis_tables) req.axis_tables.push_back(a.section);
   for (const auto& [k, v] : info) r.info[k] = v;
   req.element = table::ElementType::kInt16;
-  req.frac_bits = image::ChooseFracBits(req);
+  req.frac_bits = OrThrow(image::ChooseFracBits(req));
   r.frac_bits = *req.frac_bits;
-  r.lsb_um = model::LsbUm(req.axes[0], r.frac_bits);
+  r.lsb_um = builders::LsbUm(req.axes[0], r.frac_bits);
   req.info = r.info;
-  r.image = image::BuildImage(req);
+  r.image = OrThrow(image::BuildImage(req));
   r.crc32 = LoadLe32(r.image.data() + r.image.size() - 4);
   return r;
 }
@@ -112,9 +128,9 @@ TableBuildResult BuildTableImage(const model::Model& measured,
                                  const std::array<double, 3>& spacing_mm,
                                  const std::array<double, 3>& step_mm,
                                  uint32_t table_id) {
-  const model::GridSection g =
-      model::BuildGridSection(LatticeOptions(lo_mm, hi_mm, spacing_mm, step_mm), ImageAxes(step_mm),
-                              model::ModelGridSource(measured));
+  const builders::GridSection g =
+      OrThrow(builders::BuildGridSection(LatticeOptions(lo_mm, hi_mm, spacing_mm, step_mm),
+                                         ImageAxes(step_mm), builders::ModelGridSource(measured)));
   return AssembleTable(
       g, {}, step_mm, table_id,
       {{"builder", "volcomp-sim demo (the sources and grid of `volcomp build model`)"},

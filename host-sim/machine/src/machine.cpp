@@ -4,14 +4,16 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "volcomp/model/io.hpp"
-#include "volcomp/model/s500.hpp"
+#include "volcomp/datasets/model_config.hpp"
+#include "volcomp/datasets/s500.hpp"
 
 namespace volcomp::sim {
 
 model::Model LoadMachineModel(const std::string& spec) {
-  if (spec.empty() || spec == "s500") return model::S500Model();
-  return model::LoadModelConfig(spec);
+  if (spec.empty() || spec == "s500") return datasets::S500Model();
+  auto m = datasets::LoadModelConfig(spec);
+  if (!m.ok()) throw std::runtime_error(m.error().message);
+  return std::move(m).value();
 }
 
 MachineGeometry GeometryOf(const model::Model& m) {
@@ -40,8 +42,10 @@ namespace {
 
 // The options with the default model filled in, checked before the kinematics is built.
 MachineOptions Checked(MachineOptions o) {
-  if (o.model.axes[0].empty()) o.model = model::S500Model();
-  model::ValidateModel(o.model);
+  if (o.model.axes[0].empty()) o.model = datasets::S500Model();
+  if (const Outcome valid = model::ValidateModel(o.model); !valid.ok()) {
+    throw std::invalid_argument(valid.error().message);
+  }
   if (o.model.formulation != model::Formulation::kPhysical) {
     throw std::invalid_argument(
         "machine: the simulated machine is a rigid body; formulation = dissertation describes "

@@ -172,7 +172,7 @@ struct DemoResult {
 
 /// Runs the demo; progress goes to `log`. Fails when a step cannot go on (the board refused a
 /// table, a program did not finish, the model's tables miss the reference point); a model file
-/// that cannot be read throws tools::InputError (the builders' error, printed by the command).
+/// that cannot be read throws std::runtime_error (the reader's message, printed by the command).
 SimResult<DemoResult> RunDemo(const DemoOptions& options, std::ostream& log);
 
 /// Prints the before/after summary and the checks (worn: the goals and the error budget).

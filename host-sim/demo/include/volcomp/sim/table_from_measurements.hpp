@@ -1,5 +1,5 @@
 // Compensation tables from the demo's measurements, built with the entry points of the PC tool's
-// builders (tools/model grid_source.hpp, grid_section.hpp, axis_section.hpp), never a copy:
+// builders (tools/builders grid_source.hpp, grid_section.hpp, axis_section.hpp), never a copy:
 //   * 21-parameter: the measured six error motions of X, Y and Z (zeroed at the reference point,
 //     where the three measuring lines meet) become the axis tables of a model; the squareness is
 //     in the straightness slopes (the optics were aligned with the nominal axes), so the model's
@@ -20,8 +20,9 @@
 #include <string>
 #include <vector>
 
-#include "volcomp/model/axis_section.hpp"
-#include "volcomp/model/grid_section.hpp"
+#include "volcomp/builders/axis_section.hpp"
+#include "volcomp/builders/grid_section.hpp"
+#include "volcomp/model/positioning.hpp"
 #include "volcomp/model/rigid_body.hpp"
 #include "volcomp/model/tracker_lattice.hpp"
 #include "volcomp/sim/measurements.hpp"
@@ -38,10 +39,10 @@ SimResult<model::Model> ModelFromParametric(const std::array<ParametricResult, 3
 std::vector<image::AxisDef> ImageAxes(const std::array<double, 3>& step_mm);
 
 /// A lattice over [lo, hi] (mm) with the given node spacing, for axes of `step_mm` per step.
-model::GridBuildOptions LatticeOptions(const std::array<double, 3>& lo_mm,
-                                       const std::array<double, 3>& hi_mm,
-                                       const std::array<double, 3>& spacing_mm,
-                                       const std::array<double, 3>& step_mm);
+builders::GridBuildOptions LatticeOptions(const std::array<double, 3>& lo_mm,
+                                          const std::array<double, 3>& hi_mm,
+                                          const std::array<double, 3>& spacing_mm,
+                                          const std::array<double, 3>& step_mm);
 
 /// The mean deviations per target of a bidirectional positioning run, as `build axis` reads them.
 model::PositioningData MeanDeviations(const metrology::PositioningResult& run);
@@ -50,8 +51,8 @@ model::PositioningData MeanDeviations(const metrology::PositioningResult& run);
 model::PositioningData PairMeans(const model::PositioningData& targets);
 
 struct TableBuildResult {
-  std::optional<model::GridSection> grid;
-  std::vector<model::AxisSection> axis_tables;  // one per axis, in axis order
+  std::optional<builders::GridSection> grid;
+  std::vector<builders::AxisSection> axis_tables;  // one per axis, in axis order
   std::vector<uint8_t> image;
   uint32_t crc32 = 0;
   uint8_t frac_bits = 0;
@@ -61,8 +62,8 @@ struct TableBuildResult {
 
 /// One image from a GRID3 section and/or AXIS1D sections (axis_tables[i] is axis i). `info` is
 /// added to the sections' own entries.
-TableBuildResult AssembleTable(const std::optional<model::GridSection>& grid,
-                               const std::vector<model::AxisSection>& axis_tables,
+TableBuildResult AssembleTable(const std::optional<builders::GridSection>& grid,
+                               const std::vector<builders::AxisSection>& axis_tables,
                                const std::array<double, 3>& step_mm,
                                uint32_t table_id,
                                const std::map<std::string, std::string>& info);
