@@ -21,8 +21,7 @@ Expected<model::TrackerData> CalibrationLines(Args& args) {
   const auto file = args.Value("--tracker");
   const std::string builtin = args.Value("--tracker-builtin").value_or("s500-315");
   if (file) return datasets::LoadTrackerCsv(*file);
-  if (builtin == "s500-315") return datasets::S500Tracker315();
-  if (builtin == "s500-240") return datasets::S500Tracker240();
+  if (auto data = datasets::S500TrackerNamed(builtin)) return *data;
   return UsageFailure("--tracker-builtin must be s500-315 or s500-240");
 }
 

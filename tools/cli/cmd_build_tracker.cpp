@@ -44,8 +44,7 @@ Expected<Output> RunBuildTrackerLattice(Args& args, const std::string& path) {
 Expected<model::TrackerData> TrackerLines(const std::optional<std::string>& points,
                                           const std::optional<std::string>& builtin) {
   if (!builtin) return datasets::LoadTrackerCsv(*points);
-  if (*builtin == "s500-315") return datasets::S500Tracker315();
-  if (*builtin == "s500-240") return datasets::S500Tracker240();
+  if (auto data = datasets::S500TrackerNamed(*builtin)) return *data;
   return UsageFailure("--builtin must be s500-315 or s500-240");
 }
 

@@ -1,6 +1,7 @@
 // Building, writing and reporting a GRID3 image (see grid_build.hpp).
 #include "grid_build.hpp"
 
+#include <array>
 #include <cstdio>
 #include <ostream>
 #include <utility>
@@ -35,7 +36,9 @@ const char* ElementName(table::ElementType type) {
   return "?";
 }
 
-JsonValue Xyz(const model::Vec3& v) { return JsonValue::Array().Push(v.x).Push(v.y).Push(v.z); }
+JsonValue Xyz(double x, double y, double z) { return JsonValue::Array().Push(x).Push(y).Push(z); }
+JsonValue Xyz(const model::Vec3& v) { return Xyz(v.x, v.y, v.z); }
+JsonValue Xyz(const std::array<double, 3>& v) { return Xyz(v[0], v[1], v[2]); }
 
 // A refusal of the builder as the command's failure: a lattice that cannot be laid out is a usage
 // failure, data the checks refuse an input failure (naming the option that moves the bound when
@@ -84,13 +87,13 @@ JsonValue ReportData(const GridCommand& command,
   JsonValue& tried = d["spacings_tried"] = JsonValue::Array();
   for (const auto& t : r.tried) {
     JsonValue x = JsonValue::Object();
-    x.Set("spacing_mm", JsonValue::Array().Push(t.first[0]).Push(t.first[1]).Push(t.first[2]));
+    x.Set("spacing_mm", Xyz(t.first));
     x.Set("max_um", t.second);
     tried.Push(std::move(x));
   }
   d.Set("element", ElementName(img.request.element));
   d.Set("frac_bits", unsigned{img.frac_bits});
-  d.Set("lsb_um", JsonValue::Array().Push(img.lsb_um[0]).Push(img.lsb_um[1]).Push(img.lsb_um[2]));
+  d.Set("lsb_um", Xyz(img.lsb_um));
   d.Set("max_correction_bound_um", command.grid.max_correction_um);
   if (checked_inverse) d.Set("max_inverse_residual_limit_um", command.grid.max_residual_um);
   return d;

@@ -3,25 +3,21 @@
 // refusals naming the file.
 #include <gtest/gtest.h>
 
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 
 #include "cli_runner.hpp"
 #include "expected_value.hpp"
+#include "sample_path.hpp"
 #include "volcomp/image/image_reader.hpp"
 
 namespace volcomp {
 namespace {
 
 using testing::RunCli;
+using testing::SamplePath;
 using testing::ValueOf;
-
-std::string Sample(const std::string& name) {
-  const char* root = std::getenv("VOLCOMP_SOURCE_DIR");
-  return std::string(root ? root : ".") + "/samples/model/" + name;
-}
 
 std::string Temp(const std::string& name) {
   return (std::filesystem::temp_directory_path() / ("volcomp_axisraw_" + name)).string();
@@ -87,8 +83,8 @@ TEST(VolcompBuildAxis, RawReadingsAreCheckedLikeTheEvaluation) {
 TEST(VolcompBuildAxis, FromAPositioningTest) {
   const std::string out = Temp("a.vct");
   const auto r =
-      RunCli({"build", "axis", "--x", Sample("positioning_x.csv"), "-o", out, "--resolution-nm",
-              "X=1000", "--reverse", "backlash", "--spacing", "X=20"});
+      RunCli({"build", "axis", "--x", SamplePath("model/positioning_x.csv"), "-o", out,
+              "--resolution-nm", "X=1000", "--reverse", "backlash", "--spacing", "X=20"});
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_EQ(r.out,
             "volcomp build axis\n"
@@ -98,14 +94,14 @@ TEST(VolcompBuildAxis, FromAPositioningTest) {
                 out + " (" + std::to_string(std::filesystem::file_size(out)) + " bytes)\n");
   EXPECT_EQ(ValueOf(image::ReadImageFile(out)).view().axis_count, 1u);
   // A rotary axis given a linear file is refused, naming the file.
-  const auto rotary = RunCli({"build", "axis", "--a", Sample("positioning_x.csv"), "-o", out,
-                              "--resolution-nm", "A=1000"});
+  const auto rotary = RunCli({"build", "axis", "--a", SamplePath("model/positioning_x.csv"), "-o",
+                              out, "--resolution-nm", "A=1000"});
   EXPECT_EQ(rotary.code, tools::kExitFailed);
-  EXPECT_EQ(rotary.err, "volcomp build axis: error: " + Sample("positioning_x.csv") +
+  EXPECT_EQ(rotary.err, "volcomp build axis: error: " + SamplePath("model/positioning_x.csv") +
                             ": axis A is rotary: give position_deg and *_arcsec columns\n");
   EXPECT_EQ(rotary.out, "");
-  const auto spacing = RunCli({"build", "axis", "--x", Sample("positioning_x.csv"), "-o", out,
-                               "--resolution-nm", "X=1000", "--spacing", "Y=20"});
+  const auto spacing = RunCli({"build", "axis", "--x", SamplePath("model/positioning_x.csv"), "-o",
+                               out, "--resolution-nm", "X=1000", "--spacing", "Y=20"});
   EXPECT_EQ(spacing.code, tools::kExitUsage);
   EXPECT_NE(spacing.err.find("--spacing: no input file for axis Y"), std::string::npos);
 }

@@ -2,12 +2,12 @@
 // (text and JSON from the same data), and bad input is refused with a clear message and exit code.
 #include <gtest/gtest.h>
 
-#include <cstdlib>
 #include <string>
 #include <vector>
 
 #include "cli_runner.hpp"
 #include "expected_value.hpp"
+#include "sample_path.hpp"
 #include "volcomp/image/image_reader.hpp"
 #include "volcomp/tools/json_value.hpp"
 
@@ -15,12 +15,8 @@ namespace volcomp {
 namespace {
 
 using testing::RunCli;
+using testing::SamplePath;
 using testing::ValueOf;
-
-std::string Sample(const std::string& name) {
-  const char* root = std::getenv("VOLCOMP_SOURCE_DIR");
-  return std::string(root ? root : ".") + "/samples/model/" + name;
-}
 
 std::string TempPath(const std::string& name) {
   return ::testing::TempDir() + "volcomp_build_model_" + name;
@@ -34,7 +30,7 @@ std::vector<std::string> Words(std::vector<std::string> base,
 
 TEST(VolcompBuildModel, WritesAValidImageAndReports) {
   const std::string out = TempPath("s500.vctb");
-  const auto r = RunCli({"build", "model", "--model", Sample("s500.conf"), "-o", out,
+  const auto r = RunCli({"build", "model", "--model", SamplePath("model/s500.conf"), "-o", out,
                          "--resolution-nm", "X=1000,Y=1000,Z=1000", "--table-id", "7"});
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_EQ(r.out.rfind("volcomp build model\n  builder: volcomp build model\n", 0), 0u) << r.out;

@@ -2,13 +2,13 @@
 // measured through a table in force), and the refusals with their exit codes.
 #include <gtest/gtest.h>
 
-#include <cstdlib>
 #include <fstream>
 #include <string>
 #include <vector>
 
 #include "cli_runner.hpp"
 #include "expected_value.hpp"
+#include "sample_path.hpp"
 #include "volcomp/image/image_builder.hpp"
 #include "volcomp/image/image_reader.hpp"
 #include "volcomp/tools/file_io.hpp"
@@ -17,12 +17,8 @@ namespace volcomp {
 namespace {
 
 using testing::RunCli;
+using testing::SamplePath;
 using testing::ValueOf;
-
-std::string Sample(const std::string& name) {
-  const char* root = std::getenv("VOLCOMP_SOURCE_DIR");
-  return std::string(root ? root : ".") + "/samples/model/" + name;
-}
 
 std::string TempPath(const std::string& name) {
   return ::testing::TempDir() + "volcomp_build_tracker_" + name;
@@ -41,7 +37,7 @@ std::string UsageMessage(const std::string& message) {
 
 TEST(VolcompBuildTracker, Methods) {
   const std::vector<std::string> a = {
-      "build", "tracker",          "--points",        Sample("tracker_s500_315.csv"),
+      "build", "tracker",          "--points",        SamplePath("model/tracker_s500_315.csv"),
       "-o",    TempPath("t.vctb"), "--resolution-nm", "X=1000,Y=1000,Z=1000"};
   auto r = RunCli(a);
   ASSERT_EQ(r.code, 0) << r.err;
@@ -162,8 +158,8 @@ TEST(VolcompBuildTracker, Lattice) {
   EXPECT_NEAR(q8[0] / 256.0, 0, 0.01);
   EXPECT_NEAR(q8[2] / 256.0, -1e-6 * 40 * 30 * 1e4, 0.01);
   // A table in force without a GRID3 cannot be composed.
-  r = RunCli({"build", "tracker", "--lattice", through, "--through", Sample("s500.conf"), "-o",
-              out2, "--resolution-nm", "X=100,Y=100,Z=100"});
+  r = RunCli({"build", "tracker", "--lattice", through, "--through", SamplePath("model/s500.conf"),
+              "-o", out2, "--resolution-nm", "X=100,Y=100,Z=100"});
   EXPECT_EQ(r.code, tools::kExitFailed);
   EXPECT_NE(r.err.find("invalid table image"), std::string::npos) << r.err;
 }

@@ -4,21 +4,17 @@
 
 #include <gtest/gtest.h>
 
-#include <cstdlib>
 #include <string>
 
 #include "expected_value.hpp"
+#include "sample_path.hpp"
 #include "volcomp/datasets/s500.hpp"
 
 namespace volcomp::datasets {
 namespace {
 
+using testing::SamplePath;
 using testing::ValueOf;
-
-std::string Sample(const std::string& name) {
-  const char* root = std::getenv("VOLCOMP_SOURCE_DIR");
-  return std::string(root ? root : ".") + "/samples/model/" + name;
-}
 
 // The failure's message (kInputInvalid), or "" when the table was read.
 std::string ErrorOf(const std::string& csv) {
@@ -29,9 +25,9 @@ std::string ErrorOf(const std::string& csv) {
 }
 
 TEST(datasets_axis_table_csv, SampleAxisTablesEqualTheBuiltInOnes) {
-  const char* files[3] = {"s500_x.csv", "s500_y.csv", "s500_z.csv"};
+  const char* files[3] = {"model/s500_x.csv", "model/s500_y.csv", "model/s500_z.csv"};
   for (int a = 0; a < 3; ++a) {
-    const model::AxisErrorTable f = ValueOf(LoadAxisTableCsv(Sample(files[a])));
+    const model::AxisErrorTable f = ValueOf(LoadAxisTableCsv(SamplePath(files[a])));
     const model::AxisErrorTable b = ValueOf(S500AxisTable(a));
     ASSERT_EQ(f.size(), b.size());
     for (std::size_t i = 0; i < f.size(); ++i) {

@@ -4,10 +4,10 @@
 
 #include <gtest/gtest.h>
 
-#include <cstdlib>
 #include <string>
 
 #include "expected_value.hpp"
+#include "sample_path.hpp"
 #include "volcomp/datasets/s500.hpp"
 
 namespace volcomp::datasets {
@@ -15,12 +15,8 @@ namespace {
 
 using model::Model;
 using model::Vec3;
+using testing::SamplePath;
 using testing::ValueOf;
-
-std::string Sample(const std::string& name) {
-  const char* root = std::getenv("VOLCOMP_SOURCE_DIR");
-  return std::string(root ? root : ".") + "/samples/model/" + name;
-}
 
 // The failure's message (kInputInvalid), or "" when the config was read.
 std::string ErrorOf(const std::string& text) {
@@ -31,7 +27,7 @@ std::string ErrorOf(const std::string& text) {
 }
 
 TEST(datasets_model_config, SampleConfigEqualsTheBuiltInModel) {
-  const Model f = ValueOf(LoadModelConfig(Sample("s500.conf")));
+  const Model f = ValueOf(LoadModelConfig(SamplePath("model/s500.conf")));
   const Model b = S500Model();
   EXPECT_EQ(f.squareness.c0y_urad, b.squareness.c0y_urad);
   EXPECT_EQ(f.squareness.b0z_urad, b.squareness.b0z_urad);

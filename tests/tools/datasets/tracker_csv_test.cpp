@@ -4,28 +4,24 @@
 
 #include <gtest/gtest.h>
 
-#include <cstdlib>
 #include <string>
 
 #include "expected_value.hpp"
+#include "sample_path.hpp"
 #include "volcomp/datasets/s500.hpp"
 
 namespace volcomp::datasets {
 namespace {
 
+using testing::SamplePath;
 using testing::ValueOf;
-
-std::string Sample(const std::string& name) {
-  const char* root = std::getenv("VOLCOMP_SOURCE_DIR");
-  return std::string(root ? root : ".") + "/samples/model/" + name;
-}
 
 tools::CsvTable Csv(const std::string& text, const std::string& source) {
   return ValueOf(tools::CsvTable::ReadString(text, source));
 }
 
 TEST(datasets_tracker_csv, SampleTrackerFileEqualsTheBuiltInData) {
-  const model::TrackerData f = ValueOf(LoadTrackerCsv(Sample("tracker_s500_315.csv")));
+  const model::TrackerData f = ValueOf(LoadTrackerCsv(SamplePath("model/tracker_s500_315.csv")));
   const model::TrackerData b = S500Tracker315();
   ASSERT_TRUE(f.has_printed_cosines);
   for (int a = 0; a < 3; ++a) {
@@ -36,7 +32,7 @@ TEST(datasets_tracker_csv, SampleTrackerFileEqualsTheBuiltInData) {
       EXPECT_EQ(Norm(f.lines[a][i].printed_cos - b.lines[a][i].printed_cos), 0.0);
     }
   }
-  EXPECT_EQ(ValueOf(LoadTrackerCsv(Sample("tracker_s500_240.csv"))).lines[2].size(), 17u);
+  EXPECT_EQ(ValueOf(LoadTrackerCsv(SamplePath("model/tracker_s500_240.csv"))).lines[2].size(), 17u);
 }
 
 TEST(datasets_tracker_csv, LineErrorsNameLineAndProblem) {

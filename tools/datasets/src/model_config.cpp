@@ -6,6 +6,7 @@
 #include <utility>
 #include <vector>
 
+#include "trim.hpp"
 #include "volcomp/datasets/axis_table_csv.hpp"
 #include "volcomp/datasets/s500.hpp"
 #include "volcomp/tools/csv.hpp"
@@ -15,13 +16,6 @@ namespace volcomp::datasets {
 namespace {
 
 using model::Model;
-
-std::string Trim(const std::string& s) {
-  std::size_t b = 0, e = s.size();
-  while (b < e && (s[b] == ' ' || s[b] == '\t')) ++b;
-  while (e > b && (s[e - 1] == ' ' || s[e - 1] == '\t' || s[e - 1] == '\r')) --e;
-  return s.substr(b, e - b);
-}
 
 std::string Lower(std::string s) {
   for (char& c : s) {

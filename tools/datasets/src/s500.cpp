@@ -132,4 +132,10 @@ model::TrackerData S500Tracker240() {
   return d;
 }
 
+std::optional<model::TrackerData> S500TrackerNamed(const std::string& name) {
+  if (name == "s500-315") return S500Tracker315();
+  if (name == "s500-240") return S500Tracker240();
+  return std::nullopt;
+}
+
 }  // namespace volcomp::datasets

@@ -7,19 +7,14 @@
 #include <unordered_map>
 #include <vector>
 
+#include "trim.hpp"
+
 namespace volcomp::datasets {
 namespace {
 
 using model::GridAxes;
 using model::GridAxis;
 using tools::CsvTable;
-
-std::string Trim(const std::string& s) {
-  std::size_t b = 0, e = s.size();
-  while (b < e && (s[b] == ' ' || s[b] == '\t')) ++b;
-  while (e > b && (s[e - 1] == ' ' || s[e - 1] == '\t' || s[e - 1] == '\r')) --e;
-  return s.substr(b, e - b);
-}
 
 // Equally spaced node values of one lattice axis, from the set of values the file gives.
 Expected<GridAxis> AxisOf(const CsvTable& csv, const std::set<double>& values, char axis) {

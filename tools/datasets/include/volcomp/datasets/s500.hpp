@@ -11,6 +11,8 @@
 #pragma once
 
 #include <array>
+#include <optional>
+#include <string>
 
 #include "volcomp/hosted/expected.hpp"
 #include "volcomp/model/dissertation.hpp"
@@ -53,5 +55,8 @@ model::Model S500DissertationModel(model::Order order = model::Order::kFirst,
 /// cosines as printed (signs dropped).
 model::TrackerData S500Tracker315();
 model::TrackerData S500Tracker240();
+/// The built-in tracker lines by the name the commands use: "s500-315" or "s500-240" (nullopt for
+/// another name).
+std::optional<model::TrackerData> S500TrackerNamed(const std::string& name);
 
 }  // namespace volcomp::datasets
