@@ -12,6 +12,7 @@ namespace volcomp::sim {
 model::Model LoadMachineModel(const std::string& spec) {
   if (spec.empty() || spec == "s500") return datasets::S500Model();
   auto m = datasets::LoadModelConfig(spec);
+  // TRANSITION(host-sim): thrown as before the reader returned results.
   if (!m.ok()) throw std::runtime_error(m.error().message);
   return std::move(m).value();
 }
