@@ -5,11 +5,12 @@
 #include <stdexcept>
 #include <string>
 
+#include "volcomp/datasets/axis_table_csv.hpp"
+#include "volcomp/datasets/positioning_csv.hpp"
+#include "volcomp/datasets/tracker_csv.hpp"
 #include "volcomp/metrology/diagonal.hpp"
 #include "volcomp/metrology/positioning_csv.hpp"
 #include "volcomp/metrology/rotary_data.hpp"
-#include "volcomp/model/axis1d.hpp"
-#include "volcomp/model/io.hpp"
 #include "volcomp/tools/csv.hpp"
 
 namespace {
@@ -40,8 +41,9 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   Expect([&] { (void)metrology::ReadPositioningCsv(csv); });
   Expect([&] { (void)metrology::ReadRotaryCsv(csv); });
   Expect([&] { (void)metrology::EvaluateDiagonals(csv, metrology::GroupingOptions()); });
-  Expect([&] { (void)model::AxisTableFromCsv(csv); });
-  Expect([&] { (void)model::TrackerDataFromCsv(csv); });
-  Expect([&] { (void)model::PositioningFromCsv(csv); });
+  Expect([&] { (void)datasets::AxisTableFromCsv(csv); });
+  Expect([&] { (void)datasets::TrackerDataFromCsv(csv); });
+  Expect([&] { (void)datasets::TrackerLatticeFromCsv(csv); });
+  Expect([&] { (void)datasets::PositioningFromCsv(csv); });
   return 0;
 }

@@ -40,16 +40,3 @@ const Command& ExportLinuxcncCommand();
 const Command& ModelEvalCommand();
 
 }  // namespace volcomp::cli
-
-// TRANSITION: the run functions of the commands not yet converted (int, may throw: UsageError of
-// args.hpp -> 2, CommunicationError of exit_codes.hpp -> 3, anything else -> 1).
-namespace volcomp::tools {
-int RunBuildGrid(Args& args);
-int RunLookup(Args& args);
-int RunBuildModel(Args& args);
-int RunBuildTracker(Args& args);
-int RunBuildKmtpp(Args& args);
-int RunBuildAxis(Args& args);
-int RunExportLinuxcnc(Args& args);
-int RunModelEval(Args& args);
-}  // namespace volcomp::tools

@@ -52,7 +52,7 @@ Outcome RunIdeal(Session& s, DemoResult& r) {
   VOLCOMP_TRY(demo::MeasureErrorMotions(s, r));
   progress.Step("building the table from the measurements");
   const auto t0 = Clock::now();
-  VOLCOMP_TRY_ASSIGN(model::GridSection grid, demo::BuildModelGrid(s, r));
+  VOLCOMP_TRY_ASSIGN(builders::GridSection grid, demo::BuildModelGrid(s, r));
   VOLCOMP_TRY_ASSIGN(
       r.table, AssembleTable(
                    std::move(grid), {}, s.step_mm(), 1,
@@ -79,7 +79,7 @@ Outcome RunWorn(Session& s, DemoResult& r) {
 
   progress.Step("table 1: GRID3 from the 21-parameter measurements; upload, reference, activate");
   auto t0 = Clock::now();
-  VOLCOMP_TRY_ASSIGN(const model::GridSection model_grid, demo::BuildModelGrid(s, r));
+  VOLCOMP_TRY_ASSIGN(const builders::GridSection model_grid, demo::BuildModelGrid(s, r));
   VOLCOMP_TRY_ASSIGN(
       TableBuildResult t1,
       AssembleTable(
@@ -96,7 +96,7 @@ Outcome RunWorn(Session& s, DemoResult& r) {
   progress.Step(
       "table 2: AXIS1D forward/reverse tables from bidirectional ISO 230-2 runs (table 1 "
       "active), with the GRID3 of table 1");
-  VOLCOMP_TRY_ASSIGN(const std::vector<model::AxisSection> axis_tables,
+  VOLCOMP_TRY_ASSIGN(const std::vector<builders::AxisSection> axis_tables,
                      demo::MeasureAxisTables(s, r));
   t0 = Clock::now();
   VOLCOMP_TRY_ASSIGN(
@@ -117,7 +117,7 @@ Outcome RunWorn(Session& s, DemoResult& r) {
       "table 3: laser tracker at every node of a lattice, measured through table 2; its GRID3 "
       "(composed with table 2's) with the AXIS1D tables");
   const size_t first_check = r.drift.size() - 1;  // the check after the last test of table 2
-  VOLCOMP_TRY_ASSIGN(model::GridSection lattice_grid,
+  VOLCOMP_TRY_ASSIGN(builders::GridSection lattice_grid,
                      demo::MeasureTrackerLattice(s, r, r.earlier_tables.back().table.image));
   t0 = Clock::now();
   VOLCOMP_TRY_ASSIGN(

@@ -247,12 +247,12 @@ Outcome MeasureErrorMotions(Session& s, DemoResult& r) {
   return Outcome::Ok();
 }
 
-Expected<model::GridSection> BuildModelGrid(Session& s, DemoResult& r) {
+Expected<builders::GridSection> BuildModelGrid(Session& s, DemoResult& r) {
   VOLCOMP_TRY_ASSIGN(r.measured_model,
                      ModelFromParametric(r.parametric, s.world.machine().model().chain));
   const double h = s.o.grid_spacing_mm;
   VOLCOMP_TRY_ASSIGN(
-      model::GridSection grid,
+      builders::GridSection grid,
       BuildModelGridSection(r.measured_model, s.layout.lo, s.layout.hi, {h, h, h}, s.step_mm()));
   const model::GridAxes& g = grid.build.grid.axes;
   s.progress.Line(

@@ -78,7 +78,7 @@ Expected<PhaseResults> MeasurePhase(Session& s, DemoResult& r);
 // The six error motions of each axis along a line through the reference point.
 Outcome MeasureErrorMotions(Session& s, DemoResult& r);
 // The measured model and its GRID3 section (ModelGridSource, BuildGridSection).
-Expected<model::GridSection> BuildModelGrid(Session& s, DemoResult& r);
+Expected<builders::GridSection> BuildModelGrid(Session& s, DemoResult& r);
 // Prints the image's size, encoding and CRC-32.
 void PrintImageLine(Session& s, const TableBuildResult& t, Clock::time_point t0);
 // Upload over the simulated bus with the PC tool's SDO code; the board verifies it.
@@ -107,11 +107,11 @@ model::Vec3 DriftBetween(
 void PrintWarmUp(Session& s);
 // Bidirectional ISO 230-2 runs along the centre lines at the compensation pitch, and the AXIS1D
 // tables from their mean deviations (BuildAxisSection).
-Expected<std::vector<model::AxisSection>> MeasureAxisTables(Session& s, DemoResult& r);
+Expected<std::vector<builders::AxisSection>> MeasureAxisTables(Session& s, DemoResult& r);
 // Tracker readings at every node of a lattice over the travel, measured through the table in
 // force (`in_force`, its image), and the GRID3 section that replaces that table's
 // (GridOfImage, TrackerLatticeThroughGridSource, BuildGridSection).
-Expected<model::GridSection> MeasureTrackerLattice(Session& s,
+Expected<builders::GridSection> MeasureTrackerLattice(Session& s,
                                                    DemoResult& r,
                                                    const std::vector<uint8_t>& in_force);
 // The error budget of the last phase and the goals of the worn profile.

@@ -75,8 +75,8 @@ std::vector<double> PitchTargets(double lo, double hi, double pitch) {
 
 }  // namespace
 
-Expected<std::vector<model::AxisSection>> MeasureAxisTables(Session& s, DemoResult& r) {
-  std::vector<model::AxisSection> tables;
+Expected<std::vector<builders::AxisSection>> MeasureAxisTables(Session& s, DemoResult& r) {
+  std::vector<builders::AxisSection> tables;
   const double quarter_lead = 0.25 * s.o.gost_pitch_mm;
   for (int a = 0; a < 3; ++a) {
     const size_t i = static_cast<size_t>(a);
@@ -99,11 +99,11 @@ Expected<std::vector<model::AxisSection>> MeasureAxisTables(Session& s, DemoResu
     VOLCOMP_TRY_ASSIGN(r.axis_runs[i], MeasureGostAxis(s.world, s.laser, a, plan));
     VOLCOMP_TRY(CheckDrift(s, r, std::string("ISO 230-2 run ") + "XYZ"[a]));
     // `volcomp build axis --reverse tables` on the pairs' mean deviations x̄↑, x̄↓.
-    VOLCOMP_TRY_ASSIGN(model::AxisSection table,
+    VOLCOMP_TRY_ASSIGN(builders::AxisSection table,
                        BuildAxisTable(PairMeans(MeanDeviations(r.axis_runs[i].iso)), a,
                                       s.o.axis_run_pitch_mm, s.step_mm()));
     tables.push_back(std::move(table));
-    const model::Axis1dTable& t = tables.back().table;
+    const builders::Axis1dTable& t = tables.back().table;
     double reversal = 0, largest = 0;
     for (size_t k = 0; k < t.forward.size(); ++k) {
       reversal += (t.forward[k] - t.reverse[k]) / static_cast<double>(t.forward.size());
@@ -121,7 +121,7 @@ Expected<std::vector<model::AxisSection>> MeasureAxisTables(Session& s, DemoResu
   return tables;
 }
 
-Expected<model::GridSection> MeasureTrackerLattice(Session& s,
+Expected<builders::GridSection> MeasureTrackerLattice(Session& s,
                                                    DemoResult& r,
                                                    const std::vector<uint8_t>& in_force) {
   const auto t0 = Clock::now();
@@ -176,7 +176,7 @@ Expected<model::GridSection> MeasureTrackerLattice(Session& s,
   }
   const double gs = s.o.grid_spacing_mm;
   // `volcomp build tracker --lattice FILE --through TABLE2` on these readings.
-  VOLCOMP_TRY_ASSIGN(model::GridSection grid,
+  VOLCOMP_TRY_ASSIGN(builders::GridSection grid,
                      BuildTrackerLatticeGridSection(data, in_force, s.layout.lo, s.layout.hi,
                                                     {gs, gs, gs}, s.step_mm()));
   const model::GridAxes& gg = grid.build.grid.axes;

@@ -6,13 +6,12 @@
 #include <utility>
 
 #include "volcomp/base/byte_order.hpp"
+#include "volcomp/builders/grid_section.hpp"
+#include "volcomp/builders/image_glue.hpp"
 #include "volcomp/image/image_builder.hpp"
 #include "volcomp/image/image_reader.hpp"
-#include "volcomp/model/grid_section.hpp"
-#include "volcomp/model/grid_source.hpp"
-#include "volcomp/model/image_glue.hpp"
-#include "volcomp/model/image_grid.hpp"
-#include "volcomp/sim/from_tools.hpp"
+#include "volcomp/builders/grid_source.hpp"
+#include "volcomp/builders/image_grid.hpp"
 
 namespace volcomp::sim {
 
@@ -27,17 +26,14 @@ Expected<model::Model> ModelFromParametric(const std::array<ParametricResult, 3>
     }
     std::vector<model::AxisErrorSample> rows;
     for (const SixDofReading& s : r.measured) rows.push_back({s.linear_um, s.angular_urad});
-    // TRANSITION(tools): the table's constructor throws std::invalid_argument.
     VOLCOMP_TRY_ASSIGN(m.axes[static_cast<size_t>(a)],
-                       FromTools([&] { return model::AxisErrorTable(r.position_mm, rows); },
-                                 Error::kInvalidArgument));
+                       model::AxisErrorTable::Create(r.position_mm, rows));
   }
   m.chain = chain;
   m.chain.workpiece_errors = model::ErrorSide::kRelative;  // measured tool vs workpiece
   m.formulation = model::Formulation::kPhysical;
   m.order = model::Order::kSecond;
-  // TRANSITION(tools): ValidateModel throws std::invalid_argument.
-  VOLCOMP_TRY(FromTools([&] { model::ValidateModel(m); }, Error::kInvalidArgument));
+  VOLCOMP_TRY(model::ValidateModel(m));
   return m;
 }
 
@@ -53,11 +49,11 @@ std::vector<image::AxisDef> ImageAxes(const std::array<double, 3>& step_mm) {
   return axes;
 }
 
-model::GridBuildOptions LatticeOptions(const std::array<double, 3>& lo_mm,
-                                       const std::array<double, 3>& hi_mm,
-                                       const std::array<double, 3>& spacing_mm,
-                                       const std::array<double, 3>& step_mm) {
-  model::GridBuildOptions o;
+builders::GridBuildOptions LatticeOptions(const std::array<double, 3>& lo_mm,
+                                          const std::array<double, 3>& hi_mm,
+                                          const std::array<double, 3>& spacing_mm,
+                                          const std::array<double, 3>& step_mm) {
+  builders::GridBuildOptions o;
   o.min_mm = lo_mm;
   o.max_mm = hi_mm;
   o.spacing_mm = spacing_mm;
@@ -88,8 +84,8 @@ model::PositioningData PairMeans(const model::PositioningData& t) {
   return d;
 }
 
-Expected<TableBuildResult> AssembleTable(const std::optional<model::GridSection>& grid,
-                                         const std::vector<model::AxisSection>& axis_tables,
+Expected<TableBuildResult> AssembleTable(const std::optional<builders::GridSection>& grid,
+                                         const std::vector<builders::AxisSection>& axis_tables,
                                          const std::array<double, 3>& step_mm,
                                          uint32_t table_id,
                                          const std::map<std::string, std::string>& info) {
@@ -103,29 +99,25 @@ Expected<TableBuildResult> AssembleTable(const std::optional<model::GridSection>
     req.grid = grid->section;
     r.info = grid->info;
   }
-  for (const model::AxisSection& a : axis_tables) req.axis_tables.push_back(a.section);
+  for (const builders::AxisSection& a : axis_tables) req.axis_tables.push_back(a.section);
   for (const auto& [k, v] : info) r.info[k] = v;
   req.element = table::ElementType::kInt16;
-  // TRANSITION(tools): ChooseFracBits and BuildImage throw tools::InputError.
-  VOLCOMP_TRY_ASSIGN(req.frac_bits, FromTools([&] { return image::ChooseFracBits(req); }));
+  VOLCOMP_TRY_ASSIGN(req.frac_bits, image::ChooseFracBits(req));
   r.frac_bits = *req.frac_bits;
-  r.lsb_um = model::LsbUm(req.axes[0], r.frac_bits);
+  r.lsb_um = builders::LsbUm(req.axes[0], r.frac_bits);
   req.info = r.info;
-  VOLCOMP_TRY_ASSIGN(r.image, FromTools([&] { return image::BuildImage(req); }));
+  VOLCOMP_TRY_ASSIGN(r.image, image::BuildImage(req));
   r.crc32 = LoadLe32(r.image.data() + r.image.size() - 4);
   return r;
 }
 
-Expected<model::GridSection> BuildModelGridSection(const model::Model& measured,
+Expected<builders::GridSection> BuildModelGridSection(const model::Model& measured,
                                                    const std::array<double, 3>& lo_mm,
                                                    const std::array<double, 3>& hi_mm,
                                                    const std::array<double, 3>& spacing_mm,
                                                    const std::array<double, 3>& step_mm) {
-  // TRANSITION(tools): BuildGridSection throws (a bound exceeded, the inverse's residual).
-  return FromTools([&] {
-    return model::BuildGridSection(LatticeOptions(lo_mm, hi_mm, spacing_mm, step_mm),
-                                   ImageAxes(step_mm), model::ModelGridSource(measured));
-  });
+  return builders::BuildGridSection(LatticeOptions(lo_mm, hi_mm, spacing_mm, step_mm),
+                                    ImageAxes(step_mm), builders::ModelGridSource(measured));
 }
 
 Expected<TableBuildResult> BuildTableImage(const model::Model& measured,
@@ -134,7 +126,7 @@ Expected<TableBuildResult> BuildTableImage(const model::Model& measured,
                                            const std::array<double, 3>& spacing_mm,
                                            const std::array<double, 3>& step_mm,
                                            uint32_t table_id) {
-  VOLCOMP_TRY_ASSIGN(model::GridSection g,
+  VOLCOMP_TRY_ASSIGN(builders::GridSection g,
                      BuildModelGridSection(measured, lo_mm, hi_mm, spacing_mm, step_mm));
   return AssembleTable(
       std::move(g), {}, step_mm, table_id,
@@ -142,21 +134,18 @@ Expected<TableBuildResult> BuildTableImage(const model::Model& measured,
        {"source", "measured 21-parameter model: 6-DOF laser runs of X, Y, Z"}});
 }
 
-Expected<model::AxisSection> BuildAxisTable(const model::PositioningData& deviations,
+Expected<builders::AxisSection> BuildAxisTable(const model::PositioningData& deviations,
                                             int axis,
                                             double spacing_mm,
                                             const std::array<double, 3>& step_mm) {
-  model::Axis1dOptions o;
-  o.reverse = model::ReverseMode::kTables;
+  builders::Axis1dOptions o;
+  o.reverse = builders::ReverseMode::kTables;
   o.spacing = spacing_mm;
   const image::AxisDef image_axis = ImageAxes(step_mm)[static_cast<size_t>(axis)];
-  // TRANSITION(tools): BuildAxisSection throws.
-  return FromTools([&] {
-    return model::BuildAxisSection(deviations, o, image_axis, static_cast<uint8_t>(axis), false);
-  });
+  return builders::BuildAxisSection(deviations, o, image_axis, static_cast<uint8_t>(axis), false);
 }
 
-Expected<model::GridSection> BuildTrackerLatticeGridSection(
+Expected<builders::GridSection> BuildTrackerLatticeGridSection(
     const model::TrackerLatticeData& lattice,
     const std::vector<uint8_t>& in_force,
     const std::array<double, 3>& lo_mm,
@@ -165,13 +154,12 @@ Expected<model::GridSection> BuildTrackerLatticeGridSection(
     const std::array<double, 3>& step_mm) {
   VOLCOMP_TRY_ASSIGN(const image::LoadedImage table_in_force,
                      image::LoadedImage::FromBytes(in_force, "table 2"));
-  // TRANSITION(tools): TrackerLattice, GridOfImage and BuildGridSection throw.
-  return FromTools([&] {
-    return model::BuildGridSection(
-        LatticeOptions(lo_mm, hi_mm, spacing_mm, step_mm), ImageAxes(step_mm),
-        model::TrackerLatticeThroughGridSource(model::TrackerLattice(lattice),
-                                               model::GridOfImage(table_in_force, "table 2")));
-  });
+  VOLCOMP_TRY_ASSIGN(const model::TrackerLattice through, model::TrackerLattice::Create(lattice));
+  VOLCOMP_TRY_ASSIGN(const model::CorrectionGrid table2,
+                     builders::GridOfImage(table_in_force, "table 2"));
+  return builders::BuildGridSection(LatticeOptions(lo_mm, hi_mm, spacing_mm, step_mm),
+                                    ImageAxes(step_mm),
+                                    builders::TrackerLatticeThroughGridSource(through, table2));
 }
 
 Outcome WriteModelFiles(const model::Model& measured, const std::string& dir) {

@@ -3,16 +3,14 @@
 
 #include <cmath>
 
-#include "volcomp/model/io.hpp"
-#include "volcomp/model/s500.hpp"
-#include "volcomp/sim/from_tools.hpp"
+#include "volcomp/datasets/model_config.hpp"
+#include "volcomp/datasets/s500.hpp"
 
 namespace volcomp::sim {
 
 Expected<model::Model> LoadMachineModel(const std::string& spec) {
-  if (spec.empty() || spec == "s500") return model::S500Model();
-  // TRANSITION(tools): LoadModelConfig throws.
-  return FromTools([&] { return model::LoadModelConfig(spec); });
+  if (spec.empty() || spec == "s500") return datasets::S500Model();
+  return datasets::LoadModelConfig(spec);
 }
 
 MachineGeometry GeometryOf(const model::Model& m) {
@@ -44,9 +42,8 @@ Xyz ToXyz(const model::Vec3& v) { return {v.x, v.y, v.z}; }
 }  // namespace
 
 Expected<Machine> Machine::Create(MachineOptions o) {
-  if (o.model.axes[0].empty()) o.model = model::S500Model();
-  // TRANSITION(tools): ValidateModel throws std::invalid_argument.
-  VOLCOMP_TRY(FromTools([&] { model::ValidateModel(o.model); }, Error::kInvalidArgument));
+  if (o.model.axes[0].empty()) o.model = datasets::S500Model();
+  VOLCOMP_TRY(model::ValidateModel(o.model));
   if (o.model.formulation != model::Formulation::kPhysical) {
     return Fail(Error::kInvalidArgument,
                 "machine: the simulated machine is a rigid body; formulation = dissertation "

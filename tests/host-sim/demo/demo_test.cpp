@@ -10,9 +10,9 @@
 #include <sstream>
 
 #include "sanitized_build.hpp"
+#include "volcomp/datasets/s500.hpp"
 #include "volcomp/firmware/board_objects.hpp"
 #include "volcomp/image/image_reader.hpp"
-#include "volcomp/model/s500.hpp"
 
 namespace volcomp::sim {
 namespace {
@@ -80,7 +80,7 @@ void CheckUpload(const DemoResult& r) {
 // Before compensation the drives sit exactly on the commanded steps, so E_i is max - min over the
 // targets of e(target) projected on the diagonal (the datum cancels).
 void CheckDiagonalsAgainstTheModel(const DemoResult& r) {
-  const model::Model s500 = model::S500Model();
+  const model::Model s500 = datasets::S500Model();
   ASSERT_EQ(r.before.diagonals.programs.size(), r.before.diagonals.evaluation.diagonals.size());
   for (size_t i = 0; i < r.before.diagonals.programs.size(); ++i) {
     const TestProgram& p = r.before.diagonals.programs[i];
@@ -106,14 +106,16 @@ void CheckDiagonalsAgainstTheModel(const DemoResult& r) {
 // firmware's code (ImageEvaluator), rounded half up to whole steps like the board's output, and
 // the model at that drive position. The simulated chain must put the axes exactly there.
 void CheckPointsAgainstTheModel(const DemoResult& r, int points) {
-  const model::Model s500 = model::S500Model();
+  const model::Model s500 = datasets::S500Model();
   const model::Vec3 e0 = model::ToolPointError_um(s500, {0, 0, 0});
   ASSERT_EQ(r.before.points.targets_mm.size(), static_cast<size_t>(points));
   ASSERT_EQ(r.after.points.targets_mm.size(), static_cast<size_t>(points));
   const Expected<image::LoadedImage> img =
       image::LoadedImage::FromBytes(r.table.image, "demo table");
   ASSERT_TRUE(img.ok()) << img.error().message;
-  const image::ImageEvaluator eval(*img);
+  const Expected<image::ImageEvaluator> evaluator = image::ImageEvaluator::Create(*img);
+  ASSERT_TRUE(evaluator.ok()) << evaluator.error().message;
+  const image::ImageEvaluator& eval = *evaluator;
   double worst = 0;
   for (size_t i = 0; i < static_cast<size_t>(points); ++i) {
     int32_t pos[3], q8[3];
@@ -164,14 +166,15 @@ TEST(SimDemo, DefaultRunShowsTheIssueFigures) {
   }
 }
 
-// A model file that cannot be read ends the run before it starts, as a failure naming the file.
+// A model file that cannot be read ends the run before it starts, as a failure naming the file
+// (kIoError: the file, not its contents).
 TEST(SimDemo, AModelFileThatCannotBeReadIsAFailure) {
   DemoOptions o;
   o.model_spec = "/nonexistent/machine.conf";
   std::ostringstream log;
   const Expected<DemoResult> run = RunDemo(o, log);
   ASSERT_FALSE(run.ok());
-  EXPECT_EQ(run.error().code, Error::kInputInvalid);
+  EXPECT_EQ(run.error().code, Error::kIoError);
   EXPECT_EQ(run.error().message.rfind("/nonexistent/machine.conf: ", 0), 0u) << run.error().message;
   EXPECT_EQ(log.str(), "");
 }

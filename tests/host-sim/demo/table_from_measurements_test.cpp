@@ -8,8 +8,8 @@
 #include <cmath>
 #include <memory>
 
+#include "volcomp/datasets/s500.hpp"
 #include "volcomp/image/image_reader.hpp"
-#include "volcomp/model/s500.hpp"
 #include "volcomp/sim/measurements.hpp"
 #include "volcomp/sim/random.hpp"
 
@@ -44,7 +44,7 @@ class SimTable : public ::testing::Test {
       ASSERT_TRUE(run.ok()) << run.error().message;
       runs_[static_cast<size_t>(a)] = run.value();
     }
-    const Expected<model::Model> measured = ModelFromParametric(runs_, model::S500Model().chain);
+    const Expected<model::Model> measured = ModelFromParametric(runs_, datasets::S500Model().chain);
     ASSERT_TRUE(measured.ok()) << measured.error().message;
     measured_ = new model::Model(measured.value());
   }
@@ -58,7 +58,7 @@ std::array<ParametricResult, 3> SimTable::runs_;
 model::Model* SimTable::measured_ = nullptr;
 
 TEST_F(SimTable, MeasuredModelReproducesTheMachineUpToItsValueAtTheReference) {
-  const model::Model truth = model::S500Model();
+  const model::Model truth = datasets::S500Model();
   const model::Vec3 e0 = model::ToolPointError_um(truth, {0, 0, 0});
   Random rng(11);
   double worst = 0;
@@ -78,8 +78,10 @@ TEST_F(SimTable, ImageLandsTheToolOnItsTargets) {
   const TableBuildResult& t = *built;
   const Expected<image::LoadedImage> img = image::LoadedImage::FromBytes(t.image, "built");
   ASSERT_TRUE(img.ok()) << img.error().message;
-  const image::ImageEvaluator eval(*img);
-  const model::Model truth = model::S500Model();
+  const Expected<image::ImageEvaluator> evaluator = image::ImageEvaluator::Create(*img);
+  ASSERT_TRUE(evaluator.ok()) << evaluator.error().message;
+  const image::ImageEvaluator& eval = *evaluator;
+  const model::Model truth = datasets::S500Model();
   const model::Vec3 e0 = model::ToolPointError_um(truth, {0, 0, 0});
   Random rng(12);
   double worst = 0, before = 0;

@@ -124,7 +124,7 @@ std::vector<uint8_t> ConstantImage() {
   }
   req.grid = g;
   req.frac_bits = 0;
-  return image::BuildImage(req);
+  return image::BuildImage(req).value();
 }
 
 TEST(SimWorld, TableOverTheBusThenCompensatedMotionLosesNothing) {
@@ -207,7 +207,7 @@ TEST(SimWorld, CorrectionDrivenReversalIsNotBacklashCompensated) {
   y.reverse_steps = {-20, -20};
   req.axis_tables.push_back(y);
   req.frac_bits = 0;
-  const std::vector<uint8_t> image = image::BuildImage(req);
+  const std::vector<uint8_t> image = image::BuildImage(req).value();
   std::ostringstream log;
   const Expected<UploadReport> up = UploadTable(w, image, log);
   ASSERT_TRUE(up.ok()) << up.error().message;

@@ -23,9 +23,9 @@ model::Model SimpleModel() {
   model::AxisErrorSample end;
   end.linear_um = {10, -4, 2};
   end.angular_urad = {0, 100, 0};
-  m.axes[0] = model::AxisErrorTable({0, 100}, {zero, end});
-  m.axes[1] = model::AxisErrorTable({0, 100}, {zero, zero});
-  m.axes[2] = model::AxisErrorTable({0, 100}, {zero, zero});
+  m.axes[0] = model::AxisErrorTable::Create({0, 100}, {zero, end}).value();
+  m.axes[1] = model::AxisErrorTable::Create({0, 100}, {zero, zero}).value();
+  m.axes[2] = model::AxisErrorTable::Create({0, 100}, {zero, zero}).value();
   return m;
 }
 

@@ -7,7 +7,7 @@
 #include <cmath>
 #include <utility>
 
-#include "volcomp/model/s500.hpp"
+#include "volcomp/datasets/s500.hpp"
 #include "volcomp/sim/machine.hpp"
 
 namespace volcomp::sim {
@@ -102,7 +102,7 @@ TEST(SimWear, ShortPeriodScrewErrorOfTheDrivePosition) {
 TEST(SimWear, ThermalGrowthAfterTheWarmUp) {
   Machine m = WornWith([](WornMachineProfile& w) { w.thermal = true; });
   const model::Vec3 q = {0, 100, 50};
-  const double cold = model::S500Model().tool_offset_mm.z;  // 0: the tool point is q + e(q)
+  const double cold = datasets::S500Model().tool_offset_mm.z;  // 0: the tool point is q + e(q)
   const Machine perfect = Perfect();
   // t = 0, 60 min warm-up, τ = 60 min: spindle −30 (1 − e^−1) = −18.9636 µm; X screw at drive
   // 200 mm: 11.5 ppm/K · 4 K (1 − e^−1) · 200 mm = 5.8155 µm.

@@ -15,7 +15,7 @@ model::Model SimpleModel() {
   model::Model m;
   m.name = "test";
   const model::AxisErrorSample zero{};
-  for (auto& axis : m.axes) axis = model::AxisErrorTable({0, 100}, {zero, zero});
+  for (auto& axis : m.axes) axis = model::AxisErrorTable::Create({0, 100}, {zero, zero}).value();
   return m;
 }
 

@@ -8,8 +8,8 @@
 
 #include <cmath>
 
+#include "volcomp/datasets/s500.hpp"
 #include "volcomp/model/rigid_body.hpp"
-#include "volcomp/model/s500.hpp"
 #include "volcomp/sim/machine.hpp"
 #include "volcomp/sim/random.hpp"
 
@@ -44,7 +44,7 @@ double WorstDisagreement_um(const model::Model& m, uint64_t seed, int n) {
 }
 
 TEST(SimKinematics, AgreesWithTheBuildersModelOnTheS500) {
-  EXPECT_LE(WorstDisagreement_um(model::S500Model(), 1, 5000), 1e-6);
+  EXPECT_LE(WorstDisagreement_um(datasets::S500Model(), 1, 5000), 1e-6);
 }
 
 // Random 21-parameter machines: errors up to 300 µm and 2000 µrad (second-order terms of tens of
@@ -70,12 +70,12 @@ TEST(SimKinematics, AgreesWithTheBuildersModelOnRandomMachines) {
         }
         rows.push_back(s);
       }
-      m.axes[a] = model::AxisErrorTable(pos, rows);
+      m.axes[a] = model::AxisErrorTable::Create(pos, rows).value();
     }
     m.squareness = {rng.Uniform(-2000, 2000), rng.Uniform(-2000, 2000), rng.Uniform(-2000, 2000)};
     m.tool_offset_mm = {rng.Uniform(-100, 100), rng.Uniform(-100, 100), rng.Uniform(-300, 0)};
     const auto& c = chains[trial % 7];
-    m.chain = model::KinematicChain::Parse(c[0], c[1]);
+    m.chain = model::KinematicChain::Parse(c[0], c[1]).value();
     m.chain.workpiece_errors =
         trial % 2 == 0 ? model::ErrorSide::kRelative : model::ErrorSide::kCarriage;
     m.angle_scale = trial % 3 == 0 ? 1.0 : rng.Uniform(0.5, 2.0);

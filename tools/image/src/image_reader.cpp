@@ -3,7 +3,6 @@
 
 #include <cstring>
 
-#include "volcomp/image/image_builder.hpp"
 #include "volcomp/tools/csv.hpp"
 #include "volcomp/tools/file_io.hpp"
 
@@ -35,7 +34,9 @@ Expected<LoadedImage> ReadImageFile(const std::string& path) {
 }
 
 LoadedImage LoadImageFile(const std::string& path) {
-  return LoadedImage(ReadFileBytes(path), path);
+  auto r = ReadImageFile(path);
+  if (!r.ok()) throw tools::InputError(r.error().message);
+  return std::move(r).value();
 }
 
 BoardConfig BoardConfigFor(const table::TableView& view) {
@@ -53,9 +54,11 @@ BoardConfig BoardConfigFor(const table::TableView& view) {
   return c;
 }
 
-ImageEvaluator::ImageEvaluator(const LoadedImage& image) : axis_count_(image.view().axis_count) {
-  const Status s = table_.Prepare(image.view(), BoardConfigFor(image.view()));
-  if (!s.ok()) throw tools::InputError(std::string("image: ") + ErrorText(s.error()));
+Expected<ImageEvaluator> ImageEvaluator::Create(const LoadedImage& image) {
+  ImageEvaluator e(image.view().axis_count);
+  const Status s = e.table_.Prepare(image.view(), BoardConfigFor(image.view()));
+  if (!s.ok()) return Fail(Error::kInputInvalid, std::string("image: ") + ErrorText(s.error()));
+  return e;
 }
 
 void ImageEvaluator::CorrectionQ8(const int32_t* pos_steps,

@@ -15,8 +15,8 @@
 #include <vector>
 
 #include "volcomp/hosted/expected.hpp"
-#include "volcomp/model/axis_section.hpp"
-#include "volcomp/model/grid_section.hpp"
+#include "volcomp/builders/axis_section.hpp"
+#include "volcomp/builders/grid_section.hpp"
 #include "volcomp/model/rigid_body.hpp"
 #include "volcomp/model/tracker_lattice.hpp"
 #include "volcomp/sim/measurements.hpp"
@@ -34,10 +34,10 @@ Expected<model::Model> ModelFromParametric(const std::array<ParametricResult, 3>
 std::vector<image::AxisDef> ImageAxes(const std::array<double, 3>& step_mm);
 
 /// A lattice over [lo, hi] (mm) with the given node spacing, for axes of `step_mm` per step.
-model::GridBuildOptions LatticeOptions(const std::array<double, 3>& lo_mm,
-                                       const std::array<double, 3>& hi_mm,
-                                       const std::array<double, 3>& spacing_mm,
-                                       const std::array<double, 3>& step_mm);
+builders::GridBuildOptions LatticeOptions(const std::array<double, 3>& lo_mm,
+                                          const std::array<double, 3>& hi_mm,
+                                          const std::array<double, 3>& spacing_mm,
+                                          const std::array<double, 3>& step_mm);
 
 /// The mean deviations per target of a bidirectional positioning run, as `build axis` reads them.
 model::PositioningData MeanDeviations(const metrology::PositioningResult& run);
@@ -46,8 +46,8 @@ model::PositioningData MeanDeviations(const metrology::PositioningResult& run);
 model::PositioningData PairMeans(const model::PositioningData& targets);
 
 struct TableBuildResult {
-  std::optional<model::GridSection> grid;
-  std::vector<model::AxisSection> axis_tables;  // one per axis, in axis order
+  std::optional<builders::GridSection> grid;
+  std::vector<builders::AxisSection> axis_tables;  // one per axis, in axis order
   std::vector<uint8_t> image;
   uint32_t crc32 = 0;
   uint8_t frac_bits = 0;
@@ -57,15 +57,15 @@ struct TableBuildResult {
 
 /// One image from a GRID3 section and/or AXIS1D sections (axis_tables[i] is axis i). `info` is
 /// added to the sections' own entries.
-Expected<TableBuildResult> AssembleTable(const std::optional<model::GridSection>& grid,
-                                         const std::vector<model::AxisSection>& axis_tables,
+Expected<TableBuildResult> AssembleTable(const std::optional<builders::GridSection>& grid,
+                                         const std::vector<builders::AxisSection>& axis_tables,
                                          const std::array<double, 3>& step_mm,
                                          uint32_t table_id,
                                          const std::map<std::string, std::string>& info);
 
 /// The GRID3 section of the measured model over [lo, hi] (mm) with the given node spacing (mm)
 /// for axes of `step_mm` per step (ModelGridSource, BuildGridSection).
-Expected<model::GridSection> BuildModelGridSection(const model::Model& measured,
+Expected<builders::GridSection> BuildModelGridSection(const model::Model& measured,
                                                    const std::array<double, 3>& lo_mm,
                                                    const std::array<double, 3>& hi_mm,
                                                    const std::array<double, 3>& spacing_mm,
@@ -81,7 +81,7 @@ Expected<TableBuildResult> BuildTableImage(const model::Model& measured,
 
 /// The AXIS1D section of `axis` (0..2) from mean deviations per target, with forward and reverse
 /// tables at `spacing_mm` (`volcomp build axis --reverse tables`, BuildAxisSection).
-Expected<model::AxisSection> BuildAxisTable(const model::PositioningData& deviations,
+Expected<builders::AxisSection> BuildAxisTable(const model::PositioningData& deviations,
                                             int axis,
                                             double spacing_mm,
                                             const std::array<double, 3>& step_mm);
@@ -90,7 +90,7 @@ Expected<model::AxisSection> BuildAxisTable(const model::PositioningData& deviat
 /// in force (`in_force`, its image), composed with that table's GRID3
 /// (`volcomp build tracker --lattice --through`: GridOfImage, TrackerLatticeThroughGridSource,
 /// BuildGridSection), over [lo, hi] at the given spacing.
-Expected<model::GridSection> BuildTrackerLatticeGridSection(
+Expected<builders::GridSection> BuildTrackerLatticeGridSection(
     const model::TrackerLatticeData& lattice,
     const std::vector<uint8_t>& in_force,
     const std::array<double, 3>& lo_mm,

@@ -31,8 +31,8 @@ struct MachineOptions {
   WornMachineProfile wear;  // all off: the rigid-body machine alone
 };
 
-/// "s500" (the built-in STAN S500 model) or a model config file (tools/model io.hpp format); the
-/// failure names the file and the problem.
+/// "s500" (the built-in STAN S500 model) or a model config file (tools/datasets model_config.hpp
+/// format); the failure names the file and the problem.
 Expected<model::Model> LoadMachineModel(const std::string& spec);
 
 /// The error functions, squareness, tool offset and chain of a model, as the machine's data.
