@@ -34,6 +34,13 @@ namespace {
 using volcomp::model::Vec3;
 using Steps = std::array<int64_t, 3>;
 
+// This program's main reports any failure and exits 1: the value, or the failure thrown to it.
+template <typename T>
+T Get(volcomp::Expected<T> r) {
+  if (!r.ok()) throw std::runtime_error(r.error().message);
+  return std::move(r).value();
+}
+
 struct Rest {
   std::string program;
   Vec3 cmd_mm;
@@ -43,7 +50,7 @@ struct Rest {
 };
 
 Steps ReadSteps(const volcomp::tools::CsvRow& r, const std::string& prefix) {
-  return {r.integer(prefix + "0"), r.integer(prefix + "1"), r.integer(prefix + "2")};
+  return {Get(r.Integer(prefix + "0")), Get(r.Integer(prefix + "1")), Get(r.Integer(prefix + "2"))};
 }
 
 std::string Fixed(double v, int decimals) {
@@ -83,7 +90,7 @@ int Run(int argc, char** argv) {
   if (rest_path.empty() || out.empty() || !(step_mm > 0)) {
     throw std::runtime_error("usage: lcnc_evaluate --rest FILE --step-mm S --out DIR ...");
   }
-  const auto table = volcomp::tools::CsvTable::ParseFile(rest_path);
+  const auto table = Get(volcomp::tools::CsvTable::ReadFile(rest_path));
   // The board run (volcomp-sim.hal) or the joint compensation run (volcomp-comp.hal: the
   // nominal joint command and the drives only).
   const bool comp_run = table.find("pos_cmd_mm_0").has_value();
@@ -92,11 +99,11 @@ int Run(int argc, char** argv) {
   std::vector<Rest> rests;
   for (const auto& r : table.rows()) {
     Rest x;
-    x.program = r.text("program");
+    x.program = Get(r.Text("program"));
     const std::string cmd = comp_run ? "pos_cmd_mm_" : "cmd_mm_";
-    x.cmd_mm = {r.number(cmd + "0"), r.number(cmd + "1"), r.number(cmd + "2")};
+    x.cmd_mm = {Get(r.Number(cmd + "0")), Get(r.Number(cmd + "1")), Get(r.Number(cmd + "2"))};
     x.drive = ReadSteps(r, "drive_counts_");
-    x.ferror_mm = {r.number("ferror_mm_0"), r.number("ferror_mm_1"), r.number("ferror_mm_2")};
+    x.ferror_mm = {Get(r.Number("ferror_mm_0")), Get(r.Number("ferror_mm_1")), Get(r.Number("ferror_mm_2"))};
     if (comp_run) {
       x.machine[0] = x.drive;
     } else {
@@ -149,7 +156,7 @@ int Run(int argc, char** argv) {
     diag_csv[c] = "diagonal,target_mm,direction,run,deviation_um\n";
   }
   for (const Spec& s : specs) {
-    const auto targets = volcomp::tools::CsvTable::ParseFile(s.targets);
+    const auto targets = Get(volcomp::tools::CsvTable::ReadFile(s.targets));
     std::vector<const Rest*> stops;
     for (const Rest& r : rests) {
       if (r.program == s.program) stops.push_back(&r);
@@ -174,10 +181,10 @@ int Run(int argc, char** argv) {
       for (int c = 0; c < n_cases; ++c) {
         const Vec3 e = volcomp::lcnc_test::ToolPoint_mm(r.machine[c], step_mm) - r.cmd_mm;
         max_error_um[cases[c]] = std::max(max_error_um[cases[c]], 1000.0 * Norm(e));
-        const std::string row = t.text("target_mm") + "," + t.text("direction") + "," +
-                                t.text("run") + "," + Fixed(1000.0 * Dot(e, u), 4) + "\n";
+        const std::string row = Get(t.Text("target_mm")) + "," + Get(t.Text("direction")) + "," +
+                                Get(t.Text("run")) + "," + Fixed(1000.0 * Dot(e, u), 4) + "\n";
         if (s.diagonal) {
-          diag_csv[c] += "\"" + t.text("diagonal") + "\"," + row;
+          diag_csv[c] += "\"" + Get(t.Text("diagonal")) + "\"," + row;
         } else {
           pos_csv[c] += row;
         }

@@ -13,7 +13,7 @@
 //     const auto files = args.Positionals();
 //     VOLCOMP_TRY(args.Finish());
 //     if (files.size() != 1) return UsageFailure("expected one IMAGE file");
-//     VOLCOMP_TRY_ASSIGN(const auto image, image::LoadImageFile(files[0]));
+//     VOLCOMP_TRY_ASSIGN(const auto image, image::ReadImageFile(files[0]));
 //     return Output{InspectData(files[0], image), InspectText};
 //   }
 //   extern const Command kInspect{"inspect", "summarise a table image", "IMAGE", {...}, RunInspect};
@@ -25,15 +25,15 @@
 #include <vector>
 
 #include "volcomp/hosted/expected.hpp"
-#include "volcomp/tools/args.hpp"
+#include "volcomp/args/args.hpp"
 #include "volcomp/tools/exit_codes.hpp"
 #include "volcomp/tools/json_value.hpp"
 
 namespace volcomp::cli {
 
-using tools::Args;
+using args::Args;
 using tools::JsonValue;
-using tools::OptionSpec;
+using args::OptionSpec;
 
 /// Where a command reads and writes (std::cin/cout/cerr in the tool; string streams in tests).
 struct Context {
@@ -68,8 +68,6 @@ struct Command {
   std::vector<OptionSpec> options;
   RunFunction run = nullptr;
   const char* notes = "";  // extra help text (option groups, examples)
-  // TRANSITION: a command not yet converted (int, throws); removed when all are converted.
-  int (*legacy_run)(Args& args) = nullptr;
 };
 
 /// A usage failure (exit code 2): bad or missing options or arguments.

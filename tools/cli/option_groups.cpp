@@ -3,7 +3,7 @@
 
 namespace volcomp::cli {
 
-using tools::OptionSpec;
+using args::OptionSpec;
 
 Options Join(std::initializer_list<Options> parts) {
   Options out;

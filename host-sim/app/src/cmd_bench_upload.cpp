@@ -8,7 +8,7 @@
 namespace volcomp::sim {
 namespace {
 
-Expected<int> RunBenchUpload(tools::Args& args, Context& ctx) {
+Expected<int> RunBenchUpload(args::Args& args, Context& ctx) {
   const auto bitrate = args.Integer("--bitrate");
   const auto nodes = args.Integer("--nodes");
   VOLCOMP_TRY(args.Finish());

@@ -23,7 +23,7 @@ Outcome SwitchOffSources(const std::string& list, DemoOptions* o) {
   return Outcome::Ok();
 }
 
-Expected<int> RunDemoCommand(tools::Args& args, Context& ctx) {
+Expected<int> RunDemoCommand(args::Args& args, Context& ctx) {
   const auto seed = args.Integer("--seed");
   const auto report = args.Value("--report");
   const auto model = args.Value("--model");

@@ -5,7 +5,7 @@
 namespace volcomp::sim {
 namespace {
 
-Expected<int> RunNode(tools::Args& args, Context& ctx) {
+Expected<int> RunNode(args::Args& args, Context& ctx) {
   const auto port = args.Integer("--slcan-tcp");
   const auto iface = args.Value("--socketcan");
   const auto bitrate = args.Integer("--bitrate");

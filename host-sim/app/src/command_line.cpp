@@ -18,7 +18,7 @@ int RunSimCommandLine(const std::vector<std::string>& words, Context& ctx) {
   }
   for (const Command& c : Commands()) {
     if (words[0] != c.name) continue;
-    tools::Args args(std::vector<std::string>(words.begin() + 1, words.end()));
+    args::Args args(std::vector<std::string>(words.begin() + 1, words.end()));
     const Expected<int> code = c.run(args, ctx);
     if (code.ok()) return *code;
     ctx.err << "volcomp-sim " << c.name << ": " << code.error().message << "\n";

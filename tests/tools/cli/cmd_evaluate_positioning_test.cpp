@@ -108,7 +108,7 @@ TEST(MetrologyCli, EvaluatePositioningTextIsALayoutOfTheJson) {
   std::istringstream in;
   std::ostringstream out, err;
   cli::Context ctx{in, out, err};
-  tools::Args args({file, "--standard", "both"}, &c->options);
+  args::Args args({file, "--standard", "both"}, &c->options);
   const auto output = c->run(args, ctx);
   ASSERT_TRUE(output.ok());
   std::ostringstream relaid;

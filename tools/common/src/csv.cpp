@@ -140,11 +140,6 @@ void DetectDecimalMark(CsvMeta* meta, const std::vector<CsvRow>& rows) {
   }
 }
 
-template <typename T>
-T OrThrow(Expected<T> r) {
-  if (!r.ok()) throw InputError(r.error().message);
-  return std::move(r).value();
-}
 
 }  // namespace
 
@@ -225,16 +220,6 @@ Expected<std::optional<double>> CsvRow::OptionalNumber(const std::string& column
   if (!c || Trim(fields_[*c]).empty()) return std::optional<double>();
   VOLCOMP_TRY_ASSIGN(const double v, Number(*c));
   return std::optional<double>(v);
-}
-
-const std::string& CsvRow::text(const std::string& column) const {
-  return fields_[meta_->require(column)];
-}
-double CsvRow::number(std::size_t column) const { return OrThrow(Number(column)); }
-double CsvRow::number(const std::string& column) const { return OrThrow(Number(column)); }
-long long CsvRow::integer(const std::string& column) const { return OrThrow(Integer(column)); }
-std::optional<double> CsvRow::optional_number(const std::string& column) const {
-  return OrThrow(OptionalNumber(column));
 }
 
 template <typename T>
@@ -328,14 +313,6 @@ Expected<CsvTable> CsvTable::ReadString(const std::string& text, const std::stri
   return Read(s, source);
 }
 
-CsvTable CsvTable::Parse(std::istream& in, const std::string& source) {
-  return OrThrow(Read(in, source));
-}
-CsvTable CsvTable::ParseFile(const std::string& path) { return OrThrow(ReadFile(path)); }
-CsvTable CsvTable::ParseString(const std::string& text, const std::string& source) {
-  return OrThrow(ReadString(text, source));
-}
-
 std::optional<std::size_t> CsvMeta::find(const std::string& column) const {
   for (std::size_t i = 0; i < header.size(); ++i) {
     if (header[i] == column) return i;
@@ -351,12 +328,6 @@ Expected<std::size_t> CsvMeta::Require(const std::string& column) const {
 
 Failure CsvMeta::LineFailure(std::size_t line, const std::string& message) const {
   return Failure{Error::kInputInvalid, source + ":" + std::to_string(line) + ": " + message};
-}
-
-std::size_t CsvMeta::require(const std::string& column) const { return OrThrow(Require(column)); }
-
-InputError CsvMeta::error(std::size_t line, const std::string& message) const {
-  return InputError(LineFailure(line, message).message);
 }
 
 std::optional<std::string> CsvTable::first_of(const std::vector<std::string>& names) const {

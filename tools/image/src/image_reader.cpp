@@ -22,21 +22,9 @@ Expected<LoadedImage> LoadedImage::FromBytes(const std::vector<uint8_t>& bytes,
   return image;
 }
 
-LoadedImage::LoadedImage(const std::vector<uint8_t>& bytes, const std::string& source) {
-  auto r = FromBytes(bytes, source);
-  if (!r.ok()) throw tools::InputError(r.error().message);
-  *this = std::move(r).value();
-}
-
 Expected<LoadedImage> ReadImageFile(const std::string& path) {
   VOLCOMP_TRY_ASSIGN(const std::vector<uint8_t> bytes, tools::ReadFileBytes(path));
   return LoadedImage::FromBytes(bytes, path);
-}
-
-LoadedImage LoadImageFile(const std::string& path) {
-  auto r = ReadImageFile(path);
-  if (!r.ok()) throw tools::InputError(r.error().message);
-  return std::move(r).value();
 }
 
 BoardConfig BoardConfigFor(const table::TableView& view) {

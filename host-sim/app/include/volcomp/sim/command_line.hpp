@@ -1,5 +1,5 @@
 // The command layer of `volcomp-sim`: each command (src/cmd_*.cpp) declares its usage beside
-// itself, parses its options with tools::Args (the non-throwing API), calls the simulator's
+// itself, parses its options with args::Args (the non-throwing API), calls the simulator's
 // libraries, which return results, and prints as it goes on Context::out / err. It returns the
 // exit code of a run that completed (0, or 1 when a check failed) or a Failure, which
 // RunSimCommandLine prints as "volcomp-sim COMMAND: MESSAGE" and maps to the exit code: 2 for
@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "volcomp/hosted/expected.hpp"
-#include "volcomp/tools/args.hpp"
+#include "volcomp/args/args.hpp"
 
 namespace volcomp::sim {
 
@@ -24,7 +24,7 @@ struct Context {
 struct Command {
   const char* name;
   const char* usage;  // its lines of `volcomp-sim help`
-  Expected<int> (*run)(tools::Args& args, Context& ctx);
+  Expected<int> (*run)(args::Args& args, Context& ctx);
 };
 
 /// A usage failure (exit code 2).

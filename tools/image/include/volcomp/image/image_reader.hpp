@@ -1,6 +1,6 @@
 // Hosted image reading for the PC tool: load a file into aligned memory, validate it with the
 // firmware's parser, and evaluate corrections with the firmware's lookup code. Failures are
-// Expected (kIoError for files, kInputInvalid for images), except the TRANSITION forms marked.
+// Expected (kIoError for files, kInputInvalid for images).
 #pragma once
 
 #include <cstdint>
@@ -21,8 +21,6 @@ class LoadedImage {
   /// "SOURCE: invalid table image: TEXT (kName)".
   static Expected<LoadedImage> FromBytes(const std::vector<uint8_t>& bytes,
                                          const std::string& source);
-  /// TRANSITION: throws tools::InputError with that text; goes once every caller uses FromBytes.
-  LoadedImage(const std::vector<uint8_t>& bytes, const std::string& source);
   LoadedImage(LoadedImage&&) = default;
   LoadedImage& operator=(LoadedImage&&) = default;
   LoadedImage(const LoadedImage&) = delete;
@@ -40,8 +38,6 @@ class LoadedImage {
 
 /// Reads and validates the image file at `path` (kIoError when it cannot be read).
 Expected<LoadedImage> ReadImageFile(const std::string& path);
-/// TRANSITION: the throwing form of ReadImageFile (tools::InputError with its message).
-LoadedImage LoadImageFile(const std::string& path);
 
 /// A board configuration whose axes are exactly the image's (for tools and the simulator).
 BoardConfig BoardConfigFor(const table::TableView& view);

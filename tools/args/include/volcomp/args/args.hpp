@@ -1,7 +1,8 @@
-// Command-line options for the PC tool: `--name value`, `--name=value`, flags and positionals.
+// Command-line options of the command layers (`volcomp`, tools/cli; `volcomp-sim`, host-sim/app):
+// `--name value`, `--name=value`, flags and positionals. No library below them uses it.
 //
 // Every `volcomp` command declares its options in one table of OptionSpec rows
-// (tools/cli/commands.cpp). The same rows drive `volcomp help COMMAND` and this parser, so
+// (beside its code, tools/cli/cmd_*.cpp). The same rows drive `volcomp help COMMAND` and this parser, so
 // the help cannot disagree with what is parsed. With a table, Args classifies the words once:
 //   - a word naming a declared option is that option; a value option takes the next word as its
 //     value whatever it looks like (`--tool-offset-mm -1,2,3`, `--name -X-Y-Z`), or the text
@@ -9,8 +10,8 @@
 //   - `--` ends the options: every later word is a positional argument;
 //   - "-" (standard input) and every word that parses as a number (`-5000`, `-0.5`, `-1e3`,
 //     `-0x10`) are positional arguments;
-//   - any other word starting with '-' is an unknown option (UsageError naming it);
-//   - a non-repeatable option given twice is a UsageError;
+//   - any other word starting with '-' is an unknown option (a kUsage failure naming it);
+//   - a non-repeatable option given twice is a kUsage failure;
 //   - an absent option with a declared default yields that default, so the default shown by the
 //     help is the one in force.
 // Asking for an option the table does not declare is a programming error (a kInvalidArgument
@@ -28,19 +29,12 @@
 
 #include <cstddef>
 #include <optional>
-#include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "volcomp/hosted/expected.hpp"
 
-namespace volcomp::tools {
-
-/// TRANSITION: thrown by the lower-case (throwing) API below; goes with it.
-class UsageError : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
-};
+namespace volcomp::args {
 
 /// One option of a command, as parsed and as shown by `volcomp help COMMAND`.
 struct OptionSpec {
@@ -80,25 +74,6 @@ class Args {
   /// The first failure so far (classification included), or success.
   const Outcome& status() const { return status_; }
 
-  // TRANSITION: the throwing forms of the above (UsageError; std::logic_error for an undeclared
-  // option), for the commands not yet converted. Removed with them.
-
-  /// True when `name` (or `alias`) is present as a flag; consumes it.
-  bool flag(const std::string& name, const std::string& alias = "");
-  /// Value of `--name value` or `--name=value`; the declared default when absent (nullopt when
-  /// there is none); UsageError when the value is missing.
-  std::optional<std::string> value(const std::string& name, const std::string& alias = "");
-  /// Every value of a repeatable option, in order.
-  std::vector<std::string> values(const std::string& name);
-  /// Like value(), but throws UsageError when absent.
-  std::string required(const std::string& name, const std::string& alias = "");
-  /// Numeric option helpers (UsageError on a bad number).
-  std::optional<double> number(const std::string& name);
-  std::optional<long long> integer(const std::string& name);
-  /// Remaining non-option arguments, in order; consumes them.
-  std::vector<std::string> positionals();
-  /// Throws UsageError naming the first unconsumed argument.
-  void finish() const;
 
  private:
   enum class Kind { kPositional, kOption, kOptionValue, kEndOfOptions };
@@ -109,7 +84,6 @@ class Args {
   };
   const OptionSpec* Declared(const std::string& name, bool want_value);
   void Record(Error code, const std::string& message);
-  void ThrowIfFailed() const;
   std::vector<std::size_t> Occurrences(const OptionSpec& o) const;
   bool AfterEnd(std::size_t i) const { return i > end_of_options_; }
 
@@ -124,4 +98,4 @@ class Args {
 /// True for a word that parses as a number (a value, never an option), e.g. "-5000".
 bool IsNumberWord(const std::string& word);
 
-}  // namespace volcomp::tools
+}  // namespace volcomp::args

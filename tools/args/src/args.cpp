@@ -1,12 +1,12 @@
 // Command-line option parsing.
-#include "volcomp/tools/args.hpp"
+#include "volcomp/args/args.hpp"
 
 #include <cerrno>
 #include <cstdlib>
 
-#include "volcomp/tools/csv.hpp"
+#include "volcomp/tools/csv.hpp"  // ParseDouble, ParseInteger
 
-namespace volcomp::tools {
+namespace volcomp::args {
 namespace {
 
 bool Matches(const std::string& arg, const std::string& name, const std::string& alias) {
@@ -20,7 +20,7 @@ bool IsOptionName(const OptionSpec& o, const std::string& word) {
 }  // namespace
 
 bool IsNumberWord(const std::string& word) {
-  if (ParseDouble(word)) return true;
+  if (tools::ParseDouble(word)) return true;
   // Integers in any base strtoll accepts ("-0x10", "0755"), as `sdo write` values are.
   if (word.empty()) return false;
   errno = 0;
@@ -31,12 +31,6 @@ bool IsNumberWord(const std::string& word) {
 
 void Args::Record(Error code, const std::string& message) {
   if (status_.ok()) status_ = Fail(code, message);
-}
-
-void Args::ThrowIfFailed() const {
-  if (status_.ok()) return;
-  if (status_.error().code == Error::kUsage) throw UsageError(status_.error().message);
-  throw std::logic_error(status_.error().message);
 }
 
 Args::Args(std::vector<std::string> args) : args_(std::move(args)), used_(args_.size()) {
@@ -209,7 +203,7 @@ std::string Args::Required(const std::string& name, const std::string& alias) {
 std::optional<double> Args::Number(const std::string& name) {
   auto v = Value(name);
   if (!v) return std::nullopt;
-  auto d = ParseDouble(*v);
+  auto d = tools::ParseDouble(*v);
   if (!d) Record(Error::kUsage, "option " + name + ": \"" + *v + "\" is not a number");
   return d;
 }
@@ -217,7 +211,7 @@ std::optional<double> Args::Number(const std::string& name) {
 std::optional<long long> Args::Integer(const std::string& name) {
   auto v = Value(name);
   if (!v) return std::nullopt;
-  auto d = ParseInteger(*v);
+  auto d = tools::ParseInteger(*v);
   if (!d) Record(Error::kUsage, "option " + name + ": \"" + *v + "\" is not an integer");
   return d;
 }
@@ -250,41 +244,4 @@ Outcome Args::Finish() const {
   return Outcome::Ok();
 }
 
-// TRANSITION: the throwing API.
-bool Args::flag(const std::string& name, const std::string& alias) {
-  const bool r = Flag(name, alias);
-  ThrowIfFailed();
-  return r;
-}
-std::optional<std::string> Args::value(const std::string& name, const std::string& alias) {
-  auto r = Value(name, alias);
-  ThrowIfFailed();
-  return r;
-}
-std::vector<std::string> Args::values(const std::string& name) {
-  auto r = Values(name);
-  ThrowIfFailed();
-  return r;
-}
-std::string Args::required(const std::string& name, const std::string& alias) {
-  auto r = Required(name, alias);
-  ThrowIfFailed();
-  return r;
-}
-std::optional<double> Args::number(const std::string& name) {
-  auto r = Number(name);
-  ThrowIfFailed();
-  return r;
-}
-std::optional<long long> Args::integer(const std::string& name) {
-  auto r = Integer(name);
-  ThrowIfFailed();
-  return r;
-}
-std::vector<std::string> Args::positionals() { return Positionals(); }
-void Args::finish() const {
-  const Outcome r = Finish();
-  if (!r.ok()) throw UsageError(r.error().message);
-}
-
-}  // namespace volcomp::tools
+}  // namespace volcomp::args
