@@ -114,8 +114,8 @@ JsonValue InspectData(const std::string& file, const table::TableView& v) {
 void InspectText(const JsonValue& d, std::ostream& out) {
   out << d.get("file")->string << ": valid volcomp table image, format "
       << d.get("format_version")->string << ", " << d.get("image_size")->integer
-      << " bytes, CRC-32 " << d.get("crc32")->string << ", table id "
-      << d.get("table_id")->integer << "\n";
+      << " bytes, CRC-32 " << d.get("crc32")->string << ", table id " << d.get("table_id")->integer
+      << "\n";
   out << "axes:";
   for (const JsonValue& a : d.get("axes")->array) {
     const bool rotary = a.get("kind")->string == "rotary";
@@ -130,13 +130,13 @@ void InspectText(const JsonValue& d, std::ostream& out) {
         << dims[2].get("nodes")->integer << " nodes\n";
     for (const JsonValue& x : dims) {
       char line[256];
-      std::snprintf(line, sizeof line,
-                    "  %s: from %.6g to %.6g %s every %.6g (%d steps), correction %.4g .. %.4g %s\n",
-                    x.get("axis")->string.c_str(), x.get("from")->number, x.get("to")->number,
-                    x.get("position_unit")->string.c_str(), x.get("spacing")->number,
-                    static_cast<int>(x.get("spacing_steps")->integer),
-                    x.get("correction_min")->number, x.get("correction_max")->number,
-                    x.get("correction_unit")->string.c_str());
+      std::snprintf(
+          line, sizeof line,
+          "  %s: from %.6g to %.6g %s every %.6g (%d steps), correction %.4g .. %.4g %s\n",
+          x.get("axis")->string.c_str(), x.get("from")->number, x.get("to")->number,
+          x.get("position_unit")->string.c_str(), x.get("spacing")->number,
+          static_cast<int>(x.get("spacing_steps")->integer), x.get("correction_min")->number,
+          x.get("correction_max")->number, x.get("correction_unit")->string.c_str());
       out << line;
     }
   }

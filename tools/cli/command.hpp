@@ -16,7 +16,8 @@
 //     VOLCOMP_TRY_ASSIGN(const auto image, image::ReadImageFile(files[0]));
 //     return Output{InspectData(files[0], image), InspectText};
 //   }
-//   extern const Command kInspect{"inspect", "summarise a table image", "IMAGE", {...}, RunInspect};
+//   extern const Command kInspect{"inspect", "summarise a table image", "IMAGE", {...},
+//   RunInspect};
 #pragma once
 
 #include <iosfwd>
@@ -24,16 +25,16 @@
 #include <utility>
 #include <vector>
 
-#include "volcomp/hosted/expected.hpp"
 #include "volcomp/args/args.hpp"
+#include "volcomp/hosted/expected.hpp"
 #include "volcomp/tools/exit_codes.hpp"
 #include "volcomp/tools/json_value.hpp"
 
 namespace volcomp::cli {
 
 using args::Args;
-using tools::JsonValue;
 using args::OptionSpec;
+using tools::JsonValue;
 
 /// Where a command reads and writes (std::cin/cout/cerr in the tool; string streams in tests).
 struct Context {
@@ -49,7 +50,9 @@ using TextLayout = void (*)(const JsonValue& data, std::ostream& out);
 /// What a command reports.
 struct Output {
   Output() = default;
-  Output(JsonValue d, TextLayout layout = nullptr, std::vector<std::string> w = {},  // NOLINT
+  Output(JsonValue d,
+         TextLayout layout = nullptr,
+         std::vector<std::string> w = {},  // NOLINT
          int code = tools::kExitOk)
       : data(std::move(d)), text(layout), warnings(std::move(w)), exit_code(code) {}
 

@@ -112,8 +112,8 @@ Expected<std::vector<builders::AxisSection>> MeasureAxisTables(Session& s, DemoR
 // force (`in_force`, its image), and the GRID3 section that replaces that table's
 // (GridOfImage, TrackerLatticeThroughGridSource, BuildGridSection).
 Expected<builders::GridSection> MeasureTrackerLattice(Session& s,
-                                                   DemoResult& r,
-                                                   const std::vector<uint8_t>& in_force);
+                                                      DemoResult& r,
+                                                      const std::vector<uint8_t>& in_force);
 // The error budget of the last phase and the goals of the worn profile.
 void EvaluateWornGoals(Session& s, DemoResult& r, size_t first_check_of_last_table);
 

@@ -122,8 +122,8 @@ Expected<std::vector<builders::AxisSection>> MeasureAxisTables(Session& s, DemoR
 }
 
 Expected<builders::GridSection> MeasureTrackerLattice(Session& s,
-                                                   DemoResult& r,
-                                                   const std::vector<uint8_t>& in_force) {
+                                                      DemoResult& r,
+                                                      const std::vector<uint8_t>& in_force) {
   const auto t0 = Clock::now();
   const double machine_t0 = s.world.machine().time_s();
   const double h = s.o.lattice_spacing_mm;

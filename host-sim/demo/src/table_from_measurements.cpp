@@ -7,11 +7,11 @@
 
 #include "volcomp/base/byte_order.hpp"
 #include "volcomp/builders/grid_section.hpp"
+#include "volcomp/builders/grid_source.hpp"
 #include "volcomp/builders/image_glue.hpp"
+#include "volcomp/builders/image_grid.hpp"
 #include "volcomp/image/image_builder.hpp"
 #include "volcomp/image/image_reader.hpp"
-#include "volcomp/builders/grid_source.hpp"
-#include "volcomp/builders/image_grid.hpp"
 
 namespace volcomp::sim {
 
@@ -112,10 +112,10 @@ Expected<TableBuildResult> AssembleTable(const std::optional<builders::GridSecti
 }
 
 Expected<builders::GridSection> BuildModelGridSection(const model::Model& measured,
-                                                   const std::array<double, 3>& lo_mm,
-                                                   const std::array<double, 3>& hi_mm,
-                                                   const std::array<double, 3>& spacing_mm,
-                                                   const std::array<double, 3>& step_mm) {
+                                                      const std::array<double, 3>& lo_mm,
+                                                      const std::array<double, 3>& hi_mm,
+                                                      const std::array<double, 3>& spacing_mm,
+                                                      const std::array<double, 3>& step_mm) {
   return builders::BuildGridSection(LatticeOptions(lo_mm, hi_mm, spacing_mm, step_mm),
                                     ImageAxes(step_mm), builders::ModelGridSource(measured));
 }
@@ -135,9 +135,9 @@ Expected<TableBuildResult> BuildTableImage(const model::Model& measured,
 }
 
 Expected<builders::AxisSection> BuildAxisTable(const model::PositioningData& deviations,
-                                            int axis,
-                                            double spacing_mm,
-                                            const std::array<double, 3>& step_mm) {
+                                               int axis,
+                                               double spacing_mm,
+                                               const std::array<double, 3>& step_mm) {
   builders::Axis1dOptions o;
   o.reverse = builders::ReverseMode::kTables;
   o.spacing = spacing_mm;

@@ -4,7 +4,6 @@
 
 #include <gtest/gtest.h>
 
-
 namespace volcomp::args {
 namespace {
 
@@ -122,5 +121,3 @@ TEST(Args, AskingForAnUndeclaredOptionIsAProgrammingError) {
 
 }  // namespace
 }  // namespace volcomp::args
-
-

@@ -72,7 +72,8 @@ Args::Args(std::vector<std::string> args, const std::vector<OptionSpec>* spec)
     words_[i].kind = Kind::kOption;
     words_[i].option = k;
     if (o.value == nullptr) {
-      if (eq != std::string::npos) Record(Error::kUsage, std::string("option ") + o.name + " takes no value");
+      if (eq != std::string::npos)
+        Record(Error::kUsage, std::string("option ") + o.name + " takes no value");
       continue;
     }
     if (eq != std::string::npos) {
@@ -92,9 +93,9 @@ const OptionSpec* Args::Declared(const std::string& name, bool want_value) {
   for (const OptionSpec& o : *spec_) {
     if (!IsOptionName(o, name)) continue;
     if ((o.value != nullptr) != want_value) {
-      Record(Error::kInvalidArgument,
-             "option " + name +
-                 (want_value ? " is declared as a flag" : " is declared with a value"));
+      Record(
+          Error::kInvalidArgument,
+          "option " + name + (want_value ? " is declared as a flag" : " is declared with a value"));
       return nullptr;
     }
     return &o;

@@ -10,7 +10,9 @@
 namespace volcomp::tools {
 namespace {
 
-bool IsBlank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\n' || c == '\f' || c == '\v'; }
+bool IsBlank(char c) {
+  return c == ' ' || c == '\t' || c == '\r' || c == '\n' || c == '\f' || c == '\v';
+}
 bool IsDigit(char c) { return c >= '0' && c <= '9'; }
 bool IsAlpha(char c) { return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z'); }
 bool IsWordChar(char c) { return IsAlpha(c) || IsDigit(c) || c == '_'; }
@@ -140,7 +142,6 @@ void DetectDecimalMark(CsvMeta* meta, const std::vector<CsvRow>& rows) {
   }
 }
 
-
 }  // namespace
 
 std::optional<double> ParseDouble(const std::string& text) {
@@ -174,11 +175,11 @@ Expected<double> CsvRow::Number(std::size_t column) const {
   const std::string& name = meta_->header[column];
   std::optional<double> v;
   if (meta_->decimal_comma && IsDecimalPointNumber(field)) {
-    return Fail(meta_->LineFailure(line_, "column \"" + name + "\": \"" + field +
-                                        "\" has a decimal point, but this file writes decimal "
-                                        "commas (line " +
-                                        std::to_string(meta_->decimal_line) +
-                                        "); use one decimal mark throughout"));
+    return Fail(meta_->LineFailure(
+        line_, "column \"" + name + "\": \"" + field +
+                   "\" has a decimal point, but this file writes decimal "
+                   "commas (line " +
+                   std::to_string(meta_->decimal_line) + "); use one decimal mark throughout"));
   }
   if (meta_->decimal_comma && IsDecimalCommaNumber(field)) {
     std::string dotted = field;
@@ -188,14 +189,15 @@ Expected<double> CsvRow::Number(std::size_t column) const {
     v = ParseDouble(field);
   }
   if (!v && meta_->separator != ',' && !meta_->decimal_comma && IsDecimalCommaNumber(field)) {
-    return Fail(meta_->LineFailure(line_, "column \"" + name + "\": \"" + field +
-                                        "\" has a decimal comma, but this file writes decimal "
-                                        "points (line " +
-                                        std::to_string(meta_->decimal_line) +
-                                        "); use one decimal mark throughout"));
+    return Fail(meta_->LineFailure(
+        line_, "column \"" + name + "\": \"" + field +
+                   "\" has a decimal comma, but this file writes decimal "
+                   "points (line " +
+                   std::to_string(meta_->decimal_line) + "); use one decimal mark throughout"));
   }
   if (!v) {
-    return Fail(meta_->LineFailure(line_, "column \"" + name + "\": \"" + field + "\" is not a number"));
+    return Fail(
+        meta_->LineFailure(line_, "column \"" + name + "\": \"" + field + "\" is not a number"));
   }
   return *v;
 }
@@ -209,8 +211,8 @@ Expected<long long> CsvRow::Integer(const std::string& column) const {
   VOLCOMP_TRY_ASSIGN(const std::size_t c, meta_->Require(column));
   const auto v = ParseInteger(fields_[c]);
   if (!v) {
-    return Fail(meta_->LineFailure(line_, "column \"" + column + "\": \"" + fields_[c] +
-                                        "\" is not an integer"));
+    return Fail(meta_->LineFailure(
+        line_, "column \"" + column + "\": \"" + fields_[c] + "\" is not an integer"));
   }
   return *v;
 }
@@ -234,9 +236,7 @@ T CsvFields::Take(Expected<T> r, T fallback) {
 
 double CsvFields::Number(const std::string& column) { return Take(row_.Number(column), 0.0); }
 double CsvFields::Number(std::size_t column) { return Take(row_.Number(column), 0.0); }
-long long CsvFields::Integer(const std::string& column) {
-  return Take(row_.Integer(column), 0LL);
-}
+long long CsvFields::Integer(const std::string& column) { return Take(row_.Integer(column), 0LL); }
 std::optional<double> CsvFields::OptionalNumber(const std::string& column) {
   return Take(row_.OptionalNumber(column), std::optional<double>());
 }
@@ -275,17 +275,19 @@ Expected<CsvTable> CsvTable::Read(std::istream& in, const std::string& source) {
         }
         for (std::size_t j = 0; j < i; ++j) {
           if (meta->header[i] == meta->header[j]) {
-            return Fail(meta->LineFailure(line_no, "column \"" + meta->header[i] +
-                                                 "\" appears twice in header"));
+            return Fail(meta->LineFailure(
+                line_no, "column \"" + meta->header[i] + "\" appears twice in header"));
           }
         }
       }
       continue;
     }
-    if (!SplitLine(line, sep, &fields)) return Fail(meta->LineFailure(line_no, "unterminated quote"));
+    if (!SplitLine(line, sep, &fields))
+      return Fail(meta->LineFailure(line_no, "unterminated quote"));
     if (fields.size() != meta->header.size()) {
       return Fail(meta->LineFailure(line_no, "expected " + std::to_string(meta->header.size()) +
-                                           " fields, found " + std::to_string(fields.size())));
+                                                 " fields, found " +
+                                                 std::to_string(fields.size())));
     }
     CsvRow row;
     row.meta_ = meta;

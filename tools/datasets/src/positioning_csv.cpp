@@ -23,7 +23,8 @@ Expected<model::PositioningData> PositioningFromCsv(const CsvTable& csv,
   model::PositioningData d;
   if (!csv.find("position_mm") && !csv.find("position_deg") &&
       metrology::HoldsPositioningReadings(csv)) {
-    VOLCOMP_TRY_ASSIGN(const metrology::MeanDeviations m, metrology::MeanDeviationsFromCsv(csv, grouping));
+    VOLCOMP_TRY_ASSIGN(const metrology::MeanDeviations m,
+                       metrology::MeanDeviationsFromCsv(csv, grouping));
     d.rotary = m.kind == metrology::AxisKind::kRotary;
     d.position = m.target;
     d.dev_forward = m.mean_up;

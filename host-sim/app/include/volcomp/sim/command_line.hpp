@@ -10,8 +10,8 @@
 #include <string>
 #include <vector>
 
-#include "volcomp/hosted/expected.hpp"
 #include "volcomp/args/args.hpp"
+#include "volcomp/hosted/expected.hpp"
 
 namespace volcomp::sim {
 

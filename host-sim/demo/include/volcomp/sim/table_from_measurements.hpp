@@ -14,9 +14,9 @@
 #include <string>
 #include <vector>
 
-#include "volcomp/hosted/expected.hpp"
 #include "volcomp/builders/axis_section.hpp"
 #include "volcomp/builders/grid_section.hpp"
+#include "volcomp/hosted/expected.hpp"
 #include "volcomp/model/rigid_body.hpp"
 #include "volcomp/model/tracker_lattice.hpp"
 #include "volcomp/sim/measurements.hpp"
@@ -66,10 +66,10 @@ Expected<TableBuildResult> AssembleTable(const std::optional<builders::GridSecti
 /// The GRID3 section of the measured model over [lo, hi] (mm) with the given node spacing (mm)
 /// for axes of `step_mm` per step (ModelGridSource, BuildGridSection).
 Expected<builders::GridSection> BuildModelGridSection(const model::Model& measured,
-                                                   const std::array<double, 3>& lo_mm,
-                                                   const std::array<double, 3>& hi_mm,
-                                                   const std::array<double, 3>& spacing_mm,
-                                                   const std::array<double, 3>& step_mm);
+                                                      const std::array<double, 3>& lo_mm,
+                                                      const std::array<double, 3>& hi_mm,
+                                                      const std::array<double, 3>& spacing_mm,
+                                                      const std::array<double, 3>& step_mm);
 
 /// The GRID3 image of the measured model (BuildModelGridSection, then AssembleTable).
 Expected<TableBuildResult> BuildTableImage(const model::Model& measured,
@@ -82,9 +82,9 @@ Expected<TableBuildResult> BuildTableImage(const model::Model& measured,
 /// The AXIS1D section of `axis` (0..2) from mean deviations per target, with forward and reverse
 /// tables at `spacing_mm` (`volcomp build axis --reverse tables`, BuildAxisSection).
 Expected<builders::AxisSection> BuildAxisTable(const model::PositioningData& deviations,
-                                            int axis,
-                                            double spacing_mm,
-                                            const std::array<double, 3>& step_mm);
+                                               int axis,
+                                               double spacing_mm,
+                                               const std::array<double, 3>& step_mm);
 
 /// The GRID3 section from tracker readings at the nodes of a lattice, measured through the table
 /// in force (`in_force`, its image), composed with that table's GRID3

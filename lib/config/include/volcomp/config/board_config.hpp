@@ -6,8 +6,8 @@
 
 #include <cstdint>
 
-#include "volcomp/limiter/correction_limiter.hpp"
 #include "volcomp/base/status.hpp"
+#include "volcomp/limiter/correction_limiter.hpp"
 #include "volcomp/table/table_format.hpp"
 #include "volcomp/table/table_image.hpp"
 

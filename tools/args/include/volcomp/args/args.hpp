@@ -2,8 +2,9 @@
 // `--name value`, `--name=value`, flags and positionals. No library below them uses it.
 //
 // Every `volcomp` command declares its options in one table of OptionSpec rows
-// (beside its code, tools/cli/cmd_*.cpp). The same rows drive `volcomp help COMMAND` and this parser, so
-// the help cannot disagree with what is parsed. With a table, Args classifies the words once:
+// (beside its code, tools/cli/cmd_*.cpp). The same rows drive `volcomp help COMMAND` and this
+// parser, so the help cannot disagree with what is parsed. With a table, Args classifies the words
+// once:
 //   - a word naming a declared option is that option; a value option takes the next word as its
 //     value whatever it looks like (`--tool-offset-mm -1,2,3`, `--name -X-Y-Z`), or the text
 //     after '=' (`--name=-X-Y-Z`); a flag takes no value;
@@ -73,7 +74,6 @@ class Args {
   Outcome Finish() const;
   /// The first failure so far (classification included), or success.
   const Outcome& status() const { return status_; }
-
 
  private:
   enum class Kind { kPositional, kOption, kOptionValue, kEndOfOptions };
