@@ -114,7 +114,7 @@ TEST(Eds, DefaultsAreWhatAFreshBoardReports) {
     ++compared;
   }
   // 0x1015, 0x1017 and 0x2121, 0x2000 sub 0-4, 15 axis arrays.
-  EXPECT_EQ(compared, 3 + 5 + 15 * 7);
+  EXPECT_EQ(compared, 3 + 5 + 16 * 7);
   EXPECT_EQ(default_of(0x1015, 0), "0x0064");  // EMCY inhibit time 10 ms (100 x 100 us)
 }
 

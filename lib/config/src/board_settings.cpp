@@ -6,7 +6,10 @@
 namespace volcomp {
 namespace {
 constexpr uint32_t kMagic = 0x47464356;  // "VCFG"
-constexpr uint16_t kVersion = 2;         // 2: the EMCY inhibit time in the slot after the heartbeat
+// 2: the EMCY inhibit time in the slot after the heartbeat; 3: each axis's direction hysteresis
+// in its reserved 16-bit slot (older records: the default).
+constexpr uint16_t kVersion = 3;
+constexpr uint16_t kVersionWithoutHysteresis = 2;
 constexpr uint16_t kVersionWithoutInhibit = 1;
 
 class Writer {
@@ -85,7 +88,7 @@ void SerializeSettings(const BoardSettings& s, uint8_t* out) {
     w.U8(static_cast<uint8_t>(x.output_format));
     w.U8(x.invert_input_dir ? 1 : 0);
     w.U8(x.input_counter_bits);
-    w.U16(0);
+    w.U16(x.direction_hysteresis_steps);
     w.U32(x.resolution_e9);
     w.U32(x.drive.pulse_width_ns);
     w.U32(x.drive.step_space_ns);
@@ -108,7 +111,9 @@ Status DeserializeSettings(const uint8_t* in, uint32_t size, BoardSettings* out)
   Reader r(in);
   if (r.U32() != kMagic) return Error::kConfigInvalid;
   const uint16_t version = r.U16();
-  if ((version != kVersion && version != kVersionWithoutInhibit) || r.U16() != kSettingsBytes) {
+  if ((version != kVersion && version != kVersionWithoutHysteresis &&
+       version != kVersionWithoutInhibit) ||
+      r.U16() != kSettingsBytes) {
     return Error::kConfigInvalid;
   }
   BoardSettings s;
@@ -117,7 +122,7 @@ Status DeserializeSettings(const uint8_t* in, uint32_t size, BoardSettings* out)
   s.bitrate_kbit = r.U16();
   s.heartbeat_ms = r.U16();
   const uint16_t inhibit = r.U16();
-  if (version == kVersion) s.emcy_inhibit_100us = inhibit;
+  if (version != kVersionWithoutInhibit) s.emcy_inhibit_100us = inhibit;
   s.board.tick_hz = r.U32();
   s.board.pulse_clock_hz = r.U32();
   for (uint32_t a = 0; a < table::kMaxAxes; ++a) {
@@ -128,7 +133,8 @@ Status DeserializeSettings(const uint8_t* in, uint32_t size, BoardSettings* out)
     x.output_format = static_cast<PulseFormat>(r.U8());
     x.invert_input_dir = r.U8() != 0;
     x.input_counter_bits = r.U8();
-    r.U16();
+    const uint16_t hysteresis = r.U16();
+    if (version == kVersion) x.direction_hysteresis_steps = hysteresis;
     x.resolution_e9 = r.U32();
     x.drive.pulse_width_ns = r.U32();
     x.drive.step_space_ns = r.U32();

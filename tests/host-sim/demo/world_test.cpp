@@ -168,12 +168,12 @@ TEST(SimWorld, TableOverTheBusThenCompensatedMotionLosesNothing) {
   }
 }
 
-// The board takes an axis's AXIS1D direction from its commanded motion. Where the GRID3 moves an
-// axis whose command stands still (here Y's correction grows with X, like a squareness error),
-// the drive can reverse without a reversal of the command: the machine's lost motion is then
-// taken up with nothing to compensate it. Outside truth: the carriage positions of the machine's
-// play operator (20 µm dead band on Y).
-TEST(SimWorld, CorrectionDrivenReversalIsNotBacklashCompensated) {
+// The board takes an axis's AXIS1D direction from the motion of its drive, not of its command.
+// Where the GRID3 moves an axis whose command stands still (here Y's correction grows with X,
+// like a squareness error), the drive reverses without a reversal of the command, the machine's
+// lost motion is taken up, and the reverse table compensates it. Outside truth: the carriage
+// positions of the machine's play operator (20 µm dead band on Y, 1 µm steps).
+TEST(SimWorld, CorrectionDrivenReversalIsBacklashCompensated) {
   WorldOptions wo = Options();
   wo.machine.wear.lost_motion = true;
   wo.machine.wear.lost_motion_um = {0, 20, 0};
@@ -236,8 +236,9 @@ TEST(SimWorld, CorrectionDrivenReversalIsNotBacklashCompensated) {
   w.cnc().QueueRapid({0, 100000, 0});  // X back: Y's drive reverses by 300 µm, command still
   ASSERT_TRUE(w.RunUntilCncIdle(10000000000ull));
   w.RunFor(20000000);
-  // The dead band is taken up and not compensated: Y is off by the full 20 µm.
-  EXPECT_NEAR(carriage_y_um(), forward + 20, 1.0);
+  // The dead band is taken up and compensated by the reverse table: Y is where it was before X
+  // went out, within a step (without it, off by the full 20 µm).
+  EXPECT_NEAR(carriage_y_um(), forward, 1.0);
   EXPECT_TRUE(w.CheckAtRest());
 }
 

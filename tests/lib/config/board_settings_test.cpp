@@ -17,7 +17,7 @@ TEST(SettingsRecord, KeepsTheEmcyInhibitTimeAndReadsVersion1Records) {
   s.emcy_inhibit_100us = 37;
   uint8_t rec[kSettingsBytes];
   SerializeSettings(s, rec);
-  EXPECT_EQ(rec[4], 2);  // version, LE16 at 4
+  EXPECT_EQ(rec[4], 3);  // version, LE16 at 4
   EXPECT_EQ(rec[5], 0);
   EXPECT_EQ(rec[12], 0x23);  // heartbeat LE16 at 12
   EXPECT_EQ(rec[13], 0x01);
@@ -31,8 +31,27 @@ TEST(SettingsRecord, KeepsTheEmcyInhibitTimeAndReadsVersion1Records) {
   ASSERT_TRUE(DeserializeSettings(rec, sizeof rec, &back).ok());
   EXPECT_EQ(back.emcy_inhibit_100us, 100);  // the default, 10 ms
   EXPECT_EQ(back.heartbeat_ms, 0x0123);
-  rec[4] = 3;
+  rec[4] = 4;
   EXPECT_FALSE(DeserializeSettings(rec, sizeof rec, &back).ok());
+}
+
+// Version 3 keeps each axis's direction hysteresis in the 16-bit slot after the input counter
+// width (axis records of 64 bytes from offset 24); a version-2 record (slot reserved, 0) gives
+// the default of 1 step, not 0.
+TEST(SettingsRecord, KeepsTheDirectionHysteresisAndReadsVersion2Records) {
+  BoardSettings s;
+  s.board.axis[1].direction_hysteresis_steps = 0x0203;
+  uint8_t rec[kSettingsBytes];
+  SerializeSettings(s, rec);
+  EXPECT_EQ(rec[24 + 64 + 6], 0x03);
+  EXPECT_EQ(rec[24 + 64 + 7], 0x02);
+  BoardSettings back;
+  ASSERT_TRUE(DeserializeSettings(rec, sizeof rec, &back).ok());
+  EXPECT_EQ(back.board.axis[1].direction_hysteresis_steps, 0x0203);
+  rec[4] = 2;
+  rec[24 + 64 + 6] = rec[24 + 64 + 7] = 0;
+  ASSERT_TRUE(DeserializeSettings(rec, sizeof rec, &back).ok());
+  EXPECT_EQ(back.board.axis[1].direction_hysteresis_steps, 1);
 }
 
 TEST(SettingsRecord, EveryFieldRoundTripsAndARecordOnlyCountsWhenValid) {
@@ -50,6 +69,7 @@ TEST(SettingsRecord, EveryFieldRoundTripsAndARecordOnlyCountsWhenValid) {
   s.board.axis[0].max_input_rate_hz = 100000;
   s.board.axis[2].home_position_steps = -5000;
   s.board.axis[1].drive.dir_hold_ns = 12345;
+  s.board.axis[2].direction_hysteresis_steps = 7;
   ASSERT_TRUE(ValidateSettings(s).ok());
   uint8_t rec[kSettingsBytes];
   SerializeSettings(s, rec);
@@ -61,6 +81,7 @@ TEST(SettingsRecord, EveryFieldRoundTripsAndARecordOnlyCountsWhenValid) {
   EXPECT_EQ(back.board.axis[3].kind, table::AxisKind::kRotary);
   EXPECT_TRUE(back.board.axis[0].invert_input_dir);
   EXPECT_EQ(back.board.axis[2].home_position_steps, -5000);
+  EXPECT_EQ(back.board.axis[2].direction_hysteresis_steps, 7);
   // Short, or out of range (node-ID 0): not taken; *s untouched.
   BoardSettings untouched;
   EXPECT_FALSE(DeserializeSettings(rec, kSettingsBytes - 1, &untouched).ok());
