@@ -6,7 +6,6 @@
 #include "volcomp/firmware/gateway_app.hpp"
 
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <array>
 #include <cmath>
@@ -16,6 +15,7 @@
 #include <vector>
 
 #include "csp_drives.hpp"
+#include "temp_paths.hpp"
 #include "test_tables.hpp"
 #include "volcomp/canopen/board_protocol.hpp"
 #include "volcomp/canopen/object_dictionary.hpp"
@@ -404,18 +404,8 @@ TEST(GatewayAppMappingTest, StepPulseTimingDoesNotConcernTheGateway) {
 
 // Tables live in files (hal/linux FileFlash): a new process finds the active table.
 TEST(GatewayAppFilesTest, ActiveTableSurvivesARestart) {
-  struct TempDir {  // removed whatever the test's outcome
-    std::string path;
-    TempDir() {
-      char t[] = "/tmp/volcomp-gw-test.XXXXXX";
-      path = mkdtemp(t) != nullptr ? t : "/tmp";
-    }
-    ~TempDir() {
-      std::remove((path + "/tables.bin").c_str());
-      rmdir(path.c_str());
-    }
-  } temp;
-  const std::string dir = temp.path;
+  const volcomp::testing::ScratchDir temp("gateway_test");
+  const std::string dir = temp.path();
   hal::linux_board::FileFlash::Options fo;
   fo.size = 2 * 128 * 1024;
   fo.sector_size = 4096;
