@@ -169,9 +169,8 @@ class Machine {
     return c.result();
   }
   TransferResult Write(ObjectId id, uint32_t value) {
-    const auto& e = canopen::Entry(id);
     SdoClient c(kNode);
-    c.StartWrite(e.index, e.sub, canopen_client::NumericPayload(id, value));
+    canopen_client::StartNumericWrite(c, id, value);
     return Run(c);
   }
   TransferResult Upload(const testing::AlignedBytes& img) {
@@ -255,11 +254,9 @@ TEST_F(GatewayAppTest, UploadReferenceActivateAndCorrectEveryCycle) {
     m_.target_[1] += 50;
     m_.Cycle();
   }
-  const canopen::ObjectEntry& control = canopen::Entry(ObjectId::kTableControl);
   SdoClient c(kNode);
-  c.StartWrite(control.index, control.sub,
-               canopen_client::NumericPayload(ObjectId::kTableControl,
-                                              canopen::Value(canopen::TableCommand::kActivate)));
+  canopen_client::StartNumericWrite(c, ObjectId::kTableControl,
+                                    canopen::Value(canopen::TableCommand::kActivate));
   for (int i = 0; i < 5; ++i) m_.target_[1] += 50, m_.Cycle();
   r = m_.Run(c);
   EXPECT_FALSE(r.ok());
