@@ -6,7 +6,6 @@
 #include "volcomp/firmware/gateway_app.hpp"
 
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <array>
 #include <cmath>
@@ -16,6 +15,7 @@
 #include <vector>
 
 #include "csp_drives.hpp"
+#include "temp_paths.hpp"
 #include "test_tables.hpp"
 #include "volcomp/canopen/board_protocol.hpp"
 #include "volcomp/canopen/object_dictionary.hpp"
@@ -169,9 +169,8 @@ class Machine {
     return c.result();
   }
   TransferResult Write(ObjectId id, uint32_t value) {
-    const auto& e = canopen::Entry(id);
     SdoClient c(kNode);
-    c.StartWrite(e.index, e.sub, canopen_client::NumericPayload(id, value));
+    canopen_client::StartNumericWrite(c, id, value);
     return Run(c);
   }
   TransferResult Upload(const testing::AlignedBytes& img) {
@@ -255,11 +254,9 @@ TEST_F(GatewayAppTest, UploadReferenceActivateAndCorrectEveryCycle) {
     m_.target_[1] += 50;
     m_.Cycle();
   }
-  const canopen::ObjectEntry& control = canopen::Entry(ObjectId::kTableControl);
   SdoClient c(kNode);
-  c.StartWrite(control.index, control.sub,
-               canopen_client::NumericPayload(ObjectId::kTableControl,
-                                              canopen::Value(canopen::TableCommand::kActivate)));
+  canopen_client::StartNumericWrite(c, ObjectId::kTableControl,
+                                    canopen::Value(canopen::TableCommand::kActivate));
   for (int i = 0; i < 5; ++i) m_.target_[1] += 50, m_.Cycle();
   r = m_.Run(c);
   EXPECT_FALSE(r.ok());
@@ -404,18 +401,8 @@ TEST(GatewayAppMappingTest, StepPulseTimingDoesNotConcernTheGateway) {
 
 // Tables live in files (hal/linux FileFlash): a new process finds the active table.
 TEST(GatewayAppFilesTest, ActiveTableSurvivesARestart) {
-  struct TempDir {  // removed whatever the test's outcome
-    std::string path;
-    TempDir() {
-      char t[] = "/tmp/volcomp-gw-test.XXXXXX";
-      path = mkdtemp(t) != nullptr ? t : "/tmp";
-    }
-    ~TempDir() {
-      std::remove((path + "/tables.bin").c_str());
-      rmdir(path.c_str());
-    }
-  } temp;
-  const std::string dir = temp.path;
+  const volcomp::testing::ScratchDir temp("gateway_test");
+  const std::string dir = temp.path();
   hal::linux_board::FileFlash::Options fo;
   fo.size = 2 * 128 * 1024;
   fo.sector_size = 4096;

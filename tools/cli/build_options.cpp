@@ -5,6 +5,7 @@
 #include <sstream>
 #include <vector>
 
+#include "choice_option.hpp"
 #include "volcomp/datasets/model_config.hpp"
 #include "volcomp/datasets/s500.hpp"
 #include "volcomp/image/axis_units.hpp"
@@ -29,31 +30,24 @@ Expected<model::Model> ParseModelOptions(Args& args) {
   }
   if (args.Flag("--no-squareness")) m.squareness = model::Squareness{};
   if (auto f = args.Value("--formulation")) {
-    if (*f == "physical") {
-      m.formulation = model::Formulation::kPhysical;
-    } else if (*f == "dissertation") {
-      m.formulation = model::Formulation::kDissertation;
-    } else {
-      return UsageFailure("--formulation must be physical or dissertation");
-    }
+    VOLCOMP_TRY_ASSIGN(m.formulation, ParseChoice<model::Formulation>(
+                                          "--formulation", *f,
+                                          {{"physical", model::Formulation::kPhysical},
+                                           {"dissertation", model::Formulation::kDissertation}}));
   }
   if (auto o = args.Value("--order")) {
-    if (*o == "first") {
-      m.order = model::Order::kFirst;
-    } else if (*o == "exact" || *o == "second") {
-      m.order = model::Order::kSecond;
-    } else {
-      return UsageFailure("--order must be first or exact (second)");
-    }
+    VOLCOMP_TRY_ASSIGN(m.order,
+                       ParseChoice<model::Order>("--order", *o,
+                                                 {{"first", model::Order::kFirst},
+                                                  {"exact", model::Order::kSecond},
+                                                  {"second", model::Order::kSecond, false}},
+                                                 "second"));
   }
   if (auto c = args.Value("--dissertation-case")) {
-    if (*c == "plus") {
-      m.dissertation_case = model::DissertationCase::kPlus;
-    } else if (*c == "minus") {
-      m.dissertation_case = model::DissertationCase::kMinus;
-    } else {
-      return UsageFailure("--dissertation-case must be plus or minus");
-    }
+    VOLCOMP_TRY_ASSIGN(m.dissertation_case, ParseChoice<model::DissertationCase>(
+                                                "--dissertation-case", *c,
+                                                {{"plus", model::DissertationCase::kPlus},
+                                                 {"minus", model::DissertationCase::kMinus}}));
   }
   if (auto k = args.Number("--angle-scale")) m.angle_scale = *k;
   VOLCOMP_TRY(args.status());
@@ -99,17 +93,20 @@ Expected<std::array<double, 3>> ParseXyzNumbers(const std::string& text,
   return out;
 }
 
+Expected<std::vector<image::AxisDef>> ParseAxisResolutions(Args& args,
+                                                           const std::vector<char>& names) {
+  return image::MakeAxisDefs(names, args.Value("--resolution-nm").value_or(""),
+                             args.Value("--steps-per-unit").value_or(""));
+}
+
 Outcome ParseImageOptions(Args& args, image::ImageRequest* request) {
-  const std::string element = args.Value("--element").value_or("int16");
-  if (element == "int16") {
-    request->element = table::ElementType::kInt16;
-  } else if (element == "int32") {
-    request->element = table::ElementType::kInt32;
-  } else if (element == "float32") {
-    request->element = table::ElementType::kFloat32;
-  } else {
-    return UsageFailure("--element must be int16, int32 or float32");
-  }
+  using table::ElementType;
+  VOLCOMP_TRY_ASSIGN(request->element,
+                     ParseChoice<ElementType>(
+                         "--element", args.Value("--element").value_or("int16"),
+                         {{table::ElementTypeName(ElementType::kInt16), ElementType::kInt16},
+                          {table::ElementTypeName(ElementType::kInt32), ElementType::kInt32},
+                          {table::ElementTypeName(ElementType::kFloat32), ElementType::kFloat32}}));
   const auto frac_bits = args.Integer("--frac-bits");
   VOLCOMP_TRY(args.status());
   if (frac_bits) {
@@ -136,10 +133,7 @@ Expected<GridCommand> ParseGridCommand(Args& args, const builders::GridSource& s
   GridCommand c;
   c.output = args.Required("-o", "--output");
   VOLCOMP_TRY(args.status());
-  VOLCOMP_TRY_ASSIGN(
-      c.request.axes,
-      image::MakeAxisDefs({'X', 'Y', 'Z'}, args.Value("--resolution-nm").value_or(""),
-                          args.Value("--steps-per-unit").value_or("")));
+  VOLCOMP_TRY_ASSIGN(c.request.axes, ParseAxisResolutions(args, {'X', 'Y', 'Z'}));
   c.grid.min_mm = source.min_mm;
   c.grid.max_mm = source.max_mm;
   c.grid.natural_spacing_mm = source.natural_spacing_mm;

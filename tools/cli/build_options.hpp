@@ -5,6 +5,7 @@
 
 #include <array>
 #include <string>
+#include <vector>
 
 #include "command.hpp"
 #include "volcomp/builders/grid.hpp"
@@ -24,6 +25,10 @@ Expected<model::Model> ParseModelOptions(Args& args);
 Expected<std::array<double, 3>> ParseXyzNumbers(const std::string& text,
                                                 const std::string& option,
                                                 bool all_required);
+
+/// The axes `names` with their step size from --resolution-nm or --steps-per-unit.
+Expected<std::vector<image::AxisDef>> ParseAxisResolutions(Args& args,
+                                                           const std::vector<char>& names);
 
 /// --element, --frac-bits, --table-id and --info into `request` (shared with `build axis|grid`).
 Outcome ParseImageOptions(Args& args, image::ImageRequest* request);

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "build_options.hpp"
+#include "choice_option.hpp"
 #include "commands.hpp"
 #include "option_groups.hpp"
 #include "volcomp/builders/axis_section.hpp"
@@ -24,13 +25,6 @@ struct Input {
   char name;
   std::string path;
 };
-
-Expected<builders::ReverseMode> ParseReverse(const std::string& reverse) {
-  if (reverse == "tables") return builders::ReverseMode::kTables;
-  if (reverse == "backlash") return builders::ReverseMode::kBacklash;
-  if (reverse == "mean") return builders::ReverseMode::kMean;
-  return UsageFailure("--reverse must be tables, backlash or mean");
-}
 
 // --spacing X=S,...: the spacing of each input (0 = the test's own).
 Expected<std::vector<double>> ParseSpacing(const std::optional<std::string>& text,
@@ -102,16 +96,18 @@ Expected<Output> RunBuildAxis(Args& args, Context& ctx) {
   VOLCOMP_TRY(args.status());
   builders::Axis1dOptions opt;
   const std::string reverse = args.Value("--reverse").value_or("tables");
-  VOLCOMP_TRY_ASSIGN(opt.reverse, ParseReverse(reverse));
+  VOLCOMP_TRY_ASSIGN(opt.reverse, ParseChoice<builders::ReverseMode>(
+                                      "--reverse", reverse,
+                                      {{"tables", builders::ReverseMode::kTables},
+                                       {"backlash", builders::ReverseMode::kBacklash},
+                                       {"mean", builders::ReverseMode::kMean}}));
   VOLCOMP_TRY_ASSIGN(const std::vector<double> spacing,
                      ParseSpacing(args.Value("--spacing"), inputs));
   const bool wrap = args.Flag("--wrap");
   std::vector<char> names;
   for (const Input& in : inputs) names.push_back(in.name);
   image::ImageRequest req;
-  VOLCOMP_TRY_ASSIGN(req.axes,
-                     image::MakeAxisDefs(names, args.Value("--resolution-nm").value_or(""),
-                                         args.Value("--steps-per-unit").value_or("")));
+  VOLCOMP_TRY_ASSIGN(req.axes, ParseAxisResolutions(args, names));
   VOLCOMP_TRY(ParseImageOptions(args, &req));
   VOLCOMP_TRY(args.Finish());
 

@@ -24,9 +24,7 @@ Expected<Output> RunBuildGrid(Args& args, Context& ctx) {
                      image::ParseAxisList(args.Value("--axes").value_or("X,Y,Z"), "--axes"));
   if (names.size() != 3) return UsageFailure("--axes: GRID3 needs exactly three axes");
   image::ImageRequest req;
-  VOLCOMP_TRY_ASSIGN(req.axes,
-                     image::MakeAxisDefs(names, args.Value("--resolution-nm").value_or(""),
-                                         args.Value("--steps-per-unit").value_or("")));
+  VOLCOMP_TRY_ASSIGN(req.axes, ParseAxisResolutions(args, names));
   VOLCOMP_TRY(ParseImageOptions(args, &req));
   VOLCOMP_TRY(args.Finish());
 

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "build_options.hpp"
+#include "choice_option.hpp"
 #include "commands.hpp"
 #include "grid_build.hpp"
 #include "option_groups.hpp"
@@ -35,31 +36,22 @@ Expected<model::KmtppOptions> ParseKmtppOptions(Args& args) {
   if (gain) opt.gain = *gain;
   if (step) opt.step = *step;
   if (auto f = args.Value("--final-step")) {
-    if (*f == "traced") {
-      opt.final_step = model::KmtppFinalStep::kTracedPoint;
-    } else if (*f == "node") {
-      opt.final_step = model::KmtppFinalStep::kGridNode;
-    } else {
-      return UsageFailure("--final-step must be traced or node");
-    }
+    VOLCOMP_TRY_ASSIGN(opt.final_step, ParseChoice<model::KmtppFinalStep>(
+                                           "--final-step", *f,
+                                           {{"traced", model::KmtppFinalStep::kTracedPoint},
+                                            {"node", model::KmtppFinalStep::kGridNode}}));
   }
   if (auto s = args.Value("--sum")) {
-    if (*s == "matrix") {
-      opt.sum_form = model::KmtppSumForm::kMatrix;
-    } else if (*s == "listing") {
-      opt.sum_form = model::KmtppSumForm::kListing;
-    } else {
-      return UsageFailure("--sum must be matrix or listing");
-    }
+    VOLCOMP_TRY_ASSIGN(opt.sum_form, ParseChoice<model::KmtppSumForm>(
+                                         "--sum", *s,
+                                         {{"matrix", model::KmtppSumForm::kMatrix},
+                                          {"listing", model::KmtppSumForm::kListing}}));
   }
   if (auto r = args.Value("--index")) {
-    if (*r == "round") {
-      opt.index_rule = model::KmtppIndexRule::kRound;
-    } else if (*r == "floor") {
-      opt.index_rule = model::KmtppIndexRule::kFloor;
-    } else {
-      return UsageFailure("--index must be round or floor");
-    }
+    VOLCOMP_TRY_ASSIGN(opt.index_rule, ParseChoice<model::KmtppIndexRule>(
+                                           "--index", *r,
+                                           {{"round", model::KmtppIndexRule::kRound},
+                                            {"floor", model::KmtppIndexRule::kFloor}}));
   }
   if (!(opt.gain * opt.step > 0 && opt.gain * opt.step < 2)) {
     return UsageFailure("--gain times --step must lie in (0, 2)");
@@ -72,13 +64,11 @@ Expected<Output> RunBuildKmtpp(Args& args, Context&) {
   VOLCOMP_TRY_ASSIGN(const model::TrackerData data, CalibrationLines(args));
   model::TrackerOptions topt;
   const std::string cosines = args.Value("--cosines").value_or("signed");
-  if (cosines == "signed") {
-    topt.cosines = model::CosineSource::kSigned;
-  } else if (cosines == "printed") {
-    topt.cosines = model::CosineSource::kPrinted;
-  } else {
-    return UsageFailure("--cosines must be signed or printed (unit axis vectors)");
-  }
+  VOLCOMP_TRY_ASSIGN(topt.cosines,
+                     ParseChoice<model::CosineSource>("--cosines", cosines,
+                                                      {{"signed", model::CosineSource::kSigned},
+                                                       {"printed", model::CosineSource::kPrinted}},
+                                                      "unit axis vectors"));
   const auto interval_option = args.Integer("--calibration-interval");
   VOLCOMP_TRY(args.status());
   int interval = 1;

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "build_options.hpp"
+#include "choice_option.hpp"
 #include "commands.hpp"
 #include "grid_build.hpp"
 #include "option_groups.hpp"
@@ -68,24 +69,18 @@ Expected<Output> RunBuildTracker(Args& args, Context&) {
     return UsageFailure("--cosines scaled needs the quasi-differential method: the " + method +
                         " method would stretch one cell's step length over the whole travel");
   }
-  if (cosines == "printed") {
-    opt.cosines = model::CosineSource::kPrinted;
-  } else if (cosines == "signed") {
-    opt.cosines = model::CosineSource::kSigned;
-  } else if (cosines == "scaled") {
-    opt.cosines = model::CosineSource::kScaled;
-  } else {
-    return UsageFailure("--cosines must be printed, signed or scaled");
-  }
-  const std::string origin =
-      args.Value("--origin").value_or(cosines == "scaled" ? "measured" : "extrapolated");
-  if (origin == "measured") {
-    opt.origin = model::OriginSource::kMeasured;
-  } else if (origin == "extrapolated") {
-    opt.origin = model::OriginSource::kExtrapolated;
-  } else {
-    return UsageFailure("--origin must be measured or extrapolated");
-  }
+  VOLCOMP_TRY_ASSIGN(opt.cosines,
+                     ParseChoice<model::CosineSource>("--cosines", cosines,
+                                                      {{"printed", model::CosineSource::kPrinted},
+                                                       {"signed", model::CosineSource::kSigned},
+                                                       {"scaled", model::CosineSource::kScaled}}));
+  VOLCOMP_TRY_ASSIGN(
+      opt.origin,
+      ParseChoice<model::OriginSource>(
+          "--origin",
+          args.Value("--origin").value_or(cosines == "scaled" ? "measured" : "extrapolated"),
+          {{"measured", model::OriginSource::kMeasured},
+           {"extrapolated", model::OriginSource::kExtrapolated}}));
   const auto interval = args.Integer("--static-interval");
   VOLCOMP_TRY(args.status());
   if (interval) {

@@ -1,7 +1,9 @@
 // `volcomp evaluate positioning FILE|-`: GOST 27843-88 / ISO 230-2:2014 positioning test
 // evaluation (metrology/positioning_evaluation.hpp), as text or JSON, and an HTML report.
 #include <ostream>
+#include <vector>
 
+#include "choice_option.hpp"
 #include "commands.hpp"
 #include "file_arguments.hpp"
 #include "metrology_report.hpp"
@@ -29,22 +31,17 @@ Expected<Output> RunEvaluatePositioning(Args& args, Context& ctx) {
   const auto files = args.Positionals();
   VOLCOMP_TRY(args.Finish());
   if (files.size() != 1) return UsageFailure("give exactly one data file (or - for stdin)");
-  if (standard == "gost27843" || standard == "gost") {
-    o.standards = {m::Standard::kGost27843};
-  } else if (standard == "iso230-2" || standard == "iso") {
-    o.standards = {m::Standard::kIso230_2};
-  } else if (standard == "both") {
-    o.standards = {m::Standard::kGost27843, m::Standard::kIso230_2};
-  } else {
-    return UsageFailure("--standard must be gost27843, iso230-2 or both");
-  }
-  if (sigma == "formula") {
-    o.sigma = m::SigmaMethod::kFormula;
-  } else if (sigma == "range") {
-    o.sigma = m::SigmaMethod::kRange;
-  } else {
-    return UsageFailure("--sigma must be formula or range");
-  }
+  using Standards = std::vector<m::Standard>;
+  const Standards gost = {m::Standard::kGost27843}, iso = {m::Standard::kIso230_2};
+  VOLCOMP_TRY_ASSIGN(o.standards, ParseChoice<Standards>("--standard", standard,
+                                                         {{"gost27843", gost},
+                                                          {"gost", gost, false},
+                                                          {"iso230-2", iso},
+                                                          {"iso", iso, false},
+                                                          {"both", {gost[0], iso[0]}}}));
+  VOLCOMP_TRY_ASSIGN(o.sigma, ParseChoice<m::SigmaMethod>("--sigma", sigma,
+                                                          {{"formula", m::SigmaMethod::kFormula},
+                                                           {"range", m::SigmaMethod::kRange}}));
   if (o.axis_length_mm && !(*o.axis_length_mm > 0.0)) {
     return UsageFailure("--axis-length-mm must be positive");
   }

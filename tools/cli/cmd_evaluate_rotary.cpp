@@ -4,6 +4,7 @@
 #include <optional>
 #include <ostream>
 
+#include "choice_option.hpp"
 #include "commands.hpp"
 #include "file_arguments.hpp"
 #include "metrology_report.hpp"
@@ -35,13 +36,10 @@ Expected<Output> RunEvaluateRotary(Args& args, Context& ctx) {
   const std::string procedure = args.Value("--reversal-procedure").value_or("");
   const auto files = args.Positionals();
   VOLCOMP_TRY(args.Finish());
-  if (sensitive == "rotating") {
-    o.sensitive = m::SensitiveDirection::kRotating;
-  } else if (sensitive == "fixed") {
-    o.sensitive = m::SensitiveDirection::kFixed;
-  } else {
-    return UsageFailure("--sensitive must be rotating or fixed");
-  }
+  VOLCOMP_TRY_ASSIGN(o.sensitive, ParseChoice<m::SensitiveDirection>(
+                                      "--sensitive", sensitive,
+                                      {{"rotating", m::SensitiveDirection::kRotating},
+                                       {"fixed", m::SensitiveDirection::kFixed}}));
   if (fsd_angle) {
     if (o.sensitive != m::SensitiveDirection::kFixed) {
       return UsageFailure("--fsd-angle-deg needs --sensitive fixed");

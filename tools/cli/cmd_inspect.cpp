@@ -11,18 +11,6 @@
 namespace volcomp::cli {
 namespace {
 
-const char* TypeName(table::ElementType t) {
-  switch (t) {
-    case table::ElementType::kInt16:
-      return "int16";
-    case table::ElementType::kInt32:
-      return "int32";
-    case table::ElementType::kFloat32:
-      return "float32";
-  }
-  return "?";
-}
-
 struct Range {
   double min = std::numeric_limits<double>::infinity();
   double max = -std::numeric_limits<double>::infinity();
@@ -67,7 +55,7 @@ JsonValue InspectData(const std::string& file, const table::TableView& v) {
                                            static_cast<uint32_t>(i)));
     }
     JsonValue& g = d["grid3"] = JsonValue::Object();
-    g.Set("element", TypeName(v.grid.type));
+    g.Set("element", table::ElementTypeName(v.grid.type));
     g.Set("frac_bits", unsigned{v.grid.frac_bits});
     JsonValue& dims = g["dimensions"] = JsonValue::Array();
     for (int k = 0; k < 3; ++k) {
@@ -97,7 +85,7 @@ JsonValue InspectData(const std::string& file, const table::TableView& v) {
     const auto& t = v.axis1d[i];
     JsonValue x = JsonValue::Object();
     x.Set("axis", std::string(1, v.axes[t.axis].name));
-    x.Set("element", TypeName(t.type));
+    x.Set("element", table::ElementTypeName(t.type));
     x.Set("frac_bits", unsigned{t.frac_bits});
     x.Set("nodes", uint64_t{t.dim.nodes});
     x.Set("origin_steps", int64_t{t.dim.origin_steps});

@@ -9,6 +9,7 @@
 #include <utility>
 #include <vector>
 
+#include "choice_option.hpp"
 #include "commands.hpp"
 #include "file_arguments.hpp"
 #include "option_groups.hpp"
@@ -120,13 +121,36 @@ std::string WithToken(const std::string& path, const std::string& token) {
   return path.substr(0, dot) + "_" + token + path.substr(dot);
 }
 
-// Before anything is written: the template must not be the program, nor hold readings.
-Outcome CheckTemplatePath(const std::optional<std::string>& targets_csv,
-                          const std::string& out,
-                          bool force) {
-  if (!targets_csv) return Outcome::Ok();
-  if (*targets_csv == out) return UsageFailure("--targets-csv and -o name the same file");
-  return m::RefuseToOverwriteReadings(*targets_csv, force);
+// The TemplateOutput() options but --runs: the program's file, its readings template, the feed and
+// the dwell.
+struct ProgramOutputOptions {
+  std::optional<double> feed, dwell;
+  std::string out;
+  std::optional<std::string> targets_csv;
+  bool force = false;
+};
+
+ProgramOutputOptions ReadProgramOutput(Args& args) {
+  ProgramOutputOptions o;
+  o.feed = args.Number("--feed");
+  o.dwell = args.Number("--dwell-s");
+  o.out = args.Value("--output", "-o").value_or("-");
+  o.targets_csv = args.Value("--targets-csv");
+  o.force = args.Flag("--force");
+  return o;
+}
+
+// After the command's own checks: --feed and --dwell-s into `g`; before anything is written, the
+// template must not be the program, nor hold readings.
+Outcome CheckProgramOutput(const ProgramOutputOptions& o, m::GcodeOptions* g) {
+  g->feed = o.feed.value_or(0.0);
+  g->dwell_s = o.dwell.value_or(0.0);
+  if (!(g->feed > 0.0) || g->dwell_s < 0.0) {
+    return UsageFailure("--feed must be positive, --dwell-s ≥ 0");
+  }
+  if (!o.targets_csv) return Outcome::Ok();
+  if (*o.targets_csv == o.out) return UsageFailure("--targets-csv and -o name the same file");
+  return m::RefuseToOverwriteReadings(*o.targets_csv, o.force);
 }
 
 // The readings template to `path` ("-": standard output), refused when it holds readings.
@@ -150,11 +174,7 @@ Expected<Output> RunProgramPositioning(Args& args, Context& ctx) {
   m::GcodeOptions g;
   const std::string axis = args.Value("--axis").value_or(plan.rotary ? "C" : "X");
   g.axes = {axis};
-  const auto feed = args.Number("--feed");
-  const auto dwell = args.Number("--dwell-s");
-  const std::string out = args.Value("--output", "-o").value_or("-");
-  const auto targets_csv = args.Value("--targets-csv");
-  const bool force = args.Flag("--force");
+  const ProgramOutputOptions files = ReadProgramOutput(args);
   VOLCOMP_TRY(args.Finish());
   VOLCOMP_TRY(InRange("--count", count, 10000));
   VOLCOMP_TRY(InRange("--seed", seed, 2147483647));
@@ -171,30 +191,24 @@ Expected<Output> RunProgramPositioning(Args& args, Context& ctx) {
     plan.end = *end;
   }
   plan.pitch = *pitch;
-  if (cycle != "linear" && cycle != "pilgrim") {
-    return UsageFailure("--cycle must be linear or pilgrim");
-  }
-  g.feed = feed.value_or(0.0);
-  g.dwell_s = dwell.value_or(0.0);
-  if (!(g.feed > 0.0) || g.dwell_s < 0.0) {
-    return UsageFailure("--feed must be positive, --dwell-s ≥ 0");
-  }
-  VOLCOMP_TRY(CheckTemplatePath(targets_csv, out, force));
+  VOLCOMP_TRY_ASSIGN(const m::Cycle cycle_kind,
+                     ParseChoice<m::Cycle>(
+                         "--cycle", cycle,
+                         {{"linear", m::Cycle::kLinear}, {"pilgrim", m::Cycle::kPseudoPilgrim}}));
+  VOLCOMP_TRY(CheckProgramOutput(files, &g));
   VOLCOMP_TRY_ASSIGN(const std::vector<double> targets, AsUsage(m::PlanGostTargets(plan)));
   VOLCOMP_TRY_ASSIGN(const std::vector<m::CycleMove> moves,
-                     AsUsage(m::BuildCycle(
-                         targets, cycle == "linear" ? m::Cycle::kLinear : m::Cycle::kPseudoPilgrim,
-                         runs, overrun.value_or(0.0))));
+                     AsUsage(m::BuildCycle(targets, cycle_kind, runs, overrun.value_or(0.0))));
   std::string targets_text;
   for (double t : targets) targets_text += (targets_text.empty() ? "" : " ") + FormatFixed(t, 3);
-  const std::string test =
-      std::string("GOST 27843-88 positioning test, ") +
-      (cycle == "linear" ? "linear cycle (fig. 1)" : "pseudo-pilgrim cycle (fig. 2)") + ", " +
-      std::to_string(runs) + " runs, seed " + std::to_string(plan.seed);
+  const std::string test = std::string("GOST 27843-88 positioning test, ") +
+                           (cycle_kind == m::Cycle::kLinear ? "linear cycle (fig. 1)"
+                                                            : "pseudo-pilgrim cycle (fig. 2)") +
+                           ", " + std::to_string(runs) + " runs, seed " + std::to_string(plan.seed);
   g.title = test + ", targets " + targets_text;
   VOLCOMP_TRY_ASSIGN(const std::string gcode, m::EmitGcode(moves, g));
-  VOLCOMP_TRY(WriteTextArgument(gcode, out, ctx));
-  if (targets_csv) {
+  VOLCOMP_TRY(WriteTextArgument(gcode, files.out, ctx));
+  if (files.targets_csv) {
     m::TemplateHeader h;
     h.description = std::string(
                         "Readings template of volcomp program positioning. Enter each "
@@ -202,12 +216,12 @@ Expected<Output> RunProgramPositioning(Args& args, Context& ctx) {
                     (plan.rotary ? "arc-seconds" : "µm") +
                     ") and the test conditions below; rows follow the program's measured stops.";
     h.known = {{"axis", axis}, {"test", test}};
-    if (out != "-") h.known.emplace_back("program", out);
+    if (files.out != "-") h.known.emplace_back("program", files.out);
     const std::string header = std::string(plan.rotary ? "target_deg" : "target_mm") +
                                ",direction,run," +
                                (plan.rotary ? "deviation_arcsec" : "deviation_um") + "\n";
     VOLCOMP_TRY(WriteTemplate(m::TemplatePreamble(h) + header + m::TemplateRows(moves, ""),
-                              *targets_csv, force, ctx));
+                              *files.targets_csv, files.force, ctx));
   }
   return Output{};
 }
@@ -258,12 +272,8 @@ Expected<Output> RunProgramDiagonal(Args& args, Context& ctx) {
   const auto runs_option = args.Integer("--runs");
   const auto overrun = args.Number("--overrun-mm");
   m::GcodeOptions g;
-  const auto feed = args.Number("--feed");
-  const auto dwell = args.Number("--dwell-s");
+  const ProgramOutputOptions files = ReadProgramOutput(args);
   const auto name_option = args.Value("--name");
-  const std::string out = args.Value("--output", "-o").value_or("-");
-  const auto targets_csv = args.Value("--targets-csv");
-  const bool force = args.Flag("--force");
   VOLCOMP_TRY(args.Finish());
   VOLCOMP_TRY(InRange("--runs", runs_option, 100));
   const int runs = static_cast<int>(*runs_option);
@@ -272,16 +282,11 @@ Expected<Output> RunProgramDiagonal(Args& args, Context& ctx) {
     return UsageFailure("--box plans the four body diagonals: give it without --p1, --p2, --name");
   }
   if (!box && (!p1 || !p2)) return UsageFailure("give --p1 and --p2 (one diagonal) or --box");
-  if (box && out == "-") {
+  if (box && files.out == "-") {
     return UsageFailure(
         "--box writes four programs: give -o FILE.ngc (FILE_NNN.ngc, ... are written)");
   }
-  g.feed = feed.value_or(0.0);
-  g.dwell_s = dwell.value_or(0.0);
-  if (!(g.feed > 0.0) || g.dwell_s < 0.0) {
-    return UsageFailure("--feed must be positive, --dwell-s ≥ 0");
-  }
-  VOLCOMP_TRY(CheckTemplatePath(targets_csv, out, force));
+  VOLCOMP_TRY(CheckProgramOutput(files, &g));
 
   std::vector<DiagonalProgram> programs;
   if (box) {
@@ -309,11 +314,11 @@ Expected<Output> RunProgramDiagonal(Args& args, Context& ctx) {
     }
   }
   for (const auto& d : programs) {
-    const std::string path = box ? WithToken(out, m::DiagonalFileToken(d.name)) : out;
+    const std::string path = box ? WithToken(files.out, m::DiagonalFileToken(d.name)) : files.out;
     VOLCOMP_TRY(WriteTextArgument(d.gcode, path, ctx));
     if (box) ctx.err << "wrote " << path << " (diagonal " << d.name.text << ")\n";
   }
-  if (targets_csv) {
+  if (files.targets_csv) {
     m::TemplateHeader h;
     h.description =
         "Readings template of volcomp program diagonal. Enter each reading in the last column "
@@ -327,7 +332,7 @@ Expected<Output> RunProgramDiagonal(Args& args, Context& ctx) {
     for (const auto& d : programs) rows += m::TemplateRows(d.moves, TemplateDiagonalName(d.name));
     VOLCOMP_TRY(WriteTemplate(
         m::TemplatePreamble(h) + "diagonal,target_mm,direction,run,deviation_um\n" + rows,
-        *targets_csv, force, ctx));
+        *files.targets_csv, files.force, ctx));
   }
   return output;
 }

@@ -7,34 +7,14 @@
 #include <utility>
 
 #include "volcomp/builders/grid_image.hpp"
+#include "volcomp/report/format.hpp"
 #include "volcomp/tools/file_io.hpp"
 
 namespace volcomp::cli {
 namespace {
 
-std::string Num(double v, int digits = 6) {
-  char buf[64];
-  std::snprintf(buf, sizeof(buf), "%.*g", digits, v);
-  return buf;
-}
-
-std::string Fixed(double v, int decimals) {
-  char buf[64];
-  std::snprintf(buf, sizeof(buf), "%.*f", decimals, v);
-  return buf;
-}
-
-const char* ElementName(table::ElementType type) {
-  switch (type) {
-    case table::ElementType::kInt16:
-      return "int16";
-    case table::ElementType::kInt32:
-      return "int32";
-    case table::ElementType::kFloat32:
-      return "float32";
-  }
-  return "?";
-}
+using report::FormatFixed;
+using report::FormatNumber;
 
 JsonValue Xyz(double x, double y, double z) { return JsonValue::Array().Push(x).Push(y).Push(z); }
 JsonValue Xyz(const model::Vec3& v) { return Xyz(v.x, v.y, v.z); }
@@ -91,7 +71,7 @@ JsonValue ReportData(const GridCommand& command,
     x.Set("max_um", t.second);
     tried.Push(std::move(x));
   }
-  d.Set("element", ElementName(img.request.element));
+  d.Set("element", table::ElementTypeName(img.request.element));
   d.Set("frac_bits", unsigned{img.frac_bits});
   d.Set("lsb_um", Xyz(img.lsb_um));
   d.Set("max_correction_bound_um", command.grid.max_correction_um);
@@ -100,8 +80,8 @@ JsonValue ReportData(const GridCommand& command,
 }
 
 std::string XyzText(const JsonValue& v, const char* separator) {
-  return Num(v.array[0].number) + separator + Num(v.array[1].number) + separator +
-         Num(v.array[2].number);
+  return FormatNumber(v.array[0].number, 6) + separator + FormatNumber(v.array[1].number, 6) +
+         separator + FormatNumber(v.array[2].number, 6);
 }
 
 void ReportText(const JsonValue& d, std::ostream& out) {
@@ -109,39 +89,42 @@ void ReportText(const JsonValue& d, std::ostream& out) {
   out << source.get("builder")->string << "\n";
   for (const auto& [k, v] : source.object) out << "  " << k << ": " << v.string << "\n";
   for (const JsonValue& a : d.get("lattice")->array) {
-    out << "  lattice " << a.get("axis")->string << ": " << Num(a.get("origin_mm")->number)
-        << " .. " << Num(a.get("end_mm")->number) << " mm, spacing "
-        << Num(a.get("spacing_mm")->number) << " mm (" << a.get("spacing_steps")->integer
-        << " steps), " << a.get("nodes")->integer << " nodes\n";
+    out << "  lattice " << a.get("axis")->string << ": "
+        << FormatNumber(a.get("origin_mm")->number, 6) << " .. "
+        << FormatNumber(a.get("end_mm")->number, 6) << " mm, spacing "
+        << FormatNumber(a.get("spacing_mm")->number, 6) << " mm ("
+        << a.get("spacing_steps")->integer << " steps), " << a.get("nodes")->integer << " nodes\n";
   }
-  out << "  largest correction: " << Fixed(d.get("max_correction_um")->number, 3) << " µm at ("
-      << XyzText(*d.get("max_correction_at_mm"), ", ") << ") mm (bound "
-      << Num(d.get("max_correction_bound_um")->number) << " µm)\n";
+  out << "  largest correction: " << FormatFixed(d.get("max_correction_um")->number, 3)
+      << " µm at (" << XyzText(*d.get("max_correction_at_mm"), ", ") << ") mm (bound "
+      << FormatNumber(d.get("max_correction_bound_um")->number, 6) << " µm)\n";
   if (const JsonValue* residual = d.get("max_inverse_residual_um")) {
-    out << "  inverse at the nodes: worst residual " << Num(residual->number, 3) << " µm (limit "
-        << Num(d.get("max_inverse_residual_limit_um")->number) << " µm)\n";
+    out << "  inverse at the nodes: worst residual " << FormatNumber(residual->number, 3)
+        << " µm (limit " << FormatNumber(d.get("max_inverse_residual_limit_um")->number, 6)
+        << " µm)\n";
   }
   const auto& tried = d.get("spacings_tried")->array;
   if (tried.size() > 1) {
     out << "  spacings tried:";
     for (const JsonValue& t : tried) {
       out << " " << XyzText(*t.get("spacing_mm"), "/") << " mm → "
-          << Num(t.get("max_um")->number, 3) << " µm;";
+          << FormatNumber(t.get("max_um")->number, 3) << " µm;";
     }
     out << "\n";
   }
   const JsonValue& interpolation = *d.get("interpolation");
   out << "  predicted interpolation error between nodes: max "
-      << Fixed(interpolation.get("max_um")->number, 4) << " µm, rms "
-      << Fixed(interpolation.get("rms_um")->number, 4) << " µm over "
+      << FormatFixed(interpolation.get("max_um")->number, 4) << " µm, rms "
+      << FormatFixed(interpolation.get("rms_um")->number, 4) << " µm over "
       << interpolation.get("samples")->integer << " samples (worst at "
       << XyzText(*interpolation.get("worst_at_mm"), ", ") << " mm)\n";
   const std::string& element = d.get("element")->string;
   out << "  elements: " << element;
   if (element != "float32") {
     const auto& lsb = d.get("lsb_um")->array;
-    out << ", " << d.get("frac_bits")->integer << " fraction bits, LSB " << Num(lsb[0].number, 3)
-        << "/" << Num(lsb[1].number, 3) << "/" << Num(lsb[2].number, 3) << " µm";
+    out << ", " << d.get("frac_bits")->integer << " fraction bits, LSB "
+        << FormatNumber(lsb[0].number, 3) << "/" << FormatNumber(lsb[1].number, 3) << "/"
+        << FormatNumber(lsb[2].number, 3) << " µm";
   }
   out << "\n  wrote " << d.get("image")->string << " (" << d.get("bytes")->integer << " bytes)\n";
 }

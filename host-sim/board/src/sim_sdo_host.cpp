@@ -29,9 +29,8 @@ void SimSdoHost::Run(canopen_client::SdoClient& client,
 canopen_client::SdoExpected<std::vector<uint8_t>> SimSdoHost::Write(canopen::ObjectId id,
                                                                     uint32_t value,
                                                                     uint64_t timeout_ns) {
-  const canopen::ObjectEntry& e = canopen::Entry(id);
   canopen_client::SdoClient client(node_);
-  client.StartWrite(e.index, e.sub, canopen_client::NumericPayload(id, value));
+  canopen_client::StartNumericWrite(client, id, value);
   Run(client, timeout_ns);
   return client.result();
 }

@@ -253,7 +253,8 @@ Expected<builders::GridSection> BuildModelGrid(Session& s, DemoResult& r) {
   const double h = s.o.grid_spacing_mm;
   VOLCOMP_TRY_ASSIGN(
       builders::GridSection grid,
-      BuildModelGridSection(r.measured_model, s.layout.lo, s.layout.hi, {h, h, h}, s.step_mm()));
+      BuildModelGridSection(r.measured_model,
+                            LatticeOptions(s.layout.lo, s.layout.hi, {h, h, h}, s.step_mm())));
   const model::GridAxes& g = grid.build.grid.axes;
   s.progress.Line(
       "source: the measured six error motions of each axis (18 functions; the three "

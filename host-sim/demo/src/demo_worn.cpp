@@ -176,9 +176,10 @@ Expected<builders::GridSection> MeasureTrackerLattice(Session& s,
   }
   const double gs = s.o.grid_spacing_mm;
   // `volcomp build tracker --lattice FILE --through TABLE2` on these readings.
-  VOLCOMP_TRY_ASSIGN(builders::GridSection grid,
-                     BuildTrackerLatticeGridSection(data, in_force, s.layout.lo, s.layout.hi,
-                                                    {gs, gs, gs}, s.step_mm()));
+  VOLCOMP_TRY_ASSIGN(
+      builders::GridSection grid,
+      BuildTrackerLatticeGridSection(
+          data, in_force, LatticeOptions(s.layout.lo, s.layout.hi, {gs, gs, gs}, s.step_mm())));
   const model::GridAxes& gg = grid.build.grid.axes;
   char b[400];
   std::snprintf(b, sizeof b,

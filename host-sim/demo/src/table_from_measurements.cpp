@@ -112,24 +112,17 @@ Expected<TableBuildResult> AssembleTable(const std::optional<builders::GridSecti
 }
 
 Expected<builders::GridSection> BuildModelGridSection(const model::Model& measured,
-                                                      const std::array<double, 3>& lo_mm,
-                                                      const std::array<double, 3>& hi_mm,
-                                                      const std::array<double, 3>& spacing_mm,
-                                                      const std::array<double, 3>& step_mm) {
-  return builders::BuildGridSection(LatticeOptions(lo_mm, hi_mm, spacing_mm, step_mm),
-                                    ImageAxes(step_mm), builders::ModelGridSource(measured));
+                                                      const builders::GridBuildOptions& lattice) {
+  return builders::BuildGridSection(lattice, ImageAxes(lattice.step_mm),
+                                    builders::ModelGridSource(measured));
 }
 
 Expected<TableBuildResult> BuildTableImage(const model::Model& measured,
-                                           const std::array<double, 3>& lo_mm,
-                                           const std::array<double, 3>& hi_mm,
-                                           const std::array<double, 3>& spacing_mm,
-                                           const std::array<double, 3>& step_mm,
+                                           const builders::GridBuildOptions& lattice,
                                            uint32_t table_id) {
-  VOLCOMP_TRY_ASSIGN(builders::GridSection g,
-                     BuildModelGridSection(measured, lo_mm, hi_mm, spacing_mm, step_mm));
+  VOLCOMP_TRY_ASSIGN(builders::GridSection g, BuildModelGridSection(measured, lattice));
   return AssembleTable(
-      std::move(g), {}, step_mm, table_id,
+      std::move(g), {}, lattice.step_mm, table_id,
       {{"builder", "volcomp-sim demo (the sources and grid of `volcomp build model`)"},
        {"source", "measured 21-parameter model: 6-DOF laser runs of X, Y, Z"}});
 }
@@ -146,19 +139,15 @@ Expected<builders::AxisSection> BuildAxisTable(const model::PositioningData& dev
 }
 
 Expected<builders::GridSection> BuildTrackerLatticeGridSection(
-    const model::TrackerLatticeData& lattice,
+    const model::TrackerLatticeData& readings,
     const std::vector<uint8_t>& in_force,
-    const std::array<double, 3>& lo_mm,
-    const std::array<double, 3>& hi_mm,
-    const std::array<double, 3>& spacing_mm,
-    const std::array<double, 3>& step_mm) {
+    const builders::GridBuildOptions& grid) {
   VOLCOMP_TRY_ASSIGN(const image::LoadedImage table_in_force,
                      image::LoadedImage::FromBytes(in_force, "table 2"));
-  VOLCOMP_TRY_ASSIGN(const model::TrackerLattice through, model::TrackerLattice::Create(lattice));
+  VOLCOMP_TRY_ASSIGN(const model::TrackerLattice through, model::TrackerLattice::Create(readings));
   VOLCOMP_TRY_ASSIGN(const model::CorrectionGrid table2,
                      builders::GridOfImage(table_in_force, "table 2"));
-  return builders::BuildGridSection(LatticeOptions(lo_mm, hi_mm, spacing_mm, step_mm),
-                                    ImageAxes(step_mm),
+  return builders::BuildGridSection(grid, ImageAxes(grid.step_mm),
                                     builders::TrackerLatticeThroughGridSource(through, table2));
 }
 

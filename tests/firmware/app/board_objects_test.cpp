@@ -94,9 +94,8 @@ class Bench : public ::testing::Test {
     return c.result();
   }
   TransferResult Write(ObjectId id, uint32_t value) {
-    const auto& e = canopen::Entry(id);
     SdoClient c(kNode);
-    c.StartWrite(e.index, e.sub, canopen_client::NumericPayload(id, value));
+    canopen_client::StartNumericWrite(c, id, value);
     return Run(c);
   }
   TransferResult Command(TableCommand c) {

@@ -10,12 +10,12 @@
 #include <sys/timerfd.h>
 #include <unistd.h>
 
-#include <cstdio>
-#include <fstream>
 #include <string>
 #include <vector>
 
+#include "file_contents.hpp"
 #include "sdo_frames.hpp"
+#include "temp_paths.hpp"
 #include "volcomp/hal/mock/mock_devices.hpp"
 #include "volcomp/linux_board/config_file.hpp"
 
@@ -27,28 +27,10 @@ using volcomp::testing::SdoDownload;
 
 constexpr uint8_t kNode = 0x10;
 
-class TempDir {
- public:
-  TempDir() {
-    char t[] = "/tmp/volcomp-linux-board.XXXXXX";
-    path_ = mkdtemp(t) != nullptr ? t : "";
-  }
-  ~TempDir() {
-    for (const char* f : {"tables.bin", "settings.bin", "gpio", "gpio.out"}) {
-      std::remove((path_ + "/" + f).c_str());
-    }
-    rmdir(path_.c_str());
-  }
-  const std::string& path() const { return path_; }
-
- private:
-  std::string path_;
-};
-
 class LinuxBoardConfigTest : public ::testing::Test {
  protected:
   LinuxBoardConfigTest() : controller_(&clock_, nullptr, 256) {
-    std::ofstream(dir_.path() + "/gpio") << "write_enable=1\n";
+    volcomp::testing::WriteText(dir_ / "gpio", "write_enable=1\n");
     const std::string text =
         "[board]\nnode_id = 16\ntick_hz = 1000\naxes = X\n"
         "[axis X]\nunits_per_step = 0.001\n"
@@ -88,7 +70,7 @@ class LinuxBoardConfigTest : public ::testing::Test {
     return false;
   }
 
-  TempDir dir_;
+  volcomp::testing::ScratchDir dir_{"linux_board"};
   LinuxBoardConfig config_;
   hal::mock::MockClock clock_;
   hal::mock::MockCan controller_;
@@ -158,8 +140,7 @@ TEST_F(LinuxBoardConfigTest, ABitRateMismatchIsLoggedAndKeepsTheBoardRunning) {
   EXPECT_TRUE(board.tick_timer().running());
   EXPECT_NE(board.DescribeConfigInForce().find("another bit rate"), std::string::npos)
       << board.DescribeConfigInForce();
-  std::ifstream out(dir_.path() + "/gpio.out");
-  std::string text((std::istreambuf_iterator<char>(out)), {});
+  const std::string text = volcomp::testing::ReadText(dir_ / "gpio.out");
   EXPECT_NE(text.find("fault=1"), std::string::npos) << text;
 }
 

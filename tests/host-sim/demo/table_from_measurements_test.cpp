@@ -72,8 +72,8 @@ TEST_F(SimTable, MeasuredModelReproducesTheMachineUpToItsValueAtTheReference) {
 }
 
 TEST_F(SimTable, ImageLandsTheToolOnItsTargets) {
-  const Expected<TableBuildResult> built =
-      BuildTableImage(*measured_, {0, 0, 0}, {400, 280, 200}, {10, 10, 10}, {1e-3, 1e-3, 1e-3}, 3);
+  const Expected<TableBuildResult> built = BuildTableImage(
+      *measured_, LatticeOptions({0, 0, 0}, {400, 280, 200}, {10, 10, 10}, {1e-3, 1e-3, 1e-3}), 3);
   ASSERT_TRUE(built.ok()) << built.error().message;
   const TableBuildResult& t = *built;
   const Expected<image::LoadedImage> img = image::LoadedImage::FromBytes(t.image, "built");

@@ -5,36 +5,25 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <utility>
 #include <vector>
 
+#include "sim_machines.hpp"
 #include "volcomp/sim/machine.hpp"
 #include "volcomp/sim/random.hpp"
 
 namespace volcomp::sim {
 namespace {
 
+using volcomp::testing::LinearErrorModel;
+using volcomp::testing::MachineOf;
+
 // X: 0..100 mm; at 100 mm: E_XX = 10, E_YX = -4, E_ZX = 2 um, E_BX = 100 urad (linear between);
 // Y and Z: no errors. Chain X -> Y -> Z from the workpiece to the tool, tool offset 0.
-model::Model SimpleModel() {
-  model::Model m;
-  m.name = "test";
-  const model::AxisErrorSample zero{};
-  model::AxisErrorSample end;
-  end.linear_um = {10, -4, 2};
-  end.angular_urad = {0, 100, 0};
-  m.axes[0] = model::AxisErrorTable::Create({0, 100}, {zero, end}).value();
-  m.axes[1] = model::AxisErrorTable::Create({0, 100}, {zero, zero}).value();
-  m.axes[2] = model::AxisErrorTable::Create({0, 100}, {zero, zero}).value();
-  return m;
-}
-
 Machine SimpleMachine() {
-  MachineOptions o;
-  o.model = SimpleModel();
-  Expected<Machine> m = Machine::Create(o);
-  EXPECT_TRUE(m.ok()) << m.error().message;
-  return std::move(m).value();
+  model::AxisErrorSample x_at_100mm;
+  x_at_100mm.linear_um = {10, -4, 2};
+  x_at_100mm.angular_urad = {0, 100, 0};
+  return MachineOf(LinearErrorModel({x_at_100mm, {}, {}}));
 }
 
 InterferometerOptions Perfect() {

@@ -5,13 +5,15 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <utility>
 
+#include "expected_value.hpp"
 #include "volcomp/datasets/s500.hpp"
 #include "volcomp/sim/machine.hpp"
 
 namespace volcomp::sim {
 namespace {
+
+using volcomp::testing::ValueOf;
 
 TEST(SimWear, LostMotionIsAPlayOperator) {
   LostMotion l(20);  // dead band 20 µm: the carriage trails the drive by 10 µm
@@ -28,9 +30,7 @@ TEST(SimWear, LostMotionIsAPlayOperator) {
 Machine WornWith(void (*set)(WornMachineProfile&)) {
   MachineOptions o;
   set(o.wear);
-  Expected<Machine> m = Machine::Create(o);
-  EXPECT_TRUE(m.ok()) << m.error().message;
-  return std::move(m).value();
+  return ValueOf(Machine::Create(o));
 }
 
 // The rigid-body S500 alone.

@@ -5,30 +5,18 @@
 #include <gtest/gtest.h>
 
 #include <string>
-#include <utility>
+
+#include "sim_machines.hpp"
 
 namespace volcomp::sim {
 namespace {
 
-// X, Y, Z: 0..100 mm without errors.
-model::Model SimpleModel() {
-  model::Model m;
-  m.name = "test";
-  const model::AxisErrorSample zero{};
-  for (auto& axis : m.axes) axis = model::AxisErrorTable::Create({0, 100}, {zero, zero}).value();
-  return m;
-}
-
-Machine SimpleMachine() {
-  MachineOptions o;
-  o.model = SimpleModel();
-  Expected<Machine> m = Machine::Create(o);
-  EXPECT_TRUE(m.ok()) << m.error().message;
-  return std::move(m).value();
-}
+using volcomp::testing::LinearErrorModel;
+using volcomp::testing::MachineOf;
 
 TEST(SimMachine, HomeSwitchAndAxisPositions) {
-  Machine machine = SimpleMachine();  // power-up 10 % into 0..100, switch 5 mm below 0
+  Machine machine =
+      MachineOf(LinearErrorModel());  // power-up 10 % into 0..100, switch 5 mm below 0
   EXPECT_DOUBLE_EQ(machine.power_up_mm(0), 10);
   EXPECT_DOUBLE_EQ(machine.home_switch_mm(0), -5);
   EXPECT_FALSE(machine.HomeSwitchClosed(0, -14999));
@@ -41,7 +29,7 @@ TEST(SimMachine, HomeSwitchAndAxisPositions) {
 
 TEST(SimMachine, RefusesOptionsNoMachineHas) {
   MachineOptions step;
-  step.model = SimpleModel();
+  step.model = LinearErrorModel();
   step.step_mm[1] = 0;
   const Expected<Machine> no_step = Machine::Create(step);
   ASSERT_FALSE(no_step.ok());
@@ -49,14 +37,14 @@ TEST(SimMachine, RefusesOptionsNoMachineHas) {
   EXPECT_EQ(no_step.error().message, "machine: step length must be > 0");
 
   MachineOptions below;
-  below.model = SimpleModel();
+  below.model = LinearErrorModel();
   below.power_up_mm = {10, 10, -6};  // below Z's switch at -5 mm
   const Expected<Machine> on_switch = Machine::Create(below);
   ASSERT_FALSE(on_switch.ok());
   EXPECT_EQ(on_switch.error().message, "machine: the axes must power up above their home switches");
 
   MachineOptions formulation;
-  formulation.model = SimpleModel();
+  formulation.model = LinearErrorModel();
   formulation.model.formulation = model::Formulation::kDissertation;
   const Expected<Machine> dissertation = Machine::Create(formulation);
   ASSERT_FALSE(dissertation.ok());
@@ -64,7 +52,7 @@ TEST(SimMachine, RefusesOptionsNoMachineHas) {
             std::string::npos);
 
   MachineOptions chain;
-  chain.model = SimpleModel();
+  chain.model = LinearErrorModel();
   chain.model.chain.order = {0, 0, 2};  // ValidateModel's refusal, as a failure
   const Expected<Machine> bad_chain = Machine::Create(chain);
   ASSERT_FALSE(bad_chain.ok());

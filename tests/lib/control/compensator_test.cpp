@@ -36,13 +36,7 @@ struct TableFixture {
     for (auto& d : g.dim) d = {2, -100000, 200000};
     g.values.type = table::ElementType::kInt32;
     g.values.i32 = values.data();
-    table::ImageSpec s;
-    s.table_id = 42;
-    s.axis_count = 3;
-    s.axes[0] = testing::LinearAxis('X');
-    s.axes[1] = testing::LinearAxis('Y');
-    s.axes[2] = testing::LinearAxis('Z');
-    s.grid = &g;
+    table::ImageSpec s = testing::XyzImageSpec(g, 42);
     if (x_table) {
       x_fwd = {0, 0};
       x_rev = {static_cast<int32_t>(3 * kQ8), static_cast<int32_t>(3 * kQ8)};  // +3 steps reversing
@@ -56,8 +50,8 @@ struct TableFixture {
       a.reverse.i32 = x_rev.data();
       s.axis1d_count = 1;
     }
-    img = testing::AlignedBytes(*table::ImageSize(s));
-    EXPECT_TRUE(table::WriteImage(s, img.data(), img.size()).ok());
+    img = testing::WriteImageBytes(s);
+    EXPECT_NE(img.size(), 0u);
     view = *table::ParseImage(img.data(), img.size());
   }
 };

@@ -10,6 +10,7 @@
 #include "cli_runner.hpp"
 #include "expected_value.hpp"
 #include "sample_path.hpp"
+#include "temp_paths.hpp"
 #include "volcomp/image/image_reader.hpp"
 
 namespace volcomp {
@@ -17,11 +18,8 @@ namespace {
 
 using testing::RunCli;
 using testing::SamplePath;
+using testing::TempPath;
 using testing::ValueOf;
-
-std::string Temp(const std::string& name) {
-  return (std::filesystem::temp_directory_path() / ("volcomp_axisraw_" + name)).string();
-}
 
 // Readings at targets 0, 50, ..., 300 mm: ↑ mean 3 + 0.01·t µm, ↓ mean 3 + 0.01·t − 4 µm; the five
 // runs scatter by −2, −1, 0, +1, +2 µm around the mean, so the mean of each series is exact.
@@ -56,8 +54,8 @@ std::string Lookup(const std::string& image) {
 }
 
 TEST(VolcompBuildAxis, RawReadingsGiveTheTableOfTheirMeans) {
-  const std::string raw = Temp("raw.csv"), means = Temp("means.csv");
-  const std::string a = Temp("raw.vct"), b = Temp("means.vct");
+  const std::string raw = TempPath("build_axis_raw.csv"), means = TempPath("build_axis_means.csv");
+  const std::string a = TempPath("build_axis_raw.vct"), b = TempPath("build_axis_means.vct");
   std::ofstream(raw) << RawReadings(5);
   std::ofstream(means) << Means();
   for (const auto& [in, out] : {std::pair{raw, a}, std::pair{means, b}}) {
@@ -71,7 +69,7 @@ TEST(VolcompBuildAxis, RawReadingsGiveTheTableOfTheirMeans) {
 }
 
 TEST(VolcompBuildAxis, RawReadingsAreCheckedLikeTheEvaluation) {
-  const std::string raw = Temp("few.csv"), img = Temp("few.vct");
+  const std::string raw = TempPath("build_axis_few.csv"), img = TempPath("build_axis_few.vct");
   std::ofstream(raw) << RawReadings(3);
   const auto r = RunCli({"build", "axis", "--x", raw, "--resolution-nm", "X=1000", "-o", img});
   EXPECT_EQ(r.code, tools::kExitFailed);
@@ -81,7 +79,7 @@ TEST(VolcompBuildAxis, RawReadingsAreCheckedLikeTheEvaluation) {
 }
 
 TEST(VolcompBuildAxis, FromAPositioningTest) {
-  const std::string out = Temp("a.vct");
+  const std::string out = TempPath("build_axis_a.vct");
   const auto r =
       RunCli({"build", "axis", "--x", SamplePath("model/positioning_x.csv"), "-o", out,
               "--resolution-nm", "X=1000", "--reverse", "backlash", "--spacing", "X=20"});

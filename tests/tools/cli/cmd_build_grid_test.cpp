@@ -7,24 +7,24 @@
 
 #include "cli_runner.hpp"
 #include "expected_value.hpp"
+#include "file_contents.hpp"
+#include "node_grid_csv.hpp"
+#include "temp_paths.hpp"
 #include "volcomp/image/image_reader.hpp"
 
 namespace volcomp {
 namespace {
 
+using testing::kSmallGridCsv;
 using testing::RunCli;
+using testing::TempPath;
 using testing::ValueOf;
-
-std::string TempPath(const std::string& name) { return ::testing::TempDir() + "/volcomp_" + name; }
-
-void WriteFile(const std::string& path, const std::string& text) { std::ofstream(path) << text; }
+using testing::WriteText;
 
 TEST(VolcompBuildGrid, WritesTheImageAndNamesItOnStderr) {
-  const std::string csv = TempPath("grid_ok.csv"), img = TempPath("grid_ok.vct");
-  WriteFile(csv,
-            "x_steps,y_steps,z_steps,dx_steps,dy_steps,dz_steps\n0,0,0,1,2,3\n10,0,0,1,2,3\n"
-            "0,10,0,1,2,3\n10,10,0,1,2,3\n0,0,10,1,2,3\n10,0,10,1,2,3\n0,10,10,1,2,3\n"
-            "10,10,10,1,2,3\n");
+  const std::string csv = TempPath("build_grid_grid_ok.csv"),
+                    img = TempPath("build_grid_grid_ok.vct");
+  WriteText(csv, kSmallGridCsv);
   const auto r = RunCli({"build", "grid", "--csv", csv, "-o", img, "--steps-per-unit",
                          "X=1000,Y=1000,Z=1000", "--table-id", "3"});
   ASSERT_EQ(r.code, 0) << r.err;
@@ -37,7 +37,7 @@ TEST(VolcompBuildGrid, WritesTheImageAndNamesItOnStderr) {
 }
 
 TEST(VolcompBuildGrid, ErrorsNameTheLine) {
-  const std::string csv = TempPath("bad.csv"), img = TempPath("bad.vct");
+  const std::string csv = TempPath("build_grid_bad.csv"), img = TempPath("build_grid_bad.vct");
   struct Case {
     std::string text, expected;
   };
@@ -67,7 +67,7 @@ TEST(VolcompBuildGrid, ErrorsNameTheLine) {
        "exceeds the maximum correction"},
   };
   for (const Case& c : cases) {
-    WriteFile(csv, c.text);
+    WriteText(csv, c.text);
     const auto r = RunCli(
         {"build", "grid", "--csv", csv, "-o", img, "--resolution-nm", "X=1000,Y=1000,Z=1000"});
     if (c.expected.empty()) {

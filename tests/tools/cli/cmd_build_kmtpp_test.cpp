@@ -6,30 +6,23 @@
 #include <vector>
 
 #include "cli_runner.hpp"
+#include "temp_paths.hpp"
 
 namespace volcomp {
 namespace {
 
+using testing::Appended;
 using testing::RunCli;
-
-std::string TempPath(const std::string& name) {
-  return ::testing::TempDir() + "volcomp_build_kmtpp_" + name;
-}
+using testing::TempPath;
 
 const std::vector<std::string> kBase = {"build",
                                         "kmtpp",
                                         "--model",
                                         "s500",
                                         "-o",
-                                        TempPath("k.vctb"),
+                                        TempPath("build_kmtpp_k.vctb"),
                                         "--resolution-nm",
                                         "X=1000,Y=1000,Z=1000"};
-
-std::vector<std::string> With(const std::vector<std::string>& extra) {
-  std::vector<std::string> v = kBase;
-  v.insert(v.end(), extra.begin(), extra.end());
-  return v;
-}
 
 TEST(VolcompBuildKmtpp, DefaultAndDissertationForm) {
   auto r = RunCli(kBase);
@@ -41,10 +34,10 @@ TEST(VolcompBuildKmtpp, DefaultAndDissertationForm) {
                        "interval 1, signed\n"),
             std::string::npos)
       << r.out;
-  r = RunCli(With({"--dissertation"}));
+  r = RunCli(Appended(kBase, {"--dissertation"}));
   EXPECT_EQ(r.code, tools::kExitUsage);
   EXPECT_NE(r.err.find("--allow-discontinuous"), std::string::npos) << r.err;
-  r = RunCli(With({"--gain", "10", "--step", "1"}));
+  r = RunCli(Appended(kBase, {"--gain", "10", "--step", "1"}));
   EXPECT_EQ(r.code, tools::kExitUsage);
   EXPECT_EQ(r.err,
             "volcomp build kmtpp: --gain times --step must lie in (0, 2)\n(`volcomp help build "
@@ -52,7 +45,7 @@ TEST(VolcompBuildKmtpp, DefaultAndDissertationForm) {
 }
 
 TEST(VolcompBuildKmtpp, RefinedTablesAndTheirSpacing) {
-  const auto r = RunCli(With({"--refine-mm", "5", "--range", "X=0:40,Y=0:40,Z=0:40"}));
+  const auto r = RunCli(Appended(kBase, {"--refine-mm", "5", "--range", "X=0:40,Y=0:40,Z=0:40"}));
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_NE(r.out.find("spacing 5 mm (5000 steps)"), std::string::npos) << r.out;
 }

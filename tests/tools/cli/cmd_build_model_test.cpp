@@ -8,30 +8,22 @@
 #include "cli_runner.hpp"
 #include "expected_value.hpp"
 #include "sample_path.hpp"
+#include "temp_paths.hpp"
 #include "volcomp/image/image_reader.hpp"
 #include "volcomp/tools/json_value.hpp"
 
 namespace volcomp {
 namespace {
 
+using testing::Appended;
 using testing::RunCli;
-using testing::SamplePath;
+using testing::TempPath;
 using testing::ValueOf;
 
-std::string TempPath(const std::string& name) {
-  return ::testing::TempDir() + "volcomp_build_model_" + name;
-}
-
-std::vector<std::string> Words(std::vector<std::string> base,
-                               const std::vector<std::string>& extra) {
-  base.insert(base.end(), extra.begin(), extra.end());
-  return base;
-}
-
 TEST(VolcompBuildModel, WritesAValidImageAndReports) {
-  const std::string out = TempPath("s500.vctb");
-  const auto r = RunCli({"build", "model", "--model", SamplePath("model/s500.conf"), "-o", out,
-                         "--resolution-nm", "X=1000,Y=1000,Z=1000", "--table-id", "7"});
+  const std::string out = TempPath("build_model_s500.vctb");
+  const auto r = RunCli({"build", "model", "--model", testing::SamplePath("model/s500.conf"), "-o",
+                         out, "--resolution-nm", "X=1000,Y=1000,Z=1000", "--table-id", "7"});
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_EQ(r.out.rfind("volcomp build model\n  builder: volcomp build model\n", 0), 0u) << r.out;
   EXPECT_NE(r.out.find("  lattice X: 0 .. 400 mm, spacing 20 mm (20000 steps), 21 nodes\n"),
@@ -47,7 +39,7 @@ TEST(VolcompBuildModel, WritesAValidImageAndReports) {
 }
 
 TEST(VolcompBuildModel, JsonHoldsEveryFigureOfTheText) {
-  const std::string out = TempPath("small.vctb");
+  const std::string out = TempPath("build_model_small.vctb");
   const auto r = RunCli({"build", "model", "--model", "s500", "-o", out, "--resolution-nm",
                          "X=1000,Y=1000,Z=1000", "--range", "X=0:40,Y=0:20,Z=0:20", "--spacing-mm",
                          "20", "--json"});
@@ -69,7 +61,7 @@ TEST(VolcompBuildModel, JsonHoldsEveryFigureOfTheText) {
 }
 
 TEST(VolcompBuildModel, RefusesCorrectionsBeyondTheBound) {
-  const std::string out = TempPath("bound.vctb");
+  const std::string out = TempPath("build_model_bound.vctb");
   const auto r = RunCli({"build", "model", "--model", "s500", "-o", out, "--resolution-nm",
                          "X=1000,Y=1000,Z=1000", "--max-correction-um", "100"});
   EXPECT_EQ(r.code, tools::kExitFailed);
@@ -89,7 +81,7 @@ TEST(VolcompBuildModel, RefusesCorrectionsBeyondTheBound) {
 
 TEST(VolcompBuildModel, GridOptionsAreChecked) {
   const std::vector<std::string> base = {"build", "model", "--model",
-                                         "s500",  "-o",    TempPath("x.vctb")};
+                                         "s500",  "-o",    TempPath("build_model_x.vctb")};
   const auto usage = [](const std::vector<std::string>& words, const std::string& message) {
     const auto r = RunCli(words);
     EXPECT_EQ(r.code, tools::kExitUsage) << message;
@@ -97,24 +89,26 @@ TEST(VolcompBuildModel, GridOptionsAreChecked) {
                          "\n(`volcomp help build model` lists the options)\n");
   };
   usage(base, "axis X needs --resolution-nm or --steps-per-unit");
-  usage(Words(base,
-              {"--resolution-nm", "X=300,Y=1000,Z=1000", "--spacing-mm", "X=20.00005,Y=10,Z=10"}),
+  usage(Appended(base, {"--resolution-nm", "X=300,Y=1000,Z=1000", "--spacing-mm",
+                        "X=20.00005,Y=10,Z=10"}),
         "axis X: spacing 20.00005 mm is not a whole number of steps (0.0003 mm/step)");
-  usage(Words(base, {"--resolution-nm", "X=1000,Y=1000,Z=1000", "--spacing-mm", "10",
-                     "--max-interp-error-um", "1"}),
+  usage(Appended(base, {"--resolution-nm", "X=1000,Y=1000,Z=1000", "--spacing-mm", "10",
+                        "--max-interp-error-um", "1"}),
         "give either --spacing-mm or --max-interp-error-um, not both");
-  usage(Words(base, {"--resolution-nm", "X=1000,Y=1000,Z=1000", "--range", "X=5:1"}),
+  usage(Appended(base, {"--resolution-nm", "X=1000,Y=1000,Z=1000", "--range", "X=5:1"}),
         "--range: expected AXIS=MIN:MAX with MIN < MAX (mm), got \"X=5:1\"");
-  usage(Words(base, {"--resolution-nm", "X=1000,Y=1000,Z=1000", "--order", "third"}),
+  usage(Appended(base, {"--resolution-nm", "X=1000,Y=1000,Z=1000", "--order", "third"}),
         "--order must be first or exact (second)");
-  usage(Words(base, {"--resolution-nm", "X=1000,Y=1000,Z=1000", "--angle-scale", "big"}),
+  usage(Appended(base, {"--resolution-nm", "X=1000,Y=1000,Z=1000", "--angle-scale", "big"}),
         "option --angle-scale: \"big\" is not a number");
-  usage({"build", "model", "-o", TempPath("x.vctb")}, "missing required option --model");
+  usage({"build", "model", "-o", TempPath("build_model_x.vctb")},
+        "missing required option --model");
 }
 
 TEST(VolcompBuildModel, AModelFileThatCannotBeReadIsAFailure) {
-  const auto r = RunCli({"build", "model", "--model", "/nonexistent.conf", "-o", TempPath("x.vctb"),
-                         "--resolution-nm", "X=1000,Y=1000,Z=1000"});
+  const auto r =
+      RunCli({"build", "model", "--model", "/nonexistent.conf", "-o",
+              TempPath("build_model_x.vctb"), "--resolution-nm", "X=1000,Y=1000,Z=1000"});
   EXPECT_EQ(r.code, tools::kExitFailed);
   EXPECT_EQ(r.err, "volcomp build model: error: /nonexistent.conf: cannot open the model config\n");
 }

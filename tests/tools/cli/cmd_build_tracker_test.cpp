@@ -9,6 +9,7 @@
 #include "cli_runner.hpp"
 #include "expected_value.hpp"
 #include "sample_path.hpp"
+#include "temp_paths.hpp"
 #include "volcomp/image/image_builder.hpp"
 #include "volcomp/image/image_reader.hpp"
 #include "volcomp/tools/file_io.hpp"
@@ -16,19 +17,11 @@
 namespace volcomp {
 namespace {
 
+using testing::Appended;
 using testing::RunCli;
 using testing::SamplePath;
+using testing::TempPath;
 using testing::ValueOf;
-
-std::string TempPath(const std::string& name) {
-  return ::testing::TempDir() + "volcomp_build_tracker_" + name;
-}
-
-std::vector<std::string> Words(std::vector<std::string> base,
-                               const std::vector<std::string>& extra) {
-  base.insert(base.end(), extra.begin(), extra.end());
-  return base;
-}
 
 std::string UsageMessage(const std::string& message) {
   return "volcomp build tracker: " + message +
@@ -36,47 +29,54 @@ std::string UsageMessage(const std::string& message) {
 }
 
 TEST(VolcompBuildTracker, Methods) {
-  const std::vector<std::string> a = {
-      "build", "tracker",          "--points",        SamplePath("model/tracker_s500_315.csv"),
-      "-o",    TempPath("t.vctb"), "--resolution-nm", "X=1000,Y=1000,Z=1000"};
+  const std::vector<std::string> a = {"build",
+                                      "tracker",
+                                      "--points",
+                                      SamplePath("model/tracker_s500_315.csv"),
+                                      "-o",
+                                      TempPath("build_tracker_t.vctb"),
+                                      "--resolution-nm",
+                                      "X=1000,Y=1000,Z=1000"};
   auto r = RunCli(a);
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_EQ(r.out.rfind("volcomp build tracker\n", 0), 0u) << r.out;
   EXPECT_NE(r.out.find("  method: quasi-differential (exact inverse)\n"), std::string::npos);
-  const auto b = Words(a, {"--method", "interval"});
+  const auto b = Appended(a, {"--method", "interval"});
   r = RunCli(b);
   EXPECT_EQ(r.code, tools::kExitUsage);
   EXPECT_EQ(r.err, UsageMessage("the interval method jumps by tens of µm at every cell border (a "
                                 "trilinear grid would smear the jumps); use quasi-differential, "
                                 "or pass --allow-discontinuous"));
-  r = RunCli(Words(b, {"--allow-discontinuous"}));
+  r = RunCli(Appended(b, {"--allow-discontinuous"}));
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_NE(r.out.find("method: interval"), std::string::npos);
   // No forward map for the interval method: the inverse is not checked at the nodes.
   EXPECT_EQ(r.out.find("inverse at the nodes"), std::string::npos) << r.out;
-  r = RunCli(Words(b, {"--allow-discontinuous", "--cosines", "scaled"}));
+  r = RunCli(Appended(b, {"--allow-discontinuous", "--cosines", "scaled"}));
   EXPECT_EQ(r.code, tools::kExitUsage);
   EXPECT_EQ(r.err, UsageMessage("--cosines scaled needs the quasi-differential method: the "
                                 "interval method would stretch one cell's step length over the "
                                 "whole travel"));
   r = RunCli({"build", "tracker", "--builtin", "s500-315", "--cosines", "printed", "--method",
-              "static", "-o", TempPath("t3.vctb"), "--json", "--resolution-nm",
+              "static", "-o", TempPath("build_tracker_t3.vctb"), "--json", "--resolution-nm",
               "X=1000,Y=1000,Z=1000"});
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_NE(r.out.find("\"max_inverse_residual_um\""), std::string::npos);
-  r = RunCli({"build", "tracker", "--builtin", "s500-999", "-o", TempPath("t4.vctb")});
+  r = RunCli(
+      {"build", "tracker", "--builtin", "s500-999", "-o", TempPath("build_tracker_t4.vctb")});
   EXPECT_EQ(r.code, tools::kExitUsage);
   EXPECT_EQ(r.err, UsageMessage("--builtin must be s500-315 or s500-240"));
 }
 
 TEST(VolcompBuildTracker, LinesThatCannotMakeAModelNameTheData) {
-  const std::string path = TempPath("short.csv");
+  const std::string path = TempPath("build_tracker_short.csv");
   std::ofstream(path) << "axis,x_cmd_mm,y_cmd_mm,z_cmd_mm,x_mm,y_mm,z_mm\n"
                          "X,0,0,0,0,0,0\nX,10,0,0,10,0,0\nX,20,0,0,20,0,0\n"
                          "Y,0,0,0,0,0,0\nY,0,10,0,0,10,0\nY,0,20,0,0,20,0\n"
                          "Z,0,0,0,0,0,0\nZ,0,0,10,0,0,10\nZ,0,0,20,0,0,20\n";
-  const auto r = RunCli({"build", "tracker", "--points", path, "--static-interval", "5", "-o",
-                         TempPath("short.vctb"), "--resolution-nm", "X=1000,Y=1000,Z=1000"});
+  const auto r =
+      RunCli({"build", "tracker", "--points", path, "--static-interval", "5", "-o",
+              TempPath("build_tracker_short.vctb"), "--resolution-nm", "X=1000,Y=1000,Z=1000"});
   EXPECT_EQ(r.code, tools::kExitFailed);
   EXPECT_EQ(r.err, "volcomp build tracker: error: " + path +
                        ": tracker: static interval outside the data\n");
@@ -85,7 +85,7 @@ TEST(VolcompBuildTracker, LinesThatCannotMakeAModelNameTheData) {
 // A lattice CSV (every node of 0..40 x 0..30 x 0..20 mm every 10 mm, z raised by 1e-6·x·y mm):
 // the image holds the inverse, the report names the method; a file with a hole is refused.
 TEST(VolcompBuildTracker, Lattice) {
-  const std::string path = TempPath("lattice.csv");
+  const std::string path = TempPath("build_tracker_lattice.csv");
   {
     std::ofstream f(path);
     f << "x_cmd_mm,y_cmd_mm,z_cmd_mm,x_mm,y_mm,z_mm\n";
@@ -97,7 +97,7 @@ TEST(VolcompBuildTracker, Lattice) {
       }
     }
   }
-  const std::string out = TempPath("lattice.vctb");
+  const std::string out = TempPath("build_tracker_lattice.vctb");
   auto r = RunCli({"build", "tracker", "--lattice", path, "-o", out, "--resolution-nm",
                    "X=100,Y=100,Z=100", "--element", "float32"});
   ASSERT_EQ(r.code, 0) << r.err;
@@ -133,9 +133,9 @@ TEST(VolcompBuildTracker, Lattice) {
   for (auto& l : g.lattice) l = {2, -100000, 1000000};
   for (int n = 0; n < 8; ++n) g.correction_steps.insert(g.correction_steps.end(), {50, 0, 0});
   req.grid = g;
-  const std::string in_force = TempPath("in_force.vctb");
+  const std::string in_force = TempPath("build_tracker_in_force.vctb");
   testing::CheckOk(tools::WriteFileBytes(in_force, ValueOf(image::BuildImage(req))));
-  const std::string through = TempPath("lattice_through.csv");
+  const std::string through = TempPath("build_tracker_lattice_through.csv");
   {
     std::ofstream f(through);
     f << "x_cmd_mm,y_cmd_mm,z_cmd_mm,x_mm,y_mm,z_mm\n";
@@ -148,7 +148,7 @@ TEST(VolcompBuildTracker, Lattice) {
       }
     }
   }
-  const std::string out2 = TempPath("lattice_through.vctb");
+  const std::string out2 = TempPath("build_tracker_lattice_through.vctb");
   r = RunCli({"build", "tracker", "--lattice", through, "--through", in_force, "-o", out2,
               "--resolution-nm", "X=100,Y=100,Z=100", "--element", "float32"});
   ASSERT_EQ(r.code, 0) << r.err;

@@ -1,27 +1,24 @@
 // `volcomp evaluate diagonal` run as main() runs it, on samples/metrology/diagonals.csv.
 #include <gtest/gtest.h>
 
-#include <cstdlib>
 #include <filesystem>
 #include <string>
 
 #include "cli_runner.hpp"
+#include "sample_path.hpp"
+#include "temp_paths.hpp"
 
 namespace volcomp {
 namespace {
 
+using testing::FreshTempPath;
 using testing::RunCli;
-
-std::string RepoPath(const std::string& relative) {
-  const char* root = std::getenv("VOLCOMP_SOURCE_DIR");
-  return std::string(root ? root : ".") + "/" + relative;
-}
+using testing::SamplePath;
 
 TEST(MetrologyCli, EvaluateDiagonalSample) {
-  const auto dir = (std::filesystem::temp_directory_path() / "volcomp_evaluate_diagonal").string();
-  std::filesystem::remove_all(dir);
-  const auto r = RunCli(
-      {"evaluate", "diagonal", RepoPath("samples/metrology/diagonals.csv"), "--report", dir});
+  const std::string dir = FreshTempPath("evaluate_diagonal");
+  const auto r =
+      RunCli({"evaluate", "diagonal", SamplePath("metrology/diagonals.csv"), "--report", dir});
   EXPECT_EQ(r.code, 0) << r.err;
   EXPECT_NE(r.out.find("body diagonals (4):  E_d = "), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("face XY Z200 (2)"), std::string::npos) << r.out;
@@ -33,7 +30,7 @@ TEST(MetrologyCli, EvaluateDiagonalSample) {
 }
 
 TEST(MetrologyCli, EvaluateDiagonalJsonAndBadInput) {
-  auto r = RunCli({"evaluate", "diagonal", RepoPath("samples/metrology/diagonals.csv"), "--json"});
+  auto r = RunCli({"evaluate", "diagonal", SamplePath("metrology/diagonals.csv"), "--json"});
   EXPECT_EQ(r.code, 0) << r.err;
   EXPECT_NE(r.out.find("\"command\": \"evaluate diagonal\""), std::string::npos);
   EXPECT_NE(r.out.find("\"E_d\""), std::string::npos);

@@ -3,38 +3,24 @@
 // their exit code and message.
 #include <gtest/gtest.h>
 
-#include <cstdlib>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <string>
 #include <utility>
 
 #include "cli_runner.hpp"
+#include "file_contents.hpp"
+#include "sample_path.hpp"
+#include "temp_paths.hpp"
 #include "volcomp/tools/json_value.hpp"
 
 namespace volcomp {
 namespace {
 
+using testing::FreshTempPath;
+using testing::ReadText;
 using testing::RunCli;
-
-std::string RepoPath(const std::string& relative) {
-  const char* root = std::getenv("VOLCOMP_SOURCE_DIR");
-  return std::string(root ? root : ".") + "/" + relative;
-}
-
-std::string TempDir(const std::string& name) {
-  const auto p = std::filesystem::temp_directory_path() / ("volcomp_evaluate_positioning_" + name);
-  std::filesystem::remove_all(p);
-  return p.string();
-}
-
-std::string Read(const std::string& path) {
-  std::ifstream f(path, std::ios::binary);
-  std::stringstream s;
-  s << f.rdbuf();
-  return s.str();
-}
+using testing::SamplePath;
+using testing::SourcePath;
 
 TEST(MetrologyCli, CommandsAreRegistered) {
   for (const auto& [verb, noun] : {std::pair{"evaluate", "positioning"},
@@ -51,10 +37,9 @@ TEST(MetrologyCli, CommandsAreRegistered) {
 }
 
 TEST(MetrologyCli, EvaluatePositioningGostExampleWithReport) {
-  const std::string dir = TempDir("report");
-  const auto r =
-      RunCli({"evaluate", "positioning", RepoPath("samples/metrology/gost27843_example_long.csv"),
-              "--report", dir});
+  const std::string dir = FreshTempPath("evaluate_positioning_report");
+  const auto r = RunCli({"evaluate", "positioning",
+                         SamplePath("metrology/gost27843_example_long.csv"), "--report", dir});
   EXPECT_EQ(r.code, 0) << r.err;
   EXPECT_NE(r.out.find("A       = 18.00"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("R_max   = 13.49"), std::string::npos) << r.out;
@@ -64,21 +49,21 @@ TEST(MetrologyCli, EvaluatePositioningGostExampleWithReport) {
   EXPECT_NE(r.err.find("report written to " + html + " and " + json + "\n"), std::string::npos)
       << r.err;
   // The report's JSON is the command's --json output.
-  const auto j = RunCli({"evaluate", "positioning",
-                         RepoPath("samples/metrology/gost27843_example_long.csv"), "--json"});
-  EXPECT_EQ(Read(json), j.out);
+  const auto j = RunCli(
+      {"evaluate", "positioning", SamplePath("metrology/gost27843_example_long.csv"), "--json"});
+  EXPECT_EQ(ReadText(json), j.out);
   // Again into the same directory: the earlier report is replaced, and said so.
-  const auto again =
-      RunCli({"evaluate", "positioning", RepoPath("samples/metrology/gost27843_example_long.csv"),
-              "--report", dir});
+  const auto again = RunCli({"evaluate", "positioning",
+                             SamplePath("metrology/gost27843_example_long.csv"), "--report", dir});
   EXPECT_NE(again.err.find("(replacing the earlier report of that name)"), std::string::npos);
   std::filesystem::remove_all(dir);
 }
 
 TEST(MetrologyCli, EvaluatePositioningJsonBothStandards) {
-  const auto r = RunCli({"evaluate", "positioning",
-                         RepoPath("tests/tools/metrology/data/gost27843_example_reconstructed.csv"),
-                         "--json", "--standard", "both"});
+  const auto r =
+      RunCli({"evaluate", "positioning",
+              SourcePath("tests/tools/metrology/data/gost27843_example_reconstructed.csv"),
+              "--json", "--standard", "both"});
   EXPECT_EQ(r.code, 0) << r.err;
   EXPECT_NE(r.out.find("\"standard\": \"GOST 27843-88\""), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("\"standard\": \"ISO 230-2:2014\""), std::string::npos);
@@ -93,7 +78,7 @@ TEST(MetrologyCli, EvaluatePositioningJsonBothStandards) {
 
 // Every figure of the text is in the JSON: the text printed from the JSON read back is the text.
 TEST(MetrologyCli, EvaluatePositioningTextIsALayoutOfTheJson) {
-  const std::string file = RepoPath("samples/metrology/gost27843_example_long.csv");
+  const std::string file = SamplePath("metrology/gost27843_example_long.csv");
   const auto text = RunCli({"evaluate", "positioning", file, "--standard", "both"});
   const auto json = RunCli({"evaluate", "positioning", file, "--standard", "both", "--json"});
   ASSERT_EQ(text.code, 0);
@@ -117,8 +102,8 @@ TEST(MetrologyCli, EvaluatePositioningTextIsALayoutOfTheJson) {
 }
 
 TEST(MetrologyCli, EvaluateRotaryTablePositioningChecksCardinalAngles) {
-  const auto r = RunCli(
-      {"evaluate", "positioning", RepoPath("samples/metrology/rotary_table_positioning.csv")});
+  const auto r =
+      RunCli({"evaluate", "positioning", SamplePath("metrology/rotary_table_positioning.csv")});
   EXPECT_EQ(r.code, 0) << r.err;
   EXPECT_NE(r.out.find("rotary axis, 12 target positions"), std::string::npos) << r.out;
   EXPECT_EQ(r.err.find("§2.8"), std::string::npos) << r.err;  // 0/90/180/270 present
@@ -126,7 +111,7 @@ TEST(MetrologyCli, EvaluateRotaryTablePositioningChecksCardinalAngles) {
 
 TEST(MetrologyCli, EvaluatePositioningReadsStandardInput) {
   const auto r = RunCli({"evaluate", "positioning", "-"},
-                        Read(RepoPath("samples/metrology/gost27843_example_long.csv")));
+                        ReadText(SamplePath("metrology/gost27843_example_long.csv")));
   EXPECT_EQ(r.code, 0) << r.err;
   EXPECT_NE(r.out.find("positioning test: <stdin>\n"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("A       = 18.00"), std::string::npos);

@@ -9,19 +9,17 @@
 #include <vector>
 
 #include "cli_runner.hpp"
+#include "temp_paths.hpp"
 
 namespace volcomp {
 namespace {
 
 using testing::RunCli;
-
-std::string TempPath(const std::string& name) {
-  return ::testing::TempDir() + "volcomp_export_linuxcnc_" + name;
-}
+using testing::TempPath;
 
 // dev = +10 um moving up, -6 um moving down, at 0, 50, 100 mm; two runs each.
 std::string RawReadings() {
-  const std::string csv = TempPath("raw.csv");
+  const std::string csv = TempPath("export_linuxcnc_raw.csv");
   std::ofstream(csv) << "target_mm,direction,run,deviation_um\n"
                         "0,up,1,10\n50,up,1,10\n100,up,1,10\n100,down,1,-6\n50,down,1,-6\n"
                         "0,down,1,-6\n0,up,2,10\n50,up,2,10\n100,up,2,10\n100,down,2,-6\n"
@@ -31,7 +29,7 @@ std::string RawReadings() {
 
 TEST(VolcompExportLinuxcnc, FromRawReadings) {
   const std::string csv = RawReadings();
-  const std::string dir = TempPath("lcnc");
+  const std::string dir = TempPath("export_linuxcnc_lcnc");
   // Two runs: refused unless --allow-few-runs (GOST 27843 and ISO 230-2 ask for five).
   auto r = RunCli({"export", "linuxcnc", "--z", csv, "-o", dir});
   EXPECT_EQ(r.code, tools::kExitFailed);
@@ -62,7 +60,7 @@ TEST(VolcompExportLinuxcnc, FromRawReadings) {
 
 TEST(VolcompExportLinuxcnc, OptionsAreChecked) {
   const std::string csv = RawReadings();
-  const std::string dir = TempPath("lcnc_opts");
+  const std::string dir = TempPath("export_linuxcnc_lcnc_opts");
   const auto usage = [](const std::vector<std::string>& words, const std::string& message) {
     const auto r = RunCli(words);
     EXPECT_EQ(r.code, tools::kExitUsage) << message;

@@ -10,17 +10,28 @@
 
 #include "cli_runner.hpp"
 #include "expected_value.hpp"
+#include "file_contents.hpp"
+#include "node_grid_csv.hpp"
+#include "temp_paths.hpp"
 #include "volcomp/tools/csv.hpp"
 
 namespace volcomp {
 namespace {
 
+using testing::kSmallGridCsv;
+using testing::ReadText;
 using testing::RunCli;
+using testing::TempPath;
 using testing::ValueOf;
+using testing::WriteText;
 
-std::string TempPath(const std::string& name) { return ::testing::TempDir() + "/volcomp_" + name; }
-
-void WriteFile(const std::string& path, const std::string& text) { std::ofstream(path) << text; }
+// Writes the small grid CSV to `csv` and builds `img` from it (1000 steps per mm); the exit code.
+int BuildSmallGrid(const std::string& csv, const std::string& img) {
+  WriteText(csv, kSmallGridCsv);
+  return RunCli(
+             {"build", "grid", "--csv", csv, "-o", img, "--steps-per-unit", "X=1000,Y=1000,Z=1000"})
+      .code;
+}
 
 // A random lattice: nx x ny x nz nodes, spacing in mm, resolutions in nm (X, Y, Z).
 struct Lattice {
@@ -80,8 +91,8 @@ double Reference(const Lattice& l, const double p_mm[3], int c) {
 TEST(VolcompCli, BuildGridThenLookupAgreesWithDoubleReference) {
   std::mt19937_64 rng(21);
   const Lattice l = MakeLattice(rng);
-  const std::string csv = TempPath("grid.csv"), img = TempPath("grid.vct");
-  WriteFile(csv, LatticeCsv(l));
+  const std::string csv = TempPath("lookup_grid.csv"), img = TempPath("lookup_grid.vct");
+  WriteText(csv, LatticeCsv(l));
   for (const char* element : {"int16", "int32", "float32"}) {
     // Resolutions: X 1 um, Y 0.5 um, Z 0.25 um per step.
     auto r = RunCli({"build", "grid", "--csv", csv, "-o", img, "--resolution-nm",
@@ -135,22 +146,11 @@ TEST(VolcompCli, BuildGridThenLookupAgreesWithDoubleReference) {
 }
 
 TEST(VolcompCli, InspectAndLookupRefuseCorruptImages) {
-  const std::string csv = TempPath("ok.csv"), img = TempPath("ok.vct");
-  WriteFile(csv,
-            "x_steps,y_steps,z_steps,dx_steps,dy_steps,dz_steps\n0,0,0,1,2,3\n10,0,0,1,2,3\n"
-            "0,10,0,1,2,3\n10,10,0,1,2,3\n0,0,10,1,2,3\n10,0,10,1,2,3\n0,10,10,1,2,3\n"
-            "10,10,10,1,2,3\n");
-  ASSERT_EQ(
-      RunCli({"build", "grid", "--csv", csv, "-o", img, "--steps-per-unit", "X=1000,Y=1000,Z=1000"})
-          .code,
-      0);
-  std::string bytes;
-  {
-    std::ifstream f(img, std::ios::binary);
-    bytes.assign(std::istreambuf_iterator<char>(f), {});
-  }
+  const std::string csv = TempPath("lookup_ok.csv"), img = TempPath("lookup_ok.vct");
+  ASSERT_EQ(BuildSmallGrid(csv, img), 0);
+  std::string bytes = ReadText(img);
   bytes[30] = static_cast<char>(bytes[30] ^ 0x40);
-  WriteFile(img, bytes);
+  WriteText(img, bytes);
   auto r = RunCli({"inspect", img});
   EXPECT_EQ(r.code, 1);
   EXPECT_NE(r.err.find("image CRC-32 does not match (kImageBadCrc)"), std::string::npos) << r.err;
@@ -160,21 +160,14 @@ TEST(VolcompCli, InspectAndLookupRefuseCorruptImages) {
             std::string::npos)
       << r.err;
   EXPECT_EQ(r.out, "");
-  WriteFile(img, bytes.substr(0, 20));
+  WriteText(img, bytes.substr(0, 20));
   r = RunCli({"inspect", img});
   EXPECT_NE(r.err.find("kImageTooShort"), std::string::npos) << r.err;
 }
 
 TEST(VolcompCli, LookupMissingColumnNamesIt) {
-  const std::string csv = TempPath("ok2.csv"), img = TempPath("ok2.vct");
-  WriteFile(csv,
-            "x_steps,y_steps,z_steps,dx_steps,dy_steps,dz_steps\n0,0,0,1,2,3\n10,0,0,1,2,3\n"
-            "0,10,0,1,2,3\n10,10,0,1,2,3\n0,0,10,1,2,3\n10,0,10,1,2,3\n0,10,10,1,2,3\n"
-            "10,10,10,1,2,3\n");
-  ASSERT_EQ(
-      RunCli({"build", "grid", "--csv", csv, "-o", img, "--steps-per-unit", "X=1000,Y=1000,Z=1000"})
-          .code,
-      0);
+  const std::string csv = TempPath("lookup_ok2.csv"), img = TempPath("lookup_ok2.vct");
+  ASSERT_EQ(BuildSmallGrid(csv, img), 0);
   const auto r = RunCli({"lookup", img}, "x_mm,y_mm\n1,1\n");
   EXPECT_EQ(r.code, 1);
   EXPECT_NE(r.err.find("<stdin>:1: missing column \"z_steps\" or \"z_mm\" for axis Z"),

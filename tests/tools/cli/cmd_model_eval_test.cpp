@@ -7,18 +7,16 @@
 #include <string>
 
 #include "cli_runner.hpp"
+#include "temp_paths.hpp"
 
 namespace volcomp {
 namespace {
 
 using testing::RunCli;
-
-std::string TempPath(const std::string& name) {
-  return ::testing::TempDir() + "volcomp_model_eval_" + name;
-}
+using testing::TempPath;
 
 TEST(VolcompModelEval, ForwardAndInverse) {
-  const std::string points = TempPath("points.csv");
+  const std::string points = TempPath("model_eval_points.csv");
   std::ofstream(points) << "x_mm,y_mm,z_mm\n300,150,50\n";
   // Appendix А in the dissertation formulation: 54.789039 µm (printed δ).
   auto r = RunCli({"model", "eval", "--model", "s500", "--formulation", "dissertation", "--order",
@@ -38,7 +36,7 @@ TEST(VolcompModelEval, ForwardAndInverse) {
 }
 
 TEST(VolcompModelEval, WritesTheFileGiven) {
-  const std::string points = TempPath("p2.csv"), out = TempPath("out.csv");
+  const std::string points = TempPath("model_eval_p2.csv"), out = TempPath("model_eval_out.csv");
   std::ofstream(points) << "x_mm,y_mm,z_mm,label\n0,0,0,a\n400,280,200,b\n";
   const auto r = RunCli({"model", "eval", "--model", "s500", points, "-o", out});
   ASSERT_EQ(r.code, 0) << r.err;
@@ -52,7 +50,7 @@ TEST(VolcompModelEval, WritesTheFileGiven) {
 }
 
 TEST(VolcompModelEval, BadInputIsNamed) {
-  const std::string points = TempPath("bad.csv");
+  const std::string points = TempPath("model_eval_bad.csv");
   std::ofstream(points) << "x_mm,y_mm\n1,2\n";
   auto r = RunCli({"model", "eval", "--model", "s500", points});
   EXPECT_EQ(r.code, tools::kExitFailed);

@@ -2,29 +2,26 @@
 // name, every value before and after with its reduction as text or JSON, and the HTML page.
 #include <gtest/gtest.h>
 
-#include <cstdlib>
 #include <filesystem>
 #include <string>
 
 #include "cli_runner.hpp"
+#include "sample_path.hpp"
+#include "temp_paths.hpp"
 #include "volcomp/tools/json_value.hpp"
 
 namespace volcomp {
 namespace {
 
+using testing::FreshTempPath;
 using testing::RunCli;
-
-std::string RepoPath(const std::string& relative) {
-  const char* root = std::getenv("VOLCOMP_SOURCE_DIR");
-  return std::string(root ? root : ".") + "/" + relative;
-}
+using testing::SamplePath;
 
 TEST(MetrologyCli, ReportCompareOfTheSameResultsShowsNoReduction) {
-  const auto dir = (std::filesystem::temp_directory_path() / "volcomp_report_compare").string();
-  std::filesystem::remove_all(dir);
+  const std::string dir = FreshTempPath("report_compare");
   for (const char* when : {"/before", "/after"}) {
-    ASSERT_EQ(RunCli({"evaluate", "diagonal", RepoPath("samples/metrology/diagonals.csv"),
-                      "--report", dir + when})
+    ASSERT_EQ(RunCli({"evaluate", "diagonal", SamplePath("metrology/diagonals.csv"), "--report",
+                      dir + when})
                   .code,
               0);
   }

@@ -3,7 +3,6 @@
 // reports, data in the shapes users have (';' and decimal comma) evaluate like plain CSV.
 #include <gtest/gtest.h>
 
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -12,40 +11,28 @@
 #include <sstream>
 
 #include "cli_runner.hpp"
+#include "file_contents.hpp"
+#include "sample_path.hpp"
+#include "temp_paths.hpp"
 
 namespace volcomp::tools {
 namespace {
+
+using volcomp::testing::ReadText;
+using volcomp::testing::SamplePath;
+using volcomp::testing::ScratchDir;
+using volcomp::testing::WriteText;
 
 using Result = volcomp::testing::CliResult;
 
 Result Volcomp(const std::vector<std::string>& words) { return volcomp::testing::RunCli(words); }
 
-std::string RepoPath(const std::string& relative) {
-  const char* root = std::getenv("VOLCOMP_SOURCE_DIR");
-  return std::string(root ? root : ".") + "/" + relative;
+// The GOST 27843 worked example (samples/metrology) with the first `from` replaced by `to`.
+std::string GostExampleWith(const std::string& from, const std::string& to) {
+  std::string csv = ReadText(SamplePath("metrology/gost27843_example_long.csv"));
+  csv.replace(csv.find(from), from.size(), to);
+  return csv;
 }
-
-std::string Read(const std::string& path) {
-  std::ifstream f(path, std::ios::binary);
-  std::stringstream s;
-  s << f.rdbuf();
-  return s.str();
-}
-
-void Write(const std::string& path, const std::string& text) {
-  std::ofstream(path, std::ios::binary) << text;
-}
-
-struct Scratch {
-  std::filesystem::path dir;
-  explicit Scratch(const std::string& name)
-      : dir(std::filesystem::temp_directory_path() / ("volcomp_workflow_" + name)) {
-    std::filesystem::remove_all(dir);
-    std::filesystem::create_directories(dir);
-  }
-  ~Scratch() { std::filesystem::remove_all(dir); }
-  std::string operator/(const std::string& f) const { return (dir / f).string(); }
-};
 
 // Fills the empty last cell of every data row of a template with a reading from `value`
 // (target, direction, run), and the empty `# key:` lines with `conditions`.
@@ -88,14 +75,14 @@ double Reading(double target, const std::string& dir, int run) {
 
 // X, Y and Z evaluated into one directory: each keeps its report (named by its axis).
 TEST(MetrologyWorkflow, ReportsOfSeveralAxesShareADirectory) {
-  Scratch s("axes");
+  ScratchDir s("workflow_axes");
   for (const char* axis : {"X", "Y", "Z"}) {
     const std::string csv = s / (std::string(axis) + "_readings.csv");
     ASSERT_EQ(Volcomp({"program", "positioning", "--axis", axis, "--start", "10", "--end", "390",
                        "--pitch", "5", "-o", s / "p.ngc", "--targets-csv", csv})
                   .code,
               0);
-    Write(csv, Fill(Read(csv), Reading));
+    WriteText(csv, Fill(ReadText(csv), Reading));
     const Result r = Volcomp({"evaluate", "positioning", csv, "--report", s / "before"});
     ASSERT_EQ(r.code, 0) << r.err;
   }
@@ -107,28 +94,28 @@ TEST(MetrologyWorkflow, ReportsOfSeveralAxesShareADirectory) {
 
 // Issue defect 6: re-running `program positioning --targets-csv F` overwrote F with its readings.
 TEST(MetrologyWorkflow, ATemplateWithReadingsIsNotOverwritten) {
-  Scratch s("overwrite");
+  ScratchDir s("workflow_overwrite");
   const std::string csv = s / "x_readings.csv";
   const std::vector<std::string> program = {"program", "positioning", "--axis",        "X",
                                             "--end",   "390",         "--pitch",       "5",
                                             "-o",      s / "x.ngc",   "--targets-csv", csv};
   ASSERT_EQ(Volcomp(program).code, 0);
   ASSERT_EQ(Volcomp(program).code, 0);  // an empty template may be written again
-  const std::string filled = Fill(Read(csv), Reading);
-  Write(csv, filled);
+  const std::string filled = Fill(ReadText(csv), Reading);
+  WriteText(csv, filled);
   const Result again = Volcomp(program);
   EXPECT_EQ(again.code, kExitFailed);
   EXPECT_NE(again.err.find(csv + " already holds readings (line "), std::string::npos) << again.err;
   EXPECT_NE(again.err.find("--force"), std::string::npos);
-  EXPECT_EQ(Read(csv), filled);
+  EXPECT_EQ(ReadText(csv), filled);
   auto forced = program;
   forced.push_back("--force");
   EXPECT_EQ(Volcomp(forced).code, 0);
-  EXPECT_NE(Read(csv), filled);
+  EXPECT_NE(ReadText(csv), filled);
 
   // The same protection for diagonal templates.
   const std::string diag = s / "diag.csv";
-  Write(diag, "diagonal,target_mm,direction,run,deviation_um\nNNN,0,up,1,2.5\n");
+  WriteText(diag, "diagonal,target_mm,direction,run,deviation_um\nNNN,0,up,1,2.5\n");
   const Result d = Volcomp({"program", "diagonal", "--p1", "0,0,0", "--p2", "100,100,100",
                             "--increment-mm", "20", "-o", s / "d.ngc", "--targets-csv", diag});
   EXPECT_EQ(d.code, kExitFailed);
@@ -144,16 +131,17 @@ TEST(MetrologyWorkflow, DiagonalNameIsCheckedAndDerived) {
   EXPECT_NE(r.err.find("does not name the diagonal from P1 to P2, which starts at the -X-Y-Z"),
             std::string::npos)
       << r.err;
-  Scratch s("name");
+  ScratchDir s("workflow_name");
   r = Volcomp({"program", "diagonal", "--p1", "390,10,10", "--p2", "10,270,190", "--increment-mm",
                "50", "-o", s / "d.ngc", "--targets-csv", s / "d.csv"});
   ASSERT_EQ(r.code, 0) << r.err;
-  EXPECT_NE(Read(s / "d.ngc").find("diagonal test +X-Y-Z"), std::string::npos);
-  EXPECT_NE(Read(s / "d.csv").find("\nPNN,0.000,up,1,\n"), std::string::npos) << Read(s / "d.csv");
+  EXPECT_NE(ReadText(s / "d.ngc").find("diagonal test +X-Y-Z"), std::string::npos);
+  EXPECT_NE(ReadText(s / "d.csv").find("\nPNN,0.000,up,1,\n"), std::string::npos)
+      << ReadText(s / "d.csv");
 }
 
 TEST(MetrologyWorkflow, BoxGivesFourDiagonalsAndATemplateEvaluateReads) {
-  Scratch s("box");
+  ScratchDir s("workflow_box");
   const Result r =
       Volcomp({"program", "diagonal", "--box", "10,10,10:390,270,190", "--increment-mm", "50", "-o",
                s / "diag.ngc", "--targets-csv", s / "diagonals.csv"});
@@ -162,10 +150,11 @@ TEST(MetrologyWorkflow, BoxGivesFourDiagonalsAndATemplateEvaluateReads) {
     EXPECT_TRUE(std::filesystem::exists(s / ("diag_" + std::string(token) + ".ngc"))) << token;
   }
   // The title comment names the diagonal and its ends (brackets: RS274NGC comments do not nest).
-  EXPECT_NE(
-      Read(s / "diag_PPN.ngc").find("diagonal test +X+Y-Z from [390, 270, 10] to [10, 10, 190]"),
-      std::string::npos);
-  Write(s / "diagonals.csv", Fill(Read(s / "diagonals.csv"), Reading, {{"machine", "MILL-7"}}));
+  EXPECT_NE(ReadText(s / "diag_PPN.ngc")
+                .find("diagonal test +X+Y-Z from [390, 270, 10] to [10, 10, 190]"),
+            std::string::npos);
+  WriteText(s / "diagonals.csv",
+            Fill(ReadText(s / "diagonals.csv"), Reading, {{"machine", "MILL-7"}}));
   const Result e = Volcomp({"evaluate", "diagonal", s / "diagonals.csv", "--report", s / "before"});
   ASSERT_EQ(e.code, 0) << e.err;
   EXPECT_NE(e.out.find("body diagonals (4)"), std::string::npos) << e.out;
@@ -177,53 +166,53 @@ TEST(MetrologyWorkflow, BoxGivesFourDiagonalsAndATemplateEvaluateReads) {
 }
 
 TEST(MetrologyWorkflow, TestConditionsReachTheReports) {
-  Scratch s("conditions");
+  ScratchDir s("workflow_conditions");
   const std::string csv = s / "x.csv";
   ASSERT_EQ(Volcomp({"program", "positioning", "--axis", "X", "--end", "390", "--pitch", "5",
                      "--targets-csv", csv, "-o", s / "x.ngc"})
                 .code,
             0);
-  const std::string tmpl = Read(csv);
+  const std::string tmpl = ReadText(csv);
   for (const char* key :
        {"# machine:\n", "# axis: X\n", "# date:\n", "# operator:\n", "# instrument:\n",
         "# air temperature C:\n", "# material temperature C:\n"}) {
     EXPECT_NE(tmpl.find(key), std::string::npos) << key << tmpl.substr(0, 600);
   }
-  Write(csv, Fill(tmpl, Reading,
-                  {{"machine", "MILL-7"},
-                   {"operator", "N. N."},
-                   {"instrument", "XL-80 #1234"},
-                   {"air temperature C", "20.4"},
-                   {"material temperature C", "20.9"}}));
+  WriteText(csv, Fill(tmpl, Reading,
+                      {{"machine", "MILL-7"},
+                       {"operator", "N. N."},
+                       {"instrument", "XL-80 #1234"},
+                       {"air temperature C", "20.4"},
+                       {"material temperature C", "20.9"}}));
   const Result r = Volcomp({"evaluate", "positioning", csv, "--report", s / "r"});
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_NE(r.out.find("conditions: machine MILL-7; axis X;"), std::string::npos) << r.out;
-  const std::string html = Read(s / "r/positioning_X.html");
+  const std::string html = ReadText(s / "r/positioning_X.html");
   EXPECT_NE(html.find("<td>air temperature C</td><td>20.4</td>"), std::string::npos);
   EXPECT_NE(html.find("XL-80 #1234"), std::string::npos);
-  const std::string json = Read(s / "r/positioning_X.json");
+  const std::string json = ReadText(s / "r/positioning_X.json");
   EXPECT_NE(json.find("\"material temperature C\": \"20.9\""), std::string::npos) << json;
 
   // The same for a rotary error-motion record.
-  Write(s / "spindle.csv", "# machine: MILL-7\n# instrument: capacitive probes\n" +
-                               Read(RepoPath("samples/metrology/spindle_error_motion.csv")));
+  WriteText(s / "spindle.csv", "# machine: MILL-7\n# instrument: capacitive probes\n" +
+                                   ReadText(SamplePath("metrology/spindle_error_motion.csv")));
   const Result rot = Volcomp({"evaluate", "rotary", s / "spindle.csv", "--report", s / "r"});
   ASSERT_EQ(rot.code, 0) << rot.err;
   EXPECT_NE(rot.out.find("conditions: machine MILL-7; instrument capacitive probes"),
             std::string::npos);
-  EXPECT_NE(Read(s / "r/rotary_spindle.json").find("\"instrument\": \"capacitive probes\""),
+  EXPECT_NE(ReadText(s / "r/rotary_spindle.json").find("\"instrument\": \"capacitive probes\""),
             std::string::npos);
 }
 
 // ';' separated with decimal commas (Russian/European Excel) evaluates like the plain file.
 TEST(MetrologyWorkflow, SemicolonAndDecimalCommaEvaluateLikePlainCsv) {
-  Scratch s("comma");
-  const std::string plain = Read(RepoPath("samples/metrology/gost27843_example_long.csv"));
+  ScratchDir s("workflow_comma");
+  const std::string plain = ReadText(SamplePath("metrology/gost27843_example_long.csv"));
   std::string eu;
   for (char c : plain) eu += c == ',' ? ';' : c == '.' ? ',' : c;
-  Write(s / "eu.csv", eu);
-  const Result a = Volcomp({"evaluate", "positioning",
-                            RepoPath("samples/metrology/gost27843_example_long.csv"), "--json"});
+  WriteText(s / "eu.csv", eu);
+  const Result a = Volcomp(
+      {"evaluate", "positioning", SamplePath("metrology/gost27843_example_long.csv"), "--json"});
   const Result b = Volcomp({"evaluate", "positioning", s / "eu.csv", "--json"});
   ASSERT_EQ(b.code, 0) << b.err;
   const auto strip = [](std::string j) {
@@ -235,10 +224,8 @@ TEST(MetrologyWorkflow, SemicolonAndDecimalCommaEvaluateLikePlainCsv) {
 
 // Issue defect 7: a reading of 1e300 gave exit 0 and "n/a" in the report.
 TEST(MetrologyWorkflow, ANonFiniteResultIsARefusalNamingTheLine) {
-  Scratch s("huge");
-  std::string csv = Read(RepoPath("samples/metrology/gost27843_example_long.csv"));
-  csv.replace(csv.find("0,up,1,-2.6"), 11, "0,up,1,1e300");
-  Write(s / "huge.csv", csv);
+  ScratchDir s("workflow_huge");
+  WriteText(s / "huge.csv", GostExampleWith("0,up,1,-2.6", "0,up,1,1e300"));
   const Result r = Volcomp({"evaluate", "positioning", s / "huge.csv", "--report", s / "r"});
   EXPECT_EQ(r.code, kExitFailed);
   EXPECT_NE(r.err.find("huge.csv:3: column \"deviation_um\""), std::string::npos) << r.err;
@@ -247,38 +234,36 @@ TEST(MetrologyWorkflow, ANonFiniteResultIsARefusalNamingTheLine) {
 
 // Issue defect 7: µm readings in a deviation_mm column gave A = 18,004 µm without a warning.
 TEST(MetrologyWorkflow, ImplausibleMagnitudeIsWarnedInStderrAndTheReport) {
-  Scratch s("mm");
-  std::string csv = Read(RepoPath("samples/metrology/gost27843_example_long.csv"));
-  csv.replace(csv.find("deviation_um"), 12, "deviation_mm");
-  Write(s / "mm.csv", csv);
+  ScratchDir s("workflow_mm");
+  WriteText(s / "mm.csv", GostExampleWith("deviation_um", "deviation_mm"));
   const Result r = Volcomp({"evaluate", "positioning", s / "mm.csv", "--report", s / "r"});
   EXPECT_EQ(r.code, 0);
   EXPECT_NE(r.err.find("warning: " + (s / "mm.csv") + ":3: column \"deviation_mm\""),
             std::string::npos)
       << r.err;
   EXPECT_NE(r.err.find("name the column deviation_um"), std::string::npos);
-  EXPECT_NE(Read(s / "r/positioning_mm.html").find("name the column deviation_um"),
+  EXPECT_NE(ReadText(s / "r/positioning_mm.html").find("name the column deviation_um"),
             std::string::npos);
 }
 
 // The before/after page: every deviation scaled by 0.1 after the compensation scales every
 // positioning parameter by 0.1, so each reduction is 90.0 %; a result without a partner is named.
 TEST(MetrologyWorkflow, ReportCompareShowsReductions) {
-  Scratch s("compare");
+  ScratchDir s("workflow_compare");
   for (const char* axis : {"X", "Y"}) {
     const std::string csv = s / (std::string(axis) + ".csv");
     ASSERT_EQ(Volcomp({"program", "positioning", "--axis", axis, "--end", "390", "--pitch", "5",
                        "-o", s / "p.ngc", "--targets-csv", csv, "--force"})
                   .code,
               0);
-    const std::string tmpl = Read(csv);
-    Write(csv, Fill(tmpl, Reading, {{"air temperature C", "20.1"}}));
+    const std::string tmpl = ReadText(csv);
+    WriteText(csv, Fill(tmpl, Reading, {{"air temperature C", "20.1"}}));
     ASSERT_EQ(
         Volcomp({"evaluate", "positioning", csv, "--standard", "both", "--report", s / "before"})
             .code,
         0);
     if (std::string(axis) == "Y") continue;  // Y is not measured after
-    Write(
+    WriteText(
         csv,
         Fill(tmpl, [](double t, const std::string& d, int run) { return 0.1 * Reading(t, d, run); },
              {{"air temperature C", "20.6"}}));
@@ -302,7 +287,7 @@ TEST(MetrologyWorkflow, ReportCompareShowsReductions) {
     EXPECT_NE(line.find("90.0 %"), std::string::npos) << line;
   }
   EXPECT_EQ(rows, 9 + 12);  // GOST 27843 and ISO 230-2 parameters
-  const std::string html = Read(s / "cmp/compare.html");
+  const std::string html = ReadText(s / "cmp/compare.html");
   EXPECT_NE(html.find("<td>air temperature C</td><td>20.1</td><td>20.6</td>"), std::string::npos);
   EXPECT_EQ(Volcomp({"report", "compare", s / "before", s / "nothing", "-o", s / "c2"}).code,
             kExitFailed);

@@ -5,25 +5,20 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
-#include <fstream>
 #include <sstream>
 #include <string>
 
+#include "file_contents.hpp"
+#include "temp_paths.hpp"
 #include "test_support.hpp"
 
 namespace volcomp::metrology {
 namespace {
 
 using testing::ExpectFailure;
-using testing::Must;
-
-std::string Temp(const std::string& name) {
-  return (std::filesystem::temp_directory_path() / ("volcomp_compare_test_" + name)).string();
-}
-
-void Write(const std::string& path, const std::string& text) {
-  std::ofstream(path, std::ios::binary) << text;
-}
+using testing::ValueOf;
+using volcomp::testing::FreshTempPath;
+using volcomp::testing::WriteText;
 
 // A diagonal result with E_i and B_i of one diagonal and of the body group.
 std::string Diagonal(double e, double b) {
@@ -37,15 +32,14 @@ std::string Diagonal(double e, double b) {
 }
 
 TEST(MetrologyCompare, PairsByNameAndReportsReductions) {
-  const std::string dir = Temp("pairs");
-  std::filesystem::remove_all(dir);
+  const std::string dir = FreshTempPath("compare_test_pairs");
   std::filesystem::create_directories(dir + "/before");
   std::filesystem::create_directories(dir + "/after");
-  Write(dir + "/before/diagonal_PPP.json", Diagonal(10.0, 4.0));
-  Write(dir + "/after/diagonal_PPP.json", Diagonal(1.0, 0.0));
-  Write(dir + "/before/diagonal_NNN.json", Diagonal(2.0, 2.0));
-  const Comparison c =
-      Must(CompareResults(Must(LoadResults(dir + "/before")), Must(LoadResults(dir + "/after"))));
+  WriteText(dir + "/before/diagonal_PPP.json", Diagonal(10.0, 4.0));
+  WriteText(dir + "/after/diagonal_PPP.json", Diagonal(1.0, 0.0));
+  WriteText(dir + "/before/diagonal_NNN.json", Diagonal(2.0, 2.0));
+  const Comparison c = ValueOf(
+      CompareResults(ValueOf(LoadResults(dir + "/before")), ValueOf(LoadResults(dir + "/after"))));
   ASSERT_EQ(c.results.size(), 1u);
   ASSERT_EQ(c.warnings.size(), 1u);
   EXPECT_NE(c.warnings[0].find("diagonal_NNN"), std::string::npos);
@@ -63,27 +57,26 @@ TEST(MetrologyCompare, PairsByNameAndReportsReductions) {
 }
 
 TEST(MetrologyCompare, WhatCannotBeReadOrPairedIsAFailure) {
-  const std::string dir = Temp("bad");
-  std::filesystem::remove_all(dir);
+  const std::string dir = FreshTempPath("compare_test_bad");
   std::filesystem::create_directories(dir);
   ExpectFailure(LoadResults(dir + "/none"), Error::kInputInvalid,
                 {dir + "/none: no such report directory or result file"});
   ExpectFailure(LoadResults(dir), Error::kInputInvalid,
                 {dir + ": no positioning or diagonal results (*.json)"});
-  Write(dir + "/other.json", "{\"command\": \"evaluate rotary\"}");
+  WriteText(dir + "/other.json", "{\"command\": \"evaluate rotary\"}");
   ExpectFailure(LoadResults(dir + "/other.json"), Error::kInputInvalid,
                 {dir + "/other.json: not a result of `volcomp evaluate positioning`"});
-  Write(dir + "/broken.json", "{\"command\": ");
+  WriteText(dir + "/broken.json", "{\"command\": ");
   ExpectFailure(LoadResults(dir + "/broken.json"), Error::kInputInvalid,
                 {dir + "/broken.json: line 1: "});
-  Write(dir + "/a.json", Diagonal(1.0, 1.0));
-  Write(dir + "/b.json", Diagonal(1.0, 1.0));
-  const auto a = Must(LoadResults(dir + "/a.json"));
-  EXPECT_TRUE(CompareResults(a, Must(LoadResults(dir + "/b.json"))).ok());  // two files pair
+  WriteText(dir + "/a.json", Diagonal(1.0, 1.0));
+  WriteText(dir + "/b.json", Diagonal(1.0, 1.0));
+  const auto a = ValueOf(LoadResults(dir + "/a.json"));
+  EXPECT_TRUE(CompareResults(a, ValueOf(LoadResults(dir + "/b.json"))).ok());  // two files pair
   std::vector<LoadedResult> renamed = a;
   renamed.push_back(renamed[0]);
   renamed[1].name = "z";
-  std::vector<LoadedResult> other = Must(LoadResults(dir + "/b.json"));
+  std::vector<LoadedResult> other = ValueOf(LoadResults(dir + "/b.json"));
   other[0].name = "q";
   other.push_back(other[0]);
   other[1].name = "r";

@@ -14,11 +14,11 @@ namespace {
 
 using testing::Csv;
 using testing::ExpectFailure;
-using testing::Must;
+using testing::ValueOf;
 
 TEST(MetrologyDiagonalPlan, TargetsAndAxisIncrementsOfSection5_2) {
   // 3-4-12 box: D = 13·50 = 650 mm.
-  const DiagonalPlan p = Must(PlanDiagonal({0, 0, 0}, {150, 200, 600}, 65.0));
+  const DiagonalPlan p = ValueOf(PlanDiagonal({0, 0, 0}, {150, 200, 600}, 65.0));
   EXPECT_NEAR(p.length_mm, 650.0, 1e-9);
   EXPECT_EQ(p.steps, 10);
   EXPECT_NEAR(p.increment_mm, 65.0, 1e-12);
@@ -31,13 +31,13 @@ TEST(MetrologyDiagonalPlan, TargetsAndAxisIncrementsOfSection5_2) {
   EXPECT_NEAR(p.distances.back(), 650.0, 1e-12);
   EXPECT_TRUE(p.warnings.empty());
   // An increment that does not divide D is rounded (650/90 = 7.2 -> 7 steps), with a warning.
-  const DiagonalPlan q = Must(PlanDiagonal({0, 0, 0}, {150, 200, 600}, 90.0));
+  const DiagonalPlan q = ValueOf(PlanDiagonal({0, 0, 0}, {150, 200, 600}, 90.0));
   EXPECT_EQ(q.steps, 7);
   EXPECT_NEAR(q.increment_mm, 650.0 / 7, 1e-12);
   ASSERT_FALSE(q.warnings.empty());
   EXPECT_NE(q.warnings[0].find("increment adjusted"), std::string::npos);
   // Too few targets: 2 m diagonal, 500 mm increment -> 5 targets, 10 needed.
-  const DiagonalPlan r = Must(PlanDiagonal({0, 0, 0}, {0, 1200, 1600}, 500.0));
+  const DiagonalPlan r = ValueOf(PlanDiagonal({0, 0, 0}, {0, 1200, 1600}, 500.0));
   ASSERT_FALSE(r.warnings.empty());
   EXPECT_NE(r.warnings.back().find("§5.2"), std::string::npos);
   ExpectFailure(PlanDiagonal({1, 1, 1}, {1, 1, 1}, 10.0), Error::kInvalidArgument,
@@ -74,7 +74,7 @@ TEST(MetrologyDiagonalEvaluation, KnownEAndB) {
   AddDiagonal(&csv, "NPP", {-3, -2, -1, 0, 1, 2}, {-2, -2, -2, -2, -2, -2}, 200);  // E 5, B 4
   AddDiagonal(&csv, "+X+Y Z0", {0, 1, 2, 3, 4}, {0, 1, 2, 3, 4}, 250);             // E 4, B 0
   AddDiagonal(&csv, "+X-Y Z0", {0, 0, 0, 0, 0}, {-6, 0, 0, 0, 0}, 250);            // E 6, B 6
-  const auto ev = Must(EvaluateDiagonals(Csv(csv, "d.csv"), GroupingOptions{}));
+  const auto ev = ValueOf(EvaluateDiagonals(Csv(csv, "d.csv"), GroupingOptions{}));
   ASSERT_EQ(ev.diagonals.size(), 6u);
   const double e[6] = {11, 4, 2.5, 5, 4, 6}, b[6] = {1, 4, 2.5, 4, 0, 6};
   for (int i = 0; i < 6; ++i) {
@@ -102,7 +102,7 @@ TEST(MetrologyDiagonalEvaluation, WarnsAboutMissingAndRepeatedBodyDiagonals) {
   std::string csv = "diagonal,target_mm,direction,run,deviation_um\n";
   AddDiagonal(&csv, "+X+Y+Z", {0, 1, 2, 3, 4, 5}, {0, 1, 2, 3, 4, 5}, 200);
   AddDiagonal(&csv, "-X-Y-Z", {0, 1, 2, 3, 4, 5}, {0, 1, 2, 3, 4, 5}, 200);
-  const auto ev = Must(EvaluateDiagonals(Csv(csv, "d.csv"), GroupingOptions{}));
+  const auto ev = ValueOf(EvaluateDiagonals(Csv(csv, "d.csv"), GroupingOptions{}));
   std::string all;
   for (const auto& w : ev.warnings) all += w + "\n";
   EXPECT_NE(all.find("same body diagonal"), std::string::npos) << all;
@@ -112,7 +112,7 @@ TEST(MetrologyDiagonalEvaluation, WarnsAboutMissingAndRepeatedBodyDiagonals) {
 TEST(MetrologyDiagonalEvaluation, TooFewTargetsPerMetreWarns) {
   std::string csv = "diagonal,target_mm,direction,run,deviation_um\n";
   AddDiagonal(&csv, "+X+Y", {0, 1, 2, 3, 4}, {0, 1, 2, 3, 4}, 500);  // 5 targets on 2 m
-  const auto ev = Must(EvaluateDiagonals(Csv(csv, "d.csv"), GroupingOptions{}));
+  const auto ev = ValueOf(EvaluateDiagonals(Csv(csv, "d.csv"), GroupingOptions{}));
   std::string all;
   for (const auto& w : ev.warnings) all += w + "\n";
   EXPECT_NE(all.find("§5.2: 5 targets on 2000 mm; at least 10"), std::string::npos) << all;

@@ -19,11 +19,11 @@ using testing::Angles;
 using testing::ExpectFailure;
 using testing::kPi;
 using testing::Make;
-using testing::Must;
+using testing::ValueOf;
 
 TEST(MetrologyErrorMotion, PureEccentricityFixedDirection) {
   const double e = 3.0, phi = 35.0 * kPi / 180;  // peaks fall on the 5° sampling grid
-  const auto em = Must(AnalyseErrorMotion(
+  const auto em = ValueOf(AnalyseErrorMotion(
       Angles(72), Make(72, 4, [&](double t) { return e * std::cos(t + phi); }), true));
   EXPECT_NEAR(em.lsc.synchronous, 0.0, 1e-9);
   EXPECT_NEAR(em.pc.synchronous, 2 * e, 1e-9);
@@ -41,8 +41,8 @@ TEST(MetrologyErrorMotion, HalfSpeedComponentIsAsynchronous) {
     const auto base = Make(n, k, [](double t) { return 0.5 * std::cos(3 * t); });
     const auto with =
         Make(n, k, [&](double t) { return 0.5 * std::cos(3 * t) + B * std::cos(t / 2); });
-    const auto a = Must(AnalyseErrorMotion(Angles(n), base, false));
-    const auto b = Must(AnalyseErrorMotion(Angles(n), with, false));
+    const auto a = ValueOf(AnalyseErrorMotion(Angles(n), base, false));
+    const auto b = ValueOf(AnalyseErrorMotion(Angles(n), with, false));
     for (int j = 0; j < n; ++j) EXPECT_NEAR(a.synchronous[j], b.synchronous[j], 1e-12);
     EXPECT_NEAR(b.asynchronous_value, 2 * B, 1e-12) << k;  // at θ = 0 where |cos(θ/2)| = 1
     EXPECT_NEAR(b.asynchronous_angle_deg, 0.0, 1e-12);
@@ -56,8 +56,8 @@ TEST(MetrologyErrorMotion, NoiseInTheSynchronousPlotFallsAsOneOverRootK) {
   std::normal_distribution<double> noise(0.0, 1.0);
   const int n = 256;
   auto sync_rms = [&](int k) {
-    const auto em =
-        Must(AnalyseErrorMotion(Angles(n), Make(n, k, [&](double) { return noise(rng); }), false));
+    const auto em = ValueOf(
+        AnalyseErrorMotion(Angles(n), Make(n, k, [&](double) { return noise(rng); }), false));
     double s = 0;
     for (double v : em.synchronous) s += v * v;
     return std::sqrt(s / n);
@@ -85,7 +85,7 @@ TEST(MetrologyErrorMotion, AveragingEqualsKeepingTheHarmonicBinsOfTheWholeRecord
   for (int f = 0; f < total; ++f) {
     for (int t = 0; t < total; ++t) spec[f] += flat[t] * std::polar(1.0, -2 * kPi * f * t / total);
   }
-  const auto em = Must(AnalyseErrorMotion(Angles(n), u, false));
+  const auto em = ValueOf(AnalyseErrorMotion(Angles(n), u, false));
   for (int t = 0; t < n; ++t) {
     std::complex<double> s = 0;
     for (int f = 0; f < total; f += k) s += spec[f] * std::polar(1.0, 2 * kPi * f * t / total);

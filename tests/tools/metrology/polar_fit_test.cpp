@@ -14,7 +14,7 @@ namespace volcomp::metrology {
 namespace {
 
 using testing::ExpectFailure;
-using testing::Must;
+using testing::ValueOf;
 
 constexpr double kPi = 3.14159265358979323846;
 
@@ -28,7 +28,7 @@ TEST(MetrologyMinimumZone, RecoversTheCentreOfAnOffsetLobedProfile) {
     a.push_back(4.0 * j);
     p.push_back(1 + 0.3 * std::cos(th) + 0.2 * std::sin(th) + A * std::cos(3 * th));
   }
-  const CentreFit mz = Must(FitMinimumZoneCentre(a, p));
+  const CentreFit mz = ValueOf(FitMinimumZoneCentre(a, p));
   EXPECT_NEAR(mz.a, 0.3, 1e-9);
   EXPECT_NEAR(mz.b, 0.2, 1e-9);
   EXPECT_NEAR(ValueAbout(a, p, mz.a, mz.b), 2 * A, 1e-9);
@@ -45,8 +45,8 @@ TEST(MetrologyMinimumZone, NeverWiderThanLscOrPcAndLocallyOptimal) {
       a.push_back(360.0 * (j + 0.3 * u(rng) + 0.3) / n);
       p.push_back(u(rng) + 0.5 * std::cos(a.back() * kPi / 180 + 1.0));
     }
-    const CentreFit lsc = Must(FitLeastSquaresCentre(a, p));
-    const CentreFit mz = Must(FitMinimumZoneCentre(a, p));
+    const CentreFit lsc = ValueOf(FitLeastSquaresCentre(a, p));
+    const CentreFit mz = ValueOf(FitMinimumZoneCentre(a, p));
     const double v = ValueAbout(a, p, mz.a, mz.b);
     EXPECT_LE(v, ValueAbout(a, p, lsc.a, lsc.b) + 1e-12) << trial;
     EXPECT_LE(v, ValueAbout(a, p, 0.0, 0.0) + 1e-12) << trial;
@@ -65,7 +65,7 @@ TEST(MetrologyLeastSquaresCentre, ClosedFormForEqualSpacing) {
     a.push_back(10.0 * j);
     p.push_back(0.7 - 0.4 * std::cos(th) + 0.9 * std::sin(th) + 0.1 * std::cos(2 * th));
   }
-  const CentreFit c = Must(FitLeastSquaresCentre(a, p));
+  const CentreFit c = ValueOf(FitLeastSquaresCentre(a, p));
   EXPECT_NEAR(c.mean, 0.7, 1e-12);
   EXPECT_NEAR(c.a, -0.4, 1e-12);
   EXPECT_NEAR(c.b, 0.9, 1e-12);

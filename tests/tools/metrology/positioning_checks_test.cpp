@@ -13,10 +13,10 @@ namespace volcomp::metrology {
 namespace {
 
 using testing::Csv;
-using testing::Must;
+using testing::ValueOf;
 
 PositioningSet Grouped(const std::string& csv, const std::string& source) {
-  return Must(GroupReadings(Must(ReadPositioningCsv(Csv(csv, source))), GroupingOptions{}));
+  return ValueOf(GroupReadings(ValueOf(ReadPositioningCsv(Csv(csv, source))), GroupingOptions{}));
 }
 
 std::string RotaryCsv(const std::vector<int>& angles) {

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include "positioning_fixtures.hpp"
 #include "test_support.hpp"
 #include "volcomp/metrology/positioning_csv.hpp"
 
@@ -12,54 +13,27 @@ namespace volcomp::metrology {
 namespace {
 
 using testing::ExpectFailure;
-using testing::Must;
-
-// Five full runs over targets 0, 100, 200 in both directions (rows: header + 30).
-std::string Good() {
-  std::string csv = "target_mm,direction,run,deviation_um\n";
-  for (int run = 1; run <= 5; ++run) {
-    for (int t : {0, 100, 200}) csv += std::to_string(t) + ",up," + std::to_string(run) + ",1.5\n";
-    for (int t : {200, 100, 0}) csv += std::to_string(t) + ",down," + std::to_string(run) + ",-1\n";
-  }
-  return csv;
-}
-
-// Replaces line `line` (1-based) of `csv`.
-std::string WithLine(const std::string& csv, int line, const std::string& text) {
-  std::string out;
-  int n = 0;
-  std::size_t pos = 0;
-  while (pos < csv.size()) {
-    const std::size_t end = csv.find('\n', pos);
-    ++n;
-    out += (n == line ? text : csv.substr(pos, end - pos)) + "\n";
-    pos = end + 1;
-  }
-  return out;
-}
-
-// Reads `csv` (named p.csv) and its positioning readings, grouped and checked.
-Expected<PositioningSet> Load(const std::string& csv, GroupingOptions o = {}) {
-  VOLCOMP_TRY_ASSIGN(const tools::CsvTable table, tools::CsvTable::ReadString(csv, "p.csv"));
-  VOLCOMP_TRY_ASSIGN(const PositioningData data, ReadPositioningCsv(table));
-  return GroupReadings(data, o);
-}
+using testing::GoodPositioningCsv;
+using testing::LoadPositioning;
+using testing::ValueOf;
+using testing::WithLine;
 
 TEST(MetrologyPositioningInput, GoodDataLoad) {
-  const PositioningSet s = Must(Load(Good()));
+  const PositioningSet s = ValueOf(LoadPositioning(GoodPositioningCsv()));
   EXPECT_EQ(s.positions.size(), 3u);
   EXPECT_TRUE(s.warnings.empty());
 }
 
 TEST(MetrologyPositioningInput, DuplicateReading) {
   // Line 8 repeats target 0 ↑ run 1 of line 2 (instead of run 2).
-  ExpectFailure(Load(WithLine(Good(), 8, "0,up,1,1.5")), Error::kInputInvalid,
-                {"p.csv:8:", "run 1 is given twice (also on line 2)"});
+  ExpectFailure(LoadPositioning(WithLine(GoodPositioningCsv(), 8, "0,up,1,1.5")),
+                Error::kInputInvalid, {"p.csv:8:", "run 1 is given twice (also on line 2)"});
 }
 
 TEST(MetrologyPositioningInput, PositionsDifferBetweenRuns) {
   // Run 3 ↑ goes to 100.2 instead of 100 (line 15).
-  ExpectFailure(Load(WithLine(Good(), 15, "100.2,up,3,1.5")), Error::kInputInvalid,
+  ExpectFailure(LoadPositioning(WithLine(GoodPositioningCsv(), 15, "100.2,up,3,1.5")),
+                Error::kInputInvalid,
                 {"p.csv:15:", "run 3 ↑ has target 100.2 mm where the other runs have 100 mm",
                  "same in every run"});
 }
@@ -70,19 +44,19 @@ TEST(MetrologyPositioningInput, MissingDirectionAtOneTarget) {
     for (int t : {0, 100, 200}) csv += std::to_string(t) + ",up," + std::to_string(run) + ",1\n";
     for (int t : {200, 100}) csv += std::to_string(t) + ",down," + std::to_string(run) + ",1\n";
   }
-  ExpectFailure(Load(csv), Error::kInputInvalid,
+  ExpectFailure(LoadPositioning(csv), Error::kInputInvalid,
                 {"p.csv:2:", "missing direction", "target 0 mm has no ↓"});
 }
 
 TEST(MetrologyPositioningInput, FewerThanFiveApproaches) {
-  std::string csv = Good();
+  std::string csv = GoodPositioningCsv();
   // Drop run 5 entirely (its 6 lines are the last ones).
   for (int i = 0; i < 6; ++i) csv.erase(csv.rfind('\n', csv.size() - 2) + 1);
-  ExpectFailure(Load(csv), Error::kInputInvalid,
+  ExpectFailure(LoadPositioning(csv), Error::kInputInvalid,
                 {"p.csv:2:", "target 0 mm ↑ has 4 approaches (runs 1, 2, 3, 4)", "at least 5"});
   GroupingOptions allow;
   allow.allow_few_approaches = true;
-  const PositioningSet s = Must(Load(csv, allow));
+  const PositioningSet s = ValueOf(LoadPositioning(csv, allow));
   ASSERT_FALSE(s.warnings.empty());
   EXPECT_NE(s.warnings[0].find("has 4 approaches"), std::string::npos);
 }
@@ -91,16 +65,17 @@ TEST(MetrologyPositioningInput, SingleApproachIsAlwaysAnError) {
   const std::string csv = "target_mm,direction,run,deviation_um\n0,up,1,1\n100,up,1,2\n";
   GroupingOptions allow;
   allow.allow_few_approaches = true;
-  ExpectFailure(Load(csv, allow), Error::kInputInvalid, {"p.csv:2:", "1 approach", "at least 2"});
+  ExpectFailure(LoadPositioning(csv, allow), Error::kInputInvalid,
+                {"p.csv:2:", "1 approach", "at least 2"});
 }
 
 TEST(MetrologyPositioningInput, MissingReadingOfOneRunIsAWarning) {
-  std::string csv = Good();
+  std::string csv = GoodPositioningCsv();
   for (int run = 6; run <= 6; ++run) {
     for (int t : {0, 100, 200}) csv += std::to_string(t) + ",up,6,1.5\n";
     for (int t : {200, 0}) csv += std::to_string(t) + ",down,6,-1\n";
   }
-  const PositioningSet s = Must(Load(csv));
+  const PositioningSet s = ValueOf(LoadPositioning(csv));
   ASSERT_EQ(s.warnings.size(), 1u);
   EXPECT_NE(s.warnings[0].find("target 100 mm ↓: no reading for run 6"), std::string::npos);
 }

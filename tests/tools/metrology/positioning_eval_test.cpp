@@ -21,19 +21,19 @@ namespace {
 
 using testing::Csv;
 using testing::ExpectFailure;
-using testing::Must;
-using testing::RepoPath;
+using testing::SourcePath;
+using testing::ValueOf;
 
 PositioningSet Grouped(const tools::CsvTable& table) {
-  return Must(GroupReadings(Must(ReadPositioningCsv(table)), GroupingOptions{}));
+  return ValueOf(GroupReadings(ValueOf(ReadPositioningCsv(table)), GroupingOptions{}));
 }
 
 PositioningResult Evaluate(const std::string& relative, SigmaMethod sigma = SigmaMethod::kFormula) {
-  const PositioningSet set = Grouped(Must(tools::CsvTable::ReadFile(RepoPath(relative))));
+  const PositioningSet set = Grouped(ValueOf(tools::CsvTable::ReadFile(SourcePath(relative))));
   EvaluationOptions o;
   o.standard = Standard::kGost27843;
   o.sigma = sigma;
-  return Must(EvaluatePositioning(set, o));
+  return ValueOf(EvaluatePositioning(set, o));
 }
 
 const char* const kFixture = "tests/tools/metrology/data/gost27843_example_reconstructed.csv";
@@ -203,7 +203,7 @@ std::string HandData() {
 PositioningResult Evaluate(const std::string& csv, Standard s) {
   EvaluationOptions o;
   o.standard = s;
-  return Must(EvaluatePositioning(Grouped(Csv(csv, "hand.csv")), o));
+  return ValueOf(EvaluatePositioning(Grouped(Csv(csv, "hand.csv")), o));
 }
 
 TEST(MetrologyIso230_2, HandComputedParameters) {
@@ -263,10 +263,10 @@ TEST(MetrologyPositioning, RotaryMeasuredAnglesWrapAndConvertToArcSeconds) {
           std::to_string(a) + ",up," + std::to_string(run) + "," + std::to_string(measured) + "\n";
     }
   }
-  const auto data = Must(ReadPositioningCsv(Csv(csv, "rot.csv")));
+  const auto data = ValueOf(ReadPositioningCsv(Csv(csv, "rot.csv")));
   EXPECT_EQ(data.kind, AxisKind::kRotary);
-  const auto set = Must(GroupReadings(data, GroupingOptions{}));
-  const PositioningResult r = Must(EvaluatePositioning(set, EvaluationOptions{}));
+  const auto set = ValueOf(GroupReadings(data, GroupingOptions{}));
+  const PositioningResult r = ValueOf(EvaluatePositioning(set, EvaluationOptions{}));
   EXPECT_NEAR(r.positions[0].up->mean, -3.6, 1e-6);
   EXPECT_NEAR(r.positions[1].up->mean, 3.6, 1e-6);
 }

@@ -14,17 +14,17 @@ namespace {
 
 using testing::Csv;
 using testing::ExpectFailure;
-using testing::Must;
-using testing::RepoPath;
+using testing::SamplePath;
+using testing::ValueOf;
 
 tools::CsvTable Example() {
-  return Must(tools::CsvTable::ReadFile(RepoPath("samples/metrology/gost27843_example_long.csv")));
+  return ValueOf(tools::CsvTable::ReadFile(SamplePath("metrology/gost27843_example_long.csv")));
 }
 
 TEST(MetrologyPositioningEvaluation, BothStandardsOfTheGostExample) {
   PositioningTestOptions o;
   o.standards = {Standard::kGost27843, Standard::kIso230_2};
-  const PositioningEvaluation ev = Must(EvaluatePositioningTest(Example(), o));
+  const PositioningEvaluation ev = ValueOf(EvaluatePositioningTest(Example(), o));
   EXPECT_EQ(ev.kind, AxisKind::kLinear);
   EXPECT_EQ(ev.positions, 11u);
   EXPECT_TRUE(ev.has_up && ev.has_down);
@@ -47,7 +47,7 @@ TEST(MetrologyPositioningEvaluation, WarningsOfEveryStandardOnceAndTheAxisNamesT
   }
   PositioningTestOptions o;
   o.standards = {Standard::kGost27843, Standard::kIso230_2};
-  const PositioningEvaluation ev = Must(EvaluatePositioningTest(Csv(csv, "z.csv"), o));
+  const PositioningEvaluation ev = ValueOf(EvaluatePositioningTest(Csv(csv, "z.csv"), o));
   EXPECT_EQ(PositioningReportName(ev), "positioning_Z_2");
   const auto count = [&](const std::string& part) {
     return std::count_if(ev.warnings.begin(), ev.warnings.end(),

@@ -12,15 +12,14 @@
 namespace volcomp::metrology {
 namespace {
 
-using testing::Must;
-using testing::RepoPath;
+using testing::SamplePath;
+using testing::ValueOf;
 
 PositioningEvaluation Example() {
   PositioningTestOptions o;
   o.standards = {Standard::kGost27843, Standard::kIso230_2};
-  return Must(EvaluatePositioningTest(
-      Must(tools::CsvTable::ReadFile(RepoPath("samples/metrology/gost27843_example_long.csv"))),
-      o));
+  return ValueOf(EvaluatePositioningTest(
+      ValueOf(tools::CsvTable::ReadFile(SamplePath("metrology/gost27843_example_long.csv"))), o));
 }
 
 TEST(MetrologyPositioningReport, JsonHoldsEveryParameterWithItsLocation) {

@@ -4,13 +4,13 @@
 
 #include <gtest/gtest.h>
 
-#include <fstream>
 #include <functional>
 #include <sstream>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "file_contents.hpp"
 #include "test_support.hpp"
 #include "volcomp/metrology/positioning_csv.hpp"
 
@@ -18,8 +18,9 @@ namespace volcomp::metrology {
 namespace {
 
 using testing::ExpectFailure;
-using testing::Must;
-using testing::RepoPath;
+using testing::SamplePath;
+using testing::ValueOf;
+using volcomp::testing::ReadText;
 
 std::string ReadingsCsv(const std::string& column,
                         const std::function<double(int, int, bool)>& value) {
@@ -36,8 +37,8 @@ std::string ReadingsCsv(const std::string& column,
 }
 
 std::vector<std::string> Warnings(const std::string& csv) {
-  const PositioningData d = Must(ReadPositioningCsv(testing::Csv(csv, "w.csv")));
-  return CheckReadings(d, Must(GroupReadings(d, {})), {});
+  const PositioningData d = ValueOf(ReadPositioningCsv(testing::Csv(csv, "w.csv")));
+  return CheckReadings(d, ValueOf(GroupReadings(d, {})), {});
 }
 
 // Smooth readings with small run-to-run variation (no outliers): 2 µm per 100 mm, ±0.3 µm.
@@ -63,10 +64,7 @@ TEST(MetrologyReadingChecks, MicrometresInAMillimetreColumnAreNamed) {
   EXPECT_NE(w[0].find("w.csv:3:"), std::string::npos) << w[0];
 
   // The GOST worked example in a deviation_mm column, as in the issue.
-  std::ifstream f(RepoPath("samples/metrology/gost27843_example_long.csv"));
-  std::stringstream text;
-  text << f.rdbuf();
-  std::string csv = text.str();
+  std::string csv = ReadText(SamplePath("metrology/gost27843_example_long.csv"));
   csv.replace(csv.find("deviation_um"), 12, "deviation_mm");
   const auto g = Warnings(csv);
   bool named = false;

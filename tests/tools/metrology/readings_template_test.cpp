@@ -5,28 +5,19 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <string>
 
+#include "file_contents.hpp"
+#include "temp_paths.hpp"
 #include "test_support.hpp"
 
 namespace volcomp::metrology {
 namespace {
 
 using testing::ExpectFailure;
-using testing::Must;
-
-std::string Temp(const std::string& name) {
-  return (std::filesystem::temp_directory_path() / ("volcomp_template_test_" + name)).string();
-}
-
-std::string Read(const std::string& path) {
-  std::ifstream f(path, std::ios::binary);
-  std::stringstream s;
-  s << f.rdbuf();
-  return s.str();
-}
+using testing::ValueOf;
+using volcomp::testing::ReadText;
+using volcomp::testing::TempPath;
 
 TEST(MetrologyReadingsTemplate, PreambleAndRows) {
   TemplateHeader h;
@@ -37,13 +28,13 @@ TEST(MetrologyReadingsTemplate, PreambleAndRows) {
   EXPECT_EQ(pre.rfind("# fill in\n# machine:\n# axis: X\n# operator:\n", 0), 0u) << pre;
   EXPECT_NE(pre.find("# program: x.ngc\n"), std::string::npos);
   EXPECT_EQ(pre.find("# date:"), std::string::npos);
-  const auto moves = Must(BuildCycle({0.0, 10.0}, Cycle::kLinear, 1, 1.0));
+  const auto moves = ValueOf(BuildCycle({0.0, 10.0}, Cycle::kLinear, 1, 1.0));
   EXPECT_EQ(TemplateRows(moves, ""), "0.000,up,1,\n10.000,up,1,\n10.000,down,1,\n0.000,down,1,\n");
   EXPECT_EQ(TemplateRows(moves, "PPN").substr(0, 16), "PPN,0.000,up,1,\n");
 }
 
 TEST(MetrologyReadingsTemplate, ATemplateWithReadingsIsRefusedUnlessForced) {
-  const std::string path = Temp("x.csv");
+  const std::string path = TempPath("template_test_x.csv");
   std::filesystem::remove(path);
   EXPECT_FALSE(ReadingsAtRisk(path));
   ASSERT_TRUE(WriteTemplate("target_mm,direction,run,deviation_um\n0,up,1,\n", path, false).ok());
@@ -53,9 +44,9 @@ TEST(MetrologyReadingsTemplate, ATemplateWithReadingsIsRefusedUnlessForced) {
   ExpectFailure(RefuseToOverwriteReadings(path, false), Error::kInputInvalid,
                 {path + " already holds readings (line 2)", "give --force"});
   ExpectFailure(WriteTemplate("new", path, false), Error::kInputInvalid, {"already holds"});
-  EXPECT_EQ(Read(path), "target_mm,direction,run,deviation_um\n0,up,1,2.5\n");
+  EXPECT_EQ(ReadText(path), "target_mm,direction,run,deviation_um\n0,up,1,2.5\n");
   EXPECT_TRUE(WriteTemplate("new", path, true).ok());
-  EXPECT_EQ(Read(path), "new");
+  EXPECT_EQ(ReadText(path), "new");
   ExpectFailure(RefuseToOverwriteReadings(path, false), Error::kInputInvalid,
                 {path + " exists and is not a readings template"});
   std::filesystem::remove(path);

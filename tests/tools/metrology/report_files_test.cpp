@@ -5,23 +5,18 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <string>
 
+#include "file_contents.hpp"
+#include "temp_paths.hpp"
 #include "test_support.hpp"
 
 namespace volcomp::metrology {
 namespace {
 
-using testing::Must;
-
-std::string Read(const std::string& path) {
-  std::ifstream f(path, std::ios::binary);
-  std::stringstream s;
-  s << f.rdbuf();
-  return s.str();
-}
+using testing::ValueOf;
+using volcomp::testing::FreshTempPath;
+using volcomp::testing::ReadText;
 
 TEST(MetrologyReportFiles, SafeNamesAndStems) {
   EXPECT_EQ(SafeName("X"), "X");
@@ -34,17 +29,16 @@ TEST(MetrologyReportFiles, SafeNamesAndStems) {
 }
 
 TEST(MetrologyReportFiles, WritesThePageAndItsJsonAndSaysWhenItReplacesOne) {
-  const std::string dir =
-      (std::filesystem::temp_directory_path() / "volcomp_report_files_test" / "r").string();
-  std::filesystem::remove_all(dir);
+  const std::string root = FreshTempPath("report_files_test");
+  const std::string dir = root + "/r";
   report::HtmlPage page("P");
-  ReportFiles files = Must(WriteReportFiles(page, "{}\n", dir, "positioning_X"));
+  ReportFiles files = ValueOf(WriteReportFiles(page, "{}\n", dir, "positioning_X"));
   EXPECT_EQ(files.html, dir + "/positioning_X.html");
   EXPECT_EQ(files.json, dir + "/positioning_X.json");
   EXPECT_FALSE(files.replaced);
-  EXPECT_EQ(Read(files.json), "{}\n");
-  EXPECT_NE(Read(files.html).find("<title>P</title>"), std::string::npos);
-  files = Must(WriteReportFiles(page, "", dir, "positioning_X"));
+  EXPECT_EQ(ReadText(files.json), "{}\n");
+  EXPECT_NE(ReadText(files.html).find("<title>P</title>"), std::string::npos);
+  files = ValueOf(WriteReportFiles(page, "", dir, "positioning_X"));
   EXPECT_TRUE(files.replaced);
   EXPECT_TRUE(files.json.empty());
 
@@ -55,7 +49,7 @@ TEST(MetrologyReportFiles, WritesThePageAndItsJsonAndSaysWhenItReplacesOne) {
   EXPECT_NE(blocked.error().message.find(files.html + "/sub: cannot create report directory"),
             std::string::npos)
       << blocked.error().message;
-  std::filesystem::remove_all(std::filesystem::temp_directory_path() / "volcomp_report_files_test");
+  std::filesystem::remove_all(root);
 }
 
 }  // namespace

@@ -10,7 +10,7 @@ namespace volcomp::metrology {
 namespace {
 
 using testing::ExpectFailure;
-using testing::Must;
+using testing::ValueOf;
 
 // Two revolutions of 8 angles; x and y channels.
 std::string Good(const std::string& header = "rev,angle_deg,x_um,y_um") {
@@ -34,7 +34,7 @@ std::string Replace(std::string s, const std::string& from, const std::string& t
 }
 
 TEST(MetrologyRotaryInput, GoodFile) {
-  const RotaryRecord r = Must(Load(Good()));
+  const RotaryRecord r = ValueOf(Load(Good()));
   EXPECT_EQ(r.revs.size(), 2u);
   EXPECT_EQ(r.angle_deg.size(), 8u);
   EXPECT_TRUE(r.equally_spaced);

@@ -21,10 +21,10 @@ using testing::Csv;
 using testing::ExpectFailure;
 using testing::kPi;
 using testing::Make;
-using testing::Must;
 using testing::Record;
+using testing::ValueOf;
 
-RotaryRecord Load(const std::string& csv) { return Must(ReadRotaryCsv(Csv(csv, "r.csv"))); }
+RotaryRecord Load(const std::string& csv) { return ValueOf(ReadRotaryCsv(Csv(csv, "r.csv"))); }
 
 TEST(MetrologyErrorMotion, TwoLobeMotionFixedVersusRotatingSensitiveDirection) {
   // A.11-A.18: ΔX = A cos 2θ, ΔY = A sin 2θ.
@@ -35,10 +35,10 @@ TEST(MetrologyErrorMotion, TwoLobeMotionFixedVersusRotatingSensitiveDirection) {
   RotaryOptions fsd;
   fsd.sensitive = SensitiveDirection::kFixed;
   fsd.fsd_angle_deg = 0.0;
-  const auto f = Must(EvaluateRotary(Record(n, k, {{"x_um", x}, {"y_um", y}}), fsd));
+  const auto f = ValueOf(EvaluateRotary(Record(n, k, {{"x_um", x}, {"y_um", y}}), fsd));
   EXPECT_NEAR(f.measurements[0].motion.lsc.synchronous, 2 * A, 1e-9);  // (A.14): 2A
   EXPECT_NEAR(f.measurements[0].motion.pc.synchronous, 2 * A, 1e-9);
-  const auto r = Must(EvaluateRotary(Record(n, k, {{"x_um", x}, {"y_um", y}}), RotaryOptions{}));
+  const auto r = ValueOf(EvaluateRotary(Record(n, k, {{"x_um", x}, {"y_um", y}}), RotaryOptions{}));
   // (A.15)-(A.18): r = r0 + A cos θ, a circle: 0 about LSC, 2A about PC.
   EXPECT_NEAR(r.measurements[0].motion.lsc.synchronous, 0.0, 1e-9);
   EXPECT_NEAR(r.measurements[0].motion.pc.synchronous, 2 * A, 1e-9);
@@ -50,7 +50,8 @@ TEST(MetrologyErrorMotion, StiffnessAsymmetry) {
   const int n = 64, k = 2;
   const auto x = Make(n, k, [&](double t) { return (e - d) * std::cos(t); });
   const auto y = Make(n, k, [&](double t) { return (e + d) * std::sin(t); });
-  const auto rsd = Must(EvaluateRotary(Record(n, k, {{"x_um", x}, {"y_um", y}}), RotaryOptions{}));
+  const auto rsd =
+      ValueOf(EvaluateRotary(Record(n, k, {{"x_um", x}, {"y_um", y}}), RotaryOptions{}));
   EXPECT_NEAR(rsd.measurements[0].motion.lsc.synchronous, 2 * d, 1e-9);  // r = r0 + e − δ cos 2θ
   ASSERT_TRUE(rsd.radial_fundamentals);
   EXPECT_NEAR(rsd.radial_fundamentals->positive_um, e, 1e-9);  // c₊ = e
@@ -60,7 +61,7 @@ TEST(MetrologyErrorMotion, StiffnessAsymmetry) {
     RotaryOptions o;
     o.sensitive = SensitiveDirection::kFixed;
     o.fsd_angle_deg = angle;
-    const auto f = Must(EvaluateRotary(Record(n, k, {{"x_um", x}, {"y_um", y}}), o));
+    const auto f = ValueOf(EvaluateRotary(Record(n, k, {{"x_um", x}, {"y_um", y}}), o));
     EXPECT_NEAR(f.measurements[0].motion.lsc.synchronous, 0.0, 1e-9) << angle;
   }
 }
@@ -81,7 +82,7 @@ TEST(MetrologyErrorMotion, DonaldsonReversalRoundTrip) {
   }
   for (const auto& [t2, proc] :
        {std::make_pair(t2p, ReversalProcedure::kP), std::make_pair(t2s, ReversalProcedure::kS)}) {
-    const ReversalResult r = Must(DonaldsonReversal(a, t1, t2, proc));
+    const ReversalResult r = ValueOf(DonaldsonReversal(a, t1, t2, proc));
     for (int j = 0; j < n; ++j) {
       EXPECT_NEAR(r.artefact[j], p[j], 0.01);
       EXPECT_NEAR(r.spindle[j], s[j], 0.01);
@@ -107,7 +108,7 @@ TEST(MetrologyErrorMotion, TiltFromTwoPlanesAndFromAxialAndFace) {
   o.sensitive = SensitiveDirection::kFixed;
   o.tilt_distance_mm = L;
   o.face_radius_mm = R;
-  const auto ev = Must(EvaluateRotary(
+  const auto ev = ValueOf(EvaluateRotary(
       Record(
           n, k,
           {{"x_um", at(z1)}, {"x2_um", at(z1 + L)}, {"z_um", Make(n, k, e_z)}, {"face_um", face}}),
@@ -151,7 +152,7 @@ TEST(MetrologyErrorMotion, RotatingTiltUsesThePlaneDifferenceInFormulaOne) {
       Make(n, k, [&](double t) { return L * 1000.0 * 2e-6 * std::sin(t) * std::cos(2 * t); });
   RotaryOptions o;
   o.tilt_distance_mm = L;
-  const auto ev = Must(EvaluateRotary(
+  const auto ev = ValueOf(EvaluateRotary(
       Record(n, k, {{"x_um", zero}, {"y_um", zero}, {"x2_um", x2}, {"y2_um", y2}}), o));
   for (const auto& m : ev.measurements) {
     if (m.key != "tilt") continue;
@@ -172,7 +173,7 @@ TEST(MetrologyRotaryEvaluation, OptionsThatDoNotFitTheChannels) {
   ExpectFailure(EvaluateRotary(only_x, fixed45), Error::kInputInvalid, {"y_um"});
   std::string csv = "rev,angle_deg,x_um,y_um,x2_um,y2_um\n";
   for (int j = 0; j < 8; ++j) csv += "1," + std::to_string(45 * j) + ",0,0,0,0\n";
-  const auto ev = Must(EvaluateRotary(Load(csv), RotaryOptions{}));
+  const auto ev = ValueOf(EvaluateRotary(Load(csv), RotaryOptions{}));
   ASSERT_EQ(ev.measurements.size(), 2u);  // radial at both planes, no tilt
   ASSERT_FALSE(ev.warnings.empty());
   EXPECT_NE(ev.warnings.front().find("--tilt-distance-mm"), std::string::npos);
@@ -184,7 +185,7 @@ TEST(MetrologyRotaryEvaluation, ReversalOfTwoRecordsNeedsTheSameAnglesAndTheChan
   const RotaryRecord one = Record(n, 2, {{"x_um", lobes}});
   RotaryRecord two = Record(n, 2, {{"x_um", lobes}});
   two.source = "setup2.csv";
-  const ReversalResult r = Must(DonaldsonReversal(one, two, "x_um", ReversalProcedure::kS));
+  const ReversalResult r = ValueOf(DonaldsonReversal(one, two, "x_um", ReversalProcedure::kS));
   EXPECT_NEAR(r.spindle_value, 2.0, 1e-9);  // S = (T1 + T2)/2 = cos 2θ
   EXPECT_NEAR(r.artefact_value, 0.0, 1e-9);
   ExpectFailure(DonaldsonReversal(one, two, "y_um", ReversalProcedure::kP), Error::kInputInvalid,

@@ -16,7 +16,7 @@ namespace volcomp::metrology {
 namespace {
 
 using testing::ExpectFailure;
-using testing::Must;
+using testing::ValueOf;
 
 TargetPlan Plan() {
   TargetPlan p;
@@ -29,7 +29,7 @@ TargetPlan Plan() {
 }
 
 TEST(MetrologyTestProgram, TargetsFollowNPlusRTimesP) {
-  const auto t = Must(PlanGostTargets(Plan()));
+  const auto t = ValueOf(PlanGostTargets(Plan()));
   ASSERT_EQ(t.size(), 11u);
   std::set<long> fractions;
   for (std::size_t j = 0; j < t.size(); ++j) {
@@ -50,10 +50,10 @@ TEST(MetrologyTestProgram, TargetsFollowNPlusRTimesP) {
 }
 
 TEST(MetrologyTestProgram, SameSeedSamePlanOtherSeedOtherPlan) {
-  EXPECT_EQ(Must(PlanGostTargets(Plan())), Must(PlanGostTargets(Plan())));
+  EXPECT_EQ(ValueOf(PlanGostTargets(Plan())), ValueOf(PlanGostTargets(Plan())));
   TargetPlan other = Plan();
   other.seed = 8;
-  EXPECT_NE(Must(PlanGostTargets(Plan())), Must(PlanGostTargets(other)));
+  EXPECT_NE(ValueOf(PlanGostTargets(Plan())), ValueOf(PlanGostTargets(other)));
 }
 
 TEST(MetrologyTestProgram, RotaryPlanContainsTheCardinalAngles) {
@@ -62,7 +62,7 @@ TEST(MetrologyTestProgram, RotaryPlanContainsTheCardinalAngles) {
   p.count = 12;
   p.pitch = 5.0;  // e.g. a worm-wheel pitch angle
   p.seed = 3;
-  const auto t = Must(PlanGostTargets(p));
+  const auto t = ValueOf(PlanGostTargets(p));
   for (double a : {0.0, 90.0, 180.0, 270.0}) {
     EXPECT_NE(std::find(t.begin(), t.end(), a), t.end()) << a;
   }
@@ -99,7 +99,7 @@ TEST(MetrologyTestProgram, ImpossibleCyclesAndProgramsAreRejected) {
 // Every target is reached once ↑ and once ↓ per run, and really from that side.
 void CheckCycle(Cycle c) {
   const std::vector<double> t = {0.0, 10.0, 25.0, 40.0};
-  const auto moves = Must(BuildCycle(t, c, 3, 2.0));
+  const auto moves = ValueOf(BuildCycle(t, c, 3, 2.0));
   std::map<std::tuple<int, int, int>, int> count;  // (run, target, dir)
   for (std::size_t i = 1; i < moves.size(); ++i) {
     const CycleMove& m = moves[i];
@@ -124,7 +124,7 @@ TEST(MetrologyTestProgram, LinearCycleApproachesEveryTargetFromBothSides) {
 TEST(MetrologyTestProgram, PseudoPilgrimCycleApproachesEveryTargetFromBothSides) {
   CheckCycle(Cycle::kPseudoPilgrim);
   // The step-return order: P1↑ P2↑ P1↓ P3↑ P2↓ P4↑ P3↓ (overrun) P4↓.
-  const auto m = Must(BuildCycle({0.0, 10.0, 20.0, 30.0}, Cycle::kPseudoPilgrim, 1, 1.0));
+  const auto m = ValueOf(BuildCycle({0.0, 10.0, 20.0, 30.0}, Cycle::kPseudoPilgrim, 1, 1.0));
   std::vector<int> order;
   for (const auto& mv : m) {
     if (mv.measure) order.push_back(mv.approach == Direction::kUp ? mv.target : -mv.target);
@@ -133,12 +133,12 @@ TEST(MetrologyTestProgram, PseudoPilgrimCycleApproachesEveryTargetFromBothSides)
 }
 
 TEST(MetrologyTestProgram, GcodeMarksEveryMeasuredStop) {
-  const auto moves = Must(BuildCycle({0.0, 100.0, 200.0}, Cycle::kLinear, 2, 5.0));
+  const auto moves = ValueOf(BuildCycle({0.0, 100.0, 200.0}, Cycle::kLinear, 2, 5.0));
   GcodeOptions o;
   o.axes = {"Y"};
   o.dwell_s = 1.5;
   o.feed = 800;
-  const std::string g = Must(EmitGcode(moves, o));
+  const std::string g = ValueOf(EmitGcode(moves, o));
   EXPECT_EQ(g.rfind("G21 G90 G94", 0) == std::string::npos, true);  // preceded by comments
   EXPECT_NE(g.find("G21 G90 G94\n"), std::string::npos);
   EXPECT_NE(g.find("G0 Y-5.000\nF800\n"), std::string::npos);
@@ -151,23 +151,23 @@ TEST(MetrologyTestProgram, GcodeMarksEveryMeasuredStop) {
 }
 
 TEST(MetrologyTestProgram, GcodeAlongADiagonal) {
-  const auto moves = Must(BuildCycle({0.0, 5.0}, Cycle::kLinear, 1, 1.0));
+  const auto moves = ValueOf(BuildCycle({0.0, 5.0}, Cycle::kLinear, 1, 1.0));
   GcodeOptions o;
   o.axes = {"X", "Y", "Z"};
   o.origin = {10.0, 20.0, 30.0};
   o.direction = {0.6, 0.8, 0.0};
-  const std::string g = Must(EmitGcode(moves, o));
+  const std::string g = ValueOf(EmitGcode(moves, o));
   EXPECT_NE(g.find("G1 X13.000 Y24.000 Z30.000 (P2 up run 1)"), std::string::npos);
   EXPECT_NE(g.find("G0 X9.400 Y19.200 Z30.000"), std::string::npos);
 }
 
 // RS274NGC (LinuxCNC): a comment runs from '(' to the first ')' and may not nest.
 TEST(MetrologyTestProgram, TitleCommentDoesNotNest) {
-  const std::vector<CycleMove> moves = Must(BuildCycle({10.0, 20.0}, Cycle::kLinear, 1, 5.0));
+  const std::vector<CycleMove> moves = ValueOf(BuildCycle({10.0, 20.0}, Cycle::kLinear, 1, 5.0));
   GcodeOptions o;
   o.axes = {"X"};
   o.title = "linear cycle (fig. 1), I_x (mm)";
-  const std::string g = Must(EmitGcode(moves, o));
+  const std::string g = ValueOf(EmitGcode(moves, o));
   EXPECT_EQ(g.substr(0, g.find('\n')), "(linear cycle [fig. 1], I_x [mm])");
   for (std::size_t line = 0; line < g.size(); line = g.find('\n', line) + 1) {
     const std::string l = g.substr(line, g.find('\n', line) - line);

@@ -5,14 +5,10 @@
 
 #include <string>
 
+#include "occurrences.hpp"
+
 namespace volcomp::report {
 namespace {
-
-std::size_t Count(const std::string& s, const std::string& what) {
-  std::size_t n = 0;
-  for (std::size_t p = s.find(what); p != std::string::npos; p = s.find(what, p + 1)) ++n;
-  return n;
-}
 
 TEST(ReportPolarChart, TracesCentresAndZones) {
   PolarChart p;
@@ -26,7 +22,7 @@ TEST(ReportPolarChart, TracesCentresAndZones) {
   p.centres.push_back({"LSC", 0.01, 0.02});
   p.zones.push_back({"zone", 0.01, 0.02, -0.05, 0.05});
   const std::string s = p.Render();
-  EXPECT_EQ(Count(s, "<polygon"), 1u);
+  EXPECT_EQ(volcomp::testing::Occurrences(s, "<polygon"), 1u);
   EXPECT_NE(s.find("LSC"), std::string::npos);
   EXPECT_NE(s.find("270°"), std::string::npos);
 }

@@ -5,14 +5,12 @@
 
 #include <string>
 
+#include "occurrences.hpp"
+
 namespace volcomp::report {
 namespace {
 
-std::size_t Count(const std::string& s, const std::string& what) {
-  std::size_t n = 0;
-  for (std::size_t p = s.find(what); p != std::string::npos; p = s.find(what, p + 1)) ++n;
-  return n;
-}
+using volcomp::testing::Occurrences;
 
 TEST(ReportXyChart, DrawsEveryElement) {
   XyChart c;
@@ -33,8 +31,8 @@ TEST(ReportXyChart, DrawsEveryElement) {
   c.bars.push_back(b);
   c.hlines.push_back({"A = 7", 3.0});
   const std::string s = c.Render();
-  EXPECT_EQ(Count(s, "<polyline"), 1u);
-  EXPECT_GE(Count(s, "<rect"), 3u + 1u);
+  EXPECT_EQ(Occurrences(s, "<polyline"), 1u);
+  EXPECT_GE(Occurrences(s, "<rect"), 3u + 1u);
   EXPECT_NE(s.find("GOST fig. 10"), std::string::npos);
   EXPECT_NE(s.find("A = 7"), std::string::npos);
   EXPECT_NE(s.find("X̄↑"), std::string::npos);

@@ -10,6 +10,11 @@ std::vector<uint8_t> NumericPayload(canopen::ObjectId id, uint32_t value) {
   return bytes;
 }
 
+void StartNumericWrite(SdoClient& client, canopen::ObjectId id, uint32_t value) {
+  const canopen::ObjectEntry& e = canopen::Entry(id);
+  client.StartWrite(e.index, e.sub, NumericPayload(id, value));
+}
+
 SdoOutcome NodeObjects::Write(canopen::ObjectId id, uint32_t value) {
   return WriteDomain(id, NumericPayload(id, value));
 }

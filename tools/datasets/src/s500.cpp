@@ -1,7 +1,9 @@
 // The compiled-in STAN S500 model and tracker lines (data in s500_data.cpp).
 #include "volcomp/datasets/s500.hpp"
 
+#include <array>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "s500_data.hpp"
@@ -40,6 +42,16 @@ std::vector<model::TrackerNode> Line(const data::TrackerRow (&rows)[N], int axis
     out.push_back(n);
   }
   return out;
+}
+
+// Lines X, Y, Z of a printed tracker data set, with the direction cosines the tables print.
+model::TrackerData PrintedTracker(std::string name,
+                                  std::array<std::vector<model::TrackerNode>, 3> lines) {
+  model::TrackerData d;
+  d.name = std::move(name);
+  d.lines = std::move(lines);
+  d.has_printed_cosines = true;
+  return d;
 }
 
 }  // namespace
@@ -117,19 +129,15 @@ model::Model S500DissertationModel(model::Order order, model::DissertationCase w
 }
 
 model::TrackerData S500Tracker315() {
-  model::TrackerData d;
-  d.name = "STAN S500 laser tracker, 315 mm cube (Tables 2.10-2.12)";
-  d.lines = {Line(data::kTable2_10, 0), Line(data::kTable2_11, 1), Line(data::kTable2_12, 2)};
-  d.has_printed_cosines = true;
-  return d;
+  return PrintedTracker(
+      "STAN S500 laser tracker, 315 mm cube (Tables 2.10-2.12)",
+      {Line(data::kTable2_10, 0), Line(data::kTable2_11, 1), Line(data::kTable2_12, 2)});
 }
 
 model::TrackerData S500Tracker240() {
-  model::TrackerData d;
-  d.name = "STAN S500 laser tracker, 240 mm cube (Tables 2.6-2.8)";
-  d.lines = {Line(data::kTable2_6, 0), Line(data::kTable2_7, 1), Line(data::kTable2_8, 2)};
-  d.has_printed_cosines = true;
-  return d;
+  return PrintedTracker(
+      "STAN S500 laser tracker, 240 mm cube (Tables 2.6-2.8)",
+      {Line(data::kTable2_6, 0), Line(data::kTable2_7, 1), Line(data::kTable2_8, 2)});
 }
 
 std::optional<model::TrackerData> S500TrackerNamed(const std::string& name) {

@@ -63,20 +63,14 @@ Expected<TableBuildResult> AssembleTable(const std::optional<builders::GridSecti
                                          uint32_t table_id,
                                          const std::map<std::string, std::string>& info);
 
-/// The GRID3 section of the measured model over [lo, hi] (mm) with the given node spacing (mm)
-/// for axes of `step_mm` per step (ModelGridSource, BuildGridSection).
+/// The GRID3 section of the measured model on `lattice` (LatticeOptions: extent, node spacing and
+/// step size; ModelGridSource, BuildGridSection).
 Expected<builders::GridSection> BuildModelGridSection(const model::Model& measured,
-                                                      const std::array<double, 3>& lo_mm,
-                                                      const std::array<double, 3>& hi_mm,
-                                                      const std::array<double, 3>& spacing_mm,
-                                                      const std::array<double, 3>& step_mm);
+                                                      const builders::GridBuildOptions& lattice);
 
 /// The GRID3 image of the measured model (BuildModelGridSection, then AssembleTable).
 Expected<TableBuildResult> BuildTableImage(const model::Model& measured,
-                                           const std::array<double, 3>& lo_mm,
-                                           const std::array<double, 3>& hi_mm,
-                                           const std::array<double, 3>& spacing_mm,
-                                           const std::array<double, 3>& step_mm,
+                                           const builders::GridBuildOptions& lattice,
                                            uint32_t table_id);
 
 /// The AXIS1D section of `axis` (0..2) from mean deviations per target, with forward and reverse
@@ -89,14 +83,11 @@ Expected<builders::AxisSection> BuildAxisTable(const model::PositioningData& dev
 /// The GRID3 section from tracker readings at the nodes of a lattice, measured through the table
 /// in force (`in_force`, its image), composed with that table's GRID3
 /// (`volcomp build tracker --lattice --through`: GridOfImage, TrackerLatticeThroughGridSource,
-/// BuildGridSection), over [lo, hi] at the given spacing.
+/// BuildGridSection), on `grid` (LatticeOptions).
 Expected<builders::GridSection> BuildTrackerLatticeGridSection(
-    const model::TrackerLatticeData& lattice,
+    const model::TrackerLatticeData& readings,
     const std::vector<uint8_t>& in_force,
-    const std::array<double, 3>& lo_mm,
-    const std::array<double, 3>& hi_mm,
-    const std::array<double, 3>& spacing_mm,
-    const std::array<double, 3>& step_mm);
+    const builders::GridBuildOptions& grid);
 
 /// The measured model as files `volcomp build model --model DIR/measured.conf` reads:
 /// measured.conf and measured_x.csv, measured_y.csv, measured_z.csv in `dir` (kIoError when a

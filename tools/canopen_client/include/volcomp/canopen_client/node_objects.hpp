@@ -17,6 +17,9 @@ namespace volcomp::canopen_client {
 /// (4 bytes for other types).
 std::vector<uint8_t> NumericPayload(canopen::ObjectId id, uint32_t value);
 
+/// Starts that write on `client` (a transfer the caller runs over its own link).
+void StartNumericWrite(SdoClient& client, canopen::ObjectId id, uint32_t value);
+
 class NodeObjects {
  public:
   /// `link` must outlive this object (it is only referenced). `options` apply to every access.
