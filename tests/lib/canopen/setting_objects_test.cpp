@@ -20,7 +20,9 @@ TEST(SettingObjects, OneObjectPerSettingRowInDictionaryOrder) {
     EXPECT_EQ(e.access, Access::kRw) << e.name;
     EXPECT_NE(FixedSize(e.type), 0u) << e.name;
     EXPECT_EQ(FindSetting(s.id), &s) << e.name;
-    if (previous != nullptr) EXPECT_LT(previous->id, s.id);
+    if (previous != nullptr) {
+      EXPECT_LT(previous->id, s.id);
+    }
     previous = &s;
     if (s.axis != kBoardSetting) {
       EXPECT_EQ(e.sub, s.axis + 1) << e.name;
@@ -45,7 +47,9 @@ TEST(SettingObjects, EachReadsAndWritesItsFieldAndItsDefaultIsTheFactoryValue) {
     EXPECT_EQ(s.get(x), v) << e.name;
     // Only that field changed.
     for (const SettingObject& other : SettingObjects()) {
-      if (&other != &s) EXPECT_EQ(other.get(x), other.get(factory)) << Entry(other.id).name;
+      if (&other != &s) {
+        EXPECT_EQ(other.get(x), other.get(factory)) << Entry(other.id).name;
+      }
     }
   }
   BoardSettings x;

@@ -330,7 +330,7 @@ void CheckRefreshSchedule(table::ElementType type, uint64_t seed) {
   bool reverse[3] = {false, false, false};
   int64_t base[3] = {0, 0, 0}, extreme[3] = {pos[0], 0, 0};
   auto sensed = [&](int a) {
-    return pos[a] + static_cast<int64_t>(std::floor((base[a] + 128) / 256.0));
+    return pos[a] + static_cast<int64_t>(std::floor(static_cast<double>(base[a] + 128) / 256.0));
   };
   auto wrapped = [](int64_t p) {
     int64_t o = (p - 100) % 4000;
@@ -343,9 +343,7 @@ void CheckRefreshSchedule(table::ElementType type, uint64_t seed) {
   int dir[3] = {1, -1, 1};
   int refreshes = 0;
   for (uint32_t run = 0; run < 6000; ++run) {
-    int32_t last[3];
     for (int a = 0; a < 3; ++a) {
-      last[a] = pos[a];
       if (rng() % 50 == 0) dir[a] = -dir[a];
       pos[a] += dir[a] * static_cast<int32_t>(rng() % 30);
       const int64_t s_now = sensed(a);

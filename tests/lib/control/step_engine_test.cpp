@@ -136,6 +136,16 @@ EngineRun RunEngine(PulseFormat in_format,
   };
 
   uint64_t t = 0;
+  // One tick of the data path at time t: counters in, pulses planned and applied.
+  const auto tick = [&] {
+    io.set_tick_start_ns(t);
+    uint32_t counters[3];
+    io.ReadCounters(counters);
+    PulsePlan plans[3];
+    engine.Run(counters);
+    output.Plan(engine.targets(), plans);
+    io.Apply(plans);
+  };
   while (run.input_steps < steps_wanted) {
     for (int a = 0; a < 3; ++a) {
       // Random walk of the step rate: 0..20 steps per 20 us tick (up to 1 MHz), with reversals,
@@ -148,13 +158,7 @@ EngineRun RunEngine(PulseFormat in_format,
       for (uint32_t s = 0; s < rate[a]; ++s) step(a, dir[a]);
       io.set_counter(static_cast<uint8_t>(a), static_cast<uint32_t>(dec[a].count()));
     }
-    io.set_tick_start_ns(t);
-    uint32_t counters[3];
-    io.ReadCounters(counters);
-    PulsePlan plans[3];
-    engine.Run(counters);
-    output.Plan(engine.targets(), plans);
-    io.Apply(plans);
+    tick();
     for (uint8_t a = 0; a < 3; ++a) {
       // Exactness every tick: planned output = input + correction - backlog.
       EXPECT_EQ(output.position(a) + output.backlog(a, engine.target(a)),
@@ -166,13 +170,7 @@ EngineRun RunEngine(PulseFormat in_format,
   }
   // Let the correction settle with the inputs standing still, then compare.
   for (int i = 0; i < 20000; ++i) {
-    io.set_tick_start_ns(t);
-    uint32_t counters[3];
-    io.ReadCounters(counters);
-    PulsePlan plans[3];
-    engine.Run(counters);
-    output.Plan(engine.targets(), plans);
-    io.Apply(plans);
+    tick();
     t += tick_ns;
   }
   for (uint8_t a = 0; a < 3; ++a) {
