@@ -39,6 +39,7 @@ struct Cnc::Move {
   std::array<int, 3> dir = {1, 1, 1};
   std::array<uint64_t, 3> next_t = {0, 0, 0};
   std::array<double, 3> path_per_step_mm = {0, 0, 0};  // path length per step of each axis
+  PathSegment path = PathSegment::Line({0, 0, 0}, {0, 0, 0});
 
   uint64_t StepTime(size_t a, int64_t k) const {
     const double s = k == n[a] ? profile.length_mm() : path_per_step_mm[a] * static_cast<double>(k);
@@ -191,8 +192,24 @@ int Cnc::active_line() const {
   return chain_->lines[i];
 }
 
-bool Cnc::active_rapid() const {
-  return active_ && active_->kind == Block::Kind::kMove && active_->rapid;
+Cnc::Activity Cnc::activity() const {
+  if (!active_) return Activity::kIdle;
+  switch (active_->kind) {
+    case Block::Kind::kDwell:
+      return Activity::kDwell;
+    case Block::Kind::kHome:
+      return Activity::kHome;
+    case Block::Kind::kMove:
+      break;
+  }
+  return active_->rapid ? Activity::kRapid : Activity::kFeed;
+}
+
+std::optional<PathSegment> Cnc::active_segment() const {
+  if (!active_ || active_->kind != Block::Kind::kMove) return std::nullopt;
+  if (chain_) return chain_->motion->SegmentAt(now_ns_);
+  if (move_) return move_->path;
+  return std::nullopt;
 }
 
 double Cnc::RapidSpeed_mm_s(const std::array<int64_t, 3>& delta_steps) const {
@@ -251,6 +268,14 @@ void Cnc::Start(const Block& b, uint64_t t0) {
     len2 += d * d;
   }
   const double length = std::sqrt(len2);
+  {
+    Point3 from, to;
+    for (size_t a = 0; a < 3; ++a) {
+      from[a] = static_cast<double>(position(static_cast<int>(a))) * config_.step_mm[a];
+      to[a] = from[a] + static_cast<double>(delta[a]) * config_.step_mm[a];
+    }
+    m->path = PathSegment::Line(from, to);
+  }
   if (length == 0) {
     m->end_ns = t0;
     move_ = std::move(m);

@@ -170,6 +170,29 @@ double PathSegment::NextCrossing(int axis, double s_from_mm, double level_mm, in
   return -1;
 }
 
+double PathSegment::DistanceTo(const Point3& p_mm) const {
+  auto distance = [&](const Point3& q) {
+    return std::sqrt((p_mm[0] - q[0]) * (p_mm[0] - q[0]) + (p_mm[1] - q[1]) * (p_mm[1] - q[1]) +
+                     (p_mm[2] - q[2]) * (p_mm[2] - q[2]));
+  };
+  if (length_ == 0) return distance(start_);
+  if (!arc_) {
+    double along = 0;
+    for (size_t a = 0; a < 3; ++a) along += (p_mm[a] - start_[a]) * (end_[a] - start_[a]);
+    return distance(PointAt(std::clamp(along / length_, 0.0, length_)));
+  }
+  const double df = p_mm[static_cast<size_t>(axes_[0])] - centre_[0];
+  const double dg = p_mm[static_cast<size_t>(axes_[1])] - centre_[1];
+  // The point's angle from the start, in the direction of travel, within one turn.
+  double turned = std::atan2(dg, df) - angle0_;
+  if (sweep_ < 0) turned = -turned;
+  turned = std::fmod(turned, 2 * kPi);
+  if (turned < 0) turned += 2 * kPi;
+  const double best = std::min(distance(start_), distance(end_mm()));
+  if (turned > std::fabs(sweep_)) return best;
+  return std::min(best, distance(PointAt(length_ * turned / std::fabs(sweep_))));
+}
+
 double PathSegment::SpeedLimit(const Point3& axis_speed_mm_s, double accel_mm_s2) const {
   double v = INFINITY;
   if (length_ == 0) return v;

@@ -37,6 +37,13 @@ double PathMotion::PathLengthAt(uint64_t t_ns) const {
   return profile_.PositionAt(t);
 }
 
+const PathSegment& PathMotion::SegmentAt(uint64_t t_ns) const {
+  const double s = PathLengthAt(t_ns);
+  size_t i = 0;
+  while (i + 1 < segments_.size() && offset_mm_[i + 1] <= s) ++i;
+  return segments_[i];
+}
+
 Point3 PathMotion::PositionAt(uint64_t t_ns) const {
   const double s = PathLengthAt(t_ns);
   size_t i = 0;

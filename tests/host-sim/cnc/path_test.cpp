@@ -133,6 +133,18 @@ TEST(SimPath, CrossingsFollowTheCircleThroughItsExtremes) {
   EXPECT_LT(s->NextCrossing(1, 0, 1.5, 1), 0);  // outside the circle
 }
 
+TEST(SimPath, DistanceToTheArcIsRadialOnItAndToTheNearerEndOffIt) {
+  auto s = PathSegment::Resolve({10, 0, 0}, Arc(false, 17, {0, 10, 0}, {-10, 0, 0}));
+  ASSERT_TRUE(s.ok());
+  EXPECT_NEAR(s->DistanceTo({0, 0, 0}), 10, 1e-9);
+  EXPECT_NEAR(s->DistanceTo({3 * std::sqrt(8.0), 3 * std::sqrt(8.0), 0}), 2, 1e-9);  // r = 12
+  EXPECT_NEAR(s->DistanceTo({6, 8, 1}), 1, 1e-9);                                    // 1 above
+  EXPECT_NEAR(s->DistanceTo({-10, 0, 0}), std::sqrt(200.0), 1e-9);  // off the arc: the end
+  const PathSegment line = PathSegment::Line({0, 0, 0}, {10, 0, 0});
+  EXPECT_NEAR(line.DistanceTo({1, 5, 0}), 5, 1e-12);
+  EXPECT_NEAR(line.DistanceTo({13, 4, 0}), 5, 1e-12);
+}
+
 TEST(SimPath, SpeedLimitKeepsTheCentripetalAccelerationAndTheAxisRates) {
   auto s = PathSegment::Resolve({10, 0, 0}, Arc(false, 17, {10, 0, 0}, {-10, 0, 0}));
   ASSERT_TRUE(s.ok());

@@ -62,10 +62,14 @@ class Cnc {
   void QueueHome(uint8_t mask);
   /// Queues a parsed G-code program (coordinates in mm of the machine frame).
   void QueueProgram(const Program& program);
+  /// What the CNC executes at the last AdvanceTo().
+  enum class Activity { kIdle, kRapid, kFeed, kDwell, kHome };
+  Activity activity() const;
   /// The program line of the block being executed at the last AdvanceTo() (0: none, or a block
-  /// not from a program), and whether it is a rapid.
+  /// not from a program).
   int active_line() const;
-  bool active_rapid() const;
+  /// The path of the move being executed (the segment of a chain it is on), if any.
+  std::optional<PathSegment> active_segment() const;
   /// Called at the end of every dwell (G4): the simulator's cue for a measurement.
   void set_dwell_handler(DwellHandler handler) { on_dwell_ = std::move(handler); }
 

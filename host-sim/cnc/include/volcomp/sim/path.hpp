@@ -57,6 +57,9 @@ class PathSegment {
   /// The smallest s in (s_from_mm, length] where coordinate `axis` reaches `level_mm` while moving
   /// in direction `dir` (+1 up, -1 down); a negative number when it does not within the segment.
   double NextCrossing(int axis, double s_from_mm, double level_mm, int dir) const;
+  /// Distance (mm) from `p_mm` to the nearest point of the segment (an arc's in-plane and normal
+  /// deviations at the point's angle when that angle lies on the arc, else the nearer end).
+  double DistanceTo(const Point3& p_mm) const;
   /// The highest path speed (mm/s) at which no axis exceeds `axis_speed_mm_s[axis]` anywhere on
   /// the segment and, on an arc, the centripetal acceleration v^2/r stays within `accel_mm_s2`.
   double SpeedLimit(const Point3& axis_speed_mm_s, double accel_mm_s2) const;

@@ -33,6 +33,8 @@ class PathMotion {
   double peak_speed_mm_s() const { return profile_.peak_speed_mm_s(); }
   /// The path length travelled (mm) at virtual time `t_ns`.
   double PathLengthAt(uint64_t t_ns) const;
+  /// The segment the path is on at virtual time `t_ns`.
+  const PathSegment& SegmentAt(uint64_t t_ns) const;
   /// The ideal position (mm) at virtual time `t_ns`.
   Point3 PositionAt(uint64_t t_ns) const;
 
