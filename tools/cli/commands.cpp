@@ -24,6 +24,7 @@ const std::vector<const Command*>& Commands() {
       &EvaluatePositioningCommand(),
       &EvaluateDiagonalCommand(),
       &EvaluateRotaryCommand(),
+      &EvaluateCircularCommand(),
       &ProgramPositioningCommand(),
       &ProgramDiagonalCommand(),
       &ReportCompareCommand(),

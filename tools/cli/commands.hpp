@@ -29,6 +29,7 @@ const Command& EdsCommand();
 const Command& EvaluatePositioningCommand();
 const Command& EvaluateDiagonalCommand();
 const Command& EvaluateRotaryCommand();
+const Command& EvaluateCircularCommand();
 const Command& ProgramPositioningCommand();
 const Command& ProgramDiagonalCommand();
 const Command& ReportCompareCommand();
