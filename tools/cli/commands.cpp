@@ -27,6 +27,7 @@ const std::vector<const Command*>& Commands() {
       &EvaluateCircularCommand(),
       &ProgramPositioningCommand(),
       &ProgramDiagonalCommand(),
+      &ProgramCircularCommand(),
       &ReportCompareCommand(),
       &BuildModelCommand(),
       &BuildTrackerCommand(),

@@ -32,6 +32,7 @@ const Command& EvaluateRotaryCommand();
 const Command& EvaluateCircularCommand();
 const Command& ProgramPositioningCommand();
 const Command& ProgramDiagonalCommand();
+const Command& ProgramCircularCommand();
 const Command& ReportCompareCommand();
 const Command& BuildModelCommand();
 const Command& BuildTrackerCommand();
