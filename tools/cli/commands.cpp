@@ -33,6 +33,7 @@ const std::vector<const Command*>& Commands() {
       &BuildTrackerCommand(),
       &BuildKmtppCommand(),
       &BuildAxisCommand(),
+      &BuildImageCommand(),
       &ExportLinuxcncCommand(),
       &ModelEvalCommand(),
   };

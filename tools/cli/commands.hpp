@@ -38,6 +38,7 @@ const Command& BuildModelCommand();
 const Command& BuildTrackerCommand();
 const Command& BuildKmtppCommand();
 const Command& BuildAxisCommand();
+const Command& BuildImageCommand();
 const Command& ExportLinuxcncCommand();
 const Command& ModelEvalCommand();
 
