@@ -33,9 +33,9 @@ struct CircularPath {
 };
 
 struct CircularData {
-  std::string source;
   CircularPath cw;
   CircularPath ccw;
+  std::string source;              // names the data in messages ("" for none)
   double nominal_radius_mm = 0.0;  // 0 when the file gives deviations
 };
 
