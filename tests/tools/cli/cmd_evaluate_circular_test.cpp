@@ -105,6 +105,8 @@ TEST(EvaluateCircularCli, SampleShowsTheFiguresItWasMadeWith) {
   EXPECT_GE(j.get("G_b_um")->number, j.get("G_cw_um")->number);
   EXPECT_GE(j.get("G_b_um")->number, j.get("G_ccw_um")->number);
   EXPECT_EQ(j.get("warnings")->array.size(), 0u);
+  EXPECT_EQ(j.get("paths")->get("cw")->get("angle_deg")->array.size(), 360u);
+  EXPECT_EQ(j.get("paths")->get("ccw")->get("deviation_um")->array.size(), 360u);
   const std::string plot = testing::ReadText(svg);
   EXPECT_NE(plot.find("<svg"), std::string::npos);
   EXPECT_NE(plot.find("CCW"), std::string::npos);

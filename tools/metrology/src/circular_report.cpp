@@ -2,6 +2,7 @@
 #include "volcomp/metrology/circular_report.hpp"
 
 #include <algorithm>
+#include <utility>
 
 #include "json_fields.hpp"
 #include "volcomp/metrology/polar_fit.hpp"
@@ -87,6 +88,19 @@ JsonValue CircularJson(const CircularEvaluation& ev) {
   offset.Set("y", r.centre_offset_y_um);
   j.Set("centre_offset_um", std::move(offset));
   j.Set("mean_radius_deviation_um", r.mean_radius_dev_um);
+  // The readings (for plots and `report compare`'s overlay), as read.
+  JsonValue paths = JsonValue::Object();
+  for (const auto& [name, path] :
+       {std::pair<const char*, const CircularPath*>{"cw", &ev.data.cw}, {"ccw", &ev.data.ccw}}) {
+    JsonValue o = JsonValue::Object();
+    JsonValue angles = JsonValue::Array(), deviations = JsonValue::Array();
+    for (double a : path->angle_deg) angles.Push(a);
+    for (double d : path->deviation_um) deviations.Push(d);
+    o.Set("angle_deg", std::move(angles));
+    o.Set("deviation_um", std::move(deviations));
+    paths.Set(name, std::move(o));
+  }
+  j.Set("paths", std::move(paths));
   JsonValue warnings = JsonValue::Array();
   for (const auto& w : r.warnings) warnings.Push(w);
   j.Set("warnings", std::move(warnings));

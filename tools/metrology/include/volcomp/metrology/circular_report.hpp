@@ -21,7 +21,8 @@ struct CircularEvaluation {
 };
 
 /// Keys G_cw_um, G_ccw_um, G_b_um, H_um (null for a missing direction), F_max_um, F_min_um,
-/// centre_offset_um {x, y}, and the context (source, conditions, radius, points, warnings).
+/// centre_offset_um {x, y}, the context (source, conditions, radius, points, warnings) and the
+/// readings (paths {cw, ccw} {angle_deg, deviation_um}).
 tools::JsonValue CircularJson(const CircularEvaluation& ev);
 /// The figures as text, from CircularJson()'s document.
 void WriteCircularText(std::ostream& out, const tools::JsonValue& ev);
