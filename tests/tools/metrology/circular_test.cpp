@@ -277,6 +277,10 @@ TEST(Circular, TooFewAnglesAreRefused) {
                 {"c.csv: the counter-clockwise (ccw) path has readings at 2 distinct angle(s); "
                  "at least 3 are needed"});
   ExpectFailure(EvaluateCircular(CircularData{}), Error::kInputInvalid, {"no readings"});
+  CircularData uneven = HandCase();
+  uneven.cw.deviation_um.pop_back();
+  ExpectFailure(EvaluateCircular(uneven), Error::kInvalidArgument,
+                {"as many angles as deviations are needed"});
 }
 
 // --- The reader. ---

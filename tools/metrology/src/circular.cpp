@@ -104,7 +104,13 @@ Expected<CircularResult> EvaluateCircular(const CircularData& data) {
   r.points_ccw = data.ccw.angle_deg.size();
   r.has_cw = r.points_cw > 0;
   r.has_ccw = r.points_ccw > 0;
-  if (!r.has_cw && !r.has_ccw) return Fail(Error::kInputInvalid, data.source + ": no readings");
+  const std::string prefix = data.source.empty() ? "" : data.source + ": ";
+  if (!r.has_cw && !r.has_ccw) return Fail(Error::kInputInvalid, prefix + "no readings");
+  for (const CircularPath* p : {&data.cw, &data.ccw}) {
+    if (p->angle_deg.size() != p->deviation_um.size()) {
+      return Fail(Error::kInvalidArgument, prefix + "as many angles as deviations are needed");
+    }
+  }
   std::vector<double> all_angle, all_dev;
   for (const CircularPath* p : {&data.cw, &data.ccw}) {
     all_angle.insert(all_angle.end(), p->angle_deg.begin(), p->angle_deg.end());
@@ -112,7 +118,7 @@ Expected<CircularResult> EvaluateCircular(const CircularData& data) {
   }
   auto path_g = [&](const CircularPath& p, const char* name) -> Expected<double> {
     if (auto ok = CheckPath(p, name, &r.warnings); !ok.ok()) {
-      return data.source.empty() ? Fail(ok.error()) : Fail(ok.error().Prefixed(data.source));
+      return Fail(Error::kInputInvalid, prefix + ok.error().message);
     }
     VOLCOMP_TRY_ASSIGN(const CentreFit c, FitLeastSquaresCentre(p.angle_deg, p.deviation_um));
     return ValueAbout(p.angle_deg, p.deviation_um, c.a, c.b);
