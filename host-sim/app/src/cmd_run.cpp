@@ -43,6 +43,23 @@ tools::JsonValue ResultJson(const ProgramRunResult& r) {
     segments.Push(s);
   }
   j.Set("segments", segments);
+  if (r.circular) {
+    const metrology::CircularResult& c = *r.circular;
+    tools::JsonValue b = tools::JsonValue::Object();
+    b.Set("points_cw", static_cast<unsigned long long>(c.points_cw));
+    b.Set("points_ccw", static_cast<unsigned long long>(c.points_ccw));
+    b.Set("G_cw_um", c.G_cw_um);
+    b.Set("G_ccw_um", c.G_ccw_um);
+    b.Set("G_b_um", c.G_b_um);
+    b.Set("H_um", c.H_um);
+    b.Set("F_max_um", c.F_max_um);
+    b.Set("F_min_um", c.F_min_um);
+    tools::JsonValue offset = tools::JsonValue::Object();
+    offset.Set("x", c.centre_offset_x_um);
+    offset.Set("y", c.centre_offset_y_um);
+    b.Set("centre_offset_um", offset);
+    j.Set("ballbar", b);
+  }
   return j;
 }
 
@@ -69,6 +86,15 @@ void PrintResult(const ProgramRunResult& r, std::ostream& out) {
                 r.cutting_max_error_um, r.cutting_rms_error_um, r.rapid_max_error_um,
                 r.rest_max_error_um);
   out << b;
+  if (r.circular) {
+    const metrology::CircularResult& c = *r.circular;
+    std::snprintf(b, sizeof b,
+                  "ballbar (ISO 230-4, %zu cw + %zu ccw readings): G cw %.2f um, G ccw %.2f um, "
+                  "G(b) %.2f um, H %.2f um, F max %.2f um, F min %.2f um\n",
+                  c.points_cw, c.points_ccw, c.G_cw_um, c.G_ccw_um, c.G_b_um, c.H_um, c.F_max_um,
+                  c.F_min_um);
+    out << b;
+  }
   std::snprintf(b, sizeof b, "lost steps %llu (%llu rest checks), pulse timing violations %llu\n",
                 static_cast<unsigned long long>(r.lost_steps),
                 static_cast<unsigned long long>(r.rest_checks),
@@ -83,6 +109,7 @@ Expected<int> RunProgramCommand(args::Args& args, Context& ctx) {
   const auto report = args.Value("--report");
   const auto model = args.Value("--model");
   const bool json = args.Flag("--json");
+  const auto ballbar = args.Value("--ballbar");
   const std::vector<std::string> files = args.Positionals();
   VOLCOMP_TRY(args.Finish());
   if (files.size() != 1) return UsageFailure("give one program file (PROGRAM.ngc)");
@@ -98,6 +125,14 @@ Expected<int> RunProgramCommand(args::Args& args, Context& ctx) {
     o.seed = static_cast<uint64_t>(*seed);
   }
   if (model) o.model_spec = *model;
+  if (ballbar) {
+    Point3 p;
+    char tail = 0;
+    if (std::sscanf(ballbar->c_str(), "%lf,%lf,%lf%c", &p[0], &p[1], &p[2], &tail) != 3) {
+      return UsageFailure("--ballbar needs the pivot as X,Y,Z (mm), not \"" + *ballbar + "\"");
+    }
+    o.ballbar_pivot_mm = p;
+  }
   if (table) {
     VOLCOMP_TRY_ASSIGN(o.table_image, tools::ReadFileBytes(*table));
   }
@@ -113,7 +148,8 @@ Expected<int> RunProgramCommand(args::Args& args, Context& ctx) {
     std::ostringstream result_json;
     tools::WriteJson(ResultJson(r), result_json);
     VOLCOMP_TRY(tools::WriteTextFile(*report + "/result.json", result_json.str()));
-    log << "report: " << *report << "/index.html, samples.csv, result.json\n";
+    log << "report: " << *report << "/index.html, samples.csv, result.json"
+        << (r.ballbar.empty() ? "" : ", ballbar.csv") << "\n";
   }
   if (r.lost_steps != 0 || r.timing_violations != 0) {
     ctx.err << "volcomp-sim run: " << r.lost_steps << " lost steps, " << r.timing_violations
@@ -129,10 +165,12 @@ const Command& RunCommand() {
   static const Command command{
       "run",
       "  run PROGRAM.ngc [--machine ideal|worn] [--table IMAGE] [--seed N] [--model s500|CONFIG]\n"
-      "      [--report DIR] [--json]\n"
+      "      [--ballbar X,Y,Z] [--report DIR] [--json]\n"
       "       a part program through the real firmware on the simulated machine: homing,\n"
       "       the table (if any) uploaded and activated, then the program; the tool point's\n"
-      "       error against the programmed path along the whole program (G0-G4, G17-G19)\n",
+      "       error against the programmed path along the whole program (G0-G4, G17-G19);\n"
+      "       --ballbar: a ballbar on a pivot at X,Y,Z reads every full circle about it\n"
+      "       (ISO 230-4 G, G(b), H, F; with --report also ballbar.csv)\n",
       RunProgramCommand};
   return command;
 }

@@ -94,6 +94,18 @@ Expected<PathSegment> PathSegment::Resolve(const Point3& start_mm, const PathReq
   return p;
 }
 
+Point3 PathSegment::centre_mm() const {
+  if (!arc_) return start_;
+  Point3 c = start_;
+  c[static_cast<size_t>(axes_[0])] = centre_[0];
+  c[static_cast<size_t>(axes_[1])] = centre_[1];
+  return c;
+}
+
+bool PathSegment::full_circle() const {
+  return arc_ && std::fabs(std::fabs(sweep_) - 2 * kPi) < 1e-9;
+}
+
 Point3 PathSegment::PointAt(double s_mm) const {
   if (length_ == 0) return start_;
   const double f = std::clamp(s_mm / length_, 0.0, 1.0);

@@ -9,6 +9,7 @@
 #include "volcomp/report/format.hpp"
 #include "volcomp/report/html_page.hpp"
 #include "volcomp/report/xy_chart.hpp"
+#include "volcomp/sim/ballbar.hpp"
 #include "volcomp/sim/board_session.hpp"
 #include "volcomp/sim/gcode.hpp"
 #include "volcomp/sim/world.hpp"
@@ -133,6 +134,33 @@ Expected<ProgramRunResult> RunProgramOnMachine(const ProgramRunOptions& o, std::
   cnc.set_dwell_handler([&world](uint64_t) { world.CheckAtRest(); });
   cnc.QueueProgram(program);
 
+  std::optional<Ballbar> ballbar;
+  if (o.ballbar_pivot_mm) {
+    const Point3& p = *o.ballbar_pivot_mm;
+    ballbar.emplace(&world.machine(), model::Vec3{p[0], p[1], p[2]}, BallbarOptions{},
+                    o.seed ^ 0x62616c6c626172ull);
+  }
+  const model::Vec3 work_offset{offset_mm[0], offset_mm[1], offset_mm[2]};
+  int last_degree[2] = {-1, -1};  // per direction: the last whole degree read
+  auto read_ballbar = [&](const PathSegment& arc, const model::Vec3& q_mm, const Point3& tool) {
+    const Point3 c = arc.centre_mm();
+    if (!arc.full_circle() || Distance(c, *o.ballbar_pivot_mm) > 1e-3) return;
+    const auto& ax = arc.plane_axes();
+    const size_t f = static_cast<size_t>(ax[0]), g = static_cast<size_t>(ax[1]);
+    double angle = std::atan2(tool[g] - c[g], tool[f] - c[f]) * 180 / 3.14159265358979323846;
+    if (angle < 0) angle += 360;
+    const bool cw = arc.sweep_rad() < 0;
+    const int degree = static_cast<int>(angle);
+    if (degree == last_degree[cw]) return;
+    last_degree[cw] = degree;
+    BallbarReading b;
+    b.cw = cw;
+    b.angle_deg = angle;
+    b.deviation_um = ballbar->Deviation_um(q_mm, work_offset, arc.radius_mm());
+    b.plane = ax[0] == 0 ? 17 : ax[0] == 2 ? 18 : 19;
+    b.radius_mm = arc.radius_mm();
+    r.ballbar.push_back(b);
+  };
   const uint64_t period_ns = static_cast<uint64_t>(std::llround(o.sample_period_s * 1e9));
   const uint64_t t0 = world.now_ns();
   double cutting_sum2 = 0;
@@ -145,13 +173,17 @@ Expected<ProgramRunResult> RunProgramOnMachine(const ProgramRunOptions& o, std::
              : act == Cnc::Activity::kRapid ? SampleKind::kRapid
                                             : SampleKind::kRest;
     s.commanded_mm = ToPoint(world.CommandedPoint_mm());
-    s.tool_mm = ToPoint(world.machine().ToolPoint_mm(world.AxisPositions_mm()));
+    const model::Vec3 q = world.AxisPositions_mm();
+    s.tool_mm = ToPoint(world.machine().ToolPoint_mm(q));
     for (size_t a = 0; a < 3; ++a) s.tool_mm[a] -= offset_mm[a];
     const std::optional<PathSegment> path = cnc.active_segment();
     const double error_mm = s.kind != SampleKind::kRest && path
                                 ? path->DistanceTo(s.tool_mm)
                                 : Distance(s.tool_mm, s.commanded_mm);
     s.error_um = 1e3 * error_mm;
+    if (ballbar && s.kind == SampleKind::kCutting && path && path->arc()) {
+      read_ballbar(*path, q, s.tool_mm);
+    }
     if (s.kind == SampleKind::kCutting) {
       r.cutting_max_error_um = std::max(r.cutting_max_error_um, s.error_um);
       cutting_sum2 += s.error_um * s.error_um;
@@ -184,6 +216,21 @@ Expected<ProgramRunResult> RunProgramOnMachine(const ProgramRunOptions& o, std::
   sample(false);
   if (r.cutting_samples > 0) {
     r.cutting_rms_error_um = std::sqrt(cutting_sum2 / static_cast<double>(r.cutting_samples));
+  }
+  if (o.ballbar_pivot_mm) {
+    metrology::CircularData data;
+    data.source = o.program_name + " (ballbar)";
+    for (const BallbarReading& b : r.ballbar) {
+      metrology::CircularPath& path = b.cw ? data.cw : data.ccw;
+      path.angle_deg.push_back(b.angle_deg);
+      path.deviation_um.push_back(b.deviation_um);
+    }
+    if (r.ballbar.empty()) {
+      return Fail(Error::kInputInvalid, o.program_name +
+                                            ": the ballbar read nothing: no full circle about "
+                                            "its pivot (give the circle's centre)");
+    }
+    VOLCOMP_TRY_ASSIGN(r.circular, metrology::EvaluateCircular(data));
   }
   const StepAudit audit = world.Audit();
   r.lost_steps = audit.lost_steps;
@@ -221,6 +268,15 @@ Outcome WriteProgramRunReport(const ProgramRunResult& r, const std::string& dir)
     }
   }
   VOLCOMP_TRY(tools::WriteTextFile(dir + "/samples.csv", csv.str()));
+  if (!r.ballbar.empty()) {
+    std::ostringstream bar;
+    bar << "direction,angle_deg,deviation_um\n";
+    for (const BallbarReading& b : r.ballbar) {
+      bar << (b.cw ? "cw," : "ccw,") << report::FormatFixed(b.angle_deg, 3) << ','
+          << report::FormatFixed(b.deviation_um, 2) << '\n';
+    }
+    VOLCOMP_TRY(tools::WriteTextFile(dir + "/ballbar.csv", bar.str()));
+  }
   report::XyChart chart;
   chart.title = r.program + " on the " + r.machine + " machine";
   chart.x_label = "time since the program started, s";

@@ -13,6 +13,7 @@
 
 #include "expected_value.hpp"
 #include "temp_paths.hpp"
+#include "volcomp/tools/csv.hpp"
 
 namespace volcomp::sim {
 namespace {
@@ -84,6 +85,53 @@ TEST(SimProgramRun, OnAMachineWithoutErrorsTheToolFollowsArcsInEveryPlaneToTheSt
     EXPECT_LE(r.cutting_max_error_um, 1.0) << plane;
     EXPECT_GT(r.cutting_samples, on_circle);
   }
+}
+
+TEST(SimProgramRun, TheBallbarReadsEveryDegreeOfBothDirectionsOnTheMeasuredCircles) {
+  // The ISO 230-4 program of `volcomp program circular` shape: CCW then CW, each with run-in and
+  // run-out quarters; on a machine without errors G, G(b), H and F are the sensor's resolution and
+  // the steps (each axis within half a step).
+  ProgramRunOptions o;
+  o.program_name = "ballbar.ngc";
+  o.program_text =
+      "G21 G90 G17 G64\nG0 X200 Y90 Z100\nG3 X250 Y140 I0 J50 F2000\nG3 X250 Y140 I-50 J0\n"
+      "G3 X200 Y190 I-50 J0\nG2 X250 Y140 I0 J-50\nG2 X250 Y140 I-50 J0\n"
+      "G2 X200 Y90 I-50 J0\nM2\n";
+  o.model_spec = WriteZeroModel(testing::TempPath("program_run_zero"));
+  o.ballbar_pivot_mm = Point3{200, 140, 100};
+  std::ostringstream log;
+  const ProgramRunResult r = testing::ValueOf(RunProgramOnMachine(o, log));
+  ASSERT_TRUE(r.circular.has_value());
+  EXPECT_GE(r.circular->points_cw, 359u);
+  EXPECT_GE(r.circular->points_ccw, 359u);
+  for (double v : {r.circular->G_cw_um, r.circular->G_ccw_um, r.circular->G_b_um, r.circular->H_um,
+                   r.circular->F_max_um, -r.circular->F_min_um}) {
+    EXPECT_LE(v, 1.6);
+  }
+  // Only the two measured circles are read (not the run-in and run-out quarters): one reading per
+  // degree, angles covering the whole turn.
+  double lo = 360, hi = 0;
+  for (const BallbarReading& b : r.ballbar) {
+    lo = std::min(lo, b.angle_deg);
+    hi = std::max(hi, b.angle_deg);
+    EXPECT_EQ(b.radius_mm, 50);
+  }
+  EXPECT_LT(lo, 1.0);
+  EXPECT_GT(hi, 359.0);
+  EXPECT_LE(r.ballbar.size(), 2u * 361u);
+  // ballbar.csv is what `volcomp evaluate circular` reads, and gives the same figures.
+  const std::string dir = testing::FreshTempPath("program_run_ballbar");
+  ASSERT_TRUE(WriteProgramRunReport(r, dir).ok());
+  const tools::CsvTable csv = testing::ValueOf(tools::CsvTable::ReadFile(dir + "/ballbar.csv"));
+  const metrology::CircularData data = testing::ValueOf(metrology::ReadCircularCsv(csv, 0));
+  const metrology::CircularResult again = testing::ValueOf(metrology::EvaluateCircular(data));
+  EXPECT_NEAR(again.G_b_um, r.circular->G_b_um, 0.02);
+  EXPECT_NEAR(again.H_um, r.circular->H_um, 0.02);
+  // A pivot no measured circle turns about is refused.
+  o.ballbar_pivot_mm = Point3{0, 0, 0};
+  const auto none = RunProgramOnMachine(o, log);
+  ASSERT_FALSE(none.ok());
+  EXPECT_NE(none.error().message.find("the ballbar read nothing"), std::string::npos);
 }
 
 TEST(SimProgramRun, RefusesABadProgramWithItsLineBeforeRunning) {

@@ -47,6 +47,10 @@ class PathSegment {
   const Point3& start_mm() const { return start_; }
   /// The end point of the path (for an arc: on the start radius).
   Point3 end_mm() const { return PointAt(length_); }
+  /// An arc's centre (the normal axis at the start's coordinate); a line's start.
+  Point3 centre_mm() const;
+  /// An arc of a whole turn.
+  bool full_circle() const;
   /// Axis indices of the arc plane: first, second, normal (G17: X Y Z, G18: Z X Y, G19: Y Z X).
   const std::array<int, 3>& plane_axes() const { return axes_; }
 

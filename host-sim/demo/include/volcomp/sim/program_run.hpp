@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "volcomp/hosted/expected.hpp"
+#include "volcomp/metrology/circular.hpp"
 #include "volcomp/sim/path.hpp"
 
 namespace volcomp::sim {
@@ -33,6 +34,9 @@ struct ProgramRunOptions {
   std::string model_spec = "s500";
   std::vector<uint8_t> table_image;    // empty: run without compensation
   std::optional<Point3> touch_off_mm;  // default: the end of the program's first move
+  /// A ballbar's centre pivot (the test circle's centre): the bar reads on every full circle
+  /// about it (ISO 230-4), one reading per degree and direction.
+  std::optional<Point3> ballbar_pivot_mm;
   double accel_mm_s2 = 10000;
   double sample_period_s = 100e-6;
   uint64_t limit_s = 3600;  // virtual time the program may take
@@ -57,6 +61,14 @@ struct LineFigures {
   double max_error_um = 0;
 };
 
+struct BallbarReading {
+  bool cw = false;
+  double angle_deg = 0;  // in the circle's plane from its first axis towards its second
+  double deviation_um = 0;
+  int plane = 17;
+  double radius_mm = 0;
+};
+
 struct ProgramRunResult {
   std::string program;
   std::string machine;     // "ideal" or "worn"
@@ -70,14 +82,18 @@ struct ProgramRunResult {
   uint64_t lost_steps = 0, timing_violations = 0, rest_checks = 0;
   std::vector<LineFigures> lines;  // per program line that ran, in order of first appearance
   std::vector<PathSample> samples;
+  std::vector<BallbarReading> ballbar;                // with ballbar_pivot_mm
+  std::optional<metrology::CircularResult> circular;  // the ballbar's readings evaluated
 };
 
 /// Runs the program. Failures: the program (kInputInvalid, "name:line: ..."), the model, the
-/// board's refusal of the table (upload or activation), the program not finishing in limit_s.
+/// board's refusal of the table (upload or activation), the program not finishing in limit_s, a
+/// ballbar that read no full circle about its pivot or too little of one.
 Expected<ProgramRunResult> RunProgramOnMachine(const ProgramRunOptions& options, std::ostream& log);
 
-/// The samples as CSV (t_s,line,kind,x_cmd_mm,..,x_mm,..,error_um) and the error along the
-/// program as an HTML page with an SVG chart, into `dir` (created).
+/// The samples as CSV (t_s,line,kind,x_cmd_mm,..,x_mm,..,error_um), the error along the program
+/// as an HTML page with an SVG chart and, with a ballbar, its readings as ballbar.csv in the
+/// format `volcomp evaluate circular` reads, into `dir` (created).
 Outcome WriteProgramRunReport(const ProgramRunResult& result, const std::string& dir);
 
 }  // namespace volcomp::sim
