@@ -110,6 +110,7 @@ Expected<int> RunProgramCommand(args::Args& args, Context& ctx) {
   const auto model = args.Value("--model");
   const bool json = args.Flag("--json");
   const auto ballbar = args.Value("--ballbar");
+  const auto settings = args.Value("--settings");
   const std::vector<std::string> files = args.Positionals();
   VOLCOMP_TRY(args.Finish());
   if (files.size() != 1) return UsageFailure("give one program file (PROGRAM.ngc)");
@@ -125,6 +126,10 @@ Expected<int> RunProgramCommand(args::Args& args, Context& ctx) {
     o.seed = static_cast<uint64_t>(*seed);
   }
   if (model) o.model_spec = *model;
+  if (settings) {
+    VOLCOMP_TRY_ASSIGN(o.settings_ini, tools::ReadTextFile(*settings));
+    o.settings_source = *settings;
+  }
   if (ballbar) {
     Point3 p;
     char tail = 0;
@@ -165,10 +170,11 @@ const Command& RunCommand() {
   static const Command command{
       "run",
       "  run PROGRAM.ngc [--machine ideal|worn] [--table IMAGE] [--seed N] [--model s500|CONFIG]\n"
-      "      [--ballbar X,Y,Z] [--report DIR] [--json]\n"
+      "      [--settings BOARD.ini] [--ballbar X,Y,Z] [--report DIR] [--json]\n"
       "       a part program through the real firmware on the simulated machine: homing,\n"
       "       the table (if any) uploaded and activated, then the program; the tool point's\n"
       "       error against the programmed path along the whole program (G0-G4, G17-G19);\n"
+      "       --settings: board settings over the simulator's (keys left out keep theirs);\n"
       "       --ballbar: a ballbar on a pivot at X,Y,Z reads every full circle about it\n"
       "       (ISO 230-4 G, G(b), H, F; with --report also ballbar.csv)\n",
       RunProgramCommand};

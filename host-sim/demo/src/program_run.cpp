@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <sstream>
 
+#include "volcomp/hosted/settings_ini.hpp"
 #include "volcomp/report/format.hpp"
 #include "volcomp/report/html_page.hpp"
 #include "volcomp/report/xy_chart.hpp"
@@ -35,6 +36,14 @@ Expected<std::unique_ptr<World>> MakeWorld(const ProgramRunOptions& o) {
   {
     VOLCOMP_TRY_ASSIGN(const Machine machine, Machine::Create(wo.machine));
     wo.board = BoardSettingsFor(machine);
+  }
+  if (!o.settings_ini.empty()) {
+    const auto doc = hosted::IniDocument::Parse(o.settings_ini, o.settings_source);
+    if (!doc.ok()) return Unexpected<Failure>{doc.error().ToFailure()};
+    const auto read = hosted::ReadSettings(*doc, &wo.board);
+    if (!read.ok()) return Unexpected<Failure>{read.error().ToFailure()};
+    const auto checked = hosted::CheckSettings(*doc, wo.board);
+    if (!checked.ok()) return Unexpected<Failure>{checked.error().ToFailure()};
   }
   wo.cnc.accel_mm_s2 = o.accel_mm_s2;
   return World::Create(wo);

@@ -70,6 +70,14 @@ TEST(SimRunCommand, RefusesWhatItCannotRun) {
   const SimRun machine = Sim({"run", WriteProgram(), "--machine", "new"});
   EXPECT_EQ(machine.code, 2);
   EXPECT_EQ(machine.err, "volcomp-sim run: --machine must be ideal or worn\n");
+  const std::string ini = testing::TempPath("cmd_run_bad.ini");
+  std::ofstream(ini) << "[axis X]\n[axis Y]\nmax_rate = fast\n[axis Z]\n";
+  const SimRun settings = Sim({"run", WriteProgram(), "--settings", ini});
+  EXPECT_EQ(settings.code, 1);
+  EXPECT_NE(settings.err.find("cmd_run_bad.ini:3:"), std::string::npos) << settings.err;
+  const SimRun ballbar = Sim({"run", WriteProgram(), "--ballbar", "1,2"});
+  EXPECT_EQ(ballbar.code, 2);
+  EXPECT_EQ(ballbar.err, "volcomp-sim run: --ballbar needs the pivot as X,Y,Z (mm), not \"1,2\"\n");
   const SimRun missing = Sim({"run", testing::TempPath("no_such_program.ngc")});
   EXPECT_EQ(missing.code, 1);
   EXPECT_NE(missing.err.find("no_such_program.ngc"), std::string::npos) << missing.err;

@@ -32,7 +32,11 @@ struct ProgramRunOptions {
   bool worn = false;         // the worn machine (DefaultWornProfile) instead of the ideal one
   uint64_t seed = 1;         // the worn machine's random stream
   std::string model_spec = "s500";
-  std::vector<uint8_t> table_image;    // empty: run without compensation
+  std::vector<uint8_t> table_image;  // empty: run without compensation
+  /// Board settings over the simulator's (the PC tool's board INI: [board] and one [axis X|Y|Z]
+  /// section per axis; keys left out keep the simulated board's values); empty: none.
+  std::string settings_ini;
+  std::string settings_source;
   std::optional<Point3> touch_off_mm;  // default: the end of the program's first move
   /// A ballbar's centre pivot (the test circle's centre): the bar reads on every full circle
   /// about it (ISO 230-4), one reading per degree and direction.
