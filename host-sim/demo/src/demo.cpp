@@ -54,6 +54,7 @@ Outcome RunIdeal(Session& s, DemoResult& r) {
   progress.Step("building the table from the measurements");
   const auto t0 = Clock::now();
   VOLCOMP_TRY_ASSIGN(builders::GridSection grid, demo::BuildModelGrid(s, r));
+  r.table_label = "21-param";
   VOLCOMP_TRY_ASSIGN(
       r.table, AssembleTable(
                    std::move(grid), {}, s.step_mm(), 1,

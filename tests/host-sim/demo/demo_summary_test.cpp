@@ -294,6 +294,13 @@ TEST(SimDemoSummary, IdealRunWritesEveryPrintedFigure) {
   EXPECT_EQ(json->get("goals"), nullptr);
   EXPECT_EQ(Member(Member(*json, "run"), "profile").string, "ideal");
   EXPECT_EQ(log.str().find("lost motion"), std::string::npos);  // the ideal header is unchanged
+  // The rigid-body machine: every worn source off, the geometry there.
+  const JsonValue& sources = Member(Member(*json, "run"), "error_sources");
+  for (const char* source : {"lost_motion", "scatter", "screw", "thermal", "sag"}) {
+    EXPECT_FALSE(Member(Member(sources, source), "on").boolean) << source;
+  }
+  EXPECT_EQ(Member(Member(sources, "geometry"), "axes").array.size(), 3u);
+  EXPECT_EQ(Member(Member(Member(*json, "run"), "tables").array.at(0), "label").string, "21-param");
   std::filesystem::remove_all(dir);
 }
 
