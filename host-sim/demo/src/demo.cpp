@@ -38,6 +38,7 @@ void CheckIdeal(double step_um, DemoResult& r) {
 }
 
 void Keep(DemoResult& r, StagedTable t) {
+  r.table_label = t.label;
   r.table = std::move(t.table);
   r.upload = t.upload;
   r.activation = t.activation;
@@ -53,6 +54,7 @@ Outcome RunIdeal(Session& s, DemoResult& r) {
   progress.Step("building the table from the measurements");
   const auto t0 = Clock::now();
   VOLCOMP_TRY_ASSIGN(builders::GridSection grid, demo::BuildModelGrid(s, r));
+  r.table_label = "21-param";
   VOLCOMP_TRY_ASSIGN(
       r.table, AssembleTable(
                    std::move(grid), {}, s.step_mm(), 1,
@@ -204,6 +206,7 @@ Expected<DemoResult> RunDemo(const DemoOptions& o, std::ostream& log) {
             LaserTracker(&world.machine(), o.tracker, Random(o.seed ^ 0x6472696674ull).Next()),
             {layout.inner_hi[0], layout.centre[1], layout.centre[2]},
             0};
+  r.error_sources = demo::ErrorSources(s);
   demo::PrintSetup(s, r, wo);
   VOLCOMP_TRY(demo::PlanTests(s, rng));
 

@@ -1,6 +1,7 @@
 // HTML report and data files of a demo run.
 #include <cmath>
 #include <cstdio>
+#include <sstream>
 
 #include "volcomp/metrology/diagonal_report.hpp"
 #include "volcomp/metrology/positioning_report.hpp"
@@ -9,6 +10,7 @@
 #include "volcomp/report/xy_chart.hpp"
 #include "volcomp/sim/demo.hpp"
 #include "volcomp/tools/file_io.hpp"
+#include "volcomp/tools/json_value.hpp"
 
 namespace volcomp::sim {
 namespace {
@@ -244,6 +246,12 @@ Outcome WriteDemoReport(const DemoResult& r, const std::string& dir) {
   VOLCOMP_TRY(tools::WriteTextFile(dir + "/programs/points.ngc", r.before.points.program.gcode));
   VOLCOMP_TRY(WriteModelFiles(r.measured_model, dir + "/model"));
   VOLCOMP_TRY(tools::WriteFileBytes(dir + "/table.vct", r.table.image));
+  {
+    std::ostringstream summary;
+    tools::WriteJson(SummaryData(r), summary);
+    summary << "\n";
+    VOLCOMP_TRY(tools::WriteTextFile(dir + "/summary.json", summary.str()));
+  }
 
   report::HtmlPage page("volcomp-sim demo report");
   page.Heading(1, "volcomp-sim demo: volumetric compensation of a simulated machine");

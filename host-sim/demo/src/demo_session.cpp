@@ -136,6 +136,7 @@ void PrintSetup(Session& s, const DemoResult& r, const WorldOptions& wo) {
                    << "  board: the real firmware (BoardApp) on the mock HAL, tick "
                    << wo.board.board.tick_hz / 1000 << " kHz; CAN " << wo.can_bitrate / 1000
                    << " kbit/s; node " << static_cast<int>(wo.board.node_id) << "\n";
+  if (s.o.machine == MachineProfile::kWorn) PrintErrorSources(r.error_sources, s.progress);
 }
 
 Outcome Home(World& world) {

@@ -67,7 +67,12 @@ struct Session {
 
 // The GOST 27843 plans of the three axes and the random points (from `rng`, in this order).
 Outcome PlanTests(Session& s, Random& rng);
+// The installation; the worn machine's also lists r.error_sources.
 void PrintSetup(Session& s, const DemoResult& r, const WorldOptions& wo);
+// The machine's error sources with their sizes, read from the machine and the instruments'
+// options (demo_sources.cpp; DemoResult::error_sources).
+tools::JsonValue ErrorSources(Session& s);
+void PrintErrorSources(const tools::JsonValue& sources, Progress& progress);
 
 Outcome Home(World& world);
 // Power-up homing; checks that the board and the CNC agree on the positions.

@@ -1,5 +1,7 @@
 // The demo's summary: the figures of every phase, steps and timing, and (worn machine) the goals
-// and the error budget.
+// and the error budget. SummaryData builds one document with every figure; the text is printed
+// from that document only (and --report writes it as summary.json), so the text cannot show a
+// figure the JSON lacks.
 #include <cstdio>
 #include <string>
 #include <vector>
@@ -9,208 +11,390 @@
 namespace volcomp::sim {
 namespace {
 
+using tools::JsonValue;
+
 double Reduction(double before, double after) {
   return before > 0 ? 100.0 * (1.0 - after / before) : 0.0;
+}
+
+std::string Hex32(uint32_t v) {
+  char b[16];
+  std::snprintf(b, sizeof b, "0x%08X", v);
+  return b;
+}
+
+JsonValue Vec(const model::Vec3& v) { return JsonValue::Array().Push(v.x).Push(v.y).Push(v.z); }
+JsonValue Vec(const std::array<double, 3>& v) {
+  return JsonValue::Array().Push(v[0]).Push(v[1]).Push(v[2]);
 }
 
 // How a row's last column reads: the reduction, or why there is none.
 enum class RowKind { kReduce, kNoise, kScatter };
 
-class FigureTable {
+class FigureRows {
  public:
-  FigureTable(const DemoResult& r, std::ostream& out) : out_(out) {
+  explicit FigureRows(const DemoResult& r) {
     phases_.push_back(&r.before);
-    labels_.push_back("before");
-    for (const NamedPhase& p : r.intermediate) {
-      phases_.push_back(&p.results);
-      labels_.push_back(p.label);
-    }
+    for (const NamedPhase& p : r.intermediate) phases_.push_back(&p.results);
     phases_.push_back(&r.after);
-    labels_.push_back(r.after_label);
-  }
-
-  void Header() {
-    std::string h(44, ' ');
-    char b[32];
-    for (size_t i = 0; i < labels_.size(); ++i) {
-      std::snprintf(b, sizeof b, i == 0 ? "%12s" : "%13s", labels_[i].c_str());
-      h += b;
-    }
-    out_ << h << "   reduction\n";
   }
 
   template <typename Figure>
-  void Row(const std::string& label, Figure figure, RowKind kind) {
-    char b[64];
-    std::snprintf(b, sizeof b, "%-44s", label.c_str());
-    std::string line = b;
-    for (const PhaseResults* p : phases_) {
-      std::snprintf(b, sizeof b, " %9.3f um", figure(*p));
-      line += b;
-    }
+  void Row(const std::string& key, const std::string& name, Figure figure, RowKind kind) {
+    JsonValue row = JsonValue::Object();
+    row.Set("key", key).Set("name", name).Set("unit", "um");
+    JsonValue values = JsonValue::Array();
+    for (const PhaseResults* p : phases_) values.Push(figure(*p));
+    row.Set("values", std::move(values));
     if (kind == RowKind::kReduce) {
-      std::snprintf(b, sizeof b, "   %6.2f %%",
-                    Reduction(figure(*phases_.front()), figure(*phases_.back())));
-      line += b;
+      row.Set("reduction_pct", Reduction(figure(*phases_.front()), figure(*phases_.back())));
     } else {
-      line += kind == RowKind::kNoise ? "   (noise)" : "   (scatter)";
+      row.Set("reduction_pct", JsonValue());
+      row.Set("note", kind == RowKind::kNoise ? "noise" : "scatter");
     }
-    out_ << line << "\n";
+    rows_.Push(std::move(row));
   }
 
+  JsonValue Take() { return std::move(rows_); }
+
  private:
-  std::ostream& out_;
   std::vector<const PhaseResults*> phases_;
-  std::vector<std::string> labels_;
+  JsonValue rows_ = JsonValue::Array();
 };
 
-void PrintFigures(const DemoResult& r, std::ostream& out) {
+JsonValue Figures(const DemoResult& r) {
   const bool worn = r.options.machine == MachineProfile::kWorn;
   // Ideal machine: no backlash and no random positioning error, so R, B and B_d are instrument
   // noise. Worn machine: B and B_d are the lost motion, R the scatter.
   const RowKind reversal = worn ? RowKind::kReduce : RowKind::kNoise;
   const RowKind repeatability = worn ? RowKind::kScatter : RowKind::kNoise;
-  FigureTable t(r, out);
-  t.Header();
+  FigureRows t(r);
   t.Row(
-      "ISO 230-6 E_d (4 body diagonals)", [](const PhaseResults& p) { return p.Ed(); },
+      "ed", "ISO 230-6 E_d (4 body diagonals)", [](const PhaseResults& p) { return p.Ed(); },
       RowKind::kReduce);
   t.Row(
-      "ISO 230-6 B_d", [](const PhaseResults& p) { return p.Bd(); }, reversal);
+      "bd", "ISO 230-6 B_d", [](const PhaseResults& p) { return p.Bd(); }, reversal);
   t.Row(
+      "points_max",
       "volumetric error, max of " + std::to_string(r.after.points.targets_mm.size()) +
           " points (tracker)",
       [](const PhaseResults& p) { return p.points.max_um; }, RowKind::kReduce);
   t.Row(
-      "  rms (tracker)", [](const PhaseResults& p) { return p.points.rms_um; }, RowKind::kReduce);
+      "points_rms", "  rms (tracker)", [](const PhaseResults& p) { return p.points.rms_um; },
+      RowKind::kReduce);
   t.Row(
+      "points_true_max",
       worn ? "  max, machine (no instrument error)" : "  max, machine model (no instrument error)",
       [](const PhaseResults& p) { return p.points.true_max_um; }, RowKind::kReduce);
   for (size_t a = 0; a < 3; ++a) {
     const std::string axis = std::string("GOST 27843 ") + "XYZ"[a];
+    const std::string k = std::string("gost_") + "xyz"[a];
     t.Row(
-        axis + "  A (accuracy)", [a](const PhaseResults& p) { return p.Gost()[a].A; },
+        k + "_a", axis + "  A (accuracy)", [a](const PhaseResults& p) { return p.Gost()[a].A; },
         RowKind::kReduce);
     t.Row(
-        axis + "  R (repeatability)", [a](const PhaseResults& p) { return p.Gost()[a].R; },
-        repeatability);
+        k + "_r", axis + "  R (repeatability)",
+        [a](const PhaseResults& p) { return p.Gost()[a].R; }, repeatability);
     t.Row(
-        axis + "  B (reversal)", [a](const PhaseResults& p) { return p.Gost()[a].B; }, reversal);
+        k + "_b", axis + "  B (reversal)", [a](const PhaseResults& p) { return p.Gost()[a].B; },
+        reversal);
+  }
+  return t.Take();
+}
+
+JsonValue Goals(const DemoResult& r) {
+  JsonValue goals = JsonValue::Array();
+  for (const Goal& g : r.goals) {
+    JsonValue o = JsonValue::Object();
+    o.Set("name", g.what)
+        .Set("value", g.value)
+        .Set("unit", g.at_least ? "%" : "um")
+        .Set("limit", g.limit)
+        .Set("at_least", g.at_least)
+        .Set("holds", g.holds);
+    goals.Push(std::move(o));
+  }
+  return goals;
+}
+
+JsonValue Budget(const DemoResult& r) {
+  const ErrorBudget& e = r.budget;
+  JsonValue b = JsonValue::Object();
+  b.Set("sigma_um", Vec(e.sigma_um))
+      .Set("three_sigma_um", e.three_sigma_um)
+      .Set("drift_since_table_um", Vec(e.drift_since_table_um))
+      .Set("drift_since_table_norm_um", model::Norm(e.drift_since_table_um))
+      .Set("drift_since_table_s", e.drift_since_table_s)
+      .Set("unmeasured_s", e.unmeasured_s)
+      .Set("drift_during_points_um", Vec(e.drift_during_points_um))
+      .Set("screw_period_mm", r.options.wear.screw_period_mm)
+      .Set("axis_run_pitch_mm", r.options.axis_run_pitch_mm)
+      .Set("lattice_spacing_mm", r.options.lattice_spacing_mm)
+      .Set("short_period_um", Vec(e.short_period_um))
+      .Set("tracker_three_sigma_um", e.tracker_three_sigma_um)
+      .Set("laser_cosine_um", e.laser_cosine_um)
+      .Set("step_um", e.step_um)
+      .Set("limit_um", e.limit_um)
+      .Set("max_residual_um", r.after.points.true_max_um)
+      .Set("max_residual_within_limit", r.after.points.true_max_um <= e.limit_um)
+      .Set("short_period_norm_um", e.short_period_norm_um)
+      .Set("goal_limit_um", e.goal_limit_um);
+  return b;
+}
+
+JsonValue Run(const DemoResult& r) {
+  const DemoOptions& o = r.options;
+  JsonValue run = JsonValue::Object();
+  run.Set("machine", r.machine_name)
+      .Set("profile", o.machine == MachineProfile::kWorn ? "worn" : "ideal")
+      .Set("model", o.model_spec)
+      .Set("seed", static_cast<unsigned long long>(o.seed))
+      .Set("points", static_cast<unsigned long long>(r.after.points.targets_mm.size()))
+      .Set("gost_targets", o.gost_targets)
+      .Set("gost_runs", o.gost_runs)
+      .Set("diagonal_targets", o.diagonal_targets)
+      .Set("diagonal_runs", o.diagonal_runs);
+  JsonValue tables = JsonValue::Array();
+  auto table = [&](const std::string& label, const TableBuildResult& t, const UploadReport& u,
+                   const ActivationReport& a) {
+    JsonValue e = JsonValue::Object();
+    e.Set("label", label)
+        .Set("bytes", static_cast<unsigned long long>(t.image.size()))
+        .Set("crc32", Hex32(t.crc32))
+        .Set("staged_crc32", Hex32(u.staged_crc))
+        .Set("active_crc32", Hex32(a.active_crc))
+        .Set("upload_s", u.transfer_s);
+    tables.Push(std::move(e));
+  };
+  for (const StagedTable& t : r.earlier_tables) table(t.label, t.table, t.upload, t.activation);
+  table(r.table_label.empty() ? r.after_label : r.table_label, r.table, r.upload, r.activation);
+  run.Set("tables", std::move(tables));
+  if (!r.error_sources.is_null()) run.Set("error_sources", r.error_sources);
+  return run;
+}
+
+JsonValue Steps(const DemoResult& r) {
+  const double m_steps = static_cast<double>(r.audit.input_steps) / 1e6;
+  JsonValue s = JsonValue::Object();
+  s.Set("input_steps", static_cast<unsigned long long>(r.audit.input_steps))
+      .Set("output_steps", static_cast<unsigned long long>(r.audit.output_steps))
+      .Set("peak_input_rate_mhz", r.peak_input_rate_hz / 1e6)
+      .Set("lost_steps", static_cast<unsigned long long>(r.audit.lost_steps))
+      .Set("rest_checks", static_cast<unsigned long long>(r.audit.rest_checks))
+      .Set("ticks", static_cast<unsigned long long>(r.audit.ticks))
+      .Set("tick_mismatches", static_cast<unsigned long long>(r.audit.tick_mismatches))
+      .Set("timing_violations", static_cast<unsigned long long>(r.audit.timing_violations))
+      .Set("overruns", r.audit.overruns)
+      .Set("max_backlog_steps", r.audit.max_backlog);
+  JsonValue l = JsonValue::Object();
+  l.Set("tick_us", r.tick_us)
+      .Set("samples", static_cast<unsigned long long>(r.latency.samples))
+      .Set("p50_ticks", r.latency.p50_ticks)
+      .Set("p90_ticks", r.latency.p90_ticks)
+      .Set("p99_ticks", r.latency.p99_ticks)
+      .Set("p999_ticks", r.latency.p999_ticks)
+      .Set("max_ticks", r.latency.max_ticks)
+      .Set("limit_ticks", 2)
+      .Set("over_limit", static_cast<unsigned long long>(r.latency.over_2_ticks))
+      .Set("unmatched", static_cast<unsigned long long>(r.latency.unmatched));
+  JsonValue v = JsonValue::Object();
+  v.Set("benchmark_m_steps_per_s", r.benchmark.steps_per_s / 1e6)
+      .Set("benchmark_axes", 3)
+      .Set("benchmark_rate_mhz", 1)
+      .Set("goal_m_steps_per_s", 10)
+      .Set("machine_s", r.virtual_s)
+      .Set("m_steps", m_steps)
+      .Set("wall_s", r.wall_s)
+      .Set("m_steps_per_s", m_steps / r.wall_s);
+  JsonValue out = JsonValue::Object();
+  out.Set("steps", std::move(s)).Set("latency", std::move(l)).Set("speed", std::move(v));
+  return out;
+}
+
+// Reading the document back (it is ours: a missing member is null, and reads as 0).
+const JsonValue& At(const JsonValue& v, const std::string& key) {
+  static const JsonValue kNull;
+  const JsonValue* m = v.get(key);
+  return m != nullptr ? *m : kNull;
+}
+double Num(const JsonValue& v, const std::string& key) { return At(v, key).number; }
+double Num(const JsonValue& v, const std::string& key, size_t i) {
+  const JsonValue& a = At(v, key);
+  return i < a.array.size() ? a.array[i].number : 0.0;
+}
+unsigned long long Count(const JsonValue& v, const std::string& key) {
+  const JsonValue& n = At(v, key);
+  return n.is_unsigned ? n.uinteger : static_cast<unsigned long long>(n.integer);
+}
+const std::string& Str(const JsonValue& v, const std::string& key) { return At(v, key).string; }
+
+void PrintFigures(const JsonValue& d, std::ostream& out) {
+  char b[64];
+  std::string h(44, ' ');
+  const std::vector<JsonValue>& phases = At(d, "phases").array;
+  for (size_t i = 0; i < phases.size(); ++i) {
+    std::snprintf(b, sizeof b, i == 0 ? "%12s" : "%13s", phases[i].string.c_str());
+    h += b;
+  }
+  out << h << "   reduction\n";
+  for (const JsonValue& row : At(d, "figures").array) {
+    std::snprintf(b, sizeof b, "%-44s", Str(row, "name").c_str());
+    std::string line = b;
+    for (const JsonValue& v : At(row, "values").array) {
+      std::snprintf(b, sizeof b, " %9.3f %s", v.number, Str(row, "unit").c_str());
+      line += b;
+    }
+    const JsonValue& reduction = At(row, "reduction_pct");
+    if (reduction.is_number()) {
+      std::snprintf(b, sizeof b, "   %6.2f %%", reduction.number);
+      line += b;
+    } else {
+      line += "   (" + Str(row, "note") + ")";
+    }
+    out << line << "\n";
   }
 }
 
-void PrintGoals(const DemoResult& r, std::ostream& out) {
+void PrintGoals(const JsonValue& d, std::ostream& out) {
   out << "\n== goals of the worn profile =============================================\n";
   char b[300];
-  for (const Goal& g : r.goals) {
-    const bool percent = g.at_least;
-    std::snprintf(b, sizeof b, "%-84s %8.2f %s %s %6.2f %s  %s\n", g.what.c_str(), g.value,
-                  percent ? "%" : "um", g.at_least ? ">=" : "<=", g.limit, percent ? "%" : "um",
-                  g.holds ? "holds" : "FAILS");
+  for (const JsonValue& g : At(d, "goals").array) {
+    const std::string& unit = Str(g, "unit");
+    std::snprintf(b, sizeof b, "%-84s %8.2f %s %s %6.2f %s  %s\n", Str(g, "name").c_str(),
+                  Num(g, "value"), unit.c_str(),
+                  At(g, "at_least").boolean ? ">=" : "<=", Num(g, "limit"), unit.c_str(),
+                  At(g, "holds").boolean ? "holds" : "FAILS");
     out << b;
   }
 }
 
-void PrintBudget(const DemoResult& r, std::ostream& out) {
-  const ErrorBudget& e = r.budget;
-  const WornMachineProfile& w = r.options.wear;
+void PrintBudget(const JsonValue& d, std::ostream& out) {
+  const JsonValue& e = At(d, "error_budget");
   out << "\n== error budget: what remains after the last compensation ================\n";
   char b[400];
   std::snprintf(b, sizeof b,
                 "repeatability: GOST 27843 S (uncompensated, pooled over the targets) X %.2f, "
                 "Y %.2f, Z %.2f um -> 3 sigma (3-D) %.2f um\n",
-                e.sigma_um[0], e.sigma_um[1], e.sigma_um[2], e.three_sigma_um);
+                Num(e, "sigma_um", 0), Num(e, "sigma_um", 1), Num(e, "sigma_um", 2),
+                Num(e, "three_sigma_um"));
   out << b;
   std::snprintf(b, sizeof b,
                 "thermal drift at the check point since the tracker lattice was measured "
                 "(%.0f s; %.0f s of table changes not covered): (%.2f, %.2f, %.2f) um, |.| "
                 "%.2f um\n",
-                e.drift_since_table_s, e.unmeasured_s, e.drift_since_table_um.x,
-                e.drift_since_table_um.y, e.drift_since_table_um.z,
-                model::Norm(e.drift_since_table_um));
+                Num(e, "drift_since_table_s"), Num(e, "unmeasured_s"),
+                Num(e, "drift_since_table_um", 0), Num(e, "drift_since_table_um", 1),
+                Num(e, "drift_since_table_um", 2), Num(e, "drift_since_table_norm_um"));
   out << b;
   std::snprintf(b, sizeof b, "  of which during the final point test: (%.2f, %.2f, %.2f) um\n",
-                e.drift_during_points_um.x, e.drift_during_points_um.y, e.drift_during_points_um.z);
+                Num(e, "drift_during_points_um", 0), Num(e, "drift_during_points_um", 1),
+                Num(e, "drift_during_points_um", 2));
   out << b;
   std::snprintf(
       b, sizeof b,
       "short-period screw error (the machine's, period %.0f mm: not seen at the %.0f/%.0f "
       "mm measuring pitch): amplitude X %.2f, Y %.2f, Z %.2f um\n",
-      w.screw_period_mm, r.options.axis_run_pitch_mm, r.options.lattice_spacing_mm,
-      e.short_period_um[0], e.short_period_um[1], e.short_period_um[2]);
+      Num(e, "screw_period_mm"), Num(e, "axis_run_pitch_mm"), Num(e, "lattice_spacing_mm"),
+      Num(e, "short_period_um", 0), Num(e, "short_period_um", 1), Num(e, "short_period_um", 2));
   out << b;
   std::snprintf(b, sizeof b,
                 "the instrument: tracker 3 sigma %.2f um per coordinate (in the tracker figures, "
                 "and in every node of the lattice table); laser cosine error %.2f um over the "
                 "longest line\n",
-                e.tracker_three_sigma_um, e.laser_cosine_um);
+                Num(e, "tracker_three_sigma_um"), Num(e, "laser_cosine_um"));
   out << b;
   std::snprintf(b, sizeof b,
                 "resolution: 1 step = %.2f um\n"
                 "limit for the max residual: 3 sigma + |drift| + 1 step = %.2f um (the max "
                 "residual, %.2f um, %s it); + the short-period error |A| %.2f um = %.2f um\n",
-                e.step_um, e.limit_um, r.after.points.true_max_um,
-                r.after.points.true_max_um <= e.limit_um ? "is within" : "exceeds",
-                e.short_period_norm_um, e.goal_limit_um);
+                Num(e, "step_um"), Num(e, "limit_um"), Num(e, "max_residual_um"),
+                At(e, "max_residual_within_limit").boolean ? "is within" : "exceeds",
+                Num(e, "short_period_norm_um"), Num(e, "goal_limit_um"));
+  out << b;
+}
+
+void PrintSteps(const JsonValue& d, std::ostream& out) {
+  const JsonValue& s = At(d, "steps");
+  const JsonValue& l = At(d, "latency");
+  const JsonValue& v = At(d, "speed");
+  char b[256];
+  out << "\n== steps, timing, latency, speed =========================================\n";
+  std::snprintf(b, sizeof b,
+                "input steps %llu, output steps %llu, peak input rate %.3f MHz per axis\n",
+                Count(s, "input_steps"), Count(s, "output_steps"), Num(s, "peak_input_rate_mhz"));
+  out << b;
+  std::snprintf(b, sizeof b,
+                "lost steps: %llu (drive == CNC steps + correction at %llu rest points; drive == "
+                "board output at every one of %llu ticks: %llu mismatches)\n",
+                Count(s, "lost_steps"), Count(s, "rest_checks"), Count(s, "ticks"),
+                Count(s, "tick_mismatches"));
+  out << b;
+  std::snprintf(b, sizeof b,
+                "pulse timing violations at the drives: %llu; backlog overruns: %llu, largest "
+                "backlog %llu steps\n",
+                Count(s, "timing_violations"), Count(s, "overruns"), Count(s, "max_backlog_steps"));
+  out << b;
+  std::snprintf(b, sizeof b,
+                "latency input step -> output step (tick %.0f us, %llu steps): p50 %.2f, p90 "
+                "%.2f, p99 %.2f, p99.9 %.2f, max %.3f ticks; > %.0f ticks: %llu; unmatched: "
+                "%llu\n",
+                Num(l, "tick_us"), Count(l, "samples"), Num(l, "p50_ticks"), Num(l, "p90_ticks"),
+                Num(l, "p99_ticks"), Num(l, "p999_ticks"), Num(l, "max_ticks"),
+                Num(l, "limit_ticks"), Count(l, "over_limit"), Count(l, "unmatched"));
+  out << b;
+  std::snprintf(b, sizeof b,
+                "simulator speed: %.1f M steps/s (%.0f axes at %.0f MHz; goal >= %.0f M/s); whole "
+                "demo: %.1f s of machine time, %.1f M steps in %.1f s wall (%.1f M steps/s)\n",
+                Num(v, "benchmark_m_steps_per_s"), Num(v, "benchmark_axes"),
+                Num(v, "benchmark_rate_mhz"), Num(v, "goal_m_steps_per_s"), Num(v, "machine_s"),
+                Num(v, "m_steps"), Num(v, "wall_s"), Num(v, "m_steps_per_s"));
   out << b;
 }
 
 }  // namespace
 
-void PrintSummary(const DemoResult& r, std::ostream& out) {
+tools::JsonValue SummaryData(const DemoResult& r) {
   const bool worn = r.options.machine == MachineProfile::kWorn;
-  char b[256];
-  out << "\n== before / after compensation ==========================================\n";
-  PrintFigures(r, out);
+  JsonValue d = JsonValue::Object();
+  d.Set("run", Run(r));
+  JsonValue phases = JsonValue::Array().Push("before");
+  for (const NamedPhase& p : r.intermediate) phases.Push(p.label);
+  phases.Push(r.after_label);
+  d.Set("phases", std::move(phases));
+  d.Set("figures", Figures(r));
   if (worn) {
-    PrintGoals(r, out);
-    PrintBudget(r, out);
+    d.Set("goals", Goals(r));
+    d.Set("error_budget", Budget(r));
   }
-  out << "\n== steps, timing, latency, speed =========================================\n";
-  std::snprintf(b, sizeof b,
-                "input steps %llu, output steps %llu, peak input rate %.3f MHz per axis\n",
-                static_cast<unsigned long long>(r.audit.input_steps),
-                static_cast<unsigned long long>(r.audit.output_steps), r.peak_input_rate_hz / 1e6);
-  out << b;
-  std::snprintf(b, sizeof b,
-                "lost steps: %llu (drive == CNC steps + correction at %llu rest points; drive == "
-                "board output at every one of %llu ticks: %llu mismatches)\n",
-                static_cast<unsigned long long>(r.audit.lost_steps),
-                static_cast<unsigned long long>(r.audit.rest_checks),
-                static_cast<unsigned long long>(r.audit.ticks),
-                static_cast<unsigned long long>(r.audit.tick_mismatches));
-  out << b;
-  std::snprintf(b, sizeof b,
-                "pulse timing violations at the drives: %llu; backlog overruns: %u, largest "
-                "backlog %u steps\n",
-                static_cast<unsigned long long>(r.audit.timing_violations), r.audit.overruns,
-                r.audit.max_backlog);
-  out << b;
-  std::snprintf(b, sizeof b,
-                "latency input step -> output step (tick %.0f us, %llu steps): p50 %.2f, p90 "
-                "%.2f, p99 %.2f, p99.9 %.2f, max %.3f ticks; > 2 ticks: %llu; unmatched: %llu\n",
-                r.tick_us, static_cast<unsigned long long>(r.latency.samples), r.latency.p50_ticks,
-                r.latency.p90_ticks, r.latency.p99_ticks, r.latency.p999_ticks, r.latency.max_ticks,
-                static_cast<unsigned long long>(r.latency.over_2_ticks),
-                static_cast<unsigned long long>(r.latency.unmatched));
-  out << b;
-  std::snprintf(b, sizeof b,
-                "simulator speed: %.1f M steps/s (3 axes at 1 MHz; goal >= 10 M/s); whole demo: "
-                "%.1f s of machine time, %.1f M steps in %.1f s wall (%.1f M steps/s)\n",
-                r.benchmark.steps_per_s / 1e6, r.virtual_s,
-                static_cast<double>(r.audit.input_steps) / 1e6, r.wall_s,
-                static_cast<double>(r.audit.input_steps) / r.wall_s / 1e6);
-  out << b;
-  if (r.failures.empty()) {
+  for (auto& [key, value] : Steps(r).object) d.Set(key, std::move(value));
+  JsonValue failures = JsonValue::Array();
+  for (const std::string& f : r.failures) failures.Push(f);
+  d.Set("passed", r.failures.empty());
+  d.Set("failures", std::move(failures));
+  return d;
+}
+
+void PrintSummaryData(const tools::JsonValue& d, std::ostream& out) {
+  const bool worn = Str(At(d, "run"), "profile") == "worn";
+  out << "\n== before / after compensation ==========================================\n";
+  PrintFigures(d, out);
+  if (worn) {
+    PrintGoals(d, out);
+    PrintBudget(d, out);
+  }
+  PrintSteps(d, out);
+  if (At(d, "passed").boolean) {
     out << (worn ? "\nall checks passed: every goal of the worn profile holds, zero lost steps, "
                    "zero timing violations, latency <= 2 ticks\n"
                  : "\nall checks passed: residual >= 95 % below uncompensated (E_d and random "
                    "points), zero lost steps, zero timing violations, latency <= 2 ticks\n");
   } else {
     out << "\nFAILED:";
-    for (const std::string& f : r.failures) out << " " << f << ";";
+    for (const JsonValue& f : At(d, "failures").array) out << " " << f.string << ";";
     out << "\n";
   }
 }
+
+void PrintSummary(const DemoResult& r, std::ostream& out) { PrintSummaryData(SummaryData(r), out); }
 
 }  // namespace volcomp::sim

@@ -19,6 +19,7 @@
 #include "volcomp/sim/table_from_measurements.hpp"
 #include "volcomp/sim/world.hpp"
 #include "volcomp/sim/worn_profile.hpp"
+#include "volcomp/tools/json_value.hpp"
 
 namespace volcomp::sim {
 
@@ -128,12 +129,16 @@ struct Goal {
 struct DemoResult {
   DemoOptions options;
   std::string machine_name;
+  // The machine's error sources with their sizes, as the header prints them (geometry, lost
+  // motion, scatter, screw, thermal, sag, instruments; docs/simulator.md §4, summary.json).
+  tools::JsonValue error_sources;
   PhaseResults before, after;
   std::vector<NamedPhase> intermediate;  // worn: after 21-param, after 21-param + AXIS1D
   std::string after_label = "after";
   std::array<ParametricResult, 3> parametric;
   model::Model measured_model;
-  TableBuildResult table;  // the last table (active during `after`)
+  TableBuildResult table;   // the last table (active during `after`)
+  std::string table_label;  // its label ("": after_label)
   UploadReport upload;
   ActivationReport activation;
   std::vector<StagedTable> earlier_tables;  // worn: the tables before the last
@@ -160,11 +165,17 @@ struct DemoResult {
 /// when checks failed (DemoResult::failures).
 Expected<DemoResult> RunDemo(const DemoOptions& options, std::ostream& log);
 
-/// Prints the before/after summary and the checks (worn: the goals and the error budget).
+/// Every figure the summary prints, with the run's parameters: the document --report writes as
+/// summary.json (keys: docs/simulator.md §4). Units are in the keys or in a row's "unit".
+tools::JsonValue SummaryData(const DemoResult& result);
+/// Prints the before/after summary and the checks (worn: the goals and the error budget) from
+/// SummaryData's document alone, so the text shows no figure the JSON lacks.
+void PrintSummaryData(const tools::JsonValue& summary, std::ostream& out);
+/// PrintSummaryData(SummaryData(result), out).
 void PrintSummary(const DemoResult& result, std::ostream& out);
 
-/// Writes DIR/index.html and the data files (CSV, G-code, model, image) of a demo run; kIoError
-/// names a file or directory that cannot be written.
+/// Writes DIR/index.html, DIR/summary.json and the data files (CSV, G-code, model, image) of a
+/// demo run; kIoError names a file or directory that cannot be written.
 Outcome WriteDemoReport(const DemoResult& result, const std::string& dir);
 
 }  // namespace volcomp::sim
