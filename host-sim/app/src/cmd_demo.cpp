@@ -76,7 +76,7 @@ Expected<int> RunDemoCommand(args::Args& args, Context& ctx) {
   if (!o.report_dir.empty()) {
     VOLCOMP_TRY(WriteDemoReport(r, o.report_dir));
     ctx.out << "report: " << o.report_dir << "/index.html (data, programs, measured model, "
-            << "table.vct alongside)\n";
+            << "table.vct alongside; summary.json: every figure and goal)\n";
   }
   char wall[64];
   std::snprintf(wall, sizeof wall, "wall time %.1f s\n", r.wall_s);

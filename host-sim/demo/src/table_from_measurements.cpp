@@ -11,6 +11,7 @@
 #include "volcomp/builders/image_glue.hpp"
 #include "volcomp/builders/image_grid.hpp"
 #include "volcomp/image/image_builder.hpp"
+#include "volcomp/image/image_join.hpp"
 #include "volcomp/image/image_reader.hpp"
 
 namespace volcomp::sim {
@@ -89,6 +90,24 @@ Expected<TableBuildResult> AssembleTable(const std::optional<builders::GridSecti
                                          const std::array<double, 3>& step_mm,
                                          uint32_t table_id,
                                          const std::map<std::string, std::string>& info) {
+  if (grid && !axis_tables.empty()) {
+    // Both: one image each, joined as `volcomp build image --grid --axis` joins them.
+    VOLCOMP_TRY_ASSIGN(TableBuildResult r, AssembleTable(grid, {}, step_mm, table_id, info));
+    VOLCOMP_TRY_ASSIGN(const TableBuildResult a,
+                       AssembleTable(std::nullopt, axis_tables, step_mm, table_id, info));
+    VOLCOMP_TRY_ASSIGN(const image::LoadedImage grid_image,
+                       image::LoadedImage::FromBytes(r.image, "GRID3"));
+    VOLCOMP_TRY_ASSIGN(const image::LoadedImage axis_image,
+                       image::LoadedImage::FromBytes(a.image, "AXIS1D"));
+    image::JoinOptions join;
+    join.info = info;
+    VOLCOMP_TRY_ASSIGN(const image::JoinedImage joined,
+                       image::JoinImages({"GRID3", &grid_image}, {"AXIS1D", &axis_image}, join));
+    r.axis_tables = axis_tables;
+    r.image = joined.bytes;
+    r.crc32 = LoadLe32(r.image.data() + r.image.size() - 4);
+    return r;
+  }
   TableBuildResult r;
   r.grid = grid;
   r.axis_tables = axis_tables;

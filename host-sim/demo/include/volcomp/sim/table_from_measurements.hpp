@@ -56,7 +56,9 @@ struct TableBuildResult {
 };
 
 /// One image from a GRID3 section and/or AXIS1D sections (axis_tables[i] is axis i). `info` is
-/// added to the sections' own entries.
+/// added to the sections' own entries. With both, each goes into an image of its own (its own
+/// fraction bits) and the two are joined by image::JoinImages, as `volcomp build image --grid
+/// --axis` does; frac_bits and lsb_um are then the GRID3's.
 Expected<TableBuildResult> AssembleTable(const std::optional<builders::GridSection>& grid,
                                          const std::vector<builders::AxisSection>& axis_tables,
                                          const std::array<double, 3>& step_mm,
