@@ -3,7 +3,14 @@
 //
 //   loadrt volcomp table=FILE[,FILE...] [count=N | names=A[,B...]] [units=mm|inch[,...]]
 //                  [axes=XYZ[,...]]
+//   addf <name>.feedback servo-thread POSITION   (after the drives' feedback is read, before
+//                                                 motion-command-handler)
 //   addf <name>.update servo-thread POSITION     (right after motion-controller)
+//
+// Two functions, as LinuxCNC's moveoff has: `feedback` gives motion this period's feedback minus
+// the correction the drive was last commanded with (so motion sees its feedback as fresh as
+// without the component), `update` computes the correction from the positions motion has just
+// written and corrects the command.
 //
 // Per instance (default name volcomp.0) and joint channel J (joint J by default; axes= names the
 // table axis of each channel, e.g. axes=XYYZ for a gantry):
@@ -90,6 +97,9 @@ struct Instance {
   long period_ns = 0;
   bool last_reload = false;
   uint32_t reloads = 0;
+  double last_correction[lc::kMaxChannels] = {};  // per channel, machine units
+  uint32_t feedback_calls = 0;  // the feedback function runs (it must be in a thread)
+  uint32_t updates = 0;
 };
 
 int g_comp_id = -1;
@@ -140,6 +150,16 @@ void ApplyParams(Instance& in, bool force) {
   }
 }
 
+// Before motion: the feedback motion reads, without the correction the drive was commanded with.
+void Feedback(void* arg, long) {
+  Instance& in = *static_cast<Instance*>(arg);
+  InstanceHal& h = *in.hal;
+  for (uint8_t j = 0; j < in.map.count; ++j) {
+    *h.channel[j].fb_out = *h.channel[j].fb_in - in.last_correction[j];
+  }
+  ++in.feedback_calls;
+}
+
 void Update(void* arg, long period) {
   Instance& in = *static_cast<Instance*>(arg);
   InstanceHal& h = *in.hal;
@@ -169,8 +189,19 @@ void Update(void* arg, long period) {
     const double correction = corr[a] / k;
     *c.correction = correction;
     *c.cmd_out = *c.cmd_in + correction;
-    *c.fb_out = *c.fb_in - correction;
     *c.vel_out = *c.vel_in + vel[a] / k;
+    in.last_correction[j] = correction;
+    // Without the feedback function in a thread, motion still gets the feedback minus the
+    // correction, one period late (said once, below).
+    if (in.feedback_calls == 0) *c.fb_out = *c.fb_in - correction;
+  }
+  if (++in.updates == 1000 && in.feedback_calls == 0) {
+    rtapi_print_msg(
+        RTAPI_MSG_ERR,
+        "%s: %s.feedback runs in no thread: motion gets its feedback one servo period "
+        "late; addf %s.feedback servo-thread POSITION, after the function that reads the "
+        "drives' feedback and before motion-command-handler\n",
+        in.name.c_str(), in.name.c_str(), in.name.c_str());
   }
   *h.active = in.comp.engaged();
   *h.clamped = in.comp.clamped();
@@ -221,6 +252,9 @@ int MakePins(Instance& in) {
   if (r != 0) return r;
   *h.table_crc = in.active->crc32();
   char fn[HAL_NAME_LEN + 1];
+  std::snprintf(fn, sizeof fn, "%s.feedback", n);
+  r = hal_export_funct(fn, Feedback, &in, /*uses_fp=*/1, /*reentrant=*/0, g_comp_id);
+  if (r != 0) return r;
   std::snprintf(fn, sizeof fn, "%s.update", n);
   return hal_export_funct(fn, Update, &in, /*uses_fp=*/1, /*reentrant=*/0, g_comp_id);
 }
