@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Installs the Debian packages volcomp needs (idempotent). Usage: scripts/setup-deps.sh [GROUP...]
-#   build   compiler, CMake, Ninja, GoogleTest, Google Benchmark (default)
+#   build   compilers (GCC 12, clang 14), clang-format, CMake, Ninja, GoogleTest, Google Benchmark
+#           (default)
 #   arm     Cortex-M4F cross toolchain (GCC 12, newlib/picolibc, binutils) and QEMU (mps2-an386)
 #   fuzz    clang 14 with libFuzzer and the sanitizer runtimes (the fuzz preset)
 #   can     CAN test peers: Debian's python3-can (the independent SDO client), can-utils
@@ -12,7 +13,7 @@
 set -euo pipefail
 
 declare -A GROUPS_PKGS=(
-  [build]="g++ cmake ninja-build libgtest-dev libgmock-dev libbenchmark-dev"
+  [build]="g++ clang-14 clang-format-14 cmake ninja-build libgtest-dev libgmock-dev libbenchmark-dev"
   [can]="python3-can can-utils user-mode-linux kmod libgpiod-dev"
   [fuzz]="clang-14 libclang-rt-14-dev"
   [linuxcnc]="linuxcnc-uspace linuxcnc-uspace-dev python3"

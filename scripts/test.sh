@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
 # Builds everything and runs every test (README Quick start, command 2; also what CI runs).
-#   scripts/test.sh            release build + tests, Cortex-M4F build + QEMU tests + cycle
-#                              budgets, then an ASan/UBSan build + tests, then 30 s of libFuzzer
-#                              per fuzz target
-#   scripts/test.sh --fast     release and Cortex-M4F builds + tests only
+#   scripts/test.sh            formatting check, release build + tests, Cortex-M4F build + QEMU
+#                              tests + cycle budgets, then the clang 14 build + unit tests, an
+#                              ASan/UBSan build + tests, and 30 s of libFuzzer per fuzz target
+#   scripts/test.sh --fast     formatting check, release and Cortex-M4F builds + tests only
 # Long versions (docs/reliability.md): VOLCOMP_ENGINE_STEPS, VOLCOMP_FAULT_TRIALS,
 # VOLCOMP_SOAK_STEPS, VOLCOMP_FUZZ_SECONDS (cmake -DVOLCOMP_FUZZ_SECONDS=N --preset fuzz).
 set -euo pipefail
@@ -12,6 +12,8 @@ fast=0
 [[ "${1:-}" == "--fast" ]] && fast=1
 
 scripts/setup-deps.sh build can
+# Every C++ source as clang-format (.clang-format) writes it; a drift fails the run here.
+scripts/check-format.sh
 # LinuxCNC before the host build: its headers decide whether the HAL components are built, and
 # the LinuxCNC integration test (label external) runs with the host tests.
 scripts/setup-deps.sh linuxcnc
@@ -40,6 +42,8 @@ cat build/arm-m4f/tests/target/cycle_budgets.md >&2
 echo "== main loop under an SDO block download (tests/target main_loop_cycles)" >&2
 cat build/arm-m4f/tests/target/main_loop_cycles.md >&2
 if [[ $fast -eq 0 ]]; then
+  # The whole tree with clang 14 as well as GCC 12 (warnings are errors in lib/ under both).
+  run_preset host-clang -LE external
   # Tests that start other processes (python3-can, user-mode-linux, LinuxCNC) run once, in the release
   # build; the sanitizer build runs everything in-process.
   run_preset host-asan -LE external

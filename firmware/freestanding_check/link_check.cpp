@@ -4,8 +4,8 @@
 #include <cstddef>
 #include <cstdint>
 
-#include "volcomp/control/control_tick.hpp"
 #include "volcomp/base/crc32.hpp"
+#include "volcomp/control/control_tick.hpp"
 #include "volcomp/firmware/board_app.hpp"
 #include "volcomp/firmware/gateway_app.hpp"
 #include "volcomp/firmware/step_dir_io.hpp"
@@ -83,9 +83,10 @@ void __cxa_pure_virtual() {
   if (volcomp::table::WriteImage(spec, image, sizeof image).ok()) {
     const auto view = volcomp::table::ParseImage(image, sizeof image);
     static volcomp::ControlTick tick;
-    if (view.ok() && tick.Configure(volcomp::DefaultBoardConfig()).ok()) {
+    constexpr volcomp::BoardConfig kConfig = volcomp::DefaultBoardConfig();
+    if (view.ok() && tick.Configure(kConfig).ok()) {
       volcomp::PreparedTable t;
-      if (t.Prepare(*view, tick.config()).ok()) {
+      if (t.Prepare(*view, kConfig).ok()) {
         int32_t pos[3] = {0, 0, 0};
         tick.compensator().SetTable(t, pos);
       }
@@ -93,7 +94,7 @@ void __cxa_pure_virtual() {
       volcomp::PulsePlan plans[3];
       tick.Run(counters);
       static volcomp::StepOutput output;
-      if (output.Configure(tick.config()).ok()) output.Plan(tick.targets(), plans);
+      if (output.Configure(kConfig).ok()) output.Plan(tick.targets(), plans);
       sink = plans[0].count + volcomp::ComputeCrc32(image, 8);
     }
   }
@@ -114,7 +115,7 @@ void __cxa_pure_virtual() {
   static NullTickTimer tick_timer;
   static volcomp::firmware::GatewayApp gateway(
       {&controller, &drives, &io, &gateway_flash, nullptr, &clock, &tick_timer});
-  if (gateway.Start(volcomp::firmware::BoardSettings(), volcomp::gateway::GatewayConfig()).ok()) {
+  if (gateway.Start(volcomp::BoardSettings(), volcomp::gateway::GatewayConfig()).ok()) {
     gateway.PumpFrames();
     gateway.Tick();
     gateway.Poll();

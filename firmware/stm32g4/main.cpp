@@ -24,8 +24,8 @@ using App = volcomp::firmware::BoardApp<TickIo>;
 
 // The reference board: X, Y on 32-bit input timers (TIM2, TIM5), Z on a 16-bit one (TIM3);
 // output timers count at SYSCLK.
-volcomp::firmware::BoardSettings BoardDefaults() {
-  volcomp::firmware::BoardSettings s;
+volcomp::BoardSettings BoardDefaults() {
+  volcomp::BoardSettings s;
   s.board = volcomp::stm32g4::ReferenceBoardConfig();
   return s;
 }

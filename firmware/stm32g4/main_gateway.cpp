@@ -13,9 +13,9 @@
 #include <cstdint>
 
 #include "cm4_runtime.hpp"
-#include "volcomp/gateway/csp_gateway.hpp"
 #include "volcomp/firmware/gateway_app.hpp"
 #include "volcomp/firmware/stm32g4/tick_isr.hpp"
+#include "volcomp/gateway/csp_gateway.hpp"
 #include "volcomp/hal/stm32g4/drivers.hpp"
 
 namespace {
@@ -27,8 +27,8 @@ namespace gateway = volcomp::gateway;
 // 0x200 + n = controlword + target position 0x607A at byte 2, TPDO1 0x180 + n = statusword +
 // position actual value 0x6064 at byte 2. The mapping is part of the image (the Linux board reads
 // it from its configuration file).
-volcomp::firmware::BoardSettings BoardDefaults() {
-  volcomp::firmware::BoardSettings s;
+volcomp::BoardSettings BoardDefaults() {
+  volcomp::BoardSettings s;
   s.board = volcomp::DefaultBoardConfig();
   s.board.pulse_clock_hz = stm32g4::kSysclkHz;
   return s;
@@ -72,7 +72,7 @@ int main() {
   if (!stm32g4::ConfigureSystemClock().ok()) volcomp_runtime_panic();
   g_clock.Init();
   g_io.Init();
-  const volcomp::firmware::BoardSettings defaults = BoardDefaults();
+  const volcomp::BoardSettings defaults = BoardDefaults();
   volcomp::firmware::AppOptions options;
   options.table_bank_size = stm32g4::layout::kTableBankBytes;
   // Stored settings the hardware refuses give way to the defaults (FAULT line, EMCY); defaults it

@@ -3,7 +3,7 @@
 
 Run from this folder: python3 generate_samples.py
 The GOST 27843-88 example files are not generated here: they are the reconstructed worked example
-(see docs/metrology.md and tests/metrology/data/gost27843_example_reconstructed.csv); this script
+(see docs/metrology.md and tests/tools/metrology/data/gost27843_example_reconstructed.csv); this script
 only converts the wide table to the long layout.
 """
 import csv
@@ -14,7 +14,7 @@ HERE = "."
 
 
 def gost_long():
-    rows = [r for r in csv.reader(open("../../tests/metrology/data/gost27843_example_reconstructed.csv"))
+    rows = [r for r in csv.reader(open("../../tests/tools/metrology/data/gost27843_example_reconstructed.csv"))
             if r and not r[0].startswith("#")]
     header, targets, runs = rows[0], rows[1], rows[2:]
     with open(f"{HERE}/gost27843_example_long.csv", "w") as f:

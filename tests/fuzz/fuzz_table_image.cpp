@@ -6,10 +6,10 @@
 #include <cstring>
 #include <vector>
 
-#include "volcomp/config/board_config.hpp"
 #include "volcomp/base/byte_order.hpp"
-#include "volcomp/control/compensator.hpp"
 #include "volcomp/base/crc32.hpp"
+#include "volcomp/config/board_config.hpp"
+#include "volcomp/control/compensator.hpp"
 #include "volcomp/table/table_image.hpp"
 
 namespace {

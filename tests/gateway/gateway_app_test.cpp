@@ -6,7 +6,6 @@
 #include "volcomp/firmware/gateway_app.hpp"
 
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <array>
 #include <cmath>
@@ -16,6 +15,7 @@
 #include <vector>
 
 #include "csp_drives.hpp"
+#include "temp_paths.hpp"
 #include "test_tables.hpp"
 #include "volcomp/canopen/board_protocol.hpp"
 #include "volcomp/canopen/object_dictionary.hpp"
@@ -30,7 +30,7 @@ namespace {
 
 using canopen::ObjectId;
 using canopen_client::SdoClient;
-using canopen_client::SdoResult;
+using TransferResult = canopen_client::SdoExpected<std::vector<uint8_t>>;
 using hal::InputLine;
 
 constexpr uint8_t kNode = 0x10;
@@ -71,8 +71,8 @@ testing::AlignedBytes LinearTable(uint32_t id) {
   return testing::WriteGridImage(g, id);
 }
 
-firmware::BoardSettings Settings() {
-  firmware::BoardSettings s;
+BoardSettings Settings() {
+  BoardSettings s;
   s.node_id = kNode;
   s.board.tick_hz = 1000;
   for (int a = 0; a < 3; ++a) {
@@ -154,7 +154,7 @@ class Machine {
     clock_.Advance(1000000);
   }
 
-  SdoResult Run(SdoClient& c) {
+  TransferResult Run(SdoClient& c) {
     for (int guard = 0; guard < 5000 && !c.done(); ++guard) {
       CanFrame f;
       while (c.PopTx(&f)) extra_down_.push_back(f);
@@ -168,23 +168,22 @@ class Machine {
     Cycle();
     return c.result();
   }
-  SdoResult Write(ObjectId id, uint32_t value) {
-    const auto& e = canopen::Entry(id);
+  TransferResult Write(ObjectId id, uint32_t value) {
     SdoClient c(kNode);
-    c.StartDownload(e.index, e.sub, canopen_client::NumericPayload(id, value));
+    canopen_client::StartNumericWrite(c, id, value);
     return Run(c);
   }
-  SdoResult Upload(const testing::AlignedBytes& img) {
+  TransferResult Upload(const testing::AlignedBytes& img) {
     SdoClient c(kNode);
-    c.StartDownload(0x2100, 0, std::vector<uint8_t>(img.data(), img.data() + img.size()));
+    c.StartWrite(0x2100, 0, std::vector<uint8_t>(img.data(), img.data() + img.size()));
     return Run(c);
   }
   // Uploads, references at home, waits at rest and activates; returns the activation result.
-  SdoResult UploadReferenceActivate(const testing::AlignedBytes& img) {
-    EXPECT_TRUE(Upload(img).ok);
+  TransferResult UploadReferenceActivate(const testing::AlignedBytes& img) {
+    EXPECT_TRUE(Upload(img).ok());
     EXPECT_TRUE(Write(ObjectId::kTableControl, canopen::Value(canopen::TableCommand::kVerify))
-                    .ok);  // verify
-    EXPECT_TRUE(Write(ObjectId::kReferenceAxes, 7).ok);
+                    .ok());  // verify
+    EXPECT_TRUE(Write(ObjectId::kReferenceAxes, 7).ok());
     for (int i = 0; i < 150; ++i) Cycle();
     return Write(ObjectId::kTableControl, canopen::Value(canopen::TableCommand::kActivate));
   }
@@ -240,34 +239,33 @@ TEST_F(GatewayAppTest, UploadReferenceActivateAndCorrectEveryCycle) {
   ASSERT_TRUE(m_.Start().ok());
   for (int i = 0; i < 10; ++i) m_.Cycle();
   const testing::AlignedBytes img = LinearTable(33);
-  ASSERT_TRUE(m_.Upload(img).ok);
+  ASSERT_TRUE(m_.Upload(img).ok());
   ASSERT_TRUE(m_.Write(ObjectId::kTableControl, canopen::Value(canopen::TableCommand::kVerify))
-                  .ok);  // verify
+                  .ok());  // verify
   // Not referenced: refused.
-  SdoResult r = m_.Write(ObjectId::kTableControl, canopen::Value(canopen::TableCommand::kActivate));
-  EXPECT_FALSE(r.ok);
-  EXPECT_EQ(r.abort_code, canopen::SdoAbort::kDeviceState);
+  TransferResult r =
+      m_.Write(ObjectId::kTableControl, canopen::Value(canopen::TableCommand::kActivate));
+  EXPECT_FALSE(r.ok());
+  EXPECT_EQ(canopen_client::AbortOf(r), canopen::SdoAbort::kDeviceState);
   // Referenced at home, but moving: refused.
-  ASSERT_TRUE(m_.Write(ObjectId::kReferenceAxes, 7).ok);
+  ASSERT_TRUE(m_.Write(ObjectId::kReferenceAxes, 7).ok());
   EXPECT_TRUE(m_.app_.app().control_tick().all_referenced());
   for (int i = 0; i < 20; ++i) {
     m_.target_[1] += 50;
     m_.Cycle();
   }
-  const canopen::ObjectEntry& control = canopen::Entry(ObjectId::kTableControl);
   SdoClient c(kNode);
-  c.StartDownload(control.index, control.sub,
-                  canopen_client::NumericPayload(ObjectId::kTableControl,
-                                                 canopen::Value(canopen::TableCommand::kActivate)));
+  canopen_client::StartNumericWrite(c, ObjectId::kTableControl,
+                                    canopen::Value(canopen::TableCommand::kActivate));
   for (int i = 0; i < 5; ++i) m_.target_[1] += 50, m_.Cycle();
   r = m_.Run(c);
-  EXPECT_FALSE(r.ok);
-  EXPECT_EQ(r.abort_code, canopen::SdoAbort::kDeviceState);
+  EXPECT_FALSE(r.ok());
+  EXPECT_EQ(canopen_client::AbortOf(r), canopen::SdoAbort::kDeviceState);
   for (int a = 0; a < 3; ++a) EXPECT_EQ(m_.correction_[a], 0);
   // At rest for 150 ms: allowed.
   for (int i = 0; i < 150; ++i) m_.Cycle();
   ASSERT_TRUE(
-      m_.Write(ObjectId::kTableControl, canopen::Value(canopen::TableCommand::kActivate)).ok);
+      m_.Write(ObjectId::kTableControl, canopen::Value(canopen::TableCommand::kActivate)).ok());
   for (int i = 0; i < 100; ++i) {
     m_.Cycle();
     EXPECT_TRUE(m_.feedback_ok_) << "ramp-in cycle " << i;
@@ -320,7 +318,7 @@ TEST_F(GatewayAppTest, UploadReferenceActivateAndCorrectEveryCycle) {
 
 TEST_F(GatewayAppTest, EStopRampsTheCorrectionOutWhileForwardingGoesOn) {
   ASSERT_TRUE(m_.Start().ok());
-  ASSERT_TRUE(m_.UploadReferenceActivate(LinearTable(34)).ok);
+  ASSERT_TRUE(m_.UploadReferenceActivate(LinearTable(34)).ok());
   for (int i = 0; i < 100; ++i) m_.Cycle();
   EXPECT_NE(m_.correction_[0], 0);
   m_.io_.SetInput(InputLine::kEStop, true);
@@ -376,7 +374,7 @@ TEST(GatewayAppMappingTest, StartRefusesAMappingForMissingAxes) {
   hal::mock::MockFlash tables(256 * 1024, 2048, 8, &clock, nullptr);
   Machine m(&tables, nullptr);
   m.io_.SetInput(InputLine::kEnable, true);
-  firmware::BoardSettings s = Settings();
+  BoardSettings s = Settings();
   s.board.axis_count = 2;  // the mapping uses axis 2
   EXPECT_EQ(m.app_.Start(s, Mapping()).error(), Error::kConfigInvalid);
   EXPECT_FALSE(m.app_.gateway_active());
@@ -394,7 +392,7 @@ TEST(GatewayAppMappingTest, StepPulseTimingDoesNotConcernTheGateway) {
   hal::mock::MockClock clock;
   hal::mock::MockFlash tables(256 * 1024, 2048, 8, &clock, nullptr);
   Machine m(&tables, nullptr);
-  firmware::BoardSettings s = Settings();
+  BoardSettings s = Settings();
   for (AxisConfig& ax : s.board.axis) ax.drive.pulse_width_ns = ax.drive.step_space_ns = 15000;
   EXPECT_TRUE(m.app_.Start(s, Mapping()).ok());
   EXPECT_TRUE(m.app_.gateway_active());
@@ -403,18 +401,8 @@ TEST(GatewayAppMappingTest, StepPulseTimingDoesNotConcernTheGateway) {
 
 // Tables live in files (hal/linux FileFlash): a new process finds the active table.
 TEST(GatewayAppFilesTest, ActiveTableSurvivesARestart) {
-  struct TempDir {  // removed whatever the test's outcome
-    std::string path;
-    TempDir() {
-      char t[] = "/tmp/volcomp-gw-test.XXXXXX";
-      path = mkdtemp(t) != nullptr ? t : "/tmp";
-    }
-    ~TempDir() {
-      std::remove((path + "/tables.bin").c_str());
-      rmdir(path.c_str());
-    }
-  } temp;
-  const std::string dir = temp.path;
+  const volcomp::testing::ScratchDir temp("gateway_test");
+  const std::string dir = temp.path();
   hal::linux_board::FileFlash::Options fo;
   fo.size = 2 * 128 * 1024;
   fo.sector_size = 4096;
@@ -425,7 +413,7 @@ TEST(GatewayAppFilesTest, ActiveTableSurvivesARestart) {
     Machine m(&tables, nullptr);
     ASSERT_TRUE(m.Start().ok());
     EXPECT_EQ(m.app_.app().stored_table_status().error(), Error::kNotFound);
-    ASSERT_TRUE(m.UploadReferenceActivate(img).ok);
+    ASSERT_TRUE(m.UploadReferenceActivate(img).ok());
     EXPECT_GT(tables.counters().programs, 10u);
   }
   {
@@ -438,7 +426,7 @@ TEST(GatewayAppFilesTest, ActiveTableSurvivesARestart) {
     EXPECT_TRUE(m.app_.app().control_tick().compensator().has_table());
     EXPECT_EQ(m.app_.app().control_tick().compensator().table_id(), 35u);
     // Referenced at home, the stored table corrects at once (ramping in).
-    ASSERT_TRUE(m.Write(ObjectId::kReferenceAxes, 7).ok);
+    ASSERT_TRUE(m.Write(ObjectId::kReferenceAxes, 7).ok());
     for (int i = 0; i < 100; ++i) m.Cycle();
     double pos[3];
     m.Machine3(pos);

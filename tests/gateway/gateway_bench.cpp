@@ -6,8 +6,8 @@
 #include <benchmark/benchmark.h>
 
 #include "csp_drives.hpp"
-#include "volcomp/gateway/csp_gateway.hpp"
 #include "volcomp/firmware/gateway_app.hpp"
+#include "volcomp/gateway/csp_gateway.hpp"
 #include "volcomp/hal/mock/mock_devices.hpp"
 
 namespace volcomp {
@@ -59,7 +59,7 @@ void BM_GatewayAppForward(benchmark::State& state) {
   hal::mock::MockFlash tables(64 * 1024, 2048, 8, &clock, nullptr);
   hal::mock::MockCan cnc(&clock, nullptr, 1 << 20), drv(&clock, nullptr, 1 << 20);
   firmware::GatewayApp app({&cnc, &drv, &io, &tables, nullptr, &clock});
-  firmware::BoardSettings s;
+  BoardSettings s;
   s.board.tick_hz = 1000;
   if (!app.Start(s, Mapping(3)).ok()) state.SkipWithError("start");
   CanFrame in = CspPdo(0x201, 1000);

@@ -17,9 +17,9 @@
 #include <vector>
 
 #include "test_tables.hpp"
+#include "volcomp/limiter/correction_limiter.hpp"
 #include "volcomp/lookup/axis_lookup.hpp"
 #include "volcomp/lookup/cell_locator.hpp"
-#include "volcomp/limiter/correction_limiter.hpp"
 #include "volcomp/lookup/grid_lookup.hpp"
 #include "volcomp/output/step_generator.hpp"
 

@@ -77,16 +77,15 @@ class Rig {
 
   // The PC tool's sequence: its staging steps (write access, clear), the block download (event by
   // event, so the PC can stall or abort), its verification steps, reference, activate.
-  canopen_client::SdoResult Upload(const std::vector<uint8_t>& img,
-                                   const std::function<bool(uint64_t)>& pc_alive = {},
-                                   bool client_abort = false,
-                                   std::mt19937_64* rng = nullptr) {
+  canopen_client::SdoOutcome Upload(const std::vector<uint8_t>& img,
+                                    const std::function<bool(uint64_t)>& pc_alive = {},
+                                    bool client_abort = false,
+                                    std::mt19937_64* rng = nullptr) {
     canopen_client::NodeObjects pc_tool(host_->Link(), kNode);
-    auto r = canopen_client::PrepareStaging(pc_tool);
-    if (!r.ok) return r;
+    VOLCOMP_TRY(canopen_client::PrepareStaging(pc_tool));
     const canopen::ObjectEntry& data = canopen::Entry(ObjectId::kTableData);
     SdoClient c(kNode);
-    c.StartDownload(data.index, data.sub, img);
+    c.StartWrite(data.index, data.sub, img);
     if (client_abort) {
       // Abort after a random share of the transfer.
       const uint64_t stop = bus_.now() + 1000000ull + (*rng)() % 20000000ull;
@@ -101,24 +100,21 @@ class Rig {
         StoreLe32(f.data + 4, canopen::Code(canopen::SdoAbort::kGeneral));
         pc_->Send(f);
         host_->Idle(5000000);
-        canopen_client::SdoResult a;
+        canopen_client::SdoFailure a;
+        a.code = Error::kTransferAborted;
         a.message = "upload aborted by the PC (sent abort 0x08000000: general error)";
-        a.abort_code = canopen::SdoAbort::kGeneral;
-        return a;
+        a.abort = canopen::SdoAbort::kGeneral;
+        return Fail(a);
       }
     } else {
       host_->Run(c, 30000000000ull, pc_alive);
     }
     if (!c.done()) {  // the PC side went silent: there is nobody to report; the board recovers
-      canopen_client::SdoResult gone;
-      gone.message = "PC silent (no abort 0x sent)";
-      return gone;
+      return canopen_client::SdoFail(Error::kCommunication, "PC silent (no abort 0x sent)");
     }
-    if (!c.result().ok) return c.result();
-    r = canopen_client::VerifyStaged(pc_tool, TrailerCrc(img));
-    if (!r.ok) return r;
-    r = pc_tool.Write(ObjectId::kReferenceAxes, 7);
-    if (!r.ok) return r;
+    if (!c.result().ok()) return Fail(c.result().error());
+    VOLCOMP_TRY(canopen_client::VerifyStaged(pc_tool, TrailerCrc(img)));
+    VOLCOMP_TRY(pc_tool.Write(ObjectId::kReferenceAxes, 7));
     host_->Idle(150000000);
     return canopen_client::WriteTableCommand(pc_tool, TableCommand::kActivate);
   }
@@ -143,7 +139,7 @@ TEST(FaultCampaign, EveryTrialEndsWithTheOldOrTheNewTableAndAnUploadCanFinish) {
   std::vector<uint8_t> flash;
   {
     Rig rig({});
-    ASSERT_TRUE(rig.Upload(images[0]).ok);
+    ASSERT_TRUE(rig.Upload(images[0]).ok());
     flash = rig.board().table_flash().raw();
   }
   int active = 0;
@@ -209,12 +205,12 @@ TEST(FaultCampaign, EveryTrialEndsWithTheOldOrTheNewTableAndAnUploadCanFinish) {
                f.id == canopen::sdo::kResponseCobBase + kNode;  // SDO traffic of the node
       }));
     }
-    const canopen_client::SdoResult r = rig.Upload(images[next], alive, client_abort, &rng);
-    if (!r.ok) {
+    const canopen_client::SdoOutcome r = rig.Upload(images[next], alive, client_abort, &rng);
+    if (!r.ok()) {
       ++failures;
-      ASSERT_FALSE(r.message.empty()) << "trial " << t;
-      ASSERT_NE(r.message.find("abort 0x"), std::string::npos)
-          << "trial " << t << ": " << r.message;
+      ASSERT_FALSE(r.error().message.empty()) << "trial " << t;
+      ASSERT_NE(r.error().message.find("abort 0x"), std::string::npos)
+          << "trial " << t << ": " << r.error().message;
     }
     // Power cycle: a new board on the same flash.
     std::vector<uint8_t> after = rig.board().table_flash().raw();
@@ -227,15 +223,15 @@ TEST(FaultCampaign, EveryTrialEndsWithTheOldOrTheNewTableAndAnUploadCanFinish) {
     const uint32_t crc = view->crc32;
     ASSERT_TRUE(crc == TrailerCrc(images[0]) || crc == TrailerCrc(images[1])) << "trial " << t;
     const int now_active = crc == TrailerCrc(images[next]) ? next : active;
-    if (r.ok) {
+    if (r.ok()) {
       ASSERT_EQ(now_active, next) << "trial " << t << ": activation reported but lost";
     }
     (now_active == next ? switched : kept)++;
-    ++outcome[std::string(kFaultNames[static_cast<int>(fault)]) + (r.ok ? " ok" : " failed")];
+    ++outcome[std::string(kFaultNames[static_cast<int>(fault)]) + (r.ok() ? " ok" : " failed")];
     // The PC tool can finish the upload afterwards (clean bus).
     if (now_active != next) {
       const auto retry = reboot.Upload(images[next]);
-      ASSERT_TRUE(retry.ok) << "trial " << t << " retry: " << retry.message;
+      ASSERT_TRUE(retry.ok()) << "trial " << t << " retry: " << retry.error().message;
       flash = reboot.board().table_flash().raw();
     } else {
       flash = after;

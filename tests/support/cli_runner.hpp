@@ -34,4 +34,11 @@ inline CliResult RunCli(const std::vector<std::string>& words, const std::string
   return r;
 }
 
+/// `words` with `more` after them (a command line with options added).
+inline std::vector<std::string> Appended(std::vector<std::string> words,
+                                         const std::vector<std::string>& more) {
+  words.insert(words.end(), more.begin(), more.end());
+  return words;
+}
+
 }  // namespace volcomp::testing

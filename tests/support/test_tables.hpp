@@ -99,7 +99,28 @@ inline table::AxisInfo LinearAxis(char name, uint32_t resolution_e9 = 1000000) {
   return {name, table::AxisKind::kLinear, resolution_e9};
 }
 
-/// Writes an XYZ image holding `g` (and optional extra AXIS1D specs); asserts success.
+/// An image of linear axes X, Y, Z (1 µm per step) holding `grid` (which must outlive it).
+inline table::ImageSpec XyzImageSpec(const table::GridSpec& grid, uint32_t table_id = 0) {
+  table::ImageSpec img;
+  img.table_id = table_id;
+  img.axis_count = 3;
+  img.axes[0] = LinearAxis('X');
+  img.axes[1] = LinearAxis('Y');
+  img.axes[2] = LinearAxis('Z');
+  img.grid = &grid;
+  return img;
+}
+
+/// The image of `spec` as the real writer writes it; empty when the writer refuses it.
+inline AlignedBytes WriteImageBytes(const table::ImageSpec& spec) {
+  const Result<uint32_t> size = table::ImageSize(spec);
+  AlignedBytes out(size.ok() ? *size : 0);
+  const Result<uint32_t> w = table::WriteImage(spec, out.data(), out.size());
+  if (!w.ok()) out.resize(0);
+  return out;
+}
+
+/// Writes an XYZ image holding `g` (and optional extra AXIS1D specs); empty on failure.
 inline AlignedBytes WriteGridImage(const GridCase& g,
                                    uint32_t table_id = 7,
                                    const table::Axis1dSpec* axis1d = nullptr,
@@ -111,20 +132,10 @@ inline AlignedBytes WriteGridImage(const GridCase& g,
   spec.values.i16 = g.i16.data();
   spec.values.i32 = g.i32.data();
   spec.values.f32 = g.f32.data();
-  table::ImageSpec img;
-  img.table_id = table_id;
-  img.axis_count = 3;
-  img.axes[0] = LinearAxis('X');
-  img.axes[1] = LinearAxis('Y');
-  img.axes[2] = LinearAxis('Z');
-  img.grid = &spec;
+  table::ImageSpec img = XyzImageSpec(spec, table_id);
   for (uint8_t i = 0; i < axis1d_count; ++i) img.axis1d[i] = axis1d[i];
   img.axis1d_count = axis1d_count;
-  const Result<uint32_t> size = table::ImageSize(img);
-  AlignedBytes out(size.ok() ? *size : 0);
-  const Result<uint32_t> w = table::WriteImage(img, out.data(), out.size());
-  if (!w.ok()) out.resize(0);
-  return out;
+  return WriteImageBytes(img);
 }
 
 /// Exact trilinear interpolation in double (clamped), independent of lib/: value of component c.

@@ -2,11 +2,11 @@
 #include "golden.hpp"
 
 #include "cases.hpp"
-#include "volcomp/lookup/axis_lookup.hpp"
 #include "volcomp/base/byte_order.hpp"
+#include "volcomp/base/crc32.hpp"
 #include "volcomp/control/control_tick.hpp"
 #include "volcomp/limiter/correction_limiter.hpp"
-#include "volcomp/base/crc32.hpp"
+#include "volcomp/lookup/axis_lookup.hpp"
 #include "volcomp/lookup/grid_lookup.hpp"
 #include "volcomp/output/step_generator.hpp"
 #include "volcomp/output/step_output.hpp"

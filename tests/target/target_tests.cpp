@@ -13,8 +13,8 @@
 #include "cases.hpp"
 #include "golden_stream.hpp"
 #include "semihost.hpp"
-#include "volcomp/limiter/correction_limiter.hpp"
 #include "volcomp/base/crc32.hpp"
+#include "volcomp/limiter/correction_limiter.hpp"
 #include "volcomp/output/step_generator.hpp"
 
 namespace volcomp::target {

@@ -3,25 +3,22 @@
 
 #include <cmath>
 #include <cstdio>
-#include <iostream>
 
 #include "sdo_failure.hpp"
-#include "volcomp/board_ini/board_settings_io.hpp"
 #include "volcomp/canopen/board_protocol.hpp"
+#include "volcomp/canopen_client/board_settings_io.hpp"
 #include "volcomp/image/table_demands.hpp"
 
-namespace volcomp::tools {
+namespace volcomp::cli {
 namespace {
 
 using canopen::ObjectId;
 
-uint32_t ReadObject(canopen_client::NodeObjects& node, ObjectId id) {
-  uint32_t v = 0;
+Expected<uint32_t> ReadObject(canopen_client::NodeObjects& node, ObjectId id) {
   const canopen::ObjectEntry& e = canopen::Entry(id);
   char what[96];
-  std::snprintf(what, sizeof what, "reading %s (0x%04X:%u)", e.name, e.index, e.sub);
-  Check(node.Read(id, &v), what);
-  return v;
+  std::snprintf(what, sizeof what, "%s (0x%04X:%u)", e.name, e.index, e.sub);
+  return ReadNumber(node, id, what);
 }
 
 std::string Fixed(double v, int digits) {
@@ -32,13 +29,13 @@ std::string Fixed(double v, int digits) {
 
 }  // namespace
 
-BoardInstallation ReadInstallation(canopen_client::NodeObjects& node) {
+Expected<BoardInstallation> ReadInstallation(canopen_client::NodeObjects& node) {
   // The configuration the board runs with (0x2124), which decides what it clamps, not the edited
   // objects (they differ while settings are pending).
   BoardInstallation b;
-  b.settings_pending =
-      canopen::DecodeDeviceState(ReadObject(node, ObjectId::kDeviceState)).settings_pending;
-  const firmware::BoardSettings s = board_ini::ReadSettingsInForce(node);
+  VOLCOMP_TRY_ASSIGN(const uint32_t state, ReadObject(node, ObjectId::kDeviceState));
+  b.settings_pending = canopen::DecodeDeviceState(state).settings_pending;
+  VOLCOMP_TRY_ASSIGN(const BoardSettings s, canopen_client::ReadSettingsInForce(node));
   for (size_t a = 0; a < s.board.axis_count && a < table::kMaxAxes; ++a) {
     const AxisConfig& c = s.board.axis[a];
     BoardAxis x;
@@ -113,14 +110,15 @@ std::vector<FitProblem> CheckTableFits(const table::TableView& v, const BoardIns
   return out;
 }
 
-std::vector<FitProblem> RequireTableFits(canopen_client::NodeObjects& node,
-                                         const table::TableView& view,
-                                         bool allow_limits) {
-  const BoardInstallation board = ReadInstallation(node);
+Expected<std::vector<FitProblem>> RequireTableFits(canopen_client::NodeObjects& node,
+                                                   const table::TableView& view,
+                                                   bool allow_limits,
+                                                   std::ostream& warnings) {
+  VOLCOMP_TRY_ASSIGN(const BoardInstallation board, ReadInstallation(node));
   if (board.settings_pending) {
-    std::cerr << "warning: node " << unsigned{node.node()}
-              << " has settings edits not yet in force (store and reset node): the table is "
-                 "checked against the settings in force (0x2124), which the edits will replace\n";
+    warnings << "warning: node " << unsigned{node.node()}
+             << " has settings edits not yet in force (store and reset node): the table is "
+                "checked against the settings in force (0x2124), which the edits will replace\n";
   }
   std::vector<FitProblem> problems = CheckTableFits(view, board);
   bool refuse = false;
@@ -131,15 +129,16 @@ std::vector<FitProblem> RequireTableFits(canopen_client::NodeObjects& node,
   }
   if (refuse) {
     const bool mismatch = !problems.empty() && !problems.front().limit;
-    throw InputError(std::string(mismatch ? "the table is not for this board:"
-                                          : "the board would not apply the whole table:") +
-                     text +
-                     (mismatch ? ""
-                               : "\n(--allow-clamp applies it anyway; the board then shows "
-                                 "the limit in force in `volcomp status`)"));
+    return Fail(Error::kInvalidArgument,
+                std::string(mismatch ? "the table is not for this board:"
+                                     : "the board would not apply the whole table:") +
+                    text +
+                    (mismatch ? ""
+                              : "\n(--allow-clamp applies it anyway; the board then shows "
+                                "the limit in force in `volcomp status`)"));
   }
-  for (const FitProblem& p : problems) std::cerr << "warning: " << p.message << "\n";
+  for (const FitProblem& p : problems) warnings << "warning: " << p.message << "\n";
   return problems;
 }
 
-}  // namespace volcomp::tools
+}  // namespace volcomp::cli

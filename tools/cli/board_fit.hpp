@@ -10,13 +10,15 @@
 // about, and the board shows them in force (0x2134-0x2136, EMCY 0xFF20).
 #pragma once
 
+#include <ostream>
 #include <string>
 #include <vector>
 
 #include "volcomp/canopen_client/node_objects.hpp"
+#include "volcomp/hosted/expected.hpp"
 #include "volcomp/table/table_image.hpp"
 
-namespace volcomp::tools {
+namespace volcomp::cli {
 
 struct BoardAxis {
   char name = '?';
@@ -32,9 +34,8 @@ struct BoardInstallation {
   bool settings_pending = false;  // edited settings not yet in force (the values read are those)
 };
 
-/// Reads the installation objects; throws (SdoFailure / CommunicationError) when they cannot be
-/// read.
-BoardInstallation ReadInstallation(canopen_client::NodeObjects& node);
+/// Reads the installation objects (kCommunication when the board does not answer).
+Expected<BoardInstallation> ReadInstallation(canopen_client::NodeObjects& node);
 
 struct FitProblem {
   bool limit = false;  // a clamp or rate limit (allowed with --allow-clamp), else a mismatch
@@ -45,11 +46,13 @@ struct FitProblem {
 std::vector<FitProblem> CheckTableFits(const table::TableView& view,
                                        const BoardInstallation& board);
 
-/// Reads the installation and checks `view` against it: prints warnings to stderr, and throws
-/// InputError (exit 1) naming every problem when there is a mismatch, or a limit and not
-/// `allow_limits`. Returns the problems that were allowed (for a --json report).
-std::vector<FitProblem> RequireTableFits(canopen_client::NodeObjects& node,
-                                         const table::TableView& view,
-                                         bool allow_limits);
+/// Reads the installation and checks `view` against it: writes warnings to `warnings` as they
+/// arise (settings not yet in force, the limits allowed), and fails (kInvalidArgument, exit 1)
+/// naming every problem when there is a mismatch, or a limit and not `allow_limits`. Returns the
+/// problems that were allowed.
+Expected<std::vector<FitProblem>> RequireTableFits(canopen_client::NodeObjects& node,
+                                                   const table::TableView& view,
+                                                   bool allow_limits,
+                                                   std::ostream& warnings);
 
-}  // namespace volcomp::tools
+}  // namespace volcomp::cli

@@ -1,102 +1,164 @@
 // `volcomp build axis`: AXIS1D tables (forward/reverse or forward + backlash) from positioning test
-// results, one CSV per axis (mean deviations per target; see volcomp/model/axis1d.hpp).
+// results, one CSV per axis (raw readings or mean deviations; datasets/positioning_csv.hpp).
 #include <cmath>
 #include <cstdio>
-#include <iostream>
-#include <stdexcept>
+#include <optional>
+#include <ostream>
 #include <string>
+#include <utility>
 #include <vector>
 
+#include "build_options.hpp"
+#include "choice_option.hpp"
 #include "commands.hpp"
+#include "option_groups.hpp"
+#include "volcomp/builders/axis_section.hpp"
+#include "volcomp/datasets/positioning_csv.hpp"
 #include "volcomp/image/axis_units.hpp"
-#include "volcomp/model/axis1d.hpp"
-#include "volcomp/model/axis_section.hpp"
-#include "volcomp/model/build_cli.hpp"
+#include "volcomp/tools/csv.hpp"
+#include "volcomp/tools/file_io.hpp"
 
-namespace volcomp::tools {
+namespace volcomp::cli {
+namespace {
 
-int RunBuildAxis(Args& args) {
-  struct Input {
-    char name;
-    std::string path;
-  };
+struct Input {
+  char name;
+  std::string path;
+};
+
+// --spacing X=S,...: the spacing of each input (0 = the test's own).
+Expected<std::vector<double>> ParseSpacing(const std::optional<std::string>& text,
+                                           const std::vector<Input>& inputs) {
+  std::vector<double> spacing(inputs.size(), 0.0);
+  if (!text) return spacing;
+  VOLCOMP_TRY_ASSIGN(const auto assignments, image::ParseAxisAssignments(*text, "--spacing"));
+  for (const auto& [name, value] : assignments) {
+    bool found = false;
+    for (std::size_t i = 0; i < inputs.size(); ++i) {
+      if (inputs[i].name != name) continue;
+      const auto v = tools::ParseDouble(value);
+      if (!v || !(*v > 0)) {
+        return UsageFailure("--spacing: axis " + std::string(1, name) + " needs a positive number");
+      }
+      spacing[i] = *v;
+      found = true;
+    }
+    if (!found) return UsageFailure("--spacing: no input file for axis " + std::string(1, name));
+  }
+  return spacing;
+}
+
+JsonValue AxisData(const Input& in, const builders::Axis1dTable& t, bool rotary) {
+  double max_forward = 0;
+  for (double v : t.forward) max_forward = std::fmax(max_forward, std::fabs(v));
+  JsonValue x = JsonValue::Object();
+  x.Set("axis", std::string(1, in.name));
+  x.Set("source", in.path);
+  x.Set("nodes", uint64_t{t.forward.size()});
+  x.Set("origin", t.origin);
+  x.Set("spacing", t.spacing);
+  x.Set("position_unit", rotary ? "deg" : "mm");
+  x.Set("correction_unit", rotary ? "arcsec" : "µm");
+  x.Set("max_forward_correction", max_forward);
+  x.Set("reverse_table", !t.reverse.empty());
+  x.Set("backlash", t.backlash);
+  x.Set("max_residual", t.max_residual);
+  return x;
+}
+
+void BuildAxisText(const JsonValue& d, std::ostream& out) {
+  out << "volcomp build axis\n";
+  for (const JsonValue& a : d.get("axes")->array) {
+    const char* unit = a.get("correction_unit")->string.c_str();
+    char line[256];
+    std::snprintf(line, sizeof(line),
+                  "  axis %s: %lld nodes from %.6g every %.6g %s, largest forward correction %.3f "
+                  "%s, %s, backlash %.3f %s\n",
+                  a.get("axis")->string.c_str(), static_cast<long long>(a.get("nodes")->integer),
+                  a.get("origin")->number, a.get("spacing")->number,
+                  a.get("position_unit")->string.c_str(), a.get("max_forward_correction")->number,
+                  unit, a.get("reverse_table")->boolean ? "reverse table" : "no reverse table",
+                  a.get("backlash")->number, unit);
+    out << line;
+  }
+  out << "  wrote " << d.get("image")->string << " (" << d.get("bytes")->integer << " bytes)\n";
+}
+
+Expected<Output> RunBuildAxis(Args& args, Context& ctx) {
   std::vector<Input> inputs;
   for (const char* n : {"X", "Y", "Z", "A", "B", "C", "U", "V", "W"}) {
     const std::string opt = std::string("--") + static_cast<char>(n[0] - 'A' + 'a');
-    if (auto p = args.value(opt)) inputs.push_back({n[0], *p});
+    if (auto p = args.Value(opt)) inputs.push_back({n[0], *p});
   }
-  if (inputs.empty()) throw UsageError("give at least one axis file, e.g. --x x.csv");
-  if (inputs.size() > table::kMaxAxes) throw UsageError("at most 6 axes");
-  const std::string out_path = args.required("-o", "--output");
-  model::Axis1dOptions opt;
-  const std::string reverse = args.value("--reverse").value_or("tables");
-  if (reverse == "tables") {
-    opt.reverse = model::ReverseMode::kTables;
-  } else if (reverse == "backlash") {
-    opt.reverse = model::ReverseMode::kBacklash;
-  } else if (reverse == "mean") {
-    opt.reverse = model::ReverseMode::kMean;
-  } else {
-    throw UsageError("--reverse must be tables, backlash or mean");
-  }
-  std::vector<double> spacing(inputs.size(), 0.0);
-  if (auto s = args.value("--spacing")) {
-    for (const auto& [name, value] : image::ParseAxisAssignments(*s, "--spacing")) {
-      bool found = false;
-      for (std::size_t i = 0; i < inputs.size(); ++i) {
-        if (inputs[i].name != name) continue;
-        const auto v = ParseDouble(value);
-        if (!v || !(*v > 0))
-          throw UsageError("--spacing: axis " + std::string(1, name) + " needs a positive number");
-        spacing[i] = *v;
-        found = true;
-      }
-      if (!found) throw UsageError("--spacing: no input file for axis " + std::string(1, name));
-    }
-  }
-  const bool wrap = args.flag("--wrap");
+  if (inputs.empty()) return UsageFailure("give at least one axis file, e.g. --x x.csv");
+  if (inputs.size() > table::kMaxAxes) return UsageFailure("at most 6 axes");
+  const std::string out_path = args.Required("-o", "--output");
+  VOLCOMP_TRY(args.status());
+  builders::Axis1dOptions opt;
+  const std::string reverse = args.Value("--reverse").value_or("tables");
+  VOLCOMP_TRY_ASSIGN(opt.reverse, ParseChoice<builders::ReverseMode>(
+                                      "--reverse", reverse,
+                                      {{"tables", builders::ReverseMode::kTables},
+                                       {"backlash", builders::ReverseMode::kBacklash},
+                                       {"mean", builders::ReverseMode::kMean}}));
+  VOLCOMP_TRY_ASSIGN(const std::vector<double> spacing,
+                     ParseSpacing(args.Value("--spacing"), inputs));
+  const bool wrap = args.Flag("--wrap");
   std::vector<char> names;
   for (const Input& in : inputs) names.push_back(in.name);
   image::ImageRequest req;
-  req.axes = image::MakeAxisDefs(names, args.value("--resolution-nm").value_or(""),
-                                 args.value("--steps-per-unit").value_or(""));
-  model::cli::ParseImageOptions(args, &req);
-  args.finish();
+  VOLCOMP_TRY_ASSIGN(req.axes, ParseAxisResolutions(args, names));
+  VOLCOMP_TRY(ParseImageOptions(args, &req));
+  VOLCOMP_TRY(args.Finish());
 
-  std::cout << "volcomp build axis\n";
+  Output output;
+  JsonValue axes = JsonValue::Array();
   for (std::size_t i = 0; i < inputs.size(); ++i) {
-    const model::PositioningData data = model::LoadPositioningCsv(inputs[i].path);
-    for (const auto& w : data.warnings) std::cerr << "warning: " << w << "\n";
-    const bool rotary = req.axes[i].kind == table::AxisKind::kRotary;
-    model::Axis1dOptions o = opt;
+    VOLCOMP_TRY_ASSIGN(const model::PositioningData data,
+                       datasets::LoadPositioningCsv(inputs[i].path));
+    for (const std::string& w : data.warnings) ctx.err << "warning: " << w << "\n";
+    builders::Axis1dOptions o = opt;
     o.spacing = spacing[i];
-    model::AxisSection axis;
-    try {
-      axis = model::BuildAxisSection(data, o, req.axes[i], static_cast<uint8_t>(i), wrap);
-    } catch (const std::invalid_argument& e) {
-      throw InputError(inputs[i].path + ": " + e.what());
-    }
-    const model::Axis1dTable& t = axis.table;
-    req.axis_tables.push_back(axis.section);
+    const Expected<builders::AxisSection> axis =
+        builders::BuildAxisSection(data, o, req.axes[i], static_cast<uint8_t>(i), wrap);
+    if (!axis.ok()) return Fail(Error::kInputInvalid, inputs[i].path + ": " + axis.error().message);
+    req.axis_tables.push_back(axis->section);
     req.info.emplace(std::string("source_") + inputs[i].name, inputs[i].path);
-    const char* unit = rotary ? "arcsec" : "µm";
-    double max_fwd = 0;
-    for (double v : t.forward) max_fwd = std::fmax(max_fwd, std::fabs(v));
-    char line[256];
-    std::snprintf(line, sizeof(line),
-                  "  axis %c: %zu nodes from %.6g every %.6g %s, largest forward correction %.3f "
-                  "%s, %s, backlash %.3f %s\n",
-                  inputs[i].name, t.forward.size(), t.origin, t.spacing, rotary ? "deg" : "mm",
-                  max_fwd, unit, t.reverse.empty() ? "no reverse table" : "reverse table",
-                  t.backlash, unit);
-    std::cout << line;
+    axes.Push(AxisData(inputs[i], axis->table, req.axes[i].kind == table::AxisKind::kRotary));
   }
   req.info.emplace("builder", "volcomp build axis");
   req.info.emplace("reverse", reverse);
-  const std::vector<uint8_t> bytes = image::BuildImage(req);
-  image::WriteFileBytes(out_path, bytes);
-  std::cout << "  wrote " << out_path << " (" << bytes.size() << " bytes)\n";
-  return 0;
+  VOLCOMP_TRY_ASSIGN(const std::vector<uint8_t> bytes, image::BuildImage(req));
+  VOLCOMP_TRY(tools::WriteFileBytes(out_path, bytes));
+  output.data = JsonValue::Object();
+  output.data.Set("image", out_path)
+      .Set("bytes", uint64_t{bytes.size()})
+      .Set("reverse", reverse)
+      .Set("axes", std::move(axes));
+  output.text = BuildAxisText;
+  return output;
 }
 
-}  // namespace volcomp::tools
+}  // namespace
+
+const Command& BuildAxisCommand() {
+  static const Command kCommand{
+      "build axis",
+      "AXIS1D image from positioning tests (raw readings or mean deviations)",
+      "",
+      Join({PositioningFileOptions(),
+            {{"--output", "-o", "IMAGE", nullptr, nullptr, "image file to write (required)"}},
+            ResolutionOptions(),
+            {{"--reverse", nullptr, "tables|backlash|mean", nullptr, "tables",
+              "negative-direction handling"},
+             {"--spacing", nullptr, "X=S,...", "mm (deg for A, B, C)", nullptr,
+              "table spacing per axis (default: the test's, or its smallest gap)"},
+             {"--wrap", nullptr, nullptr, nullptr, nullptr,
+              "rotary table spanning exactly 360° wraps around"}},
+            ImageOptions()}),
+      RunBuildAxis,
+      PositioningFileNotes()};
+  return kCommand;
+}
+
+}  // namespace volcomp::cli

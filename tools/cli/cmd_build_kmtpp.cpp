@@ -3,127 +3,144 @@
 // angular errors from the model's axis tables. Default: the smooth final step (traced point); the
 // printed, discontinuous form with --dissertation. See docs/table-builders.md.
 #include <array>
-#include <iostream>
-#include <map>
 #include <string>
 
+#include "build_options.hpp"
+#include "choice_option.hpp"
 #include "commands.hpp"
-#include "volcomp/model/build_cli.hpp"
-#include "volcomp/model/io.hpp"
+#include "grid_build.hpp"
+#include "option_groups.hpp"
+#include "volcomp/datasets/s500.hpp"
+#include "volcomp/datasets/tracker_csv.hpp"
 #include "volcomp/model/kmtpp.hpp"
-#include "volcomp/model/tracker.hpp"
 
-namespace volcomp::tools {
+namespace volcomp::cli {
+namespace {
 
-int RunBuildKmtpp(Args& args) {
-  const model::Model m = model::cli::ParseModelOptions(args);
-  const auto tracker_file = args.value("--tracker");
-  const std::string tracker_builtin = args.value("--tracker-builtin").value_or("s500-315");
-  model::TrackerData data;
-  if (tracker_file) {
-    data = model::LoadTrackerCsv(*tracker_file);
-  } else if (tracker_builtin == "s500-315") {
-    data = model::S500Tracker315();
-  } else if (tracker_builtin == "s500-240") {
-    data = model::S500Tracker240();
-  } else {
-    throw UsageError("--tracker-builtin must be s500-315 or s500-240");
-  }
-  model::TrackerOptions topt;
-  const std::string cosines = args.value("--cosines").value_or("signed");
-  if (cosines == "signed") {
-    topt.cosines = model::CosineSource::kSigned;
-  } else if (cosines == "printed") {
-    topt.cosines = model::CosineSource::kPrinted;
-  } else {
-    throw UsageError("--cosines must be signed or printed (unit axis vectors)");
-  }
-  int interval = 1;
-  if (auto i = args.integer("--calibration-interval")) {
-    if (*i < 0 || *i > 1000) throw UsageError("--calibration-interval out of range");
-    interval = static_cast<int>(*i);
-  }
+// The calibration's tracker lines: --tracker FILE, else --tracker-builtin NAME.
+Expected<model::TrackerData> CalibrationLines(Args& args) {
+  const auto file = args.Value("--tracker");
+  const std::string builtin = args.Value("--tracker-builtin").value_or("s500-315");
+  if (file) return datasets::LoadTrackerCsv(*file);
+  if (auto data = datasets::S500TrackerNamed(builtin)) return *data;
+  return UsageFailure("--tracker-builtin must be s500-315 or s500-240");
+}
+
+// --dissertation, --gain, --step, --final-step, --sum, --index.
+Expected<model::KmtppOptions> ParseKmtppOptions(Args& args) {
   model::KmtppOptions opt;
-  const bool dissertation = args.flag("--dissertation");
-  if (dissertation) opt = model::KmtppDissertationOptions(opt.gain, opt.step);
-  if (auto k = args.number("--gain")) opt.gain = *k;
-  if (auto l = args.number("--step")) opt.step = *l;
-  if (auto f = args.value("--final-step")) {
-    if (*f == "traced") {
-      opt.final_step = model::KmtppFinalStep::kTracedPoint;
-    } else if (*f == "node") {
-      opt.final_step = model::KmtppFinalStep::kGridNode;
-    } else {
-      throw UsageError("--final-step must be traced or node");
-    }
+  if (args.Flag("--dissertation")) opt = model::KmtppDissertationOptions(opt.gain, opt.step);
+  const auto gain = args.Number("--gain");
+  const auto step = args.Number("--step");
+  VOLCOMP_TRY(args.status());
+  if (gain) opt.gain = *gain;
+  if (step) opt.step = *step;
+  if (auto f = args.Value("--final-step")) {
+    VOLCOMP_TRY_ASSIGN(opt.final_step, ParseChoice<model::KmtppFinalStep>(
+                                           "--final-step", *f,
+                                           {{"traced", model::KmtppFinalStep::kTracedPoint},
+                                            {"node", model::KmtppFinalStep::kGridNode}}));
   }
-  if (auto s = args.value("--sum")) {
-    if (*s == "matrix") {
-      opt.sum_form = model::KmtppSumForm::kMatrix;
-    } else if (*s == "listing") {
-      opt.sum_form = model::KmtppSumForm::kListing;
-    } else {
-      throw UsageError("--sum must be matrix or listing");
-    }
+  if (auto s = args.Value("--sum")) {
+    VOLCOMP_TRY_ASSIGN(opt.sum_form, ParseChoice<model::KmtppSumForm>(
+                                         "--sum", *s,
+                                         {{"matrix", model::KmtppSumForm::kMatrix},
+                                          {"listing", model::KmtppSumForm::kListing}}));
   }
-  if (auto r = args.value("--index")) {
-    if (*r == "round") {
-      opt.index_rule = model::KmtppIndexRule::kRound;
-    } else if (*r == "floor") {
-      opt.index_rule = model::KmtppIndexRule::kFloor;
-    } else {
-      throw UsageError("--index must be round or floor");
-    }
+  if (auto r = args.Value("--index")) {
+    VOLCOMP_TRY_ASSIGN(opt.index_rule, ParseChoice<model::KmtppIndexRule>(
+                                           "--index", *r,
+                                           {{"round", model::KmtppIndexRule::kRound},
+                                            {"floor", model::KmtppIndexRule::kFloor}}));
   }
   if (!(opt.gain * opt.step > 0 && opt.gain * opt.step < 2)) {
-    throw UsageError("--gain times --step must lie in (0, 2)");
+    return UsageFailure("--gain times --step must lie in (0, 2)");
   }
+  return opt;
+}
+
+Expected<Output> RunBuildKmtpp(Args& args, Context&) {
+  VOLCOMP_TRY_ASSIGN(const model::Model m, ParseModelOptions(args));
+  VOLCOMP_TRY_ASSIGN(const model::TrackerData data, CalibrationLines(args));
+  model::TrackerOptions topt;
+  const std::string cosines = args.Value("--cosines").value_or("signed");
+  VOLCOMP_TRY_ASSIGN(topt.cosines,
+                     ParseChoice<model::CosineSource>("--cosines", cosines,
+                                                      {{"signed", model::CosineSource::kSigned},
+                                                       {"printed", model::CosineSource::kPrinted}},
+                                                      "unit axis vectors"));
+  const auto interval_option = args.Integer("--calibration-interval");
+  VOLCOMP_TRY(args.status());
+  int interval = 1;
+  if (interval_option) {
+    if (*interval_option < 0 || *interval_option > 1000) {
+      return UsageFailure("--calibration-interval out of range");
+    }
+    interval = static_cast<int>(*interval_option);
+  }
+  VOLCOMP_TRY_ASSIGN(const model::KmtppOptions opt, ParseKmtppOptions(args));
   std::array<model::AxisErrorTable, 3> tables = m.axes;
-  if (auto refine = args.number("--refine-mm")) {
-    if (!(*refine > 0)) throw UsageError("--refine-mm must be positive");
-    for (auto& t : tables) t = t.Resampled(*refine, t.max_mm());
+  const auto refine = args.Number("--refine-mm");
+  VOLCOMP_TRY(args.status());
+  if (refine) {
+    if (!(*refine > 0)) return UsageFailure("--refine-mm must be positive");
+    for (auto& t : tables) {
+      VOLCOMP_TRY_ASSIGN(t, t.Resampled(*refine, t.max_mm()));
+    }
   }
-  const bool allow_jumps = args.flag("--allow-discontinuous");
+  const bool allow_jumps = args.Flag("--allow-discontinuous");
   if (opt.final_step == model::KmtppFinalStep::kGridNode && !allow_jumps) {
-    throw UsageError(
+    return UsageFailure(
         "the printed final step (grid node) jumps by up to half a table step wherever the node "
         "changes; a trilinear grid cannot represent it. Use the default traced-point step, or "
         "pass --allow-discontinuous");
   }
-  std::array<double, 3> lo, hi, natural;
-  for (std::size_t a = 0; a < 3; ++a) {
-    if (!(tables[a].uniform_spacing_mm() > 0)) {
-      throw InputError(std::string("КМТПП needs equally spaced tables; axis ") + "XYZ"[a] +
-                       " is not (use --refine-mm)");
-    }
-    lo[a] = tables[a].min_mm();
-    hi[a] = tables[a].max_mm();
-    natural[a] = tables[a].uniform_spacing_mm();
+  const Expected<model::TrackerModel> tracker = model::TrackerModel::Create(data, topt);
+  if (!tracker.ok()) {
+    return Fail(Error::kInputInvalid, data.name + ": " + tracker.error().message);
   }
-  const model::KmtppCalibration cal = [&]() {
-    try {
-      return model::KmtppCalibrationFromTracker(model::TrackerModel(data, topt), interval);
-    } catch (const std::invalid_argument& e) {
-      throw InputError(data.name + ": " + e.what());
-    }
-  }();
-  model::cli::GridCommand cmd = model::cli::ParseGridCommand(args, lo, hi, natural);
-  args.finish();
-
-  const model::InverseMap inverse = [&](const model::Vec3& t) {
-    return model::Kmtpp(tables, cal, opt, t).command_mm;
-  };
-  const std::map<std::string, std::string> info = {
-      {"builder", "volcomp build kmtpp"},
-      {"tables", m.name},
-      {"calibration", data.name + ", interval " + std::to_string(interval) + ", " + cosines},
-      {"law", "K=" + std::to_string(opt.gain) + " l=" + std::to_string(opt.step)},
-      {"final_step", opt.final_step == model::KmtppFinalStep::kTracedPoint ? "traced point"
-                                                                           : "grid node (printed)"},
-      {"sum", opt.sum_form == model::KmtppSumForm::kMatrix ? "matrix (4.9)" : "listing (dot)"},
-  };
-  if (!cmd.json) std::cout << "volcomp build kmtpp\n";
-  return model::cli::RunGridBuild(cmd, inverse, nullptr, info, std::cout);
+  const model::KmtppCalibration cal = model::KmtppCalibrationFromTracker(*tracker, interval);
+  Expected<builders::GridSource> source = builders::KmtppGridSource(tables, cal, opt);
+  if (!source.ok()) {
+    return Fail(Error::kInputInvalid, source.error().message + " (use --refine-mm)");
+  }
+  source->info.emplace("tables", m.name);
+  source->info.emplace("calibration",
+                       data.name + ", interval " + std::to_string(interval) + ", " + cosines);
+  VOLCOMP_TRY_ASSIGN(const GridCommand command, ParseGridCommand(args, *source));
+  VOLCOMP_TRY(args.Finish());
+  return RunGridBuild(command, *source, "volcomp build kmtpp");
 }
 
-}  // namespace volcomp::tools
+}  // namespace
+
+const Command& BuildKmtppCommand() {
+  static const Command kCommand{
+      "build kmtpp",
+      "GRID3 image by the КМТПП method (dissertation ch. 4)",
+      "",
+      Join(
+          {ModelOptions(),
+           {{"--tracker", nullptr, "FILE", nullptr, nullptr, "tracker lines for the calibration"},
+            {"--tracker-builtin", nullptr, "s500-315|s500-240", nullptr, "s500-315",
+             "built-in tracker lines (without --tracker)"},
+            {"--cosines", nullptr, "signed|printed", nullptr, "signed", "calibration vectors"},
+            {"--calibration-interval", nullptr, "N", nullptr, "1", "calibration interval"},
+            {"--gain", nullptr, "K", nullptr, nullptr, "K (default 1.5); K·l in (0, 2)"},
+            {"--step", nullptr, "L", nullptr, nullptr, "l, model-time step (default 0.1)"},
+            {"--final-step", nullptr, "traced|node", nullptr, nullptr,
+             "final step base (default traced; node with --dissertation)"},
+            {"--sum", nullptr, "matrix|listing", nullptr, nullptr,
+             "S update (default matrix; listing with --dissertation)"},
+            {"--index", nullptr, "round|floor", nullptr, nullptr, "table row rule (default round)"},
+            {"--dissertation", nullptr, nullptr, nullptr, nullptr, "the printed variant"},
+            {"--refine-mm", nullptr, "H", "mm", nullptr, "resample the tables every H"},
+            {"--allow-discontinuous", nullptr, nullptr, nullptr, nullptr,
+             "allow the printed final step, which jumps"}},
+           GridOptions()}),
+      RunBuildKmtpp,
+      GridNotes()};
+  return kCommand;
+}
+
+}  // namespace volcomp::cli

@@ -1,46 +1,52 @@
-// `volcomp evaluate diagonal`: ISO 230-6 diagonal displacement test evaluation.
-#include <iostream>
-#include <sstream>
+// `volcomp evaluate diagonal FILE|-`: ISO 230-6 diagonal displacement test evaluation
+// (metrology/diagonal.hpp), as text or JSON, and an HTML report.
+#include <ostream>
 
 #include "commands.hpp"
-#include "volcomp/metrology/cli_support.hpp"
+#include "file_arguments.hpp"
+#include "metrology_report.hpp"
+#include "option_groups.hpp"
 #include "volcomp/metrology/diagonal.hpp"
 #include "volcomp/metrology/diagonal_report.hpp"
-#include "volcomp/tools/json.hpp"
 
-namespace volcomp::tools {
+namespace volcomp::cli {
+namespace {
 
 namespace m = volcomp::metrology;
 
-int RunEvaluateDiagonal(Args& args) {
-  const bool json = args.flag("--json");
-  const auto report_dir = args.value("--report");
-  const bool allow_few = args.flag("--allow-few-runs");
-  const auto files = args.positionals();
-  args.finish();
-  if (files.size() != 1) throw UsageError("give exactly one data file (or - for stdin)");
-  const CsvTable table = m::ReadCsvArgument(files[0]);
-  m::GroupingOptions go;
-  go.allow_few_approaches = allow_few;
-  const m::DiagonalEvaluation ev = m::EvaluateDiagonals(table, go);
-  m::PrintWarnings(std::cerr, ev.warnings);
-  std::ostringstream json_text;
-  {
-    JsonWriter j(json_text);
-    m::WriteDiagonalJson(j, ev);
-  }
-  json_text << "\n";
-  if (json) {
-    std::cout << json_text.str();
-  } else {
-    m::WriteDiagonalText(std::cout, ev);
-  }
-  if (report_dir) {
-    report::HtmlPage page("ISO 230-6 diagonal displacement test");
-    m::AddDiagonalSections(&page, ev);
-    m::WriteReport(page, json_text.str(), *report_dir, m::DiagonalReportName(ev), std::cerr);
-  }
-  return kExitOk;
+void EvaluateDiagonalText(const JsonValue& data, std::ostream& out) {
+  m::WriteDiagonalText(out, data);
 }
 
-}  // namespace volcomp::tools
+Expected<Output> RunEvaluateDiagonal(Args& args, Context& ctx) {
+  args.Flag("--json");  // the command layer prints the data as JSON
+  const auto report_dir = args.Value("--report");
+  m::GroupingOptions grouping;
+  grouping.allow_few_approaches = args.Flag("--allow-few-runs");
+  const auto files = args.Positionals();
+  VOLCOMP_TRY(args.Finish());
+  if (files.size() != 1) return UsageFailure("give exactly one data file (or - for stdin)");
+  VOLCOMP_TRY_ASSIGN(const tools::CsvTable table, ReadCsvArgument(files[0], ctx));
+  VOLCOMP_TRY_ASSIGN(const m::DiagonalEvaluation ev, m::EvaluateDiagonals(table, grouping));
+  Output output{m::DiagonalJson(ev), EvaluateDiagonalText, ev.warnings};
+  if (report_dir) {
+    VOLCOMP_TRY(WriteMetrologyReport(m::DiagonalPage(ev), output.data, *report_dir,
+                                     m::DiagonalReportName(ev), ctx));
+  }
+  return output;
+}
+
+}  // namespace
+
+const Command& EvaluateDiagonalCommand() {
+  static const Command kCommand{
+      "evaluate diagonal",
+      "ISO 230-6 body/face diagonal test (E, B, E_d, B_d) from CSV",
+      "FILE|-",
+      Join({AllowFewRuns(), JsonReport()}),
+      RunEvaluateDiagonal,
+      "Input: the positioning long layout with a `diagonal` column naming each row's diagonal."};
+  return kCommand;
+}
+
+}  // namespace volcomp::cli

@@ -1,125 +1,83 @@
-// `volcomp evaluate positioning`: GOST 27843-88 / ISO 230-2:2014 positioning test evaluation.
-#include <iostream>
-#include <optional>
-#include <sstream>
+// `volcomp evaluate positioning FILE|-`: GOST 27843-88 / ISO 230-2:2014 positioning test
+// evaluation (metrology/positioning_evaluation.hpp), as text or JSON, and an HTML report.
+#include <ostream>
 #include <vector>
 
+#include "choice_option.hpp"
 #include "commands.hpp"
-#include "volcomp/metrology/cli_support.hpp"
-#include "volcomp/metrology/positioning_checks.hpp"
-#include "volcomp/metrology/positioning_csv.hpp"
-#include "volcomp/metrology/positioning_eval.hpp"
+#include "file_arguments.hpp"
+#include "metrology_report.hpp"
+#include "option_groups.hpp"
+#include "volcomp/metrology/positioning_evaluation.hpp"
 #include "volcomp/metrology/positioning_report.hpp"
-#include "volcomp/metrology/reading_checks.hpp"
-#include "volcomp/metrology/test_conditions.hpp"
-#include "volcomp/tools/json.hpp"
 
-namespace volcomp::tools {
+namespace volcomp::cli {
+namespace {
 
 namespace m = volcomp::metrology;
 
-int RunEvaluatePositioning(Args& args) {
-  const bool json = args.flag("--json");
-  const auto report_dir = args.value("--report");
-  const std::string standard = args.value("--standard").value();
-  const std::string sigma = args.value("--sigma").value();
-  const auto axis_length = args.number("--axis-length-mm");
-  const bool allow_few = args.flag("--allow-few-runs");
-  const auto files = args.positionals();
-  args.finish();
-  if (files.size() != 1) throw UsageError("give exactly one data file (or - for stdin)");
-  std::vector<m::Standard> standards;
-  if (standard == "gost27843" || standard == "gost") {
-    standards = {m::Standard::kGost27843};
-  } else if (standard == "iso230-2" || standard == "iso") {
-    standards = {m::Standard::kIso230_2};
-  } else if (standard == "both") {
-    standards = {m::Standard::kGost27843, m::Standard::kIso230_2};
-  } else {
-    throw UsageError("--standard must be gost27843, iso230-2 or both");
-  }
-  m::EvaluationOptions eo;
-  if (sigma == "formula") {
-    eo.sigma = m::SigmaMethod::kFormula;
-  } else if (sigma == "range") {
-    eo.sigma = m::SigmaMethod::kRange;
-  } else {
-    throw UsageError("--sigma must be formula or range");
-  }
-  if (axis_length && !(*axis_length > 0.0)) throw UsageError("--axis-length-mm must be positive");
-
-  const CsvTable table = m::ReadCsvArgument(files[0]);
-  const m::TestConditions conditions = m::ConditionsFromPreamble(table);
-  const m::PositioningData data = m::ReadPositioningCsv(table);
-  m::GroupingOptions go;
-  go.allow_few_approaches = allow_few;
-  const m::PositioningSet set = m::GroupReadings(data, go);
-  m::ReadingCheckOptions checks;
-  checks.travel = axis_length;
-  const std::vector<std::string> reading_warnings = m::CheckReadings(data, set, checks);
-
-  std::vector<m::PositioningResult> results;
-  for (const m::Standard s : standards) {
-    eo.standard = s;
-    m::PositioningResult r = m::EvaluatePositioning(set, eo);
-    for (const auto& w : reading_warnings) r.warnings.push_back(w);
-    for (const auto& w : m::CheckPositionCount(set, s, axis_length)) r.warnings.push_back(w);
-    for (const auto& w : m::CheckCardinalAngles(set)) r.warnings.push_back(w);
-    results.push_back(std::move(r));
-  }
-
-  std::vector<std::string> all_warnings;
-  for (const auto& r : results) {
-    for (const auto& w : r.warnings) {
-      bool dup = false;
-      for (const auto& a : all_warnings) dup = dup || a == w;
-      if (!dup) all_warnings.push_back(w);
-    }
-  }
-  m::PrintWarnings(std::cerr, all_warnings);
-
-  const auto axis = conditions.Find("axis");
-  const std::string name =
-      "positioning_" + (axis ? m::SafeName(*axis) : m::SourceStem(table.source()));
-  std::ostringstream json_text;
-  {
-    JsonWriter j(json_text);
-    j.begin_object();
-    j.key("command").value("evaluate positioning");
-    j.key("name").value(name);
-    j.key("source").value(table.source());
-    m::WriteConditionsJson(j, conditions);
-    j.key("positions").value(static_cast<int64_t>(set.positions.size()));
-    j.key("evaluations").begin_array();
-    for (const auto& r : results) m::WritePositioningJson(j, r);
-    j.end_array();
-    j.end_object();
-  }
-  json_text << "\n";
-  if (json) {
-    std::cout << json_text.str();
-  } else {
-    std::cout << "positioning test: " << table.source() << "\n";
-    if (!conditions.empty()) std::cout << "conditions: " << m::ConditionsText(conditions) << "\n";
-    std::cout << (set.kind == m::AxisKind::kLinear ? "linear" : "rotary") << " axis, "
-              << set.positions.size()
-              << " target positions, directions: " << (set.has_up ? "↑" : "")
-              << (set.has_down ? "↓" : "") << "\n\n";
-    for (const auto& r : results) {
-      m::WritePositioningText(std::cout, r);
-      std::cout << "\n";
-    }
-  }
-  if (report_dir) {
-    report::HtmlPage page("Positioning test" + (axis ? " of axis " + *axis : std::string()) + ": " +
-                          table.source());
-    page.Paragraph(std::string(set.kind == m::AxisKind::kLinear ? "Linear" : "Rotary") + " axis, " +
-                   std::to_string(set.positions.size()) + " target positions.");
-    m::AddConditionsSection(&page, conditions);
-    for (const auto& r : results) m::AddPositioningSection(&page, r);
-    m::WriteReport(page, json_text.str(), *report_dir, name, std::cerr);
-  }
-  return kExitOk;
+void EvaluatePositioningText(const JsonValue& data, std::ostream& out) {
+  m::WritePositioningEvaluationText(out, data);
 }
 
-}  // namespace volcomp::tools
+Expected<Output> RunEvaluatePositioning(Args& args, Context& ctx) {
+  args.Flag("--json");  // the command layer prints the data as JSON
+  const auto report_dir = args.Value("--report");
+  const std::string standard = args.Value("--standard").value_or("");
+  const std::string sigma = args.Value("--sigma").value_or("");
+  m::PositioningTestOptions o;
+  o.axis_length_mm = args.Number("--axis-length-mm");
+  o.grouping.allow_few_approaches = args.Flag("--allow-few-runs");
+  const auto files = args.Positionals();
+  VOLCOMP_TRY(args.Finish());
+  if (files.size() != 1) return UsageFailure("give exactly one data file (or - for stdin)");
+  using Standards = std::vector<m::Standard>;
+  const Standards gost = {m::Standard::kGost27843}, iso = {m::Standard::kIso230_2};
+  VOLCOMP_TRY_ASSIGN(o.standards, ParseChoice<Standards>("--standard", standard,
+                                                         {{"gost27843", gost},
+                                                          {"gost", gost, false},
+                                                          {"iso230-2", iso},
+                                                          {"iso", iso, false},
+                                                          {"both", {gost[0], iso[0]}}}));
+  VOLCOMP_TRY_ASSIGN(o.sigma, ParseChoice<m::SigmaMethod>("--sigma", sigma,
+                                                          {{"formula", m::SigmaMethod::kFormula},
+                                                           {"range", m::SigmaMethod::kRange}}));
+  if (o.axis_length_mm && !(*o.axis_length_mm > 0.0)) {
+    return UsageFailure("--axis-length-mm must be positive");
+  }
+
+  VOLCOMP_TRY_ASSIGN(const tools::CsvTable table, ReadCsvArgument(files[0], ctx));
+  VOLCOMP_TRY_ASSIGN(const m::PositioningEvaluation ev, m::EvaluatePositioningTest(table, o));
+  Output output{m::PositioningEvaluationJson(ev), EvaluatePositioningText, ev.warnings};
+  if (report_dir) {
+    VOLCOMP_TRY(WriteMetrologyReport(m::PositioningEvaluationPage(ev), output.data, *report_dir,
+                                     m::PositioningReportName(ev), ctx));
+  }
+  return output;
+}
+
+}  // namespace
+
+const Command& EvaluatePositioningCommand() {
+  static const Command kCommand{
+      "evaluate positioning",
+      "GOST 27843-88 / ISO 230-2 positioning test from CSV",
+      "FILE|-",
+      Join({{{"--standard", nullptr, "gost27843|iso230-2|both", nullptr, "gost27843",
+              "standard(s) to evaluate"},
+             {"--sigma", nullptr, "formula|range", nullptr, "formula",
+              "GOST 27843 S by formula (5) or by the range method (6)"},
+             {"--axis-length-mm", nullptr, "L", "mm", nullptr,
+              "axis travel for the target-count checks (default: the targets' span)"}},
+            AllowFewRuns(),
+            JsonReport()}),
+      RunEvaluatePositioning,
+      "Input: target_mm|target_deg, direction, run, deviation_um|deviation_mm|measured_mm|\n"
+      "deviation_arcsec|...; ',' or ';' or TAB separated (decimal comma with ';' or TAB);\n"
+      "'# key: value' lines before the header are the test conditions of the report.\n"
+      "Non-finite readings are refused; implausible magnitudes and Grubbs outliers (99 %)\n"
+      "are warned about with their line. See docs/metrology.md."};
+  return kCommand;
+}
+
+}  // namespace volcomp::cli

@@ -1,115 +1,106 @@
-// `volcomp evaluate rotary`: ISO 230-7 error motions of a spindle or rotary axis.
-#include <iostream>
+// `volcomp evaluate rotary FILE|-`: ISO 230-7 error motions of a spindle or rotary axis
+// (metrology/rotary_eval.hpp), with an optional Donaldson reversal, as text or JSON, and an HTML
+// report.
 #include <optional>
-#include <sstream>
+#include <ostream>
 
+#include "choice_option.hpp"
 #include "commands.hpp"
-#include "volcomp/metrology/cli_support.hpp"
+#include "file_arguments.hpp"
+#include "metrology_report.hpp"
+#include "option_groups.hpp"
+#include "volcomp/metrology/report_files.hpp"
 #include "volcomp/metrology/rotary_data.hpp"
 #include "volcomp/metrology/rotary_eval.hpp"
 #include "volcomp/metrology/rotary_report.hpp"
 #include "volcomp/metrology/test_conditions.hpp"
-#include "volcomp/tools/json.hpp"
 
-namespace volcomp::tools {
+namespace volcomp::cli {
+namespace {
 
 namespace m = volcomp::metrology;
 
-namespace {
+void EvaluateRotaryText(const JsonValue& data, std::ostream& out) { m::WriteRotaryText(out, data); }
 
-// The synchronous (revolution-averaged) profile of one channel.
-std::vector<double> SynchronousChannel(const m::RotaryRecord& rec, const std::string& channel) {
-  const auto it = rec.channels.find(channel);
-  if (it == rec.channels.end()) {
-    throw InputError(rec.source + ": no column \"" + channel + "\" for the reversal");
+Expected<Output> RunEvaluateRotary(Args& args, Context& ctx) {
+  args.Flag("--json");  // the command layer prints the data as JSON
+  const auto report_dir = args.Value("--report");
+  m::RotaryOptions o;
+  const std::string sensitive = args.Value("--sensitive").value_or("");
+  const auto fsd_angle = args.Number("--fsd-angle-deg");
+  o.tilt_distance_mm = args.Number("--tilt-distance-mm");
+  o.face_radius_mm = args.Number("--face-radius-mm");
+  o.min_zone = args.Flag("--min-zone");
+  const auto reversal_file = args.Value("--reversal");
+  const std::string reversal_channel = args.Value("--reversal-channel").value_or("");
+  const std::string procedure = args.Value("--reversal-procedure").value_or("");
+  const auto files = args.Positionals();
+  VOLCOMP_TRY(args.Finish());
+  VOLCOMP_TRY_ASSIGN(o.sensitive, ParseChoice<m::SensitiveDirection>(
+                                      "--sensitive", sensitive,
+                                      {{"rotating", m::SensitiveDirection::kRotating},
+                                       {"fixed", m::SensitiveDirection::kFixed}}));
+  if (fsd_angle) {
+    if (o.sensitive != m::SensitiveDirection::kFixed) {
+      return UsageFailure("--fsd-angle-deg needs --sensitive fixed");
+    }
+    o.fsd_angle_deg = *fsd_angle;
   }
-  std::vector<double> s(rec.angle_deg.size(), 0.0);
-  for (const auto& rev : it->second) {
-    for (std::size_t j = 0; j < s.size(); ++j) s[j] += rev[j];
+  if (files.size() != 1) return UsageFailure("give exactly one data file (or - for stdin)");
+  if (procedure != "P" && procedure != "S") {
+    return UsageFailure("--reversal-procedure must be P or S");
   }
-  for (double& v : s) v /= static_cast<double>(it->second.size());
-  return s;
+  if (o.tilt_distance_mm && !(*o.tilt_distance_mm > 0.0)) {
+    return UsageFailure("--tilt-distance-mm must be positive");
+  }
+  if (o.face_radius_mm && !(*o.face_radius_mm > 0.0)) {
+    return UsageFailure("--face-radius-mm must be positive");
+  }
+
+  VOLCOMP_TRY_ASSIGN(const tools::CsvTable table, ReadCsvArgument(files[0], ctx));
+  VOLCOMP_TRY_ASSIGN(const m::RotaryRecord rec, m::ReadRotaryCsv(table));
+  VOLCOMP_TRY_ASSIGN(m::RotaryEvaluation ev, m::EvaluateRotary(rec, o));
+  ev.conditions = m::ConditionsFromPreamble(table);
+  std::optional<m::ReversalResult> reversal;
+  if (reversal_file) {
+    VOLCOMP_TRY_ASSIGN(const tools::CsvTable table2, ReadCsvArgument(*reversal_file, ctx));
+    VOLCOMP_TRY_ASSIGN(const m::RotaryRecord rec2, m::ReadRotaryCsv(table2));
+    VOLCOMP_TRY_ASSIGN(reversal, m::DonaldsonReversal(rec, rec2, reversal_channel,
+                                                      procedure == "P" ? m::ReversalProcedure::kP
+                                                                       : m::ReversalProcedure::kS));
+  }
+  Output output{m::RotaryJson(ev, reversal), EvaluateRotaryText, ev.warnings};
+  if (report_dir) {
+    VOLCOMP_TRY(WriteMetrologyReport(m::RotaryPage(ev, reversal), output.data, *report_dir,
+                                     "rotary_" + m::SourceStem(rec.source), ctx));
+  }
+  return output;
 }
 
 }  // namespace
 
-int RunEvaluateRotary(Args& args) {
-  const bool json = args.flag("--json");
-  const auto report_dir = args.value("--report");
-  m::RotaryOptions o;
-  const std::string sensitive = args.value("--sensitive").value();
-  if (sensitive == "rotating") {
-    o.sensitive = m::SensitiveDirection::kRotating;
-  } else if (sensitive == "fixed") {
-    o.sensitive = m::SensitiveDirection::kFixed;
-  } else {
-    throw UsageError("--sensitive must be rotating or fixed");
-  }
-  if (const auto a = args.number("--fsd-angle-deg")) {
-    if (o.sensitive != m::SensitiveDirection::kFixed) {
-      throw UsageError("--fsd-angle-deg needs --sensitive fixed");
-    }
-    o.fsd_angle_deg = *a;
-  }
-  o.tilt_distance_mm = args.number("--tilt-distance-mm");
-  o.face_radius_mm = args.number("--face-radius-mm");
-  o.min_zone = args.flag("--min-zone");
-  const auto reversal_file = args.value("--reversal");
-  const std::string reversal_channel = args.value("--reversal-channel").value();
-  const std::string procedure = args.value("--reversal-procedure").value();
-  const auto files = args.positionals();
-  args.finish();
-  if (files.size() != 1) throw UsageError("give exactly one data file (or - for stdin)");
-  if (procedure != "P" && procedure != "S") throw UsageError("--reversal-procedure must be P or S");
-  if (o.tilt_distance_mm && !(*o.tilt_distance_mm > 0.0)) {
-    throw UsageError("--tilt-distance-mm must be positive");
-  }
-  if (o.face_radius_mm && !(*o.face_radius_mm > 0.0)) {
-    throw UsageError("--face-radius-mm must be positive");
-  }
-
-  const CsvTable table = m::ReadCsvArgument(files[0]);
-  const m::RotaryRecord rec = m::ReadRotaryCsv(table);
-  m::RotaryEvaluation ev = m::EvaluateRotary(rec, o);
-  ev.conditions = m::ConditionsFromPreamble(table);
-  std::optional<m::ReversalResult> rev;
-  if (reversal_file) {
-    const m::RotaryRecord rec2 = m::ReadRotaryCsv(m::ReadCsvArgument(*reversal_file));
-    if (rec2.angle_deg.size() != rec.angle_deg.size()) {
-      throw InputError(rec2.source + ": the reversal record has " +
-                       std::to_string(rec2.angle_deg.size()) + " angles per revolution, " +
-                       rec.source + " has " + std::to_string(rec.angle_deg.size()));
-    }
-    for (std::size_t j = 0; j < rec.angle_deg.size(); ++j) {
-      if (std::abs(rec.angle_deg[j] - rec2.angle_deg[j]) > 1e-6) {
-        throw InputError(rec2.source + ": the reversal record must use the angles of " +
-                         rec.source);
-      }
-    }
-    rev = m::DonaldsonReversal(
-        rec.angle_deg, SynchronousChannel(rec, reversal_channel),
-        SynchronousChannel(rec2, reversal_channel),
-        procedure == "P" ? m::ReversalProcedure::kP : m::ReversalProcedure::kS);
-  }
-  m::PrintWarnings(std::cerr, ev.warnings);
-  std::ostringstream json_text;
-  {
-    JsonWriter j(json_text);
-    m::WriteRotaryJson(j, ev, rev);
-  }
-  json_text << "\n";
-  if (json) {
-    std::cout << json_text.str();
-  } else {
-    m::WriteRotaryText(std::cout, ev, rev);
-  }
-  if (report_dir) {
-    report::HtmlPage page("ISO 230-7 error motion");
-    m::AddRotarySections(&page, ev, rev);
-    m::WriteReport(page, json_text.str(), *report_dir, "rotary_" + m::SourceStem(rec.source),
-                   std::cerr);
-  }
-  return kExitOk;
+const Command& EvaluateRotaryCommand() {
+  static const Command kCommand{
+      "evaluate rotary", "ISO 230-7 error motion (synchronous, asynchronous, tilt, reversal)",
+      "FILE|-",
+      Join({{{"--sensitive", nullptr, "rotating|fixed", nullptr, "rotating",
+              "sensitive direction of the radial measurement"},
+             {"--fsd-angle-deg", nullptr, "A", "deg", nullptr,
+              "angle of the fixed sensitive direction (with --sensitive fixed; default 0)"},
+             {"--tilt-distance-mm", nullptr, "L", "mm", nullptr,
+              "distance of the second radial plane (x2_um, y2_um) for tilt"},
+             {"--face-radius-mm", nullptr, "R", "mm", nullptr, "radius of the face sensor"},
+             {"--min-zone", nullptr, nullptr, nullptr, nullptr,
+              "also evaluate about the minimum-zone centre"},
+             {"--reversal", nullptr, "FILE2", nullptr, nullptr,
+              "Donaldson reversal: the second (reversed) setup"},
+             {"--reversal-channel", nullptr, "COLUMN", nullptr, "x_um",
+              "channel used for the reversal"},
+             {"--reversal-procedure", nullptr, "P|S", nullptr, "P",
+              "reversal procedure (same or reversed sign convention)"}},
+            JsonReport()}),
+      RunEvaluateRotary};
+  return kCommand;
 }
 
-}  // namespace volcomp::tools
+}  // namespace volcomp::cli

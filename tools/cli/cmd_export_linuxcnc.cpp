@@ -1,83 +1,161 @@
 // `volcomp export linuxcnc`: LinuxCNC joint compensation files (COMP_FILE_TYPE 0 or 1) from
-// positioning test results, with the [JOINT_n] INI lines to paste (see model/linuxcnc_comp.hpp).
+// positioning test results, with the [JOINT_n] INI lines to paste (exporters/linuxcnc_comp.hpp).
+// Writes one file per axis and joints.ini into the output directory, then reports them.
 #include <filesystem>
-#include <iostream>
 #include <map>
-#include <stdexcept>
+#include <optional>
+#include <ostream>
 #include <string>
+#include <system_error>
 #include <utility>
 #include <vector>
 
 #include "commands.hpp"
+#include "option_groups.hpp"
+#include "volcomp/datasets/positioning_csv.hpp"
+#include "volcomp/exporters/linuxcnc_comp.hpp"
 #include "volcomp/image/axis_units.hpp"
-#include "volcomp/metrology/cli_support.hpp"
-#include "volcomp/model/axis1d.hpp"
-#include "volcomp/model/linuxcnc_comp.hpp"
 #include "volcomp/tools/csv.hpp"
+#include "volcomp/tools/file_io.hpp"
 
-namespace volcomp::tools {
+namespace volcomp::cli {
+namespace {
 
-int RunExportLinuxcnc(Args& args) {
-  static const std::string kAxes = "XYZABCUVW";
-  std::vector<std::pair<char, std::string>> inputs;
-  for (char n : kAxes) {
-    const std::string opt = std::string("--") + static_cast<char>(n - 'A' + 'a');
-    if (auto p = args.value(opt)) inputs.emplace_back(n, *p);
-  }
-  if (inputs.empty()) throw UsageError("give at least one axis file, e.g. --x x.csv");
-  const std::string out_dir = args.required("-o", "--output");
-  const long long type = args.integer("--type").value_or(1);
-  if (type != 0 && type != 1) throw UsageError("--type must be 0 or 1 (LinuxCNC COMP_FILE_TYPE)");
+constexpr const char* kAxes = "XYZABCUVW";
+
+// --joints X=N,...: the joint of each axis (default: its place in XYZABCUVW).
+Expected<std::map<char, int>> ParseJoints(const std::optional<std::string>& text) {
   std::map<char, int> joint;
-  for (std::size_t i = 0; i < kAxes.size(); ++i) joint[kAxes[i]] = static_cast<int>(i);
-  if (auto j = args.value("--joints")) {
-    for (const auto& [name, value] : image::ParseAxisAssignments(*j, "--joints")) {
-      const auto v = ParseDouble(value);
-      if (!v || *v < 0 || *v > 15 || *v != static_cast<int>(*v))
-        throw UsageError("--joints: joint of " + std::string(1, name) + " must be 0..15");
-      joint[name] = static_cast<int>(*v);
+  for (int i = 0; kAxes[i] != '\0'; ++i) joint[kAxes[i]] = i;
+  if (!text) return joint;
+  VOLCOMP_TRY_ASSIGN(const auto assignments, image::ParseAxisAssignments(*text, "--joints"));
+  for (const auto& [name, value] : assignments) {
+    const auto v = tools::ParseDouble(value);
+    if (!v || *v < 0 || *v > 15 || *v != static_cast<int>(*v)) {
+      return UsageFailure("--joints: joint of " + std::string(1, name) + " must be 0..15");
     }
+    joint[name] = static_cast<int>(*v);
   }
-  std::map<char, double> spacing;
-  if (auto s = args.value("--spacing")) {
-    for (const auto& [name, value] : image::ParseAxisAssignments(*s, "--spacing")) {
-      const auto v = ParseDouble(value);
-      if (!v || !(*v > 0)) throw UsageError("--spacing: " + std::string(1, name) + " must be > 0");
-      spacing[name] = *v;
-    }
-  }
-  metrology::GroupingOptions grouping;
-  grouping.allow_few_approaches = args.flag("--allow-few-runs");
-  args.finish();
-
-  std::filesystem::create_directories(out_dir);
-  const auto t = static_cast<model::LinuxcncCompType>(type);
-  std::string ini;
-  std::cout << "volcomp export linuxcnc (COMP_FILE_TYPE " << type << ")\n";
-  for (const auto& [name, path] : inputs) {
-    const model::PositioningData data = model::LoadPositioningCsv(path, grouping);
-    for (const auto& w : data.warnings) std::cerr << "warning: " << w << "\n";
-    model::LinuxcncComp comp;
-    try {
-      comp = model::BuildLinuxcncComp(data, t, spacing.count(name) ? spacing[name] : 0.0);
-    } catch (const std::invalid_argument& e) {
-      throw InputError(path + ": " + e.what());
-    }
-    std::string file = std::string(1, static_cast<char>(name - 'A' + 'a')) + ".comp";
-    const std::string full = (std::filesystem::path(out_dir) / file).string();
-    metrology::WriteTextOutput(model::FormatLinuxcncComp(comp), full, std::cout);
-    std::cout << "  axis " << name << ": " << comp.rows.size() << " points from "
-              << comp.rows.front().nominal << " to " << comp.rows.back().nominal << ", "
-              << (data.dev_reverse.empty() ? "one direction (reverse = forward)" : "bidirectional")
-              << ", wrote " << full << "\n";
-    ini += "[JOINT_" + std::to_string(joint[name]) +
-           "]\nCOMP_FILE = " + std::filesystem::absolute(full).string() +
-           "\nCOMP_FILE_TYPE = " + std::to_string(type) + "\n";
-  }
-  const std::string ini_path = (std::filesystem::path(out_dir) / "joints.ini").string();
-  metrology::WriteTextOutput(ini, ini_path, std::cout);
-  std::cout << "\nINI lines (also in " << ini_path << "):\n\n" << ini;
-  return 0;
+  return joint;
 }
 
-}  // namespace volcomp::tools
+// --spacing X=S,...: the point spacing of an axis (absent: the test's own).
+Expected<std::map<char, double>> ParseSpacing(const std::optional<std::string>& text) {
+  std::map<char, double> spacing;
+  if (!text) return spacing;
+  VOLCOMP_TRY_ASSIGN(const auto assignments, image::ParseAxisAssignments(*text, "--spacing"));
+  for (const auto& [name, value] : assignments) {
+    const auto v = tools::ParseDouble(value);
+    if (!v || !(*v > 0)) return UsageFailure("--spacing: " + std::string(1, name) + " must be > 0");
+    spacing[name] = *v;
+  }
+  return spacing;
+}
+
+Expected<std::string> AbsolutePath(const std::string& path) {
+  std::error_code ec;
+  const std::filesystem::path p = std::filesystem::absolute(path, ec);
+  if (ec) return Fail(Error::kIoError, path + ": " + ec.message());
+  return p.string();
+}
+
+void ExportText(const JsonValue& d, std::ostream& out) {
+  out << "volcomp export linuxcnc (COMP_FILE_TYPE " << d.get("type")->integer << ")\n";
+  for (const JsonValue& a : d.get("axes")->array) {
+    out << "  axis " << a.get("axis")->string << ": " << a.get("points")->integer << " points from "
+        << a.get("from")->number << " to " << a.get("to")->number << ", "
+        << (a.get("bidirectional")->boolean ? "bidirectional" : "one direction (reverse = forward)")
+        << ", wrote " << a.get("file")->string << "\n";
+  }
+  out << "\nINI lines (also in " << d.get("ini_file")->string << "):\n\n" << d.get("ini")->string;
+}
+
+Expected<Output> RunExportLinuxcnc(Args& args, Context& ctx) {
+  std::vector<std::pair<char, std::string>> inputs;
+  for (int i = 0; kAxes[i] != '\0'; ++i) {
+    const std::string opt = std::string("--") + static_cast<char>(kAxes[i] - 'A' + 'a');
+    if (auto p = args.Value(opt)) inputs.emplace_back(kAxes[i], *p);
+  }
+  if (inputs.empty()) return UsageFailure("give at least one axis file, e.g. --x x.csv");
+  const std::string out_dir = args.Required("-o", "--output");
+  const long long type = args.Integer("--type").value_or(1);
+  VOLCOMP_TRY(args.status());
+  if (type != 0 && type != 1) {
+    return UsageFailure("--type must be 0 or 1 (LinuxCNC COMP_FILE_TYPE)");
+  }
+  VOLCOMP_TRY_ASSIGN(auto joint, ParseJoints(args.Value("--joints")));
+  VOLCOMP_TRY_ASSIGN(auto spacing, ParseSpacing(args.Value("--spacing")));
+  metrology::GroupingOptions grouping;
+  grouping.allow_few_approaches = args.Flag("--allow-few-runs");
+  VOLCOMP_TRY(args.Finish());
+
+  std::error_code ec;
+  std::filesystem::create_directories(out_dir, ec);
+  if (ec) return Fail(Error::kIoError, out_dir + ": cannot create the directory: " + ec.message());
+  const auto comp_type = static_cast<exporters::LinuxcncCompType>(type);
+  Output output;
+  JsonValue axes = JsonValue::Array();
+  std::string ini;
+  for (const auto& [name, path] : inputs) {
+    VOLCOMP_TRY_ASSIGN(const model::PositioningData data,
+                       datasets::LoadPositioningCsv(path, grouping));
+    for (const std::string& w : data.warnings) ctx.err << "warning: " << w << "\n";
+    const auto s = spacing.find(name);
+    const Expected<exporters::LinuxcncComp> comp =
+        exporters::BuildLinuxcncComp(data, comp_type, s != spacing.end() ? s->second : 0.0);
+    if (!comp.ok()) return Fail(Error::kInputInvalid, path + ": " + comp.error().message);
+    const std::string file = std::string(1, static_cast<char>(name - 'A' + 'a')) + ".comp";
+    const std::string full = (std::filesystem::path(out_dir) / file).string();
+    VOLCOMP_TRY(tools::WriteTextFile(full, exporters::FormatLinuxcncComp(*comp)));
+    VOLCOMP_TRY_ASSIGN(const std::string absolute, AbsolutePath(full));
+    ini += exporters::LinuxcncJointIni(joint[name], absolute, comp_type);
+    JsonValue a = JsonValue::Object();
+    a.Set("axis", std::string(1, name))
+        .Set("joint", joint[name])
+        .Set("source", path)
+        .Set("points", uint64_t{comp->rows.size()})
+        .Set("from", comp->rows.front().nominal)
+        .Set("to", comp->rows.back().nominal)
+        .Set("bidirectional", !data.dev_reverse.empty())
+        .Set("max_residual", comp->max_residual)
+        .Set("file", full);
+    axes.Push(std::move(a));
+  }
+  const std::string ini_path = (std::filesystem::path(out_dir) / "joints.ini").string();
+  VOLCOMP_TRY(tools::WriteTextFile(ini_path, ini));
+  output.data = JsonValue::Object();
+  output.data.Set("type", type)
+      .Set("output", out_dir)
+      .Set("axes", std::move(axes))
+      .Set("ini_file", ini_path)
+      .Set("ini", ini);
+  output.text = ExportText;
+  return output;
+}
+
+}  // namespace
+
+const Command& ExportLinuxcncCommand() {
+  static const Command kCommand{
+      "export linuxcnc",
+      "LinuxCNC joint compensation files (COMP_FILE_TYPE 0 or 1) from positioning tests",
+      "",
+      Join({PositioningFileOptions(),
+            {{"--output", "-o", "DIR", nullptr, nullptr,
+              "directory for x.comp ... and joints.ini (required)"},
+             {"--type", nullptr, "0|1", nullptr, "1",
+              "COMP_FILE_TYPE: 1 the file holds the trims, 0 the positions reached"},
+             {"--joints", nullptr, "X=N,...", nullptr, nullptr,
+              "joint 0..15 of an axis in its [JOINT_n] lines (default: X=0 ... W=8)"},
+             {"--spacing", nullptr, "X=S,...", "mm (deg for A, B, C)", nullptr,
+              "point spacing per axis (default: the test's, or its smallest gap)"}},
+            AllowFewRuns()}),
+      RunExportLinuxcnc,
+      "Each FILE is either the raw readings `evaluate positioning` reads (the mean per\n"
+      "target and direction is used) or the mean deviations (position_mm, dev_forward_um\n"
+      "[, dev_reverse_um]). Writes one file per axis (x.comp, ...) and joints.ini with the\n"
+      "INI lines to paste; see docs/linuxcnc.md."};
+  return kCommand;
+}
+
+}  // namespace volcomp::cli

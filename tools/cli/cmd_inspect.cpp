@@ -11,18 +11,6 @@
 namespace volcomp::cli {
 namespace {
 
-const char* TypeName(table::ElementType t) {
-  switch (t) {
-    case table::ElementType::kInt16:
-      return "int16";
-    case table::ElementType::kInt32:
-      return "int32";
-    case table::ElementType::kFloat32:
-      return "float32";
-  }
-  return "?";
-}
-
 struct Range {
   double min = std::numeric_limits<double>::infinity();
   double max = -std::numeric_limits<double>::infinity();
@@ -67,7 +55,7 @@ JsonValue InspectData(const std::string& file, const table::TableView& v) {
                                            static_cast<uint32_t>(i)));
     }
     JsonValue& g = d["grid3"] = JsonValue::Object();
-    g.Set("element", TypeName(v.grid.type));
+    g.Set("element", table::ElementTypeName(v.grid.type));
     g.Set("frac_bits", unsigned{v.grid.frac_bits});
     JsonValue& dims = g["dimensions"] = JsonValue::Array();
     for (int k = 0; k < 3; ++k) {
@@ -97,7 +85,7 @@ JsonValue InspectData(const std::string& file, const table::TableView& v) {
     const auto& t = v.axis1d[i];
     JsonValue x = JsonValue::Object();
     x.Set("axis", std::string(1, v.axes[t.axis].name));
-    x.Set("element", TypeName(t.type));
+    x.Set("element", table::ElementTypeName(t.type));
     x.Set("frac_bits", unsigned{t.frac_bits});
     x.Set("nodes", uint64_t{t.dim.nodes});
     x.Set("origin_steps", int64_t{t.dim.origin_steps});
@@ -114,8 +102,8 @@ JsonValue InspectData(const std::string& file, const table::TableView& v) {
 void InspectText(const JsonValue& d, std::ostream& out) {
   out << d.get("file")->string << ": valid volcomp table image, format "
       << d.get("format_version")->string << ", " << d.get("image_size")->integer
-      << " bytes, CRC-32 " << d.get("crc32")->string << ", table id "
-      << d.get("table_id")->integer << "\n";
+      << " bytes, CRC-32 " << d.get("crc32")->string << ", table id " << d.get("table_id")->integer
+      << "\n";
   out << "axes:";
   for (const JsonValue& a : d.get("axes")->array) {
     const bool rotary = a.get("kind")->string == "rotary";
@@ -130,13 +118,13 @@ void InspectText(const JsonValue& d, std::ostream& out) {
         << dims[2].get("nodes")->integer << " nodes\n";
     for (const JsonValue& x : dims) {
       char line[256];
-      std::snprintf(line, sizeof line,
-                    "  %s: from %.6g to %.6g %s every %.6g (%d steps), correction %.4g .. %.4g %s\n",
-                    x.get("axis")->string.c_str(), x.get("from")->number, x.get("to")->number,
-                    x.get("position_unit")->string.c_str(), x.get("spacing")->number,
-                    static_cast<int>(x.get("spacing_steps")->integer),
-                    x.get("correction_min")->number, x.get("correction_max")->number,
-                    x.get("correction_unit")->string.c_str());
+      std::snprintf(
+          line, sizeof line,
+          "  %s: from %.6g to %.6g %s every %.6g (%d steps), correction %.4g .. %.4g %s\n",
+          x.get("axis")->string.c_str(), x.get("from")->number, x.get("to")->number,
+          x.get("position_unit")->string.c_str(), x.get("spacing")->number,
+          static_cast<int>(x.get("spacing_steps")->integer), x.get("correction_min")->number,
+          x.get("correction_max")->number, x.get("correction_unit")->string.c_str());
       out << line;
     }
   }

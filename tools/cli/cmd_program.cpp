@@ -1,45 +1,61 @@
-// `volcomp program positioning` and `volcomp program diagonal`: test programs as G-code, and the
-// readings templates the evaluate commands read back.
+// `volcomp program positioning` and `volcomp program diagonal`: test programs as G-code
+// (metrology/test_program.hpp) on standard output or in files, and the readings templates the
+// evaluate commands read back (metrology/readings_template.hpp).
 #include <algorithm>
-#include <iostream>
+#include <cstdint>
+#include <optional>
+#include <ostream>
 #include <sstream>
-#include <stdexcept>
+#include <utility>
+#include <vector>
 
+#include "choice_option.hpp"
 #include "commands.hpp"
-#include "volcomp/metrology/cli_support.hpp"
+#include "file_arguments.hpp"
+#include "option_groups.hpp"
 #include "volcomp/metrology/diagonal.hpp"
 #include "volcomp/metrology/readings_template.hpp"
 #include "volcomp/metrology/test_program.hpp"
 #include "volcomp/report/format.hpp"
 
-namespace volcomp::tools {
+namespace volcomp::cli {
+namespace {
 
 namespace m = volcomp::metrology;
-
-namespace {
 
 using report::FormatFixed;
 using report::FormatNumber;
 
-m::Vec3 ParsePoint(const std::string& option, const std::string& text) {
+std::optional<m::Vec3> ParsePoint(const std::string& text) {
   std::vector<double> v;
   std::string part;
   std::istringstream in(text);
   while (std::getline(in, part, ',')) {
-    const auto d = ParseDouble(part);
-    if (!d) throw UsageError(option + ": \"" + text + "\" is not X,Y,Z in mm");
+    const auto d = tools::ParseDouble(part);
+    if (!d) return std::nullopt;
     v.push_back(*d);
   }
-  if (v.size() != 3) throw UsageError(option + ": \"" + text + "\" is not X,Y,Z in mm");
-  return {v[0], v[1], v[2]};
+  if (v.size() != 3) return std::nullopt;
+  return m::Vec3{v[0], v[1], v[2]};
 }
 
-int PositiveInt(Args& args, const std::string& name, long long max) {
-  const long long v = args.integer(name).value();
-  if (v < 1 || v > max) {
-    throw UsageError(name + " must be between 1 and " + std::to_string(max));
-  }
-  return static_cast<int>(v);
+Expected<m::Vec3> PointOption(const std::string& option, const std::string& text) {
+  const auto p = ParsePoint(text);
+  if (!p) return UsageFailure(option + ": \"" + text + "\" is not X,Y,Z in mm");
+  return *p;
+}
+
+// An integer option within 1..max (each has a default, so it is never absent).
+Outcome InRange(const std::string& name, const std::optional<long long>& value, long long max) {
+  if (value && *value >= 1 && *value <= max) return Outcome::Ok();
+  return UsageFailure(name + " must be between 1 and " + std::to_string(max));
+}
+
+// A plan the metrology library cannot make is a usage failure: the options asked for it.
+template <typename T>
+Expected<T> AsUsage(Expected<T> r) {
+  if (!r.ok()) return UsageFailure(r.error().message);
+  return r;
 }
 
 std::string PointText(const m::Vec3& p) {
@@ -60,21 +76,18 @@ struct DiagonalProgram {
   std::string gcode;
 };
 
-DiagonalProgram PlanOne(const m::DiagonalName& name,
-                        const m::Vec3& p1,
-                        const m::Vec3& p2,
-                        double increment,
-                        int runs,
-                        double overrun,
-                        m::GcodeOptions g) {
+Expected<DiagonalProgram> PlanOne(const m::DiagonalName& name,
+                                  const m::Vec3& p1,
+                                  const m::Vec3& p2,
+                                  double increment,
+                                  int runs,
+                                  double overrun,
+                                  m::GcodeOptions g) {
   DiagonalProgram d;
   d.name = name;
-  try {
-    d.plan = m::PlanDiagonal(p1, p2, increment);
-    d.moves = m::BuildCycle(d.plan.distances, m::Cycle::kLinear, runs, overrun);
-  } catch (const std::invalid_argument& e) {
-    throw UsageError(e.what());
-  }
+  VOLCOMP_TRY_ASSIGN(d.plan, AsUsage(m::PlanDiagonal(p1, p2, increment)));
+  VOLCOMP_TRY_ASSIGN(d.moves,
+                     AsUsage(m::BuildCycle(d.plan.distances, m::Cycle::kLinear, runs, overrun)));
   const m::DiagonalPlan& plan = d.plan;
   g.axes = {"X", "Y", "Z"};
   g.origin = {plan.p1.x, plan.p1.y, plan.p1.z};
@@ -87,7 +100,7 @@ DiagonalProgram PlanOne(const m::DiagonalName& name,
             FormatFixed(plan.axis_increment_mm.y, 4) + ", I_z " +
             FormatFixed(plan.axis_increment_mm.z, 4) + "), " + std::to_string(runs) +
             " runs, standard cycle of ISO 230-2";
-  d.gcode = m::EmitGcode(d.moves, g);
+  VOLCOMP_TRY_ASSIGN(d.gcode, m::EmitGcode(d.moves, g));
   return d;
 }
 
@@ -108,68 +121,94 @@ std::string WithToken(const std::string& path, const std::string& token) {
   return path.substr(0, dot) + "_" + token + path.substr(dot);
 }
 
-// Before anything is written: the template must not be the program, nor hold readings.
-void CheckTemplatePath(const std::optional<std::string>& targets_csv,
-                       const std::string& out,
-                       bool force) {
-  if (!targets_csv) return;
-  if (*targets_csv == out) throw UsageError("--targets-csv and -o name the same file");
-  m::RefuseToOverwriteReadings(*targets_csv, force);
+// The TemplateOutput() options but --runs: the program's file, its readings template, the feed and
+// the dwell.
+struct ProgramOutputOptions {
+  std::optional<double> feed, dwell;
+  std::string out;
+  std::optional<std::string> targets_csv;
+  bool force = false;
+};
+
+ProgramOutputOptions ReadProgramOutput(Args& args) {
+  ProgramOutputOptions o;
+  o.feed = args.Number("--feed");
+  o.dwell = args.Number("--dwell-s");
+  o.out = args.Value("--output", "-o").value_or("-");
+  o.targets_csv = args.Value("--targets-csv");
+  o.force = args.Flag("--force");
+  return o;
 }
 
-}  // namespace
+// After the command's own checks: --feed and --dwell-s into `g`; before anything is written, the
+// template must not be the program, nor hold readings.
+Outcome CheckProgramOutput(const ProgramOutputOptions& o, m::GcodeOptions* g) {
+  g->feed = o.feed.value_or(0.0);
+  g->dwell_s = o.dwell.value_or(0.0);
+  if (!(g->feed > 0.0) || g->dwell_s < 0.0) {
+    return UsageFailure("--feed must be positive, --dwell-s ≥ 0");
+  }
+  if (!o.targets_csv) return Outcome::Ok();
+  if (*o.targets_csv == o.out) return UsageFailure("--targets-csv and -o name the same file");
+  return m::RefuseToOverwriteReadings(*o.targets_csv, o.force);
+}
 
-int RunProgramPositioning(Args& args) {
+// The readings template to `path` ("-": standard output), refused when it holds readings.
+Outcome WriteTemplate(const std::string& text, const std::string& path, bool force, Context& ctx) {
+  if (path == "-") return WriteTextArgument(text, path, ctx);
+  return m::WriteTemplate(text, path, force);
+}
+
+Expected<Output> RunProgramPositioning(Args& args, Context& ctx) {
   m::TargetPlan plan;
-  plan.rotary = args.flag("--rotary");
-  const double start = args.number("--start").value();
-  const auto end = args.number("--end");
-  const auto pitch = args.number("--pitch");
-  plan.count = PositiveInt(args, "--count", 10000);
-  plan.seed = static_cast<std::uint32_t>(PositiveInt(args, "--seed", 2147483647));
-  plan.fraction_digits = PositiveInt(args, "--fraction-digits", 4);
-  const int runs = PositiveInt(args, "--runs", 100);
-  const std::string cycle = args.value("--cycle").value();
-  const double overrun = args.number("--overrun").value();
+  plan.rotary = args.Flag("--rotary");
+  const auto start = args.Number("--start");
+  const auto end = args.Number("--end");
+  const auto pitch = args.Number("--pitch");
+  const auto count = args.Integer("--count");
+  const auto seed = args.Integer("--seed");
+  const auto fraction_digits = args.Integer("--fraction-digits");
+  const auto runs_option = args.Integer("--runs");
+  const std::string cycle = args.Value("--cycle").value_or("");
+  const auto overrun = args.Number("--overrun");
   m::GcodeOptions g;
-  const std::string axis = args.value("--axis").value_or(plan.rotary ? "C" : "X");
+  const std::string axis = args.Value("--axis").value_or(plan.rotary ? "C" : "X");
   g.axes = {axis};
-  g.feed = args.number("--feed").value();
-  g.dwell_s = args.number("--dwell-s").value();
-  const std::string out = args.value("-o", "--output").value();
-  const auto targets_csv = args.value("--targets-csv");
-  const bool force = args.flag("--force");
-  args.finish();
-  if (!pitch) throw UsageError("missing required option --pitch (largest repeating step P)");
-  plan.start = start;
+  const ProgramOutputOptions files = ReadProgramOutput(args);
+  VOLCOMP_TRY(args.Finish());
+  VOLCOMP_TRY(InRange("--count", count, 10000));
+  VOLCOMP_TRY(InRange("--seed", seed, 2147483647));
+  VOLCOMP_TRY(InRange("--fraction-digits", fraction_digits, 4));
+  VOLCOMP_TRY(InRange("--runs", runs_option, 100));
+  plan.count = static_cast<int>(*count);
+  plan.seed = static_cast<std::uint32_t>(*seed);
+  plan.fraction_digits = static_cast<int>(*fraction_digits);
+  const int runs = static_cast<int>(*runs_option);
+  if (!pitch) return UsageFailure("missing required option --pitch (largest repeating step P)");
+  plan.start = start.value_or(0.0);
   if (!plan.rotary) {
-    if (!end) throw UsageError("missing required option --end");
+    if (!end) return UsageFailure("missing required option --end");
     plan.end = *end;
   }
   plan.pitch = *pitch;
-  if (cycle != "linear" && cycle != "pilgrim")
-    throw UsageError("--cycle must be linear or pilgrim");
-  if (!(g.feed > 0.0) || g.dwell_s < 0.0)
-    throw UsageError("--feed must be positive, --dwell-s ≥ 0");
-  CheckTemplatePath(targets_csv, out, force);
-  std::vector<double> targets;
-  std::vector<m::CycleMove> moves;
-  try {
-    targets = m::PlanGostTargets(plan);
-    moves = m::BuildCycle(targets, cycle == "linear" ? m::Cycle::kLinear : m::Cycle::kPseudoPilgrim,
-                          runs, overrun);
-  } catch (const std::invalid_argument& e) {
-    throw UsageError(e.what());
-  }
+  VOLCOMP_TRY_ASSIGN(const m::Cycle cycle_kind,
+                     ParseChoice<m::Cycle>(
+                         "--cycle", cycle,
+                         {{"linear", m::Cycle::kLinear}, {"pilgrim", m::Cycle::kPseudoPilgrim}}));
+  VOLCOMP_TRY(CheckProgramOutput(files, &g));
+  VOLCOMP_TRY_ASSIGN(const std::vector<double> targets, AsUsage(m::PlanGostTargets(plan)));
+  VOLCOMP_TRY_ASSIGN(const std::vector<m::CycleMove> moves,
+                     AsUsage(m::BuildCycle(targets, cycle_kind, runs, overrun.value_or(0.0))));
   std::string targets_text;
   for (double t : targets) targets_text += (targets_text.empty() ? "" : " ") + FormatFixed(t, 3);
-  const std::string test =
-      std::string("GOST 27843-88 positioning test, ") +
-      (cycle == "linear" ? "linear cycle (fig. 1)" : "pseudo-pilgrim cycle (fig. 2)") + ", " +
-      std::to_string(runs) + " runs, seed " + std::to_string(plan.seed);
+  const std::string test = std::string("GOST 27843-88 positioning test, ") +
+                           (cycle_kind == m::Cycle::kLinear ? "linear cycle (fig. 1)"
+                                                            : "pseudo-pilgrim cycle (fig. 2)") +
+                           ", " + std::to_string(runs) + " runs, seed " + std::to_string(plan.seed);
   g.title = test + ", targets " + targets_text;
-  m::WriteTextOutput(m::EmitGcode(moves, g), out, std::cout);
-  if (targets_csv) {
+  VOLCOMP_TRY_ASSIGN(const std::string gcode, m::EmitGcode(moves, g));
+  VOLCOMP_TRY(WriteTextArgument(gcode, files.out, ctx));
+  if (files.targets_csv) {
     m::TemplateHeader h;
     h.description = std::string(
                         "Readings template of volcomp program positioning. Enter each "
@@ -177,96 +216,109 @@ int RunProgramPositioning(Args& args) {
                     (plan.rotary ? "arc-seconds" : "µm") +
                     ") and the test conditions below; rows follow the program's measured stops.";
     h.known = {{"axis", axis}, {"test", test}};
-    if (out != "-") h.known.emplace_back("program", out);
+    if (files.out != "-") h.known.emplace_back("program", files.out);
     const std::string header = std::string(plan.rotary ? "target_deg" : "target_mm") +
                                ",direction,run," +
                                (plan.rotary ? "deviation_arcsec" : "deviation_um") + "\n";
-    m::WriteTemplate(m::TemplatePreamble(h) + header + m::TemplateRows(moves, ""), *targets_csv,
-                     force, std::cout);
+    VOLCOMP_TRY(WriteTemplate(m::TemplatePreamble(h) + header + m::TemplateRows(moves, ""),
+                              *files.targets_csv, files.force, ctx));
   }
-  return kExitOk;
+  return Output{};
 }
 
-int RunProgramDiagonal(Args& args) {
-  const auto p1 = args.value("--p1");
-  const auto p2 = args.value("--p2");
-  const auto box = args.value("--box");
-  const auto inc = args.number("--increment-mm");
-  const int runs = PositiveInt(args, "--runs", 100);
-  const double overrun = args.number("--overrun-mm").value();
-  m::GcodeOptions g;
-  g.feed = args.number("--feed").value();
-  g.dwell_s = args.number("--dwell-s").value();
-  const auto name_option = args.value("--name");
-  const std::string out = args.value("-o", "--output").value();
-  const auto targets_csv = args.value("--targets-csv");
-  const bool force = args.flag("--force");
-  args.finish();
-  if (!inc) throw UsageError("missing required option --increment-mm");
-  if (box && (p1 || p2 || name_option)) {
-    throw UsageError("--box plans the four body diagonals: give it without --p1, --p2, --name");
+// The four body diagonals of the box X0,Y0,Z0:X1,Y1,Z1, each from its start corner -X-Y-Z,
+// +X-Y-Z, -X+Y-Z, +X+Y-Z to the opposite corner.
+Expected<std::vector<std::pair<m::Vec3, m::Vec3>>> BoxDiagonals(const std::string& box) {
+  const std::size_t colon = box.find(':');
+  if (colon == std::string::npos) return UsageFailure("--box: expected X0,Y0,Z0:X1,Y1,Z1 in mm");
+  VOLCOMP_TRY_ASSIGN(const m::Vec3 a, PointOption("--box", box.substr(0, colon)));
+  VOLCOMP_TRY_ASSIGN(const m::Vec3 b, PointOption("--box", box.substr(colon + 1)));
+  const m::Vec3 lo{std::min(a.x, b.x), std::min(a.y, b.y), std::min(a.z, b.z)};
+  const m::Vec3 hi{std::max(a.x, b.x), std::max(a.y, b.y), std::max(a.z, b.z)};
+  if (!(hi.x > lo.x && hi.y > lo.y && hi.z > lo.z)) {
+    return UsageFailure("--box: the corners must differ in X, Y and Z");
   }
-  if (!box && (!p1 || !p2)) throw UsageError("give --p1 and --p2 (one diagonal) or --box");
-  if (box && out == "-") {
-    throw UsageError(
+  std::vector<std::pair<m::Vec3, m::Vec3>> out;
+  for (const auto& [sx, sy] : {std::pair{-1, -1}, {1, -1}, {-1, 1}, {1, 1}}) {
+    out.emplace_back(m::Vec3{sx < 0 ? lo.x : hi.x, sy < 0 ? lo.y : hi.y, lo.z},
+                     m::Vec3{sx < 0 ? hi.x : lo.x, sy < 0 ? hi.y : lo.y, hi.z});
+  }
+  return out;
+}
+
+// The diagonal from --p1 to --p2, named by --name when given (checked against P1 -> P2).
+Expected<m::DiagonalName> NameOf(const m::Vec3& from,
+                                 const m::Vec3& to,
+                                 const std::optional<std::string>& name_option) {
+  const auto derived = m::DiagonalNameFor(from, to);
+  if (!derived) return UsageFailure("--p1 and --p2 differ in fewer than two axes: not a diagonal");
+  if (!name_option) return *derived;
+  const auto given = m::ParseDiagonalName(*name_option);
+  if (!given) {
+    return UsageFailure("--name \"" + *name_option +
+                        "\" is not a diagonal name (e.g. +X+Y-Z, PPN, +X-Y)");
+  }
+  if (const auto why = m::DiagonalNameMismatch(*given, from, to)) {
+    return UsageFailure("--name " + *why);
+  }
+  return *given;
+}
+
+Expected<Output> RunProgramDiagonal(Args& args, Context& ctx) {
+  const auto p1 = args.Value("--p1");
+  const auto p2 = args.Value("--p2");
+  const auto box = args.Value("--box");
+  const auto inc = args.Number("--increment-mm");
+  const auto runs_option = args.Integer("--runs");
+  const auto overrun = args.Number("--overrun-mm");
+  m::GcodeOptions g;
+  const ProgramOutputOptions files = ReadProgramOutput(args);
+  const auto name_option = args.Value("--name");
+  VOLCOMP_TRY(args.Finish());
+  VOLCOMP_TRY(InRange("--runs", runs_option, 100));
+  const int runs = static_cast<int>(*runs_option);
+  if (!inc) return UsageFailure("missing required option --increment-mm");
+  if (box && (p1 || p2 || name_option)) {
+    return UsageFailure("--box plans the four body diagonals: give it without --p1, --p2, --name");
+  }
+  if (!box && (!p1 || !p2)) return UsageFailure("give --p1 and --p2 (one diagonal) or --box");
+  if (box && files.out == "-") {
+    return UsageFailure(
         "--box writes four programs: give -o FILE.ngc (FILE_NNN.ngc, ... are written)");
   }
-  if (!(g.feed > 0.0) || g.dwell_s < 0.0)
-    throw UsageError("--feed must be positive, --dwell-s ≥ 0");
-  CheckTemplatePath(targets_csv, out, force);
+  VOLCOMP_TRY(CheckProgramOutput(files, &g));
 
   std::vector<DiagonalProgram> programs;
   if (box) {
-    const std::size_t colon = box->find(':');
-    if (colon == std::string::npos) throw UsageError("--box: expected X0,Y0,Z0:X1,Y1,Z1 in mm");
-    const m::Vec3 a = ParsePoint("--box", box->substr(0, colon));
-    const m::Vec3 b = ParsePoint("--box", box->substr(colon + 1));
-    const m::Vec3 lo{std::min(a.x, b.x), std::min(a.y, b.y), std::min(a.z, b.z)};
-    const m::Vec3 hi{std::max(a.x, b.x), std::max(a.y, b.y), std::max(a.z, b.z)};
-    if (!(hi.x > lo.x && hi.y > lo.y && hi.z > lo.z)) {
-      throw UsageError("--box: the corners must differ in X, Y and Z");
-    }
-    // Start corners -X-Y-Z, +X-Y-Z, -X+Y-Z, +X+Y-Z, each to the opposite corner.
-    for (const auto& [sx, sy] : {std::pair{-1, -1}, {1, -1}, {-1, 1}, {1, 1}}) {
-      const m::Vec3 from{sx < 0 ? lo.x : hi.x, sy < 0 ? lo.y : hi.y, lo.z};
-      const m::Vec3 to{sx < 0 ? hi.x : lo.x, sy < 0 ? hi.y : lo.y, hi.z};
-      programs.push_back(PlanOne(*m::DiagonalNameFor(from, to), from, to, *inc, runs, overrun, g));
+    VOLCOMP_TRY_ASSIGN(const auto diagonals, BoxDiagonals(*box));
+    for (const auto& [from, to] : diagonals) {
+      VOLCOMP_TRY_ASSIGN(DiagonalProgram d, PlanOne(*m::DiagonalNameFor(from, to), from, to, *inc,
+                                                    runs, overrun.value_or(0.0), g));
+      programs.push_back(std::move(d));
     }
   } else {
-    const m::Vec3 from = ParsePoint("--p1", *p1);
-    const m::Vec3 to = ParsePoint("--p2", *p2);
-    const auto derived = m::DiagonalNameFor(from, to);
-    if (!derived) {
-      throw UsageError("--p1 and --p2 differ in fewer than two axes: not a diagonal");
-    }
-    m::DiagonalName name = *derived;
-    if (name_option) {
-      const auto given = m::ParseDiagonalName(*name_option);
-      if (!given) {
-        throw UsageError("--name \"" + *name_option +
-                         "\" is not a diagonal name (e.g. +X+Y-Z, PPN, +X-Y)");
-      }
-      if (const auto why = m::DiagonalNameMismatch(*given, from, to)) {
-        throw UsageError("--name " + *why);
-      }
-      name = *given;
-    }
-    programs.push_back(PlanOne(name, from, to, *inc, runs, overrun, g));
+    VOLCOMP_TRY_ASSIGN(const m::Vec3 from, PointOption("--p1", *p1));
+    VOLCOMP_TRY_ASSIGN(const m::Vec3 to, PointOption("--p2", *p2));
+    VOLCOMP_TRY_ASSIGN(const m::DiagonalName name, NameOf(from, to, name_option));
+    VOLCOMP_TRY_ASSIGN(DiagonalProgram d,
+                       PlanOne(name, from, to, *inc, runs, overrun.value_or(0.0), g));
+    programs.push_back(std::move(d));
   }
 
-  std::vector<std::string> warnings;  // the four diagonals of a box share their warnings
+  Output output;  // the four diagonals of a box share their warnings: each once
   for (const auto& d : programs) {
     for (const auto& w : d.plan.warnings) {
-      if (std::find(warnings.begin(), warnings.end(), w) == warnings.end()) warnings.push_back(w);
+      if (std::find(output.warnings.begin(), output.warnings.end(), w) == output.warnings.end()) {
+        output.warnings.push_back(w);
+      }
     }
   }
-  m::PrintWarnings(std::cerr, warnings);
   for (const auto& d : programs) {
-    const std::string path = box ? WithToken(out, m::DiagonalFileToken(d.name)) : out;
-    m::WriteTextOutput(d.gcode, path, std::cout);
-    if (box) std::cerr << "wrote " << path << " (diagonal " << d.name.text << ")\n";
+    const std::string path = box ? WithToken(files.out, m::DiagonalFileToken(d.name)) : files.out;
+    VOLCOMP_TRY(WriteTextArgument(d.gcode, path, ctx));
+    if (box) ctx.err << "wrote " << path << " (diagonal " << d.name.text << ")\n";
   }
-  if (targets_csv) {
+  if (files.targets_csv) {
     m::TemplateHeader h;
     h.description =
         "Readings template of volcomp program diagonal. Enter each reading in the last column "
@@ -278,11 +330,65 @@ int RunProgramDiagonal(Args& args) {
     }
     std::string rows;
     for (const auto& d : programs) rows += m::TemplateRows(d.moves, TemplateDiagonalName(d.name));
-    m::WriteTemplate(
+    VOLCOMP_TRY(WriteTemplate(
         m::TemplatePreamble(h) + "diagonal,target_mm,direction,run,deviation_um\n" + rows,
-        *targets_csv, force, std::cout);
+        *files.targets_csv, files.force, ctx));
   }
-  return kExitOk;
+  return output;
 }
 
-}  // namespace volcomp::tools
+}  // namespace
+
+const Command& ProgramPositioningCommand() {
+  static const Command kCommand{
+      "program positioning",
+      "GOST 27843 test program: targets P_j=(N+r)P and G-code cycle",
+      "",
+      Join({{{"--pitch", nullptr, "P", "mm (deg with --rotary)", nullptr,
+              "largest repeating step of the axis: screw pitch, scale period (required)"},
+             {"--start", nullptr, "S", "mm (deg with --rotary)", "0",
+              "first end of the measured travel"},
+             {"--end", nullptr, "E", "mm", nullptr,
+              "other end of the measured travel (required for a linear axis)"},
+             {"--count", nullptr, "M", nullptr, "11", "number of target positions"},
+             {"--seed", nullptr, "N", nullptr, "1", "seed of the random fractions r_j"},
+             {"--fraction-digits", nullptr, "D", nullptr, "2", "digits of r_j, 1..4"},
+             {"--rotary", nullptr, nullptr, nullptr, nullptr,
+              "full-turn rotary axis (0°, 90°, 180°, 270° included)"},
+             {"--cycle", nullptr, "linear|pilgrim", nullptr, "linear",
+              "GOST fig. 1 linear cycle or fig. 2 pseudo-pilgrim"},
+             {"--overrun", nullptr, "O", "mm (deg with --rotary)", "5",
+              "travel beyond the end targets for the reversal"},
+             {"--axis", nullptr, "NAME", nullptr, nullptr,
+              "axis word of the G-code and of the template (default: X, C with --rotary)"}},
+            TemplateOutput()}),
+      RunProgramPositioning,
+      "The readings template names the axis in its preamble; `evaluate positioning` names the\n"
+      "report after it. A template that already holds readings is not overwritten."};
+  return kCommand;
+}
+
+const Command& ProgramDiagonalCommand() {
+  static const Command kCommand{
+      "program diagonal",
+      "ISO 230-6 diagonal targets and G-code cycle (one diagonal or all four)",
+      "",
+      Join({{{"--p1", nullptr, "X,Y,Z", "mm", nullptr, "start point of one diagonal"},
+             {"--p2", nullptr, "X,Y,Z", "mm", nullptr, "end point of that diagonal"},
+             {"--box", nullptr, "X0,Y0,Z0:X1,Y1,Z1", "mm", nullptr,
+              "instead of --p1/--p2: the four body diagonals of this box"},
+             {"--increment-mm", nullptr, "I", "mm", nullptr,
+              "target spacing along the diagonal (required)"},
+             {"--name", nullptr, "+X+Y-Z", nullptr, nullptr,
+              "diagonal name; checked against P1→P2 (default: derived from P1→P2)"},
+             {"--overrun-mm", nullptr, "O", "mm", "5", "travel beyond the end targets"}},
+            TemplateOutput()}),
+      RunProgramDiagonal,
+      "A diagonal is named by its start corner (ISO 230-6): P1 at the low end of X and Y and\n"
+      "the high end of Z is -X-Y+Z. With --box, -o FILE.ngc writes FILE_NNN.ngc, FILE_PNN.ngc,\n"
+      "FILE_NPN.ngc and FILE_PPN.ngc (start corners -X-Y-Z, +X-Y-Z, -X+Y-Z, +X+Y-Z) and\n"
+      "--targets-csv one template for all four, which `evaluate diagonal` reads."};
+  return kCommand;
+}
+
+}  // namespace volcomp::cli

@@ -1,122 +1,120 @@
-// `volcomp activate | deactivate | reference`: table control and referencing over CAN.
+// `volcomp activate | deactivate`: table control over CAN (0x2101 = 1 / 0).
 //
 // Activate first reads the staged table back and checks it against the board's installation
 // (board_fit.hpp): a table the board would clamp or rate-limit is refused unless --allow-clamp.
-// Reference refuses axes the board does not have (0x2000:4).
-#include <cstdio>
-#include <iostream>
+#include <ostream>
 #include <string>
 
 #include "board_fit.hpp"
 #include "can_options.hpp"
 #include "commands.hpp"
 #include "sdo_failure.hpp"
+#include "volcomp/canopen/board_protocol.hpp"
 #include "volcomp/image/image_reader.hpp"
 #include "volcomp/tools/hex.hpp"
-#include "volcomp/tools/json.hpp"
 
-namespace volcomp::tools {
+namespace volcomp::cli {
 namespace {
 
 using canopen::ObjectId;
+using canopen::TableCommand;
 
 // The staged table, read back and checked against the installation before it is activated.
-void CheckStagedFits(canopen_client::CanSession& s, uint8_t node, bool allow_clamp) {
-  uint32_t word = 0;
-  Check(s.Read(ObjectId::kTableStatus, &word), "reading the table status (0x2102)");
-  const canopen::StagedState staged = canopen::DecodeTableStatus(word).staged;
+Outcome CheckStagedFits(canopen_client::CanSession& s,
+                        uint8_t node,
+                        bool allow_clamp,
+                        std::ostream& warnings) {
+  VOLCOMP_TRY_ASSIGN(const uint32_t status,
+                     ReadNumber(s, ObjectId::kTableStatus, "the table status (0x2102)"));
+  const canopen::StagedState staged = canopen::DecodeTableStatus(status).staged;
   if (staged != canopen::StagedState::kVerified && staged != canopen::StagedState::kComplete) {
-    return;  // nothing to check: the board refuses the activation and says why
+    return Outcome::Ok();  // nothing to check: the board refuses the activation and says why
   }
-  std::vector<uint8_t> bytes;
-  Check(s.UploadDomain(ObjectId::kTableData, &bytes), "reading back the staged table (0x2100)");
-  const image::LoadedImage img(bytes, "the staged table of node " + std::to_string(node));
-  RequireTableFits(s, img.view(), allow_clamp);
+  VOLCOMP_TRY_ASSIGN(
+      const std::vector<uint8_t> bytes,
+      Checked(s.ReadDomain(ObjectId::kTableData), "reading back the staged table (0x2100)"));
+  VOLCOMP_TRY_ASSIGN(
+      const image::LoadedImage img,
+      image::LoadedImage::FromBytes(bytes, "the staged table of node " + std::to_string(node)));
+  VOLCOMP_TRY(RequireTableFits(s, img.view(), allow_clamp, warnings));
+  return Outcome::Ok();
 }
 
-int Control(Args& args, canopen::TableCommand command, const char* done) {
-  const CanOptions can = ParseCanOptions(args);
-  const bool allow_clamp =
-      command == canopen::TableCommand::kActivate && args.flag("--allow-clamp");
-  const bool json = args.flag("--json");
-  args.finish();
-  return OverTheBus([&] {
-    auto s = OpenSession(can);
-    if (command == canopen::TableCommand::kActivate) CheckStagedFits(*s, can.node, allow_clamp);
-    Require(canopen_client::EnsureWritable(*s));
-    canopen_client::SdoResult r = s->Write(ObjectId::kTableControl, canopen::Value(command));
-    if (command == canopen::TableCommand::kActivate) r = canopen_client::WithStagingReason(*s, r);
-    Check(r,
-          std::string(command == canopen::TableCommand::kActivate ? "activation" : "deactivation") +
-              " refused by node " + std::to_string(can.node));
-    uint32_t crc = 0, id = 0;
-    Check(s->Read(ObjectId::kActiveTableCrc, &crc), "reading the active CRC-32 (0x2104)");
-    Check(s->Read(ObjectId::kActiveTableId, &id), "reading the active table id (0x2103)");
-    std::fprintf(json ? stderr : stdout, "%s: node %u active table id %u, CRC-32 0x%08X\n", done,
-                 can.node, id, crc);
-    if (json) {  // one object on stdout; failures: RunCommand's {"command", "exit_code", "error"}
-      JsonWriter w(std::cout);
-      w.begin_object();
-      w.key("command").value(command == canopen::TableCommand::kActivate ? "activate"
-                                                                         : "deactivate");
-      w.key("node").value(unsigned{can.node});
-      w.key("active_table_id").value(uint64_t{id});
-      w.key("active_crc32").value(Hex32(crc));
-      w.key("exit_code").value(0);
-      w.end_object();
-      std::cout << "\n";
-    }
-    return 0;
-  });
+// Writes `command` and reads back the table then active.
+Expected<JsonValue> Control(const CanConnection& can,
+                            TableCommand command,
+                            bool allow_clamp,
+                            std::ostream& warnings) {
+  const bool activate = command == TableCommand::kActivate;
+  VOLCOMP_TRY_ASSIGN(const auto session, OpenSession(can));
+  canopen_client::CanSession& s = *session;
+  if (activate) VOLCOMP_TRY(CheckStagedFits(s, can.node, allow_clamp, warnings));
+  VOLCOMP_TRY(Required(canopen_client::EnsureWritable(s)));
+  canopen_client::SdoOutcome written = s.Write(ObjectId::kTableControl, canopen::Value(command));
+  if (activate) written = canopen_client::WithStagingReason(s, std::move(written));
+  VOLCOMP_TRY(Checked(std::move(written), std::string(activate ? "activation" : "deactivation") +
+                                              " refused by node " + std::to_string(can.node)));
+  VOLCOMP_TRY_ASSIGN(const uint32_t crc,
+                     ReadNumber(s, ObjectId::kActiveTableCrc, "the active CRC-32 (0x2104)"));
+  VOLCOMP_TRY_ASSIGN(const uint32_t id,
+                     ReadNumber(s, ObjectId::kActiveTableId, "the active table id (0x2103)"));
+  JsonValue d = JsonValue::Object();
+  d.Set("command", activate ? "activate" : "deactivate");
+  d.Set("node", unsigned{can.node});
+  d.Set("active_table_id", uint64_t{id});
+  d.Set("active_crc32", tools::Hex32(crc));
+  d.Set("exit_code", tools::kExitOk);
+  return d;
 }
 
-// "1,2,3" -> the bit mask of those axes (1..6); spaces are ignored.
-uint32_t AxisMask(const std::string& list) {
-  const auto bad = [&] {
-    return UsageError("--axes takes axis numbers 1..6, e.g. 1,2,3 (got \"" + list + "\")");
-  };
-  uint32_t mask = 0;
-  bool expect_axis = true;
-  for (const char c : list) {
-    if (c == ' ') continue;
-    if (expect_axis && c >= '1' && c <= '6') {
-      mask |= 1u << (c - '1');
-    } else if (expect_axis || c != ',') {
-      throw bad();
-    }
-    expect_axis = !expect_axis;
-  }
-  if (expect_axis) throw bad();  // empty, or a trailing comma
-  return mask;
+void ControlText(const JsonValue& d, std::ostream& out) {
+  out << (d.get("command")->string == "activate" ? "activated" : "deactivated") << ": node "
+      << d.get("node")->integer << " active table id " << d.get("active_table_id")->integer
+      << ", CRC-32 " << d.get("active_crc32")->string << "\n";
+}
+
+Expected<Output> RunControl(Args& args, Context& ctx, TableCommand command) {
+  VOLCOMP_TRY_ASSIGN(const CanConnection can, ParseCanOptions(args));
+  const bool allow_clamp = command == TableCommand::kActivate && args.Flag("--allow-clamp");
+  args.Flag("--json");  // the command layer prints the data as JSON
+  VOLCOMP_TRY(args.Finish());
+  VOLCOMP_TRY_ASSIGN(JsonValue data, Control(can, command, allow_clamp, ctx.err));
+  if (ctx.json) ControlText(data, ctx.err);  // the message beside the object, as documented
+  return Output{std::move(data), ControlText, {}};
+}
+
+Expected<Output> RunActivate(Args& args, Context& ctx) {
+  return RunControl(args, ctx, TableCommand::kActivate);
+}
+
+Expected<Output> RunDeactivate(Args& args, Context& ctx) {
+  return RunControl(args, ctx, TableCommand::kDeactivate);
 }
 
 }  // namespace
 
-int RunActivate(Args& args) { return Control(args, canopen::TableCommand::kActivate, "activated"); }
-int RunDeactivate(Args& args) {
-  return Control(args, canopen::TableCommand::kDeactivate, "deactivated");
+const Command& ActivateCommand() {
+  static const Command kCommand{
+      "activate",
+      "activate the staged, verified table (axes referenced and at rest)",
+      "",
+      Join({CanOptions(),
+            {{"--allow-clamp", nullptr, nullptr, nullptr, nullptr,
+              "activate a table the board would clamp (0x2015) or rate-limit (0x2016)"}},
+            JsonResultOption()}),
+      RunActivate,
+      "The staged table is read back and checked against the board's installation first: axis\n"
+      "count, names and units per step (0x2012) must match; a table whose largest correction\n"
+      "exceeds the max correction (0x2015), or whose gradient times the fastest input rates\n"
+      "(0x201E) exceeds the max correction rate (0x2016), is refused unless --allow-clamp."};
+  return kCommand;
 }
 
-int RunReference(Args& args) {
-  const CanOptions can = ParseCanOptions(args);
-  const std::string axes = args.value("--axes").value_or("");
-  args.finish();
-  const uint32_t asked = axes.empty() ? 0 : AxisMask(axes);
-  return OverTheBus([&] {
-    auto s = OpenSession(can);
-    uint32_t count = 0;
-    Check(s->Read(ObjectId::kAxisCountConfig, &count), "reading the axis count (0x2000:4)");
-    const uint32_t all = count >= 6 ? 0x3Fu : (1u << count) - 1u;
-    if ((asked & ~all) != 0) {
-      throw InputError("--axes " + axes + ": node " + std::to_string(can.node) + " has " +
-                       std::to_string(count) + " axes (0x2000:4), axis numbers 1.." +
-                       std::to_string(count));
-    }
-    const uint32_t mask = asked != 0 ? asked : all;
-    Check(s->Write(ObjectId::kReferenceAxes, mask), "referencing");
-    std::printf("node %u: reference requested for axes mask 0x%02X\n", can.node, mask);
-    return 0;
-  });
+const Command& DeactivateCommand() {
+  static const Command kCommand{"deactivate",
+                                "deactivate the active table (the correction ramps out)", "",
+                                Join({CanOptions(), JsonResultOption()}), RunDeactivate};
+  return kCommand;
 }
 
-}  // namespace volcomp::tools
+}  // namespace volcomp::cli

@@ -13,10 +13,11 @@
 //     const auto files = args.Positionals();
 //     VOLCOMP_TRY(args.Finish());
 //     if (files.size() != 1) return UsageFailure("expected one IMAGE file");
-//     VOLCOMP_TRY_ASSIGN(const auto image, image::LoadImageFile(files[0]));
+//     VOLCOMP_TRY_ASSIGN(const auto image, image::ReadImageFile(files[0]));
 //     return Output{InspectData(files[0], image), InspectText};
 //   }
-//   extern const Command kInspect{"inspect", "summarise a table image", "IMAGE", {...}, RunInspect};
+//   extern const Command kInspect{"inspect", "summarise a table image", "IMAGE", {...},
+//   RunInspect};
 #pragma once
 
 #include <iosfwd>
@@ -24,16 +25,16 @@
 #include <utility>
 #include <vector>
 
+#include "volcomp/args/args.hpp"
 #include "volcomp/hosted/expected.hpp"
-#include "volcomp/tools/args.hpp"
 #include "volcomp/tools/exit_codes.hpp"
 #include "volcomp/tools/json_value.hpp"
 
 namespace volcomp::cli {
 
-using tools::Args;
+using args::Args;
+using args::OptionSpec;
 using tools::JsonValue;
-using tools::OptionSpec;
 
 /// Where a command reads and writes (std::cin/cout/cerr in the tool; string streams in tests).
 struct Context {
@@ -49,7 +50,11 @@ using TextLayout = void (*)(const JsonValue& data, std::ostream& out);
 /// What a command reports.
 struct Output {
   Output() = default;
-  Output(JsonValue d, TextLayout layout = nullptr) : data(std::move(d)), text(layout) {}  // NOLINT
+  Output(JsonValue d,
+         TextLayout layout = nullptr,
+         std::vector<std::string> w = {},  // NOLINT
+         int code = tools::kExitOk)
+      : data(std::move(d)), text(layout), warnings(std::move(w)), exit_code(code) {}
 
   JsonValue data;                     // every figure the command reports (null: nothing)
   TextLayout text = nullptr;          // its text view (nullptr: nothing on stdout in text mode)
@@ -66,8 +71,6 @@ struct Command {
   std::vector<OptionSpec> options;
   RunFunction run = nullptr;
   const char* notes = "";  // extra help text (option groups, examples)
-  // TRANSITION: a command not yet converted (int, throws); removed when all are converted.
-  int (*legacy_run)(Args& args) = nullptr;
 };
 
 /// A usage failure (exit code 2): bad or missing options or arguments.

@@ -52,19 +52,6 @@ void PrintOutput(const Output& output, Context& ctx) {
   }
 }
 
-// TRANSITION: a command not yet converted, with the exceptions it may throw mapped as before.
-int RunLegacy(const Command& c, Args& args, Context& ctx) {
-  try {
-    return c.legacy_run(args);
-  } catch (const tools::UsageError& e) {
-    return PrintFailure(c, Failure{Error::kUsage, e.what()}, ctx);
-  } catch (const tools::CommunicationError& e) {
-    return PrintFailure(c, Failure{Error::kCommunication, e.what()}, ctx);
-  } catch (const std::exception& e) {
-    return PrintFailure(c, Failure{Error::kInputInvalid, e.what()}, ctx);
-  }
-}
-
 }  // namespace
 
 int ExitCodeOf(const Failure& failure) {
@@ -140,7 +127,6 @@ int RunCommand(const Command& c, const std::vector<std::string>& words, Context&
   ctx.json = JsonRequested(c, words);
   Args args(words, &c.options);
   if (!args.status().ok()) return PrintFailure(c, args.status().error(), ctx);
-  if (c.legacy_run != nullptr) return RunLegacy(c, args, ctx);
   Expected<Output> output = c.run(args, ctx);
   if (!output.ok()) return PrintFailure(c, output.error(), ctx);
   PrintOutput(*output, ctx);

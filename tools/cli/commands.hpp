@@ -40,35 +40,3 @@ const Command& ExportLinuxcncCommand();
 const Command& ModelEvalCommand();
 
 }  // namespace volcomp::cli
-
-// TRANSITION: the run functions of the commands not yet converted (int, may throw: UsageError of
-// args.hpp -> 2, CommunicationError of exit_codes.hpp -> 3, anything else -> 1).
-namespace volcomp::tools {
-int RunBuildGrid(Args& args);
-int RunLookup(Args& args);
-int RunUpload(Args& args);
-int RunVerify(Args& args);
-int RunActivate(Args& args);
-int RunDeactivate(Args& args);
-int RunReference(Args& args);
-int RunStatus(Args& args);
-int RunMonitor(Args& args);
-int RunSdo(Args& args);
-int RunConfigShow(Args& args);
-int RunConfigSave(Args& args);
-int RunConfigApply(Args& args);
-int RunNmt(Args& args);
-int RunEds(Args& args);
-int RunEvaluatePositioning(Args& args);
-int RunEvaluateDiagonal(Args& args);
-int RunEvaluateRotary(Args& args);
-int RunProgramPositioning(Args& args);
-int RunProgramDiagonal(Args& args);
-int RunReportCompare(Args& args);
-int RunBuildModel(Args& args);
-int RunBuildTracker(Args& args);
-int RunBuildKmtpp(Args& args);
-int RunBuildAxis(Args& args);
-int RunExportLinuxcnc(Args& args);
-int RunModelEval(Args& args);
-}  // namespace volcomp::tools

@@ -5,11 +5,11 @@
 #include <initializer_list>
 #include <vector>
 
-#include "volcomp/tools/args.hpp"
+#include "volcomp/args/args.hpp"
 
 namespace volcomp::cli {
 
-using Options = std::vector<tools::OptionSpec>;
+using Options = std::vector<args::OptionSpec>;
 
 /// The options of `parts`, in order.
 Options Join(std::initializer_list<Options> parts);

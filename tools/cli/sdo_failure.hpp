@@ -1,39 +1,43 @@
-// How the CAN commands turn a failed SDO access into an error for the user.
+// How the CAN commands report a failed object access: the client's SdoFailure as the tool's
+// Failure (kCommunication when nothing answered or the link failed: exit 3; a refusal: exit 1),
+// explained by the step that failed.
 #pragma once
 
 #include <string>
+#include <type_traits>
+#include <utility>
 
-#include "volcomp/canopen/sdo_abort.hpp"
+#include "command.hpp"
+#include "volcomp/canopen_client/node_objects.hpp"
 #include "volcomp/canopen_client/table_staging.hpp"
-#include "volcomp/tools/csv.hpp"
-#include "volcomp/tools/exit_codes.hpp"
 
-namespace volcomp::tools {
+namespace volcomp::cli {
 
-/// A failed SDO access; `retryable` when a fresh attempt can succeed (protocol errors, timeouts).
-class SdoFailure : public InputError {
- public:
-  SdoFailure(const std::string& message, canopen::SdoAbort abort_code)
-      : InputError(message), retryable(canopen::IsProtocolAbort(abort_code)) {}
-  bool retryable;
-};
+/// The Failure part of `f` (its code and message).
+inline Failure ToFailure(const canopen_client::SdoFailure& f) { return Failure{f.code, f.message}; }
 
-/// True when `r` failed because nothing answered in time: the board is absent, off or not on
-/// this bus (a communication failure, exit 3), not a refusal.
-inline bool NoAnswer(const canopen_client::SdoResult& r) {
-  return !r.ok && !r.aborted_by_server && r.abort_code == canopen::SdoAbort::kTimeout;
+/// The value of `r`, or its failure as the tool reports it (already explained by the library).
+template <typename T>
+Expected<T> Required(canopen_client::SdoExpected<T> r) {
+  if (!r.ok()) return Fail(ToFailure(r.error()));
+  if constexpr (std::is_void_v<T>) {
+    return Outcome::Ok();
+  } else {
+    return std::move(r).value();
+  }
 }
 
-/// Throws when `r` failed (its message already says which step and why): CommunicationError when
-/// nothing answered, else SdoFailure.
-inline void Require(const canopen_client::SdoResult& r) {
-  if (NoAnswer(r)) throw CommunicationError(r.message);
-  if (!r.ok) throw SdoFailure(r.message, r.abort_code);
+/// The value of `r`, or its failure explained by `step` ("step: reason; what to do").
+template <typename T>
+Expected<T> Checked(canopen_client::SdoExpected<T> r, const std::string& step) {
+  return Required(canopen_client::Explain(std::move(r), step));
 }
 
-/// Throws SdoFailure when `r` failed, naming `step` and what to do about the common refusals.
-inline void Check(const canopen_client::SdoResult& r, const std::string& step) {
-  Require(canopen_client::Explain(r, step));
+/// A numeric object of `node`; a failure reads "reading WHAT: ...".
+inline Expected<uint32_t> ReadNumber(canopen_client::NodeObjects& node,
+                                     canopen::ObjectId id,
+                                     const std::string& what) {
+  return Checked(node.Read(id), "reading " + what);
 }
 
-}  // namespace volcomp::tools
+}  // namespace volcomp::cli

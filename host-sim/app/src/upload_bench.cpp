@@ -19,7 +19,7 @@ using canopen::ObjectId;
 using canopen::TableCommand;
 namespace sdo = canopen::sdo;
 
-std::vector<uint8_t> BuildGridImage(uint32_t n) {
+Expected<std::vector<uint8_t>> BuildGridImage(uint32_t n) {
   std::vector<int16_t> values(size_t{n} * n * n * 3);
   for (uint32_t k = 0; k < n; ++k) {
     for (uint32_t j = 0; j < n; ++j) {
@@ -42,10 +42,13 @@ std::vector<uint8_t> BuildGridImage(uint32_t n) {
   s.axes[1] = {'Y', table::AxisKind::kLinear, 1000000};
   s.axes[2] = {'Z', table::AxisKind::kLinear, 1000000};
   s.grid = &g;
-  std::vector<uint32_t> words((*table::ImageSize(s) + 3) / 4);
+  const Result<uint32_t> bytes = table::ImageSize(s);
+  if (!bytes.ok()) return Fail(bytes.status(), "the benchmark's grid image");
+  std::vector<uint32_t> words((*bytes + 3) / 4);
   uint8_t* out = reinterpret_cast<uint8_t*>(words.data());
   const Result<uint32_t> size = table::WriteImage(s, out, words.size() * 4);
-  return std::vector<uint8_t>(out, out + (size.ok() ? *size : 0));
+  if (!size.ok()) return Fail(size.status(), "the benchmark's grid image");
+  return std::vector<uint8_t>(out, out + *size);
 }
 
 }  // namespace
@@ -98,9 +101,10 @@ uint64_t IdealBlockDownloadBits(const std::vector<uint8_t>& payload, uint8_t nod
   return bits;
 }
 
-UploadBenchResult RunUploadBench(const UploadBenchOptions& options) {
+Expected<UploadBenchResult> RunUploadBench(const UploadBenchOptions& options) {
+  if (options.bitrate == 0) return Fail(Error::kInvalidArgument, "the bit rate must be > 0");
   UploadBenchResult r;
-  const std::vector<uint8_t> image = BuildGridImage(options.grid_nodes);
+  VOLCOMP_TRY_ASSIGN(const std::vector<uint8_t> image, BuildGridImage(options.grid_nodes));
   r.image_bytes = static_cast<uint32_t>(image.size());
   r.image_crc = LoadLe32(image.data() + image.size() - 4);
   SimBus bus(options.bitrate);
@@ -108,29 +112,25 @@ UploadBenchResult RunUploadBench(const UploadBenchOptions& options) {
   bo.poll_period_ns = options.poll_period_ns;
   SimulatedBoard board(bus, bo);
   Endpoint& pc = bus.Attach("pc");
-  if (!board.Start().ok()) {
-    r.message = "the simulated board did not start";
-    return r;
-  }
+  VOLCOMP_TRY(board.Start());
   const uint8_t node = bo.settings.node_id;
   SimSdoHost host(bus, board, pc, node);
   host.Idle(5000000);
   // The PC tool's staging steps around the timed transfer, which runs event by event.
   canopen_client::NodeObjects pc_tool(host.Link(), node);
-  auto fail = [&](const std::string& what, const canopen_client::SdoResult& res) {
-    r.message = what + ": " + res.message;
-    return r;
+  auto fail = [](const std::string& what, const canopen_client::SdoFailure& failure) {
+    return Fail(failure.code, what + ": " + failure.message);
   };
-  auto res = canopen_client::PrepareStaging(pc_tool);
-  if (!res.ok) return fail("staging", res);
+  const auto prepared = canopen_client::PrepareStaging(pc_tool);
+  if (!prepared.ok()) return fail("staging", prepared.error());
 
   uint64_t frames_before = bus.stats().frames;
   const canopen::ObjectEntry& data = canopen::Entry(ObjectId::kTableData);
   canopen_client::SdoClient c(node);
-  c.StartDownload(data.index, data.sub, image);
+  c.StartWrite(data.index, data.sub, image);
   const uint64_t t0 = bus.now();
   host.Run(c, 60000000000ull);
-  if (!c.done() || !c.result().ok) return fail("block download", c.result());
+  if (!c.result().ok()) return fail("block download", c.result().error());
   const double bytes = static_cast<double>(image.size());
   r.transfer_s = static_cast<double>(bus.now() - t0) * 1e-9;
   r.frames = bus.stats().frames - frames_before;
@@ -142,20 +142,19 @@ UploadBenchResult RunUploadBench(const UploadBenchOptions& options) {
   r.ceiling_bytes_s = NoStuffingCeilingBytesPerS(options.bitrate);
   r.ceiling_share = r.rate_bytes_s / r.ceiling_bytes_s;
 
-  res = canopen_client::VerifyStaged(pc_tool, r.image_crc);
-  if (!res.ok) return fail("verify", res);
+  const auto verified = canopen_client::VerifyStaged(pc_tool, r.image_crc);
+  if (!verified.ok()) return fail("verify", verified.error());
   if (options.activate) {
-    res = pc_tool.Write(ObjectId::kReferenceAxes, 0x07);
-    if (!res.ok) return fail("reference", res);
+    const auto referenced = pc_tool.Write(ObjectId::kReferenceAxes, 0x07);
+    if (!referenced.ok()) return fail("reference", referenced.error());
     host.Idle(200000000);
-    res = canopen_client::WriteTableCommand(pc_tool, TableCommand::kActivate);
-    if (!res.ok) return fail("activate", res);
+    const auto activated = canopen_client::WriteTableCommand(pc_tool, TableCommand::kActivate);
+    if (!activated.ok()) return fail("activate", activated.error());
     r.activated = true;
   }
-  res = pc_tool.Read(ObjectId::kActiveTableCrc, &r.active_crc);
-  if (!res.ok) return fail("read active CRC", res);
-  r.ok = true;
-  r.message = "ok";
+  const auto active = pc_tool.Read(ObjectId::kActiveTableCrc);
+  if (!active.ok()) return fail("read active CRC", active.error());
+  r.active_crc = *active;
   return r;
 }
 

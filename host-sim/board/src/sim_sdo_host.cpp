@@ -26,27 +26,29 @@ void SimSdoHost::Run(canopen_client::SdoClient& client,
   while (client.PopTx(&f)) pc_.Send(f);  // a final abort or acknowledgement
 }
 
-canopen_client::SdoResult SimSdoHost::Write(canopen::ObjectId id,
-                                            uint32_t value,
-                                            uint64_t timeout_ns) {
-  const canopen::ObjectEntry& e = canopen::Entry(id);
+canopen_client::SdoExpected<std::vector<uint8_t>> SimSdoHost::Write(canopen::ObjectId id,
+                                                                    uint32_t value,
+                                                                    uint64_t timeout_ns) {
   canopen_client::SdoClient client(node_);
-  client.StartDownload(e.index, e.sub, canopen_client::NumericPayload(id, value));
+  canopen_client::StartNumericWrite(client, id, value);
   Run(client, timeout_ns);
   return client.result();
 }
 
 const canopen_client::FrameLink& SimSdoHost::Link() {
   if (!link_.send) {
-    link_.send = [this](const CanFrame& f) { pc_.Send(f); };
-    link_.receive = [this](uint64_t timeout_us) -> std::optional<CanFrame> {
+    link_.send = [this](const CanFrame& f) {
+      pc_.Send(f);
+      return Outcome::Ok();
+    };
+    link_.receive = [this](uint64_t timeout_us) -> Expected<std::optional<CanFrame>> {
       const uint64_t end = bus_.now() + timeout_us * 1000;
       CanFrame f;
       while (!pc_.Receive(&f)) {
-        if (bus_.now() >= end) return std::nullopt;
+        if (bus_.now() >= end) return std::optional<CanFrame>();
         StepTo(bus_, board_, std::clamp(NextEventTime(bus_, board_), bus_.now(), end));
       }
-      return f;
+      return std::optional<CanFrame>(f);
     };
     link_.now_us = [this] { return bus_.now() / 1000; };
   }

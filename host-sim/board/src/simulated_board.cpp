@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <system_error>
 
 namespace volcomp::sim {
 
@@ -20,7 +21,6 @@ SimulatedBoard::SimulatedBoard(SimBus& bus, const SimulatedBoardOptions& options
   hal::Flash* tables = &table_flash_;
   hal::Flash* settings = &settings_flash_;
   if (!options.flash_dir.empty()) {
-    std::filesystem::create_directories(options.flash_dir);
     table_file_ =
         std::make_unique<WriteThroughFlash>(&table_flash_, options.flash_dir + "/tables.bin");
     settings_file_ =
@@ -55,14 +55,24 @@ void SimulatedBoard::SaveFlash() const {
   }
 }
 
-Status SimulatedBoard::Start() {
+Outcome SimulatedBoard::OpenFlashFiles() {
+  if (!table_file_) return Outcome::Ok();
+  std::error_code ec;
+  std::filesystem::create_directories(options_.flash_dir, ec);
+  if (ec) return Fail(Error::kIoError, options_.flash_dir + ": cannot create: " + ec.message());
+  VOLCOMP_TRY(table_file_->Open());
+  return settings_file_->Open();
+}
+
+Outcome SimulatedBoard::Start() {
+  VOLCOMP_TRY(OpenFlashFiles());
   LoadFlash();
   if (options_.initial_table_flash.size() == table_flash_.raw().size()) {
     table_flash_.raw() = options_.initial_table_flash;
   }
   if (table_file_) {
-    table_file_->WriteAll();
-    settings_file_->WriteAll();
+    VOLCOMP_TRY(table_file_->WriteAll());
+    VOLCOMP_TRY(settings_file_->WriteAll());
   }
   io_.SetInput(hal::InputLine::kEnable, options_.enable_input);
   io_.SetInput(hal::InputLine::kWriteEnable, options_.write_enable_input);
@@ -72,7 +82,8 @@ Status SimulatedBoard::Start() {
   const Status s = app_->Start(options_.settings, app);
   next_poll_ns_ = now_ns_;
   FollowTickTimer();
-  return s;
+  if (!s.ok()) return Fail(s, "the firmware did not start");
+  return Outcome::Ok();
 }
 
 void SimulatedBoard::FollowTickTimer() {

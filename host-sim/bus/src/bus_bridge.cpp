@@ -17,12 +17,13 @@ size_t PumpSlcan(can_io::SlcanServer& server, Endpoint& endpoint) {
   return moved;
 }
 
-void ServeSlcan(can_io::SlcanServer& server,
-                Endpoint& endpoint,
-                std::chrono::microseconds timeout) {
+Outcome ServeSlcan(can_io::SlcanServer& server,
+                   Endpoint& endpoint,
+                   std::chrono::microseconds timeout) {
   PumpSlcan(server, endpoint);
-  server.Poll(timeout);
+  VOLCOMP_TRY(server.Poll(timeout));
   PumpSlcan(server, endpoint);
+  return Outcome::Ok();
 }
 
 void SlcanBridge::Pump() {
@@ -62,21 +63,25 @@ void SlcanBridge::Pump() {
   }
 }
 
-void SlcanBridge::Serve(std::chrono::microseconds timeout) {
+Outcome SlcanBridge::Serve(std::chrono::microseconds timeout) {
   Pump();
-  server_.Poll(timeout);
+  VOLCOMP_TRY(server_.Poll(timeout));
   Pump();
+  return Outcome::Ok();
 }
 
-size_t PumpTransport(can_io::CanTransport& transport, Endpoint& endpoint) {
+Expected<size_t> PumpTransport(can_io::CanTransport& transport, Endpoint& endpoint) {
   size_t moved = 0;
-  while (auto f = transport.Receive(std::chrono::microseconds(0))) {
+  for (;;) {
+    VOLCOMP_TRY_ASSIGN(const std::optional<CanFrame> f,
+                       transport.Receive(std::chrono::microseconds(0)));
+    if (!f) break;
     endpoint.Send(*f);
     ++moved;
   }
   CanFrame f;
   while (endpoint.Receive(&f)) {
-    transport.Send(f);
+    VOLCOMP_TRY(transport.Send(f));
     ++moved;
   }
   return moved;

@@ -2,13 +2,14 @@
 #include "volcomp/sim/realtime.hpp"
 
 #include <algorithm>
-#include <stdexcept>
+
+#include "volcomp/sim/contract.hpp"
 
 namespace volcomp::sim {
 
 RealtimeClock::RealtimeClock(uint64_t virtual_start_ns, double speed)
     : wall_start_(Wall::now()), virtual_start_(virtual_start_ns), speed_(speed) {
-  if (!(speed > 0)) throw std::invalid_argument("RealtimeClock: speed must be > 0");
+  VOLCOMP_SIM_EXPECT(speed > 0, "RealtimeClock: speed must be > 0");
 }
 
 uint64_t RealtimeClock::Now() const {
@@ -30,17 +31,17 @@ std::chrono::microseconds RealtimeClock::Until(uint64_t virtual_ns) const {
   return std::max(left, std::chrono::microseconds(0));
 }
 
-void RunRealtime(SimBus& bus,
-                 const RealtimeClock& clock,
-                 uint64_t until_ns,
-                 const std::function<void(std::chrono::microseconds timeout)>& wait) {
+Outcome RunRealtime(SimBus& bus,
+                    const RealtimeClock& clock,
+                    uint64_t until_ns,
+                    const std::function<Outcome(std::chrono::microseconds timeout)>& wait) {
   for (;;) {
     const uint64_t now = std::min(clock.Now(), until_ns);
     bus.RunUntil(now);
-    if (now >= until_ns) return;
+    if (now >= until_ns) return Outcome::Ok();
     const auto next = bus.NextEventTime();
     const uint64_t target = next ? std::min(*next, until_ns) : until_ns;
-    wait(clock.Until(target));
+    VOLCOMP_TRY(wait(clock.Until(target)));
   }
 }
 

@@ -2,7 +2,8 @@
 #include "volcomp/sim/sim_bus.hpp"
 
 #include <random>
-#include <stdexcept>
+
+#include "volcomp/sim/contract.hpp"
 
 namespace volcomp::sim {
 
@@ -55,7 +56,7 @@ bool Endpoint::Receive(CanFrame* frame) {
 }
 
 SimBus::SimBus(uint32_t bitrate) : bitrate_(bitrate) {
-  if (bitrate == 0) throw std::invalid_argument("SimBus: bitrate must be > 0");
+  VOLCOMP_SIM_EXPECT(bitrate > 0, "SimBus: bitrate must be > 0");
 }
 
 Endpoint& SimBus::Attach(std::string name) {

@@ -3,7 +3,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <stdexcept>
+
+#include "volcomp/sim/contract.hpp"
 
 namespace volcomp::sim {
 
@@ -50,12 +51,9 @@ struct Cnc::Homing {
 
 Cnc::Cnc(const CncConfig& config, StepSink* sink, SwitchReader home_switch)
     : config_(config), sink_(sink), switch_(std::move(home_switch)) {
-  for (double s : config_.step_mm) {
-    if (!(s > 0)) throw std::invalid_argument("cnc: step length must be > 0");
-  }
-  if (!(config_.max_step_rate_hz > 0) || !(config_.accel_mm_s2 > 0)) {
-    throw std::invalid_argument("cnc: step rate and acceleration must be > 0");
-  }
+  for (double s : config_.step_mm) VOLCOMP_SIM_EXPECT(s > 0, "cnc: step length must be > 0");
+  VOLCOMP_SIM_EXPECT(config_.max_step_rate_hz > 0 && config_.accel_mm_s2 > 0,
+                     "cnc: step rate and acceleration must be > 0");
 }
 
 Cnc::~Cnc() = default;
@@ -67,7 +65,7 @@ void Cnc::QueueRapid(const std::array<int64_t, 3>& target_steps) {
 }
 
 void Cnc::QueueLinear(const std::array<int64_t, 3>& target_steps, double feed_mm_s) {
-  if (!(feed_mm_s > 0)) throw std::invalid_argument("cnc: feed must be > 0");
+  VOLCOMP_SIM_EXPECT(feed_mm_s > 0, "cnc: feed must be > 0");
   Block b;
   for (size_t a = 0; a < 3; ++a) b.value_steps[a] = static_cast<double>(target_steps[a]);
   b.rapid = false;
@@ -76,7 +74,7 @@ void Cnc::QueueLinear(const std::array<int64_t, 3>& target_steps, double feed_mm
 }
 
 void Cnc::QueueDwell(double seconds) {
-  if (!(seconds >= 0)) throw std::invalid_argument("cnc: dwell must be >= 0");
+  VOLCOMP_SIM_EXPECT(seconds >= 0, "cnc: dwell must be >= 0");
   Block b;
   b.kind = Block::Kind::kDwell;
   b.dwell_s = seconds;

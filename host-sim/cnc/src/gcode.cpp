@@ -5,7 +5,6 @@
 #include <cmath>
 #include <cstdlib>
 #include <sstream>
-#include <stdexcept>
 
 namespace volcomp::sim {
 namespace {
@@ -15,12 +14,12 @@ struct Word {
   double value;
 };
 
-[[noreturn]] void Fail(const std::string& source, int line, const std::string& what) {
-  throw std::runtime_error(source + ":" + std::to_string(line) + ": " + what);
+Unexpected<Failure> Refuse(const std::string& source, int line, const std::string& what) {
+  return Fail(Error::kInputInvalid, source + ":" + std::to_string(line) + ": " + what);
 }
 
-// Removes comments and splits a line into words; throws on malformed numbers.
-std::vector<Word> Words(const std::string& raw, const std::string& source, int line) {
+// Removes comments and splits a line into words; refuses malformed numbers.
+Expected<std::vector<Word>> Words(const std::string& raw, const std::string& source, int line) {
   std::string s;
   int depth = 0;
   for (char c : raw) {
@@ -28,13 +27,13 @@ std::vector<Word> Words(const std::string& raw, const std::string& source, int l
     if (c == '(') {
       ++depth;
     } else if (c == ')') {
-      if (depth == 0) Fail(source, line, "')' without '('");
+      if (depth == 0) return Refuse(source, line, "')' without '('");
       --depth;
     } else if (depth == 0) {
       s += c;
     }
   }
-  if (depth != 0) Fail(source, line, "unclosed comment");
+  if (depth != 0) return Refuse(source, line, "unclosed comment");
   std::vector<Word> words;
   size_t i = 0;
   while (i < s.size()) {
@@ -44,7 +43,7 @@ std::vector<Word> Words(const std::string& raw, const std::string& source, int l
       continue;
     }
     if (!std::isalpha(static_cast<unsigned char>(c))) {
-      Fail(source, line, std::string("unexpected '") + c + "'");
+      return Refuse(source, line, std::string("unexpected '") + c + "'");
     }
     size_t j = i + 1;
     while (j < s.size() && std::isspace(static_cast<unsigned char>(s[j]))) ++j;
@@ -57,7 +56,7 @@ std::vector<Word> Words(const std::string& raw, const std::string& source, int l
     char* end = nullptr;
     const double v = number.empty() ? NAN : std::strtod(number.c_str(), &end);
     if (number.empty() || end != number.c_str() + number.size() || !std::isfinite(v)) {
-      Fail(source, line, std::string("word ") + c + " needs a number");
+      return Refuse(source, line, std::string("word ") + c + " needs a number");
     }
     words.push_back({static_cast<char>(std::toupper(static_cast<unsigned char>(c))), v});
     i = k;
@@ -69,7 +68,7 @@ bool IsCode(double v, double code) { return std::fabs(v - code) < 1e-9; }
 
 }  // namespace
 
-Program ParseGcode(const std::string& text, const std::string& source) {
+Expected<Program> ParseGcode(const std::string& text, const std::string& source) {
   Program program;
   std::istringstream in(text);
   std::string raw;
@@ -79,7 +78,7 @@ Program ParseGcode(const std::string& text, const std::string& source) {
   double feed_mm_s = 0;
   while (std::getline(in, raw)) {
     ++line;
-    const std::vector<Word> words = Words(raw, source, line);
+    VOLCOMP_TRY_ASSIGN(const std::vector<Word> words, Words(raw, source, line));
     ProgramBlock block;
     block.line = line;
     bool has_coord = false, dwell = false, end = false;
@@ -99,14 +98,14 @@ Program ParseGcode(const std::string& text, const std::string& source) {
           } else if (IsCode(w.value, 91)) {
             incremental = true;
           } else if (IsCode(w.value, 20)) {
-            Fail(source, line, "G20 (inches) is not supported; use G21");
+            return Refuse(source, line, "G20 (inches) is not supported; use G21");
           } else if (IsCode(w.value, 21) || IsCode(w.value, 17) || IsCode(w.value, 40) ||
                      IsCode(w.value, 49) || IsCode(w.value, 54) || IsCode(w.value, 61) ||
                      IsCode(w.value, 64) || IsCode(w.value, 80) || IsCode(w.value, 94)) {
           } else {
             std::ostringstream g;
             g << "G" << w.value << " is not supported";
-            Fail(source, line, g.str());
+            return Refuse(source, line, g.str());
           }
           break;
         case 'M':
@@ -117,11 +116,11 @@ Program ParseGcode(const std::string& text, const std::string& source) {
                        IsCode(w.value, 9))) {
             std::ostringstream m;
             m << "M" << w.value << " is not supported";
-            Fail(source, line, m.str());
+            return Refuse(source, line, m.str());
           }
           break;
         case 'F':
-          if (!(w.value > 0)) Fail(source, line, "F must be positive");
+          if (!(w.value > 0)) return Refuse(source, line, "F must be positive");
           feed_mm_s = w.value / 60.0;
           break;
         case 'P':
@@ -137,26 +136,26 @@ Program ParseGcode(const std::string& text, const std::string& source) {
           break;
         }
         default:
-          Fail(source, line, std::string("word ") + w.letter + " is not supported");
+          return Refuse(source, line, std::string("word ") + w.letter + " is not supported");
       }
     }
     if (new_motion >= 0) motion = new_motion;
     if (dwell) {
-      if (has_coord) Fail(source, line, "G4 with coordinates");
-      if (!(p >= 0)) Fail(source, line, "G4 needs P<seconds> >= 0");
+      if (has_coord) return Refuse(source, line, "G4 with coordinates");
+      if (!(p >= 0)) return Refuse(source, line, "G4 needs P<seconds> >= 0");
       block.kind = ProgramBlock::Kind::kDwell;
       block.dwell_s = p;
       program.push_back(block);
     } else if (!std::isnan(p)) {
-      Fail(source, line, "P without G4");
+      return Refuse(source, line, "P without G4");
     }
     if (has_coord) {
-      if (motion < 0) Fail(source, line, "coordinates without G0 or G1");
+      if (motion < 0) return Refuse(source, line, "coordinates without G0 or G1");
       block.incremental = incremental;
       if (motion == 0) {
         block.kind = ProgramBlock::Kind::kRapid;
       } else {
-        if (!(feed_mm_s > 0)) Fail(source, line, "G1 without a feed (F)");
+        if (!(feed_mm_s > 0)) return Refuse(source, line, "G1 without a feed (F)");
         block.kind = ProgramBlock::Kind::kLinear;
         block.feed_mm_s = feed_mm_s;
       }

@@ -3,7 +3,6 @@
 
 #include <cmath>
 #include <cstdio>
-#include <stdexcept>
 
 #include "volcomp/metrology/diagonal.hpp"
 
@@ -26,19 +25,34 @@ Point3 OnLine(const Point3& origin, const Point3& dir, double along) {
   return {origin[0] + along * dir[0], origin[1] + along * dir[1], origin[2] + along * dir[2]};
 }
 
+// A line test along machine axis `axis` (0..2) through `through`.
+Expected<TestProgram> AxisLineProgram(const std::string& name,
+                                      int axis,
+                                      const Point3& through,
+                                      const std::vector<double>& targets_mm,
+                                      const CycleOptions& options) {
+  if (axis < 0 || axis > 2) return Fail(Error::kInvalidArgument, name + ": axis must be 0..2");
+  Point3 origin = through;
+  origin[static_cast<size_t>(axis)] = 0;
+  Point3 dir = {0, 0, 0};
+  dir[static_cast<size_t>(axis)] = 1;
+  return LineTestProgram(name + " " + "XYZ"[axis], origin, dir, targets_mm, options);
+}
+
 }  // namespace
 
-TestProgram LineTestProgram(const std::string& name,
-                            const Point3& origin_mm,
-                            const Point3& direction,
-                            const std::vector<double>& targets_mm,
-                            const CycleOptions& options) {
+Expected<TestProgram> LineTestProgram(const std::string& name,
+                                      const Point3& origin_mm,
+                                      const Point3& direction,
+                                      const std::vector<double>& targets_mm,
+                                      const CycleOptions& options) {
   TestProgram p;
   p.name = name;
   p.origin_mm = origin_mm;
   p.direction = direction;
-  const std::vector<metrology::CycleMove> moves = metrology::BuildCycle(
-      targets_mm, metrology::Cycle::kLinear, options.runs, options.overrun_mm);
+  VOLCOMP_TRY_ASSIGN(const std::vector<metrology::CycleMove> moves,
+                     metrology::BuildCycle(targets_mm, metrology::Cycle::kLinear, options.runs,
+                                           options.overrun_mm));
   std::string g = "(" + name + ": linear cycle, " + std::to_string(targets_mm.size()) +
                   " targets, " + std::to_string(options.runs) + " runs each way)\n";
   g += "(the instrument is zeroed at the first stop and read at the end of every G4)\n";
@@ -78,26 +92,21 @@ TestProgram LineTestProgram(const std::string& name,
   return p;
 }
 
-TestProgram GostAxisProgram(int axis,
-                            const Point3& line_point_mm,
-                            const std::vector<double>& targets_mm,
-                            const CycleOptions& options) {
-  if (axis < 0 || axis > 2) throw std::invalid_argument("GostAxisProgram: axis must be 0..2");
-  Point3 origin = line_point_mm;
-  origin[static_cast<size_t>(axis)] = 0;
-  Point3 dir = {0, 0, 0};
-  dir[static_cast<size_t>(axis)] = 1;
-  return LineTestProgram(std::string("GOST 27843 ") + "XYZ"[axis], origin, dir, targets_mm,
-                         options);
+Expected<TestProgram> GostAxisProgram(int axis,
+                                      const Point3& line_point_mm,
+                                      const std::vector<double>& targets_mm,
+                                      const CycleOptions& options) {
+  return AxisLineProgram("GOST 27843", axis, line_point_mm, targets_mm, options);
 }
 
-TestProgram DiagonalProgram(const std::string& name,
-                            const Point3& p1_mm,
-                            const Point3& p2_mm,
-                            double increment_mm,
-                            const CycleOptions& options) {
-  const metrology::DiagonalPlan plan = metrology::PlanDiagonal(
-      {p1_mm[0], p1_mm[1], p1_mm[2]}, {p2_mm[0], p2_mm[1], p2_mm[2]}, increment_mm);
+Expected<TestProgram> DiagonalProgram(const std::string& name,
+                                      const Point3& p1_mm,
+                                      const Point3& p2_mm,
+                                      double increment_mm,
+                                      const CycleOptions& options) {
+  VOLCOMP_TRY_ASSIGN(const metrology::DiagonalPlan plan,
+                     metrology::PlanDiagonal({p1_mm[0], p1_mm[1], p1_mm[2]},
+                                             {p2_mm[0], p2_mm[1], p2_mm[2]}, increment_mm));
   const Point3 dir = {plan.travel_mm.x / plan.length_mm, plan.travel_mm.y / plan.length_mm,
                       plan.travel_mm.z / plan.length_mm};
   return LineTestProgram(name, p1_mm, dir, plan.distances, options);
@@ -134,17 +143,11 @@ TestProgram PointSetProgram(const std::string& name,
   return p;
 }
 
-TestProgram ParametricProgram(int axis,
-                              const Point3& reference_mm,
-                              const std::vector<double>& positions_mm,
-                              const CycleOptions& options) {
-  if (axis < 0 || axis > 2) throw std::invalid_argument("ParametricProgram: axis must be 0..2");
-  Point3 origin = reference_mm;
-  origin[static_cast<size_t>(axis)] = 0;
-  Point3 dir = {0, 0, 0};
-  dir[static_cast<size_t>(axis)] = 1;
-  return LineTestProgram(std::string("parametric ") + "XYZ"[axis], origin, dir, positions_mm,
-                         options);
+Expected<TestProgram> ParametricProgram(int axis,
+                                        const Point3& reference_mm,
+                                        const std::vector<double>& positions_mm,
+                                        const CycleOptions& options) {
+  return AxisLineProgram("parametric", axis, reference_mm, positions_mm, options);
 }
 
 std::vector<BodyDiagonal> BodyDiagonals(const Point3& lo_mm, const Point3& hi_mm) {

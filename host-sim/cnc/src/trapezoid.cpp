@@ -3,15 +3,15 @@
 
 #include <algorithm>
 #include <cmath>
-#include <stdexcept>
+
+#include "volcomp/sim/contract.hpp"
 
 namespace volcomp::sim {
 
 TrapezoidProfile::TrapezoidProfile(double length_mm, double speed_mm_s, double accel_mm_s2)
     : length_(length_mm), accel_(accel_mm_s2) {
-  if (!(length_mm >= 0) || !(speed_mm_s > 0) || !(accel_mm_s2 > 0)) {
-    throw std::invalid_argument("trapezoid: need length >= 0, speed > 0, acceleration > 0");
-  }
+  VOLCOMP_SIM_EXPECT(length_mm >= 0 && speed_mm_s > 0 && accel_mm_s2 > 0,
+                     "trapezoid: need length >= 0, speed > 0, acceleration > 0");
   peak_ = std::min(speed_mm_s, std::sqrt(accel_mm_s2 * length_mm));
   ramp_s_ = peak_ / accel_;
   ramp_mm_ = 0.5 * peak_ * ramp_s_;

@@ -13,41 +13,44 @@ namespace volcomp::sim {
 using canopen::ObjectId;
 using canopen_client::Explain;
 using canopen_client::NodeObjects;
-using canopen_client::SdoResult;
+using canopen_client::SdoFailure;
 
 namespace {
 
-SimStatus Failed(const SdoResult& res) { return SimStatus(Error::kIoError, res.message); }
+Unexpected<Failure> Failed(const SdoFailure& failure) {
+  return Fail(Error::kIoError, failure.message);
+}
 
 }  // namespace
 
-SimResult<UploadReport> UploadTable(World& world,
-                                    const std::vector<uint8_t>& image,
-                                    std::ostream& log) {
+Expected<UploadReport> UploadTable(World& world,
+                                   const std::vector<uint8_t>& image,
+                                   std::ostream& log) {
   UploadReport r;
   r.bytes = static_cast<uint32_t>(image.size());
   r.image_crc = LoadLe32(image.data() + image.size() - 4);
   NodeObjects node(world.SdoLink(), world.node_id());
-  uint32_t active = 0, bank = 0;
-  SdoResult res =
-      Explain(node.Read(ObjectId::kActiveTableCrc, &active), "reading the active CRC-32 (0x2104)");
-  if (!res.ok) return Failed(res);
-  res = Explain(node.Read(ObjectId::kTableBankSize, &bank), "reading the bank size (0x2108)");
-  if (!res.ok) return Failed(res);
+  const auto active =
+      Explain(node.Read(ObjectId::kActiveTableCrc), "reading the active CRC-32 (0x2104)");
+  if (!active.ok()) return Failed(active.error());
+  const auto bank_size =
+      Explain(node.Read(ObjectId::kTableBankSize), "reading the bank size (0x2108)");
+  if (!bank_size.ok()) return Failed(bank_size.error());
+  const uint32_t bank = *bank_size;
   if (image.size() > bank) {
-    return SimStatus(Error::kImageTooLarge, "the image (" + std::to_string(image.size()) +
-                                                " bytes) does not fit the board's table bank (" +
-                                                std::to_string(bank) + " bytes)");
+    return Fail(Error::kImageTooLarge, "the image (" + std::to_string(image.size()) +
+                                           " bytes) does not fit the board's table bank (" +
+                                           std::to_string(bank) + " bytes)");
   }
-  res = canopen_client::PrepareStaging(node);
-  if (!res.ok) return Failed(res);
+  const auto prepared = canopen_client::PrepareStaging(node);
+  if (!prepared.ok()) return Failed(prepared.error());
 
   const uint64_t frames0 = world.bus().stats().frames;
   const uint64_t t0 = world.now_ns();
   int decile = -1;
   const canopen::ObjectEntry& data = canopen::Entry(ObjectId::kTableData);
   canopen_client::SdoClient client(world.node_id());
-  client.StartDownload(data.index, data.sub, image, [&](uint32_t done, uint32_t total) {
+  client.StartWrite(data.index, data.sub, image, [&](uint32_t done, uint32_t total) {
     const int d = total ? static_cast<int>(10ull * done / total) : 10;
     if (d > decile) {
       decile = d;
@@ -58,40 +61,40 @@ SimResult<UploadReport> UploadTable(World& world,
       log << line << std::flush;
     }
   });
-  res = Explain(canopen_client::RunToCompletion(client, world.SdoLink()),
-                "block download into 0x2100");
-  if (!res.ok) return Failed(res);
+  const auto written = Explain(canopen_client::RunToCompletion(client, world.SdoLink()),
+                               "block download into 0x2100");
+  if (!written.ok()) return Failed(written.error());
   r.transfer_s = static_cast<double>(world.now_ns() - t0) * 1e-9;
   r.rate_bytes_s = r.transfer_s > 0 ? r.bytes / r.transfer_s : 0;
   r.frames = world.bus().stats().frames - frames0;
   r.resent_segments = client.resent_segments();
 
-  res = canopen_client::VerifyStaged(node, r.image_crc, &r.staged_crc);
-  if (!res.ok) return Failed(res);
+  const auto verified = canopen_client::VerifyStaged(node, r.image_crc);
+  if (!verified.ok()) return Failed(verified.error());
+  r.staged_crc = r.image_crc;  // verified: the board staged exactly the image
   return r;
 }
 
-SimResult<ActivationReport> ActivateTable(World& world, uint32_t expected_crc) {
+Expected<ActivationReport> ActivateTable(World& world, uint32_t expected_crc) {
   ActivationReport r;
   NodeObjects node(world.SdoLink(), world.node_id());
-  SdoResult res = canopen_client::WriteTableCommand(node, canopen::TableCommand::kActivate);
-  if (!res.ok) return Failed(res);
-  res = Explain(node.Read(ObjectId::kActiveTableCrc, &r.active_crc),
-                "reading the active CRC-32 (0x2104)");
-  if (!res.ok) return Failed(res);
+  const auto activated = canopen_client::WriteTableCommand(node, canopen::TableCommand::kActivate);
+  if (!activated.ok()) return Failed(activated.error());
+  const auto active =
+      Explain(node.Read(ObjectId::kActiveTableCrc), "reading the active CRC-32 (0x2104)");
+  if (!active.ok()) return Failed(active.error());
+  r.active_crc = *active;
   if (r.active_crc != expected_crc) {
-    return SimStatus(Error::kImageBadCrc, "the active CRC-32 is " + tools::Hex32(r.active_crc) +
-                                              ", the uploaded image's " +
-                                              tools::Hex32(expected_crc));
+    return Fail(Error::kImageBadCrc, "the active CRC-32 is " + tools::Hex32(r.active_crc) +
+                                         ", the uploaded image's " + tools::Hex32(expected_crc));
   }
   r.device_state = ReadDeviceState(world);
   return r;
 }
 
 uint16_t ReadDeviceState(World& world) {
-  uint32_t v = 0;
-  if (!NodeObjects(world.SdoLink(), world.node_id()).Read(ObjectId::kDeviceState, &v).ok) return 0;
-  return static_cast<uint16_t>(v);
+  const auto v = NodeObjects(world.SdoLink(), world.node_id()).Read(ObjectId::kDeviceState);
+  return v.ok() ? static_cast<uint16_t>(*v) : 0;
 }
 
 }  // namespace volcomp::sim

@@ -2,6 +2,9 @@
 // checks of each.
 #include "volcomp/sim/demo.hpp"
 
+#include <memory>
+#include <utility>
+
 #include "demo_session.hpp"
 #include "volcomp/firmware/board_objects.hpp"
 
@@ -41,95 +44,99 @@ void Keep(DemoResult& r, StagedTable t) {
 }
 
 // Steps 3-8 on the ideal machine: error motions, table, upload, activation, re-measuring.
-SimStatus RunIdeal(Session& s, DemoResult& r) {
+Outcome RunIdeal(Session& s, DemoResult& r) {
   demo::Progress& progress = s.progress;
   progress.Step(
       "measuring the six error motions of X, Y, Z through the reference point "
       "(virtual 6-DOF laser, like XL-80 linear/straightness/angular setups)");
-  VOLCOMP_SIM_TRY(demo::MeasureErrorMotions(s, r));
+  VOLCOMP_TRY(demo::MeasureErrorMotions(s, r));
   progress.Step("building the table from the measurements");
   const auto t0 = Clock::now();
-  model::GridSection grid;
-  VOLCOMP_SIM_ASSIGN(grid, demo::BuildModelGrid(s, r));
-  r.table = AssembleTable(
-      grid, {}, s.step_mm(), 1,
-      {{"builder", "volcomp-sim demo (the sources and grid of `volcomp build model`)"},
-       {"source", "measured 21-parameter model: 6-DOF laser runs of X, Y, Z"}});
+  VOLCOMP_TRY_ASSIGN(builders::GridSection grid, demo::BuildModelGrid(s, r));
+  VOLCOMP_TRY_ASSIGN(
+      r.table, AssembleTable(
+                   std::move(grid), {}, s.step_mm(), 1,
+                   {{"builder", "volcomp-sim demo (the sources and grid of `volcomp build model`)"},
+                    {"source", "measured 21-parameter model: 6-DOF laser runs of X, Y, Z"}}));
   demo::PrintImageLine(s, r.table, t0);
   progress.Step("uploading over the simulated CAN bus (PC tool's SDO client, block transfer)");
-  VOLCOMP_SIM_ASSIGN(r.upload, demo::Upload(s, r.table));
+  VOLCOMP_TRY_ASSIGN(r.upload, demo::Upload(s, r.table));
   progress.Step("homing again (references the axes), activating the table");
-  VOLCOMP_SIM_ASSIGN(r.activation, demo::Activate(s, r.table.crc32, true));
+  VOLCOMP_TRY_ASSIGN(r.activation, demo::Activate(s, r.table.crc32, true));
   progress.Step("re-measuring the compensated machine (same programs, fresh instrument noise)");
-  VOLCOMP_SIM_ASSIGN(r.after, demo::MeasurePhase(s, r));
-  return SimStatus::Ok();
+  VOLCOMP_TRY_ASSIGN(r.after, demo::MeasurePhase(s, r));
+  return Outcome::Ok();
 }
 
 // Steps 3-9 on the worn machine: the three compensations, each re-measured.
-SimStatus RunWorn(Session& s, DemoResult& r) {
+Outcome RunWorn(Session& s, DemoResult& r) {
   demo::Progress& progress = s.progress;
   const std::array<double, 3> step = s.step_mm();
   progress.Step(
       "measuring the six error motions of X, Y, Z through the reference point "
       "(virtual 6-DOF laser), mean of the runs up and down");
-  VOLCOMP_SIM_TRY(demo::MeasureErrorMotions(s, r));
+  VOLCOMP_TRY(demo::MeasureErrorMotions(s, r));
 
   progress.Step("table 1: GRID3 from the 21-parameter measurements; upload, reference, activate");
   auto t0 = Clock::now();
-  model::GridSection model_grid;
-  VOLCOMP_SIM_ASSIGN(model_grid, demo::BuildModelGrid(s, r));
-  TableBuildResult t1 = AssembleTable(
-      model_grid, {}, step, 1,
-      {{"builder", "volcomp-sim demo (the sources and grid of `volcomp build model`)"},
-       {"source", "measured 21-parameter model: 6-DOF laser runs of X, Y, Z"}});
+  VOLCOMP_TRY_ASSIGN(const builders::GridSection model_grid, demo::BuildModelGrid(s, r));
+  VOLCOMP_TRY_ASSIGN(
+      TableBuildResult t1,
+      AssembleTable(
+          model_grid, {}, step, 1,
+          {{"builder", "volcomp-sim demo (the sources and grid of `volcomp build model`)"},
+           {"source", "measured 21-parameter model: 6-DOF laser runs of X, Y, Z"}}));
   demo::PrintImageLine(s, t1, t0);
-  StagedTable staged;
-  VOLCOMP_SIM_ASSIGN(staged, demo::StageTable(s, "21-param", std::move(t1), true));
+  VOLCOMP_TRY_ASSIGN(StagedTable staged, demo::StageTable(s, "21-param", std::move(t1), true));
   r.earlier_tables.push_back(std::move(staged));
   progress.Step("re-measuring with table 1 (21-parameter GRID3)");
   r.intermediate.push_back({"21-param", {}});
-  VOLCOMP_SIM_ASSIGN(r.intermediate.back().results, demo::MeasurePhase(s, r));
+  VOLCOMP_TRY_ASSIGN(r.intermediate.back().results, demo::MeasurePhase(s, r));
 
   progress.Step(
       "table 2: AXIS1D forward/reverse tables from bidirectional ISO 230-2 runs (table 1 "
       "active), with the GRID3 of table 1");
-  std::vector<model::AxisSection> axis_tables;
-  VOLCOMP_SIM_ASSIGN(axis_tables, demo::MeasureAxisTables(s, r));
+  VOLCOMP_TRY_ASSIGN(const std::vector<builders::AxisSection> axis_tables,
+                     demo::MeasureAxisTables(s, r));
   t0 = Clock::now();
-  TableBuildResult t2 = AssembleTable(
-      model_grid, axis_tables, step, 2,
-      {{"builder", "volcomp-sim demo (the entry points of `volcomp build model` and `build axis`)"},
-       {"source", "measured 21-parameter model + ISO 230-2 runs"}});
+  VOLCOMP_TRY_ASSIGN(
+      TableBuildResult t2,
+      AssembleTable(
+          model_grid, axis_tables, step, 2,
+          {{"builder",
+            "volcomp-sim demo (the entry points of `volcomp build model` and `build axis`)"},
+           {"source", "measured 21-parameter model + ISO 230-2 runs"}}));
   demo::PrintImageLine(s, t2, t0);
-  VOLCOMP_SIM_ASSIGN(staged, demo::StageTable(s, "21-param + AXIS1D", std::move(t2), false));
+  VOLCOMP_TRY_ASSIGN(staged, demo::StageTable(s, "21-param + AXIS1D", std::move(t2), false));
   r.earlier_tables.push_back(std::move(staged));
   progress.Step("re-measuring with table 2 (21-parameter GRID3 + AXIS1D)");
   r.intermediate.push_back({"+AXIS1D", {}});
-  VOLCOMP_SIM_ASSIGN(r.intermediate.back().results, demo::MeasurePhase(s, r));
+  VOLCOMP_TRY_ASSIGN(r.intermediate.back().results, demo::MeasurePhase(s, r));
 
   progress.Step(
       "table 3: laser tracker at every node of a lattice, measured through table 2; its GRID3 "
       "(composed with table 2's) with the AXIS1D tables");
   const size_t first_check = r.drift.size() - 1;  // the check after the last test of table 2
-  model::GridSection lattice_grid;
-  VOLCOMP_SIM_ASSIGN(lattice_grid,
+  VOLCOMP_TRY_ASSIGN(builders::GridSection lattice_grid,
                      demo::MeasureTrackerLattice(s, r, r.earlier_tables.back().table.image));
   t0 = Clock::now();
-  TableBuildResult t3 = AssembleTable(
-      lattice_grid, axis_tables, step, 3,
-      {{"builder",
-        "volcomp-sim demo (the entry points of `volcomp build tracker --lattice --through` and "
-        "`build axis`)"},
-       {"source", "laser-tracker lattice through table 2 + ISO 230-2 runs"}});
+  VOLCOMP_TRY_ASSIGN(
+      TableBuildResult t3,
+      AssembleTable(
+          std::move(lattice_grid), axis_tables, step, 3,
+          {{"builder",
+            "volcomp-sim demo (the entry points of `volcomp build tracker --lattice --through` "
+            "and `build axis`)"},
+           {"source", "laser-tracker lattice through table 2 + ISO 230-2 runs"}}));
   demo::PrintImageLine(s, t3, t0);
-  VOLCOMP_SIM_ASSIGN(staged, demo::StageTable(s, "tracker + AXIS1D", std::move(t3), false));
+  VOLCOMP_TRY_ASSIGN(staged, demo::StageTable(s, "tracker + AXIS1D", std::move(t3), false));
   Keep(r, std::move(staged));
-  VOLCOMP_SIM_TRY(demo::CheckDrift(s, r, "table 3 activated"));
+  VOLCOMP_TRY(demo::CheckDrift(s, r, "table 3 activated"));
   progress.Step("re-measuring with table 3 (tracker-lattice GRID3 + AXIS1D)");
   r.after_label = "tracker";
-  VOLCOMP_SIM_ASSIGN(r.after, demo::MeasurePhase(s, r));
+  VOLCOMP_TRY_ASSIGN(r.after, demo::MeasurePhase(s, r));
   demo::EvaluateWornGoals(s, r, first_check);
-  return SimStatus::Ok();
+  return Outcome::Ok();
 }
 
 }  // namespace
@@ -160,7 +167,7 @@ bool SwitchOff(const std::string& source, DemoOptions* o) {
   return true;
 }
 
-SimResult<DemoResult> RunDemo(const DemoOptions& o, std::ostream& log) {
+Expected<DemoResult> RunDemo(const DemoOptions& o, std::ostream& log) {
   const auto wall0 = Clock::now();
   const bool worn = o.machine == MachineProfile::kWorn;
   DemoResult r;
@@ -168,22 +175,22 @@ SimResult<DemoResult> RunDemo(const DemoOptions& o, std::ostream& log) {
   demo::Progress progress(log, worn ? 10 : 8);
 
   WorldOptions wo;
-  wo.machine.model = LoadMachineModel(o.model_spec);
+  VOLCOMP_TRY_ASSIGN(wo.machine.model, LoadMachineModel(o.model_spec));
   if (worn) {
     wo.machine.wear = o.wear;
     wo.machine.wear.seed = o.seed ^ 0x6d616368696e65ull;  // the machine's own random stream
   }
   r.machine_name = wo.machine.model.name + (worn ? ", worn" : "");
-  wo.board = BoardSettingsFor(Machine(wo.machine));
-  wo.cnc.accel_mm_s2 = o.accel_mm_s2;
-  World world(wo);
-  if (const Status started = world.Start(); !started.ok()) {
-    return SimStatus(started.error(), std::string("the simulated board did not start: ") +
-                                          ErrorText(started.error()));
+  {
+    VOLCOMP_TRY_ASSIGN(const Machine machine, Machine::Create(wo.machine));
+    wo.board = BoardSettingsFor(machine);
   }
+  wo.cnc.accel_mm_s2 = o.accel_mm_s2;
+  VOLCOMP_TRY_ASSIGN(const std::unique_ptr<World> installation, World::Create(wo));
+  World& world = *installation;
+  VOLCOMP_TRY(world.Start());
   r.tick_us = static_cast<double>(world.tick_ns()) / 1000.0;
-  demo::Layout layout;
-  VOLCOMP_SIM_ASSIGN(layout, demo::MakeLayout(world.machine(), o.margin_mm));
+  VOLCOMP_TRY_ASSIGN(const demo::Layout layout, demo::MakeLayout(world.machine(), o.margin_mm));
   Random rng(o.seed);
   Session s{o,
             progress,
@@ -198,21 +205,21 @@ SimResult<DemoResult> RunDemo(const DemoOptions& o, std::ostream& log) {
             {layout.inner_hi[0], layout.centre[1], layout.centre[2]},
             0};
   demo::PrintSetup(s, r, wo);
-  demo::PlanTests(s, rng);
+  VOLCOMP_TRY(demo::PlanTests(s, rng));
 
   progress.Step(
       "power-up and homing: home switches 5 mm below the travel, board references on "
       "their edges");
-  VOLCOMP_SIM_TRY(demo::HomeAtPowerUp(s, r));
+  VOLCOMP_TRY(demo::HomeAtPowerUp(s, r));
   if (worn) {
     demo::PrintWarmUp(s);
-    VOLCOMP_SIM_TRY(demo::CheckDrift(s, r, ""));
+    VOLCOMP_TRY(demo::CheckDrift(s, r, ""));
   }
   progress.Step(
       "measuring the uncompensated machine (GOST 27843 per axis, ISO 230-6 diagonals, "
       "random points)");
-  VOLCOMP_SIM_ASSIGN(r.before, demo::MeasurePhase(s, r));
-  VOLCOMP_SIM_TRY(worn ? RunWorn(s, r) : RunIdeal(s, r));
+  VOLCOMP_TRY_ASSIGN(r.before, demo::MeasurePhase(s, r));
+  VOLCOMP_TRY(worn ? RunWorn(s, r) : RunIdeal(s, r));
   progress.Step("simulator speed: rapid moves with X, Y and Z each at 1 MHz through the board");
   demo::RunSpeedBenchmark(s, r);
 

@@ -1,27 +1,19 @@
 // HTML report and data files of a demo run.
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 
-#include "volcomp/image/image_builder.hpp"
 #include "volcomp/metrology/diagonal_report.hpp"
 #include "volcomp/metrology/positioning_report.hpp"
 #include "volcomp/report/format.hpp"
 #include "volcomp/report/html_page.hpp"
 #include "volcomp/report/xy_chart.hpp"
 #include "volcomp/sim/demo.hpp"
+#include "volcomp/tools/file_io.hpp"
 
 namespace volcomp::sim {
 namespace {
 
 using report::FormatFixed;
-
-SimStatus WriteText(const std::string& path, const std::string& text) {
-  std::ofstream f(path);
-  if (!f) return SimStatus(Error::kIoError, "cannot write " + path);
-  f << text;
-  return SimStatus::Ok();
-}
 
 std::string PointsCsv(const PointSetResult& p) {
   std::string csv = "x_mm,y_mm,z_mm,dx_um,dy_um,dz_um,norm_um,true_dx_um,true_dy_um,true_dz_um\n";
@@ -141,18 +133,18 @@ std::vector<Phase> Phases(const DemoResult& r) {
 // The worn run's inputs of its tables, in the PC tool's formats: the ISO 230-2 runs (`volcomp
 // evaluate positioning`), their mean deviations (`volcomp build axis`), the tracker lattice
 // (`volcomp build tracker --lattice`), and every image the board received.
-SimStatus WriteWornData(const DemoResult& r, const std::string& dir) {
+Outcome WriteWornData(const DemoResult& r, const std::string& dir) {
   for (size_t a = 0; a < 3; ++a) {
     const std::string axis(1, "xyz"[a]);
-    VOLCOMP_SIM_TRY(
-        WriteText(dir + "/data/axis_run_" + axis + ".csv", PositioningCsv(r.axis_runs[a].data)));
+    VOLCOMP_TRY(tools::WriteTextFile(dir + "/data/axis_run_" + axis + ".csv",
+                                     PositioningCsv(r.axis_runs[a].data)));
     const model::PositioningData d = PairMeans(MeanDeviations(r.axis_runs[a].iso));
     std::string csv = "position_mm,dev_forward_um,dev_reverse_um\n";
     for (size_t i = 0; i < d.position.size(); ++i) {
       csv += FormatFixed(d.position[i], 4) + "," + FormatFixed(d.dev_forward[i], 4) + "," +
              FormatFixed(d.dev_reverse[i], 4) + "\n";
     }
-    VOLCOMP_SIM_TRY(WriteText(dir + "/data/axis_" + axis + ".csv", csv));
+    VOLCOMP_TRY(tools::WriteTextFile(dir + "/data/axis_" + axis + ".csv", csv));
   }
   const model::GridAxes& g = r.lattice.lattice;
   std::string csv = "x_cmd_mm,y_cmd_mm,z_cmd_mm,x_mm,y_mm,z_mm\n";
@@ -168,19 +160,19 @@ SimStatus WriteWornData(const DemoResult& r, const std::string& dir) {
       }
     }
   }
-  VOLCOMP_SIM_TRY(WriteText(dir + "/data/tracker_lattice.csv", csv));
+  VOLCOMP_TRY(tools::WriteTextFile(dir + "/data/tracker_lattice.csv", csv));
   std::string drift = "after,time_s,table,dx_um,dy_um,dz_um\n";
   for (const DriftCheck& c : r.drift) {
     drift += "\"" + c.after + "\"," + FormatFixed(c.time_s, 2) + "," + std::to_string(c.epoch) +
              "," + FormatFixed(c.reading_um.x, 3) + "," + FormatFixed(c.reading_um.y, 3) + "," +
              FormatFixed(c.reading_um.z, 3) + "\n";
   }
-  VOLCOMP_SIM_TRY(WriteText(dir + "/data/drift_checks.csv", drift));
+  VOLCOMP_TRY(tools::WriteTextFile(dir + "/data/drift_checks.csv", drift));
   for (size_t i = 0; i < r.earlier_tables.size(); ++i) {
-    image::WriteFileBytes(dir + "/table" + std::to_string(i + 1) + ".vct",
-                          r.earlier_tables[i].table.image);
+    VOLCOMP_TRY(tools::WriteFileBytes(dir + "/table" + std::to_string(i + 1) + ".vct",
+                                      r.earlier_tables[i].table.image));
   }
-  return SimStatus::Ok();
+  return Outcome::Ok();
 }
 
 void AddWornSections(report::HtmlPage* page, const DemoResult& r) {
@@ -222,35 +214,36 @@ void AddWornSections(report::HtmlPage* page, const DemoResult& r) {
 
 }  // namespace
 
-SimStatus WriteDemoReport(const DemoResult& r, const std::string& dir) {
-  const std::string index = report::PrepareReportPath(dir, "index.html");
-  report::PrepareReportPath(dir + "/data", "x");
-  report::PrepareReportPath(dir + "/programs", "x");
-  report::PrepareReportPath(dir + "/model", "x");
+Outcome WriteDemoReport(const DemoResult& r, const std::string& dir) {
+  for (const char* sub : {"", "/data", "/programs", "/model"})
+    VOLCOMP_TRY(report::PrepareReportPath(dir + sub, "index.html"));
 
   // Data files, in the formats the PC tool reads.
   for (const Phase& ph : Phases(r)) {
     const std::string tag = ph.tag;
     for (size_t a = 0; a < 3; ++a) {
-      VOLCOMP_SIM_TRY(WriteText(dir + "/data/gost_" + std::string(1, "xyz"[a]) + "_" + tag + ".csv",
-                                PositioningCsv(ph.results->gost[a].data)));
+      VOLCOMP_TRY(
+          tools::WriteTextFile(dir + "/data/gost_" + std::string(1, "xyz"[a]) + "_" + tag + ".csv",
+                               PositioningCsv(ph.results->gost[a].data)));
     }
-    VOLCOMP_SIM_TRY(WriteText(dir + "/data/diagonals_" + tag + ".csv", ph.results->diagonals.csv));
-    VOLCOMP_SIM_TRY(WriteText(dir + "/data/points_" + tag + ".csv", PointsCsv(ph.results->points)));
+    VOLCOMP_TRY(
+        tools::WriteTextFile(dir + "/data/diagonals_" + tag + ".csv", ph.results->diagonals.csv));
+    VOLCOMP_TRY(
+        tools::WriteTextFile(dir + "/data/points_" + tag + ".csv", PointsCsv(ph.results->points)));
   }
-  if (r.options.machine == MachineProfile::kWorn) VOLCOMP_SIM_TRY(WriteWornData(r, dir));
+  if (r.options.machine == MachineProfile::kWorn) VOLCOMP_TRY(WriteWornData(r, dir));
   for (size_t a = 0; a < 3; ++a) {
-    VOLCOMP_SIM_TRY(WriteText(dir + "/programs/gost_" + std::string(1, "xyz"[a]) + ".ngc",
-                              r.before.gost[a].program.gcode));
+    VOLCOMP_TRY(tools::WriteTextFile(dir + "/programs/gost_" + std::string(1, "xyz"[a]) + ".ngc",
+                                     r.before.gost[a].program.gcode));
   }
   for (const TestProgram& p : r.before.diagonals.programs) {
     std::string name = p.name;
     for (char& c : name) c = c == '+' ? 'P' : c == '-' ? 'N' : c;
-    VOLCOMP_SIM_TRY(WriteText(dir + "/programs/diagonal_" + name + ".ngc", p.gcode));
+    VOLCOMP_TRY(tools::WriteTextFile(dir + "/programs/diagonal_" + name + ".ngc", p.gcode));
   }
-  VOLCOMP_SIM_TRY(WriteText(dir + "/programs/points.ngc", r.before.points.program.gcode));
-  VOLCOMP_SIM_TRY(WriteModelFiles(r.measured_model, dir + "/model"));
-  image::WriteFileBytes(dir + "/table.vct", r.table.image);
+  VOLCOMP_TRY(tools::WriteTextFile(dir + "/programs/points.ngc", r.before.points.program.gcode));
+  VOLCOMP_TRY(WriteModelFiles(r.measured_model, dir + "/model"));
+  VOLCOMP_TRY(tools::WriteFileBytes(dir + "/table.vct", r.table.image));
 
   report::HtmlPage page("volcomp-sim demo report");
   page.Heading(1, "volcomp-sim demo: volumetric compensation of a simulated machine");
@@ -369,8 +362,7 @@ SimStatus WriteDemoReport(const DemoResult& r, const std::string& dir) {
       metrology::AddPositioningSection(&page, ph.results->gost[a].gost);
     }
   }
-  page.WriteFile(index);
-  return SimStatus::Ok();
+  return tools::WriteTextFile(dir + "/index.html", page.Render());
 }
 
 }  // namespace volcomp::sim

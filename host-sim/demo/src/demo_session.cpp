@@ -56,8 +56,8 @@ std::string GostLine(const char* axis, const AxisFigures& f) {
   return b;
 }
 
-SimStatus AfterTest(Session& s, DemoResult& r, const std::string& test) {
-  return s.drift_checks ? CheckDrift(s, r, test) : SimStatus::Ok();
+Outcome AfterTest(Session& s, DemoResult& r, const std::string& test) {
+  return s.drift_checks ? CheckDrift(s, r, test) : Outcome::Ok();
 }
 
 }  // namespace
@@ -72,7 +72,7 @@ std::string Fmt(const char* format, double a) {
   return b;
 }
 
-SimResult<Layout> MakeLayout(const Machine& m, double margin) {
+Expected<Layout> MakeLayout(const Machine& m, double margin) {
   Layout l;
   for (int a = 0; a < 3; ++a) {
     const size_t i = static_cast<size_t>(a);
@@ -86,16 +86,16 @@ SimResult<Layout> MakeLayout(const Machine& m, double margin) {
     // The model's lever arms start where all commands are 0, so the parametric lines must meet
     // there (see docs/simulator.md): the tables must cover position 0.
     if (!(l.lo[i] <= 0.0 && 0.0 <= l.hi[i])) {
-      return SimStatus(Error::kInvalidArgument,
-                       std::string("the model's ") + "XYZ"[a] +
-                           " table must include position 0 (the reference point)");
+      return Fail(Error::kInvalidArgument,
+                  std::string("the model's ") + "XYZ"[a] +
+                      " table must include position 0 (the reference point)");
     }
     l.reference[i] = 0.0;
   }
   return l;
 }
 
-void PlanTests(Session& s, Random& rng) {
+Outcome PlanTests(Session& s, Random& rng) {
   const Layout& l = s.layout;
   for (int a = 0; a < 3; ++a) {
     const size_t i = static_cast<size_t>(a);
@@ -105,7 +105,7 @@ void PlanTests(Session& s, Random& rng) {
     tp.count = s.o.gost_targets;
     tp.pitch = s.o.gost_pitch_mm;
     tp.seed = static_cast<uint32_t>(rng.Next() & 0x7FFFFFFF);
-    s.gost[i].targets_mm = metrology::PlanGostTargets(tp);
+    VOLCOMP_TRY_ASSIGN(s.gost[i].targets_mm, metrology::PlanGostTargets(tp));
     s.gost[i].line_point_mm = l.centre;
     s.gost[i].cycle.runs = s.o.gost_runs;
     s.gost[i].cycle.dwell_s = s.o.dwell_s;
@@ -117,6 +117,7 @@ void PlanTests(Session& s, Random& rng) {
     for (size_t i = 0; i < 3; ++i) p[i] = std::round(rng.Uniform(l.lo[i], l.hi[i]) * 1e3) / 1e3;
     s.points.push_back(p);
   }
+  return Outcome::Ok();
 }
 
 void PrintSetup(Session& s, const DemoResult& r, const WorldOptions& wo) {
@@ -137,17 +138,17 @@ void PrintSetup(Session& s, const DemoResult& r, const WorldOptions& wo) {
                    << " kbit/s; node " << static_cast<int>(wo.board.node_id) << "\n";
 }
 
-SimStatus Home(World& world) {
+Outcome Home(World& world) {
   world.cnc().QueueHome(7);
   if (!world.RunUntilCncIdle(120 * kSecond_ns)) {
-    return SimStatus(Error::kNotReady, "homing did not finish within 120 s");
+    return Fail(Error::kNotReady, "homing did not finish within 120 s");
   }
-  return SimStatus::Ok();
+  return Outcome::Ok();
 }
 
-SimStatus HomeAtPowerUp(Session& s, DemoResult& r) {
+Outcome HomeAtPowerUp(Session& s, DemoResult& r) {
   const auto t0 = Clock::now();
-  VOLCOMP_SIM_TRY(Home(s.world));
+  VOLCOMP_TRY(Home(s.world));
   s.world.RunFor(20000000);
   const ControlTick& e = s.world.board().app().control_tick();
   bool agree = e.all_referenced();
@@ -162,21 +163,21 @@ SimStatus HomeAtPowerUp(Session& s, DemoResult& r) {
                   std::to_string(axis[2].home_position_steps) +
                   " steps); board and CNC positions " + (agree ? "agree" : "DISAGREE") +
                   Fmt("   (%.1f s)", Since(t0)));
-  return SimStatus::Ok();
+  return Outcome::Ok();
 }
 
-SimResult<PhaseResults> MeasurePhase(Session& s, DemoResult& r) {
+Expected<PhaseResults> MeasurePhase(Session& s, DemoResult& r) {
   PhaseResults p;
   for (int a = 0; a < 3; ++a) {
     const size_t i = static_cast<size_t>(a);
     const auto t0 = Clock::now();
-    VOLCOMP_SIM_ASSIGN(p.gost[i], MeasureGostAxis(s.world, s.laser, a, s.gost[i]));
+    VOLCOMP_TRY_ASSIGN(p.gost[i], MeasureGostAxis(s.world, s.laser, a, s.gost[i]));
     s.progress.Line(GostLine(a == 0   ? "X"
                              : a == 1 ? "Y"
                                       : "Z",
                              p.Gost()[i]) +
                     Fmt("   (%.1f s)", Since(t0)));
-    VOLCOMP_SIM_TRY(AfterTest(s, r, std::string("GOST 27843 ") + "XYZ"[a]));
+    VOLCOMP_TRY(AfterTest(s, r, std::string("GOST 27843 ") + "XYZ"[a]));
   }
   {
     const auto t0 = Clock::now();
@@ -184,7 +185,7 @@ SimResult<PhaseResults> MeasurePhase(Session& s, DemoResult& r) {
     c.runs = s.o.diagonal_runs;
     c.dwell_s = s.o.dwell_s;
     c.feed_mm_s = s.o.test_feed_mm_s;
-    VOLCOMP_SIM_ASSIGN(
+    VOLCOMP_TRY_ASSIGN(
         p.diagonals,
         MeasureDiagonals(s.world, s.laser, BodyDiagonals(s.layout.inner_lo, s.layout.inner_hi),
                          s.o.diagonal_targets, c));
@@ -195,11 +196,11 @@ SimResult<PhaseResults> MeasurePhase(Session& s, DemoResult& r) {
     s.progress.Line("ISO 230-6 body diagonals, E_i (um): " + e);
     s.progress.Line(Fmt("ISO 230-6 E_d = %.3f um", p.Ed()) + Fmt(", B_d = %.3f um", p.Bd()) +
                     Fmt("   (%.1f s)", Since(t0)));
-    VOLCOMP_SIM_TRY(AfterTest(s, r, "ISO 230-6 diagonals"));
+    VOLCOMP_TRY(AfterTest(s, r, "ISO 230-6 diagonals"));
   }
   {
     const auto t0 = Clock::now();
-    VOLCOMP_SIM_ASSIGN(p.points, MeasurePointSet(s.world, s.tracker, s.points, s.o.dwell_s));
+    VOLCOMP_TRY_ASSIGN(p.points, MeasurePointSet(s.world, s.tracker, s.points, s.o.dwell_s));
     char b[200];
     std::snprintf(b, sizeof b,
                   "volumetric error at %zu random points (tracker): max %.2f um, rms %.2f um "
@@ -207,12 +208,12 @@ SimResult<PhaseResults> MeasurePhase(Session& s, DemoResult& r) {
                   p.points.targets_mm.size(), p.points.max_um, p.points.rms_um,
                   p.points.true_max_um, p.points.true_rms_um, Since(t0));
     s.progress.Line(b);
-    VOLCOMP_SIM_TRY(AfterTest(s, r, "random points"));
+    VOLCOMP_TRY(AfterTest(s, r, "random points"));
   }
   return p;
 }
 
-SimStatus MeasureErrorMotions(Session& s, DemoResult& r) {
+Outcome MeasureErrorMotions(Session& s, DemoResult& r) {
   const auto t0 = Clock::now();
   const Layout& l = s.layout;
   for (int a = 0; a < 3; ++a) {
@@ -224,7 +225,7 @@ SimStatus MeasureErrorMotions(Session& s, DemoResult& r) {
     c.feed_mm_s = s.o.test_feed_mm_s;
     const std::vector<double> pos =
         ParametricPositions(l.lo[i], l.hi[i], l.reference[i], s.o.parametric_step_mm);
-    VOLCOMP_SIM_ASSIGN(r.parametric[i],
+    VOLCOMP_TRY_ASSIGN(r.parametric[i],
                        MeasureParametric(s.world, s.laser, a, l.reference, pos, c));
     double lin = 0, ang = 0, dev_lin = 0;
     for (size_t k = 0; k < pos.size(); ++k) {
@@ -240,19 +241,20 @@ SimStatus MeasureErrorMotions(Session& s, DemoResult& r) {
                   "angular up to %.1f urad (readings minus model: linear <= %.3f um)",
                   "XYZ"[a], pos.size(), s.o.parametric_step_mm, lin, ang, dev_lin);
     s.progress.Line(b);
-    VOLCOMP_SIM_TRY(AfterTest(s, r, std::string("error motions of ") + "XYZ"[a]));
+    VOLCOMP_TRY(AfterTest(s, r, std::string("error motions of ") + "XYZ"[a]));
   }
   s.progress.Line(Fmt("(%.1f s)", Since(t0)));
-  return SimStatus::Ok();
+  return Outcome::Ok();
 }
 
-SimResult<model::GridSection> BuildModelGrid(Session& s, DemoResult& r) {
-  VOLCOMP_SIM_ASSIGN(r.measured_model,
+Expected<builders::GridSection> BuildModelGrid(Session& s, DemoResult& r) {
+  VOLCOMP_TRY_ASSIGN(r.measured_model,
                      ModelFromParametric(r.parametric, s.world.machine().model().chain));
   const double h = s.o.grid_spacing_mm;
-  model::GridSection grid =
-      model::BuildGridSection(LatticeOptions(s.layout.lo, s.layout.hi, {h, h, h}, s.step_mm()),
-                              ImageAxes(s.step_mm()), model::ModelGridSource(r.measured_model));
+  VOLCOMP_TRY_ASSIGN(
+      builders::GridSection grid,
+      BuildModelGridSection(r.measured_model,
+                            LatticeOptions(s.layout.lo, s.layout.hi, {h, h, h}, s.step_mm())));
   const model::GridAxes& g = grid.build.grid.axes;
   s.progress.Line(
       "source: the measured six error motions of each axis (18 functions; the three "
@@ -280,10 +282,9 @@ void PrintImageLine(Session& s, const TableBuildResult& t, Clock::time_point t0)
   s.progress.Line(b);
 }
 
-SimResult<UploadReport> Upload(Session& s, const TableBuildResult& table) {
+Expected<UploadReport> Upload(Session& s, const TableBuildResult& table) {
   const auto t0 = Clock::now();
-  UploadReport up;
-  VOLCOMP_SIM_ASSIGN(up, UploadTable(s.world, table.image, s.progress.out()));
+  VOLCOMP_TRY_ASSIGN(const UploadReport up, UploadTable(s.world, table.image, s.progress.out()));
   char b[240];
   std::snprintf(b, sizeof b,
                 "%u bytes in %.2f s of bus time (%.1f kB/s, %llu frames, %u segments resent); "
@@ -295,12 +296,11 @@ SimResult<UploadReport> Upload(Session& s, const TableBuildResult& table) {
   return up;
 }
 
-SimResult<ActivationReport> Activate(Session& s, uint32_t crc32, bool home) {
+Expected<ActivationReport> Activate(Session& s, uint32_t crc32, bool home) {
   const auto t0 = Clock::now();
-  if (home) VOLCOMP_SIM_TRY(Home(s.world));
+  if (home) VOLCOMP_TRY(Home(s.world));
   s.world.RunFor(150000000);  // activation needs 100 ms without input steps
-  ActivationReport act;
-  VOLCOMP_SIM_ASSIGN(act, ActivateTable(s.world, crc32));
+  VOLCOMP_TRY_ASSIGN(ActivationReport act, ActivateTable(s.world, crc32));
   ++s.epoch;
   s.world.RunFor(500000000);  // the correction ramps in within the rate limits
   const uint16_t state = ReadDeviceState(s.world);
@@ -313,15 +313,15 @@ SimResult<ActivationReport> Activate(Session& s, uint32_t crc32, bool home) {
   return act;
 }
 
-SimResult<StagedTable> StageTable(Session& s,
-                                  const std::string& label,
-                                  TableBuildResult table,
-                                  bool home) {
+Expected<StagedTable> StageTable(Session& s,
+                                 const std::string& label,
+                                 TableBuildResult table,
+                                 bool home) {
   StagedTable t;
   t.label = label;
   t.table = std::move(table);
-  VOLCOMP_SIM_ASSIGN(t.upload, Upload(s, t.table));
-  VOLCOMP_SIM_ASSIGN(t.activation, Activate(s, t.table.crc32, home));
+  VOLCOMP_TRY_ASSIGN(t.upload, Upload(s, t.table));
+  VOLCOMP_TRY_ASSIGN(t.activation, Activate(s, t.table.crc32, home));
   return t;
 }
 

@@ -42,7 +42,7 @@ struct Layout {
   Point3 reference;  // where the parametric lines meet: the command origin
 };
 
-SimResult<Layout> MakeLayout(const Machine& m, double margin);
+Expected<Layout> MakeLayout(const Machine& m, double margin);
 
 // Everything one demo run shares: the installation, the instruments, the test plans.
 struct Session {
@@ -66,30 +66,30 @@ struct Session {
 };
 
 // The GOST 27843 plans of the three axes and the random points (from `rng`, in this order).
-void PlanTests(Session& s, Random& rng);
+Outcome PlanTests(Session& s, Random& rng);
 void PrintSetup(Session& s, const DemoResult& r, const WorldOptions& wo);
 
-SimStatus Home(World& world);
+Outcome Home(World& world);
 // Power-up homing; checks that the board and the CNC agree on the positions.
-SimStatus HomeAtPowerUp(Session& s, DemoResult& r);
+Outcome HomeAtPowerUp(Session& s, DemoResult& r);
 // GOST 27843 per axis, ISO 230-6 body diagonals, random points (a drift check after each test
 // when the session has them).
-SimResult<PhaseResults> MeasurePhase(Session& s, DemoResult& r);
+Expected<PhaseResults> MeasurePhase(Session& s, DemoResult& r);
 // The six error motions of each axis along a line through the reference point.
-SimStatus MeasureErrorMotions(Session& s, DemoResult& r);
+Outcome MeasureErrorMotions(Session& s, DemoResult& r);
 // The measured model and its GRID3 section (ModelGridSource, BuildGridSection).
-SimResult<model::GridSection> BuildModelGrid(Session& s, DemoResult& r);
+Expected<builders::GridSection> BuildModelGrid(Session& s, DemoResult& r);
 // Prints the image's size, encoding and CRC-32.
 void PrintImageLine(Session& s, const TableBuildResult& t, Clock::time_point t0);
 // Upload over the simulated bus with the PC tool's SDO code; the board verifies it.
-SimResult<UploadReport> Upload(Session& s, const TableBuildResult& table);
+Expected<UploadReport> Upload(Session& s, const TableBuildResult& table);
 // (`home`: home again, the board references,) rest, activate, let the correction ramp in.
-SimResult<ActivationReport> Activate(Session& s, uint32_t crc32, bool home);
+Expected<ActivationReport> Activate(Session& s, uint32_t crc32, bool home);
 // Upload, then activation.
-SimResult<StagedTable> StageTable(Session& s,
-                                  const std::string& label,
-                                  TableBuildResult table,
-                                  bool home);
+Expected<StagedTable> StageTable(Session& s,
+                                 const std::string& label,
+                                 TableBuildResult table,
+                                 bool home);
 // Rapid moves with X, Y and Z each at 1 MHz through the compensating board.
 void RunSpeedBenchmark(Session& s, DemoResult& r);
 // The step audit, latency and rates of the whole run.
@@ -97,7 +97,7 @@ void CollectFigures(World& world, DemoResult& r);
 
 // Worn machine (demo_worn.cpp).
 // Reads the drift check point with the tracker (registers the tracker at the first call).
-SimStatus CheckDrift(Session& s, DemoResult& r, const std::string& after);
+Outcome CheckDrift(Session& s, DemoResult& r, const std::string& after);
 // Drift between checks `from` and `to` (indices into r.drift): the sum of the differences of
 // consecutive checks under the same table; `span_s` gets the time covered, `gap_s` the time of
 // table changes in between (not covered).
@@ -107,13 +107,13 @@ model::Vec3 DriftBetween(
 void PrintWarmUp(Session& s);
 // Bidirectional ISO 230-2 runs along the centre lines at the compensation pitch, and the AXIS1D
 // tables from their mean deviations (BuildAxisSection).
-SimResult<std::vector<model::AxisSection>> MeasureAxisTables(Session& s, DemoResult& r);
+Expected<std::vector<builders::AxisSection>> MeasureAxisTables(Session& s, DemoResult& r);
 // Tracker readings at every node of a lattice over the travel, measured through the table in
 // force (`in_force`, its image), and the GRID3 section that replaces that table's
 // (GridOfImage, TrackerLatticeThroughGridSource, BuildGridSection).
-SimResult<model::GridSection> MeasureTrackerLattice(Session& s,
-                                                    DemoResult& r,
-                                                    const std::vector<uint8_t>& in_force);
+Expected<builders::GridSection> MeasureTrackerLattice(Session& s,
+                                                      DemoResult& r,
+                                                      const std::vector<uint8_t>& in_force);
 // The error budget of the last phase and the goals of the worn profile.
 void EvaluateWornGoals(Session& s, DemoResult& r, size_t first_check_of_last_table);
 

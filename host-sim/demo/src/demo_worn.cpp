@@ -5,17 +5,15 @@
 #include <cstdio>
 
 #include "demo_session.hpp"
-#include "volcomp/model/image_grid.hpp"
 
 namespace volcomp::sim::demo {
 
-SimStatus CheckDrift(Session& s, DemoResult& r, const std::string& after) {
+Outcome CheckDrift(Session& s, DemoResult& r, const std::string& after) {
   // Three approaches, each from 5 mm below on every axis (by input motion, so the lost motion is
   // taken up the same way whatever moved before), averaging the settling scatter.
   const Point3 cp = s.check_point;
   const TestProgram p = PointSetProgram("drift check", {cp, cp, cp}, s.o.dwell_s, 5);
-  std::vector<StopState> stops;
-  VOLCOMP_SIM_ASSIGN(stops, RunTestProgram(s.world, p));
+  VOLCOMP_TRY_ASSIGN(const std::vector<StopState> stops, RunTestProgram(s.world, p));
   if (r.drift.empty()) s.drift_tracker.Zero(stops[0].q_mm, stops[0].cmd_mm);
   model::Vec3 sum;
   int n = 0;
@@ -30,7 +28,7 @@ SimStatus CheckDrift(Session& s, DemoResult& r, const std::string& after) {
   c.epoch = s.epoch;
   c.reading_um = (1e3 / n) * sum;
   r.drift.push_back(c);
-  return SimStatus::Ok();
+  return Outcome::Ok();
 }
 
 model::Vec3 DriftBetween(
@@ -77,9 +75,8 @@ std::vector<double> PitchTargets(double lo, double hi, double pitch) {
 
 }  // namespace
 
-SimResult<std::vector<model::AxisSection>> MeasureAxisTables(Session& s, DemoResult& r) {
-  std::vector<model::AxisSection> tables;
-  const std::vector<image::AxisDef> axes = ImageAxes(s.step_mm());
+Expected<std::vector<builders::AxisSection>> MeasureAxisTables(Session& s, DemoResult& r) {
+  std::vector<builders::AxisSection> tables;
   const double quarter_lead = 0.25 * s.o.gost_pitch_mm;
   for (int a = 0; a < 3; ++a) {
     const size_t i = static_cast<size_t>(a);
@@ -99,15 +96,14 @@ SimResult<std::vector<model::AxisSection>> MeasureAxisTables(Session& s, DemoRes
     plan.cycle.runs = s.o.gost_runs;
     plan.cycle.dwell_s = s.o.dwell_s;
     plan.cycle.feed_mm_s = s.o.test_feed_mm_s;
-    VOLCOMP_SIM_ASSIGN(r.axis_runs[i], MeasureGostAxis(s.world, s.laser, a, plan));
-    VOLCOMP_SIM_TRY(CheckDrift(s, r, std::string("ISO 230-2 run ") + "XYZ"[a]));
-    model::Axis1dOptions o;
-    o.reverse = model::ReverseMode::kTables;
-    o.spacing = s.o.axis_run_pitch_mm;
+    VOLCOMP_TRY_ASSIGN(r.axis_runs[i], MeasureGostAxis(s.world, s.laser, a, plan));
+    VOLCOMP_TRY(CheckDrift(s, r, std::string("ISO 230-2 run ") + "XYZ"[a]));
     // `volcomp build axis --reverse tables` on the pairs' mean deviations x̄↑, x̄↓.
-    tables.push_back(model::BuildAxisSection(PairMeans(MeanDeviations(r.axis_runs[i].iso)), o,
-                                             axes[i], static_cast<uint8_t>(a), false));
-    const model::Axis1dTable& t = tables.back().table;
+    VOLCOMP_TRY_ASSIGN(builders::AxisSection table,
+                       BuildAxisTable(PairMeans(MeanDeviations(r.axis_runs[i].iso)), a,
+                                      s.o.axis_run_pitch_mm, s.step_mm()));
+    tables.push_back(std::move(table));
+    const builders::Axis1dTable& t = tables.back().table;
     double reversal = 0, largest = 0;
     for (size_t k = 0; k < t.forward.size(); ++k) {
       reversal += (t.forward[k] - t.reverse[k]) / static_cast<double>(t.forward.size());
@@ -125,9 +121,9 @@ SimResult<std::vector<model::AxisSection>> MeasureAxisTables(Session& s, DemoRes
   return tables;
 }
 
-SimResult<model::GridSection> MeasureTrackerLattice(Session& s,
-                                                    DemoResult& r,
-                                                    const std::vector<uint8_t>& in_force) {
+Expected<builders::GridSection> MeasureTrackerLattice(Session& s,
+                                                      DemoResult& r,
+                                                      const std::vector<uint8_t>& in_force) {
   const auto t0 = Clock::now();
   const double machine_t0 = s.world.machine().time_s();
   const double h = s.o.lattice_spacing_mm;
@@ -167,9 +163,9 @@ SimResult<model::GridSection> MeasureTrackerLattice(Session& s,
   // Every node approached from 2 mm below on every axis: the input of each axis moves positive
   // into the node, so the board's AXIS1D direction and the lost motion of the carriages agree
   // even where table 2's GRID3 moves an axis whose input stands still (docs/simulator.md §6).
-  PointSetResult ps;
-  VOLCOMP_SIM_ASSIGN(ps, MeasurePointSet(s.world, s.tracker, points, s.o.dwell_s, 2.0));
-  VOLCOMP_SIM_TRY(CheckDrift(s, r, "tracker lattice"));
+  VOLCOMP_TRY_ASSIGN(const PointSetResult ps,
+                     MeasurePointSet(s.world, s.tracker, points, s.o.dwell_s, 2.0));
+  VOLCOMP_TRY(CheckDrift(s, r, "tracker lattice"));
   data.position_mm.assign(index.size(), model::Vec3{});
   for (size_t n = 0; n < index.size(); ++n) {
     const Point3& a = ps.targets_mm[2 * n];
@@ -180,11 +176,10 @@ SimResult<model::GridSection> MeasureTrackerLattice(Session& s,
   }
   const double gs = s.o.grid_spacing_mm;
   // `volcomp build tracker --lattice FILE --through TABLE2` on these readings.
-  const image::LoadedImage table_in_force(in_force, "table 2");
-  model::GridSection grid = model::BuildGridSection(
-      LatticeOptions(s.layout.lo, s.layout.hi, {gs, gs, gs}, s.step_mm()), ImageAxes(s.step_mm()),
-      model::TrackerLatticeThroughGridSource(model::TrackerLattice(data),
-                                             model::GridOfImage(table_in_force, "table 2")));
+  VOLCOMP_TRY_ASSIGN(
+      builders::GridSection grid,
+      BuildTrackerLatticeGridSection(
+          data, in_force, LatticeOptions(s.layout.lo, s.layout.hi, {gs, gs, gs}, s.step_mm())));
   const model::GridAxes& gg = grid.build.grid.axes;
   char b[400];
   std::snprintf(b, sizeof b,

@@ -20,10 +20,23 @@ std::string Fixed(double v, int decimals) {
   return buf;
 }
 
+// GOST 27843 and ISO 230-2 evaluations of one set of readings.
+Outcome EvaluateAxis(const metrology::GroupingOptions& grouping, GostAxisResult& r) {
+  metrology::EvaluationOptions gost;
+  gost.standard = metrology::Standard::kGost27843;
+  metrology::EvaluationOptions iso;
+  iso.standard = metrology::Standard::kIso230_2;
+  VOLCOMP_TRY_ASSIGN(const metrology::PositioningSet set,
+                     metrology::GroupReadings(r.data, grouping));
+  VOLCOMP_TRY_ASSIGN(r.gost, metrology::EvaluatePositioning(set, gost));
+  VOLCOMP_TRY_ASSIGN(r.iso, metrology::EvaluatePositioning(set, iso));
+  return Outcome::Ok();
+}
+
 }  // namespace
 
-SimResult<std::vector<StopState>> RunTestProgram(World& world, const TestProgram& program) {
-  const Program blocks = ParseGcode(program.gcode, program.name);
+Expected<std::vector<StopState>> RunTestProgram(World& world, const TestProgram& program) {
+  VOLCOMP_TRY_ASSIGN(const Program blocks, ParseGcode(program.gcode, program.name));
   std::vector<StopState> states;
   world.cnc().set_dwell_handler([&](uint64_t) {
     StopState s;
@@ -37,25 +50,25 @@ SimResult<std::vector<StopState>> RunTestProgram(World& world, const TestProgram
   const bool done = world.RunUntilCncIdle(3600ull * 1000000000ull);
   world.cnc().set_dwell_handler({});
   if (!done) {
-    return SimStatus(Error::kNotReady, program.name + ": the CNC did not finish the program");
+    return Fail(Error::kNotReady, program.name + ": the CNC did not finish the program");
   }
   if (states.size() != program.stops.size()) {
-    return SimStatus(Error::kNotReady, program.name + ": " + std::to_string(states.size()) +
-                                           " dwells for " + std::to_string(program.stops.size()) +
-                                           " stops");
+    return Fail(Error::kNotReady, program.name + ": " + std::to_string(states.size()) +
+                                      " dwells for " + std::to_string(program.stops.size()) +
+                                      " stops");
   }
   return states;
 }
 
-SimResult<GostAxisResult> MeasureGostAxis(World& world,
-                                          LaserInterferometer& laser,
-                                          int axis,
-                                          const GostPlan& plan) {
+Expected<GostAxisResult> MeasureGostAxis(World& world,
+                                         LaserInterferometer& laser,
+                                         int axis,
+                                         const GostPlan& plan) {
   GostAxisResult r;
   r.axis = axis;
-  r.program = GostAxisProgram(axis, plan.line_point_mm, plan.targets_mm, plan.cycle);
-  std::vector<StopState> states;
-  VOLCOMP_SIM_ASSIGN(states, RunTestProgram(world, r.program));
+  VOLCOMP_TRY_ASSIGN(r.program,
+                     GostAxisProgram(axis, plan.line_point_mm, plan.targets_mm, plan.cycle));
+  VOLCOMP_TRY_ASSIGN(const std::vector<StopState> states, RunTestProgram(world, r.program));
   model::Vec3 beam;
   beam[axis] = 1;
   r.data.source = r.program.name;
@@ -76,30 +89,23 @@ SimResult<GostAxisResult> MeasureGostAxis(World& world,
   }
   metrology::GroupingOptions grouping;  // GOST 27843 §2.10: 5 approaches (fewer only if asked)
   grouping.min_approaches = std::max(2, std::min(5, plan.cycle.runs));
-  const metrology::PositioningSet set = metrology::GroupReadings(r.data, grouping);
-  metrology::EvaluationOptions gost;
-  gost.standard = metrology::Standard::kGost27843;
-  r.gost = metrology::EvaluatePositioning(set, gost);
-  metrology::EvaluationOptions iso;
-  iso.standard = metrology::Standard::kIso230_2;
-  r.iso = metrology::EvaluatePositioning(set, iso);
+  VOLCOMP_TRY(EvaluateAxis(grouping, r));
   return r;
 }
 
-SimResult<DiagonalSetResult> MeasureDiagonals(World& world,
-                                              LaserInterferometer& laser,
-                                              const std::vector<BodyDiagonal>& diagonals,
-                                              int targets_per_diagonal,
-                                              const CycleOptions& cycle) {
+Expected<DiagonalSetResult> MeasureDiagonals(World& world,
+                                             LaserInterferometer& laser,
+                                             const std::vector<BodyDiagonal>& diagonals,
+                                             int targets_per_diagonal,
+                                             const CycleOptions& cycle) {
   DiagonalSetResult r;
   r.csv = "diagonal,target_mm,direction,run,deviation_um\n";
   for (const BodyDiagonal& d : diagonals) {
     double len2 = 0;
     for (size_t a = 0; a < 3; ++a) len2 += (d.p2[a] - d.p1[a]) * (d.p2[a] - d.p1[a]);
     const double increment = std::sqrt(len2) / std::max(1, targets_per_diagonal - 1);
-    const TestProgram p = DiagonalProgram(d.name, d.p1, d.p2, increment, cycle);
-    std::vector<StopState> states;
-    VOLCOMP_SIM_ASSIGN(states, RunTestProgram(world, p));
+    VOLCOMP_TRY_ASSIGN(const TestProgram p, DiagonalProgram(d.name, d.p1, d.p2, increment, cycle));
+    VOLCOMP_TRY_ASSIGN(const std::vector<StopState> states, RunTestProgram(world, p));
     const model::Vec3 beam = ToVec(p.direction);
     for (const StopState& s : states) {
       if (s.stop.datum) {
@@ -113,22 +119,22 @@ SimResult<DiagonalSetResult> MeasureDiagonals(World& world,
     }
     r.programs.push_back(p);
   }
-  const tools::CsvTable table = tools::CsvTable::ParseString(r.csv, "ISO 230-6 diagonals");
+  VOLCOMP_TRY_ASSIGN(const tools::CsvTable table,
+                     tools::CsvTable::ReadString(r.csv, "ISO 230-6 diagonals"));
   metrology::GroupingOptions grouping;  // ISO 230-6 §5.3: 5 approaches (fewer only if asked)
   grouping.min_approaches = std::max(2, std::min(5, cycle.runs));
-  r.evaluation = metrology::EvaluateDiagonals(table, grouping);
+  VOLCOMP_TRY_ASSIGN(r.evaluation, metrology::EvaluateDiagonals(table, grouping));
   return r;
 }
 
-SimResult<PointSetResult> MeasurePointSet(World& world,
-                                          LaserTracker& tracker,
-                                          const std::vector<Point3>& points_mm,
-                                          double dwell_s,
-                                          double approach_mm) {
+Expected<PointSetResult> MeasurePointSet(World& world,
+                                         LaserTracker& tracker,
+                                         const std::vector<Point3>& points_mm,
+                                         double dwell_s,
+                                         double approach_mm) {
   PointSetResult r;
   r.program = PointSetProgram("volumetric point set", points_mm, dwell_s, approach_mm);
-  std::vector<StopState> states;
-  VOLCOMP_SIM_ASSIGN(states, RunTestProgram(world, r.program));
+  VOLCOMP_TRY_ASSIGN(const std::vector<StopState> states, RunTestProgram(world, r.program));
   double sum2 = 0, true_sum2 = 0;
   for (const StopState& s : states) {
     if (s.stop.datum) {
@@ -152,12 +158,12 @@ SimResult<PointSetResult> MeasurePointSet(World& world,
   return r;
 }
 
-SimResult<ParametricResult> MeasureParametric(World& world,
-                                              LaserInterferometer& laser,
-                                              int axis,
-                                              const Point3& reference_mm,
-                                              const std::vector<double>& positions_mm,
-                                              const CycleOptions& cycle) {
+Expected<ParametricResult> MeasureParametric(World& world,
+                                             LaserInterferometer& laser,
+                                             int axis,
+                                             const Point3& reference_mm,
+                                             const std::vector<double>& positions_mm,
+                                             const CycleOptions& cycle) {
   ParametricResult r;
   r.axis = axis;
   r.position_mm = positions_mm;
@@ -167,12 +173,12 @@ SimResult<ParametricResult> MeasureParametric(World& world,
     if (std::fabs(positions_mm[j] - ref) < 1e-9) ref_target = static_cast<int>(j) + 1;
   }
   if (ref_target < 0) {
-    return SimStatus(Error::kInvalidArgument,
-                     "parametric run: the positions must include the reference point");
+    return Fail(Error::kInvalidArgument,
+                "parametric run: the positions must include the reference point");
   }
-  const TestProgram p = ParametricProgram(axis, reference_mm, positions_mm, cycle);
-  std::vector<StopState> states;
-  VOLCOMP_SIM_ASSIGN(states, RunTestProgram(world, p));
+  VOLCOMP_TRY_ASSIGN(const TestProgram p,
+                     ParametricProgram(axis, reference_mm, positions_mm, cycle));
+  VOLCOMP_TRY_ASSIGN(const std::vector<StopState> states, RunTestProgram(world, p));
   std::map<int, std::pair<SixDofReading, int>> sum, truth;
   for (const StopState& s : states) {
     if (s.stop.datum) {
@@ -194,10 +200,15 @@ SimResult<ParametricResult> MeasureParametric(World& world,
     m.angular_urad = (1.0 / e.second) * e.first.angular_urad;
     return m;
   };
-  const SixDofReading m0 = mean(sum.at(ref_target)), t0 = mean(truth.at(ref_target));
+  for (int target = 1; target <= static_cast<int>(positions_mm.size()); ++target) {
+    if (sum.count(target) == 0) {
+      return Fail(Error::kNotReady, p.name + ": no reading at target " + std::to_string(target));
+    }
+  }
+  const SixDofReading m0 = mean(sum[ref_target]), t0 = mean(truth[ref_target]);
   for (size_t j = 0; j < positions_mm.size(); ++j) {
     const int target = static_cast<int>(j) + 1;
-    SixDofReading m = mean(sum.at(target)), t = mean(truth.at(target));
+    SixDofReading m = mean(sum[target]), t = mean(truth[target]);
     m.linear_um -= m0.linear_um;
     m.angular_urad -= m0.angular_urad;
     t.linear_um -= t0.linear_um;

@@ -3,32 +3,37 @@
 
 #include <cstdio>
 #include <fstream>
+#include <utility>
 
 #include "volcomp/base/byte_order.hpp"
+#include "volcomp/builders/grid_section.hpp"
+#include "volcomp/builders/grid_source.hpp"
+#include "volcomp/builders/image_glue.hpp"
+#include "volcomp/builders/image_grid.hpp"
 #include "volcomp/image/image_builder.hpp"
-#include "volcomp/model/grid_section.hpp"
-#include "volcomp/model/image_glue.hpp"
+#include "volcomp/image/image_reader.hpp"
 
 namespace volcomp::sim {
 
-SimResult<model::Model> ModelFromParametric(const std::array<ParametricResult, 3>& runs,
-                                            const model::KinematicChain& chain) {
+Expected<model::Model> ModelFromParametric(const std::array<ParametricResult, 3>& runs,
+                                           const model::KinematicChain& chain) {
   model::Model m;
   m.name = "measured (virtual 6-DOF laser, parametric runs through the reference point)";
   for (int a = 0; a < 3; ++a) {
     const ParametricResult& r = runs[static_cast<size_t>(a)];
     if (r.axis != a) {
-      return SimStatus(Error::kInvalidArgument, "parametric runs are not X, Y, Z in order");
+      return Fail(Error::kInvalidArgument, "parametric runs are not X, Y, Z in order");
     }
     std::vector<model::AxisErrorSample> rows;
     for (const SixDofReading& s : r.measured) rows.push_back({s.linear_um, s.angular_urad});
-    m.axes[static_cast<size_t>(a)] = model::AxisErrorTable(r.position_mm, rows);
+    VOLCOMP_TRY_ASSIGN(m.axes[static_cast<size_t>(a)],
+                       model::AxisErrorTable::Create(r.position_mm, rows));
   }
   m.chain = chain;
   m.chain.workpiece_errors = model::ErrorSide::kRelative;  // measured tool vs workpiece
   m.formulation = model::Formulation::kPhysical;
   m.order = model::Order::kSecond;
-  model::ValidateModel(m);
+  VOLCOMP_TRY(model::ValidateModel(m));
   return m;
 }
 
@@ -44,11 +49,11 @@ std::vector<image::AxisDef> ImageAxes(const std::array<double, 3>& step_mm) {
   return axes;
 }
 
-model::GridBuildOptions LatticeOptions(const std::array<double, 3>& lo_mm,
-                                       const std::array<double, 3>& hi_mm,
-                                       const std::array<double, 3>& spacing_mm,
-                                       const std::array<double, 3>& step_mm) {
-  model::GridBuildOptions o;
+builders::GridBuildOptions LatticeOptions(const std::array<double, 3>& lo_mm,
+                                          const std::array<double, 3>& hi_mm,
+                                          const std::array<double, 3>& spacing_mm,
+                                          const std::array<double, 3>& step_mm) {
+  builders::GridBuildOptions o;
   o.min_mm = lo_mm;
   o.max_mm = hi_mm;
   o.spacing_mm = spacing_mm;
@@ -79,11 +84,11 @@ model::PositioningData PairMeans(const model::PositioningData& t) {
   return d;
 }
 
-TableBuildResult AssembleTable(const std::optional<model::GridSection>& grid,
-                               const std::vector<model::AxisSection>& axis_tables,
-                               const std::array<double, 3>& step_mm,
-                               uint32_t table_id,
-                               const std::map<std::string, std::string>& info) {
+Expected<TableBuildResult> AssembleTable(const std::optional<builders::GridSection>& grid,
+                                         const std::vector<builders::AxisSection>& axis_tables,
+                                         const std::array<double, 3>& step_mm,
+                                         uint32_t table_id,
+                                         const std::map<std::string, std::string>& info) {
   TableBuildResult r;
   r.grid = grid;
   r.axis_tables = axis_tables;
@@ -94,36 +99,61 @@ TableBuildResult AssembleTable(const std::optional<model::GridSection>& grid,
     req.grid = grid->section;
     r.info = grid->info;
   }
-  for (const model::AxisSection& a : axis_tables) req.axis_tables.push_back(a.section);
+  for (const builders::AxisSection& a : axis_tables) req.axis_tables.push_back(a.section);
   for (const auto& [k, v] : info) r.info[k] = v;
   req.element = table::ElementType::kInt16;
-  req.frac_bits = image::ChooseFracBits(req);
+  VOLCOMP_TRY_ASSIGN(req.frac_bits, image::ChooseFracBits(req));
   r.frac_bits = *req.frac_bits;
-  r.lsb_um = model::LsbUm(req.axes[0], r.frac_bits);
+  r.lsb_um = builders::LsbUm(req.axes[0], r.frac_bits);
   req.info = r.info;
-  r.image = image::BuildImage(req);
+  VOLCOMP_TRY_ASSIGN(r.image, image::BuildImage(req));
   r.crc32 = LoadLe32(r.image.data() + r.image.size() - 4);
   return r;
 }
 
-TableBuildResult BuildTableImage(const model::Model& measured,
-                                 const std::array<double, 3>& lo_mm,
-                                 const std::array<double, 3>& hi_mm,
-                                 const std::array<double, 3>& spacing_mm,
-                                 const std::array<double, 3>& step_mm,
-                                 uint32_t table_id) {
-  const model::GridSection g =
-      model::BuildGridSection(LatticeOptions(lo_mm, hi_mm, spacing_mm, step_mm), ImageAxes(step_mm),
-                              model::ModelGridSource(measured));
+Expected<builders::GridSection> BuildModelGridSection(const model::Model& measured,
+                                                      const builders::GridBuildOptions& lattice) {
+  return builders::BuildGridSection(lattice, ImageAxes(lattice.step_mm),
+                                    builders::ModelGridSource(measured));
+}
+
+Expected<TableBuildResult> BuildTableImage(const model::Model& measured,
+                                           const builders::GridBuildOptions& lattice,
+                                           uint32_t table_id) {
+  VOLCOMP_TRY_ASSIGN(builders::GridSection g, BuildModelGridSection(measured, lattice));
   return AssembleTable(
-      g, {}, step_mm, table_id,
+      std::move(g), {}, lattice.step_mm, table_id,
       {{"builder", "volcomp-sim demo (the sources and grid of `volcomp build model`)"},
        {"source", "measured 21-parameter model: 6-DOF laser runs of X, Y, Z"}});
 }
 
-SimStatus WriteModelFiles(const model::Model& measured, const std::string& dir) {
+Expected<builders::AxisSection> BuildAxisTable(const model::PositioningData& deviations,
+                                               int axis,
+                                               double spacing_mm,
+                                               const std::array<double, 3>& step_mm) {
+  builders::Axis1dOptions o;
+  o.reverse = builders::ReverseMode::kTables;
+  o.spacing = spacing_mm;
+  const image::AxisDef image_axis = ImageAxes(step_mm)[static_cast<size_t>(axis)];
+  return builders::BuildAxisSection(deviations, o, image_axis, static_cast<uint8_t>(axis), false);
+}
+
+Expected<builders::GridSection> BuildTrackerLatticeGridSection(
+    const model::TrackerLatticeData& readings,
+    const std::vector<uint8_t>& in_force,
+    const builders::GridBuildOptions& grid) {
+  VOLCOMP_TRY_ASSIGN(const image::LoadedImage table_in_force,
+                     image::LoadedImage::FromBytes(in_force, "table 2"));
+  VOLCOMP_TRY_ASSIGN(const model::TrackerLattice through, model::TrackerLattice::Create(readings));
+  VOLCOMP_TRY_ASSIGN(const model::CorrectionGrid table2,
+                     builders::GridOfImage(table_in_force, "table 2"));
+  return builders::BuildGridSection(grid, ImageAxes(grid.step_mm),
+                                    builders::TrackerLatticeThroughGridSource(through, table2));
+}
+
+Outcome WriteModelFiles(const model::Model& measured, const std::string& dir) {
   const auto cannot = [&](const std::string& name) {
-    return SimStatus(Error::kIoError, "cannot write " + dir + "/" + name);
+    return Fail(Error::kIoError, "cannot write " + dir + "/" + name);
   };
   for (int a = 0; a < 3; ++a) {
     const std::string name = std::string("measured_") + "xyz"[a] + ".csv";
@@ -157,7 +187,7 @@ SimStatus WriteModelFiles(const model::Model& measured, const std::string& dir) 
     << "tool_offset_mm = 0, 0, 0\n"
     << "workpiece_axes = " << workpiece << "\ntool_axes = " << tool << "\n"
     << "workpiece_errors = relative\nformulation = physical\norder = exact\n";
-  return SimStatus::Ok();
+  return Outcome::Ok();
 }
 
 }  // namespace volcomp::sim

@@ -5,11 +5,12 @@
 #include <cmath>
 #include <cstdlib>
 #include <limits>
+#include <utility>
 
 namespace volcomp::sim {
 
-firmware::BoardSettings BoardSettingsFor(const Machine& machine) {
-  firmware::BoardSettings s;
+BoardSettings BoardSettingsFor(const Machine& machine) {
+  BoardSettings s;
   s.board = DefaultBoardConfig();
   for (int a = 0; a < 3; ++a) {
     AxisConfig& ax = s.board.axis[a];
@@ -20,9 +21,14 @@ firmware::BoardSettings BoardSettingsFor(const Machine& machine) {
   return s;
 }
 
-World::World(const WorldOptions& options)
+Expected<std::unique_ptr<World>> World::Create(const WorldOptions& options) {
+  VOLCOMP_TRY_ASSIGN(Machine machine, Machine::Create(options.machine));
+  return std::unique_ptr<World>(new World(options, std::move(machine)));
+}
+
+World::World(const WorldOptions& options, Machine machine)
     : options_(options), bus_(options.can_bitrate), latency_(20000) {
-  machine_ = std::make_unique<Machine>(options_.machine);
+  machine_ = std::make_unique<Machine>(std::move(machine));
   SimulatedBoardOptions bo;
   bo.settings = options_.board;
   bo.poll_period_ns = options_.poll_period_ns;
@@ -45,13 +51,14 @@ World::World(const WorldOptions& options)
   link_.send = [this](const CanFrame& f) {
     bus_.RunUntil(now_ns_);
     pc_->Send(f);
+    return Outcome::Ok();
   };
-  link_.receive = [this](uint64_t timeout_us) -> std::optional<CanFrame> {
+  link_.receive = [this](uint64_t timeout_us) -> Expected<std::optional<CanFrame>> {
     const uint64_t deadline = now_ns_ + timeout_us * 1000;
     CanFrame f;
     for (;;) {
-      if (pc_->Receive(&f)) return f;
-      if (now_ns_ >= deadline) return std::nullopt;
+      if (pc_->Receive(&f)) return std::optional<CanFrame>(f);
+      if (now_ns_ >= deadline) return std::optional<CanFrame>();
       StepOnce(deadline);
     }
   };
@@ -60,7 +67,7 @@ World::World(const WorldOptions& options)
 
 World::~World() = default;
 
-Status World::Start() { return board_->Start(); }
+Outcome World::Start() { return board_->Start(); }
 
 void World::OnStep(int axis, uint64_t t_ns, int dir) {
   board_->step_io().add_steps(static_cast<uint8_t>(axis), dir);

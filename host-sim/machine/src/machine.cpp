@@ -2,16 +2,15 @@
 #include "volcomp/sim/machine.hpp"
 
 #include <cmath>
-#include <stdexcept>
 
-#include "volcomp/model/io.hpp"
-#include "volcomp/model/s500.hpp"
+#include "volcomp/datasets/model_config.hpp"
+#include "volcomp/datasets/s500.hpp"
 
 namespace volcomp::sim {
 
-model::Model LoadMachineModel(const std::string& spec) {
-  if (spec.empty() || spec == "s500") return model::S500Model();
-  return model::LoadModelConfig(spec);
+Expected<model::Model> LoadMachineModel(const std::string& spec) {
+  if (spec.empty() || spec == "s500") return datasets::S500Model();
+  return datasets::LoadModelConfig(spec);
 }
 
 MachineGeometry GeometryOf(const model::Model& m) {
@@ -38,35 +37,37 @@ MachineGeometry GeometryOf(const model::Model& m) {
 
 namespace {
 
-// The options with the default model filled in, checked before the kinematics is built.
-MachineOptions Checked(MachineOptions o) {
-  if (o.model.axes[0].empty()) o.model = model::S500Model();
-  model::ValidateModel(o.model);
-  if (o.model.formulation != model::Formulation::kPhysical) {
-    throw std::invalid_argument(
-        "machine: the simulated machine is a rigid body; formulation = dissertation describes "
-        "how a builder computes, not a machine");
-  }
-  return o;
-}
-
 Xyz ToXyz(const model::Vec3& v) { return {v.x, v.y, v.z}; }
 
 }  // namespace
 
+Expected<Machine> Machine::Create(MachineOptions o) {
+  if (o.model.axes[0].empty()) o.model = datasets::S500Model();
+  VOLCOMP_TRY(model::ValidateModel(o.model));
+  if (o.model.formulation != model::Formulation::kPhysical) {
+    return Fail(Error::kInvalidArgument,
+                "machine: the simulated machine is a rigid body; formulation = dissertation "
+                "describes how a builder computes, not a machine");
+  }
+  for (size_t i = 0; i < 3; ++i) {
+    if (!(o.step_mm[i] > 0))
+      return Fail(Error::kInvalidArgument, "machine: step length must be > 0");
+    const double lo = o.model.axes[i].min_mm(), hi = o.model.axes[i].max_mm();
+    if (std::isnan(o.power_up_mm[i])) o.power_up_mm[i] = lo + 0.1 * (hi - lo);
+    if (std::isnan(o.home_switch_mm[i])) o.home_switch_mm[i] = lo - 5.0;
+    if (!(o.power_up_mm[i] > o.home_switch_mm[i])) {
+      return Fail(Error::kInvalidArgument,
+                  "machine: the axes must power up above their home switches");
+    }
+  }
+  return Machine(std::move(o));
+}
+
 Machine::Machine(MachineOptions options)
-    : options_(Checked(std::move(options))),
+    : options_(std::move(options)),
       kinematics_(GeometryOf(options_.model)),
       rng_(options_.wear.seed) {
-  for (int a = 0; a < 3; ++a) {
-    const size_t i = static_cast<size_t>(a);
-    if (!(options_.step_mm[i] > 0)) throw std::invalid_argument("machine: step length must be > 0");
-    const double lo = travel_min_mm(a), hi = travel_max_mm(a);
-    if (std::isnan(options_.power_up_mm[i])) options_.power_up_mm[i] = lo + 0.1 * (hi - lo);
-    if (std::isnan(options_.home_switch_mm[i])) options_.home_switch_mm[i] = lo - 5.0;
-    if (!(options_.power_up_mm[i] > options_.home_switch_mm[i])) {
-      throw std::invalid_argument("machine: the axes must power up above their home switches");
-    }
+  for (size_t i = 0; i < 3; ++i) {
     switch_steps_[i] =
         std::llround((options_.home_switch_mm[i] - options_.power_up_mm[i]) / options_.step_mm[i]);
     lost_motion_[i] = LostMotion(options_.wear.lost_motion ? options_.wear.lost_motion_um[i] : 0);

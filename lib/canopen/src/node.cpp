@@ -1,7 +1,8 @@
 // CiA 301 node: NMT, heartbeat, EMCY, communication objects, SDO routing.
+#include "volcomp/canopen/node.hpp"
+
 #include "volcomp/base/byte_order.hpp"
 #include "volcomp/canopen/board_protocol.hpp"
-#include "volcomp/canopen/node.hpp"
 #include "volcomp/canopen/sdo_abort.hpp"
 #include "volcomp/canopen/sdo_protocol.hpp"
 

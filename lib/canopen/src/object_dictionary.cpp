@@ -1,8 +1,8 @@
 // The object dictionary tables, expanded from od_entries.def.
 #include "volcomp/canopen/object_dictionary.hpp"
 
-#include "volcomp/config/board_config.hpp"
 #include "volcomp/canopen/node_defaults.hpp"
+#include "volcomp/config/board_config.hpp"
 
 namespace volcomp::canopen {
 
@@ -13,10 +13,10 @@ const ObjectEntry kObjectEntries[] = {
 #define VOLCOMP_OD_OBJECT(index, kind, name)
 #define VOLCOMP_OD_ENTRY(id, index, sub, type, access, def, name) \
   {ObjectId::id, index, sub, DataType::type, Access::access, def, name, 0, 0, false},
-#define VOLCOMP_OD_SETTING(id, index, sub, type, limits, def, field, name) \
-  {ObjectId::id, index,                                                    \
-   sub,          DataType::type,                                           \
-   Access::kRw,  static_cast<int64_t>(def),                                \
+#define VOLCOMP_OD_SETTING(id, index, sub, type, limits, def, field, key, name) \
+  {ObjectId::id, index,                                                         \
+   sub,          DataType::type,                                                \
+   Access::kRw,  static_cast<int64_t>(def),                                     \
    name,         VOLCOMP_OD_LIMIT_FIELDS limits},
 #include "volcomp/canopen/od_entries.def"
 #undef VOLCOMP_OD_OBJECT

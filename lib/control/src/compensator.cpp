@@ -54,7 +54,10 @@ Status Compensator::Configure(const BoardConfig& config, uint32_t ticks_per_run)
     clamped_refreshes_[a] = 0;
     rate_limited_refreshes_[a] = 0;
     last_pos_[a] = 0;
-    reverse_[a] = false;
+    grid_part_steps_[a] = 0;
+    extreme_[a] = 0;
+    hysteresis_[a] = ax.direction_hysteresis_steps;
+    direction_[a] = 0;
     target_q8_[a] = 0;
   }
   wrap_mask_ = 0;
@@ -102,7 +105,7 @@ void Compensator::RefreshTargets(const int32_t* machine_pos_steps) {
     return;
   }
   if (!engaged()) {
-    for (uint8_t a = 0; a < axis_count_; ++a) target_q8_[a] = 0;
+    for (uint8_t a = 0; a < axis_count_; ++a) target_q8_[a] = grid_part_steps_[a] = 0;
     phase_ = 0;
     return;
   }
@@ -129,9 +132,10 @@ void Compensator::RefreshTargets(const int32_t* machine_pos_steps) {
     const int8_t c = table.grid_component_of[a];
     const int8_t i = table.axis_table_of[a];
     int32_t t = c >= 0 ? grid_q8_[c] : 0;
+    grid_part_steps_[a] = (t + 128) >> 8;
     if (i >= 0) {
       const int32_t pos = (wrap_mask_ >> a) & 1u ? wrap_[a].position() : machine_pos_steps[a];
-      t += table.axis_table[i].Lookup(pos, reverse_[a]);
+      t += table.axis_table[i].Lookup(pos, direction_[a] != 0);
     }
     const int32_t max = max_q8_[a];
     const int32_t asked = t;

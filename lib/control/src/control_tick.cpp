@@ -13,9 +13,9 @@ Status ControlTick::Configure(const BoardConfig& config) {
     published_[a].store(0, std::memory_order_relaxed);
     machine_[a] = correction_[a] = target_[a] = 0;
     reference_offset_[a] = 0;
+    home_[a] = config.axis[a].home_position_steps;
   }
   referenced_mask_ = 0;
-  config_ = config;
   axis_count_ = config.axis_count;
   divider_ = CompensationDivider(config.tick_hz);
   countdown_ = 1;
@@ -39,7 +39,7 @@ bool ControlTick::MarkReferenced(uint32_t axis_mask) {
   if (done == 0) return false;
   for (uint32_t a = 0; a < n; ++a) {
     if (((done >> a) & 1u) == 0) continue;
-    const int32_t home = config_.axis[a].home_position_steps;
+    const int32_t home = home_[a];
     reference_offset_[a] = static_cast<int32_t>(
         static_cast<uint32_t>(home) - static_cast<uint32_t>(commanded(static_cast<uint8_t>(a))));
     machine_[a] = home;

@@ -3,25 +3,22 @@
 
 #include <gtest/gtest.h>
 
-#include <fstream>
-#include <sstream>
 #include <string>
 
-#include "temp_dir.hpp"
+#include "file_contents.hpp"
+#include "temp_paths.hpp"
 
 namespace volcomp::hal::linux_board {
 namespace {
 
-using test_support::ReadFile;
-using test_support::TempDir;
+using volcomp::testing::ReadText;
+using volcomp::testing::ScratchDir;
+using volcomp::testing::WriteText;
 
 TEST(FakeGpioTest, StateFileDrivesInputsAndReceivesOutputs) {
-  TempDir dir;
-  const std::string path = dir.file("gpio");
-  {
-    std::ofstream f(path);
-    f << "# bench\nestop=1\nhome1 = 1   # switch pressed\nwrite_enable=0\n";
-  }
+  ScratchDir dir("hal_test");
+  const std::string path = dir / "gpio";
+  WriteText(path, "# bench\nestop=1\nhome1 = 1   # switch pressed\nwrite_enable=0\n");
   FakeGpio gpio(path);
   ASSERT_TRUE(gpio.Open(GpioConfig()).ok());
   gpio.SetInput(InputLine::kEnable, true);       // not named in the file: the memory value counts
@@ -37,25 +34,16 @@ TEST(FakeGpioTest, StateFileDrivesInputsAndReceivesOutputs) {
   const uint32_t reads = gpio.file_reads();
   ASSERT_TRUE(gpio.ReadInputs(levels).ok());
   EXPECT_EQ(gpio.file_reads(), reads);
-  {
-    std::ofstream f(path, std::ios::trunc);
-    f << "estop=0\n";  // another size: seen even within the same mtime tick
-  }
+  WriteText(path, "estop=0\n");  // another size: seen even within the same mtime tick
   ASSERT_TRUE(gpio.ReadInputs(levels).ok());
   EXPECT_FALSE(levels[static_cast<int>(InputLine::kEStop)]);
   EXPECT_FALSE(levels[static_cast<int>(HomeLine(1))]);
   // Outputs go to PATH.out.
   ASSERT_TRUE(gpio.WriteOutput(OutputLine::kFault, true).ok());
-  std::ifstream out(path + ".out");
-  std::stringstream text;
-  text << out.rdbuf();
-  EXPECT_EQ(text.str(), "ready=0\ncompensating=0\nfault=1\n");
+  EXPECT_EQ(ReadText(path + ".out"), "ready=0\ncompensating=0\nfault=1\n");
   EXPECT_TRUE(gpio.output(OutputLine::kFault));
   // A malformed line is reported with its number.
-  {
-    std::ofstream f(path, std::ios::trunc);
-    f << "estop=1\nestpo=1\n";
-  }
+  WriteText(path, "estop=1\nestpo=1\n");
   const Expected<void> read = gpio.ReadInputs(levels);
   ASSERT_FALSE(read.ok());
   EXPECT_NE(read.error().message.find(":2:"), std::string::npos) << read.error().message;

@@ -7,13 +7,14 @@
 #include <string>
 #include <vector>
 
-#include "temp_dir.hpp"
+#include "file_contents.hpp"
+#include "temp_paths.hpp"
 
 namespace volcomp::hal::linux_board {
 namespace {
 
-using test_support::ReadFile;
-using test_support::TempDir;
+using volcomp::testing::ReadBytes;
+using volcomp::testing::ScratchDir;
 
 FileFlash::Options SmallFlash() {
   FileFlash::Options o;
@@ -24,12 +25,12 @@ FileFlash::Options SmallFlash() {
 }
 
 TEST(FileFlashTest, NewFileIsErasedAndProgramOnlyClearsBits) {
-  TempDir dir;
-  const std::string path = dir.file("flash.bin");
+  ScratchDir dir("hal_test");
+  const std::string path = dir / "flash.bin";
   FileFlash flash;
   ASSERT_TRUE(flash.Open(path, SmallFlash()).ok());
   EXPECT_EQ(flash.size(), 16384u);
-  const std::vector<uint8_t> file = ReadFile(path);
+  const std::vector<uint8_t> file = ReadBytes(path);
   ASSERT_EQ(file.size(), 16384u);
   for (uint8_t b : file) ASSERT_EQ(b, 0xFF);
   EXPECT_EQ(reinterpret_cast<uintptr_t>(flash.Map(0)) % 8, 0u);
@@ -57,14 +58,14 @@ TEST(FileFlashTest, NewFileIsErasedAndProgramOnlyClearsBits) {
   // Everything reaches the file, in order.
   EXPECT_TRUE(flash.Flush().ok());
   EXPECT_EQ(flash.counters().written, 4u);  // 3 programs and 1 erase (the refused one is not)
-  const std::vector<uint8_t> after = ReadFile(path);
+  const std::vector<uint8_t> after = ReadBytes(path);
   EXPECT_EQ(after[0], 0x0F);
   EXPECT_EQ(after[4096], 0xFF);
 }
 
 TEST(FileFlashTest, ContentSurvivesReopenAndWrongSizeIsRefused) {
-  TempDir dir;
-  const std::string path = dir.file("flash.bin");
+  ScratchDir dir("hal_test");
+  const std::string path = dir / "flash.bin";
   const uint8_t data[16] = {0xDE, 0xAD, 0xBE, 0xEF, 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11};
   {
     FileFlash flash;
@@ -89,8 +90,8 @@ TEST(FileFlashTest, ContentSurvivesReopenAndWrongSizeIsRefused) {
 }
 
 TEST(FileFlashTest, WriteThroughModeWritesBeforeReturning) {
-  TempDir dir;
-  const std::string path = dir.file("flash.bin");
+  ScratchDir dir("hal_test");
+  const std::string path = dir / "flash.bin";
   FileFlash::Options o = SmallFlash();
   o.background = false;
   FileFlash flash;
@@ -98,14 +99,14 @@ TEST(FileFlashTest, WriteThroughModeWritesBeforeReturning) {
   const uint8_t a[8] = {1, 2, 3, 4, 5, 6, 7, 8};
   ASSERT_TRUE(flash.Program(64, a, 8).ok());
   EXPECT_EQ(flash.counters().written, 1u);
-  const std::vector<uint8_t> file = ReadFile(path);  // no Flush() needed
+  const std::vector<uint8_t> file = ReadBytes(path);  // no Flush() needed
   EXPECT_EQ(std::vector<uint8_t>(file.begin() + 64, file.begin() + 72),
             std::vector<uint8_t>(a, a + 8));
 }
 
 TEST(FileFlashTest, ManyQueuedOperationsLandInOrder) {
-  TempDir dir;
-  const std::string path = dir.file("flash.bin");
+  ScratchDir dir("hal_test");
+  const std::string path = dir / "flash.bin";
   FileFlash flash;
   ASSERT_TRUE(flash.Open(path, SmallFlash()).ok());
   // The same sector erased and programmed over and over: only the order gives the final bytes.
@@ -116,15 +117,15 @@ TEST(FileFlashTest, ManyQueuedOperationsLandInOrder) {
     ASSERT_TRUE(flash.Program(0, expect, 16).ok());
   }
   flash.Close();  // drains the queue
-  const std::vector<uint8_t> file = ReadFile(path);
+  const std::vector<uint8_t> file = ReadBytes(path);
   EXPECT_EQ(std::vector<uint8_t>(file.begin(), file.begin() + 16),
             std::vector<uint8_t>(expect, expect + 16));
   EXPECT_EQ(file[16], 0xFF);
 }
 
 TEST(FileFlashTest, OneProcessAtATime) {
-  TempDir dir;
-  const std::string path = dir.file("flash.bin");
+  ScratchDir dir("hal_test");
+  const std::string path = dir / "flash.bin";
   FileFlash first, second;
   ASSERT_TRUE(first.Open(path, SmallFlash()).ok());
   const Expected<void> opened = second.Open(path, SmallFlash());
@@ -136,11 +137,11 @@ TEST(FileFlashTest, OneProcessAtATime) {
 }
 
 TEST(FileFlashTest, BadGeometryAndDirectoryAreReported) {
-  TempDir dir;
+  ScratchDir dir("hal_test");
   FileFlash flash;
   FileFlash::Options o = SmallFlash();
   o.sector_size = 3000;
-  EXPECT_EQ(flash.Open(dir.file("x.bin"), o).error().code, Error::kInvalidArgument);
+  EXPECT_EQ(flash.Open(dir / "x.bin", o).error().code, Error::kInvalidArgument);
   const Expected<void> opened = flash.Open("/nonexistent-dir/flash.bin", SmallFlash());
   ASSERT_FALSE(opened.ok());
   EXPECT_NE(opened.error().message.find("cannot create"), std::string::npos);

@@ -1,11 +1,12 @@
 // STM32G474 driver computations: PLL, flash wait states, FDCAN bit timing, flash layout and the
 // timer settings that execute a pulse plan (checked against the plan's own timing).
+#include "volcomp/hal/stm32g4/config_math.hpp"
+
 #include <gtest/gtest.h>
 
 #include <random>
 
 #include "volcomp/config/board_config.hpp"
-#include "volcomp/hal/stm32g4/config_math.hpp"
 
 namespace volcomp::stm32g4 {
 namespace {

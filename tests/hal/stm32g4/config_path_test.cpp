@@ -214,12 +214,11 @@ class Stm32ConfigPathTest : public ::testing::Test {
   }
   // TIM6, the output timers' tick and the data path agree on the tick.
   void ExpectTickAgrees(uint32_t tick_hz) {
-    EXPECT_EQ(app_.control_tick().config().tick_hz, tick_hz);
+    EXPECT_EQ(app_.settings().board.tick_hz, tick_hz);
     EXPECT_TRUE(tim6_.running);
     EXPECT_EQ(uint64_t{tim6_.programmed.clocks()} * tick_hz, kSysclkHz);
     EXPECT_EQ(step_.setup.tick_clocks, tim6_.programmed.clocks());
-    EXPECT_EQ(uint64_t{app_.control_tick().config().pulse_clock_hz} / tick_hz,
-              step_.setup.tick_clocks);
+    EXPECT_EQ(uint64_t{app_.settings().board.pulse_clock_hz} / tick_hz, step_.setup.tick_clocks);
   }
   void ExpectBitRate(uint32_t bitrate) {
     EXPECT_EQ(can_.bitrate, bitrate);
@@ -227,7 +226,7 @@ class Stm32ConfigPathTest : public ::testing::Test {
     EXPECT_EQ(uint64_t{t.prescaler} * (1 + t.tseg1 + t.tseg2) * bitrate, kSysclkHz);
   }
 
-  firmware::BoardSettings defaults_;
+  BoardSettings defaults_;
   hal::mock::MockClock clock_;
   hal::mock::MockSlowIo io_;
   hal::mock::MockFlash tables_, settings_;

@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <random>
 
 #include "test_tables.hpp"
@@ -35,13 +36,7 @@ struct TableFixture {
     for (auto& d : g.dim) d = {2, -100000, 200000};
     g.values.type = table::ElementType::kInt32;
     g.values.i32 = values.data();
-    table::ImageSpec s;
-    s.table_id = 42;
-    s.axis_count = 3;
-    s.axes[0] = testing::LinearAxis('X');
-    s.axes[1] = testing::LinearAxis('Y');
-    s.axes[2] = testing::LinearAxis('Z');
-    s.grid = &g;
+    table::ImageSpec s = testing::XyzImageSpec(g, 42);
     if (x_table) {
       x_fwd = {0, 0};
       x_rev = {static_cast<int32_t>(3 * kQ8), static_cast<int32_t>(3 * kQ8)};  // +3 steps reversing
@@ -55,8 +50,8 @@ struct TableFixture {
       a.reverse.i32 = x_rev.data();
       s.axis1d_count = 1;
     }
-    img = testing::AlignedBytes(*table::ImageSize(s));
-    EXPECT_TRUE(table::WriteImage(s, img.data(), img.size()).ok());
+    img = testing::WriteImageBytes(s);
+    EXPECT_NE(img.size(), 0u);
     view = *table::ParseImage(img.data(), img.size());
   }
 };
@@ -188,6 +183,8 @@ TEST_F(CompensatorTest, TableChangeIsSpreadWithinLimits) {
   EXPECT_LE(max_rate_, kStepsPerRun + 1.0 / 256);  // applied_q8() truncates to 1/256 step
 }
 
+// The AXIS1D direction turns when the drive has gone back by more than the axis's direction
+// hysteresis (default 1 step: the one-step dither of the output at rest never turns it).
 TEST_F(CompensatorTest, ReverseDirectionSelectsTheReverseTable) {
   TableFixture f(0, 0, 0, /*x_table=*/true);
   comp_.SetTable(Prepare(f), pos_);
@@ -197,17 +194,58 @@ TEST_F(CompensatorTest, ReverseDirectionSelectsTheReverseTable) {
   RunN(5000);
   EXPECT_EQ(corr_[0], 0);
   EXPECT_FALSE(comp_.reverse(0));
-  pos_[0] = 99;  // one step back: reversal
+  pos_[0] = 99;  // one step back: within the hysteresis
+  RunN(100);
+  EXPECT_FALSE(comp_.reverse(0));
+  pos_[0] = 100;  // and forward again: a dither
+  RunN(100);
+  pos_[0] = 98;  // two steps back from the furthest point: the drive reverses
   RunN(5000);
   EXPECT_TRUE(comp_.reverse(0));
-  EXPECT_EQ(corr_[0], 3);
-  pos_[0] = 99;  // standing still keeps the direction
+  EXPECT_EQ(corr_[0], 3);  // the reverse table's +3 (and it does not turn the drive back)
+  pos_[0] = 99;            // one step forward from the lowest point: still reverse
   RunN(100);
   EXPECT_TRUE(comp_.reverse(0));
   pos_[0] = 150;
   RunN(5000);
   EXPECT_FALSE(comp_.reverse(0));
   EXPECT_EQ(corr_[0], 0);
+}
+
+TEST_F(CompensatorTest, ZeroHysteresisTurnsOnEveryStepBack) {
+  config_.axis[0].direction_hysteresis_steps = 0;
+  ASSERT_TRUE(comp_.Configure(config_).ok());
+  TableFixture f(0, 0, 0, /*x_table=*/true);
+  comp_.SetTable(Prepare(f), pos_);
+  comp_.SetReferenced(true);
+  comp_.SetEnabled(true);
+  pos_[0] = 100;
+  RunN(100);
+  pos_[0] = 99;
+  RunN(5000);
+  EXPECT_TRUE(comp_.reverse(0));
+  EXPECT_EQ(corr_[0], 3);
+  pos_[0] = 100;
+  RunN(5000);
+  EXPECT_FALSE(comp_.reverse(0));
+  EXPECT_EQ(corr_[0], 0);
+}
+
+// The drive, not the command, decides: with the command standing still, a correction that falls
+// by 40 steps (a new table) moves the drive back, and the reverse table applies.
+TEST_F(CompensatorTest, ACorrectionThatMovesTheDriveBackReversesIt) {
+  TableFixture high(40, 0, 0, /*x_table=*/true), low(0, 0, 0, /*x_table=*/true);
+  comp_.SetTable(Prepare(high), pos_);
+  comp_.SetReferenced(true);
+  comp_.SetEnabled(true);
+  pos_[0] = 100;
+  RunN(10000);
+  EXPECT_EQ(corr_[0], 40);
+  EXPECT_FALSE(comp_.reverse(0));
+  comp_.SetTable(Prepare(low), pos_);
+  RunN(10000);
+  EXPECT_TRUE(comp_.reverse(0));
+  EXPECT_EQ(corr_[0], 3);  // 0 from the grid, +3 from the reverse table
 }
 
 TEST_F(CompensatorTest, ImageForAnotherBoardIsRefusedAndNothingChanges) {
@@ -287,8 +325,13 @@ void CheckRefreshSchedule(table::ElementType type, uint64_t seed) {
   comp.SetReferenced(true);
   comp.SetEnabled(true);
 
-  // Independent tracking: last motion direction, wrapped Z position.
+  // Independent tracking: the drive's direction (command + the last refresh's GRID3 part, against
+  // its furthest point; default hysteresis 1 step), wrapped Z position.
   bool reverse[3] = {false, false, false};
+  int64_t base[3] = {0, 0, 0}, extreme[3] = {pos[0], 0, 0};
+  auto sensed = [&](int a) {
+    return pos[a] + static_cast<int64_t>(std::floor(static_cast<double>(base[a] + 128) / 256.0));
+  };
   auto wrapped = [](int64_t p) {
     int64_t o = (p - 100) % 4000;
     return static_cast<int32_t>((o < 0 ? o + 4000 : o) + 100);
@@ -300,12 +343,17 @@ void CheckRefreshSchedule(table::ElementType type, uint64_t seed) {
   int dir[3] = {1, -1, 1};
   int refreshes = 0;
   for (uint32_t run = 0; run < 6000; ++run) {
-    int32_t last[3];
     for (int a = 0; a < 3; ++a) {
-      last[a] = pos[a];
       if (rng() % 50 == 0) dir[a] = -dir[a];
       pos[a] += dir[a] * static_cast<int32_t>(rng() % 30);
-      if (pos[a] != last[a]) reverse[a] = pos[a] < last[a];
+      const int64_t s_now = sensed(a);
+      if (!reverse[a]) {
+        if (s_now > extreme[a]) extreme[a] = s_now;
+        if (extreme[a] - s_now > 1) reverse[a] = true, extreme[a] = s_now;
+      } else {
+        if (s_now < extreme[a]) extreme[a] = s_now;
+        if (s_now - extreme[a] > 1) reverse[a] = false, extreme[a] = s_now;
+      }
     }
     const uint32_t part = run % cycle;
     if (part == 0) std::copy(pos, pos + 3, grid_pos);
@@ -317,6 +365,7 @@ void CheckRefreshSchedule(table::ElementType type, uint64_t seed) {
       for (int c = 0; c < 3; ++c) {
         if (table.grid.axis(c) == a) t += gq[c];
       }
+      base[a] = t;
       if (a == 0) t += table.axis_table[0].LookupReference(pos[0], reverse[0]);
       if (a == 2) t += table.axis_table[1].LookupReference(wrapped(pos[2]), reverse[2]);
       const int32_t max = 30 * 256;
@@ -398,7 +447,10 @@ TEST_F(CompensatorTest, RequestedRebaseTakesOneRefreshSlice) {
   comp_.RequestRebase();
   comp_.Run(pos_, corr_);
   EXPECT_FALSE(comp_.reverse(0));
-  pos_[0] -= 1;  // real motion backwards is sensed
+  pos_[0] -= 1;  // real motion backwards is sensed: one step is within the hysteresis,
+  comp_.Run(pos_, corr_);
+  EXPECT_FALSE(comp_.reverse(0));
+  pos_[0] -= 1;  // the second turns the direction
   comp_.Run(pos_, corr_);
   EXPECT_TRUE(comp_.reverse(0));
 }

@@ -48,6 +48,13 @@ testing::GridCase SteepGrid(std::mt19937_64& rng) {
   return g;
 }
 
+// `c` compensates with `table` from now on, the machine at position 0 on every axis.
+void CompensateFromZero(Compensator& c, const PreparedTable& table) {
+  const int32_t at_zero[3] = {0, 0, 0};
+  c.SetTable(table, at_zero);
+  c.SetEnabled(true);
+}
+
 struct EngineRun {
   uint64_t input_steps = 0;
   uint64_t output_steps = 0;
@@ -86,9 +93,7 @@ EngineRun RunEngine(PulseFormat in_format,
   const auto view = table::ParseImage(img.data(), img.size());
   PreparedTable table;
   EXPECT_TRUE(table.Prepare(*view, cfg).ok());
-  int32_t zero[3] = {0, 0, 0};
-  engine.compensator().SetTable(table, zero);
-  engine.compensator().SetEnabled(true);
+  CompensateFromZero(engine.compensator(), table);
   for (uint8_t a = 0; a < 3; ++a) engine.Reference(a);
 
   hal::mock::MockStepIo io(cfg, nullptr);
@@ -131,6 +136,16 @@ EngineRun RunEngine(PulseFormat in_format,
   };
 
   uint64_t t = 0;
+  // One tick of the data path at time t: counters in, pulses planned and applied.
+  const auto tick = [&] {
+    io.set_tick_start_ns(t);
+    uint32_t counters[3];
+    io.ReadCounters(counters);
+    PulsePlan plans[3];
+    engine.Run(counters);
+    output.Plan(engine.targets(), plans);
+    io.Apply(plans);
+  };
   while (run.input_steps < steps_wanted) {
     for (int a = 0; a < 3; ++a) {
       // Random walk of the step rate: 0..20 steps per 20 us tick (up to 1 MHz), with reversals,
@@ -143,13 +158,7 @@ EngineRun RunEngine(PulseFormat in_format,
       for (uint32_t s = 0; s < rate[a]; ++s) step(a, dir[a]);
       io.set_counter(static_cast<uint8_t>(a), static_cast<uint32_t>(dec[a].count()));
     }
-    io.set_tick_start_ns(t);
-    uint32_t counters[3];
-    io.ReadCounters(counters);
-    PulsePlan plans[3];
-    engine.Run(counters);
-    output.Plan(engine.targets(), plans);
-    io.Apply(plans);
+    tick();
     for (uint8_t a = 0; a < 3; ++a) {
       // Exactness every tick: planned output = input + correction - backlog.
       EXPECT_EQ(output.position(a) + output.backlog(a, engine.target(a)),
@@ -161,13 +170,7 @@ EngineRun RunEngine(PulseFormat in_format,
   }
   // Let the correction settle with the inputs standing still, then compare.
   for (int i = 0; i < 20000; ++i) {
-    io.set_tick_start_ns(t);
-    uint32_t counters[3];
-    io.ReadCounters(counters);
-    PulsePlan plans[3];
-    engine.Run(counters);
-    output.Plan(engine.targets(), plans);
-    io.Apply(plans);
+    tick();
     t += tick_ns;
   }
   for (uint8_t a = 0; a < 3; ++a) {
@@ -225,11 +228,9 @@ TEST(StepEngineReference, SeveralAxesAtOnceEqualOneAxisAtATime) {
   ControlTick one, all;
   PreparedTable table;
   ASSERT_TRUE(table.Prepare(*view, cfg).ok());
-  const int32_t zero[3] = {0, 0, 0};
   for (ControlTick* e : {&one, &all}) {
     ASSERT_TRUE(e->Configure(cfg).ok());
-    e->compensator().SetTable(table, zero);
-    e->compensator().SetEnabled(true);
+    CompensateFromZero(e->compensator(), table);
   }
   uint32_t counters[3] = {0, 0, 0};
   for (int t = 0; t < 300; ++t) {
@@ -279,12 +280,9 @@ TEST(StepEngineTwoRates, TheCompensatorRunsEveryDividerTicksAndTheStepPathApplie
   ASSERT_TRUE(engine.Configure(cfg).ok());
   ASSERT_TRUE(oracle.Configure(cfg).ok());
   EXPECT_EQ(engine.compensation_divider(), 3u);
-  const int32_t zero[3] = {0, 0, 0};
-  engine.compensator().SetTable(table, zero);
-  engine.compensator().SetEnabled(true);
+  CompensateFromZero(engine.compensator(), table);
   engine.ReferenceAxes(0x7u);  // home 0: machine = commanded
-  oracle.SetTable(table, zero);
-  oracle.SetEnabled(true);
+  CompensateFromZero(oracle, table);
   oracle.SetReferenced(true);
   uint32_t counters[3] = {0, 0, 0};
   int32_t published[3] = {0, 0, 0};
@@ -349,11 +347,9 @@ TEST(StepEngineReference, TableSwitchAndReferencingShareOneRebase) {
   ASSERT_TRUE(first.Prepare(*first_view, cfg).ok());
   ASSERT_TRUE(second.Prepare(*second_view, cfg).ok());
   ControlTick two, one;
-  const int32_t zero[3] = {0, 0, 0};
   for (ControlTick* e : {&two, &one}) {
     ASSERT_TRUE(e->Configure(cfg).ok());
-    e->compensator().SetTable(first, zero);
-    e->compensator().SetEnabled(true);
+    CompensateFromZero(e->compensator(), first);
   }
   uint32_t counters[3] = {0, 0, 0};
   for (int t = 0; t < 400; ++t) {

@@ -149,14 +149,8 @@ TEST(GridLookup, AxisMappingSelectsPositionsAndComponents) {
   g.axis[2] = 1;
   for (auto& d : g.dim) d = {2, 0, 100};
   g.values.i16 = v.data();
-  table::ImageSpec s;
-  s.axis_count = 3;
-  s.axes[0] = testing::LinearAxis('X');
-  s.axes[1] = testing::LinearAxis('Y');
-  s.axes[2] = testing::LinearAxis('Z');
-  s.grid = &g;
-  testing::AlignedBytes img(*table::ImageSize(s));
-  ASSERT_TRUE(table::WriteImage(s, img.data(), img.size()).ok());
+  const testing::AlignedBytes img = testing::WriteImageBytes(testing::XyzImageSpec(g));
+  ASSERT_NE(img.size(), 0u);
   const auto view = table::ParseImage(img.data(), img.size());
   GridLookup lookup;
   ASSERT_TRUE(lookup.Init(view->grid).ok());

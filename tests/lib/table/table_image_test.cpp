@@ -228,14 +228,8 @@ TEST(TableImage, FloatValuesMustBeFiniteAndInRange) {
   for (auto& d : g.dim) d = {2, 0, 10};
   g.values.type = table::ElementType::kFloat32;
   g.values.f32 = v.data();
-  table::ImageSpec s;
-  s.axis_count = 3;
-  s.axes[0] = testing::LinearAxis('X');
-  s.axes[1] = testing::LinearAxis('Y');
-  s.axes[2] = testing::LinearAxis('Z');
-  s.grid = &g;
-  AlignedBytes out(*table::ImageSize(s));
-  ASSERT_TRUE(table::WriteImage(s, out.data(), out.size()).ok());
+  const AlignedBytes out = testing::WriteImageBytes(testing::XyzImageSpec(g));
+  ASSERT_NE(out.size(), 0u);
   const size_t data = 24 + 8 + 4 + 3 * 8 + 8 + 44;
   const std::pair<float, Error> cases[] = {
       {std::nanf(""), Error::kValueNotFinite},
@@ -279,14 +273,8 @@ TEST(TableImage, PaddingMustBeZero) {
   table::GridSpec g;
   for (auto& d : g.dim) d = {3, 0, 10};
   g.values.i16 = v.data();
-  table::ImageSpec s;
-  s.axis_count = 3;
-  s.axes[0] = testing::LinearAxis('X');
-  s.axes[1] = testing::LinearAxis('Y');
-  s.axes[2] = testing::LinearAxis('Z');
-  s.grid = &g;
-  AlignedBytes b(*table::ImageSize(s));
-  ASSERT_TRUE(table::WriteImage(s, b.data(), b.size()).ok());
+  AlignedBytes b = testing::WriteImageBytes(testing::XyzImageSpec(g));
+  ASSERT_NE(b.size(), 0u);
   const size_t pad = 24 + 8 + 28 + 8 + 44 + 162;
   EXPECT_EQ(b[pad], 0);
   b[pad + 1] = 0x10;

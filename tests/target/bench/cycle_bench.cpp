@@ -13,9 +13,9 @@
 #include "volcomp/firmware/board_app.hpp"
 #include "volcomp/firmware/step_dir_io.hpp"
 #include "volcomp/firmware/stm32g4/tick_isr.hpp"
-#include "volcomp/lookup/grid_lookup.hpp"
 #include "volcomp/hal/stm32g4/drivers.hpp"
 #include "volcomp/hal/stm32g4/registers.hpp"
+#include "volcomp/lookup/grid_lookup.hpp"
 #include "volcomp/output/step_output.hpp"
 #include "volcomp/table/table_image.hpp"
 

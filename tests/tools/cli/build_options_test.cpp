@@ -7,20 +7,15 @@
 #include <fstream>
 
 #include "cli_runner.hpp"
+#include "sample_path.hpp"
+#include "temp_paths.hpp"
 
 namespace volcomp {
 namespace {
 
 using testing::RunCli;
-
-std::string TempPath(const std::string& name) {
-  return (std::filesystem::temp_directory_path() / ("volcomp_opts_" + name)).string();
-}
-
-std::string Sample(const std::string& rel) {
-  const char* root = std::getenv("VOLCOMP_SOURCE_DIR");
-  return std::string(root ? root : ".") + "/" + rel;
-}
+using testing::SamplePath;
+using testing::TempPath;
 
 std::vector<std::string> SmallModelBuild(const std::string& img) {
   return {"build",
@@ -38,7 +33,7 @@ std::vector<std::string> SmallModelBuild(const std::string& img) {
 }
 
 TEST(VolcompBuildOptions, TableIdDefaultsToOne) {
-  const std::string img = TempPath("default_id.vct");
+  const std::string img = TempPath("build_options_default_id.vct");
   const auto r = RunCli(SmallModelBuild(img));
   ASSERT_EQ(r.code, 0) << r.err;
   const auto i = RunCli({"inspect", img, "--json"});
@@ -47,7 +42,7 @@ TEST(VolcompBuildOptions, TableIdDefaultsToOne) {
 }
 
 TEST(VolcompBuildOptions, TableIdZeroIsRefused) {
-  const std::string img = TempPath("zero_id.vct");
+  const std::string img = TempPath("build_options_zero_id.vct");
   auto words = SmallModelBuild(img);
   words.insert(words.end(), {"--table-id", "0"});
   const auto r = RunCli(words);
@@ -56,17 +51,17 @@ TEST(VolcompBuildOptions, TableIdZeroIsRefused) {
             std::string::npos)
       << r.err;
   EXPECT_FALSE(std::filesystem::exists(img));
-  const auto axis = RunCli({"build", "axis", "--x", Sample("samples/model/positioning_x.csv"),
+  const auto axis = RunCli({"build", "axis", "--x", SamplePath("model/positioning_x.csv"),
                             "--resolution-nm", "X=1000", "--table-id", "0", "-o", img});
   EXPECT_EQ(axis.code, tools::kExitUsage) << axis.err;
   EXPECT_FALSE(std::filesystem::exists(img));
 }
 
 TEST(VolcompBuildOptions, ResolutionAndStepsPerUnitTogetherAreAConflict) {
-  const std::string img = TempPath("conflict.vct");
+  const std::string img = TempPath("build_options_conflict.vct");
   auto model = SmallModelBuild(img);
   model.insert(model.end(), {"--steps-per-unit", "X=1000,Y=1000,Z=1000"});
-  const std::string grid_csv = TempPath("conflict.csv");
+  const std::string grid_csv = TempPath("build_options_conflict.csv");
   std::ofstream(grid_csv) << "x_mm,y_mm,z_mm,dx_um,dy_um,dz_um\n0,0,0,1,1,1\n1,0,0,1,1,1\n"
                              "0,1,0,1,1,1\n1,1,0,1,1,1\n0,0,1,1,1,1\n1,0,1,1,1,1\n0,1,1,1,1,1\n"
                              "1,1,1,1,1,1\n";
@@ -74,7 +69,7 @@ TEST(VolcompBuildOptions, ResolutionAndStepsPerUnitTogetherAreAConflict) {
            model,
            {"build", "grid", "--csv", grid_csv, "-o", img, "--resolution-nm",
             "X=1000,Y=1000,Z=1000", "--steps-per-unit", "X=1000,Y=1000,Z=1000"},
-           {"build", "axis", "--x", Sample("samples/model/positioning_x.csv"), "-o", img,
+           {"build", "axis", "--x", SamplePath("model/positioning_x.csv"), "-o", img,
             "--resolution-nm", "X=1000", "--steps-per-unit", "X=1000"}}) {
     const auto r = RunCli(words);
     EXPECT_EQ(r.code, tools::kExitUsage) << words[1];

@@ -14,6 +14,7 @@
 namespace volcomp::tools {
 namespace {
 
+using args::OptionSpec;
 using volcomp::testing::RunCli;
 
 std::vector<std::string> Words(const std::string& name) {

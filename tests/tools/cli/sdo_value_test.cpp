@@ -10,10 +10,14 @@ namespace {
 
 using canopen::ObjectId;
 
+// The payload, or empty with the refusal's message in *why (always kInvalidArgument).
 std::vector<uint8_t> Encode(ObjectId id, const std::string& text, std::string* why) {
-  std::vector<uint8_t> p;
-  if (!canopen_client::EncodeWriteValue(canopen::Entry(id), text, &p, why)) p.clear();
-  return p;
+  const Expected<std::vector<uint8_t>> p =
+      canopen_client::EncodeWriteValue(canopen::Entry(id), text);
+  if (p.ok()) return *p;
+  EXPECT_EQ(p.error().code, Error::kInvalidArgument) << p.error().message;
+  *why = p.error().message;
+  return {};
 }
 
 TEST(SdoValue, TheTypeAndTheLimitsBoundTheValue) {

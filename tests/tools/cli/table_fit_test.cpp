@@ -32,10 +32,10 @@ AlignedBytes HandTable() {
   return WriteGridImage(g, 3);
 }
 
-tools::BoardInstallation Board(int32_t max_correction, uint32_t max_rate, uint32_t input_rate) {
-  tools::BoardInstallation b;
+cli::BoardInstallation Board(int32_t max_correction, uint32_t max_rate, uint32_t input_rate) {
+  cli::BoardInstallation b;
   for (char name : {'X', 'Y', 'Z'}) {
-    tools::BoardAxis a;
+    cli::BoardAxis a;
     a.name = name;
     a.resolution_e9 = 1000000;
     a.max_correction_steps = max_correction;
@@ -67,7 +67,7 @@ TEST(TableFit, ATableWithinTheLimitsFits) {
   const auto view = table::ParseImage(img.data(), img.size());
   ASSERT_TRUE(view.ok());
   // 0.04 x 50000 steps/s = 2000 steps/s: exactly the limit.
-  EXPECT_TRUE(tools::CheckTableFits(*view, Board(30, 2000, 50000)).empty());
+  EXPECT_TRUE(cli::CheckTableFits(*view, Board(30, 2000, 50000)).empty());
 }
 
 TEST(TableFit, ClampAndRateLimitNameTheAxisTheValueAndTheLimit) {
@@ -76,7 +76,7 @@ TEST(TableFit, ClampAndRateLimitNameTheAxisTheValueAndTheLimit) {
   ASSERT_TRUE(view.ok());
   // Max correction 20 < 30 on X; 0.04 x 100000 = 4000 > 2000 steps/s on X; Z 0.01 x 100000 =
   // 1000 fits.
-  const auto p = tools::CheckTableFits(*view, Board(20, 2000, 100000));
+  const auto p = cli::CheckTableFits(*view, Board(20, 2000, 100000));
   ASSERT_EQ(p.size(), 2u);
   EXPECT_TRUE(p[0].limit);
   EXPECT_NE(p[0].message.find("axis 1 (X)"), std::string::npos) << p[0].message;
@@ -92,16 +92,16 @@ TEST(TableFit, AnotherResolutionOrFewerAxesIsAMismatchNotALimit) {
   const AlignedBytes img = HandTable();
   const auto view = table::ParseImage(img.data(), img.size());
   ASSERT_TRUE(view.ok());
-  tools::BoardInstallation b = Board(1000, 2000, 1000);
+  cli::BoardInstallation b = Board(1000, 2000, 1000);
   b.axes[1].resolution_e9 = 500000;
-  auto p = tools::CheckTableFits(*view, b);
+  auto p = cli::CheckTableFits(*view, b);
   ASSERT_EQ(p.size(), 1u);
   EXPECT_FALSE(p[0].limit);
   EXPECT_NE(p[0].message.find("axis 2 (Y)"), std::string::npos) << p[0].message;
   EXPECT_NE(p[0].message.find("500000"), std::string::npos) << p[0].message;
   b = Board(1000, 2000, 1000);
   b.axes.pop_back();
-  p = tools::CheckTableFits(*view, b);
+  p = cli::CheckTableFits(*view, b);
   ASSERT_EQ(p.size(), 1u);
   EXPECT_FALSE(p[0].limit);
   EXPECT_NE(p[0].message.find("the table has 3 axes, the board 2"), std::string::npos);

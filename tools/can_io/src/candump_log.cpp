@@ -3,7 +3,6 @@
 
 #include <cstdio>
 #include <istream>
-#include <stdexcept>
 
 namespace volcomp::can_io {
 namespace {
@@ -26,54 +25,50 @@ bool ParseDecimal(const std::string& s, uint64_t* value) {
   return true;
 }
 
-std::optional<CandumpRecord> Fail(std::string* error, const std::string& why) {
-  if (error != nullptr) *error = why;
-  return std::nullopt;
-}
+Unexpected<Failure> Malformed(const std::string& why) { return Fail(Error::kInputInvalid, why); }
 
-// "123#11223344", "12345678#", "123#R", "123#R8". Returns "" or why it is malformed.
-std::string ParseFrame(const std::string& text, CanFrame* frame) {
+// "123#11223344", "12345678#", "123#R", "123#R8"; a malformed frame says why.
+Expected<CanFrame> ParseFrame(const std::string& text) {
   const size_t hash = text.find('#');
-  if (hash == std::string::npos) return "no '#' in frame '" + text + "'";
+  if (hash == std::string::npos) return Malformed("no '#' in frame '" + text + "'");
   const std::string id = text.substr(0, hash);
   const std::string data = text.substr(hash + 1);
   if (id.size() != 3 && id.size() != 8) {
-    return "id '" + id + "' must have 3 (standard) or 8 (extended) hex digits";
+    return Malformed("id '" + id + "' must have 3 (standard) or 8 (extended) hex digits");
   }
-  if (!data.empty() && data[0] == '#') return "CAN FD frames are not supported";
+  if (!data.empty() && data[0] == '#') return Malformed("CAN FD frames are not supported");
   CanFrame f;
   f.extended = id.size() == 8;
   for (char c : id) {
     const int d = Hex(c);
-    if (d < 0) return "id '" + id + "' is not hex";
+    if (d < 0) return Malformed("id '" + id + "' is not hex");
     f.id = (f.id << 4) | static_cast<uint32_t>(d);
   }
-  if (!f.valid()) return "id '" + id + "' out of range";
+  if (!f.valid()) return Malformed("id '" + id + "' out of range");
   if (!data.empty() && (data[0] == 'R' || data[0] == 'r')) {
     f.rtr = true;
     if (data.size() == 2 && data[1] >= '0' && data[1] <= '8') {
       f.dlc = static_cast<uint8_t>(data[1] - '0');
     } else if (data.size() != 1) {
-      return "bad remote frame '" + text + "'";
+      return Malformed("bad remote frame '" + text + "'");
     }
-    *frame = f;
-    return "";
+    return f;
   }
   // Data bytes, optionally separated by '.' (can-utils accepts "11.22.33").
   std::string hex;
   for (char c : data) {
     if (c != '.') hex += c;
   }
-  if (hex.size() % 2 != 0 || hex.size() > 16) return "data '" + data + "' must be 0..8 whole bytes";
+  if (hex.size() % 2 != 0 || hex.size() > 16)
+    return Malformed("data '" + data + "' must be 0..8 whole bytes");
   for (size_t i = 0; i < hex.size(); i += 2) {
     const int hi = Hex(hex[i]);
     const int lo = Hex(hex[i + 1]);
-    if (hi < 0 || lo < 0) return "data '" + data + "' is not hex";
+    if (hi < 0 || lo < 0) return Malformed("data '" + data + "' is not hex");
     f.data[i / 2] = static_cast<uint8_t>(hi << 4 | lo);
   }
   f.dlc = static_cast<uint8_t>(hex.size() / 2);
-  *frame = f;
-  return "";
+  return f;
 }
 
 }  // namespace
@@ -103,7 +98,7 @@ std::string FormatCandumpLine(const CandumpRecord& r) {
   return line;
 }
 
-std::optional<CandumpRecord> ParseCandumpLine(const std::string& raw, std::string* error) {
+Expected<CandumpRecord> ParseCandumpLine(const std::string& raw) {
   std::string line = raw;
   while (!line.empty() && (line.back() == '\n' || line.back() == '\r')) line.pop_back();
   // Fields separated by single or multiple spaces.
@@ -116,48 +111,46 @@ std::optional<CandumpRecord> ParseCandumpLine(const std::string& raw, std::strin
     if (i > start) fields.push_back(line.substr(start, i - start));
   }
   if (fields.size() < 3 || fields.size() > 4) {
-    return Fail(error, "expected '(SEC.USEC) IFACE FRAME [T|R]'");
+    return Malformed("expected '(SEC.USEC) IFACE FRAME [T|R]'");
   }
   const std::string& ts = fields[0];
   const size_t dot = ts.find('.');
   if (ts.size() < 4 || ts.front() != '(' || ts.back() != ')' || dot == std::string::npos) {
-    return Fail(error, "timestamp '" + ts + "' is not (SEC.USEC)");
+    return Malformed("timestamp '" + ts + "' is not (SEC.USEC)");
   }
   uint64_t sec = 0;
   uint64_t usec = 0;
   const std::string frac = ts.substr(dot + 1, ts.size() - dot - 2);
   if (!ParseDecimal(ts.substr(1, dot - 1), &sec) || frac.size() != 6 ||
       !ParseDecimal(frac, &usec)) {
-    return Fail(error, "timestamp '" + ts + "' is not (SEC.USEC) with 6 fraction digits");
+    return Malformed("timestamp '" + ts + "' is not (SEC.USEC) with 6 fraction digits");
   }
   CandumpRecord r;
   r.timestamp_us = sec * 1000000 + usec;
   r.iface = fields[1];
-  const std::string why = ParseFrame(fields[2], &r.frame);
-  if (!why.empty()) return Fail(error, why);
+  VOLCOMP_TRY_ASSIGN(r.frame, ParseFrame(fields[2]));
   if (fields.size() == 4) {
     if (fields[3] == "T") {
       r.direction = Direction::kTx;
     } else if (fields[3] == "R") {
       r.direction = Direction::kRx;
     } else {
-      return Fail(error, "direction '" + fields[3] + "' is not T or R");
+      return Malformed("direction '" + fields[3] + "' is not T or R");
     }
   }
   return r;
 }
 
-std::vector<CandumpRecord> ReadCandumpLog(std::istream& in) {
+Expected<std::vector<CandumpRecord>> ReadCandumpLog(std::istream& in) {
   std::vector<CandumpRecord> out;
   std::string line;
   size_t number = 0;
   while (std::getline(in, line)) {
     ++number;
     if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
-    std::string why;
-    auto r = ParseCandumpLine(line, &why);
-    if (!r) throw std::runtime_error("line " + std::to_string(number) + ": " + why);
-    out.push_back(std::move(*r));
+    Expected<CandumpRecord> r = ParseCandumpLine(line);
+    if (!r.ok()) return Fail(r.error().Prefixed("line " + std::to_string(number)));
+    out.push_back(std::move(r).value());
   }
   return out;
 }
@@ -165,11 +158,11 @@ std::vector<CandumpRecord> ReadCandumpLog(std::istream& in) {
 CandumpLogWriter::CandumpLogWriter(std::ostream& out, std::string iface, bool direction_markers)
     : out_(&out), iface_(std::move(iface)), direction_markers_(direction_markers) {}
 
-std::unique_ptr<CandumpLogWriter> CandumpLogWriter::OpenFile(const std::string& path,
-                                                             std::string iface,
-                                                             bool direction_markers) {
+Expected<std::unique_ptr<CandumpLogWriter>> CandumpLogWriter::OpenFile(const std::string& path,
+                                                                       std::string iface,
+                                                                       bool direction_markers) {
   auto file = std::make_unique<std::ofstream>(path, std::ios::out | std::ios::trunc);
-  if (!*file) throw std::runtime_error("cannot write CAN log '" + path + "'");
+  if (!*file) return Fail(Error::kIoError, "cannot write CAN log '" + path + "'");
   auto writer = std::make_unique<CandumpLogWriter>(*file, std::move(iface), direction_markers);
   writer->file_ = std::move(file);
   return writer;

@@ -9,7 +9,6 @@
 
 #include <cerrno>
 #include <cstring>
-#include <stdexcept>
 
 namespace volcomp::can_io::detail {
 
@@ -39,18 +38,19 @@ short PollFd(int fd, short events, std::chrono::microseconds timeout) {
   return r == 0 ? 0 : POLLERR;
 }
 
-void SetNonBlocking(int fd, const std::string& what) {
+Outcome SetNonBlocking(int fd, const std::string& what) {
   const int flags = ::fcntl(fd, F_GETFL);
   if (flags < 0 || ::fcntl(fd, F_SETFL, flags | O_NONBLOCK) < 0) {
-    throw std::runtime_error(what + ": cannot set non-blocking mode: " + ErrnoText(errno));
+    return Fail(Error::kIoError, what + ": cannot set non-blocking mode: " + ErrnoText(errno));
   }
+  return Outcome::Ok();
 }
 
-void WriteAll(int fd,
-              const char* data,
-              size_t size,
-              std::chrono::milliseconds timeout,
-              const std::string& what) {
+Outcome WriteAll(int fd,
+                 const char* data,
+                 size_t size,
+                 std::chrono::milliseconds timeout,
+                 const std::string& what) {
   const auto deadline = std::chrono::steady_clock::now() + timeout;
   bool is_socket = true;  // send(MSG_NOSIGNAL): a closed TCP peer gives EPIPE, not SIGPIPE
   while (size > 0) {
@@ -66,19 +66,20 @@ void WriteAll(int fd,
     }
     if (n < 0 && errno == EINTR) continue;
     if (n < 0 && errno != EAGAIN && errno != EWOULDBLOCK) {
-      throw std::runtime_error(what + ": write failed: " + ErrnoText(errno));
+      return Fail(Error::kCommunication, what + ": write failed: " + ErrnoText(errno));
     }
     const auto left = std::chrono::duration_cast<std::chrono::microseconds>(
         deadline - std::chrono::steady_clock::now());
     if (left.count() <= 0) {
-      throw std::runtime_error(what + ": write timed out (peer not reading for " +
-                               std::to_string(timeout.count()) + " ms)");
+      return Fail(Error::kCommunication, what + ": write timed out (peer not reading for " +
+                                             std::to_string(timeout.count()) + " ms)");
     }
     const short ev = PollFd(fd, POLLOUT, left);
     if ((ev & (POLLERR | POLLNVAL)) != 0) {
-      throw std::runtime_error(what + ": write failed: connection error");
+      return Fail(Error::kCommunication, what + ": write failed: connection error");
     }
   }
+  return Outcome::Ok();
 }
 
 std::string ErrnoText(int err) { return std::strerror(err); }

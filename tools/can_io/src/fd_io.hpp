@@ -5,6 +5,8 @@
 #include <cstddef>
 #include <string>
 
+#include "volcomp/hosted/expected.hpp"
+
 struct pollfd;
 
 namespace volcomp::can_io::detail {
@@ -41,15 +43,15 @@ class UniqueFd {
 int PollFds(struct pollfd* fds, unsigned long count, std::chrono::microseconds timeout);
 /// One fd; returns revents (0 on timeout). Negative timeouts mean 0.
 short PollFd(int fd, short events, std::chrono::microseconds timeout);
-/// Sets O_NONBLOCK; throws std::runtime_error naming `what` on failure.
-void SetNonBlocking(int fd, const std::string& what);
-/// Writes all bytes to a non-blocking fd, waiting for POLLOUT up to `timeout` in total; throws
-/// std::runtime_error("<what>: ...") on error or timeout.
-void WriteAll(int fd,
-              const char* data,
-              size_t size,
-              std::chrono::milliseconds timeout,
-              const std::string& what);
+/// Sets O_NONBLOCK; a failure (kIoError) names `what`.
+Outcome SetNonBlocking(int fd, const std::string& what);
+/// Writes all bytes to a non-blocking fd, waiting for POLLOUT up to `timeout` in total; an error
+/// or the timeout is a kCommunication failure "<what>: ...".
+Outcome WriteAll(int fd,
+                 const char* data,
+                 size_t size,
+                 std::chrono::milliseconds timeout,
+                 const std::string& what);
 /// strerror(err) as a std::string.
 std::string ErrnoText(int err);
 

@@ -9,7 +9,6 @@
 #include <unistd.h>
 
 #include <cerrno>
-#include <stdexcept>
 
 #include "fd_io.hpp"
 #include "volcomp/can_io/slcan_transport.hpp"
@@ -50,24 +49,26 @@ speed_t BaudConstant(uint32_t baud) {
 
 }  // namespace
 
-std::unique_ptr<SlcanTransport> OpenSlcanSerial(const std::string& device,
-                                                const SlcanOptions& options,
-                                                uint32_t uart_baud) {
+Expected<std::unique_ptr<SlcanTransport>> OpenSlcanSerial(const std::string& device,
+                                                          const SlcanOptions& options,
+                                                          uint32_t uart_baud) {
   const std::string what = "slcan:" + device;
   const speed_t speed = BaudConstant(uart_baud);
   if (speed == B0) {
-    throw std::runtime_error(what + ": unsupported UART baud rate " + std::to_string(uart_baud));
+    return Fail(Error::kInvalidArgument,
+                what + ": unsupported UART baud rate " + std::to_string(uart_baud));
   }
   detail::UniqueFd fd(::open(device.c_str(), O_RDWR | O_NOCTTY | O_NONBLOCK | O_CLOEXEC));
   if (!fd.valid()) {
     const int err = errno;
-    throw std::runtime_error(what + ": cannot open: " + detail::ErrnoText(err) +
-                             (err == EACCES ? " (add yourself to the dialout group?)" : ""));
+    return Fail(Error::kCommunication,
+                what + ": cannot open: " + detail::ErrnoText(err) +
+                    (err == EACCES ? " (add yourself to the dialout group?)" : ""));
   }
   termios tio{};
   if (::tcgetattr(fd.get(), &tio) != 0) {
-    throw std::runtime_error(what + ": not a serial device or pty (" + detail::ErrnoText(errno) +
-                             ")");
+    return Fail(Error::kCommunication,
+                what + ": not a serial device or pty (" + detail::ErrnoText(errno) + ")");
   }
   ::cfmakeraw(&tio);
   tio.c_cflag |= CLOCAL | CREAD;
@@ -77,16 +78,16 @@ std::unique_ptr<SlcanTransport> OpenSlcanSerial(const std::string& device,
   ::cfsetispeed(&tio, speed);
   ::cfsetospeed(&tio, speed);
   if (::tcsetattr(fd.get(), TCSANOW, &tio) != 0) {
-    throw std::runtime_error(what + ": cannot set raw mode: " + detail::ErrnoText(errno));
+    return Fail(Error::kCommunication, what + ": cannot set raw mode: " + detail::ErrnoText(errno));
   }
   ::tcflush(fd.get(), TCIOFLUSH);  // stale bytes from an earlier session
-  return std::make_unique<SlcanTransport>(fd.Release(), what, options);
+  return SlcanTransport::Open(fd.Release(), what, options);
 }
 
-std::unique_ptr<SlcanTransport> OpenSlcanTcp(const std::string& host,
-                                             uint16_t port,
-                                             const SlcanOptions& options,
-                                             std::chrono::milliseconds connect_timeout) {
+Expected<std::unique_ptr<SlcanTransport>> OpenSlcanTcp(const std::string& host,
+                                                       uint16_t port,
+                                                       const SlcanOptions& options,
+                                                       std::chrono::milliseconds connect_timeout) {
   const std::string what = "slcan-tcp:" + host + ":" + std::to_string(port);
   addrinfo hints{};
   hints.ai_family = AF_UNSPEC;
@@ -94,7 +95,8 @@ std::unique_ptr<SlcanTransport> OpenSlcanTcp(const std::string& host,
   addrinfo* list = nullptr;
   const int gai = ::getaddrinfo(host.c_str(), std::to_string(port).c_str(), &hints, &list);
   if (gai != 0) {
-    throw std::runtime_error(what + ": cannot resolve '" + host + "': " + ::gai_strerror(gai));
+    return Fail(Error::kCommunication,
+                what + ": cannot resolve '" + host + "': " + ::gai_strerror(gai));
   }
   std::string last_error = "no address";
   detail::UniqueFd connected;
@@ -131,10 +133,10 @@ std::unique_ptr<SlcanTransport> OpenSlcanTcp(const std::string& host,
   }
   ::freeaddrinfo(list);
   if (!connected.valid()) {
-    throw std::runtime_error(what + ": cannot connect: " + last_error +
-                             " (is the simulator or slcan server running?)");
+    return Fail(Error::kCommunication, what + ": cannot connect: " + last_error +
+                                           " (is the simulator or slcan server running?)");
   }
-  return std::make_unique<SlcanTransport>(connected.Release(), what, options);
+  return SlcanTransport::Open(connected.Release(), what, options);
 }
 
 }  // namespace volcomp::can_io

@@ -14,7 +14,6 @@
 
 #include <cerrno>
 #include <cstdio>
-#include <stdexcept>
 
 #include "fd_io.hpp"
 #include "volcomp/can/slcan.hpp"
@@ -212,13 +211,13 @@ struct SlcanServer::Impl {
 SlcanServer::SlcanServer(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
 SlcanServer::~SlcanServer() = default;
 
-std::unique_ptr<SlcanServer> SlcanServer::CreatePty(const SlcanServerOptions& options) {
+Expected<std::unique_ptr<SlcanServer>> SlcanServer::CreatePty(const SlcanServerOptions& options) {
   auto impl = std::make_unique<Impl>();
   impl->is_pty = true;
   int master = -1;
   int slave = -1;
   if (::openpty(&master, &slave, nullptr, nullptr, nullptr) != 0) {
-    throw std::runtime_error("slcan server: openpty failed: " + detail::ErrnoText(errno));
+    return Fail(Error::kIoError, "slcan server: openpty failed: " + detail::ErrnoText(errno));
   }
   impl->master.Reset(master);
   impl->slave.Reset(slave);
@@ -226,37 +225,37 @@ std::unique_ptr<SlcanServer> SlcanServer::CreatePty(const SlcanServerOptions& op
   ::fcntl(slave, F_SETFD, FD_CLOEXEC);
   termios tio{};
   if (::tcgetattr(slave, &tio) != 0) {
-    throw std::runtime_error("slcan server: tcgetattr on pty: " + detail::ErrnoText(errno));
+    return Fail(Error::kIoError, "slcan server: tcgetattr on pty: " + detail::ErrnoText(errno));
   }
   ::cfmakeraw(&tio);
   ::tcsetattr(slave, TCSANOW, &tio);
-  detail::SetNonBlocking(master, "slcan server pty");
+  VOLCOMP_TRY(detail::SetNonBlocking(master, "slcan server pty"));
   char name[128] = {};
   if (::ttyname_r(slave, name, sizeof name) != 0) {
-    throw std::runtime_error("slcan server: cannot name the pty: " + detail::ErrnoText(errno));
+    return Fail(Error::kIoError, "slcan server: cannot name the pty: " + detail::ErrnoText(errno));
   }
   impl->slave_path = name;
   if (!options.symlink.empty()) {
     struct stat st {};
     if (::lstat(options.symlink.c_str(), &st) == 0) {
       if (!S_ISLNK(st.st_mode)) {
-        throw std::runtime_error("slcan server: '" + options.symlink +
-                                 "' exists and is not a symlink; not replacing it");
+        return Fail(Error::kIoError, "slcan server: '" + options.symlink +
+                                         "' exists and is not a symlink; not replacing it");
       }
       ::unlink(options.symlink.c_str());
     }
     if (::symlink(name, options.symlink.c_str()) != 0) {
-      throw std::runtime_error("slcan server: cannot create symlink '" + options.symlink +
-                               "': " + detail::ErrnoText(errno));
+      return Fail(Error::kIoError, "slcan server: cannot create symlink '" + options.symlink +
+                                       "': " + detail::ErrnoText(errno));
     }
   }
   impl->options = options;  // after the symlink exists: ~Impl removes it
   return std::unique_ptr<SlcanServer>(new SlcanServer(std::move(impl)));
 }
 
-std::unique_ptr<SlcanServer> SlcanServer::CreateTcp(const std::string& address,
-                                                    uint16_t port,
-                                                    const SlcanServerOptions& options) {
+Expected<std::unique_ptr<SlcanServer>> SlcanServer::CreateTcp(const std::string& address,
+                                                              uint16_t port,
+                                                              const SlcanServerOptions& options) {
   auto impl = std::make_unique<Impl>();
   impl->options = options;
   impl->options.symlink.clear();
@@ -268,7 +267,7 @@ std::unique_ptr<SlcanServer> SlcanServer::CreateTcp(const std::string& address,
   addrinfo* list = nullptr;
   const int gai = ::getaddrinfo(address.empty() ? nullptr : address.c_str(),
                                 std::to_string(port).c_str(), &hints, &list);
-  if (gai != 0) throw std::runtime_error(what + ": " + ::gai_strerror(gai));
+  if (gai != 0) return Fail(Error::kIoError, what + ": " + ::gai_strerror(gai));
   std::string error = "no address";
   for (addrinfo* a = list; a != nullptr && !impl->listener.valid(); a = a->ai_next) {
     UniqueFd fd(::socket(a->ai_family, a->ai_socktype | SOCK_NONBLOCK | SOCK_CLOEXEC, 0));
@@ -282,7 +281,7 @@ std::unique_ptr<SlcanServer> SlcanServer::CreateTcp(const std::string& address,
     impl->listener = std::move(fd);
   }
   ::freeaddrinfo(list);
-  if (!impl->listener.valid()) throw std::runtime_error(what + ": cannot listen: " + error);
+  if (!impl->listener.valid()) return Fail(Error::kIoError, what + ": cannot listen: " + error);
   sockaddr_storage bound{};
   socklen_t len = sizeof bound;
   ::getsockname(impl->listener.get(), reinterpret_cast<sockaddr*>(&bound), &len);
@@ -305,7 +304,7 @@ std::string SlcanServer::client_spec() const {
 
 uint16_t SlcanServer::port() const { return impl_->port; }
 
-bool SlcanServer::Poll(std::chrono::microseconds timeout) {
+Expected<bool> SlcanServer::Poll(std::chrono::microseconds timeout) {
   Impl& s = *impl_;
   s.Flush();
   pollfd fds[2];
@@ -318,7 +317,7 @@ bool SlcanServer::Poll(std::chrono::microseconds timeout) {
   }
   if (s.received.empty() && count > 0) {
     if (detail::PollFds(fds, count, timeout) < 0) {
-      throw std::runtime_error("slcan server: poll failed: " + detail::ErrnoText(errno));
+      return Fail(Error::kIoError, "slcan server: poll failed: " + detail::ErrnoText(errno));
     }
   }
   if (io < 0 && s.listener.valid()) {

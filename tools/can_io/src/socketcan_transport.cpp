@@ -1,7 +1,6 @@
 // SocketCAN client transport.
 #include "volcomp/can_io/socketcan_transport.hpp"
 
-#include <stdexcept>
 #include <thread>
 
 namespace volcomp::can_io {
@@ -11,54 +10,60 @@ using hal::socketcan::CanErrorInfo;
 using hal::socketcan::SocketCanSocket;
 using Clock = std::chrono::steady_clock;
 
-SocketCanTransport::SocketCanTransport(const std::string& iface, const SocketCanOptions& options)
-    : options_(options) {
-  const Expected<void> opened = socket_.Open(iface, options.socket);
-  if (!opened.ok()) throw std::runtime_error(opened.error().message);
+Expected<std::unique_ptr<SocketCanTransport>> SocketCanTransport::Open(
+    const std::string& iface, const SocketCanOptions& options) {
+  std::unique_ptr<SocketCanTransport> t(new SocketCanTransport(options));
+  const Expected<void> opened = t->socket_.Open(iface, options.socket);
+  if (!opened.ok()) {
+    const Failure& f = opened.error();
+    return Fail(f.code == Error::kInvalidArgument ? f.code : Error::kCommunication, f.message);
+  }
+  return t;
 }
 
-void SocketCanTransport::Send(const CanFrame& frame) {
-  if (!frame.valid()) throw std::invalid_argument(description() + ": invalid CAN frame");
+Outcome SocketCanTransport::Send(const CanFrame& frame) {
+  if (!frame.valid()) return Fail(Error::kInvalidArgument, description() + ": invalid CAN frame");
   // The bus state comes from error frames that Receive() reads; a bus-off seen there stops
   // sending until the controller reports a restart.
   const auto deadline = Clock::now() + options_.send_timeout;
   auto backoff = std::chrono::microseconds(100);
   for (;;) {
     if (state_ == BusState::kBusOff) {
-      throw CanBusOffError(description() + ": controller is bus-off; frame not sent");
+      return Fail(Error::kCommunication, description() + ": controller is bus-off; frame not sent");
     }
     int err = 0;
     const auto r = socket_.Write(frame, &err);
-    if (r == SocketCanSocket::IoResult::kOk) return;
+    if (r == SocketCanSocket::IoResult::kOk) return Outcome::Ok();
     if (r == SocketCanSocket::IoResult::kError) {
-      throw std::runtime_error(
-          hal::socketcan::SocketCanErrorText(socket_.iface() + ": write", err));
+      return Fail(Error::kCommunication,
+                  hal::socketcan::SocketCanErrorText(socket_.iface() + ": write", err));
     }
     if (Clock::now() + backoff > deadline) {
-      throw std::runtime_error(description() + ": transmit queue full for " +
-                               std::to_string(options_.send_timeout.count()) +
-                               " ms (no other node acknowledging? raise the queue with `ip link "
-                               "set " +
-                               socket_.iface() + " txqueuelen 1000`)");
+      return Fail(Error::kCommunication,
+                  description() + ": transmit queue full for " +
+                      std::to_string(options_.send_timeout.count()) +
+                      " ms (no other node acknowledging? raise the queue with `ip link set " +
+                      socket_.iface() + " txqueuelen 1000`)");
     }
     std::this_thread::sleep_for(backoff);
     backoff = std::min(backoff * 2, std::chrono::microseconds(2000));
   }
 }
 
-std::optional<CanFrame> SocketCanTransport::Receive(std::chrono::microseconds timeout) {
+Expected<std::optional<CanFrame>> SocketCanTransport::Receive(std::chrono::microseconds timeout) {
   const auto deadline = Clock::now() + timeout;
   for (;;) {
     CanFrame frame;
-    if (ReadOne(&frame)) return frame;
+    VOLCOMP_TRY_ASSIGN(const bool got, ReadOne(&frame));
+    if (got) return std::optional<CanFrame>(frame);
     const auto left =
         std::chrono::duration_cast<std::chrono::microseconds>(deadline - Clock::now());
-    if (left.count() <= 0) return std::nullopt;
+    if (left.count() <= 0) return std::optional<CanFrame>();
     socket_.WaitReadable(left);
   }
 }
 
-bool SocketCanTransport::ReadOne(CanFrame* frame) {
+Expected<bool> SocketCanTransport::ReadOne(CanFrame* frame) {
   for (;;) {
     CanErrorInfo info;
     bool is_error = false;
@@ -66,7 +71,8 @@ bool SocketCanTransport::ReadOne(CanFrame* frame) {
     const auto r = socket_.Read(frame, &info, &is_error, &err);
     if (r == SocketCanSocket::IoResult::kWouldBlock) return false;
     if (r == SocketCanSocket::IoResult::kError) {
-      throw std::runtime_error(hal::socketcan::SocketCanErrorText(socket_.iface() + ": read", err));
+      return Fail(Error::kCommunication,
+                  hal::socketcan::SocketCanErrorText(socket_.iface() + ": read", err));
     }
     if (!is_error) return true;
     OnError(info);

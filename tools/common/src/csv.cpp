@@ -10,7 +10,9 @@
 namespace volcomp::tools {
 namespace {
 
-bool IsBlank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\n' || c == '\f' || c == '\v'; }
+bool IsBlank(char c) {
+  return c == ' ' || c == '\t' || c == '\r' || c == '\n' || c == '\f' || c == '\v';
+}
 bool IsDigit(char c) { return c >= '0' && c <= '9'; }
 bool IsAlpha(char c) { return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z'); }
 bool IsWordChar(char c) { return IsAlpha(c) || IsDigit(c) || c == '_'; }
@@ -140,12 +142,6 @@ void DetectDecimalMark(CsvMeta* meta, const std::vector<CsvRow>& rows) {
   }
 }
 
-template <typename T>
-T OrThrow(Expected<T> r) {
-  if (!r.ok()) throw InputError(r.error().message);
-  return std::move(r).value();
-}
-
 }  // namespace
 
 std::optional<double> ParseDouble(const std::string& text) {
@@ -179,11 +175,11 @@ Expected<double> CsvRow::Number(std::size_t column) const {
   const std::string& name = meta_->header[column];
   std::optional<double> v;
   if (meta_->decimal_comma && IsDecimalPointNumber(field)) {
-    return Fail(meta_->LineFailure(line_, "column \"" + name + "\": \"" + field +
-                                        "\" has a decimal point, but this file writes decimal "
-                                        "commas (line " +
-                                        std::to_string(meta_->decimal_line) +
-                                        "); use one decimal mark throughout"));
+    return Fail(meta_->LineFailure(
+        line_, "column \"" + name + "\": \"" + field +
+                   "\" has a decimal point, but this file writes decimal "
+                   "commas (line " +
+                   std::to_string(meta_->decimal_line) + "); use one decimal mark throughout"));
   }
   if (meta_->decimal_comma && IsDecimalCommaNumber(field)) {
     std::string dotted = field;
@@ -193,14 +189,15 @@ Expected<double> CsvRow::Number(std::size_t column) const {
     v = ParseDouble(field);
   }
   if (!v && meta_->separator != ',' && !meta_->decimal_comma && IsDecimalCommaNumber(field)) {
-    return Fail(meta_->LineFailure(line_, "column \"" + name + "\": \"" + field +
-                                        "\" has a decimal comma, but this file writes decimal "
-                                        "points (line " +
-                                        std::to_string(meta_->decimal_line) +
-                                        "); use one decimal mark throughout"));
+    return Fail(meta_->LineFailure(
+        line_, "column \"" + name + "\": \"" + field +
+                   "\" has a decimal comma, but this file writes decimal "
+                   "points (line " +
+                   std::to_string(meta_->decimal_line) + "); use one decimal mark throughout"));
   }
   if (!v) {
-    return Fail(meta_->LineFailure(line_, "column \"" + name + "\": \"" + field + "\" is not a number"));
+    return Fail(
+        meta_->LineFailure(line_, "column \"" + name + "\": \"" + field + "\" is not a number"));
   }
   return *v;
 }
@@ -214,8 +211,8 @@ Expected<long long> CsvRow::Integer(const std::string& column) const {
   VOLCOMP_TRY_ASSIGN(const std::size_t c, meta_->Require(column));
   const auto v = ParseInteger(fields_[c]);
   if (!v) {
-    return Fail(meta_->LineFailure(line_, "column \"" + column + "\": \"" + fields_[c] +
-                                        "\" is not an integer"));
+    return Fail(meta_->LineFailure(
+        line_, "column \"" + column + "\": \"" + fields_[c] + "\" is not an integer"));
   }
   return *v;
 }
@@ -225,16 +222,6 @@ Expected<std::optional<double>> CsvRow::OptionalNumber(const std::string& column
   if (!c || Trim(fields_[*c]).empty()) return std::optional<double>();
   VOLCOMP_TRY_ASSIGN(const double v, Number(*c));
   return std::optional<double>(v);
-}
-
-const std::string& CsvRow::text(const std::string& column) const {
-  return fields_[meta_->require(column)];
-}
-double CsvRow::number(std::size_t column) const { return OrThrow(Number(column)); }
-double CsvRow::number(const std::string& column) const { return OrThrow(Number(column)); }
-long long CsvRow::integer(const std::string& column) const { return OrThrow(Integer(column)); }
-std::optional<double> CsvRow::optional_number(const std::string& column) const {
-  return OrThrow(OptionalNumber(column));
 }
 
 template <typename T>
@@ -249,9 +236,7 @@ T CsvFields::Take(Expected<T> r, T fallback) {
 
 double CsvFields::Number(const std::string& column) { return Take(row_.Number(column), 0.0); }
 double CsvFields::Number(std::size_t column) { return Take(row_.Number(column), 0.0); }
-long long CsvFields::Integer(const std::string& column) {
-  return Take(row_.Integer(column), 0LL);
-}
+long long CsvFields::Integer(const std::string& column) { return Take(row_.Integer(column), 0LL); }
 std::optional<double> CsvFields::OptionalNumber(const std::string& column) {
   return Take(row_.OptionalNumber(column), std::optional<double>());
 }
@@ -290,17 +275,19 @@ Expected<CsvTable> CsvTable::Read(std::istream& in, const std::string& source) {
         }
         for (std::size_t j = 0; j < i; ++j) {
           if (meta->header[i] == meta->header[j]) {
-            return Fail(meta->LineFailure(line_no, "column \"" + meta->header[i] +
-                                                 "\" appears twice in header"));
+            return Fail(meta->LineFailure(
+                line_no, "column \"" + meta->header[i] + "\" appears twice in header"));
           }
         }
       }
       continue;
     }
-    if (!SplitLine(line, sep, &fields)) return Fail(meta->LineFailure(line_no, "unterminated quote"));
+    if (!SplitLine(line, sep, &fields))
+      return Fail(meta->LineFailure(line_no, "unterminated quote"));
     if (fields.size() != meta->header.size()) {
       return Fail(meta->LineFailure(line_no, "expected " + std::to_string(meta->header.size()) +
-                                           " fields, found " + std::to_string(fields.size())));
+                                                 " fields, found " +
+                                                 std::to_string(fields.size())));
     }
     CsvRow row;
     row.meta_ = meta;
@@ -328,14 +315,6 @@ Expected<CsvTable> CsvTable::ReadString(const std::string& text, const std::stri
   return Read(s, source);
 }
 
-CsvTable CsvTable::Parse(std::istream& in, const std::string& source) {
-  return OrThrow(Read(in, source));
-}
-CsvTable CsvTable::ParseFile(const std::string& path) { return OrThrow(ReadFile(path)); }
-CsvTable CsvTable::ParseString(const std::string& text, const std::string& source) {
-  return OrThrow(ReadString(text, source));
-}
-
 std::optional<std::size_t> CsvMeta::find(const std::string& column) const {
   for (std::size_t i = 0; i < header.size(); ++i) {
     if (header[i] == column) return i;
@@ -351,12 +330,6 @@ Expected<std::size_t> CsvMeta::Require(const std::string& column) const {
 
 Failure CsvMeta::LineFailure(std::size_t line, const std::string& message) const {
   return Failure{Error::kInputInvalid, source + ":" + std::to_string(line) + ": " + message};
-}
-
-std::size_t CsvMeta::require(const std::string& column) const { return OrThrow(Require(column)); }
-
-InputError CsvMeta::error(std::size_t line, const std::string& message) const {
-  return InputError(LineFailure(line, message).message);
 }
 
 std::optional<std::string> CsvTable::first_of(const std::vector<std::string>& names) const {

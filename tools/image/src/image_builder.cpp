@@ -2,17 +2,16 @@
 #include "volcomp/image/image_builder.hpp"
 
 #include <cmath>
-#include <fstream>
-#include <iterator>
 #include <sstream>
 
 #include "volcomp/table/table_writer.hpp"
-#include "volcomp/tools/csv.hpp"
 
 namespace volcomp::image {
 namespace {
 
-using tools::InputError;
+Unexpected<Failure> Invalid(const std::string& message) {
+  return Fail(Error::kInputInvalid, "image: " + message);
+}
 
 int64_t ElementLimit(table::ElementType type) {
   switch (type) {
@@ -26,44 +25,46 @@ int64_t ElementLimit(table::ElementType type) {
   return 0;
 }
 
-// Calls `fn(value, description)` for every correction value of the request.
+// Calls `fn(value, description)` (an Outcome) for every correction value of the request; stops at
+// the first failure.
 template <class Fn>
-void ForEachValue(const ImageRequest& r, Fn fn) {
+Outcome ForEachValue(const ImageRequest& r, Fn fn) {
   if (r.grid) {
     const auto& g = *r.grid;
     const uint64_t n0 = g.lattice[0].nodes, n1 = g.lattice[1].nodes;
     for (size_t i = 0; i < g.correction_steps.size(); ++i) {
       const uint64_t node = i / 3, c = i % 3;
-      fn(g.correction_steps[i], [=] {
+      VOLCOMP_TRY(fn(g.correction_steps[i], [=] {
         std::ostringstream s;
         s << "GRID3 node (" << node % n0 << ", " << (node / n0) % n1 << ", " << node / (n0 * n1)
           << ") component " << c;
         return s.str();
-      });
+      }));
     }
   }
   for (const auto& t : r.axis_tables) {
     for (size_t i = 0; i < t.forward_steps.size(); ++i) {
-      fn(t.forward_steps[i], [&, i] {
+      VOLCOMP_TRY(fn(t.forward_steps[i], [&, i] {
         return "AXIS1D axis " + std::to_string(t.axis) + " forward node " + std::to_string(i);
-      });
+      }));
     }
     for (size_t i = 0; i < t.reverse_steps.size(); ++i) {
-      fn(t.reverse_steps[i], [&, i] {
+      VOLCOMP_TRY(fn(t.reverse_steps[i], [&, i] {
         return "AXIS1D axis " + std::to_string(t.axis) + " reverse node " + std::to_string(i);
-      });
+      }));
     }
   }
+  return Outcome::Ok();
 }
 
-void CheckRequest(const ImageRequest& r) {
+Outcome CheckRequest(const ImageRequest& r) {
   if (r.axes.empty() || r.axes.size() > table::kMaxAxes) {
-    throw InputError("image: 1 to 6 axes are needed, got " + std::to_string(r.axes.size()));
+    return Invalid("1 to 6 axes are needed, got " + std::to_string(r.axes.size()));
   }
-  if (!r.grid && r.axis_tables.empty()) throw InputError("image: no GRID3 and no AXIS1D table");
+  if (!r.grid && r.axis_tables.empty()) return Invalid("no GRID3 and no AXIS1D table");
   if (r.table_id == kNoTableId) {
-    throw InputError(
-        "image: table id 0 is reserved (the board reports 0 in 0x2103 when no table is active); "
+    return Invalid(
+        "table id 0 is reserved (the board reports 0 in 0x2103 when no table is active); "
         "ids start at 1");
   }
   if (r.grid) {
@@ -71,25 +72,26 @@ void CheckRequest(const ImageRequest& r) {
     uint64_t nodes = 1;
     for (const auto& l : g.lattice) nodes *= l.nodes;
     if (g.correction_steps.size() != nodes * 3) {
-      throw InputError("image: GRID3 needs " + std::to_string(nodes * 3) + " values, got " +
-                       std::to_string(g.correction_steps.size()));
+      return Invalid("GRID3 needs " + std::to_string(nodes * 3) + " values, got " +
+                     std::to_string(g.correction_steps.size()));
     }
   }
   for (const auto& t : r.axis_tables) {
     if (t.forward_steps.size() != t.lattice.nodes ||
         (!t.reverse_steps.empty() && t.reverse_steps.size() != t.lattice.nodes)) {
-      throw InputError("image: AXIS1D axis " + std::to_string(t.axis) + " needs " +
-                       std::to_string(t.lattice.nodes) + " values per direction");
+      return Invalid("AXIS1D axis " + std::to_string(t.axis) + " needs " +
+                     std::to_string(t.lattice.nodes) + " values per direction");
     }
   }
-  ForEachValue(r, [](double v, auto where) {
-    if (!std::isfinite(v)) throw InputError("image: " + where() + " is not a finite number");
+  return ForEachValue(r, [](double v, auto where) -> Outcome {
+    if (!std::isfinite(v)) return Invalid(where() + " is not a finite number");
     if (std::fabs(v) > table::kMaxCorrectionSteps) {
       std::ostringstream s;
-      s << "image: " << where() << " = " << v << " steps exceeds the maximum correction of "
+      s << where() << " = " << v << " steps exceeds the maximum correction of "
         << table::kMaxCorrectionSteps << " steps";
-      throw InputError(s.str());
+      return Invalid(s.str());
     }
+    return Outcome::Ok();
   });
 }
 
@@ -127,32 +129,35 @@ Encoded Encode(const std::vector<double>& values, table::ElementType type, uint8
   return e;
 }
 
-std::string InfoText(const std::map<std::string, std::string>& info) {
+Expected<std::string> InfoText(const std::map<std::string, std::string>& info) {
   std::string text;
   for (const auto& [k, v] : info) {
     for (const std::string* s : {&k, &v}) {
       for (char c : *s) {
         if (c == '\n' || c == '\r' || (static_cast<unsigned char>(c) < 0x20 && c != '\t')) {
-          throw InputError("image: INFO entry \"" + k + "\" contains a control character");
+          return Invalid("INFO entry \"" + k + "\" contains a control character");
         }
       }
     }
     if (k.empty() || k.find('=') != std::string::npos) {
-      throw InputError("image: INFO key \"" + k + "\" must be non-empty and contain no '='");
+      return Invalid("INFO key \"" + k + "\" must be non-empty and contain no '='");
     }
     text += k + "=" + v + "\n";
   }
-  if (text.size() > table::kMaxInfoBytes - 3) throw InputError("image: INFO text too long");
+  if (text.size() > table::kMaxInfoBytes - 3) return Invalid("INFO text too long");
   return text;
 }
 
 }  // namespace
 
-uint8_t ChooseFracBits(const ImageRequest& request) {
-  CheckRequest(request);
-  if (request.element == table::ElementType::kFloat32) return 0;
+Expected<uint8_t> ChooseFracBits(const ImageRequest& request) {
+  VOLCOMP_TRY(CheckRequest(request));
+  if (request.element == table::ElementType::kFloat32) return uint8_t{0};
   double max_abs = 0;
-  ForEachValue(request, [&](double v, auto) { max_abs = std::max(max_abs, std::fabs(v)); });
+  VOLCOMP_TRY(ForEachValue(request, [&](double v, auto) {
+    max_abs = std::max(max_abs, std::fabs(v));
+    return Outcome::Ok();
+  }));
   for (const auto& t : request.axis_tables)
     max_abs = std::max(max_abs, std::fabs(t.backlash_steps));
   const int64_t limit = ElementLimit(request.element);
@@ -160,29 +165,35 @@ uint8_t ChooseFracBits(const ImageRequest& request) {
     if (std::llround(max_abs * std::ldexp(1.0, f)) <= limit) return static_cast<uint8_t>(f);
   }
   std::ostringstream s;
-  s << "image: a correction of " << max_abs << " steps does not fit int16 even with 0 fraction "
+  s << "a correction of " << max_abs << " steps does not fit int16 even with 0 fraction "
     << "bits; use --element int32";
-  throw InputError(s.str());
+  return Invalid(s.str());
 }
 
-std::vector<uint8_t> BuildImage(const ImageRequest& request) {
-  CheckRequest(request);
-  const uint8_t frac = request.frac_bits ? *request.frac_bits : ChooseFracBits(request);
+Expected<std::vector<uint8_t>> BuildImage(const ImageRequest& request) {
+  VOLCOMP_TRY(CheckRequest(request));
+  uint8_t frac = 0;
+  if (request.frac_bits) {
+    frac = *request.frac_bits;
+  } else {
+    VOLCOMP_TRY_ASSIGN(frac, ChooseFracBits(request));
+  }
   const table::ElementType type = request.element;
   if (type == table::ElementType::kFloat32 && frac != 0) {
-    throw InputError("image: float32 elements take no fraction bits");
+    return Invalid("float32 elements take no fraction bits");
   }
-  if (frac > table::kMaxFracBits) throw InputError("image: fraction bits must be 0..8");
+  if (frac > table::kMaxFracBits) return Invalid("fraction bits must be 0..8");
   const int64_t limit = ElementLimit(type);
   if (limit != 0) {
-    ForEachValue(request, [&](double v, auto where) {
+    VOLCOMP_TRY(ForEachValue(request, [&](double v, auto where) -> Outcome {
       if (std::llabs(std::llround(v * std::ldexp(1.0, frac))) > limit) {
         std::ostringstream s;
-        s << "image: " << where() << " = " << v << " steps does not fit the element type with "
-          << int(frac) << " fraction bits";
-        throw InputError(s.str());
+        s << where() << " = " << v << " steps does not fit the element type with " << int(frac)
+          << " fraction bits";
+        return Invalid(s.str());
       }
-    });
+      return Outcome::Ok();
+    }));
   }
 
   table::ImageSpec spec;
@@ -206,7 +217,7 @@ std::vector<uint8_t> BuildImage(const ImageRequest& request) {
   }
   std::vector<Encoded> axis_values(request.axis_tables.size() * 2);
   spec.axis1d_count = static_cast<uint8_t>(request.axis_tables.size());
-  if (request.axis_tables.size() > table::kMaxAxes) throw InputError("image: too many AXIS1D");
+  if (request.axis_tables.size() > table::kMaxAxes) return Invalid("too many AXIS1D");
   for (size_t i = 0; i < request.axis_tables.size(); ++i) {
     const auto& t = request.axis_tables[i];
     table::Axis1dSpec& a = spec.axis1d[i];
@@ -223,34 +234,22 @@ std::vector<uint8_t> BuildImage(const ImageRequest& request) {
       a.reverse = axis_values[2 * i + 1].view(type);
     }
   }
-  const std::string info = InfoText(request.info);
+  VOLCOMP_TRY_ASSIGN(const std::string info, InfoText(request.info));
   if (!info.empty()) {
     spec.info = info.data();
     spec.info_size = static_cast<uint32_t>(info.size());
   }
 
   const Result<uint32_t> size = table::ImageSize(spec);
-  if (!size.ok()) throw InputError(std::string("image: ") + ErrorText(size.error()));
+  if (!size.ok()) return Invalid(ErrorText(size.error()));
   std::vector<uint32_t> aligned((*size + 3) / 4);
   uint8_t* out = reinterpret_cast<uint8_t*>(aligned.data());
   const Result<uint32_t> written = table::WriteImage(spec, out, aligned.size() * 4);
   if (!written.ok()) {
-    throw InputError(std::string("image: ") + ErrorText(written.error()) + " (" +
-                     ErrorName(written.error()) + ")");
+    return Invalid(std::string(ErrorText(written.error())) + " (" + ErrorName(written.error()) +
+                   ")");
   }
   return std::vector<uint8_t>(out, out + *written);
-}
-
-std::vector<uint8_t> ReadFileBytes(const std::string& path) {
-  std::ifstream f(path, std::ios::binary);
-  if (!f) throw InputError(path + ": cannot open");
-  return std::vector<uint8_t>(std::istreambuf_iterator<char>(f), {});
-}
-
-void WriteFileBytes(const std::string& path, const std::vector<uint8_t>& bytes) {
-  std::ofstream f(path, std::ios::binary | std::ios::trunc);
-  f.write(reinterpret_cast<const char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
-  if (!f) throw std::runtime_error(path + ": cannot write");
 }
 
 }  // namespace volcomp::image

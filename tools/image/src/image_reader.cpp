@@ -3,7 +3,6 @@
 
 #include <cstring>
 
-#include "volcomp/image/image_builder.hpp"
 #include "volcomp/tools/csv.hpp"
 #include "volcomp/tools/file_io.hpp"
 
@@ -23,19 +22,9 @@ Expected<LoadedImage> LoadedImage::FromBytes(const std::vector<uint8_t>& bytes,
   return image;
 }
 
-LoadedImage::LoadedImage(const std::vector<uint8_t>& bytes, const std::string& source) {
-  auto r = FromBytes(bytes, source);
-  if (!r.ok()) throw tools::InputError(r.error().message);
-  *this = std::move(r).value();
-}
-
 Expected<LoadedImage> ReadImageFile(const std::string& path) {
   VOLCOMP_TRY_ASSIGN(const std::vector<uint8_t> bytes, tools::ReadFileBytes(path));
   return LoadedImage::FromBytes(bytes, path);
-}
-
-LoadedImage LoadImageFile(const std::string& path) {
-  return LoadedImage(ReadFileBytes(path), path);
 }
 
 BoardConfig BoardConfigFor(const table::TableView& view) {
@@ -53,9 +42,11 @@ BoardConfig BoardConfigFor(const table::TableView& view) {
   return c;
 }
 
-ImageEvaluator::ImageEvaluator(const LoadedImage& image) : axis_count_(image.view().axis_count) {
-  const Status s = table_.Prepare(image.view(), BoardConfigFor(image.view()));
-  if (!s.ok()) throw tools::InputError(std::string("image: ") + ErrorText(s.error()));
+Expected<ImageEvaluator> ImageEvaluator::Create(const LoadedImage& image) {
+  ImageEvaluator e(image.view().axis_count);
+  const Status s = e.table_.Prepare(image.view(), BoardConfigFor(image.view()));
+  if (!s.ok()) return Fail(Error::kInputInvalid, std::string("image: ") + ErrorText(s.error()));
+  return e;
 }
 
 void ImageEvaluator::CorrectionQ8(const int32_t* pos_steps,

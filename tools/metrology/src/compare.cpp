@@ -5,25 +5,19 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 
+#include "json_fields.hpp"
 #include "volcomp/report/format.hpp"
 #include "volcomp/report/xy_chart.hpp"
-#include "volcomp/tools/csv.hpp"
+#include "volcomp/tools/file_io.hpp"
 
 namespace volcomp::metrology {
 namespace {
 
-using tools::InputError;
 using tools::JsonValue;
 
-std::string ReadAll(const std::string& path) {
-  std::ifstream f(path, std::ios::binary);
-  if (!f) throw InputError(path + ": cannot open");
-  std::stringstream s;
-  s << f.rdbuf();
-  return s.str();
+Unexpected<Failure> Refuse(std::string message) {
+  return Fail(Error::kInputInvalid, std::move(message));
 }
 
 std::string Command(const JsonValue& j) {
@@ -191,45 +185,56 @@ void CompareDiagonals(const JsonValue& b,
   if (!each.values.empty()) r->tables.push_back(each);
 }
 
-std::string Reduction(const ComparedValue& v) {
-  return v.reduction_pct ? report::FormatFixed(*v.reduction_pct, 1) + " %" : std::string("-");
+std::string Reduction(const std::optional<double>& pct) {
+  return pct ? report::FormatFixed(*pct, 1) + " %" : std::string("-");
+}
+
+std::string Reduction(const ComparedValue& v) { return Reduction(v.reduction_pct); }
+
+JsonValue PairsJson(const std::vector<std::pair<std::string, std::string>>& pairs) {
+  JsonValue o = JsonValue::Object();
+  for (const auto& [k, v] : pairs) o.object.emplace_back(k, v);
+  return o;
 }
 
 }  // namespace
 
-std::vector<LoadedResult> LoadResults(const std::string& path) {
+Expected<std::vector<LoadedResult>> LoadResults(const std::string& path) {
   std::error_code ec;
   std::vector<std::string> files;
   if (std::filesystem::is_directory(path, ec)) {
-    for (const auto& e : std::filesystem::directory_iterator(path, ec)) {
-      if (e.path().extension() == ".json") files.push_back(e.path().string());
+    // increment(ec), not ++: the library reports a directory it cannot list instead of throwing.
+    for (std::filesystem::directory_iterator it(path, ec), end; !ec && it != end;
+         it.increment(ec)) {
+      if (it->path().extension() == ".json") files.push_back(it->path().string());
     }
+    if (ec) return Fail(Error::kIoError, path + ": cannot list: " + ec.message());
     std::sort(files.begin(), files.end());
   } else if (std::filesystem::is_regular_file(path, ec)) {
     files.push_back(path);
   } else {
-    throw InputError(path + ": no such report directory or result file");
+    return Refuse(path + ": no such report directory or result file");
   }
   std::vector<LoadedResult> out;
   for (const std::string& f : files) {
-    auto json = tools::ParseJson(ReadAll(f), f);
-    if (!json.ok()) throw InputError(json.error().message);  // TRANSITION (metrology returns results)
-    LoadedResult r{std::filesystem::path(f).stem().string(), f, std::move(json).value()};
+    VOLCOMP_TRY_ASSIGN(const std::string text, tools::ReadTextFile(f));
+    VOLCOMP_TRY_ASSIGN(JsonValue json, tools::ParseJson(text, f));
+    LoadedResult r{std::filesystem::path(f).stem().string(), f, std::move(json)};
     const std::string command = Command(r.json);
     if (command == "evaluate positioning" || command == "evaluate diagonal") {
       out.push_back(std::move(r));
     } else if (files.size() == 1) {
-      throw InputError(f +
-                       ": not a result of `volcomp evaluate positioning` or `evaluate "
-                       "diagonal` (written by --report or --json)");
+      return Refuse(f +
+                    ": not a result of `volcomp evaluate positioning` or `evaluate diagonal` "
+                    "(written by --report or --json)");
     }
   }
-  if (out.empty()) throw InputError(path + ": no positioning or diagonal results (*.json)");
+  if (out.empty()) return Refuse(path + ": no positioning or diagonal results (*.json)");
   return out;
 }
 
-Comparison CompareResults(const std::vector<LoadedResult>& before,
-                          const std::vector<LoadedResult>& after) {
+Expected<Comparison> CompareResults(const std::vector<LoadedResult>& before,
+                                    const std::vector<LoadedResult>& after) {
   Comparison c;
   const bool single = before.size() == 1 && after.size() == 1;
   for (const LoadedResult& b : before) {
@@ -267,25 +272,69 @@ Comparison CompareResults(const std::vector<LoadedResult>& before,
     if (!paired) c.warnings.push_back(a.name + " (" + a.path + "): no before result of that name");
   }
   if (c.results.empty()) {
-    throw InputError("no result appears both before and after (results are paired by name)");
+    return Refuse("no result appears both before and after (results are paired by name)");
   }
   return c;
 }
 
-void WriteComparisonText(std::ostream& out, const Comparison& c) {
+JsonValue ComparisonJson(const Comparison& c) {
+  JsonValue j = JsonValue::Object();
+  j.Set("command", "report compare");
+  JsonValue results = JsonValue::Array();
   for (const ComparedResult& r : c.results) {
-    out << r.name << " (" << r.kind << "): before " << r.before_source << ", after "
-        << r.after_source << "\n";
+    JsonValue o = JsonValue::Object();
+    o.Set("name", r.name);
+    o.Set("kind", r.kind);
+    o.Set("before_source", r.before_source);
+    o.Set("after_source", r.after_source);
+    o.Set("conditions_before", PairsJson(r.conditions_before));
+    o.Set("conditions_after", PairsJson(r.conditions_after));
+    JsonValue tables = JsonValue::Array();
     for (const ComparedTable& t : r.tables) {
-      out << "  " << t.title << ", values in " << t.unit << "\n";
+      JsonValue table = JsonValue::Object();
+      table.Set("title", t.title);
+      table.Set("unit", t.unit);
+      JsonValue values = JsonValue::Array();
       for (const ComparedValue& v : t.values) {
+        JsonValue value = JsonValue::Object();
+        value.Set("symbol", v.symbol);
+        value.Set("meaning", v.meaning);
+        value.Set("before", v.before);
+        value.Set("after", v.after);
+        value.Set("reduction_pct", v.reduction_pct ? JsonValue(*v.reduction_pct) : JsonValue());
+        values.Push(std::move(value));
+      }
+      table.Set("values", std::move(values));
+      tables.Push(std::move(table));
+    }
+    o.Set("tables", std::move(tables));
+    results.Push(std::move(o));
+  }
+  j.Set("results", std::move(results));
+  JsonValue warnings = JsonValue::Array();
+  for (const std::string& w : c.warnings) warnings.Push(w);
+  j.Set("warnings", std::move(warnings));
+  return j;
+}
+
+void WriteComparisonText(std::ostream& out, const JsonValue& comparison) {
+  for (const JsonValue& r : json::At(comparison, "results").array) {
+    out << json::Text(r, "name") << " (" << json::Text(r, "kind") << "): before "
+        << json::Text(r, "before_source") << ", after " << json::Text(r, "after_source") << "\n";
+    for (const JsonValue& t : json::At(r, "tables").array) {
+      const std::string& title = json::Text(t, "title");
+      out << "  " << title << ", values in " << json::Text(t, "unit") << "\n";
+      for (const JsonValue& v : json::At(t, "values").array) {
+        const JsonValue& pct = json::At(v, "reduction_pct");
         char line[160];
-        std::snprintf(line, sizeof line, "    %s %10s -> %10s   %9s",
-                      report::PadRight(v.symbol, 6).c_str(),
-                      report::FormatFixed(v.before, 2).c_str(),
-                      report::FormatFixed(v.after, 2).c_str(), Reduction(v).c_str());
+        std::snprintf(
+            line, sizeof line, "    %s %10s -> %10s   %9s",
+            report::PadRight(json::Text(v, "symbol"), 6).c_str(),
+            report::FormatFixed(json::Number(v, "before"), 2).c_str(),
+            report::FormatFixed(json::Number(v, "after"), 2).c_str(),
+            Reduction(pct.is_null() ? std::nullopt : std::optional<double>(pct.number)).c_str());
         out << line;
-        if (t.title == "each diagonal") out << "   " << v.meaning;
+        if (title == "each diagonal") out << "   " << json::Text(v, "meaning");
         out << "\n";
       }
     }

@@ -6,7 +6,6 @@
 #include <map>
 #include <set>
 #include <sstream>
-#include <stdexcept>
 
 #include "volcomp/metrology/positioning_csv.hpp"
 #include "volcomp/metrology/reading_checks.hpp"
@@ -31,9 +30,9 @@ std::array<int, 3> Canonical(const std::array<int, 3>& s) {
 
 }  // namespace
 
-DiagonalPlan PlanDiagonal(const Vec3& p1, const Vec3& p2, double increment_mm) {
+Expected<DiagonalPlan> PlanDiagonal(const Vec3& p1, const Vec3& p2, double increment_mm) {
   if (!(increment_mm > 0.0) || !std::isfinite(increment_mm)) {
-    throw std::invalid_argument("the diagonal increment must be positive");
+    return Fail(Error::kInvalidArgument, "the diagonal increment must be positive");
   }
   DiagonalPlan p;
   p.p1 = p1;
@@ -41,7 +40,7 @@ DiagonalPlan PlanDiagonal(const Vec3& p1, const Vec3& p2, double increment_mm) {
   p.travel_mm = {p2.x - p1.x, p2.y - p1.y, p2.z - p1.z};
   p.length_mm = std::sqrt(p.travel_mm.x * p.travel_mm.x + p.travel_mm.y * p.travel_mm.y +
                           p.travel_mm.z * p.travel_mm.z);
-  if (!(p.length_mm > 0.0)) throw std::invalid_argument("P1 and P2 are the same point");
+  if (!(p.length_mm > 0.0)) return Fail(Error::kInvalidArgument, "P1 and P2 are the same point");
   p.steps = std::max(1, static_cast<int>(std::lround(p.length_mm / increment_mm)));
   p.increment_mm = p.length_mm / p.steps;
   const double f = p.increment_mm / p.length_mm;
@@ -66,15 +65,16 @@ DiagonalPlan PlanDiagonal(const Vec3& p1, const Vec3& p2, double increment_mm) {
   return p;
 }
 
-DiagonalEvaluation EvaluateDiagonals(const tools::CsvTable& table, const GroupingOptions& options) {
-  const std::size_t diag_col = table.require("diagonal");
+Expected<DiagonalEvaluation> EvaluateDiagonals(const tools::CsvTable& table,
+                                               const GroupingOptions& options) {
+  VOLCOMP_TRY_ASSIGN(const std::size_t diag_col, table.Require("diagonal"));
   if (table.first_of({"target_deg"})) {
-    throw table.error(table.header_line(),
-                      "diagonal tests are linear: use target_mm, not target_deg");
+    return Fail(table.LineFailure(table.header_line(),
+                                  "diagonal tests are linear: use target_mm, not target_deg"));
   }
-  const PositioningData all = ReadPositioningCsv(table);
+  VOLCOMP_TRY_ASSIGN(const PositioningData all, ReadPositioningCsv(table));
   if (all.readings.size() != table.rows().size()) {
-    throw table.error(table.header_line(), "diagonal data must use the long layout");
+    return Fail(table.LineFailure(table.header_line(), "diagonal data must use the long layout"));
   }
   DiagonalEvaluation ev;
   ev.source = table.source();
@@ -84,11 +84,12 @@ DiagonalEvaluation EvaluateDiagonals(const tools::CsvTable& table, const Groupin
   std::map<std::string, DiagonalName> names;
   for (std::size_t i = 0; i < table.rows().size(); ++i) {
     const auto& row = table.rows()[i];
-    const auto name = ParseDiagonalName(row.text(diag_col));
+    const std::string& text = row.fields()[diag_col];  // rows have the header's fields
+    const auto name = ParseDiagonalName(text);
     if (!name) {
-      throw table.error(row.line(), "column \"diagonal\": \"" + row.text(diag_col) +
-                                        "\" is not a diagonal name (e.g. +X+Y-Z, PPN, +X-Y, "
-                                        "+X-Y Z300, NP)");
+      return Fail(table.LineFailure(row.line(), "column \"diagonal\": \"" + text +
+                                                    "\" is not a diagonal name (e.g. +X+Y-Z, "
+                                                    "PPN, +X-Y, +X-Y Z300, NP)"));
     }
     auto it = per.find(name->text);
     if (it == per.end()) {
@@ -110,16 +111,17 @@ DiagonalEvaluation EvaluateDiagonals(const tools::CsvTable& table, const Groupin
   std::set<std::array<int, 3>> body_lines;
   for (const std::string& key : order) {
     const PositioningData& data = per[key];
-    PositioningSet set = GroupReadings(data, options);
+    VOLCOMP_TRY_ASSIGN(const PositioningSet set, GroupReadings(data, options));
     if (!(set.has_up && set.has_down)) {
-      throw tools::InputError(data.source + ":" + std::to_string(data.readings.front().line) +
-                              ": diagonal " + key +
-                              " has only one direction; ISO 230-6 §5.3 needs 5 approaches in "
-                              "each direction");
+      return Fail(Error::kInputInvalid,
+                  data.source + ":" + std::to_string(data.readings.front().line) + ": diagonal " +
+                      key +
+                      " has only one direction; ISO 230-6 §5.3 needs 5 approaches in each "
+                      "direction");
     }
     DiagonalResult d;
     d.name = names[key];
-    d.evaluation = EvaluatePositioning(set, eo);
+    VOLCOMP_TRY_ASSIGN(d.evaluation, EvaluatePositioning(set, eo));
     d.length_mm = set.positions.back().target - set.positions.front().target;
     d.E = *d.evaluation.systematic;
     d.B = *d.evaluation.reversal_max;

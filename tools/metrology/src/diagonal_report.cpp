@@ -3,6 +3,7 @@
 
 #include <cstdio>
 
+#include "json_fields.hpp"
 #include "volcomp/metrology/positioning_report.hpp"
 #include "volcomp/report/format.hpp"
 #include "volcomp/report/xy_chart.hpp"
@@ -11,113 +12,114 @@ namespace volcomp::metrology {
 namespace {
 
 using report::FormatFixed;
+using tools::JsonValue;
 
-void JsonExtreme(tools::JsonWriter& j, const PositioningResult& r, const Extreme& e) {
-  j.begin_object();
-  j.key("value").value(e.value);
-  j.key("position").value(static_cast<int64_t>(e.position + 1));
-  j.key("distance_mm").value(r.positions[e.position].target);
-  if (e.direction) j.key("direction").value(DirectionName(*e.direction));
-  j.end_object();
+JsonValue ExtremeJson(const PositioningResult& r, const Extreme& e) {
+  JsonValue j = JsonValue::Object();
+  j.Set("value", e.value);
+  j.Set("position", static_cast<int64_t>(e.position + 1));
+  j.Set("distance_mm", r.positions[e.position].target);
+  if (e.direction) j.Set("direction", DirectionName(*e.direction));
+  return j;
 }
 
-void JsonGroup(tools::JsonWriter& j, const DiagonalGroupValue& g) {
-  j.begin_object();
-  j.key("E_d").value(g.E_d);
-  j.key("E_d_from").value(g.E_from);
-  j.key("B_d").value(g.B_d);
-  j.key("B_d_from").value(g.B_from);
-  j.key("diagonals").value(g.diagonals);
-  j.end_object();
+JsonValue GroupJson(const DiagonalGroupValue& g) {
+  JsonValue j = JsonValue::Object();
+  j.Set("E_d", g.E_d);
+  j.Set("E_d_from", g.E_from);
+  j.Set("B_d", g.B_d);
+  j.Set("B_d_from", g.B_from);
+  j.Set("diagonals", g.diagonals);
+  return j;
+}
+
+std::string Where(const JsonValue& location) {
+  return DescribeLocation(location, "distance_mm", "mm");
 }
 
 }  // namespace
 
-void WriteDiagonalText(std::ostream& out, const DiagonalEvaluation& ev) {
-  out << "ISO 230-6 diagonal displacement test: " << ev.source << "\n";
-  if (!ev.conditions.empty()) out << "conditions: " << ConditionsText(ev.conditions) << "\n";
+JsonValue DiagonalJson(const DiagonalEvaluation& ev) {
+  JsonValue j = JsonValue::Object();
+  j.Set("command", "evaluate diagonal");
+  j.Set("standard", "ISO 230-6:2002");
+  j.Set("source", ev.source);
+  j.Set("conditions", ConditionsJson(ev.conditions));
+  j.Set("unit", "um");
+  JsonValue diagonals = JsonValue::Array();
+  for (const auto& d : ev.diagonals) {
+    const auto& r = d.evaluation;
+    JsonValue o = JsonValue::Object();
+    o.Set("name", d.name.text);
+    o.Set("kind", d.name.body ? "body" : "face");
+    if (!d.name.body) o.Set("plane", d.name.plane);
+    if (!d.name.offset.empty()) o.Set("offset", d.name.offset);
+    o.Set("length_mm", d.length_mm);
+    JsonValue e = JsonValue::Object();
+    e.Set("value", d.E.value);
+    e.Set("max", ExtremeJson(r, d.E.max));
+    e.Set("min", ExtremeJson(r, d.E.min));
+    o.Set("E", std::move(e));
+    o.Set("B", ExtremeJson(r, d.B));
+    JsonValue positions = JsonValue::Array();
+    for (const auto& p : r.positions) {
+      JsonValue q = JsonValue::Object();
+      q.Set("j", static_cast<int64_t>(p.index + 1));
+      q.Set("distance_mm", p.target);
+      q.Set("mean_up", p.up->mean);
+      q.Set("mean_down", p.down->mean);
+      q.Set("s_up", p.up->s);
+      q.Set("s_down", p.down->s);
+      q.Set("reversal_B", *p.reversal);
+      positions.Push(std::move(q));
+    }
+    o.Set("positions", std::move(positions));
+    diagonals.Push(std::move(o));
+  }
+  j.Set("diagonals", std::move(diagonals));
+  j.Set("body", ev.body ? GroupJson(*ev.body) : JsonValue());
+  JsonValue faces = JsonValue::Object();
+  for (const auto& f : ev.faces) faces.Set(f.name, GroupJson(f));
+  j.Set("faces", std::move(faces));
+  JsonValue warnings = JsonValue::Array();
+  for (const auto& w : ev.warnings) warnings.Push(w);
+  j.Set("warnings", std::move(warnings));
+  return j;
+}
+
+void WriteDiagonalText(std::ostream& out, const JsonValue& ev) {
+  out << "ISO 230-6 diagonal displacement test: " << json::Text(ev, "source") << "\n";
+  const JsonValue& conditions = json::At(ev, "conditions");
+  if (!conditions.object.empty()) out << "conditions: " << ConditionsText(conditions) << "\n";
   out << "values in µm; E = bidirectional systematic positioning error, B = reversal value "
          "(ISO 230-2)\n\n";
   out << "  diagonal          kind   length mm  targets      E_i     B_i   E from max/min, B at\n";
-  for (const auto& d : ev.diagonals) {
+  for (const JsonValue& d : json::At(ev, "diagonals").array) {
+    const JsonValue& e = json::At(d, "E");
+    const JsonValue& b = json::At(d, "B");
     char line[200];
-    std::snprintf(line, sizeof line, "  %-16s  %-5s %10s %8zu %8s %7s   ", d.name.text.c_str(),
-                  d.name.body ? "body" : "face", FormatFixed(d.length_mm, 1).c_str(),
-                  d.evaluation.positions.size(), FormatFixed(d.E.value, 2).c_str(),
-                  FormatFixed(d.B.value, 2).c_str());
-    out << line << DescribeLocation(d.evaluation, d.E.max) << " / "
-        << DescribeLocation(d.evaluation, d.E.min) << ", " << DescribeLocation(d.evaluation, d.B)
-        << "\n";
+    std::snprintf(
+        line, sizeof line, "  %-16s  %-5s %10s %8zu %8s %7s   ", json::Text(d, "name").c_str(),
+        json::Text(d, "kind").c_str(), FormatFixed(json::Number(d, "length_mm"), 1).c_str(),
+        json::At(d, "positions").array.size(), FormatFixed(json::Number(e, "value"), 2).c_str(),
+        FormatFixed(json::Number(b, "value"), 2).c_str());
+    out << line << Where(json::At(e, "max")) << " / " << Where(json::At(e, "min")) << ", "
+        << Where(b) << "\n";
   }
   out << "\n";
-  if (ev.body) {
-    out << "  body diagonals (" << ev.body->diagonals
-        << "):  E_d = " << FormatFixed(ev.body->E_d, 2) << " µm (" << ev.body->E_from
-        << "),  B_d = " << FormatFixed(ev.body->B_d, 2) << " µm (" << ev.body->B_from << ")\n";
+  const JsonValue& body = json::At(ev, "body");
+  if (!body.is_null()) {
+    out << "  body diagonals (" << json::Integer(body, "diagonals")
+        << "):  E_d = " << FormatFixed(json::Number(body, "E_d"), 2) << " µm ("
+        << json::Text(body, "E_d_from") << "),  B_d = " << FormatFixed(json::Number(body, "B_d"), 2)
+        << " µm (" << json::Text(body, "B_d_from") << ")\n";
   }
-  for (const auto& f : ev.faces) {
-    out << "  face " << f.name << " (" << f.diagonals << "):  E_d(" << f.name
-        << ") = " << FormatFixed(f.E_d, 2) << " µm (" << f.E_from << "),  B_d(" << f.name
-        << ") = " << FormatFixed(f.B_d, 2) << " µm (" << f.B_from << ")\n";
+  for (const auto& [name, f] : json::At(ev, "faces").object) {
+    out << "  face " << name << " (" << json::Integer(f, "diagonals") << "):  E_d(" << name
+        << ") = " << FormatFixed(json::Number(f, "E_d"), 2) << " µm (" << json::Text(f, "E_d_from")
+        << "),  B_d(" << name << ") = " << FormatFixed(json::Number(f, "B_d"), 2) << " µm ("
+        << json::Text(f, "B_d_from") << ")\n";
   }
-}
-
-void WriteDiagonalJson(tools::JsonWriter& j, const DiagonalEvaluation& ev) {
-  j.begin_object();
-  j.key("command").value("evaluate diagonal");
-  j.key("standard").value("ISO 230-6:2002");
-  j.key("source").value(ev.source);
-  WriteConditionsJson(j, ev.conditions);
-  j.key("unit").value("um");
-  j.key("diagonals").begin_array();
-  for (const auto& d : ev.diagonals) {
-    const auto& r = d.evaluation;
-    j.begin_object();
-    j.key("name").value(d.name.text);
-    j.key("kind").value(d.name.body ? "body" : "face");
-    if (!d.name.body) j.key("plane").value(d.name.plane);
-    if (!d.name.offset.empty()) j.key("offset").value(d.name.offset);
-    j.key("length_mm").value(d.length_mm);
-    j.key("E").begin_object();
-    j.key("value").value(d.E.value);
-    j.key("max");
-    JsonExtreme(j, r, d.E.max);
-    j.key("min");
-    JsonExtreme(j, r, d.E.min);
-    j.end_object();
-    j.key("B");
-    JsonExtreme(j, r, d.B);
-    j.key("positions").begin_array();
-    for (const auto& p : r.positions) {
-      j.begin_object();
-      j.key("j").value(static_cast<int64_t>(p.index + 1));
-      j.key("distance_mm").value(p.target);
-      j.key("mean_up").value(p.up->mean);
-      j.key("mean_down").value(p.down->mean);
-      j.key("s_up").value(p.up->s);
-      j.key("s_down").value(p.down->s);
-      j.key("reversal_B").value(*p.reversal);
-      j.end_object();
-    }
-    j.end_array();
-    j.end_object();
-  }
-  j.end_array();
-  j.key("body");
-  if (ev.body)
-    JsonGroup(j, *ev.body);
-  else
-    j.null();
-  j.key("faces").begin_object();
-  for (const auto& f : ev.faces) {
-    j.key(f.name);
-    JsonGroup(j, f);
-  }
-  j.end_object();
-  j.key("warnings").begin_array();
-  for (const auto& w : ev.warnings) j.value(w);
-  j.end_array();
-  j.end_object();
 }
 
 void AddDiagonalSections(report::HtmlPage* page, const DiagonalEvaluation& ev) {
@@ -177,6 +179,12 @@ void AddDiagonalSections(report::HtmlPage* page, const DiagonalEvaluation& ev) {
     page->Heading(3, "Warnings");
     page->List(ev.warnings);
   }
+}
+
+report::HtmlPage DiagonalPage(const DiagonalEvaluation& ev) {
+  report::HtmlPage page("ISO 230-6 diagonal displacement test");
+  AddDiagonalSections(&page, ev);
+  return page;
 }
 
 }  // namespace volcomp::metrology

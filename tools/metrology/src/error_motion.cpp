@@ -3,7 +3,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <stdexcept>
 
 #include "volcomp/metrology/polar_fit.hpp"
 
@@ -47,14 +46,16 @@ const char* CentreName(CentreKind kind) {
   return "?";
 }
 
-ErrorMotion AnalyseErrorMotion(const std::vector<double>& angle_deg,
-                               const Revolutions& u,
-                               bool min_zone) {
+Expected<ErrorMotion> AnalyseErrorMotion(const std::vector<double>& angle_deg,
+                                         const Revolutions& u,
+                                         bool min_zone) {
   const std::size_t n = angle_deg.size();
-  if (u.empty()) throw std::invalid_argument("error motion needs at least one revolution");
-  if (n < 4) throw std::invalid_argument("error motion needs at least 4 angles per revolution");
+  if (u.empty()) return Fail(Error::kInvalidArgument, "error motion needs at least one revolution");
+  if (n < 4) {
+    return Fail(Error::kInvalidArgument, "error motion needs at least 4 angles per revolution");
+  }
   for (const auto& rev : u) {
-    if (rev.size() != n) throw std::invalid_argument("revolutions of unequal length");
+    if (rev.size() != n) return Fail(Error::kInvalidArgument, "revolutions of unequal length");
   }
   ErrorMotion em;
   em.angle_deg = angle_deg;
@@ -78,12 +79,12 @@ ErrorMotion AnalyseErrorMotion(const std::vector<double>& angle_deg,
       em.asynchronous_angle_deg = angle_deg[j];
     }
   }
-  const CentreFit lsc = FitLeastSquaresCentre(angle_deg, em.synchronous);
+  VOLCOMP_TRY_ASSIGN(const CentreFit lsc, FitLeastSquaresCentre(angle_deg, em.synchronous));
   em.lsc_mean = lsc.mean;
   em.pc = About(em, CentreKind::kPc, 0.0, 0.0);
   em.lsc = About(em, CentreKind::kLsc, lsc.a, lsc.b);
   if (min_zone) {
-    const CentreFit mz = FitMinimumZoneCentre(angle_deg, em.synchronous);
+    VOLCOMP_TRY_ASSIGN(const CentreFit mz, FitMinimumZoneCentre(angle_deg, em.synchronous));
     em.mz = About(em, CentreKind::kMz, mz.a, mz.b);
   }
   em.fundamental_value = 2.0 * std::hypot(lsc.a, lsc.b);

@@ -10,13 +10,13 @@
 
 namespace volcomp::metrology {
 
-MeanDeviations MeanDeviationsFromCsv(const tools::CsvTable& table,
-                                     const GroupingOptions& grouping) {
-  const PositioningData data = ReadPositioningCsv(table);
-  const PositioningSet set = GroupReadings(data, grouping);
+Expected<MeanDeviations> MeanDeviationsFromCsv(const tools::CsvTable& table,
+                                               const GroupingOptions& grouping) {
+  VOLCOMP_TRY_ASSIGN(const PositioningData data, ReadPositioningCsv(table));
+  VOLCOMP_TRY_ASSIGN(const PositioningSet set, GroupReadings(data, grouping));
   if (!set.has_up) {
-    throw table.error(table.header_line(),
-                      "the readings have no ↑ approaches; the forward table needs them");
+    return Fail(table.LineFailure(
+        table.header_line(), "the readings have no ↑ approaches; the forward table needs them"));
   }
   MeanDeviations m;
   m.kind = set.kind;

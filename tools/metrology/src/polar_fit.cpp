@@ -5,7 +5,6 @@
 #include <cmath>
 #include <limits>
 #include <set>
-#include <stdexcept>
 
 namespace volcomp::metrology {
 namespace {
@@ -49,9 +48,9 @@ bool Solve(std::vector<std::vector<double>> M, std::vector<double> v, std::vecto
 
 // Dense two-phase simplex for: maximize cᵀw subject to A·w = b (b ≥ 0), w ≥ 0, with Bland's
 // rule (no cycling). Returns the dual prices y (the solution of Bᵀy = c_B at the optimum).
-std::vector<double> SimplexDualPrices(const std::vector<std::vector<double>>& A,
-                                      const std::vector<double>& b,
-                                      const std::vector<double>& c) {
+Expected<std::vector<double>> SimplexDualPrices(const std::vector<std::vector<double>>& A,
+                                                const std::vector<double>& b,
+                                                const std::vector<double>& c) {
   const std::size_t m = A.size(), n = c.size(), cols = n + m;
   const double eps = 1e-11;
   std::vector<std::vector<double>> T(m, std::vector<double>(cols + 1, 0.0));
@@ -83,7 +82,7 @@ std::vector<double> SimplexDualPrices(const std::vector<std::vector<double>>& A,
       d[j] = s;
     }
   };
-  auto run = [&](std::size_t allowed) {
+  auto run = [&](std::size_t allowed) -> Outcome {
     for (int iter = 0; iter < 100000; ++iter) {
       std::size_t e = cols;
       for (std::size_t j = 0; j < allowed; ++j) {
@@ -92,7 +91,7 @@ std::vector<double> SimplexDualPrices(const std::vector<std::vector<double>>& A,
           break;
         }
       }
-      if (e == cols) return;
+      if (e == cols) return Outcome::Ok();
       std::size_t r = m;
       double best = std::numeric_limits<double>::infinity();
       for (std::size_t i = 0; i < m; ++i) {
@@ -105,16 +104,16 @@ std::vector<double> SimplexDualPrices(const std::vector<std::vector<double>>& A,
           }
         }
       }
-      if (r == m) throw std::runtime_error("minimum zone: unbounded linear program");
+      if (r == m) return Fail(Error::kInvalidArgument, "minimum zone: unbounded linear program");
       pivot(r, e);
     }
-    throw std::runtime_error("minimum zone: simplex did not converge");
+    return Fail(Error::kInvalidArgument, "minimum zone: simplex did not converge");
   };
   // Phase 1: maximize −Σ artificials.
   std::vector<double> cost1(cols, 0.0);
   for (std::size_t i = 0; i < m; ++i) cost1[n + i] = -1.0;
   reduced(cost1);
-  run(cols);
+  VOLCOMP_TRY(run(cols));
   // Drive remaining artificials out of the basis (they are at zero level).
   for (std::size_t i = 0; i < m; ++i) {
     if (basis[i] < n) continue;
@@ -129,7 +128,7 @@ std::vector<double> SimplexDualPrices(const std::vector<std::vector<double>>& A,
   std::vector<double> cost2(cols, 0.0);
   for (std::size_t j = 0; j < n; ++j) cost2[j] = c[j];
   reduced(cost2);
-  run(n);
+  VOLCOMP_TRY(run(n));
   reduced(cost2);
   // For an artificial column e_i with zero cost, d = −y_i.
   std::vector<double> y(m);
@@ -139,10 +138,10 @@ std::vector<double> SimplexDualPrices(const std::vector<std::vector<double>>& A,
 
 }  // namespace
 
-CentreFit FitLeastSquaresCentre(const std::vector<double>& angle_deg,
-                                const std::vector<double>& p) {
+Expected<CentreFit> FitLeastSquaresCentre(const std::vector<double>& angle_deg,
+                                          const std::vector<double>& p) {
   if (angle_deg.size() != p.size() || DistinctAngles(angle_deg) < 3) {
-    throw std::invalid_argument("least-squares centre needs at least 3 distinct angles");
+    return Fail(Error::kInvalidArgument, "least-squares centre needs at least 3 distinct angles");
   }
   std::vector<std::vector<double>> M(3, std::vector<double>(3, 0.0));
   std::vector<double> v(3, 0.0);
@@ -154,16 +153,19 @@ CentreFit FitLeastSquaresCentre(const std::vector<double>& angle_deg,
     }
   }
   std::vector<double> x;
-  if (!Solve(M, v, &x)) throw std::invalid_argument("least-squares centre: singular angles");
-  return {x[0], x[1], x[2]};
+  if (!Solve(M, v, &x)) {
+    return Fail(Error::kInvalidArgument, "least-squares centre: singular angles");
+  }
+  return CentreFit{x[0], x[1], x[2]};
 }
 
-CentreFit FitMinimumZoneCentre(const std::vector<double>& angle_deg, const std::vector<double>& p) {
+Expected<CentreFit> FitMinimumZoneCentre(const std::vector<double>& angle_deg,
+                                         const std::vector<double>& p) {
   if (angle_deg.size() != p.size() || DistinctAngles(angle_deg) < 4) {
-    throw std::invalid_argument("minimum-zone centre needs at least 4 distinct angles");
+    return Fail(Error::kInvalidArgument, "minimum-zone centre needs at least 4 distinct angles");
   }
   // Scale to O(1) for the simplex tolerances.
-  const CentreFit lsc = FitLeastSquaresCentre(angle_deg, p);
+  VOLCOMP_TRY_ASSIGN(const CentreFit lsc, FitLeastSquaresCentre(angle_deg, p));
   double scale = 0.0;
   for (double v : p) scale = std::max(scale, std::fabs(v - lsc.mean));
   if (!(scale > 0.0)) return lsc;
@@ -183,7 +185,7 @@ CentreFit FitMinimumZoneCentre(const std::vector<double>& angle_deg, const std::
     c[j] = q;
     c[n + j] = -q;
   }
-  const std::vector<double> y = SimplexDualPrices(A, {0.0, 0.0, 0.0, 1.0}, c);
+  VOLCOMP_TRY_ASSIGN(const std::vector<double> y, SimplexDualPrices(A, {0.0, 0.0, 0.0, 1.0}, c));
   CentreFit mz{lsc.mean + y[0] * scale, y[1] * scale, y[2] * scale};
   // Never report a zone wider than the LSC one (guards against round-off in the simplex).
   if (ValueAbout(angle_deg, p, mz.a, mz.b) > ValueAbout(angle_deg, p, lsc.a, lsc.b)) return lsc;

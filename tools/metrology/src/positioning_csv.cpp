@@ -13,7 +13,6 @@ namespace {
 
 using tools::CsvRow;
 using tools::CsvTable;
-using tools::InputError;
 
 // How a measurement column converts to the internal deviation unit.
 struct MeasurementColumn {
@@ -45,7 +44,7 @@ std::string MeasurementNames() {
   return s;
 }
 
-double ToDeviation(
+Expected<double> ToDeviation(
     const CsvTable& t, const CsvRow& row, const MeasurementColumn& m, double value, double target) {
   double diff = m.absolute ? value - target : value;
   if (m.absolute && m.kind == AxisKind::kRotary) {
@@ -60,69 +59,77 @@ double ToDeviation(
       << name.substr(name.rfind('_') + 1) << " cannot be a reading (the limit is ±"
       << kMaxReadingMagnitude << " " << (m.kind == AxisKind::kLinear ? "µm" : "arc-seconds")
       << "); refused";
-    throw t.error(row.line(), s.str());
+    return Fail(t.LineFailure(row.line(), s.str()));
   }
   return deviation;
 }
 
-int ParseRun(const CsvTable& t,
-             const CsvRow& row,
-             const std::string& text,
-             const std::string& column) {
+Expected<int> ParseRun(const CsvTable& t,
+                       const CsvRow& row,
+                       const std::string& text,
+                       const std::string& column) {
   const auto v = tools::ParseInteger(text);
   if (!v || *v < 1 || *v > 1000000) {
-    throw t.error(row.line(), "column \"" + column + "\": run index \"" + text +
-                                  "\" is not a positive integer");
+    return Fail(t.LineFailure(row.line(), "column \"" + column + "\": run index \"" + text +
+                                              "\" is not a positive integer"));
   }
   return static_cast<int>(*v);
 }
 
-PositioningData ReadLong(const CsvTable& t) {
+Expected<PositioningData> ReadLong(const CsvTable& t) {
   PositioningData d;
   d.source = t.source();
   const bool lin = t.find("target_mm").has_value();
   const bool rot = t.find("target_deg").has_value();
   if (lin && rot) {
-    throw t.error(t.header_line(), "both \"target_mm\" and \"target_deg\" columns; give one");
+    return Fail(
+        t.LineFailure(t.header_line(), "both \"target_mm\" and \"target_deg\" columns; give one"));
   }
   const std::string target_col = lin ? "target_mm" : "target_deg";
   d.kind = lin ? AxisKind::kLinear : AxisKind::kRotary;
-  t.require("direction");
-  t.require("run");
+  VOLCOMP_TRY(t.Require("direction"));
+  VOLCOMP_TRY(t.Require("run"));
   const MeasurementColumn* meas = nullptr;
   for (const auto& name : t.header()) {
     const MeasurementColumn* m = FindMeasurement(name);
     if (!m) continue;
     if (meas) {
-      throw t.error(t.header_line(), "two measurement columns \"" + std::string(meas->name) +
-                                         "\" and \"" + name + "\"; give exactly one");
+      return Fail(t.LineFailure(t.header_line(), "two measurement columns \"" +
+                                                     std::string(meas->name) + "\" and \"" + name +
+                                                     "\"; give exactly one"));
     }
     meas = m;
   }
   if (!meas) {
-    throw t.error(t.header_line(),
-                  "missing measurement column (one of " + MeasurementNames() + ")");
+    return Fail(t.LineFailure(t.header_line(),
+                              "missing measurement column (one of " + MeasurementNames() + ")"));
   }
   if (meas->kind != d.kind) {
-    throw t.error(t.header_line(),
-                  "column \"" + std::string(meas->name) + "\" does not fit \"" + target_col +
-                      "\" (" + (d.kind == AxisKind::kLinear ? "linear" : "rotary") + " axis)");
+    return Fail(t.LineFailure(
+        t.header_line(), "column \"" + std::string(meas->name) + "\" does not fit \"" + target_col +
+                             "\" (" + (d.kind == AxisKind::kLinear ? "linear" : "rotary") +
+                             " axis)"));
   }
   for (const CsvRow& row : t.rows()) {
     PositioningReading r;
     r.line = row.line();
-    r.target = row.number(target_col);
-    const auto dir = ParseDirection(row.text("direction"));
+    VOLCOMP_TRY_ASSIGN(r.target, row.Number(target_col));
+    VOLCOMP_TRY_ASSIGN(const std::string direction, row.Text("direction"));
+    const auto dir = ParseDirection(direction);
     if (!dir) {
-      throw t.error(row.line(), "column \"direction\": \"" + row.text("direction") +
-                                    "\" is not a direction (use +, -, up or down)");
+      return Fail(t.LineFailure(row.line(), "column \"direction\": \"" + direction +
+                                                "\" is not a direction (use +, -, up or down)"));
     }
     r.direction = *dir;
-    r.run = ParseRun(t, row, row.text("run"), "run");
-    r.deviation = ToDeviation(t, row, *meas, row.number(meas->name), r.target);
+    VOLCOMP_TRY_ASSIGN(const std::string run, row.Text("run"));
+    VOLCOMP_TRY_ASSIGN(r.run, ParseRun(t, row, run, "run"));
+    VOLCOMP_TRY_ASSIGN(const double value, row.Number(meas->name));
+    VOLCOMP_TRY_ASSIGN(r.deviation, ToDeviation(t, row, *meas, value, r.target));
     d.readings.push_back(r);
   }
-  if (d.readings.empty()) throw t.error(t.header_line(), "no data rows after the header");
+  if (d.readings.empty()) {
+    return Fail(t.LineFailure(t.header_line(), "no data rows after the header"));
+  }
   d.column = meas->name;
   d.column_scale = meas->scale;
   return d;
@@ -139,7 +146,7 @@ std::optional<std::pair<long long, Direction>> ParseWideColumn(const std::string
   return std::make_pair(*j, *dir);
 }
 
-PositioningData ReadWide(const CsvTable& t, const MeasurementColumn& meas) {
+Expected<PositioningData> ReadWide(const CsvTable& t, const MeasurementColumn& meas) {
   PositioningData d;
   d.source = t.source();
   d.kind = meas.kind;
@@ -148,52 +155,61 @@ PositioningData ReadWide(const CsvTable& t, const MeasurementColumn& meas) {
   for (std::size_t c = 1; c < header.size(); ++c) {
     const auto jd = ParseWideColumn(header[c]);
     if (!jd) {
-      throw t.error(t.header_line(), "column \"" + header[c] +
-                                         "\" is not a position and direction such as \"3+\" "
-                                         "or \"3-\"");
+      return Fail(t.LineFailure(t.header_line(), "column \"" + header[c] +
+                                                     "\" is not a position and direction such "
+                                                     "as \"3+\" or \"3-\""));
     }
     cols.push_back(*jd);
   }
-  if (cols.empty())
-    throw t.error(t.header_line(), "no position columns after \"" + header[0] + "\"");
-  if (t.rows().empty()) throw t.error(t.header_line(), "no target row after the header");
+  if (cols.empty()) {
+    return Fail(t.LineFailure(t.header_line(), "no position columns after \"" + header[0] + "\""));
+  }
+  if (t.rows().empty()) {
+    return Fail(t.LineFailure(t.header_line(), "no target row after the header"));
+  }
+  // Every row has as many fields as the header (the reader checks), so fields()[c] is safe.
   const CsvRow& target_row = t.rows().front();
+  const std::vector<std::string>& target_fields = target_row.fields();
   const std::string target_label = meas.kind == AxisKind::kLinear ? "target_mm" : "target_deg";
-  if (target_row.text(0) != target_label) {
-    throw t.error(target_row.line(), "expected the row \"" + target_label +
-                                         "\" with the target positions, found \"" +
-                                         target_row.text(0) + "\"");
+  if (target_fields[0] != target_label) {
+    return Fail(t.LineFailure(target_row.line(), "expected the row \"" + target_label +
+                                                     "\" with the target positions, found \"" +
+                                                     target_fields[0] + "\""));
   }
   std::vector<double> targets;
   std::map<long long, std::pair<double, std::size_t>> target_of_j;  // j -> (target, column)
   for (std::size_t c = 1; c < header.size(); ++c) {
-    const double p = target_row.number(c);
+    VOLCOMP_TRY_ASSIGN(const double p, target_row.Number(c));
     targets.push_back(p);
     const long long j = cols[c - 1].first;
     const auto it = target_of_j.find(j);
     if (it != target_of_j.end() && it->second.first != p) {
-      throw t.error(target_row.line(), "position " + std::to_string(j) + " has target " +
-                                           target_row.text(c) + " in column \"" + header[c] +
-                                           "\" but " + target_row.text(it->second.second) +
-                                           " in column \"" + header[it->second.second] + "\"");
+      return Fail(
+          t.LineFailure(target_row.line(), "position " + std::to_string(j) + " has target " +
+                                               target_fields[c] + " in column \"" + header[c] +
+                                               "\" but " + target_fields[it->second.second] +
+                                               " in column \"" + header[it->second.second] + "\""));
     }
     target_of_j.emplace(j, std::make_pair(p, c));
   }
   for (std::size_t k = 1; k < t.rows().size(); ++k) {
     const CsvRow& row = t.rows()[k];
-    const int run = ParseRun(t, row, row.text(0), header[0]);
+    VOLCOMP_TRY_ASSIGN(const int run, ParseRun(t, row, row.fields()[0], header[0]));
     for (std::size_t c = 1; c < header.size(); ++c) {
-      if (row.text(c).empty()) continue;  // missing reading
+      if (row.fields()[c].empty()) continue;  // missing reading
       PositioningReading r;
       r.line = row.line();
       r.target = targets[c - 1];
       r.direction = cols[c - 1].second;
       r.run = run;
-      r.deviation = ToDeviation(t, row, meas, row.number(c), r.target);
+      VOLCOMP_TRY_ASSIGN(const double value, row.Number(c));
+      VOLCOMP_TRY_ASSIGN(r.deviation, ToDeviation(t, row, meas, value, r.target));
       d.readings.push_back(r);
     }
   }
-  if (d.readings.empty()) throw t.error(target_row.line(), "no readings after the target row");
+  if (d.readings.empty()) {
+    return Fail(t.LineFailure(target_row.line(), "no readings after the target row"));
+  }
   d.column = meas.name;
   d.column_scale = meas.scale;
   return d;
@@ -209,16 +225,17 @@ bool HoldsPositioningReadings(const CsvTable& table) {
   return table.find("target_mm").has_value() || table.find("target_deg").has_value();
 }
 
-PositioningData ReadPositioningCsv(const CsvTable& table) {
+Expected<PositioningData> ReadPositioningCsv(const CsvTable& table) {
   const auto& header = table.header();
   if (const MeasurementColumn* m = FindMeasurement(header.front())) {
     if (header.size() > 1 && ParseWideColumn(header[1])) return ReadWide(table, *m);
   }
   if (!table.find("target_mm") && !table.find("target_deg")) {
-    throw table.error(table.header_line(),
-                      "unrecognised header: expected the long layout (target_mm or target_deg, "
-                      "direction, run and a measurement column) or the wide layout (first cell a "
-                      "measurement column such as deviation_um, then columns like 1+,1-,2+,...)");
+    return Fail(table.LineFailure(
+        table.header_line(),
+        "unrecognised header: expected the long layout (target_mm or target_deg, direction, run "
+        "and a measurement column) or the wide layout (first cell a measurement column such as "
+        "deviation_um, then columns like 1+,1-,2+,...)"));
   }
   return ReadLong(table);
 }

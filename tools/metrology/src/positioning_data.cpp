@@ -6,14 +6,11 @@
 #include <map>
 #include <set>
 #include <sstream>
+#include <tuple>
 #include <utility>
-
-#include "volcomp/tools/csv.hpp"
 
 namespace volcomp::metrology {
 namespace {
-
-using tools::InputError;
 
 std::string Num(double v) {
   std::ostringstream s;
@@ -26,8 +23,8 @@ std::string TargetText(double target, AxisKind kind) {
   return Num(target) + (kind == AxisKind::kLinear ? " mm" : "°");
 }
 
-InputError LineError(const PositioningData& d, std::size_t line, const std::string& msg) {
-  return InputError(d.source + ":" + std::to_string(line) + ": " + msg);
+Unexpected<Failure> LineError(const PositioningData& d, std::size_t line, const std::string& msg) {
+  return Fail(Error::kInputInvalid, d.source + ":" + std::to_string(line) + ": " + msg);
 }
 
 std::string RunList(const std::vector<int>& runs) {
@@ -40,23 +37,24 @@ using SeriesKey = std::pair<int, Direction>;  // (run, direction)
 
 }  // namespace
 
-PositioningSet GroupReadings(const PositioningData& data, const GroupingOptions& options) {
-  if (data.readings.empty()) throw InputError(data.source + ": no readings");
+Expected<PositioningSet> GroupReadings(const PositioningData& data,
+                                       const GroupingOptions& options) {
+  if (data.readings.empty()) return Fail(Error::kInputInvalid, data.source + ": no readings");
   const AxisKind kind = data.kind;
 
   // Duplicates: the same target, direction and run twice.
   std::map<std::tuple<double, Direction, int>, std::size_t> seen;
   for (const auto& r : data.readings) {
     if (r.run < 1) {
-      throw LineError(data, r.line, "run index " + std::to_string(r.run) + " must be 1 or more");
+      return LineError(data, r.line, "run index " + std::to_string(r.run) + " must be 1 or more");
     }
     const auto key = std::make_tuple(r.target, r.direction, r.run);
     const auto it = seen.find(key);
     if (it != seen.end()) {
-      throw LineError(data, r.line,
-                      "target " + TargetText(r.target, kind) + " " + DirectionSymbol(r.direction) +
-                          " run " + std::to_string(r.run) + " is given twice (also on line " +
-                          std::to_string(it->second) + ")");
+      return LineError(data, r.line,
+                       "target " + TargetText(r.target, kind) + " " + DirectionSymbol(r.direction) +
+                           " run " + std::to_string(r.run) + " is given twice (also on line " +
+                           std::to_string(it->second) + ")");
     }
     seen.emplace(key, r.line);
   }
@@ -86,11 +84,11 @@ PositioningSet GroupReadings(const PositioningData& data, const GroupingOptions&
       found = true;
     }
     if (found) {
-      throw LineError(data, r.line,
-                      "run " + std::to_string(r.run) + " " + DirectionSymbol(r.direction) +
-                          " has target " + TargetText(r.target, kind) +
-                          " where the other runs have " + TargetText(nearest, kind) +
-                          "; target positions must be the same in every run");
+      return LineError(data, r.line,
+                       "run " + std::to_string(r.run) + " " + DirectionSymbol(r.direction) +
+                           " has target " + TargetText(r.target, kind) +
+                           " where the other runs have " + TargetText(nearest, kind) +
+                           "; target positions must be the same in every run");
     }
   }
 
@@ -119,16 +117,16 @@ PositioningSet GroupReadings(const PositioningData& data, const GroupingOptions&
     const ApproachSeries& any = p.up.empty() ? p.down : p.up;
     const std::size_t line = any.lines.front();
     if (set.has_up && p.up.empty()) {
-      throw LineError(data, line,
-                      "missing direction: target " + TargetText(p.target, kind) +
-                          " has no ↑ approaches while other targets have; both directions are "
-                          "needed at every target for bidirectional values");
+      return LineError(data, line,
+                       "missing direction: target " + TargetText(p.target, kind) +
+                           " has no ↑ approaches while other targets have; both directions are "
+                           "needed at every target for bidirectional values");
     }
     if (set.has_down && p.down.empty()) {
-      throw LineError(data, line,
-                      "missing direction: target " + TargetText(p.target, kind) +
-                          " has no ↓ approaches while other targets have; both directions are "
-                          "needed at every target for bidirectional values");
+      return LineError(data, line,
+                       "missing direction: target " + TargetText(p.target, kind) +
+                           " has no ↓ approaches while other targets have; both directions are "
+                           "needed at every target for bidirectional values");
     }
   }
   if (!(set.has_up && set.has_down)) {
@@ -148,13 +146,13 @@ PositioningSet GroupReadings(const PositioningData& data, const GroupingOptions&
                                std::to_string(s.size()) + " approach" +
                                (s.size() == 1 ? "" : "es") + " (runs " + RunList(s.runs) + ")";
       if (s.size() < 2) {
-        throw LineError(data, s.lines.front(),
-                        what + "; at least 2 are needed for a standard deviation");
+        return LineError(data, s.lines.front(),
+                         what + "; at least 2 are needed for a standard deviation");
       }
       if (static_cast<int>(s.size()) < options.min_approaches) {
         const std::string msg = what + "; GOST 27843-88 §2.10 and ISO 230-2 require at least " +
                                 std::to_string(options.min_approaches);
-        if (!options.allow_few_approaches) throw LineError(data, s.lines.front(), msg);
+        if (!options.allow_few_approaches) return LineError(data, s.lines.front(), msg);
         set.warnings.push_back(data.source + ":" + std::to_string(s.lines.front()) + ": " + msg);
       }
       for (int run : all_runs[d]) {

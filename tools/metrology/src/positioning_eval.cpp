@@ -7,17 +7,16 @@
 #include <sstream>
 
 #include "volcomp/metrology/statistics.hpp"
-#include "volcomp/tools/csv.hpp"
 
 namespace volcomp::metrology {
 namespace {
 
-DirectionStats Stats(const ApproachSeries& s,
-                     const EvaluationOptions& o,
-                     double k,
-                     const PositioningSet& set,
-                     double target,
-                     Direction dir) {
+Expected<DirectionStats> Stats(const ApproachSeries& s,
+                               const EvaluationOptions& o,
+                               double k,
+                               const PositioningSet& set,
+                               double target,
+                               Direction dir) {
   DirectionStats st;
   st.n = static_cast<int>(s.size());
   st.mean = Mean(s.deviations);
@@ -28,11 +27,11 @@ DirectionStats Stats(const ApproachSeries& s,
       std::ostringstream t;
       t.precision(10);
       t << target;
-      throw tools::InputError(set.source + ":" + std::to_string(s.lines.front()) +
-                              ": the range method (GOST 27843-88 formula (6)) needs 5 to 10 "
-                              "approaches; target " +
-                              t.str() + " " + DirectionSymbol(dir) + " has " +
-                              std::to_string(st.n));
+      return Fail(Error::kInputInvalid, set.source + ":" + std::to_string(s.lines.front()) +
+                                            ": the range method (GOST 27843-88 formula (6)) "
+                                            "needs 5 to 10 approaches; target " +
+                                            t.str() + " " + DirectionSymbol(dir) + " has " +
+                                            std::to_string(st.n));
     }
     st.s = st.range * *a;
   } else {
@@ -89,7 +88,8 @@ const char* StandardName(Standard s) {
 
 double CoverageFactor(Standard s) { return s == Standard::kGost27843 ? 3.0 : 2.0; }
 
-PositioningResult EvaluatePositioning(const PositioningSet& set, const EvaluationOptions& options) {
+Expected<PositioningResult> EvaluatePositioning(const PositioningSet& set,
+                                                const EvaluationOptions& options) {
   PositioningResult r;
   r.standard = options.standard;
   r.sigma = options.standard == Standard::kGost27843 ? options.sigma : SigmaMethod::kFormula;
@@ -105,8 +105,12 @@ PositioningResult EvaluatePositioning(const PositioningSet& set, const Evaluatio
     PositionStats ps;
     ps.index = i;
     ps.target = tp.target;
-    if (!tp.up.empty()) ps.up = Stats(tp.up, o, r.k, set, tp.target, Direction::kUp);
-    if (!tp.down.empty()) ps.down = Stats(tp.down, o, r.k, set, tp.target, Direction::kDown);
+    if (!tp.up.empty()) {
+      VOLCOMP_TRY_ASSIGN(ps.up, Stats(tp.up, o, r.k, set, tp.target, Direction::kUp));
+    }
+    if (!tp.down.empty()) {
+      VOLCOMP_TRY_ASSIGN(ps.down, Stats(tp.down, o, r.k, set, tp.target, Direction::kDown));
+    }
     if (ps.up && ps.down) {
       ps.reversal = ps.up->mean - ps.down->mean;
       ps.mean_bidirectional = 0.5 * (ps.up->mean + ps.down->mean);

@@ -2,9 +2,11 @@
 #include "volcomp/metrology/positioning_report.hpp"
 
 #include <cmath>
+#include <cstdio>
 #include <optional>
 #include <sstream>
 
+#include "json_fields.hpp"
 #include "volcomp/report/format.hpp"
 #include "volcomp/report/xy_chart.hpp"
 
@@ -12,6 +14,7 @@ namespace volcomp::metrology {
 namespace {
 
 using report::FormatFixed;
+using tools::JsonValue;
 
 std::string Num(double v) {
   std::ostringstream s;
@@ -82,31 +85,46 @@ std::vector<Parameter> Parameters(const PositioningResult& r) {
   return out;
 }
 
-std::string SigmaText(const PositioningResult& r) {
-  if (r.standard == Standard::kIso230_2) return "s with the n − 1 divisor, coverage factor 2";
-  return r.sigma == SigmaMethod::kFormula ? "S by formula (5), X̄ ± 3S"
-                                          : "S = W·a_n by the range method (6), X̄ ± 3S";
+// The sigma method as the JSON names it.
+const char* SigmaKey(const PositioningResult& r) {
+  if (r.standard == Standard::kIso230_2) return "sample";
+  return r.sigma == SigmaMethod::kFormula ? "formula_5" : "range_6";
 }
 
-void JsonLocation(tools::JsonWriter& j, const PositioningResult& r, const Extreme& e) {
-  j.begin_object();
-  j.key("value").value(e.value);
-  j.key("position").value(static_cast<int64_t>(e.position + 1));
-  j.key(std::string("target_") + TargetUnit(r.kind)).value(r.positions[e.position].target);
-  if (e.direction) j.key("direction").value(DirectionName(*e.direction));
-  j.end_object();
+std::string SigmaText(const std::string& key) {
+  if (key == "sample") return "s with the n − 1 divisor, coverage factor 2";
+  return key == "formula_5" ? "S by formula (5), X̄ ± 3S"
+                            : "S = W·a_n by the range method (6), X̄ ± 3S";
 }
 
-void JsonDirection(tools::JsonWriter& j, const DirectionStats& s) {
-  j.begin_object();
-  j.key("n").value(s.n);
-  j.key("mean").value(s.mean);
-  j.key("s").value(s.s);
-  j.key("range_w").value(s.range);
-  j.key("mean_plus_ks").value(s.upper);
-  j.key("mean_minus_ks").value(s.lower);
-  j.key("repeatability").value(s.repeatability);
-  j.end_object();
+std::string SigmaText(const PositioningResult& r) { return SigmaText(SigmaKey(r)); }
+
+JsonValue LocationJson(const PositioningResult& r, const Extreme& e) {
+  JsonValue j = JsonValue::Object();
+  j.Set("value", e.value);
+  j.Set("position", static_cast<int64_t>(e.position + 1));
+  j.Set(std::string("target_") + TargetUnit(r.kind), r.positions[e.position].target);
+  if (e.direction) j.Set("direction", DirectionName(*e.direction));
+  return j;
+}
+
+JsonValue DirectionJson(const std::optional<DirectionStats>& s) {
+  if (!s) return JsonValue();
+  JsonValue j = JsonValue::Object();
+  j.Set("n", s->n);
+  j.Set("mean", s->mean);
+  j.Set("s", s->s);
+  j.Set("range_w", s->range);
+  j.Set("mean_plus_ks", s->upper);
+  j.Set("mean_minus_ks", s->lower);
+  j.Set("repeatability", s->repeatability);
+  return j;
+}
+
+JsonValue OptionalJson(const std::optional<double>& v) { return v ? JsonValue(*v) : JsonValue(); }
+
+std::string Cell(const JsonValue& v, int decimals) {
+  return v.is_null() ? std::string("-") : FormatFixed(v.number, decimals);
 }
 
 std::string Opt(const std::optional<double>& v, int decimals) {
@@ -122,114 +140,102 @@ std::string DescribeLocation(const PositioningResult& r, const Extreme& e) {
   return s;
 }
 
-void WritePositioningText(std::ostream& out, const PositioningResult& r) {
-  const std::string u = DeviationUnit(r.kind);
-  out << StandardName(r.standard) << " (" << SigmaText(r) << "), values in " << u << "\n";
-  for (const Parameter& p : Parameters(r)) {
-    const std::size_t width = report::DisplayWidth(p.symbol);
-    out << "  " << p.symbol << std::string(width < 8 ? 8 - width : 1, ' ') << "= "
-        << FormatFixed(p.value, 2);
-    if (p.span) {
-      out << "   max " << FormatFixed(p.span->max.value, 2) << " at "
-          << DescribeLocation(r, p.span->max) << ", min " << FormatFixed(p.span->min.value, 2)
-          << " at " << DescribeLocation(r, p.span->min);
-    } else if (p.at) {
-      out << "   at " << DescribeLocation(r, *p.at);
+std::string DescribeLocation(const JsonValue& location,
+                             const std::string& target_key,
+                             const std::string& unit) {
+  std::string s = "j=" + std::to_string(json::Integer(location, "position"));
+  if (const JsonValue* d = location.get("direction")) {
+    s += std::string(" ") + DirectionSymbol(d->string == "up" ? Direction::kUp : Direction::kDown);
+  }
+  return s + " (" + Num(json::Number(location, target_key)) + " " + unit + ")";
+}
+
+void WritePositioningText(std::ostream& out, const JsonValue& r) {
+  const AxisKind kind = json::Text(r, "axis") == "rotary" ? AxisKind::kRotary : AxisKind::kLinear;
+  const std::string& tu = json::Text(r, "target_unit");
+  const std::string& standard = json::Text(r, "standard");
+  out << standard << " (" << SigmaText(json::Text(r, "sigma_method")) << "), values in "
+      << DeviationUnit(kind) << "\n";
+  for (const auto& [key, p] : json::At(r, "parameters").object) {
+    const std::string& symbol = json::Text(p, "symbol");
+    const std::size_t width = report::DisplayWidth(symbol);
+    out << "  " << symbol << std::string(width < 8 ? 8 - width : 1, ' ') << "= "
+        << FormatFixed(json::Number(p, "value"), 2);
+    if (const JsonValue* max = p.get("max")) {
+      const JsonValue& min = json::At(p, "min");
+      out << "   max " << FormatFixed(json::Number(*max, "value"), 2) << " at "
+          << DescribeLocation(*max, "target_" + tu, tu) << ", min "
+          << FormatFixed(json::Number(min, "value"), 2) << " at "
+          << DescribeLocation(min, "target_" + tu, tu);
+    } else if (const JsonValue* at = p.get("at")) {
+      out << "   at " << DescribeLocation(*at, "target_" + tu, tu);
     }
     out << "\n";
   }
-  const bool gost = r.standard == Standard::kGost27843;
-  const std::string ks = gost ? "3S" : "2s";
+  const std::string ks = standard == StandardName(Standard::kGost27843) ? "3S" : "2s";
   out << "  per position:\n";
-  out << "   j  P_j " << TargetUnit(r.kind)
+  out << "   j  P_j " << tu
       << "        X̄↑      S↑       X̄↓      S↓      B_j     R_j↑    R_j↓     R_j   X̄↑+" << ks
       << " X̄↑−" << ks << " X̄↓+" << ks << " X̄↓−" << ks << "\n";
-  for (const auto& p : r.positions) {
-    char line[320];
-    auto f = [](const std::optional<DirectionStats>& s, double DirectionStats::*m, int d) {
-      return s ? FormatFixed((*s).*m, d) : std::string("-");
+  for (const JsonValue& p : json::At(r, "positions").array) {
+    const JsonValue& up = json::At(p, "up");
+    const JsonValue& down = json::At(p, "down");
+    auto f = [](const JsonValue& dir, const char* key, int d) {
+      return dir.is_null() ? std::string("-") : FormatFixed(json::Number(dir, key), d);
     };
-    std::snprintf(
-        line, sizeof line, "  %2zu %11s %8s %7s %8s %7s %8s %7s %7s %7s %7s %7s %7s %7s\n",
-        p.index + 1, FormatFixed(p.target, 3).c_str(), f(p.up, &DirectionStats::mean, 2).c_str(),
-        f(p.up, &DirectionStats::s, 3).c_str(), f(p.down, &DirectionStats::mean, 2).c_str(),
-        f(p.down, &DirectionStats::s, 3).c_str(), Opt(p.reversal, 2).c_str(),
-        f(p.up, &DirectionStats::repeatability, 2).c_str(),
-        f(p.down, &DirectionStats::repeatability, 2).c_str(),
-        Opt(p.repeatability_bidirectional, 2).c_str(), f(p.up, &DirectionStats::upper, 2).c_str(),
-        f(p.up, &DirectionStats::lower, 2).c_str(), f(p.down, &DirectionStats::upper, 2).c_str(),
-        f(p.down, &DirectionStats::lower, 2).c_str());
+    char line[320];
+    std::snprintf(line, sizeof line,
+                  "  %2lld %11s %8s %7s %8s %7s %8s %7s %7s %7s %7s %7s %7s %7s\n",
+                  static_cast<long long>(json::Integer(p, "j")),
+                  FormatFixed(json::Number(p, "target_" + tu), 3).c_str(), f(up, "mean", 2).c_str(),
+                  f(up, "s", 3).c_str(), f(down, "mean", 2).c_str(), f(down, "s", 3).c_str(),
+                  Cell(json::At(p, "reversal_B"), 2).c_str(), f(up, "repeatability", 2).c_str(),
+                  f(down, "repeatability", 2).c_str(),
+                  Cell(json::At(p, "repeatability_bidirectional"), 2).c_str(),
+                  f(up, "mean_plus_ks", 2).c_str(), f(up, "mean_minus_ks", 2).c_str(),
+                  f(down, "mean_plus_ks", 2).c_str(), f(down, "mean_minus_ks", 2).c_str());
     out << line;
   }
 }
 
-void WritePositioningJson(tools::JsonWriter& j, const PositioningResult& r) {
-  j.begin_object();
-  j.key("standard").value(StandardName(r.standard));
-  j.key("coverage_factor").value(r.k);
-  j.key("sigma_method")
-      .value(r.standard == Standard::kIso230_2  ? "sample"
-             : r.sigma == SigmaMethod::kFormula ? "formula_5"
-                                                : "range_6");
-  j.key("axis").value(r.kind == AxisKind::kLinear ? "linear" : "rotary");
-  j.key("deviation_unit").value(DeviationUnitAscii(r.kind));
-  j.key("target_unit").value(TargetUnit(r.kind));
-  j.key("bidirectional").value(r.bidirectional);
-  j.key("parameters").begin_object();
+JsonValue PositioningJson(const PositioningResult& r) {
+  JsonValue j = JsonValue::Object();
+  j.Set("standard", StandardName(r.standard));
+  j.Set("coverage_factor", r.k);
+  j.Set("sigma_method", SigmaKey(r));
+  j.Set("axis", r.kind == AxisKind::kLinear ? "linear" : "rotary");
+  j.Set("deviation_unit", DeviationUnitAscii(r.kind));
+  j.Set("target_unit", TargetUnit(r.kind));
+  j.Set("bidirectional", r.bidirectional);
+  JsonValue& parameters = j["parameters"] = JsonValue::Object();
   for (const Parameter& p : Parameters(r)) {
-    j.key(p.key).begin_object();
-    j.key("symbol").value(p.symbol);
-    j.key("value").value(p.value);
+    JsonValue o = JsonValue::Object();
+    o.Set("symbol", p.symbol);
+    o.Set("value", p.value);
     if (p.span) {
-      j.key("max");
-      JsonLocation(j, r, p.span->max);
-      j.key("min");
-      JsonLocation(j, r, p.span->min);
+      o.Set("max", LocationJson(r, p.span->max));
+      o.Set("min", LocationJson(r, p.span->min));
     } else if (p.at) {
-      j.key("at");
-      JsonLocation(j, r, *p.at);
+      o.Set("at", LocationJson(r, *p.at));
     }
-    j.key("meaning").value(p.meaning);
-    j.end_object();
+    o.Set("meaning", p.meaning);
+    parameters.Set(p.key, std::move(o));
   }
-  j.end_object();
-  j.key("positions").begin_array();
+  JsonValue& positions = j["positions"] = JsonValue::Array();
   for (const auto& p : r.positions) {
-    j.begin_object();
-    j.key("j").value(static_cast<int64_t>(p.index + 1));
-    j.key(std::string("target_") + TargetUnit(r.kind)).value(p.target);
-    j.key("up");
-    if (p.up)
-      JsonDirection(j, *p.up);
-    else
-      j.null();
-    j.key("down");
-    if (p.down)
-      JsonDirection(j, *p.down);
-    else
-      j.null();
-    j.key("reversal_B");
-    if (p.reversal)
-      j.value(*p.reversal);
-    else
-      j.null();
-    j.key("mean_bidirectional");
-    if (p.mean_bidirectional)
-      j.value(*p.mean_bidirectional);
-    else
-      j.null();
-    j.key("repeatability_bidirectional");
-    if (p.repeatability_bidirectional)
-      j.value(*p.repeatability_bidirectional);
-    else
-      j.null();
-    j.end_object();
+    JsonValue o = JsonValue::Object();
+    o.Set("j", static_cast<int64_t>(p.index + 1));
+    o.Set(std::string("target_") + TargetUnit(r.kind), p.target);
+    o.Set("up", DirectionJson(p.up));
+    o.Set("down", DirectionJson(p.down));
+    o.Set("reversal_B", OptionalJson(p.reversal));
+    o.Set("mean_bidirectional", OptionalJson(p.mean_bidirectional));
+    o.Set("repeatability_bidirectional", OptionalJson(p.repeatability_bidirectional));
+    positions.Push(std::move(o));
   }
-  j.end_array();
-  j.key("warnings").begin_array();
-  for (const auto& w : r.warnings) j.value(w);
-  j.end_array();
-  j.end_object();
+  JsonValue& warnings = j["warnings"] = JsonValue::Array();
+  for (const auto& w : r.warnings) warnings.Push(w);
+  return j;
 }
 
 std::string PositioningDeviationChart(const PositioningResult& r, const std::string& title) {
@@ -386,6 +392,51 @@ void AddPositioningSection(report::HtmlPage* page, const PositioningResult& r) {
     page->Heading(3, "Warnings");
     page->List(r.warnings);
   }
+}
+
+JsonValue PositioningEvaluationJson(const PositioningEvaluation& ev) {
+  JsonValue j = JsonValue::Object();
+  j.Set("command", "evaluate positioning");
+  j.Set("name", PositioningReportName(ev));
+  j.Set("source", ev.source);
+  j.Set("conditions", ConditionsJson(ev.conditions));
+  j.Set("positions", static_cast<int64_t>(ev.positions));
+  j.Set("axis_kind", ev.kind == AxisKind::kLinear ? "linear" : "rotary");
+  JsonValue directions = JsonValue::Array();
+  if (ev.has_up) directions.Push(DirectionName(Direction::kUp));
+  if (ev.has_down) directions.Push(DirectionName(Direction::kDown));
+  j.Set("directions", std::move(directions));
+  JsonValue evaluations = JsonValue::Array();
+  for (const PositioningResult& r : ev.results) evaluations.Push(PositioningJson(r));
+  j.Set("evaluations", std::move(evaluations));
+  return j;
+}
+
+void WritePositioningEvaluationText(std::ostream& out, const JsonValue& ev) {
+  out << "positioning test: " << json::Text(ev, "source") << "\n";
+  const JsonValue& conditions = json::At(ev, "conditions");
+  if (!conditions.object.empty()) out << "conditions: " << ConditionsText(conditions) << "\n";
+  std::string directions;
+  for (const JsonValue& d : json::At(ev, "directions").array) {
+    directions += DirectionSymbol(d.string == "up" ? Direction::kUp : Direction::kDown);
+  }
+  out << json::Text(ev, "axis_kind") << " axis, " << json::Integer(ev, "positions")
+      << " target positions, directions: " << directions << "\n\n";
+  for (const JsonValue& r : json::At(ev, "evaluations").array) {
+    WritePositioningText(out, r);
+    out << "\n";
+  }
+}
+
+report::HtmlPage PositioningEvaluationPage(const PositioningEvaluation& ev) {
+  const auto axis = ev.conditions.Find("axis");
+  report::HtmlPage page("Positioning test" + (axis ? " of axis " + *axis : std::string()) + ": " +
+                        ev.source);
+  page.Paragraph(std::string(ev.kind == AxisKind::kLinear ? "Linear" : "Rotary") + " axis, " +
+                 std::to_string(ev.positions) + " target positions.");
+  AddConditionsSection(&page, ev.conditions);
+  for (const PositioningResult& r : ev.results) AddPositioningSection(&page, r);
+  return page;
 }
 
 }  // namespace volcomp::metrology

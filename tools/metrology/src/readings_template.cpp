@@ -5,10 +5,10 @@
 #include <filesystem>
 #include <sstream>
 
-#include "volcomp/metrology/cli_support.hpp"
 #include "volcomp/metrology/test_conditions.hpp"
 #include "volcomp/report/format.hpp"
 #include "volcomp/tools/csv.hpp"
+#include "volcomp/tools/file_io.hpp"
 
 namespace volcomp::metrology {
 
@@ -47,12 +47,9 @@ std::string TemplateRows(const std::vector<CycleMove>& moves, const std::string&
 std::optional<std::string> ReadingsAtRisk(const std::string& path) {
   std::error_code ec;
   if (path == "-" || !std::filesystem::exists(path, ec)) return std::nullopt;
-  tools::CsvTable t;
-  try {
-    t = tools::CsvTable::ParseFile(path);
-  } catch (const tools::InputError&) {
-    return path + " exists and is not a readings template";
-  }
+  const Expected<tools::CsvTable> read = tools::CsvTable::ReadFile(path);
+  if (!read.ok()) return path + " exists and is not a readings template";
+  const tools::CsvTable& t = *read;
   std::vector<std::size_t> columns;
   for (std::size_t c = 0; c < t.header().size(); ++c) {
     const std::string& h = t.header()[c];
@@ -61,7 +58,7 @@ std::optional<std::string> ReadingsAtRisk(const std::string& path) {
   if (columns.empty()) return path + " exists and is not a readings template";
   for (const tools::CsvRow& row : t.rows()) {
     for (std::size_t c : columns) {
-      if (!row.text(c).empty()) {
+      if (!row.fields()[c].empty()) {
         return path + " already holds readings (line " + std::to_string(row.line()) + ")";
       }
     }
@@ -69,21 +66,19 @@ std::optional<std::string> ReadingsAtRisk(const std::string& path) {
   return std::nullopt;
 }
 
-void RefuseToOverwriteReadings(const std::string& path, bool force) {
-  if (force) return;
+Outcome RefuseToOverwriteReadings(const std::string& path, bool force) {
+  if (force) return Outcome::Ok();
   if (const auto risk = ReadingsAtRisk(path)) {
-    throw tools::InputError(*risk +
-                            "; not overwritten (give --force to replace it, or another "
-                            "--targets-csv name)");
+    return Fail(Error::kInputInvalid, *risk +
+                                          "; not overwritten (give --force to replace it, or "
+                                          "another --targets-csv name)");
   }
+  return Outcome::Ok();
 }
 
-void WriteTemplate(const std::string& text,
-                   const std::string& path,
-                   bool force,
-                   std::ostream& out) {
-  RefuseToOverwriteReadings(path, force);
-  WriteTextOutput(text, path, out);
+Outcome WriteTemplate(const std::string& text, const std::string& path, bool force) {
+  VOLCOMP_TRY(RefuseToOverwriteReadings(path, force));
+  return tools::WriteTextFile(path, text);
 }
 
 }  // namespace volcomp::metrology

@@ -4,10 +4,8 @@
 #include <cmath>
 #include <complex>
 #include <sstream>
-#include <stdexcept>
 
 #include "volcomp/metrology/polar_fit.hpp"
-#include "volcomp/tools/csv.hpp"
 
 namespace volcomp::metrology {
 namespace {
@@ -52,13 +50,28 @@ Revolutions Difference(const Revolutions& a, const Revolutions& b, double scale)
   return d;
 }
 
-tools::InputError Error(const RotaryRecord& r, const std::string& msg) {
-  return tools::InputError(r.source + ": " + msg);
+Unexpected<Failure> Refuse(const RotaryRecord& r, const std::string& msg) {
+  return Fail(Error::kInputInvalid, r.source + ": " + msg);
+}
+
+// The synchronous (revolution-averaged) profile of one channel.
+Expected<std::vector<double>> SynchronousChannel(const RotaryRecord& rec,
+                                                 const std::string& channel) {
+  const auto it = rec.channels.find(channel);
+  if (it == rec.channels.end()) {
+    return Refuse(rec, "no column \"" + channel + "\" for the reversal");
+  }
+  std::vector<double> s(rec.angle_deg.size(), 0.0);
+  for (const auto& rev : it->second) {
+    for (std::size_t j = 0; j < s.size(); ++j) s[j] += rev[j];
+  }
+  for (double& v : s) v /= static_cast<double>(it->second.size());
+  return s;
 }
 
 }  // namespace
 
-RotaryEvaluation EvaluateRotary(const RotaryRecord& rec, const RotaryOptions& o) {
+Expected<RotaryEvaluation> EvaluateRotary(const RotaryRecord& rec, const RotaryOptions& o) {
   RotaryEvaluation ev;
   ev.source = rec.source;
   ev.revolutions = static_cast<int>(rec.revs.size());
@@ -69,7 +82,7 @@ RotaryEvaluation EvaluateRotary(const RotaryRecord& rec, const RotaryOptions& o)
   const bool need_x = rsd || std::fabs(cf) > 1e-12;
   const bool need_y = rsd || std::fabs(sf) > 1e-12;
   auto add = [&](std::string name, std::string key, std::string unit, std::string profile,
-                 CentreKind preferred, bool fundamental, const Revolutions& u) {
+                 CentreKind preferred, bool fundamental, const Revolutions& u) -> Outcome {
     RotaryMeasurement m;
     m.name = std::move(name);
     m.key = std::move(key);
@@ -77,8 +90,9 @@ RotaryEvaluation EvaluateRotary(const RotaryRecord& rec, const RotaryOptions& o)
     m.profile = std::move(profile);
     m.preferred = preferred;
     m.report_fundamental = fundamental;
-    m.motion = AnalyseErrorMotion(rec.angle_deg, u, o.min_zone);
+    VOLCOMP_TRY_ASSIGN(m.motion, AnalyseErrorMotion(rec.angle_deg, u, o.min_zone));
     ev.measurements.push_back(std::move(m));
+    return Outcome::Ok();
   };
   auto radial_profile = [&](const Revolutions* x, const Revolutions* y) {
     if (rsd) {
@@ -104,25 +118,26 @@ RotaryEvaluation EvaluateRotary(const RotaryRecord& rec, const RotaryOptions& o)
   const bool radial1 = x || y;
   const bool radial2 = x2 || y2;
   auto check_plane = [&](const Revolutions* px, const Revolutions* py, const char* xn,
-                         const char* yn) {
+                         const char* yn) -> Outcome {
     if (need_x && !px) {
-      throw Error(rec, std::string(rsd ? "a rotating sensitive direction" : "this θ_f") +
-                           " needs column " + xn);
+      return Refuse(rec, std::string(rsd ? "a rotating sensitive direction" : "this θ_f") +
+                             " needs column " + xn);
     }
     if (need_y && !py) {
-      throw Error(rec, std::string(rsd ? "a rotating sensitive direction" : "this θ_f") +
-                           " needs column " + yn);
+      return Refuse(rec, std::string(rsd ? "a rotating sensitive direction" : "this θ_f") +
+                             " needs column " + yn);
     }
+    return Outcome::Ok();
   };
   if (radial1) {
-    check_plane(x, y, "x_um", "y_um");
-    add("radial", "radial", "µm", mode, CentreKind::kLsc, false, radial_profile(x, y));
+    VOLCOMP_TRY(check_plane(x, y, "x_um", "y_um"));
+    VOLCOMP_TRY(add("radial", "radial", "µm", mode, CentreKind::kLsc, false, radial_profile(x, y)));
   }
   if (radial2) {
-    if (!radial1) throw Error(rec, "x2_um/y2_um (second plane) need x_um/y_um (first plane)");
-    check_plane(x2, y2, "x2_um", "y2_um");
-    add("radial, plane 2", "radial_plane2", "µm", mode, CentreKind::kLsc, false,
-        radial_profile(x2, y2));
+    if (!radial1) return Refuse(rec, "x2_um/y2_um (second plane) need x_um/y_um (first plane)");
+    VOLCOMP_TRY(check_plane(x2, y2, "x2_um", "y2_um"));
+    VOLCOMP_TRY(add("radial, plane 2", "radial_plane2", "µm", mode, CentreKind::kLsc, false,
+                    radial_profile(x2, y2)));
     if (!o.tilt_distance_mm) {
       ev.warnings.push_back(
           "x2_um/y2_um are present but no tilt distance was given "
@@ -130,34 +145,37 @@ RotaryEvaluation EvaluateRotary(const RotaryRecord& rec, const RotaryOptions& o)
     }
   }
   if (radial2 && o.tilt_distance_mm) {
-    if (!(*o.tilt_distance_mm > 0.0)) throw Error(rec, "the tilt distance must be positive");
+    if (!(*o.tilt_distance_mm > 0.0)) return Refuse(rec, "the tilt distance must be positive");
     // µm / mm = mrad; ×1000 gives µrad.
     const double k = 1000.0 / *o.tilt_distance_mm;
     const Revolutions dx = need_x ? Difference(*x2, *x, k) : Revolutions();
     const Revolutions dy = need_y ? Difference(*y2, *y, k) : Revolutions();
-    add("tilt", "tilt", "µrad",
-        "(plane 2 − plane 1)/L with L = " + Num(*o.tilt_distance_mm) +
-            " mm, combined as the radial profile (A.6; §5.3.3 method 2; formula (5) for a fixed "
-            "direction)",
-        CentreKind::kLsc, false, radial_profile(need_x ? &dx : nullptr, need_y ? &dy : nullptr));
+    VOLCOMP_TRY(add("tilt", "tilt", "µrad",
+                    "(plane 2 − plane 1)/L with L = " + Num(*o.tilt_distance_mm) +
+                        " mm, combined as the radial profile (A.6; §5.3.3 method 2; formula (5) "
+                        "for a fixed direction)",
+                    CentreKind::kLsc, false,
+                    radial_profile(need_x ? &dx : nullptr, need_y ? &dy : nullptr)));
   }
   if (z) {
-    add("axial", "axial", "µm", "u = Δz (§5.3.4, §5.4.4, §6.2)", CentreKind::kPc, true, *z);
+    VOLCOMP_TRY(
+        add("axial", "axial", "µm", "u = Δz (§5.3.4, §5.4.4, §6.2)", CentreKind::kPc, true, *z));
   }
   if (face) {
-    add("face", "face", "µm",
-        "face channel" +
-            (o.face_radius_mm ? " at R = " + Num(*o.face_radius_mm) + " mm" : std::string()) +
-            " (§3.4.5)",
-        CentreKind::kPc, true, *face);
+    VOLCOMP_TRY(
+        add("face", "face", "µm",
+            "face channel" +
+                (o.face_radius_mm ? " at R = " + Num(*o.face_radius_mm) + " mm" : std::string()) +
+                " (§3.4.5)",
+            CentreKind::kPc, true, *face));
   }
   if (z && face && o.face_radius_mm) {
-    if (!(*o.face_radius_mm > 0.0)) throw Error(rec, "the face radius must be positive");
-    add("tilt from axial and face", "tilt_axial_face", "µrad",
-        "(Δz − face)/R with R = " + Num(*o.face_radius_mm) + " mm (A.5)", CentreKind::kLsc, false,
-        Difference(*z, *face, 1000.0 / *o.face_radius_mm));
+    if (!(*o.face_radius_mm > 0.0)) return Refuse(rec, "the face radius must be positive");
+    VOLCOMP_TRY(add("tilt from axial and face", "tilt_axial_face", "µrad",
+                    "(Δz − face)/R with R = " + Num(*o.face_radius_mm) + " mm (A.5)",
+                    CentreKind::kLsc, false, Difference(*z, *face, 1000.0 / *o.face_radius_mm)));
   }
-  if (ev.measurements.empty()) throw Error(rec, "no channel to evaluate");
+  if (ev.measurements.empty()) return Refuse(rec, "no channel to evaluate");
 
   if (x && y) {
     // Synchronous ΔX, ΔY, then the positive and negative fundamentals of ΔX + iΔY.
@@ -197,12 +215,12 @@ RotaryEvaluation EvaluateRotary(const RotaryRecord& rec, const RotaryOptions& o)
   return ev;
 }
 
-ReversalResult DonaldsonReversal(const std::vector<double>& angle_deg,
-                                 const std::vector<double>& t1,
-                                 const std::vector<double>& t2,
-                                 ReversalProcedure procedure) {
+Expected<ReversalResult> DonaldsonReversal(const std::vector<double>& angle_deg,
+                                           const std::vector<double>& t1,
+                                           const std::vector<double>& t2,
+                                           ReversalProcedure procedure) {
   if (t1.size() != angle_deg.size() || t2.size() != angle_deg.size()) {
-    throw std::invalid_argument("reversal records must have the same angles");
+    return Fail(Error::kInvalidArgument, "reversal records must have the same angles");
   }
   ReversalResult r;
   r.angle_deg = angle_deg;
@@ -217,11 +235,30 @@ ReversalResult DonaldsonReversal(const std::vector<double>& angle_deg,
       r.artefact[j] = 0.5 * (t1[j] - t2[j]);
     }
   }
-  r.artefact_lsc = FitLeastSquaresCentre(angle_deg, r.artefact);
-  r.spindle_lsc = FitLeastSquaresCentre(angle_deg, r.spindle);
+  VOLCOMP_TRY_ASSIGN(r.artefact_lsc, FitLeastSquaresCentre(angle_deg, r.artefact));
+  VOLCOMP_TRY_ASSIGN(r.spindle_lsc, FitLeastSquaresCentre(angle_deg, r.spindle));
   r.artefact_value = ValueAbout(angle_deg, r.artefact, r.artefact_lsc.a, r.artefact_lsc.b);
   r.spindle_value = ValueAbout(angle_deg, r.spindle, r.spindle_lsc.a, r.spindle_lsc.b);
   return r;
+}
+
+Expected<ReversalResult> DonaldsonReversal(const RotaryRecord& setup1,
+                                           const RotaryRecord& setup2,
+                                           const std::string& channel,
+                                           ReversalProcedure procedure) {
+  if (setup2.angle_deg.size() != setup1.angle_deg.size()) {
+    return Refuse(setup2, "the reversal record has " + std::to_string(setup2.angle_deg.size()) +
+                              " angles per revolution, " + setup1.source + " has " +
+                              std::to_string(setup1.angle_deg.size()));
+  }
+  for (std::size_t j = 0; j < setup1.angle_deg.size(); ++j) {
+    if (std::abs(setup1.angle_deg[j] - setup2.angle_deg[j]) > 1e-6) {
+      return Refuse(setup2, "the reversal record must use the angles of " + setup1.source);
+    }
+  }
+  VOLCOMP_TRY_ASSIGN(const std::vector<double> t1, SynchronousChannel(setup1, channel));
+  VOLCOMP_TRY_ASSIGN(const std::vector<double> t2, SynchronousChannel(setup2, channel));
+  return DonaldsonReversal(setup1.angle_deg, t1, t2, procedure);
 }
 
 }  // namespace volcomp::metrology

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 
+#include "json_fields.hpp"
 #include "volcomp/metrology/polar_fit.hpp"
 #include "volcomp/report/format.hpp"
 #include "volcomp/report/polar_chart.hpp"
@@ -11,18 +12,19 @@ namespace volcomp::metrology {
 namespace {
 
 using report::FormatFixed;
+using tools::JsonValue;
 
 int Decimals(const std::string& unit) { return unit == "µrad" ? 2 : 3; }
 
-void JsonCentre(tools::JsonWriter& j, const CentreValues& v) {
-  j.begin_object();
-  j.key("centre_offset_x").value(v.a);
-  j.key("centre_offset_y").value(v.b);
-  j.key("synchronous").value(v.synchronous);
-  j.key("total").value(v.total);
-  j.key("inner").value(v.inner);
-  j.key("outer").value(v.outer);
-  j.end_object();
+JsonValue CentreJson(const CentreValues& v) {
+  JsonValue j = JsonValue::Object();
+  j.Set("centre_offset_x", v.a);
+  j.Set("centre_offset_y", v.b);
+  j.Set("synchronous", v.synchronous);
+  j.Set("total", v.total);
+  j.Set("inner", v.inner);
+  j.Set("outer", v.outer);
+  return j;
 }
 
 std::vector<const CentreValues*> Centres(const ErrorMotion& m) {
@@ -31,135 +33,139 @@ std::vector<const CentreValues*> Centres(const ErrorMotion& m) {
   return c;
 }
 
+JsonValue Numbers(const std::vector<double>& values) {
+  JsonValue a = JsonValue::Array();
+  for (double v : values) a.Push(v);
+  return a;
+}
+
 }  // namespace
 
-void WriteRotaryText(std::ostream& out,
-                     const RotaryEvaluation& ev,
-                     const std::optional<ReversalResult>& reversal) {
-  out << "ISO 230-7 error motion: " << ev.source << "\n";
-  if (!ev.conditions.empty()) out << "conditions: " << ConditionsText(ev.conditions) << "\n";
-  out << ev.revolutions << " revolution(s) × " << ev.samples_per_revolution
-      << " angles; values about PC, LSC" << (ev.options.min_zone ? ", MZ" : "")
-      << "; * marks the preferred centre of Table 1\n";
+JsonValue RotaryJson(const RotaryEvaluation& ev, const std::optional<ReversalResult>& reversal) {
+  JsonValue j = JsonValue::Object();
+  j.Set("command", "evaluate rotary");
+  j.Set("standard", "ISO 230-7:2015");
+  j.Set("source", ev.source);
+  j.Set("conditions", ConditionsJson(ev.conditions));
+  j.Set("revolutions", ev.revolutions);
+  j.Set("samples_per_revolution", ev.samples_per_revolution);
+  j.Set("sensitive_direction",
+        ev.options.sensitive == SensitiveDirection::kRotating ? "rotating" : "fixed");
+  if (ev.options.sensitive == SensitiveDirection::kFixed) {
+    j.Set("fsd_angle_deg", ev.options.fsd_angle_deg);
+  }
+  j.Set("min_zone", ev.options.min_zone);
+  JsonValue measurements = JsonValue::Object();
   for (const auto& m : ev.measurements) {
-    const int d = Decimals(m.unit);
     const ErrorMotion& em = m.motion;
-    out << "\n" << m.name << " [" << m.unit << "]: " << m.profile << "\n";
-    auto row = [&](const char* label, double CentreValues::*field) {
+    JsonValue o = JsonValue::Object();
+    o.Set("name", m.name);
+    o.Set("unit", m.unit == "µm" ? "um" : "urad");
+    o.Set("profile", m.profile);
+    o.Set("preferred_centre", CentreName(m.preferred));
+    const CentreValues& pref = ValuesAbout(em, m.preferred);
+    o.Set("synchronous_value", pref.synchronous);
+    o.Set("asynchronous_value", em.asynchronous_value);
+    o.Set("asynchronous_angle_deg", em.asynchronous_angle_deg);
+    o.Set("total_value", pref.total);
+    o.Set("fundamental_value", em.fundamental_value);
+    o.Set("fundamental_angle_deg", em.fundamental_angle_deg);
+    o.Set("fundamental_is_axial_value", m.report_fundamental);
+    JsonValue about = JsonValue::Object();
+    for (const CentreValues* c : Centres(em)) about.Set(CentreName(c->kind), CentreJson(*c));
+    o.Set("about", std::move(about));
+    o.Set("angle_deg", Numbers(em.angle_deg));
+    o.Set("synchronous", Numbers(em.synchronous));
+    measurements.Set(m.key, std::move(o));
+  }
+  j.Set("measurements", std::move(measurements));
+  if (ev.radial_fundamentals) {
+    const auto& f = *ev.radial_fundamentals;
+    JsonValue o = JsonValue::Object();
+    o.Set("positive_um", f.positive_um);
+    o.Set("positive_phase_deg", f.positive_phase_deg);
+    o.Set("negative_um", f.negative_um);
+    o.Set("negative_phase_deg", f.negative_phase_deg);
+    j.Set("radial_fundamentals", std::move(o));
+  } else {
+    j.Set("radial_fundamentals", JsonValue());
+  }
+  if (reversal) {
+    JsonValue o = JsonValue::Object();
+    o.Set("artefact_roundness_lsc_um", reversal->artefact_value);
+    o.Set("spindle_synchronous_lsc_um", reversal->spindle_value);
+    o.Set("artefact", Numbers(reversal->artefact));
+    o.Set("spindle", Numbers(reversal->spindle));
+    j.Set("reversal", std::move(o));
+  } else {
+    j.Set("reversal", JsonValue());
+  }
+  JsonValue warnings = JsonValue::Array();
+  for (const auto& w : ev.warnings) warnings.Push(w);
+  j.Set("warnings", std::move(warnings));
+  return j;
+}
+
+void WriteRotaryText(std::ostream& out, const JsonValue& ev) {
+  const bool min_zone = json::At(ev, "min_zone").boolean;
+  out << "ISO 230-7 error motion: " << json::Text(ev, "source") << "\n";
+  const JsonValue& conditions = json::At(ev, "conditions");
+  if (!conditions.object.empty()) out << "conditions: " << ConditionsText(conditions) << "\n";
+  out << json::Integer(ev, "revolutions") << " revolution(s) × "
+      << json::Integer(ev, "samples_per_revolution") << " angles; values about PC, LSC"
+      << (min_zone ? ", MZ" : "") << "; * marks the preferred centre of Table 1\n";
+  for (const auto& [key, m] : json::At(ev, "measurements").object) {
+    const std::string unit = json::Text(m, "unit") == "um" ? "µm" : "µrad";
+    const int d = Decimals(unit);
+    const std::string& preferred = json::Text(m, "preferred_centre");
+    const JsonValue& about = json::At(m, "about");
+    out << "\n"
+        << json::Text(m, "name") << " [" << unit << "]: " << json::Text(m, "profile") << "\n";
+    auto row = [&](const char* label, const char* field) {
       out << "  " << label;
-      for (const CentreValues* c : Centres(em)) {
-        out << "  " << CentreName(c->kind) << (c->kind == m.preferred ? "*" : " ") << " "
-            << FormatFixed((*c).*field, d);
+      for (const auto& [centre, values] : about.object) {
+        out << "  " << centre << (centre == preferred ? "*" : " ") << " "
+            << FormatFixed(json::Number(values, field), d);
       }
       out << "\n";
     };
-    row("synchronous ", &CentreValues::synchronous);
-    out << "  asynchronous  " << FormatFixed(em.asynchronous_value, d) << " (max at "
-        << FormatFixed(em.asynchronous_angle_deg, 1) << "°, along rays through PC)\n";
-    row("total       ", &CentreValues::total);
-    row("inner       ", &CentreValues::inner);
-    row("outer       ", &CentreValues::outer);
-    out << "  LSC centre offset (" << FormatFixed(em.lsc.a, d) << ", " << FormatFixed(em.lsc.b, d)
-        << ") " << m.unit;
-    if (em.mz) {
-      out << "; MZ centre offset (" << FormatFixed(em.mz->a, d) << ", " << FormatFixed(em.mz->b, d)
-          << ")";
+    row("synchronous ", "synchronous");
+    out << "  asynchronous  " << FormatFixed(json::Number(m, "asynchronous_value"), d)
+        << " (max at " << FormatFixed(json::Number(m, "asynchronous_angle_deg"), 1)
+        << "°, along rays through PC)\n";
+    row("total       ", "total");
+    row("inner       ", "inner");
+    row("outer       ", "outer");
+    const JsonValue& lsc = json::At(about, "LSC");
+    out << "  LSC centre offset (" << FormatFixed(json::Number(lsc, "centre_offset_x"), d) << ", "
+        << FormatFixed(json::Number(lsc, "centre_offset_y"), d) << ") " << unit;
+    if (const JsonValue* mz = about.get("MZ")) {
+      out << "; MZ centre offset (" << FormatFixed(json::Number(*mz, "centre_offset_x"), d) << ", "
+          << FormatFixed(json::Number(*mz, "centre_offset_y"), d) << ")";
     }
     out << "\n";
-    out << "  fundamental " << (m.report_fundamental ? "axial value (§3.8.5) " : "(once per rev) ")
-        << FormatFixed(em.fundamental_value, d) << " " << m.unit << " peak-to-peak at "
-        << FormatFixed(em.fundamental_angle_deg, 1) << "°\n";
+    out << "  fundamental "
+        << (json::At(m, "fundamental_is_axial_value").boolean ? "axial value (§3.8.5) "
+                                                              : "(once per rev) ")
+        << FormatFixed(json::Number(m, "fundamental_value"), d) << " " << unit
+        << " peak-to-peak at " << FormatFixed(json::Number(m, "fundamental_angle_deg"), 1) << "°\n";
   }
-  if (ev.radial_fundamentals) {
-    const auto& f = *ev.radial_fundamentals;
-    out << "\nradial 2D fundamentals of ΔX + iΔY: c₊ = " << FormatFixed(f.positive_um, 3)
-        << " µm at " << FormatFixed(f.positive_phase_deg, 1) << "° (symmetric, incl. eccentricity)"
-        << ", c₋ = " << FormatFixed(f.negative_um, 3) << " µm at "
-        << FormatFixed(f.negative_phase_deg, 1) << "° (asymmetry δ)\n";
+  const JsonValue& f = json::At(ev, "radial_fundamentals");
+  if (!f.is_null()) {
+    out << "\nradial 2D fundamentals of ΔX + iΔY: c₊ = "
+        << FormatFixed(json::Number(f, "positive_um"), 3) << " µm at "
+        << FormatFixed(json::Number(f, "positive_phase_deg"), 1)
+        << "° (symmetric, incl. eccentricity), c₋ = "
+        << FormatFixed(json::Number(f, "negative_um"), 3) << " µm at "
+        << FormatFixed(json::Number(f, "negative_phase_deg"), 1) << "° (asymmetry δ)\n";
   }
-  if (reversal) {
+  const JsonValue& reversal = json::At(ev, "reversal");
+  if (!reversal.is_null()) {
     out << "\nDonaldson reversal (annex B): artefact roundness (LSC) "
-        << FormatFixed(reversal->artefact_value, 3) << " µm, spindle synchronous radial error "
-        << "motion (LSC) " << FormatFixed(reversal->spindle_value, 3) << " µm\n";
+        << FormatFixed(json::Number(reversal, "artefact_roundness_lsc_um"), 3)
+        << " µm, spindle synchronous radial error motion (LSC) "
+        << FormatFixed(json::Number(reversal, "spindle_synchronous_lsc_um"), 3) << " µm\n";
   }
-}
-
-void WriteRotaryJson(tools::JsonWriter& j,
-                     const RotaryEvaluation& ev,
-                     const std::optional<ReversalResult>& reversal) {
-  j.begin_object();
-  j.key("command").value("evaluate rotary");
-  j.key("standard").value("ISO 230-7:2015");
-  j.key("source").value(ev.source);
-  WriteConditionsJson(j, ev.conditions);
-  j.key("revolutions").value(ev.revolutions);
-  j.key("samples_per_revolution").value(ev.samples_per_revolution);
-  j.key("sensitive_direction")
-      .value(ev.options.sensitive == SensitiveDirection::kRotating ? "rotating" : "fixed");
-  if (ev.options.sensitive == SensitiveDirection::kFixed) {
-    j.key("fsd_angle_deg").value(ev.options.fsd_angle_deg);
-  }
-  j.key("measurements").begin_object();
-  for (const auto& m : ev.measurements) {
-    const ErrorMotion& em = m.motion;
-    j.key(m.key).begin_object();
-    j.key("name").value(m.name);
-    j.key("unit").value(m.unit == "µm" ? "um" : "urad");
-    j.key("profile").value(m.profile);
-    j.key("preferred_centre").value(CentreName(m.preferred));
-    const CentreValues& pref = ValuesAbout(em, m.preferred);
-    j.key("synchronous_value").value(pref.synchronous);
-    j.key("asynchronous_value").value(em.asynchronous_value);
-    j.key("asynchronous_angle_deg").value(em.asynchronous_angle_deg);
-    j.key("total_value").value(pref.total);
-    j.key("fundamental_value").value(em.fundamental_value);
-    j.key("fundamental_angle_deg").value(em.fundamental_angle_deg);
-    j.key("about").begin_object();
-    for (const CentreValues* c : Centres(em)) {
-      j.key(CentreName(c->kind));
-      JsonCentre(j, *c);
-    }
-    j.end_object();
-    j.key("angle_deg").begin_array();
-    for (double a : em.angle_deg) j.value(a);
-    j.end_array();
-    j.key("synchronous").begin_array();
-    for (double v : em.synchronous) j.value(v);
-    j.end_array();
-    j.end_object();
-  }
-  j.end_object();
-  j.key("radial_fundamentals");
-  if (ev.radial_fundamentals) {
-    const auto& f = *ev.radial_fundamentals;
-    j.begin_object();
-    j.key("positive_um").value(f.positive_um);
-    j.key("positive_phase_deg").value(f.positive_phase_deg);
-    j.key("negative_um").value(f.negative_um);
-    j.key("negative_phase_deg").value(f.negative_phase_deg);
-    j.end_object();
-  } else {
-    j.null();
-  }
-  j.key("reversal");
-  if (reversal) {
-    j.begin_object();
-    j.key("artefact_roundness_lsc_um").value(reversal->artefact_value);
-    j.key("spindle_synchronous_lsc_um").value(reversal->spindle_value);
-    j.key("artefact").begin_array();
-    for (double v : reversal->artefact) j.value(v);
-    j.end_array();
-    j.key("spindle").begin_array();
-    for (double v : reversal->spindle) j.value(v);
-    j.end_array();
-    j.end_object();
-  } else {
-    j.null();
-  }
-  j.key("warnings").begin_array();
-  for (const auto& w : ev.warnings) j.value(w);
-  j.end_array();
-  j.end_object();
 }
 
 void AddRotarySections(report::HtmlPage* page,
@@ -257,6 +263,13 @@ void AddRotarySections(report::HtmlPage* page,
     page->Heading(3, "Warnings");
     page->List(ev.warnings);
   }
+}
+
+report::HtmlPage RotaryPage(const RotaryEvaluation& ev,
+                            const std::optional<ReversalResult>& reversal) {
+  report::HtmlPage page("ISO 230-7 error motion");
+  AddRotarySections(&page, ev, reversal);
+  return page;
 }
 
 }  // namespace volcomp::metrology

@@ -3,19 +3,24 @@
 
 #include <algorithm>
 #include <cmath>
-#include <stdexcept>
+#include <limits>
 
 namespace volcomp::metrology {
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+}  // namespace
 
 double Mean(const std::vector<double>& v) {
-  if (v.empty()) throw std::invalid_argument("Mean of an empty sample");
+  if (v.empty()) return kNaN;
   double s = 0.0;
   for (double x : v) s += x;
   return s / static_cast<double>(v.size());
 }
 
 double SampleStdDev(const std::vector<double>& v) {
-  if (v.size() < 2) throw std::invalid_argument("standard deviation needs at least 2 values");
+  if (v.size() < 2) return kNaN;
   const double m = Mean(v);
   double ss = 0.0;
   for (double x : v) ss += (x - m) * (x - m);
@@ -23,7 +28,7 @@ double SampleStdDev(const std::vector<double>& v) {
 }
 
 double Range(const std::vector<double>& v) {
-  if (v.empty()) throw std::invalid_argument("Range of an empty sample");
+  if (v.empty()) return kNaN;
   const auto mm = std::minmax_element(v.begin(), v.end());
   return *mm.second - *mm.first;
 }
@@ -88,20 +93,20 @@ double IncompleteBeta(double a, double b, double x) {
 }  // namespace
 
 double StudentTCdf(double t, int dof) {
-  if (dof < 1) throw std::invalid_argument("Student's t needs at least 1 degree of freedom");
+  if (dof < 1) return kNaN;
   const double nu = dof;
   const double tail = 0.5 * IncompleteBeta(0.5 * nu, 0.5, nu / (nu + t * t));
   return t >= 0.0 ? 1.0 - tail : tail;
 }
 
 double StudentTQuantile(double p, int dof) {
-  if (!(p > 0.0 && p < 1.0)) throw std::invalid_argument("quantile probability must be in (0, 1)");
+  if (!(p > 0.0 && p < 1.0) || dof < 1) return kNaN;
   if (p < 0.5) return -StudentTQuantile(1.0 - p, dof);
   double lo = 0.0, hi = 1.0;
   while (StudentTCdf(hi, dof) < p) {
     lo = hi;
     hi *= 2.0;
-    if (hi > 1e12) throw std::invalid_argument("quantile out of range");
+    if (hi > 1e12) return kNaN;
   }
   for (int i = 0; i < 200 && hi - lo > 1e-12 * std::max(1.0, hi); ++i) {
     const double mid = 0.5 * (lo + hi);
@@ -111,8 +116,7 @@ double StudentTQuantile(double p, int dof) {
 }
 
 double GrubbsCritical(int n, double alpha) {
-  if (n < 3) throw std::invalid_argument("Grubbs' test needs at least 3 values");
-  if (!(alpha > 0.0 && alpha < 1.0)) throw std::invalid_argument("alpha must be in (0, 1)");
+  if (n < 3 || !(alpha > 0.0 && alpha < 1.0)) return kNaN;
   const double t = StudentTQuantile(1.0 - alpha / (2.0 * n), n - 2);
   const double t2 = t * t;
   return (n - 1) / std::sqrt(static_cast<double>(n)) * std::sqrt(t2 / (n - 2 + t2));

@@ -42,16 +42,19 @@ TestConditions ConditionsFromPreamble(const tools::CsvTable& table) {
   return c;
 }
 
-std::string ConditionsText(const TestConditions& conditions) {
-  std::string s;
-  for (const auto& [k, v] : conditions.entries) s += (s.empty() ? "" : "; ") + k + " " + v;
-  return s;
+tools::JsonValue ConditionsJson(const TestConditions& conditions) {
+  tools::JsonValue o = tools::JsonValue::Object();
+  // Appended, not Set(): a key the file repeats is reported as often as it is given.
+  for (const auto& [k, v] : conditions.entries) o.object.emplace_back(k, v);
+  return o;
 }
 
-void WriteConditionsJson(tools::JsonWriter& json, const TestConditions& conditions) {
-  json.key("conditions").begin_object();
-  for (const auto& [k, v] : conditions.entries) json.key(k).value(v);
-  json.end_object();
+std::string ConditionsText(const tools::JsonValue& conditions) {
+  std::string s;
+  for (const auto& [k, v] : conditions.object) {
+    s += (s.empty() ? "" : "; ") + k + " " + v.string;
+  }
+  return s;
 }
 
 void AddConditionsSection(report::HtmlPage* page, const TestConditions& conditions) {

@@ -6,26 +6,33 @@
 #include <random>
 #include <set>
 #include <sstream>
-#include <stdexcept>
 
 #include "volcomp/report/format.hpp"
 
 namespace volcomp::metrology {
 
-std::vector<double> PlanGostTargets(const TargetPlan& plan) {
-  if (plan.count < 2) throw std::invalid_argument("at least 2 target positions are needed");
-  if (!(plan.pitch > 0.0)) throw std::invalid_argument("the pitch P must be positive");
+namespace {
+
+Unexpected<Failure> Impossible(std::string why) {
+  return Fail(Error::kInvalidArgument, std::move(why));
+}
+
+}  // namespace
+
+Expected<std::vector<double>> PlanGostTargets(const TargetPlan& plan) {
+  if (plan.count < 2) return Impossible("at least 2 target positions are needed");
+  if (!(plan.pitch > 0.0)) return Impossible("the pitch P must be positive");
   const double end = plan.rotary ? plan.start + 360.0 : plan.end;
-  if (!(end > plan.start)) throw std::invalid_argument("the end must be beyond the start");
+  if (!(end > plan.start)) return Impossible("the end must be beyond the start");
   if (plan.fraction_digits < 1 || plan.fraction_digits > 4) {
-    throw std::invalid_argument("fraction digits must be 1..4");
+    return Impossible("fraction digits must be 1..4");
   }
   const double travel = end - plan.start;
   // Whole pitches in the travel; (N + r)·P with N ≤ pitches − 1 and r < 1 stays inside it.
   const long pitches = static_cast<long>(std::floor(travel / plan.pitch + 1e-9));
   if (pitches < plan.count) {
-    throw std::invalid_argument("the travel holds only " + std::to_string(pitches) +
-                                " pitches; fewer positions or a smaller pitch are needed");
+    return Impossible("the travel holds only " + std::to_string(pitches) +
+                      " pitches; fewer positions or a smaller pitch are needed");
   }
   std::mt19937 rng(plan.seed);
   const int scale = static_cast<int>(std::lround(std::pow(10.0, plan.fraction_digits)));
@@ -62,13 +69,13 @@ std::vector<double> PlanGostTargets(const TargetPlan& plan) {
   return out;
 }
 
-std::vector<CycleMove> BuildCycle(const std::vector<double>& targets,
-                                  Cycle cycle,
-                                  int runs,
-                                  double overrun) {
-  if (targets.size() < 2) throw std::invalid_argument("at least 2 targets are needed");
-  if (runs < 1) throw std::invalid_argument("at least 1 run is needed");
-  if (!(overrun > 0.0)) throw std::invalid_argument("the overrun must be positive");
+Expected<std::vector<CycleMove>> BuildCycle(const std::vector<double>& targets,
+                                            Cycle cycle,
+                                            int runs,
+                                            double overrun) {
+  if (targets.size() < 2) return Impossible("at least 2 targets are needed");
+  if (runs < 1) return Impossible("at least 1 run is needed");
+  if (!(overrun > 0.0)) return Impossible("the overrun must be positive");
   std::vector<CycleMove> m;
   const int n = static_cast<int>(targets.size());
   auto stop = [&](int j, Direction d, int run) { m.push_back({targets[j - 1], true, d, run, j}); };
@@ -93,9 +100,9 @@ std::vector<CycleMove> BuildCycle(const std::vector<double>& targets,
   return m;
 }
 
-std::string EmitGcode(const std::vector<CycleMove>& moves, const GcodeOptions& o) {
+Expected<std::string> EmitGcode(const std::vector<CycleMove>& moves, const GcodeOptions& o) {
   if (o.axes.empty() || o.axes.size() != o.origin.size() || o.axes.size() != o.direction.size()) {
-    throw std::invalid_argument("axes, origin and direction must have the same size");
+    return Impossible("axes, origin and direction must have the same size");
   }
   std::ostringstream g;
   auto coords = [&](double pos) {

@@ -2,7 +2,6 @@
 #include "volcomp/model/axis_table.hpp"
 
 #include <cmath>
-#include <stdexcept>
 #include <string>
 
 namespace volcomp::model {
@@ -19,30 +18,33 @@ AxisErrorSample Lerp(const AxisErrorSample& a, const AxisErrorSample& b, double 
 
 }  // namespace
 
-AxisErrorTable::AxisErrorTable(std::vector<double> position_mm, std::vector<AxisErrorSample> rows)
-    : position_mm_(std::move(position_mm)), rows_(std::move(rows)) {
-  if (position_mm_.size() != rows_.size()) {
-    throw std::invalid_argument("axis table: positions and rows differ in count");
-  }
-  if (position_mm_.size() < 2) throw std::invalid_argument("axis table: needs at least 2 rows");
-  for (std::size_t i = 0; i < position_mm_.size(); ++i) {
-    if (!std::isfinite(position_mm_[i]) || !Finite(rows_[i].linear_um) ||
-        !Finite(rows_[i].angular_urad)) {
-      throw std::invalid_argument("axis table: row " + std::to_string(i) + " is not finite");
+Expected<AxisErrorTable> AxisErrorTable::Create(std::vector<double> position_mm,
+                                                std::vector<AxisErrorSample> rows) {
+  const auto invalid = [](const std::string& message) {
+    return Fail(Error::kInvalidArgument, "axis table: " + message);
+  };
+  if (position_mm.size() != rows.size()) return invalid("positions and rows differ in count");
+  if (position_mm.size() < 2) return invalid("needs at least 2 rows");
+  for (std::size_t i = 0; i < position_mm.size(); ++i) {
+    if (!std::isfinite(position_mm[i]) || !Finite(rows[i].linear_um) ||
+        !Finite(rows[i].angular_urad)) {
+      return invalid("row " + std::to_string(i) + " is not finite");
     }
-    if (i > 0 && !(position_mm_[i] > position_mm_[i - 1])) {
-      throw std::invalid_argument("axis table: positions must increase strictly (row " +
-                                  std::to_string(i) + ")");
+    if (i > 0 && !(position_mm[i] > position_mm[i - 1])) {
+      return invalid("positions must increase strictly (row " + std::to_string(i) + ")");
     }
   }
-  const double h =
-      (position_mm_.back() - position_mm_.front()) / static_cast<double>(position_mm_.size() - 1);
+  AxisErrorTable t;
+  t.position_mm_ = std::move(position_mm);
+  t.rows_ = std::move(rows);
+  const std::vector<double>& p = t.position_mm_;
+  const double h = (p.back() - p.front()) / static_cast<double>(p.size() - 1);
   bool uniform = true;
-  for (std::size_t i = 0; i < position_mm_.size() && uniform; ++i) {
-    uniform =
-        std::fabs(position_mm_[i] - (position_mm_.front() + h * static_cast<double>(i))) <= 1e-9;
+  for (std::size_t i = 0; i < p.size() && uniform; ++i) {
+    uniform = std::fabs(p[i] - (p.front() + h * static_cast<double>(i))) <= 1e-9;
   }
-  uniform_spacing_mm_ = uniform ? h : 0.0;
+  t.uniform_spacing_mm_ = uniform ? h : 0.0;
+  return t;
 }
 
 AxisErrorSample AxisErrorTable::Sample(double position_mm) const {
@@ -74,9 +76,9 @@ AxisErrorSample AxisErrorTable::Sample(double position_mm) const {
   return Lerp(rows_[i], rows_[i + 1], t);
 }
 
-AxisErrorTable AxisErrorTable::Resampled(double step_mm, double max_mm) const {
+Expected<AxisErrorTable> AxisErrorTable::Resampled(double step_mm, double max_mm) const {
   if (!(step_mm > 0.0) || !(max_mm > min_mm())) {
-    throw std::invalid_argument("axis table: bad resampling step or range");
+    return Fail(Error::kInvalidArgument, "axis table: bad resampling step or range");
   }
   const auto count = static_cast<std::size_t>(std::floor((max_mm - min_mm()) / step_mm + 1e-9));
   std::vector<double> pos;
@@ -86,7 +88,7 @@ AxisErrorTable AxisErrorTable::Resampled(double step_mm, double max_mm) const {
     pos.push_back(p);
     rows.push_back(Sample(p));
   }
-  return AxisErrorTable(std::move(pos), std::move(rows));
+  return Create(std::move(pos), std::move(rows));
 }
 
 }  // namespace volcomp::model

@@ -2,7 +2,6 @@
 #include "volcomp/model/kmtpp.hpp"
 
 #include <cmath>
-#include <stdexcept>
 #include <string>
 
 namespace volcomp::model {
@@ -63,21 +62,21 @@ KmtppOptions KmtppDissertationOptions(double gain, double step) {
   return o;
 }
 
-KmtppResult Kmtpp(const std::array<AxisErrorTable, 3>& tables,
-                  const KmtppCalibration& calibration,
-                  const KmtppOptions& options,
-                  const Vec3& target_mm,
-                  std::vector<KmtppStep>* trace) {
+Expected<KmtppResult> Kmtpp(const std::array<AxisErrorTable, 3>& tables,
+                            const KmtppCalibration& calibration,
+                            const KmtppOptions& options,
+                            const Vec3& target_mm,
+                            std::vector<KmtppStep>* trace) {
   const double kl = options.gain * options.step;
   if (!(kl > 0.0 && kl < 2.0)) {
-    throw std::invalid_argument("КМТПП: K·l must lie in (0, 2) for the trace to converge");
+    return Fail(Error::kInvalidArgument, "КМТПП: K·l must lie in (0, 2) for the trace to converge");
   }
   Vec3 u;
   for (int a = 0; a < 3; ++a) {
     const AxisErrorTable& t = tables[static_cast<std::size_t>(a)];
     if (t.size() < 2 || !(t.uniform_spacing_mm() > 0.0)) {
-      throw std::invalid_argument(std::string("КМТПП: the ") + "XYZ"[a] +
-                                  " table must be equally spaced");
+      return Fail(Error::kInvalidArgument,
+                  std::string("КМТПП: the ") + "XYZ"[a] + " table must be equally spaced");
     }
     u[a] = t.uniform_spacing_mm();
   }
@@ -90,7 +89,7 @@ KmtppResult Kmtpp(const std::array<AxisErrorTable, 3>& tables,
   int m = 0;
   bool done = false;
   while (!done) {
-    if (m >= options.max_steps) throw std::runtime_error("КМТПП: the trace did not stop");
+    if (m >= options.max_steps) return Fail(Error::kInputInvalid, "КМТПП: the trace did not stop");
     const Vec3 qdot = -options.gain * (q - target_mm);  // 9.1
     const Vec3 next = q + options.step * qdot;          // 9.2
     ++m;                                                // 9.3
@@ -138,7 +137,7 @@ KmtppResult Kmtpp(const std::array<AxisErrorTable, 3>& tables,
   out.g = Mat3::FromColumns(q_now[0], q_now[1], q_now[2]);  // 11
   Vec3 step;
   if (!Solve(out.g, target_mm - out.reached_mm, &step)) {
-    throw std::runtime_error("КМТПП: singular axis-vector matrix");
+    return Fail(Error::kInputInvalid, "КМТПП: singular axis-vector matrix");
   }
   Vec3 base = q;
   if (options.final_step == KmtppFinalStep::kGridNode) {

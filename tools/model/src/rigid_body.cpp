@@ -2,7 +2,7 @@
 #include "volcomp/model/rigid_body.hpp"
 
 #include <cmath>
-#include <stdexcept>
+#include <cstdio>
 
 #include "volcomp/model/inverse.hpp"
 
@@ -11,6 +11,10 @@ namespace {
 
 constexpr double kUmPerMm = 1000.0;
 constexpr double kRadPerUrad = 1e-6;
+
+Unexpected<Failure> Invalid(const std::string& message) {
+  return Fail(Error::kInvalidArgument, message);
+}
 
 int AxisIndex(char c) {
   switch (c) {
@@ -82,8 +86,8 @@ Vec3 PhysicalError_mm(const Model& m, const Vec3& q) {
 
 }  // namespace
 
-KinematicChain KinematicChain::Parse(const std::string& workpiece_axes,
-                                     const std::string& tool_axes) {
+Expected<KinematicChain> KinematicChain::Parse(const std::string& workpiece_axes,
+                                               const std::string& tool_axes) {
   KinematicChain c;
   std::array<bool, 3> seen = {false, false, false};
   std::size_t k = 0;
@@ -92,15 +96,15 @@ KinematicChain KinematicChain::Parse(const std::string& workpiece_axes,
     const char ch = all[i];
     if (ch == ' ' || ch == ',') continue;
     const int a = AxisIndex(ch);
-    if (a < 0) throw std::invalid_argument(std::string("chain: unknown axis '") + ch + "'");
+    if (a < 0) return Invalid(std::string("chain: unknown axis '") + ch + "'");
     if (seen[static_cast<std::size_t>(a)]) {
-      throw std::invalid_argument(std::string("chain: axis ") + "XYZ"[a] + " appears twice");
+      return Invalid(std::string("chain: axis ") + "XYZ"[a] + " appears twice");
     }
     seen[static_cast<std::size_t>(a)] = true;
     c.order[k++] = a;
     c.carries_workpiece[static_cast<std::size_t>(a)] = i < workpiece_axes.size();
   }
-  if (k != 3) throw std::invalid_argument("chain: each of X, Y, Z must appear exactly once");
+  if (k != 3) return Invalid("chain: each of X, Y, Z must appear exactly once");
   return c;
 }
 
@@ -110,16 +114,16 @@ std::string KinematicChain::ToString() const {
   return w + "|" + t;
 }
 
-void ValidateModel(const Model& model) {
+Outcome ValidateModel(const Model& model) {
   for (int a = 0; a < 3; ++a) {
     if (model.axes[static_cast<std::size_t>(a)].size() < 2) {
-      throw std::invalid_argument(std::string("model: axis ") + "XYZ"[a] + " has no error table");
+      return Invalid(std::string("model: axis ") + "XYZ"[a] + " has no error table");
     }
   }
   std::array<bool, 3> seen = {false, false, false};
   for (int a : model.chain.order) {
     if (a < 0 || a > 2 || seen[static_cast<std::size_t>(a)]) {
-      throw std::invalid_argument("model: the kinematic chain must list X, Y, Z once each");
+      return Invalid("model: the kinematic chain must list X, Y, Z once each");
     }
     seen[static_cast<std::size_t>(a)] = true;
   }
@@ -128,8 +132,28 @@ void ValidateModel(const Model& model) {
                            model.tool_offset_mm.y,    model.tool_offset_mm.z,
                            model.angle_scale};
   for (double v : values) {
-    if (!std::isfinite(v)) throw std::invalid_argument("model: a parameter is not finite");
+    if (!std::isfinite(v)) return Invalid("model: a parameter is not finite");
   }
+  return Outcome::Ok();
+}
+
+std::string DescribeModel(const Model& m) {
+  std::string s = m.formulation == Formulation::kPhysical ? "physical" : "dissertation";
+  if (m.formulation == Formulation::kPhysical) {
+    s += m.order == Order::kFirst ? ", first order" : ", exact rotations";
+    s += ", chain " + m.chain.ToString();
+  } else {
+    s += m.order == Order::kFirst
+             ? ", first order (3.10)"
+             : (m.dissertation_case == DissertationCase::kPlus ? ", second order δ+ (3.9)"
+                                                               : ", second order δ− (3.9)");
+  }
+  if (m.angle_scale != 1.0) {
+    char scale[64];
+    std::snprintf(scale, sizeof scale, "%.6g", m.angle_scale);
+    s += std::string(", angle scale ") + scale;
+  }
+  return s;
 }
 
 Vec3 ToolPointError_um(const Model& model, const Vec3& command_mm) {

@@ -2,102 +2,31 @@
 #include "volcomp/model/tracker_lattice.hpp"
 
 #include <cmath>
-#include <set>
-#include <stdexcept>
+#include <string>
 #include <utility>
 
 namespace volcomp::model {
-namespace {
 
-using tools::CsvTable;
-
-// Equally spaced node values of one axis, from the set of values the file gives.
-GridAxis AxisOf(const CsvTable& csv, const std::set<double>& values, char axis) {
-  const std::string name(1, axis);
-  if (values.size() < 2) {
-    throw csv.error(csv.header_line(), "the lattice needs at least 2 nodes along " + name);
-  }
-  const std::vector<double> v(values.begin(), values.end());
-  const double h = (v.back() - v.front()) / static_cast<double>(v.size() - 1);
-  for (std::size_t i = 0; i < v.size(); ++i) {
-    if (std::fabs(v[i] - (v.front() + h * static_cast<double>(i))) > 1e-6) {
-      throw csv.error(csv.header_line(), "the " + name + " nodes are not equally spaced (" +
-                                             std::to_string(v[i]) + " mm)");
-    }
-  }
-  return {v.front(), h, static_cast<uint32_t>(v.size())};
-}
-
-uint32_t NodeIndex(const GridAxis& g, double value) {
-  return static_cast<uint32_t>(std::lround((value - g.origin_mm) / g.spacing_mm));
-}
-
-}  // namespace
-
-TrackerLatticeData TrackerLatticeFromCsv(const CsvTable& csv) {
-  const char* cmd[3] = {"x_cmd_mm", "y_cmd_mm", "z_cmd_mm"};
-  const char* pos[3] = {"x_mm", "y_mm", "z_mm"};
-  for (int a = 0; a < 3; ++a) {
-    csv.require(cmd[a]);
-    csv.require(pos[a]);
-  }
-  std::set<double> values[3];
-  for (const tools::CsvRow& r : csv.rows()) {
-    for (int a = 0; a < 3; ++a) values[a].insert(r.number(cmd[a]));
-  }
-  TrackerLatticeData d;
-  d.name = csv.source();
-  for (int a = 0; a < 3; ++a)
-    d.lattice[static_cast<std::size_t>(a)] = AxisOf(csv, values[a], "XYZ"[a]);
-  const GridAxes& g = d.lattice;
-  const std::size_t total = static_cast<std::size_t>(g[0].nodes) * g[1].nodes * g[2].nodes;
-  d.position_mm.assign(total, Vec3{});
-  std::vector<std::size_t> line_of(total, 0);
-  for (const tools::CsvRow& r : csv.rows()) {
-    const uint32_t i = NodeIndex(g[0], r.number(cmd[0]));
-    const uint32_t j = NodeIndex(g[1], r.number(cmd[1]));
-    const uint32_t k = NodeIndex(g[2], r.number(cmd[2]));
-    const std::size_t n = (static_cast<std::size_t>(k) * g[1].nodes + j) * g[0].nodes + i;
-    if (line_of[n] != 0) {
-      throw csv.error(r.line(),
-                      "node given twice (first on line " + std::to_string(line_of[n]) + ")");
-    }
-    line_of[n] = r.line();
-    d.position_mm[n] = {r.number(pos[0]), r.number(pos[1]), r.number(pos[2])};
-  }
-  if (csv.rows().size() != total) {
-    throw csv.error(csv.header_line(), std::to_string(csv.rows().size()) + " nodes for a " +
-                                           std::to_string(g[0].nodes) + "x" +
-                                           std::to_string(g[1].nodes) + "x" +
-                                           std::to_string(g[2].nodes) + " lattice (" +
-                                           std::to_string(total) + " needed)");
-  }
-  return d;
-}
-
-TrackerLatticeData LoadTrackerLatticeCsv(const std::string& path) {
-  return TrackerLatticeFromCsv(CsvTable::ParseFile(path));
-}
-
-TrackerLattice::TrackerLattice(TrackerLatticeData data) : data_(std::move(data)) {
+Expected<TrackerLattice> TrackerLattice::Create(TrackerLatticeData data) {
   std::size_t total = 1;
-  for (const GridAxis& a : data_.lattice) {
+  for (const GridAxis& a : data.lattice) {
     if (a.nodes < 2 || !(a.spacing_mm > 0) || !std::isfinite(a.origin_mm)) {
-      throw std::invalid_argument(
-          "tracker lattice: every axis needs >= 2 nodes at a positive "
-          "spacing");
+      return Fail(Error::kInvalidArgument,
+                  "tracker lattice: every axis needs >= 2 nodes at a positive spacing");
     }
     total *= a.nodes;
   }
-  if (data_.position_mm.size() != total) {
-    throw std::invalid_argument("tracker lattice: " + std::to_string(data_.position_mm.size()) +
-                                " readings for " + std::to_string(total) + " nodes");
+  if (data.position_mm.size() != total) {
+    return Fail(Error::kInvalidArgument,
+                "tracker lattice: " + std::to_string(data.position_mm.size()) + " readings for " +
+                    std::to_string(total) + " nodes");
   }
-  for (const Vec3& p : data_.position_mm) {
+  for (const Vec3& p : data.position_mm) {
     if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) {
-      throw std::invalid_argument("tracker lattice: a reading is not finite");
+      return Fail(Error::kInvalidArgument, "tracker lattice: a reading is not finite");
     }
   }
+  return TrackerLattice(std::move(data));
 }
 
 Vec3 TrackerLattice::Position_mm(const Vec3& command_mm) const {

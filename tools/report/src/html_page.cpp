@@ -3,7 +3,6 @@
 
 #include <filesystem>
 #include <fstream>
-#include <stdexcept>
 #include <system_error>
 
 #include "volcomp/report/format.hpp"
@@ -66,20 +65,21 @@ std::string HtmlPage::Render() const {
          EscapeXml(title_) + "</h1>\n" + body_ + "</body>\n</html>\n";
 }
 
-void HtmlPage::WriteFile(const std::string& path) const {
+Outcome HtmlPage::WriteFile(const std::string& path) const {
   std::ofstream f(path, std::ios::binary);
-  if (!f) throw std::runtime_error(path + ": cannot open for writing");
+  if (!f) return Fail(Error::kIoError, path + ": cannot open for writing");
   f << Render();
   f.close();
-  if (!f) throw std::runtime_error(path + ": write failed");
+  if (!f) return Fail(Error::kIoError, path + ": write failed");
+  return Outcome::Ok();
 }
 
-std::string PrepareReportPath(const std::string& dir, const std::string& file_name) {
+Expected<std::string> PrepareReportPath(const std::string& dir, const std::string& file_name) {
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);
-  if (ec || !std::filesystem::is_directory(dir)) {
-    throw std::runtime_error(dir + ": cannot create report directory" +
-                             (ec ? " (" + ec.message() + ")" : std::string()));
+  if (ec || !std::filesystem::is_directory(dir, ec)) {
+    return Fail(Error::kIoError, dir + ": cannot create report directory" +
+                                     (ec ? " (" + ec.message() + ")" : std::string()));
   }
   return (std::filesystem::path(dir) / file_name).string();
 }

@@ -7,8 +7,8 @@
 
 #include <cstdint>
 
-#include "volcomp/can/can_frame.hpp"
 #include "volcomp/base/status.hpp"
+#include "volcomp/can/can_frame.hpp"
 
 namespace volcomp::hal {
 

@@ -8,11 +8,11 @@
 namespace volcomp::hal {
 
 enum class InputLine : uint8_t {
-  kHome0 = 0,         // home (reference) switch of axis 0; kHome0 + a for axis a (a < 6)
-  kEnable = 6,        // compensation enable from the CNC (active high)
-  kEStop = 7,         // emergency stop chain open (active high = stopped)
-  kDriveAlarm = 8,    // any drive reports an alarm (active high)
-  kWriteEnable = 9,   // write-enable key/jumper (active high = tables and settings writable)
+  kHome0 = 0,        // home (reference) switch of axis 0; kHome0 + a for axis a (a < 6)
+  kEnable = 6,       // compensation enable from the CNC (active high)
+  kEStop = 7,        // emergency stop chain open (active high = stopped)
+  kDriveAlarm = 8,   // any drive reports an alarm (active high)
+  kWriteEnable = 9,  // write-enable key/jumper (active high = tables and settings writable)
   kCount = 10,
 };
 

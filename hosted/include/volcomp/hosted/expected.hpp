@@ -1,5 +1,5 @@
-// The result type of hosted code (hal/linux, firmware/linux, tools/, host-sim/, linuxcnc/): a value
-// or a Failure, as Status / Result<T> are in lib/ and with the same error codes, plus what an
+// The result type of hosted code (hal/linux, firmware/linux_board, tools/, host-sim/, linuxcnc/): a
+// value or a Failure, as Status / Result<T> are in lib/ and with the same error codes, plus what an
 // operator needs to act on the failure in words (file, line, interface, errno text, object).
 //
 //   Expected<T>        a T, or a Failure;

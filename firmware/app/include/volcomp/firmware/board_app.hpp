@@ -1,59 +1,40 @@
-// The board application: wires the core (lib/) to the HAL and owns the two execution contexts.
+// The board application: wires the core (lib/) to the HAL, owns the settings in force and the two
+// execution contexts (docs/architecture.md, "Firmware").
 //
-//   Tick()  the control tick (timer ISR at BoardConfig::tick_hz) in its two parts (ControlTick's
-//           two rates): StepTick() every tick reads the input stage's counters, forms the targets
-//           (ControlTick::RunSteps()) and hands them to the output stage (step/dir pulses or CAN
-//           setpoints); CompensationTick() every ControlTick::compensation_divider() ticks applies
-//           requests handed over by the main loop (table switch, references) and runs the
-//           compensator (ControlTick::Compensate()). The STM32 step/dir image runs them as two
-//           interrupts (StepTick() at the highest priority, pending CompensationTick() below it);
-//           the other boards call Tick(). Nothing else.
-//   Poll()  the main loop: slow lines (home switches, enable, e-stop, drive alarm, write enable),
-//           status outputs, and the CANopen node (NMT, heartbeat, EMCY, SDO with the object
-//           dictionary of BoardObjects: configuration, table staging, diagnostics).
+//   Tick()   the control tick, timer ISR at settings().board.tick_hz: StepTick() every tick
+//            (counters -> targets -> output stage), CompensationTick() every
+//            ControlTick::compensation_divider() ticks (requests from the main loop, then the
+//            compensator). Static calls only, no allocation, no division; it may preempt Poll(),
+//            never the reverse (on the host both run in one thread). Requests reach it through
+//            atomics and the table hand-over (table_hand_over.hpp).
+//   Poll()   the main loop: slow lines, status outputs, the CANopen node with BoardObjects (the
+//            dictionary's values) and BoardPolicy (what the bus may change, the one activation
+//            sequence).
+//   Start()  power-on and every NMT reset node: loads the stored settings (or the defaults) and
+//            applies them with the tick stopped, in the order the tick needs (tick I/O,
+//            ControlTick, tick timer, CAN bit rate); settings the hardware refuses give way to the
+//            defaults, visibly (FAULT, EMCY kEmcyConfigRefused, config_status()). Then the stored
+//            table.
 //
-// Requests from the main loop reach the tick through atomics: a reference bit mask, an
-// "unreference" flag, and the table hand-over (two prepared-table slots; the tick switches to the
-// one the main loop published, without copying it: table_hand_over.hpp). On the MCU the tick ISR
-// preempts the main loop, never the reverse; on the host both run in one thread.
-//
-// Activation is one sequence, ActivateTable(): prepare the parsed image against the configuration
-// in force, hand it to the tick, mark it active (0x2103 / 0x2104). Power-up (the stored table),
-// ActivateImage() and table control (0x2101 = activate, through BoardControl) all use it.
-//
-// Storage: the table flash holds the dual-bank table store (active image + staging); the settings
-// flash (optional) holds the stored BoardSettings. Start() loads the settings (or the defaults),
-// mounts the tables and activates the stored image if it is intact and made for this board;
-// otherwise the board runs as pure pass-through and reports why (stored_table_status()).
-//
-// The configuration in force has one owner: Start() (power-on, and every NMT reset node) applies
-// the settings it loaded to the hardware as well as to the data path, in an order that never lets
-// the tick run at a period ControlTick was not configured for: stop the tick timer, the tick I/O
-// (step I/O formats and counter widths, then the step generators), ControlTick, the tick timer's
-// rate, the CAN bit rate; the timer starts again once everything is in place. Stored settings the
-// hardware refuses (a tick rate or bit rate the timer or CAN controller cannot produce exactly, a
-// pulse format it cannot do) give way to the factory defaults, so the board stays reachable; the
-// refusal stays visible: FAULT output, EMCY canopen::kEmcyConfigRefused (frame bytes 3-4: error
-// code, byte 5: canopen::ConfigPart; board_protocol.hpp), config_status().
-// A CAN port that cannot set the bit rate itself and finds the interface at another rate
-// (SocketCAN) reports kCanBitrateMismatch the same way, without falling back: it communicates at
-// the interface's rate.
-//
-// Io is the tick's two ends as one static type (tick_io.hpp): StepDirIo<StepIo> for a step/dir
-// board, CspIo for a CAN gateway (see gateway_app.hpp). No virtual call on the tick path.
+// settings() is the one copy of the settings in force: the dictionary and the policy read it,
+// ControlTick keeps only what the data path needs. Io is the tick's two ends as one static type
+// (tick_io.hpp): StepDirIo<StepIo> (step/dir) or CspIo (CAN gateway, gateway_app.hpp).
 #pragma once
 
 #include <atomic>
 #include <cstdint>
 
-#include "volcomp/config/board_config.hpp"
+#include "volcomp/base/status.hpp"
 #include "volcomp/canopen/board_protocol.hpp"
 #include "volcomp/canopen/node.hpp"
+#include "volcomp/config/board_config.hpp"
+#include "volcomp/config/board_settings.hpp"
 #include "volcomp/control/compensator.hpp"
 #include "volcomp/control/control_tick.hpp"
 #include "volcomp/firmware/board_control.hpp"
 #include "volcomp/firmware/board_objects.hpp"
-#include "volcomp/firmware/settings.hpp"
+#include "volcomp/firmware/board_policy.hpp"
+#include "volcomp/firmware/settings_store.hpp"
 #include "volcomp/firmware/table_hand_over.hpp"
 #include "volcomp/firmware/table_store.hpp"
 #include "volcomp/firmware/tick_io.hpp"
@@ -62,7 +43,6 @@
 #include "volcomp/hal/flash.hpp"
 #include "volcomp/hal/slow_io.hpp"
 #include "volcomp/hal/tick_timer.hpp"
-#include "volcomp/base/status.hpp"
 #include "volcomp/table/table_image.hpp"
 
 namespace volcomp::firmware {
@@ -96,7 +76,9 @@ class BoardApp final : private BoardControl {
   };
 
   explicit BoardApp(const Devices& devices)
-      : dev_(devices), objects_(this, &tables_, &settings_store_, &node_, AppOptions().identity) {}
+      : dev_(devices),
+        policy_({&settings_, &control_tick_, &hand_over_, &pending_reference_}),
+        objects_(ObjectParts(), AppOptions().identity) {}
 
   /// Starts with the stored settings, or `defaults` when none are stored (or the hardware refuses
   /// them: see config_status()), applied to the devices and the data path. Fails only when
@@ -108,7 +90,8 @@ class BoardApp final : private BoardControl {
     if (dev_.tick_timer != nullptr) dev_.tick_timer->Stop();
     defaults_ = defaults;
     options_ = options;
-    objects_ = BoardObjects(this, &tables_, &settings_store_, &node_, options.identity);
+    objects_ = BoardObjects(ObjectParts(), options.identity);
+    policy_.Restart();
     settings_ = defaults;
     if (dev_.settings_flash != nullptr) {
       const uint32_t bank = options.settings_bank_size != 0 ? options.settings_bank_size
@@ -128,7 +111,7 @@ class BoardApp final : private BoardControl {
     dev_.io->Write(hal::OutputLine::kReady, started_);
     dev_.io->Write(hal::OutputLine::kFault, !started_ || !config_status_.ok());
     if (!started_) return s;
-    objects_.SetSettings(settings_);
+    objects_.ResetPendingSettings();
     uint32_t counters[table::kMaxAxes];
     dev_.tick_io->ReadCounters(counters);
     control_tick_.LatchCounters(counters);
@@ -249,7 +232,7 @@ class BoardApp final : private BoardControl {
   Status ActivateImage(const uint8_t* image, size_t size) {
     const Result<table::TableView> view = table::ParseImage(image, size);
     if (!view.ok()) return view.status();
-    return ActivateTable(*view);
+    return policy_.Activate(*view);
   }
 
   const ControlTick& control_tick() const { return control_tick_; }
@@ -259,6 +242,8 @@ class BoardApp final : private BoardControl {
   const canopen::Node& node() const { return node_; }
   const TableStore& tables() const { return tables_; }
   const BoardObjects& objects() const { return objects_; }
+  const BoardPolicy& policy() const { return policy_; }
+  /// The settings in force (the one copy: applied by the last Start()).
   const BoardSettings& settings() const { return settings_; }
   Status stored_table_status() const { return stored_status_; }
   /// Ok, or why the hardware refused the loaded settings (the board then runs the factory
@@ -304,7 +289,11 @@ class BoardApp final : private BoardControl {
       }
       return view.status();
     }
-    return ActivateTable(*view);
+    return policy_.Activate(*view);
+  }
+
+  BoardObjects::Parts ObjectParts() {
+    return {this, &policy_, &settings_, &control_tick_, &tables_, &settings_store_, &node_};
   }
 
   uint32_t NowMs() const {
@@ -322,29 +311,30 @@ class BoardApp final : private BoardControl {
     const bool estop = io.Read(hal::InputLine::kEStop);
     const bool alarm = io.Read(hal::InputLine::kDriveAlarm);
     const bool fault = estop || alarm;
-    if (fault && !fault_) {
+    const bool was_fault = policy_.fault();
+    if (fault && !was_fault) {
       pending_unreference_.store(true, std::memory_order_release);
       if (dev_.can != nullptr) {
         node_.RaiseError(estop ? canopen::kEmcyEStop : canopen::kEmcyDriveAlarm,
                          canopen::kErrManufacturer);
       }
-    } else if (!fault && fault_ && dev_.can != nullptr) {
+    } else if (!fault && was_fault && dev_.can != nullptr) {
       node_.ClearErrors();
     }
-    fault_ = fault;
     fault_flag_.store(fault, std::memory_order_relaxed);
     if (!fault && refs != 0) pending_reference_.fetch_or(refs, std::memory_order_release);
-    enabled_.store((!options_.use_enable_input || io.Read(hal::InputLine::kEnable)) && bus_enable_,
-                   std::memory_order_relaxed);
-    write_enable_ = io.Read(hal::InputLine::kWriteEnable);
+    enabled_.store(
+        (!options_.use_enable_input || io.Read(hal::InputLine::kEnable)) && policy_.bus_enable(),
+        std::memory_order_relaxed);
+    policy_.SetLines(io.Read(hal::InputLine::kWriteEnable), fault);
     io.Write(hal::OutputLine::kCompensating, control_tick_.compensator().engaged());
     io.Write(hal::OutputLine::kFault, fault || !config_status_.ok());
   }
 
   void PollCan() {
     const uint32_t now = NowMs();
-    objects_.set_now_ms(now);
-    objects_.WatchLimits();
+    policy_.set_now_ms(now);
+    objects_.WatchLimits(now);
     CanFrame f;
     while (dev_.can->Receive(&f)) {
       objects_.CountFrame(true);
@@ -374,49 +364,21 @@ class BoardApp final : private BoardControl {
     }
   }
 
-  // BoardControl.
-  // The activation sequence: prepare against the configuration in force (in the slot the tick does
-  // not use), hand over to the tick, mark active. On error nothing changes.
-  Status DoActivateTable(const table::TableView& view) override {
-    PreparedTable& slot = hand_over_.BeginWrite();
-    const Status s = slot.Prepare(view, control_tick_.config());
-    if (!s.ok()) {
-      hand_over_.Abandon();
-      return s;
-    }
-    hand_over_.Publish();
-    objects_.set_active(view.table_id, view.crc32);
-    return Status::Ok();
-  }
-  void DoRequestClearTable() override { hand_over_.PublishClear(); }
-  void DoRequestReference(uint8_t mask) override {
-    if (!fault_) pending_reference_.fetch_or(mask, std::memory_order_release);
-  }
-  void DoSetBusEnable(bool on) override { bus_enable_ = on; }
-  bool DoBusEnable() const override { return bus_enable_; }
-  const ControlTick& DoControlTick() const override { return control_tick_; }
+  // BoardControl: what only the tick knows.
   OutputStatus DoOutputStatus() const override { return dev_.tick_io->output_status(); }
-  bool DoMoving() const override {
-    const uint64_t still_ticks = uint64_t{kStillMs} * control_tick_.config().tick_hz / 1000u;
-    return control_tick_.idle_ticks() < still_ticks;
-  }
-  bool DoFault() const override { return fault_; }
-  bool DoWriteEnableInput() const override { return write_enable_; }
   uint32_t DoMaxTickCostNs() const override { return max_tick_ns_; }
 
   Devices dev_;
   AppOptions options_;
   BoardSettings defaults_;  // factory defaults (from the first Start); stored settings override
-  BoardSettings settings_;
+  BoardSettings settings_;  // in force
   ControlTick control_tick_;
   TableStore tables_;
   SettingsStore settings_store_;
   canopen::Node node_;
+  BoardPolicy policy_;
   BoardObjects objects_;
   bool started_ = false;
-  bool fault_ = false;
-  bool write_enable_ = false;
-  bool bus_enable_ = canopen::kDefaultCompensationEnable != 0;
   bool home_level_[table::kMaxAxes] = {};
   Status stored_status_ = Error::kNotFound;
   Status config_status_;

@@ -1,18 +1,14 @@
-// The board's object dictionary values (everything outside the CiA 301 communication objects):
-// identity, board configuration (pending until stored and reset), table staging and control,
-// write access, operation and live diagnostics. See docs/canopen.md for the object list.
+// The board's object dictionary values (everything the node does not answer itself; the object
+// list: docs/canopen.md), bound from the od_entries.def rows: a configuration object
+// (VOLCOMP_OD_SETTING) reads and writes its field of the pending settings, a produced value
+// (VOLCOMP_OD_VALUE / VOLCOMP_OD_AXIS_ARRAY) reads the accessor below that its row names, any
+// other number is its row's default; per-axis values of axes not configured read 0.
 //
-// Store (0x1010 = "save") writes the pending configuration together with the communication
-// parameters in force (0x1015, 0x1017, read from the node); the node then restores those at its
-// resets. The configuration takes effect at the next reset node.
-//
-// Write access: writes to tables and configuration (0x1010, 0x1011, 0x2000-0x201E, 0x2100, table
-// activate/deactivate/clear) are refused with 0x08000020 unless the hardware write-enable input
-// is active or the board was unlocked by writing canopen::kUnlockSignature to 0x2110 within the
-// last kUnlockMs milliseconds. Table activation is refused with 0x08000022 unless every axis is
-// referenced and no axis moved within kStillMs. Each refusal and each failed action is counted
-// and reported with an EMCY (canopen::kEmcyRefused with the abort code, kEmcyTableInvalid with the
-// error; board_protocol.hpp).
+// The pending settings take effect at the next reset node, after a store (0x1010 "save", with the
+// communication parameters in force); BoardApp owns the settings in force, this class reads them.
+// What the bus may change is BoardPolicy's decision: refusals are 0x08000020 (not writable) or
+// 0x08000022 (activation not allowed now), each counted (0x2140:9) and reported by EMCY
+// (canopen::kEmcyRefused; a failed verification canopen::kEmcyTableInvalid). Main loop only.
 #pragma once
 
 #include <cstdint>
@@ -20,14 +16,14 @@
 #include "volcomp/canopen/board_protocol.hpp"
 #include "volcomp/canopen/node.hpp"
 #include "volcomp/canopen/object_values.hpp"
+#include "volcomp/config/board_settings.hpp"
+#include "volcomp/control/control_tick.hpp"
 #include "volcomp/firmware/board_control.hpp"
-#include "volcomp/firmware/settings.hpp"
+#include "volcomp/firmware/board_policy.hpp"
+#include "volcomp/firmware/settings_store.hpp"
 #include "volcomp/firmware/table_store.hpp"
 
 namespace volcomp::firmware {
-
-inline constexpr uint32_t kUnlockMs = 60000;
-inline constexpr uint32_t kStillMs = 100;
 
 struct IdentityInfo {
   const char* device_name = "volcomp";
@@ -38,42 +34,80 @@ struct IdentityInfo {
 
 class BoardObjects : public canopen::ObjectValues {
  public:
-  BoardObjects(BoardControl* control,
-               TableStore* tables,
-               SettingsStore* settings_store,
-               canopen::Node* node,
-               const IdentityInfo& identity);
+  /// The owner's parts the values come from and the actions go to (all outliving this).
+  struct Parts {
+    const BoardControl* control = nullptr;
+    BoardPolicy* policy = nullptr;
+    const BoardSettings* settings_in_force = nullptr;
+    const ControlTick* control_tick = nullptr;
+    TableStore* tables = nullptr;
+    SettingsStore* settings_store = nullptr;
+    canopen::Node* node = nullptr;
+  };
 
-  /// The settings in force (from Start) and the pending copy the configuration objects edit.
-  void SetSettings(const BoardSettings& active);
+  BoardObjects(const Parts& parts, const IdentityInfo& identity);
+
+  /// The configuration objects' pending copy back to the settings in force (at a start).
+  void ResetPendingSettings();
   const BoardSettings& pending_settings() const { return pending_; }
 
-  /// Called every main-loop pass with the current time.
-  void set_now_ms(uint32_t now_ms) { now_ms_ = now_ms; }
-  bool writable() const;
-  uint16_t device_state() const;
+  /// Watches the compensator's clamp and rate-limit counters (every main-loop pass): an axis is
+  /// limited while its counters advanced within canopen::kLimitHoldMs (0x2134); when an axis
+  /// becomes clamped, or rate limited while the axes move (a ramp at rest after activation or
+  /// enabling is expected), one EMCY canopen::kEmcyCorrectionLimited names it.
+  void WatchLimits(uint32_t now_ms);
+  void CountFrame(bool received) { ++(received ? rx_frames_ : tx_frames_); }
+
+  // ---- Values, one accessor per VOLCOMP_OD_VALUE / VOLCOMP_OD_AXIS_ARRAY row (the row's name).
+  uint32_t serial_number() const { return identity_.serial_number; }
+  uint8_t table_control() const { return last_command_; }  // the last command written
   /// 0x2102 table status word (canopen::EncodeTableStatus).
   uint32_t table_status() const;
-
-  /// Watches the compensator's clamp and rate-limit counters (every main-loop pass, after
-  /// set_now_ms): an axis is limited while its counters advanced within canopen::kLimitHoldMs
-  /// (0x2134); when an axis becomes clamped, or rate limited while the axes move (a ramp at rest
-  /// after activation or enabling is expected), one EMCY canopen::kEmcyCorrectionLimited names it.
-  void WatchLimits();
-  /// 0x2134:a+1 (canopen::CorrectionLimitBit) of axis `a`.
-  uint8_t limit_flags(uint8_t a) const;
+  uint32_t active_table_id() const { return parts_.policy->active_table_id(); }
+  uint32_t active_table_crc() const { return parts_.policy->active_table_crc(); }
+  uint32_t staged_table_crc() const { return parts_.tables->staged_crc32(); }
+  uint32_t staged_bytes() const { return parts_.tables->staged_bytes(); }
+  uint32_t staged_table_id() const { return parts_.tables->staged_table_id(); }
+  uint32_t table_bank_size() const { return parts_.tables->capacity(); }
+  uint8_t write_access() const { return parts_.policy->writable() ? 1 : 0; }
+  uint8_t compensation_enable() const { return parts_.policy->bus_enable() ? 1 : 0; }
+  /// 0x2122 (canopen::EncodeDeviceState).
+  uint16_t device_state() const;
   /// 0x2123: the first rule the pending settings (with the communication parameters in force)
-  /// break.
+  /// break (canopen::EncodeSettingsCheck).
   uint32_t settings_check() const;
-
-  uint32_t refused_actions() const { return refused_; }
-  void CountFrame(bool received) { ++(received ? rx_frames_ : tx_frames_); }
-  void set_active(uint32_t id, uint32_t crc) {
-    active_id_ = id;
-    active_crc_ = crc;
-    has_active_ = true;
+  int32_t commanded_position(uint8_t a) const { return parts_.control_tick->commanded(a); }
+  int32_t applied_correction(uint8_t a) const {
+    return parts_.control_tick->compensator().applied_q8(a);
   }
-  void clear_active() { has_active_ = false; }
+  int32_t output_position(uint8_t a) const {
+    return parts_.control->output_status().position_steps[a];
+  }
+  uint32_t max_backlog(uint8_t a) const {
+    return parts_.control->output_status().max_backlog_steps[a];
+  }
+  /// 0x2134:a+1 (canopen::CorrectionLimitBit) of axis `a`.
+  uint8_t correction_limited(uint8_t a) const;
+  uint32_t clamped_refreshes(uint8_t a) const {
+    return parts_.control_tick->compensator().clamped_refreshes(a);
+  }
+  uint32_t rate_limited_refreshes(uint8_t a) const {
+    return parts_.control_tick->compensator().rate_limited_refreshes(a);
+  }
+  /// The table's coordinate: commanded + reference offset.
+  int32_t machine_position(uint8_t a) const { return parts_.control_tick->machine_position(a); }
+  uint32_t can_rx_frames() const { return rx_frames_; }
+  uint32_t can_tx_frames() const { return tx_frames_; }
+  uint32_t malformed_frames() const { return parts_.node->malformed(); }
+  uint32_t sdo_aborts() const { return parts_.node->sdo().aborts(); }
+  uint32_t emcy_sent() const { return parts_.node->emcy_sent(); }
+  uint32_t ticks() const { return static_cast<uint32_t>(parts_.control_tick->ticks()); }
+  uint32_t output_overruns() const { return parts_.control->output_status().overruns; }
+  uint32_t max_tick_cost() const { return parts_.control->max_tick_cost_ns(); }
+  uint32_t refused_actions() const { return refused_; }
+  uint32_t emcy_suppressed() const { return parts_.node->emcy_suppressed(); }
+  /// Axes whose per-axis values are live (the others read 0).
+  uint8_t axis_count() const { return parts_.control_tick->axis_count(); }
 
  private:
   canopen::SdoAbort DoRead(const canopen::ObjectEntry& e,
@@ -89,7 +123,7 @@ class BoardObjects : public canopen::ObjectValues {
   canopen::SdoAbort DoDomainWriteData(const uint8_t* data, uint32_t size) override;
   canopen::SdoAbort DoEndDomainWrite(canopen::SdoAbort outcome) override;
   // Table uploads are paced: the store programs flash between sub-blocks.
-  uint32_t DoDomainWriteWindow() override { return tables_->upload_window(); }
+  uint32_t DoDomainWriteWindow() override { return parts_.tables->upload_window(); }
   canopen::SdoAbort DoDomainWriteFlush(bool* done) override;
 
   bool ReadNumber(const canopen::ObjectEntry& e, uint32_t* value) const;
@@ -100,24 +134,17 @@ class BoardObjects : public canopen::ObjectValues {
   // 0x1010 "save": the pending settings with the communication parameters in force.
   canopen::SdoAbort StoreSettings();
   canopen::SdoAbort Refuse(canopen::SdoAbort abort_code);
+  // `s` with the node's communication parameters in force (what a store saves, what 0x2124 says).
+  BoardSettings WithCommunication(BoardSettings s) const;
   void UpdateSettingsPending();
 
-  BoardControl* control_;
-  TableStore* tables_;
-  SettingsStore* settings_store_;
-  canopen::Node* node_;
+  Parts parts_;
   IdentityInfo identity_;
-  BoardSettings active_;
   BoardSettings pending_;
-  bool settings_pending_ = false;  // pending_ differs from active_
-  uint32_t now_ms_ = 0;
-  uint32_t unlocked_at_ms_ = 0;
-  bool unlocked_ = false;
+  bool settings_pending_ = false;  // pending_ differs from the settings in force
   uint8_t last_command_ = 0;
-  bool has_active_ = false;
-  uint32_t active_id_ = 0;
-  uint32_t active_crc_ = 0;
   uint32_t refused_ = 0;
+  uint32_t now_ms_ = 0;                          // at the last WatchLimits()
   uint32_t seen_clamped_[table::kMaxAxes] = {};  // counters at the last WatchLimits()
   uint32_t seen_limited_[table::kMaxAxes] = {};
   uint32_t clamped_at_ms_[table::kMaxAxes] = {};  // when they last advanced

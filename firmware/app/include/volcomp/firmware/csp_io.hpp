@@ -6,12 +6,12 @@
 
 #include <cstdint>
 
+#include "volcomp/base/status.hpp"
 #include "volcomp/config/board_config.hpp"
 #include "volcomp/control/control_tick.hpp"
+#include "volcomp/firmware/tick_io.hpp"
 #include "volcomp/gateway/csp_gateway.hpp"
 #include "volcomp/gateway/csp_stages.hpp"
-#include "volcomp/firmware/tick_io.hpp"
-#include "volcomp/base/status.hpp"
 
 namespace volcomp::firmware {
 

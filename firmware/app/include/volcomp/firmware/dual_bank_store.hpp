@@ -34,8 +34,8 @@
 
 #include <cstdint>
 
-#include "volcomp/hal/flash.hpp"
 #include "volcomp/base/status.hpp"
+#include "volcomp/hal/flash.hpp"
 
 namespace volcomp::firmware {
 

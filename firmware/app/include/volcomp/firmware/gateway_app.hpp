@@ -26,9 +26,9 @@
 
 #include <cstdint>
 
-#include "volcomp/gateway/csp_gateway.hpp"
 #include "volcomp/firmware/board_app.hpp"
 #include "volcomp/firmware/csp_io.hpp"
+#include "volcomp/gateway/csp_gateway.hpp"
 #include "volcomp/hal/can.hpp"
 #include "volcomp/hal/clock.hpp"
 #include "volcomp/hal/flash.hpp"

@@ -6,11 +6,11 @@
 
 #include <cstdint>
 
+#include "volcomp/base/status.hpp"
 #include "volcomp/config/board_config.hpp"
 #include "volcomp/control/control_tick.hpp"
 #include "volcomp/firmware/tick_io.hpp"
 #include "volcomp/hal/step_io.hpp"
-#include "volcomp/base/status.hpp"
 #include "volcomp/output/step_generator.hpp"
 #include "volcomp/output/step_output.hpp"
 #include "volcomp/table/table_format.hpp"

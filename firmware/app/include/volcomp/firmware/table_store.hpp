@@ -17,11 +17,11 @@
 
 #include <cstdint>
 
-#include "volcomp/config/board_config.hpp"
+#include "volcomp/base/status.hpp"
 #include "volcomp/canopen/board_protocol.hpp"
+#include "volcomp/config/board_config.hpp"
 #include "volcomp/firmware/dual_bank_store.hpp"
 #include "volcomp/hal/flash.hpp"
-#include "volcomp/base/status.hpp"
 #include "volcomp/table/table_image.hpp"
 
 namespace volcomp::firmware {

@@ -25,9 +25,9 @@
 #include <cstdint>
 #include <type_traits>
 
+#include "volcomp/base/status.hpp"
 #include "volcomp/config/board_config.hpp"
 #include "volcomp/control/control_tick.hpp"
-#include "volcomp/base/status.hpp"
 #include "volcomp/table/table_format.hpp"
 
 namespace volcomp::firmware {

@@ -3,14 +3,16 @@
 // transfer time, the rate, and the theoretical SDO block-transfer limit of the same bus (the
 // same payload as an ideal exchange: initiate, every segment, one ack per 127 segments, end,
 // back to back with no turnaround), so the efficiency is time_limit / time_measured; and the
-// bus's no-stuffing ceiling for block download (NoStuffingCeilingBytesPerS).
-// The default grid, 31x31x31 int16, is the largest that fits a table bank of the STM32G474
-// reference board (176 KB less the store's 64 bytes of records; docs/mcu-target.md).
+// bus's no-stuffing ceiling for block download (NoStuffingCeilingBytesPerS). The figures are in
+// docs/canopen.md. The default grid, 31x31x31 int16, is the largest that fits a table bank of the
+// STM32G474 reference board (docs/mcu-target.md).
 #pragma once
 
 #include <cstdint>
 #include <string>
 #include <vector>
+
+#include "volcomp/hosted/expected.hpp"
 
 namespace volcomp::sim {
 
@@ -22,8 +24,6 @@ struct UploadBenchOptions {
 };
 
 struct UploadBenchResult {
-  bool ok = false;
-  std::string message;
   uint32_t image_bytes = 0;
   double transfer_s = 0;  // block download, initiate to end response (virtual time)
   double limit_s = 0;     // ideal exchange of the same payload on the same bus
@@ -39,13 +39,15 @@ struct UploadBenchResult {
   uint32_t image_crc = 0;
 };
 
-/// Builds a grid image of grid_nodes^3 int16 nodes and uploads it to a simulated board.
-UploadBenchResult RunUploadBench(const UploadBenchOptions& options);
+/// Builds a grid image of grid_nodes^3 int16 nodes and uploads it to a simulated board. Fails
+/// with kInvalidArgument for a bit rate of 0 or a grid the image format refuses, and with the PC
+/// tool's explanation when a step of the upload fails ("staging: ...", "verify: ...").
+Expected<UploadBenchResult> RunUploadBench(const UploadBenchOptions& options);
 
 /// The most SDO block-download payload a classic CAN bus can carry, in bytes/s: 7 bytes per
 /// segment in 8-byte frames of 111 bits without stuff bits (SOF, 11-bit identifier, RTR, IDE, r0,
 /// DLC, 64 data bits, CRC 15 + delimiter, ACK 2, EOF 7, intermission 3), and one acknowledgement
-/// frame per 127 segments: bitrate * 7 * 127 / (111 * 128); 62.6 kB/s at 1 Mbit/s.
+/// frame per 127 segments: bitrate * 7 * 127 / (111 * 128).
 double NoStuffingCeilingBytesPerS(uint32_t bitrate);
 
 /// Bits of the ideal block-download exchange for `payload` on a bus (see above).

@@ -27,7 +27,9 @@ class SimSdoHost {
            uint64_t timeout_ns,
            const std::function<bool(uint64_t now_ns)>& pc_alive = {});
   /// Writes a numeric object with its dictionary size; gives up after `timeout_ns`.
-  canopen_client::SdoResult Write(canopen::ObjectId id, uint32_t value, uint64_t timeout_ns);
+  canopen_client::SdoExpected<std::vector<uint8_t>> Write(canopen::ObjectId id,
+                                                          uint32_t value,
+                                                          uint64_t timeout_ns);
   /// Advances the board and the bus by `ns`, discarding what the PC receives.
   void Idle(uint64_t ns);
   /// The PC as a FrameLink: receive() advances the board and the bus event by event until a frame

@@ -1,15 +1,10 @@
-// The real board application (firmware/app BoardApp) on the mock HAL, attached to a simulated CAN
-// bus, advanced in virtual time: the control tick and a main-loop pass every `poll_period_ns` (the
-// node's response latency). The tick is the board's tick timer (a MockTickTimer): it ticks while
-// the firmware keeps the timer running, at the rate the firmware programmed (the rate of the
-// configuration in force, which a node reset may change), with the period 1e9 / rate ns
-// (truncated) from the moment the timer was started. The bus endpoint runs at the bit rate the
-// firmware set (at another rate than the bus's the board is off the bus: sim_bus.hpp).
-//
-// Flash is kept in memory; with a flash directory it is loaded from its files at Start() and every
-// erase and program is written through to them at once (write_through_flash.hpp), so a simulated
-// board keeps its tables and settings across runs (`volcomp-sim node --flash-dir DIR`) and
-// killing the process is a real power loss.
+// The real board application (firmware/app BoardApp) on the mock HAL, on a simulated CAN bus
+// endpoint, in virtual time (ns): a control tick at the rate the firmware programmed into its
+// tick timer (period 1e9 / rate ns, truncated, while the timer runs; a node reset may change it)
+// and a main-loop pass every `poll_period_ns`; the endpoint at the bit rate the firmware set.
+// Flash is in memory; with a flash directory it is loaded from its files at Start() and every
+// operation is written through at once (write_through_flash.hpp), so killing the process is a
+// real power loss. Thread-safety: none (one thread drives the board and its bus).
 #pragma once
 
 #include <cstdint>
@@ -21,15 +16,16 @@
 #include "volcomp/firmware/step_dir_io.hpp"
 #include "volcomp/hal/mock/mock_devices.hpp"
 #include "volcomp/hal/mock/mock_step_io.hpp"
+#include "volcomp/hosted/expected.hpp"
+#include "volcomp/output/step_output.hpp"
 #include "volcomp/sim/sim_bus.hpp"
 #include "volcomp/sim/sim_bus_can_port.hpp"
 #include "volcomp/sim/write_through_flash.hpp"
-#include "volcomp/output/step_output.hpp"
 
 namespace volcomp::sim {
 
 struct SimulatedBoardOptions {
-  firmware::BoardSettings settings;       // factory defaults (stored settings override)
+  BoardSettings settings;                 // factory defaults (stored settings override)
   uint32_t table_flash_bytes = 1u << 20;  // two banks of 512 KiB
   uint32_t settings_flash_bytes = 8192;
   uint32_t flash_sector_bytes = 2048;        // STM32G4 page size
@@ -48,8 +44,10 @@ class SimulatedBoard {
   SimulatedBoard(SimBus& bus, const SimulatedBoardOptions& options);
   ~SimulatedBoard();
 
-  /// Starts the firmware (loads flash files first when configured).
-  Status Start();
+  /// Starts the firmware (opens and loads the flash files first when configured). Fails with
+  /// kIoError naming a flash file that cannot be opened or written, or with the firmware's error
+  /// ("the firmware did not start: ...").
+  Outcome Start();
   /// Runs ticks and main-loop passes up to virtual time `t_ns` (the bus must be advanced in step:
   /// see StepTo() and AdvanceInEventOrder() below).
   void AdvanceTo(uint64_t t_ns);
@@ -73,6 +71,7 @@ class SimulatedBoard {
   uint64_t now_ns() const { return now_ns_; }
 
  private:
+  Outcome OpenFlashFiles();
   void LoadFlash();
   // Follows the tick timer after the firmware ran: a (re)start schedules the next tick.
   void FollowTickTimer();

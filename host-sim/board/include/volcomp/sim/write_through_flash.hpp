@@ -6,24 +6,29 @@
 // operation, writes the bytes it touched (the whole sector for an erase, the programmed range for
 // a program; also a failed, interrupted operation's partial result) to the same offsets of the
 // file with pwrite(). The page cache keeps them across the process's death; no fsync (a host
-// crash is not what this models). Thread-safety: one thread, like the board.
+// crash is not what this models). The file is opened by Open(); an operation whose bytes cannot
+// be written to it fails with kIoError, as a flash that lost the operation would.
+// Thread-safety: one thread, like the board.
 #pragma once
 
+#include <cstdint>
 #include <string>
 
 #include "volcomp/hal/flash.hpp"
 #include "volcomp/hal/mock/mock_devices.hpp"
+#include "volcomp/hosted/expected.hpp"
 
 namespace volcomp::sim {
 
 class WriteThroughFlash final : public hal::Flash {
  public:
-  /// `flash` must outlive this object. Opens the file (created if missing). Throws
-  /// std::runtime_error when it cannot be opened (also WriteAll() and the operations when a write
-  /// fails).
-  WriteThroughFlash(hal::mock::MockFlash* flash, const std::string& path);
-  /// Sets the file to the flash's whole content (after it was loaded or set at start-up).
-  void WriteAll() { WriteBack(0, flash_->size()); }
+  /// `flash` must outlive this object; the file is `path`, opened by Open().
+  WriteThroughFlash(hal::mock::MockFlash* flash, std::string path);
+  /// Opens the file (created if missing); kIoError "PATH: cannot open: REASON".
+  Outcome Open();
+  /// Sets the file to the flash's whole content (after it was loaded or set at start-up);
+  /// kIoError "PATH: write failed: REASON".
+  Outcome WriteAll() { return WriteBack(0, flash_->size()); }
   ~WriteThroughFlash();
   WriteThroughFlash(const WriteThroughFlash&) = delete;
   WriteThroughFlash& operator=(const WriteThroughFlash&) = delete;
@@ -35,7 +40,7 @@ class WriteThroughFlash final : public hal::Flash {
   Status DoErase(uint32_t offset) override;
   Status DoProgram(uint32_t offset, const uint8_t* data, uint32_t bytes) override;
   const uint8_t* DoMap(uint32_t offset) const override { return flash_->Map(offset); }
-  void WriteBack(uint32_t offset, uint32_t bytes);
+  Outcome WriteBack(uint32_t offset, uint32_t bytes);
 
   hal::mock::MockFlash* flash_;
   std::string path_;

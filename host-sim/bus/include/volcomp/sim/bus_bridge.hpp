@@ -3,7 +3,9 @@
 //
 // Frames from the link are queued on the endpoint at the bus's current time; frames the endpoint
 // received are forwarded to the link. Call these from the loop that drives the bus (after
-// SlcanServer::Poll, or between RunUntil steps). Thread-safety: that loop's thread only.
+// SlcanServer::Poll, or between RunUntil steps). A failure of the link (the server's poll, the
+// transport's send or receive) is returned with the link's message. Thread-safety: that loop's
+// thread only.
 #pragma once
 
 #include <chrono>
@@ -13,6 +15,7 @@
 
 #include "volcomp/can_io/slcan_server.hpp"
 #include "volcomp/can_io/transport.hpp"
+#include "volcomp/hosted/expected.hpp"
 #include "volcomp/sim/sim_bus.hpp"
 
 namespace volcomp::sim {
@@ -22,8 +25,10 @@ namespace volcomp::sim {
 size_t PumpSlcan(can_io::SlcanServer& server, Endpoint& endpoint);
 /// One step of a realtime loop serving SLCAN clients (use it as RunRealtime's wait): forwards
 /// what the endpoint received (so it is written before waiting), Poll(timeout), then queues what
-/// the client sent on the endpoint.
-void ServeSlcan(can_io::SlcanServer& server, Endpoint& endpoint, std::chrono::microseconds timeout);
+/// the client sent on the endpoint. Fails when the server's Poll() does.
+Outcome ServeSlcan(can_io::SlcanServer& server,
+                   Endpoint& endpoint,
+                   std::chrono::microseconds timeout);
 /// ServeSlcan() session by session, for a TCP server whose clients come and go: when a client
 /// disconnects, what the bus still delivers of its conversation (the node's answers queued for it,
 /// e.g. the rest of a block-upload sub-block) is dropped instead of reaching the next client, and
@@ -38,7 +43,8 @@ class SlcanBridge {
               uint64_t quiet_ns = 1000000)
       : bus_(bus), server_(server), endpoint_(endpoint), quiet_ns_(quiet_ns) {}
 
-  void Serve(std::chrono::microseconds timeout);
+  /// Fails when the server's Poll() does.
+  Outcome Serve(std::chrono::microseconds timeout);
   /// Frames dropped because their client had disconnected.
   uint64_t dropped() const { return dropped_; }
 
@@ -57,7 +63,7 @@ class SlcanBridge {
   uint64_t dropped_ = 0;
 };
 
-/// Same for a transport (non-blocking Receive(0) until empty). Transport errors propagate.
-size_t PumpTransport(can_io::CanTransport& transport, Endpoint& endpoint);
+/// Same for a transport (non-blocking Receive(0) until empty); the transport's failure, if any.
+Expected<size_t> PumpTransport(can_io::CanTransport& transport, Endpoint& endpoint);
 
 }  // namespace volcomp::sim

@@ -1,9 +1,9 @@
 // Pacing virtual bus time to the wall clock (the simulated node serving external clients).
 //
 //   RealtimeClock clock;                       // virtual 0 = now
-//   RunRealtime(bus, clock, end_ns, [&](std::chrono::microseconds wait) {
-//     ServeSlcan(server, endpoint, wait);      // I/O while waiting for the next bus event
-//   });
+//   VOLCOMP_TRY(RunRealtime(bus, clock, end_ns, [&](std::chrono::microseconds wait) {
+//     return ServeSlcan(server, endpoint, wait);  // I/O while waiting for the next bus event
+//   }));
 //
 // When the host falls behind, virtual time catches up at once (frames are never dropped, only
 // delivered late in wall-clock terms). Thread-safety: none (one loop thread).
@@ -13,6 +13,7 @@
 #include <cstdint>
 #include <functional>
 
+#include "volcomp/hosted/expected.hpp"
 #include "volcomp/sim/sim_bus.hpp"
 
 namespace volcomp::sim {
@@ -20,8 +21,8 @@ namespace volcomp::sim {
 class RealtimeClock {
  public:
   using Wall = std::chrono::steady_clock;
-  /// Virtual time `virtual_start_ns` corresponds to the wall time now; `speed` > 0 scales it
-  /// (2.0 = virtual time runs twice as fast as the wall clock).
+  /// Virtual time `virtual_start_ns` corresponds to the wall time now; `speed` scales it (2.0 =
+  /// virtual time runs twice as fast as the wall clock). Precondition: speed > 0.
   explicit RealtimeClock(uint64_t virtual_start_ns = 0, double speed = 1.0);
   /// Virtual time of the wall-clock now.
   uint64_t Now() const;
@@ -38,10 +39,11 @@ class RealtimeClock {
 
 /// Runs `bus` paced by `clock` until virtual time `until_ns`. Between events it calls
 /// `wait(timeout)`, which must return within about `timeout` (it may return earlier, e.g. after
-/// I/O, and may Send() frames on endpoints; they are queued at the current virtual time).
-void RunRealtime(SimBus& bus,
-                 const RealtimeClock& clock,
-                 uint64_t until_ns,
-                 const std::function<void(std::chrono::microseconds timeout)>& wait);
+/// I/O, and may Send() frames on endpoints; they are queued at the current virtual time). Stops
+/// at the first failure `wait` returns and returns it.
+Outcome RunRealtime(SimBus& bus,
+                    const RealtimeClock& clock,
+                    uint64_t until_ns,
+                    const std::function<Outcome(std::chrono::microseconds timeout)>& wait);
 
 }  // namespace volcomp::sim

@@ -1,30 +1,8 @@
-// SimBus: a discrete-event classic CAN bus in virtual time (nanoseconds) at a fixed bit rate.
-//
-// Model (docs/can-transports.md "Simulated bus"):
-//   * Each attached Endpoint has a FIFO transmit queue (a node never reorders its own frames).
-//   * When the bus is idle and queues are not empty, arbitration picks the head frame with the
-//     lowest arbitration field (id, then standard before extended with the same base id, then
-//     data before remote); ties go to the endpoint attached first.
-//   * A frame occupies the bus for CanFrameBits(frame) bit times (stuff bits of its real bit
-//     pattern, EOF and the 3-bit intermission included). Every other endpoint receives it at the
-//     end of its EOF, 3 bit times before the bus is free again. The sender does not receive it.
-//   * Frames queued at the moment the bus goes idle all take part in the next arbitration.
-//   * Fault hooks decide per transmission: drop (receivers get nothing), duplicate (the sender
-//     transmits it twice, as after an error in the last EOF bit), corrupt (receivers get another
-//     frame: a bit flip no CRC caught), destroy (an error frame: the transmission ends after the
-//     CRC delimiter plus 6+8 error-flag/delimiter bits, nobody receives it, the sender retries).
-//   * An endpoint whose controller runs at another bit rate than the bus (Endpoint::set_bitrate)
-//     is off the bus, as a real node would be: it receives nothing (each frame it misses is
-//     counted), and each frame it sends ends in an error frame right after the start of frame
-//     (SOF + 6 + 8 error-flag/delimiter bits + intermission), received by nobody; its transmit
-//     error counter grows by 8 per error (ISO 11898-1) and at 256 it is bus-off: its queue is
-//     discarded and Send() refuses frames until the controller is set up again (set_bitrate).
-//     Simplification: it does not destroy the other nodes' frames while it receives them (a real
-//     error-active node at the wrong rate would, until it turns error-passive).
-//
-// Virtual time only moves in RunUntil(); NextEventTime() tells when something happens next, so a
-// caller can run in pure virtual time (benchmarks) or pace it to the wall clock (RealtimeClock).
-//
+// SimBus: a discrete-event classic CAN bus in virtual time (ns) at a fixed bit rate: real frame
+// timing, arbitration, fault hooks, and endpoints whose controller runs at another bit rate (off
+// the bus, error frames, bus-off). The model is docs/can-transports.md "Simulated bus". Virtual
+// time moves only in RunUntil(); NextEventTime() says when something happens next, so a caller
+// runs in pure virtual time or paces it to the wall clock (realtime.hpp).
 // Thread-safety: none; one thread drives a bus and its endpoints (receive callbacks run inside
 // RunUntil() on that thread and may call Send()).
 #pragma once
@@ -136,7 +114,7 @@ class SimBus {
   using FaultHook = std::function<FaultDecision(const CanFrame& frame, const Endpoint& sender)>;
   using Monitor = std::function<void(const FrameRecord& record)>;
 
-  /// `bitrate` in bit/s (> 0).
+  /// `bitrate` in bit/s. Precondition: bitrate > 0.
   explicit SimBus(uint32_t bitrate);
   SimBus(const SimBus&) = delete;
   SimBus& operator=(const SimBus&) = delete;

@@ -1,24 +1,9 @@
-// The simulated CNC controller: executes moves, dwells and homing cycles and emits step pulses
-// for three axes in virtual time (nanoseconds).
-//
-// Step generation: a linear move from A to B (steps) follows a rest-to-rest trapezoidal profile
-// along the straight path (TrapezoidProfile); axis a makes |B_a - A_a| steps, step k at the time
-// the path position reaches k/n of the path (so the axis position rounds down to whole steps, like
-// a DDA). Each step's exact time (ns) goes to the StepSink, which plays the part of the board's
-// hardware input counter: the count latched at a tick is the number of steps whose time is <= the
-// tick's time. Feed and rapid speeds are capped so that no axis exceeds `max_step_rate_hz`
-// (1 MHz default), acceleration is `accel_mm_s2` along the path, and every move ends at rest
-// (exact stop, G61).
-//
-// Homing (one block for any set of axes, in parallel): jog toward the switch at home_fast_mm_s,
-// stop when the switch closes, pause, back off until it opens plus home_backoff_mm, approach again
-// at home_slow_mm_s and stop on the step that closes it; that position becomes
-// home_position_steps in the CNC's machine coordinates. The switch is sampled at every
-// AdvanceTo() (every tick/poll of the simulation); jogs start and stop without ramps (they are
-// slow).
-//
-// Coordinates: count(a) = net steps emitted since power-up; position(a) = count + offset set by
-// homing (before homing: the count itself).
+// The simulated CNC controller: moves, dwells and homing cycles for three axes, emitted as step
+// times in virtual time (ns) to a StepSink, which plays the board's hardware input counter (the
+// count a tick latches is the number of steps whose time is <= the tick's). Moves follow a
+// rest-to-rest trapezoid along the straight path with no axis above `max_step_rate_hz`; homing
+// stops on the step that closes the switch (docs/simulator.md "CNC and the input counter").
+// Lengths mm, speeds mm/s, positions in steps. Thread-safety: none (the simulation's thread).
 #pragma once
 
 #include <array>
@@ -58,14 +43,19 @@ class Cnc {
   using SwitchReader = std::function<bool(int axis)>;
   using DwellHandler = std::function<void(uint64_t end_ns)>;
 
+  /// Preconditions: every step length, the step rate and the acceleration > 0.
   Cnc(const CncConfig& config, StepSink* sink, SwitchReader home_switch);
   ~Cnc();
 
-  /// Queue a rapid (G0) or feed (G1, `feed_mm_s`) move to a position in machine steps.
+  /// Queue a rapid (G0) or feed (G1, `feed_mm_s` > 0) move to a position in machine steps.
   void QueueRapid(const std::array<int64_t, 3>& target_steps);
   void QueueLinear(const std::array<int64_t, 3>& target_steps, double feed_mm_s);
+  /// Precondition: seconds >= 0.
   void QueueDwell(double seconds);
-  /// Homes the axes in `mask` (bit a = axis a) together.
+  /// Homes the axes in `mask` (bit a = axis a) together: jog toward the switch at
+  /// home_fast_mm_s until it closes, pause, back off until it opens plus home_backoff_mm,
+  /// approach at home_slow_mm_s and stop on the step that closes it, which becomes
+  /// home_position_steps. The switch is read at every AdvanceTo(); jogs have no ramps.
   void QueueHome(uint8_t mask);
   /// Queues a parsed G-code program (coordinates in mm of the machine frame).
   void QueueProgram(const Program& program);
@@ -76,7 +66,9 @@ class Cnc {
   void AdvanceTo(uint64_t t_ns);
   bool idle() const { return !active_ && queue_.empty(); }
 
+  /// Net steps emitted on `axis` since power-up.
   int64_t count(int axis) const { return count_[static_cast<size_t>(axis)]; }
+  /// The CNC's machine coordinate (steps): count + the offset homing set (the count before).
   int64_t position(int axis) const {
     return count_[static_cast<size_t>(axis)] + offset_[static_cast<size_t>(axis)];
   }

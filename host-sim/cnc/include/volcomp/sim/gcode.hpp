@@ -7,13 +7,15 @@
 //   G90 absolute / G91 incremental coordinates, G21 mm (G20 inches is refused),
 //   G17 G40 G49 G54 G61 G64 G80 G94 accepted and ignored (exact stop is always used)
 //   M2 / M30 end of program (later lines are ignored), M0 M1 M3 M4 M5 M8 M9 ignored
-// Anything else is an error "source:line: ..." (std::runtime_error), so a program that would do
+// Anything else is refused (kInputInvalid, "source:line: ..."), so a program that would do
 // something the simulator does not model is never run half-understood.
 #pragma once
 
 #include <array>
 #include <string>
 #include <vector>
+
+#include "volcomp/hosted/expected.hpp"
 
 namespace volcomp::sim {
 
@@ -30,7 +32,7 @@ struct ProgramBlock {
 
 using Program = std::vector<ProgramBlock>;
 
-/// Parses a program; `source` names it in error messages.
-Program ParseGcode(const std::string& text, const std::string& source = "<program>");
+/// Parses a program; `source` names it in failure messages.
+Expected<Program> ParseGcode(const std::string& text, const std::string& source = "<program>");
 
 }  // namespace volcomp::sim

@@ -1,16 +1,8 @@
-// Measurement programs for the simulated CNC, written as G-code (the same form an integrator runs
-// on a real controller) plus the list of stops at which the instrument takes a reading.
-//
-// Every program dwells (G4) exactly at the stops listed in `stops`, in order, and nowhere else:
-// the simulator reads its instrument at the end of each dwell. The first stop is the instrument's
-// zero (datum) where it is set before the measured approaches.
-//
-//   GostAxisProgram     GOST 27843-88 / ISO 230-2 linear cycle along one axis (targets from
-//                       metrology::PlanGostTargets, cycle from metrology::BuildCycle)
-//   DiagonalProgram     ISO 230-6 linear cycle along a body diagonal (metrology::PlanDiagonal)
-//   PointSetProgram     rapid moves to a list of points (laser-tracker point sets)
-//   ParametricProgram   a run along one axis through the reference point, ↑ then ↓, stopping at
-//                       every position (the six error motions of the axis, XL-80 style)
+// Measurement programs for the simulated CNC: G-code (what an integrator runs on a real
+// controller) and the stops where the instrument reads, one dwell (G4) per stop in order and
+// nowhere else; the first stop is the instrument's datum. Targets and cycles come from
+// tools/metrology (PlanGostTargets, BuildCycle, PlanDiagonal); a plan it refuses (fewer than 2
+// targets, no runs, a diagonal of length 0) fails with kInvalidArgument and its reason.
 // Units: mm, mm/s, seconds.
 #pragma once
 
@@ -18,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "volcomp/hosted/expected.hpp"
 #include "volcomp/metrology/direction.hpp"
 #include "volcomp/metrology/test_program.hpp"
 
@@ -50,24 +43,24 @@ struct CycleOptions {
 };
 
 /// A line test: `origin` + along * `direction` for the stops of metrology::BuildCycle(targets).
-TestProgram LineTestProgram(const std::string& name,
-                            const Point3& origin_mm,
-                            const Point3& direction,
-                            const std::vector<double>& targets_mm,
-                            const CycleOptions& options);
+Expected<TestProgram> LineTestProgram(const std::string& name,
+                                      const Point3& origin_mm,
+                                      const Point3& direction,
+                                      const std::vector<double>& targets_mm,
+                                      const CycleOptions& options);
 
 /// GOST 27843 linear cycle along `axis` (0..2) through `line_point_mm` (the other coordinates).
-TestProgram GostAxisProgram(int axis,
-                            const Point3& line_point_mm,
-                            const std::vector<double>& targets_mm,
-                            const CycleOptions& options);
+Expected<TestProgram> GostAxisProgram(int axis,
+                                      const Point3& line_point_mm,
+                                      const std::vector<double>& targets_mm,
+                                      const CycleOptions& options);
 
 /// ISO 230-6 body diagonal from `p1` to `p2` with targets every ~`increment_mm` (§5.2).
-TestProgram DiagonalProgram(const std::string& name,
-                            const Point3& p1_mm,
-                            const Point3& p2_mm,
-                            double increment_mm,
-                            const CycleOptions& options);
+Expected<TestProgram> DiagonalProgram(const std::string& name,
+                                      const Point3& p1_mm,
+                                      const Point3& p2_mm,
+                                      double increment_mm,
+                                      const CycleOptions& options);
 
 /// Rapid moves to `points` (the first one is the datum) with a dwell at each. With
 /// `approach_mm` > 0 every point is approached from `approach_mm` below on every axis (a rapid to
@@ -78,10 +71,10 @@ TestProgram PointSetProgram(const std::string& name,
                             double approach_mm = 0);
 
 /// One run ↑ and ↓ (× `runs`) along `axis` through `reference_mm`, stopping at `positions_mm`.
-TestProgram ParametricProgram(int axis,
-                              const Point3& reference_mm,
-                              const std::vector<double>& positions_mm,
-                              const CycleOptions& options);
+Expected<TestProgram> ParametricProgram(int axis,
+                                        const Point3& reference_mm,
+                                        const std::vector<double>& positions_mm,
+                                        const CycleOptions& options);
 
 /// The body diagonals of the box [lo, hi] in ISO 230-6 naming by start corner:
 /// "-X-Y-Z", "+X-Y-Z", "-X+Y-Z", "+X+Y-Z", each to the opposite corner.

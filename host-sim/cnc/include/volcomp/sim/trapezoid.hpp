@@ -7,7 +7,7 @@ namespace volcomp::sim {
 
 class TrapezoidProfile {
  public:
-  /// `length_mm` >= 0, `speed_mm_s` > 0, `accel_mm_s2` > 0 (std::invalid_argument otherwise).
+  /// Preconditions: `length_mm` >= 0, `speed_mm_s` > 0, `accel_mm_s2` > 0.
   TrapezoidProfile(double length_mm, double speed_mm_s, double accel_mm_s2);
 
   double length_mm() const { return length_; }

@@ -4,8 +4,8 @@
 // the active CRC-32 and the bank size, PrepareStaging (unlock if needed, clear the staging bank),
 // block-download the image into 0x2100, VerifyStaged (verify on the board, compare the staged
 // CRC-32); then activation (0x2101 = 1) and a check of the active CRC-32 (0x2104) and device
-// state (0x2122). Failures (an SDO abort, a refused activation) come back as a SimStatus with the
-// PC tool's explanation of the abort.
+// state (0x2122). Failures (an SDO abort, a refused activation) come back with the PC tool's
+// explanation of the abort.
 #pragma once
 
 #include <cstdint>
@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "volcomp/sim/sim_status.hpp"
+#include "volcomp/hosted/expected.hpp"
 #include "volcomp/sim/world.hpp"
 
 namespace volcomp::sim {
@@ -30,9 +30,9 @@ struct UploadReport {
 
 /// Stages and verifies `image` on the board; progress lines go to `log`. Fails with kIoError (an
 /// SDO transfer failed, the reason names the object) or kImageTooLarge (the bank is smaller).
-SimResult<UploadReport> UploadTable(World& world,
-                                    const std::vector<uint8_t>& image,
-                                    std::ostream& log);
+Expected<UploadReport> UploadTable(World& world,
+                                   const std::vector<uint8_t>& image,
+                                   std::ostream& log);
 
 struct ActivationReport {
   uint32_t active_crc = 0;
@@ -41,7 +41,7 @@ struct ActivationReport {
 
 /// Activates the staged table. Fails with kIoError (the board refused: SDO abort, e.g. not
 /// referenced) or kImageBadCrc (the active CRC-32 is not `expected_crc`).
-SimResult<ActivationReport> ActivateTable(World& world, uint32_t expected_crc);
+Expected<ActivationReport> ActivateTable(World& world, uint32_t expected_crc);
 
 /// Reads 0x2122 (device state bits, canopen/board_protocol.hpp DeviceStateBit).
 uint16_t ReadDeviceState(World& world);

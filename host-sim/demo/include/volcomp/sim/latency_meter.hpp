@@ -1,14 +1,8 @@
-// Latency from an input step to the output step that carries it, measured from the outside.
-//
-// Input side: every step the CNC emits, with its exact time and the input count it produces (n).
-// Output side: every pulse the drive receives, with its time; after a pulse the drive position
-// minus the board's whole-step correction of that tick is the input count the output has "served".
-// An input step is carried when the served count reaches its n (in its direction); its latency is
-// that pulse's time minus the input step's time. A step absorbed by a simultaneous correction step
-// (no pulse needed) is carried at the start of the tick that absorbed it.
-//
-// The distribution is kept as a histogram in 1/100 tick bins up to 10 ticks (plus overflow);
-// the maximum is exact. Input steps not carried within 1000 ticks are counted as unmatched.
+// Latency from an input step to the output pulse that carries it, measured from the outside: the
+// served input count after each output pulse is drive position minus the board's whole-step
+// correction (docs/simulator.md "Latency"). Kept as a histogram in 1/100 tick bins up to 10 ticks
+// (percentiles are a bin's upper edge) and the exact maximum; steps not carried within 1000 ticks
+// are unmatched. Times ns. Thread-safety: none (the simulation's thread).
 #pragma once
 
 #include <array>

@@ -1,25 +1,21 @@
-// Measurement sessions on the simulated installation: run a test program on the CNC (through the
-// board), read the instrument at every stop, and evaluate with tools/metrology.
-//
-//   MeasureGostAxis    GOST 27843-88 positioning test of one axis (laser interferometer)
-//   MeasureDiagonals   ISO 230-6 body diagonals (interferometer along each diagonal)
-//   MeasurePointSet    volumetric error at points (laser tracker registered at the first point)
-//   MeasureParametric  the six error motions of one axis through the reference point (6-DOF laser)
-// Lengths mm, deviations µm, angles µrad. Every session fails (kNotReady) when the CNC does not
-// finish the program or the dwell count does not match the program's stops. The evaluations require
-// 5 approaches per target and direction (GOST 27843 §2.10, ISO 230-6 §5.3) unless the cycle runs
-// fewer (reduced test runs), then that many (at least 2).
+// Measurement sessions on the simulated installation: run a test program on the CNC through the
+// board, read the instrument at every stop, evaluate with tools/metrology (GOST 27843 and ISO
+// 230-2 per axis, ISO 230-6 diagonals, tracker point sets, the six error motions of an axis).
+// Lengths mm, deviations µm, angles µrad. A session fails with kNotReady when the CNC does not
+// finish the program or the dwells do not match its stops, and with the reason when a program
+// cannot be planned or the evaluation refuses the readings. The evaluations require 5 approaches
+// per target and direction (GOST 27843 §2.10, ISO 230-6 §5.3), or the cycle's runs if fewer (>= 2).
 #pragma once
 
 #include <string>
 #include <vector>
 
+#include "volcomp/hosted/expected.hpp"
 #include "volcomp/metrology/diagonal.hpp"
 #include "volcomp/metrology/positioning_data.hpp"
 #include "volcomp/metrology/positioning_eval.hpp"
 #include "volcomp/model/vec3.hpp"
 #include "volcomp/sim/instruments.hpp"
-#include "volcomp/sim/sim_status.hpp"
 #include "volcomp/sim/test_programs.hpp"
 #include "volcomp/sim/world.hpp"
 
@@ -34,7 +30,7 @@ struct StopState {
 };
 
 /// Parses and runs `program` on `world`; the state at the end of every dwell.
-SimResult<std::vector<StopState>> RunTestProgram(World& world, const TestProgram& program);
+Expected<std::vector<StopState>> RunTestProgram(World& world, const TestProgram& program);
 
 struct GostAxisResult {
   int axis = 0;
@@ -50,10 +46,10 @@ struct GostPlan {
   CycleOptions cycle;
 };
 
-SimResult<GostAxisResult> MeasureGostAxis(World& world,
-                                          LaserInterferometer& laser,
-                                          int axis,
-                                          const GostPlan& plan);
+Expected<GostAxisResult> MeasureGostAxis(World& world,
+                                         LaserInterferometer& laser,
+                                         int axis,
+                                         const GostPlan& plan);
 
 struct DiagonalSetResult {
   std::vector<TestProgram> programs;
@@ -61,11 +57,11 @@ struct DiagonalSetResult {
   metrology::DiagonalEvaluation evaluation;
 };
 
-SimResult<DiagonalSetResult> MeasureDiagonals(World& world,
-                                              LaserInterferometer& laser,
-                                              const std::vector<BodyDiagonal>& diagonals,
-                                              int targets_per_diagonal,
-                                              const CycleOptions& cycle);
+Expected<DiagonalSetResult> MeasureDiagonals(World& world,
+                                             LaserInterferometer& laser,
+                                             const std::vector<BodyDiagonal>& diagonals,
+                                             int targets_per_diagonal,
+                                             const CycleOptions& cycle);
 
 struct PointSetResult {
   TestProgram program;
@@ -78,11 +74,11 @@ struct PointSetResult {
 
 /// `approach_mm` > 0: every point approached from that far below on every axis
 /// (PointSetProgram).
-SimResult<PointSetResult> MeasurePointSet(World& world,
-                                          LaserTracker& tracker,
-                                          const std::vector<Point3>& points_mm,
-                                          double dwell_s,
-                                          double approach_mm = 0);
+Expected<PointSetResult> MeasurePointSet(World& world,
+                                         LaserTracker& tracker,
+                                         const std::vector<Point3>& points_mm,
+                                         double dwell_s,
+                                         double approach_mm = 0);
 
 struct ParametricResult {
   int axis = 0;
@@ -92,12 +88,12 @@ struct ParametricResult {
 };
 
 /// `positions_mm` must contain the reference point's coordinate of `axis` (else kInvalidArgument).
-SimResult<ParametricResult> MeasureParametric(World& world,
-                                              LaserInterferometer& laser,
-                                              int axis,
-                                              const Point3& reference_mm,
-                                              const std::vector<double>& positions_mm,
-                                              const CycleOptions& cycle);
+Expected<ParametricResult> MeasureParametric(World& world,
+                                             LaserInterferometer& laser,
+                                             int axis,
+                                             const Point3& reference_mm,
+                                             const std::vector<double>& positions_mm,
+                                             const CycleOptions& cycle);
 
 /// Long-layout positioning CSV (target_mm,direction,run,deviation_um) of `volcomp evaluate
 /// positioning`.

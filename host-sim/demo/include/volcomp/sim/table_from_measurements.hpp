@@ -1,16 +1,10 @@
 // Compensation tables from the demo's measurements, built with the entry points of the PC tool's
-// builders (tools/model grid_source.hpp, grid_section.hpp, axis_section.hpp), never a copy:
-//   * 21-parameter: the measured six error motions of X, Y and Z (zeroed at the reference point,
-//     where the three measuring lines meet) become the axis tables of a model; the squareness is
-//     in the straightness slopes (the optics were aligned with the nominal axes), so the model's
-//     squareness entries are 0; the kinematic chain is the machine's (the integrator knows it).
-//     ModelGridSource + BuildGridSection invert it at every node (`volcomp build model`).
-//   * Tracker lattice: readings at every node of a lattice, TrackerLatticeGridSource +
-//     BuildGridSection (`volcomp build tracker --lattice`).
-//   * AXIS1D: the mean deviations x̄↑, x̄↓ per target of a bidirectional ISO 230-2 run, forward
-//     and reverse tables, BuildAxisSection (`volcomp build axis --reverse tables`).
-// AssembleTable puts a GRID3 and/or AXIS1D tables in one image (int16, fraction bits chosen to
-// fit), which the firmware's parser validates.
+// builders (tools/model), never a copy: the measured 21-parameter model (`volcomp build model`;
+// its squareness is in the straightness slopes), AXIS1D forward and reverse tables from ISO 230-2
+// runs (`build axis --reverse tables`), a tracker lattice through the table in force (`build
+// tracker --lattice --through`); AssembleTable puts them in one image the firmware's parser
+// validates. A builder's refusal comes back as a failure with the builder's reason.
+// Lengths mm, corrections µm.
 #pragma once
 
 #include <array>
@@ -20,28 +14,30 @@
 #include <string>
 #include <vector>
 
-#include "volcomp/model/axis_section.hpp"
-#include "volcomp/model/grid_section.hpp"
+#include "volcomp/builders/axis_section.hpp"
+#include "volcomp/builders/grid_section.hpp"
+#include "volcomp/hosted/expected.hpp"
 #include "volcomp/model/rigid_body.hpp"
 #include "volcomp/model/tracker_lattice.hpp"
 #include "volcomp/sim/measurements.hpp"
-#include "volcomp/sim/sim_status.hpp"
 
 namespace volcomp::sim {
 
-/// The measured 21-parameter model (physical formulation, exact rotations, tool offset 0).
-/// kInvalidArgument when the runs are not X, Y, Z in order.
-SimResult<model::Model> ModelFromParametric(const std::array<ParametricResult, 3>& runs,
-                                            const model::KinematicChain& chain);
+/// The measured 21-parameter model: the runs' six error motions (zero at the reference point,
+/// where the three lines meet) as its axis tables, squareness 0 (it is in the straightness
+/// slopes), `chain`; physical formulation, exact rotations, tool offset 0. kInvalidArgument when
+/// the runs are not X, Y, Z in order or the model is refused.
+Expected<model::Model> ModelFromParametric(const std::array<ParametricResult, 3>& runs,
+                                           const model::KinematicChain& chain);
 
 /// Image axes X, Y, Z (linear) of `step_mm` per step.
 std::vector<image::AxisDef> ImageAxes(const std::array<double, 3>& step_mm);
 
 /// A lattice over [lo, hi] (mm) with the given node spacing, for axes of `step_mm` per step.
-model::GridBuildOptions LatticeOptions(const std::array<double, 3>& lo_mm,
-                                       const std::array<double, 3>& hi_mm,
-                                       const std::array<double, 3>& spacing_mm,
-                                       const std::array<double, 3>& step_mm);
+builders::GridBuildOptions LatticeOptions(const std::array<double, 3>& lo_mm,
+                                          const std::array<double, 3>& hi_mm,
+                                          const std::array<double, 3>& spacing_mm,
+                                          const std::array<double, 3>& step_mm);
 
 /// The mean deviations per target of a bidirectional positioning run, as `build axis` reads them.
 model::PositioningData MeanDeviations(const metrology::PositioningResult& run);
@@ -50,8 +46,8 @@ model::PositioningData MeanDeviations(const metrology::PositioningResult& run);
 model::PositioningData PairMeans(const model::PositioningData& targets);
 
 struct TableBuildResult {
-  std::optional<model::GridSection> grid;
-  std::vector<model::AxisSection> axis_tables;  // one per axis, in axis order
+  std::optional<builders::GridSection> grid;
+  std::vector<builders::AxisSection> axis_tables;  // one per axis, in axis order
   std::vector<uint8_t> image;
   uint32_t crc32 = 0;
   uint8_t frac_bits = 0;
@@ -61,24 +57,41 @@ struct TableBuildResult {
 
 /// One image from a GRID3 section and/or AXIS1D sections (axis_tables[i] is axis i). `info` is
 /// added to the sections' own entries.
-TableBuildResult AssembleTable(const std::optional<model::GridSection>& grid,
-                               const std::vector<model::AxisSection>& axis_tables,
-                               const std::array<double, 3>& step_mm,
-                               uint32_t table_id,
-                               const std::map<std::string, std::string>& info);
+Expected<TableBuildResult> AssembleTable(const std::optional<builders::GridSection>& grid,
+                                         const std::vector<builders::AxisSection>& axis_tables,
+                                         const std::array<double, 3>& step_mm,
+                                         uint32_t table_id,
+                                         const std::map<std::string, std::string>& info);
 
-/// The GRID3 image of the measured model over [lo, hi] (mm) with the given node spacing (mm) for
-/// axes of `step_mm` per step. Throws what BuildGridSection throws.
-TableBuildResult BuildTableImage(const model::Model& measured,
-                                 const std::array<double, 3>& lo_mm,
-                                 const std::array<double, 3>& hi_mm,
-                                 const std::array<double, 3>& spacing_mm,
-                                 const std::array<double, 3>& step_mm,
-                                 uint32_t table_id);
+/// The GRID3 section of the measured model on `lattice` (LatticeOptions: extent, node spacing and
+/// step size; ModelGridSource, BuildGridSection).
+Expected<builders::GridSection> BuildModelGridSection(const model::Model& measured,
+                                                      const builders::GridBuildOptions& lattice);
+
+/// The GRID3 image of the measured model (BuildModelGridSection, then AssembleTable).
+Expected<TableBuildResult> BuildTableImage(const model::Model& measured,
+                                           const builders::GridBuildOptions& lattice,
+                                           uint32_t table_id);
+
+/// The AXIS1D section of `axis` (0..2) from mean deviations per target, with forward and reverse
+/// tables at `spacing_mm` (`volcomp build axis --reverse tables`, BuildAxisSection).
+Expected<builders::AxisSection> BuildAxisTable(const model::PositioningData& deviations,
+                                               int axis,
+                                               double spacing_mm,
+                                               const std::array<double, 3>& step_mm);
+
+/// The GRID3 section from tracker readings at the nodes of a lattice, measured through the table
+/// in force (`in_force`, its image), composed with that table's GRID3
+/// (`volcomp build tracker --lattice --through`: GridOfImage, TrackerLatticeThroughGridSource,
+/// BuildGridSection), on `grid` (LatticeOptions).
+Expected<builders::GridSection> BuildTrackerLatticeGridSection(
+    const model::TrackerLatticeData& readings,
+    const std::vector<uint8_t>& in_force,
+    const builders::GridBuildOptions& grid);
 
 /// The measured model as files `volcomp build model --model DIR/measured.conf` reads:
 /// measured.conf and measured_x.csv, measured_y.csv, measured_z.csv in `dir` (kIoError when a
 /// file cannot be written).
-SimStatus WriteModelFiles(const model::Model& measured, const std::string& dir);
+Outcome WriteModelFiles(const model::Model& measured, const std::string& dir);
 
 }  // namespace volcomp::sim

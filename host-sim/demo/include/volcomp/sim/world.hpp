@@ -1,24 +1,9 @@
 // The simulated installation: machine + CNC + the real firmware (BoardApp on the mock HAL) + the
-// drives (DriveModel checkers) + the CAN bus with the PC's endpoint, advanced together in virtual
-// time (ns).
-//
-// Each step of the simulation goes to the next event of the board (a control tick or a main-loop
-// pass) or of the bus (a frame ends). Before a board event at time t:
-//   * the CNC runs up to t; each step it emits goes into the board's input counter (the mock
-//     hardware counter), so the count latched by the tick at t is the number of steps whose time
-//     is <= t, and to the latency meter with its exact time;
-//   * the home switches are set from the drives' positions (machine model);
-//   * the bus runs up to t (frames for the board are in its receive queue for the poll at t).
-// After a tick the pulses it planned (MockStepIo::last_plans) are expanded to times for the
-// latency meter, and the drive positions are checked against the board's own output position.
-//
-// Step audit ("zero lost steps"): at every rest point (CheckAtRest, called at each dwell end) every
-// drive's position must equal the CNC's emitted steps plus the board's whole-step correction, with
-// nothing owed; every tick the drive's count must equal what the board planned. Timing violations
-// are the DriveModels' count.
-//
-// The PC's SDO client (tools/canopen, the PC tool's protocol code) talks to the board through
-// SdoLink(): a blocking FrameLink whose receive() advances the whole simulation.
+// drives (DriveModel checkers) + the CAN bus with the PC's endpoint, advanced together from event
+// to event in virtual time (ns), with the step audit (zero lost steps, drive = board output every
+// tick) and the latency meter (docs/simulator.md "Virtual time", "Drives and the step audit").
+// The PC's SDO client (tools/canopen) reaches the board through SdoLink(), a blocking FrameLink
+// whose receive() advances the whole simulation. Thread-safety: none (one thread).
 #pragma once
 
 #include <array>
@@ -26,7 +11,8 @@
 #include <memory>
 
 #include "volcomp/canopen_client/sdo_runner.hpp"
-#include "volcomp/firmware/settings.hpp"
+#include "volcomp/config/board_settings.hpp"
+#include "volcomp/hosted/expected.hpp"
 #include "volcomp/model/vec3.hpp"
 #include "volcomp/sim/cnc.hpp"
 #include "volcomp/sim/latency_meter.hpp"
@@ -38,8 +24,8 @@ namespace volcomp::sim {
 
 struct WorldOptions {
   MachineOptions machine;
-  CncConfig cnc;  // step_mm and home_position_steps are taken from the machine and the board
-  firmware::BoardSettings board;  // axes X, Y, Z; home positions are set to the switch positions
+  CncConfig cnc;        // step_mm and home_position_steps are taken from the machine and the board
+  BoardSettings board;  // axes X, Y, Z; home positions are set to the switch positions
   uint32_t can_bitrate = 1000000;
   uint64_t poll_period_ns = 100000;
 };
@@ -57,13 +43,16 @@ struct StepAudit {
   uint64_t ticks = 0;
 };
 
-class World : private StepSink {
+class World final : private StepSink {
  public:
-  explicit World(const WorldOptions& options);
+  /// The installation; fails when the machine refuses its options (Machine::Create).
+  static Expected<std::unique_ptr<World>> Create(const WorldOptions& options);
   ~World();
+  World(const World&) = delete;
+  World& operator=(const World&) = delete;
 
   /// Starts the firmware. Fails if the board rejects its configuration.
-  Status Start();
+  Outcome Start();
 
   uint64_t now_ns() const { return now_ns_; }
   uint64_t tick_ns() const { return tick_ns_; }
@@ -95,6 +84,7 @@ class World : private StepSink {
   StepAudit Audit() const;
 
  private:
+  World(const WorldOptions& options, Machine machine);
   void OnStep(int axis, uint64_t t_ns, int dir) override;
   void StepOnce(uint64_t limit_ns);
   void AfterTick(uint64_t t_ns);
@@ -116,6 +106,6 @@ class World : private StepSink {
 
 /// Board settings for a machine: three linear axes at the machine's step lengths, default
 /// drive timing and limits, home position = the home switch position (in steps).
-firmware::BoardSettings BoardSettingsFor(const Machine& machine);
+BoardSettings BoardSettingsFor(const Machine& machine);
 
 }  // namespace volcomp::sim

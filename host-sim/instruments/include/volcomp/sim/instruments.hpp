@@ -1,24 +1,9 @@
-// Virtual measuring instruments. They read the actual tool point from the machine model at the
-// drives' (output) positions, add their own errors, and quantise to their resolution.
-//
-//   LaserInterferometer (Renishaw XL-80 style), one setup at a time:
-//     * linear: displacement of the tool point along the beam since the last Zero() (µm);
-//     * straightness: the two components across the beam since Zero() (µm);
-//     * angular: rotation of the tool side since Zero() (µrad) about x, y, z, taken as angular
-//       optics and an electronic level do: from the displacement of a second point of the tool
-//       side at `angular_baseline_mm` from the tool point.
-//     The straightness and angular optics are aligned with the machine's nominal axes (no
-//     straightness slope removed; a real straightness run fits the slope out and measures
-//     squareness separately, see docs/simulator.md). The linear beam may be misaligned by
-//     `misalignment_mrad` from the line of motion: it then reads cos θ times the displacement
-//     along the line (the cosine error, -L·θ²/2).
-//   LaserTracker: the tool point's 3-D position (mm) in the machine frame, relative to the point
-//     where it was last zeroed (the tracker is registered at the machine's reference point).
-//
-// Errors per reading (each channel independently, Gaussian, from one seeded generator):
-//   noise_*          sigma of a single sample; a reading averages `samples` of them;
-//   repeatability_*  sigma of the reading-to-reading scatter that averaging does not remove
-//                    (set-up, air, thermal); then rounded to `resolution_*`.
+// Virtual measuring instruments: a laser interferometer (linear, straightness and angular
+// optics, one setup at a time) and a laser tracker. They read the actual tool point from the
+// machine at the drives' positions since their last Zero(), add their errors per channel (noise
+// averaged over samples, repeatability, then rounding to the resolution; Gaussian, from one seeded
+// generator) and a misaligned beam's cosine error (docs/simulator.md "Instruments").
+// Lengths mm, readings µm and µrad. Thread-safety: none (the simulation's thread).
 #pragma once
 
 #include <cstdint>
@@ -42,8 +27,8 @@ double ApplyChannelErrors(const ChannelErrors& e, double true_value, Random& rng
 struct InterferometerOptions {
   ChannelErrors linear_um = {0.05, 16, 0.02, 0.001};   // XL-80: 1 nm resolution
   ChannelErrors angular_urad = {0.2, 16, 0.05, 0.01};  // angular optics / level
-  double angular_baseline_mm = 100;
-  double misalignment_mrad = 0;  // angle θ between the linear beam and the line of motion
+  double angular_baseline_mm = 100;  // to the second point of the tool side angular optics read
+  double misalignment_mrad = 0;      // angle θ between the linear beam and the line of motion
 };
 
 struct TrackerOptions {
@@ -66,7 +51,9 @@ class LaserInterferometer {
   /// along it: the positioning deviation of this approach (µm).
   double Deviation_um(const model::Vec3& q_mm, const model::Vec3& cmd_mm, const model::Vec3& beam);
   /// All six error motions since the datum (linear: deviation of each component, µm) of a run
-  /// along `moving_axis`, whose component the linear beam measures (with its cosine error).
+  /// along `moving_axis`, whose component the linear beam measures (with its cosine error). The
+  /// straightness and angular optics are aligned with the machine's nominal axes: no slope is
+  /// removed (the straightness keeps the squareness).
   SixDofReading SixDof(const model::Vec3& q_mm, const model::Vec3& cmd_mm, int moving_axis);
   /// The same without instrument errors (for comparisons in reports and tests).
   SixDofReading SixDofTrue(const model::Vec3& q_mm, const model::Vec3& cmd_mm);

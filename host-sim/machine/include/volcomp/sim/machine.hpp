@@ -1,27 +1,9 @@
-// The simulated machine tool: a rigid-body machine with the 21 error functions of a model file of
-// the table builders (the STAN S500 by default), driven by the drives' output step counts, plus
-// optionally the error sources of a worn machine (worn_profile.hpp). The model file is only its
-// data: the tool point comes from the machine's own kinematics (rigid_body_kinematics.hpp), which
-// shares no code with tools/model's formulas.
-//
-// Frames and units:
-//   * Drive position d (mm, the model's command frame) = power-up position + drive steps x step
-//     length. The drives count output steps from 0 at power-up (DriveModel), so the simulator never
-//     needs to know what the CNC or the board think the position is.
-//   * Axis (carriage) position q = d for a perfect machine; the worn profile adds the lost motion
-//     offset, the screw's short-period error, the settling scatter and the X screw's thermal
-//     growth. The 21 error functions are taken at q.
-//   * Tool point (mm) = the kinematics' tool point minus the nominal tool offset (i.e. q when the
-//     machine has no errors), plus the cross-axis sag and the spindle's thermal growth. The
-//     model's `formulation` and `order` describe how a builder computes; the machine is always
-//     the exact rigid body (a dissertation-formulation model is refused).
-//   * Each axis has a home switch at its negative end, worked by the carriage (lost motion
-//     included): closed while q <= home_switch_mm.
-//   * Time: the world reports every tick's drive counts and time (OnDriveTick); the worn sources
-//     need them (lost motion follows every drive step, scatter is drawn when an axis comes to
-//     rest, thermal growth runs with time).
-//
-// Thread-safety: none; call from the simulation's thread.
+// The simulated machine tool: the 21 error functions of a model file of the table builders (the
+// STAN S500 by default) on the machine's own rigid-body kinematics (rigid_body_kinematics.hpp, no
+// tools/model formulas), driven by the drives' step counts, plus the worn profile's error sources
+// (worn_profile.hpp; docs/simulator.md "The machine", §7). Drive position (mm) = power-up position
+// + drive steps x step length; axis positions add the worn sources; home switches close below the
+// travel. Lengths mm, errors µm. Thread-safety: none (the simulation's thread).
 #pragma once
 
 #include <array>
@@ -29,6 +11,7 @@
 #include <cstdint>
 #include <string>
 
+#include "volcomp/hosted/expected.hpp"
 #include "volcomp/model/rigid_body.hpp"
 #include "volcomp/model/vec3.hpp"
 #include "volcomp/sim/error_sources.hpp"
@@ -48,18 +31,18 @@ struct MachineOptions {
   WornMachineProfile wear;  // all off: the rigid-body machine alone
 };
 
-/// "s500" (the built-in STAN S500 model) or a model config file (tools/model io.hpp format).
-/// Throws std::runtime_error / tools::InputError naming the problem.
-model::Model LoadMachineModel(const std::string& spec);
+/// "s500" (the built-in STAN S500 model) or a model config file (tools/datasets model_config.hpp
+/// format); the failure names the file and the problem.
+Expected<model::Model> LoadMachineModel(const std::string& spec);
 
 /// The error functions, squareness, tool offset and chain of a model, as the machine's data.
 MachineGeometry GeometryOf(const model::Model& model);
 
 class Machine {
  public:
-  /// Throws std::invalid_argument naming a bad option (step length, power-up below the switch,
-  /// a model in the dissertation's formulation, a model ValidateModel refuses).
-  explicit Machine(MachineOptions options);
+  /// The machine, or kInvalidArgument naming a bad option (step length, power-up below the
+  /// switch, a model in the dissertation's formulation, a model ValidateModel refuses).
+  static Expected<Machine> Create(MachineOptions options);
 
   const model::Model& model() const { return options_.model; }
   const WornMachineProfile& wear() const { return options_.wear; }
@@ -93,6 +76,8 @@ class Machine {
   bool HomeSwitchClosed(int axis, int64_t drive_steps) const;
 
  private:
+  explicit Machine(MachineOptions options);  // options checked by Create
+
   MachineOptions options_;
   RigidBodyKinematics kinematics_;
   std::array<int64_t, 3> switch_steps_ = {0, 0, 0};

@@ -94,9 +94,9 @@ constexpr T TakeValue(Result<T>& r) {
 
 /// Returns early from the enclosing function when `expr` (a Status, Result<T> or hosted Expected)
 /// is not ok, with its error.
-#define VOLCOMP_TRY(expr)                                                  \
-  do {                                                                     \
-    auto&& volcomp_try_ = (expr);                                          \
+#define VOLCOMP_TRY(expr)                                                         \
+  do {                                                                            \
+    auto&& volcomp_try_ = (expr);                                                 \
     if (!volcomp_try_.ok()) return ::volcomp::internal::TryFailure(volcomp_try_); \
   } while (0)
 
@@ -104,7 +104,7 @@ constexpr T TakeValue(Result<T>& r) {
 /// PW_TRY_ASSIGN: `VOLCOMP_TRY_ASSIGN(const auto view, ParseImage(data, size));`.
 #define VOLCOMP_TRY_ASSIGN(lhs, expr) \
   VOLCOMP_TRY_ASSIGN_IMPL(VOLCOMP_CONCAT(volcomp_try_assign_, __LINE__), lhs, expr)
-#define VOLCOMP_TRY_ASSIGN_IMPL(tmp, lhs, expr)                     \
-  auto tmp = (expr);                                                \
-  if (!tmp.ok()) return ::volcomp::internal::TryFailure(tmp);       \
+#define VOLCOMP_TRY_ASSIGN_IMPL(tmp, lhs, expr)               \
+  auto tmp = (expr);                                          \
+  if (!tmp.ok()) return ::volcomp::internal::TryFailure(tmp); \
   lhs = ::volcomp::internal::TakeValue(tmp)

@@ -26,8 +26,8 @@ inline bool operator==(const CanFrame& a, const CanFrame& b) {
 inline bool operator!=(const CanFrame& a, const CanFrame& b) { return !(a == b); }
 
 /// Bits a frame occupies on the wire: SOF .. EOF plus the 3-bit interframe space, with the stuff
-/// bits the bit-stuffing rule inserts for this exact frame (computed over SOF .. CRC, where stuffing
-/// applies). Used by the simulated bus to spend real frame time.
+/// bits the bit-stuffing rule inserts for this exact frame (computed over SOF .. CRC, where
+/// stuffing applies). Used by the simulated bus to spend real frame time.
 uint32_t CanFrameBits(const CanFrame& frame);
 
 }  // namespace volcomp

@@ -6,12 +6,12 @@
 
 #include <cstdint>
 
-#include "volcomp/config/board_config.hpp"
 #include "volcomp/base/byte_order.hpp"
+#include "volcomp/base/status.hpp"
 #include "volcomp/can/can_frame.hpp"
 #include "volcomp/canopen/node.hpp"
 #include "volcomp/canopen/sdo_abort.hpp"
-#include "volcomp/base/status.hpp"
+#include "volcomp/config/board_config.hpp"
 
 namespace volcomp::canopen {
 

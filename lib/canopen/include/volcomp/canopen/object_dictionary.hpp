@@ -93,6 +93,66 @@ constexpr uint32_t FixedSize(DataType t) {
 constexpr bool Readable(Access a) { return a != Access::kWo; }
 constexpr bool Writable(Access a) { return a == Access::kWo || a == Access::kRw; }
 
+/// The values a write to a numeric entry may carry: its type's range, narrowed by the entry's
+/// limits (the board refuses others; the EDS lists the limits as LowLimit/HighLimit).
+struct ValueRange {
+  int64_t low = 0;
+  int64_t high = 0;
+};
+constexpr ValueRange EntryRange(const ObjectEntry& e) {
+  ValueRange r;
+  switch (e.type) {
+    case DataType::kBoolean:
+      r = {0, 1};
+      break;
+    case DataType::kInteger8:
+      r = {-128, 127};
+      break;
+    case DataType::kInteger16:
+      r = {-32768, 32767};
+      break;
+    case DataType::kInteger32:
+      r = {-2147483648ll, 2147483647ll};
+      break;
+    case DataType::kUnsigned8:
+      r = {0, 0xFF};
+      break;
+    case DataType::kUnsigned16:
+      r = {0, 0xFFFF};
+      break;
+    case DataType::kUnsigned32:
+      r = {0, 0xFFFFFFFFll};
+      break;
+    default:
+      break;
+  }
+  if (e.limited) {
+    r.low = e.low_limit > r.low ? e.low_limit : r.low;
+    r.high = e.high_limit < r.high ? e.high_limit : r.high;
+  }
+  return r;
+}
+
+/// A numeric entry's value from its little-endian bytes as read or written (`raw`: up to 4 bytes,
+/// zero-filled): sign-extended for the signed types, masked to the size of the unsigned ones.
+constexpr int64_t EntryValue(const ObjectEntry& e, uint32_t raw) {
+  switch (e.type) {
+    case DataType::kInteger8:
+      return static_cast<int8_t>(raw);
+    case DataType::kInteger16:
+      return static_cast<int16_t>(raw);
+    case DataType::kInteger32:
+      return static_cast<int32_t>(raw);
+    case DataType::kBoolean:
+    case DataType::kUnsigned8:
+      return raw & 0xFFu;
+    case DataType::kUnsigned16:
+      return raw & 0xFFFFu;
+    default:
+      return raw;
+  }
+}
+
 /// The (index, sub) of axis `axis` (0-based) in a per-axis array whose axis-1 entry is `first`.
 inline const ObjectEntry& AxisEntry(ObjectId first, uint8_t axis) {
   return Entry(static_cast<ObjectId>(static_cast<uint16_t>(first) + axis));

@@ -6,8 +6,8 @@
 
 #include <cstdint>
 
-#include "volcomp/limiter/correction_limiter.hpp"
 #include "volcomp/base/status.hpp"
+#include "volcomp/limiter/correction_limiter.hpp"
 #include "volcomp/table/table_format.hpp"
 #include "volcomp/table/table_image.hpp"
 
@@ -43,6 +43,11 @@ struct AxisConfig {
   uint32_t max_correction_rate_steps_s = 2000;      // correction velocity limit
   uint32_t max_correction_accel_steps_s2 = 200000;  // correction acceleration limit
   int32_t home_position_steps = 0;  // machine position assigned at the home (reference) edge
+  // The AXIS1D direction follows the drive: it turns to reverse once the output (command +
+  // correction) has moved back more than this many steps from the furthest point reached forward,
+  // and back the same way. 1 step ignores the one-step dither of the output's rounding at rest; a
+  // reversal of h steps or less is not recognised, so it leaves at most h steps of lost motion.
+  uint16_t direction_hysteresis_steps = 1;
 };
 
 /// Control tick rates ValidateBoardConfig accepts.

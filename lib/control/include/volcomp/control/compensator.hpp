@@ -81,8 +81,9 @@ class Compensator {
   }
   /// Drops the active table at once; the applied correction ramps out to zero.
   void ClearTable();
-  /// Machine coordinates jumped (re-referencing): restart direction and wrap tracking from
-  /// `machine_pos_steps` without treating the jump as motion.
+  /// A new table or new coordinates (re-referencing): restarts the refresh cycle and the rotary
+  /// wrap tracking at `machine_pos_steps`. The drive-direction state carries on; an axis whose
+  /// coordinates jumped must have been announced with MoveAxis() (which shifts it with them).
   void Rebase(const int32_t* machine_pos_steps);
   /// Rebase() in place of the next RefreshTargets() (the run's bounded cost: a table switch or
   /// referencing takes that run's refresh slice, and the refresh cycle restarts one run later),
@@ -90,8 +91,13 @@ class Compensator {
   /// MoveAxis(), so that the run senses its motion, not the jump.
   void RequestRebase() { rebase_pending_ = true; }
   /// Axis `a`'s machine coordinates jump to `machine_pos_steps` (referencing): the next
-  /// SenseAxis() measures motion from there.
-  void MoveAxis(uint8_t a, int32_t machine_pos_steps) { last_pos_[a] = machine_pos_steps; }
+  /// SenseAxis() measures motion from there, and the drive-direction state moves with them.
+  void MoveAxis(uint8_t a, int32_t machine_pos_steps) {
+    const uint32_t jump =
+        static_cast<uint32_t>(machine_pos_steps) - static_cast<uint32_t>(last_pos_[a]);
+    last_pos_[a] = machine_pos_steps;
+    extreme_[a] = static_cast<int32_t>(static_cast<uint32_t>(extreme_[a]) + jump);
+  }
 
   void SetEnabled(bool on) {
     enabled_ = on;
@@ -125,11 +131,23 @@ class Compensator {
   /// for every axis, in this order, once per run.
   /// Direction and rotary wrap tracking of axis `a` at its new position.
   void SenseAxis(uint8_t a, int32_t machine_pos_steps) {
-    const int32_t delta = static_cast<int32_t>(static_cast<uint32_t>(machine_pos_steps) -
-                                               static_cast<uint32_t>(last_pos_[a]));
+    const uint32_t pos = static_cast<uint32_t>(machine_pos_steps);
+    const int32_t delta = static_cast<int32_t>(pos - static_cast<uint32_t>(last_pos_[a]));
     last_pos_[a] = machine_pos_steps;
-    if (delta != 0) reverse_[a] = delta < 0;
     if ((wrap_mask_ >> a) & 1u) wrap_[a].Update(delta);
+    // The drive's direction: command + the last refresh's GRID3 part against the furthest point
+    // reached in the current direction; moving back by more than the hysteresis turns it. The
+    // AXIS1D part is left out: it follows the axis's own command with a slope far below one step
+    // per step, so it never turns the drive, and its direction tables' difference must not turn
+    // it back (docs/control-path.md). Selects, not branches.
+    const uint32_t out = pos + static_cast<uint32_t>(grid_part_steps_[a]);
+    const uint32_t dir = direction_[a];  // 0 forward, all ones reverse
+    // Distance ahead of the extreme in the current direction (negated by the mask when reverse).
+    const int32_t ahead =
+        static_cast<int32_t>(((out - static_cast<uint32_t>(extreme_[a])) ^ dir) - dir);
+    const uint32_t turn = static_cast<uint32_t>(ahead + hysteresis_[a]) >> 31;  // 1: turned
+    extreme_[a] = (ahead > 0) | (turn != 0) ? static_cast<int32_t>(out) : extreme_[a];
+    direction_[a] = dir ^ (0u - turn);
   }
   /// One phase of the table evaluation (or zero targets when not engaged), or the Rebase() that
   /// RequestRebase() asked for.
@@ -160,8 +178,10 @@ class Compensator {
   /// target: a ramp, or a table steeper than the rate allows at the current speed); wraps at
   /// 2^32. Sampled at the refresh rather than counted every run (a cheaper run).
   uint32_t rate_limited_refreshes(int axis) const { return rate_limited_refreshes_[axis]; }
-  /// True while the axis last moved in the negative direction.
-  bool reverse(int axis) const { return reverse_[axis]; }
+  /// True while the axis's drive moves in the negative direction (command plus the table's GRID3
+  /// correction went back by more than its direction hysteresis): the AXIS1D reverse table
+  /// applies.
+  bool reverse(int axis) const { return direction_[axis] != 0; }
   uint8_t axis_count() const { return axis_count_; }
 
   /// Runs per target refresh: the grid's three parts, then one per axis.
@@ -189,7 +209,11 @@ class Compensator {
   WrapTracker wrap_[table::kMaxAxes];
   uint8_t wrap_mask_ = 0;  // the active table's wrap_mask, 0 without a table
   int32_t last_pos_[table::kMaxAxes] = {};
-  bool reverse_[table::kMaxAxes] = {};
+  // The last refresh's GRID3 part of the axis's target in whole steps (its direction sensing).
+  int32_t grid_part_steps_[table::kMaxAxes] = {};
+  int32_t extreme_[table::kMaxAxes] = {};  // furthest such position in the current direction
+  int32_t hysteresis_[table::kMaxAxes] = {};
+  uint32_t direction_[table::kMaxAxes] = {};  // 0: forward, all ones: reverse (the AXIS1D table)
   GridLookup::Partial grid_partial_;
   PreparedTable own_;                   // SetTable()'s copy
   const PreparedTable* table_ = &own_;  // the active table (own_ or the caller's)

@@ -20,7 +20,8 @@ namespace volcomp {
 class ControlTick {
  public:
   /// Validates and applies `config`; resets positions to zero, unreferenced, no table. The input
-  /// counters' baseline is zero until LatchCounters() says otherwise.
+  /// counters' baseline is zero until LatchCounters() says otherwise. Keeps what the data path
+  /// needs, not `config` itself: the caller owns the configuration in force.
   Status Configure(const BoardConfig& config);
 
   /// Takes the current raw counter values as the baseline (commanded position unchanged), e.g. at
@@ -41,7 +42,7 @@ class ControlTick {
   /// sensing, one target refresh slice (or a requested rebase), the limiters; publishes the
   /// corrections the next RunSteps() apply.
   inline void Compensate();
-  /// Ticks per compensation run (CompensationDivider(config().tick_hz)).
+  /// Ticks per compensation run (CompensationDivider() of the configured tick rate).
   uint32_t compensation_divider() const { return divider_; }
 
   /// Declares axis `a` referenced now: its machine position becomes the configured home position.
@@ -69,7 +70,6 @@ class ControlTick {
   Compensator& compensator() { return compensator_; }
   const Compensator& compensator() const { return compensator_; }
   uint8_t axis_count() const { return axis_count_; }
-  const BoardConfig& config() const { return config_; }
 
   int32_t commanded(uint8_t a) const { return commanded_[a].load(std::memory_order_relaxed); }
   /// Commanded position in machine coordinates (commanded + reference offset).
@@ -93,7 +93,6 @@ class ControlTick {
   uint32_t idle_ticks() const { return idle_ticks_; }
 
  private:
-  BoardConfig config_;
   uint8_t axis_count_ = 0;
   Compensator compensator_;
   uint32_t last_counter_[table::kMaxAxes] = {};
@@ -109,6 +108,7 @@ class ControlTick {
   uint32_t countdown_ = 1;  // ticks until the next compensation run is due
   uint64_t ticks_ = 0;
   uint32_t idle_ticks_ = 0xFFFFFFFFu;
+  int32_t home_[table::kMaxAxes] = {};  // machine position at the reference (home_position_steps)
 };
 
 __attribute__((always_inline)) inline bool ControlTick::RunSteps(const uint32_t* input_counters) {

@@ -54,6 +54,19 @@ enum class AxisKind : uint8_t { kLinear = 0, kRotary = 1 };
 
 /// Size in bytes of one element.
 constexpr uint32_t ElementSize(ElementType t) { return t == ElementType::kInt16 ? 2u : 4u; }
+/// The element type's name in docs/table-image-format.md and the tools ("int16", "int32",
+/// "float32"; "?" for a value outside the enum).
+constexpr const char* ElementTypeName(ElementType t) {
+  switch (t) {
+    case ElementType::kInt16:
+      return "int16";
+    case ElementType::kInt32:
+      return "int32";
+    case ElementType::kFloat32:
+      return "float32";
+  }
+  return "?";
+}
 
 inline constexpr uint32_t kMaxAxes = 6;
 /// Axis names a table may use (ISO 841 letters).

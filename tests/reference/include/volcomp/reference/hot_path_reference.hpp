@@ -13,9 +13,9 @@
 
 #include <cstdint>
 
+#include "volcomp/base/status.hpp"
 #include "volcomp/config/board_config.hpp"
 #include "volcomp/limiter/correction_limiter.hpp"
-#include "volcomp/base/status.hpp"
 #include "volcomp/output/step_generator.hpp"
 
 namespace volcomp {

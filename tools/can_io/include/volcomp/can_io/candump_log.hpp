@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "volcomp/can/can_frame.hpp"
+#include "volcomp/hosted/expected.hpp"
 
 namespace volcomp::can_io {
 
@@ -31,21 +32,21 @@ struct CandumpRecord {
 
 /// One log line without newline.
 std::string FormatCandumpLine(const CandumpRecord& record);
-/// Parses one line (trailing '\r'/'\n' tolerated). nullopt for a malformed line, with the reason
-/// in *error when error is not null.
-std::optional<CandumpRecord> ParseCandumpLine(const std::string& line, std::string* error);
-/// Reads a whole log; blank lines are skipped. Throws std::runtime_error("line N: why") on the
-/// first malformed line.
-std::vector<CandumpRecord> ReadCandumpLog(std::istream& in);
+/// Parses one line (trailing '\r'/'\n' tolerated); a malformed line is a failure
+/// (kInputInvalid) saying why.
+Expected<CandumpRecord> ParseCandumpLine(const std::string& line);
+/// Reads a whole log; blank lines are skipped. The first malformed line is a failure
+/// (kInputInvalid, "line N: why").
+Expected<std::vector<CandumpRecord>> ReadCandumpLog(std::istream& in);
 
 class CandumpLogWriter {
  public:
   /// Writes to `out` (not owned; must outlive the writer). `iface` is the interface column.
   CandumpLogWriter(std::ostream& out, std::string iface, bool direction_markers = true);
-  /// Creates/truncates `path`; throws std::runtime_error when it cannot be opened.
-  static std::unique_ptr<CandumpLogWriter> OpenFile(const std::string& path,
-                                                    std::string iface,
-                                                    bool direction_markers = true);
+  /// Creates/truncates `path` (kIoError "cannot write CAN log 'PATH'" when it cannot).
+  static Expected<std::unique_ptr<CandumpLogWriter>> OpenFile(const std::string& path,
+                                                              std::string iface,
+                                                              bool direction_markers = true);
 
   /// Appends one line stamped with the wall-clock time and flushes it (a log survives a crash).
   void Write(const CanFrame& frame, Direction direction);

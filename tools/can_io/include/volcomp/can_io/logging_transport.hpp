@@ -1,6 +1,6 @@
 // LoggingTransport: a CanTransport decorator that records every frame sent (" T") and received
 // (" R") in candump -L format (the PC tool's --log FILE). Frames are logged after a successful
-// Send() and when Receive() returns them.
+// Send() and when Receive() returns them; failures are the wrapped transport's.
 //
 // Thread-safety: as the wrapped transport (one thread at a time).
 #pragma once
@@ -15,10 +15,11 @@ namespace volcomp::can_io {
 
 class LoggingTransport : public CanTransport {
  public:
+  /// Both must be set.
   LoggingTransport(std::unique_ptr<CanTransport> inner, std::unique_ptr<CandumpLogWriter> log);
 
-  void Send(const CanFrame& frame) override;
-  std::optional<CanFrame> Receive(std::chrono::microseconds timeout) override;
+  Outcome Send(const CanFrame& frame) override;
+  Expected<std::optional<CanFrame>> Receive(std::chrono::microseconds timeout) override;
   std::string description() const override;
   std::vector<BusEvent> TakeEvents() override { return inner_->TakeEvents(); }
 
@@ -32,10 +33,11 @@ class LoggingTransport : public CanTransport {
 
 /// The interface column to write for a spec: the interface for socketcan:IFACE, "slcan0" for the
 /// SLCAN forms (what the kernel's slcan driver would call it).
-std::string LogInterfaceName(const std::string& spec);
+Expected<std::string> LogInterfaceName(const std::string& spec);
 
-/// OpenTransport(spec), wrapped in a LoggingTransport writing to `log_path` when it is not empty.
-std::unique_ptr<CanTransport> OpenTransportWithLog(const std::string& spec,
-                                                   const std::string& log_path);
+/// OpenTransport(spec), wrapped in a LoggingTransport writing to `log_path` when it is not empty
+/// (kIoError when the log cannot be written).
+Expected<std::unique_ptr<CanTransport>> OpenTransportWithLog(const std::string& spec,
+                                                             const std::string& log_path);
 
 }  // namespace volcomp::can_io

@@ -1,24 +1,16 @@
-// SlcanServer: the device side of SLCAN, for the simulator. It makes the simulated bus look like
-// an SLCAN adapter to clients (the PC tool's slcan:/slcan-tcp: transports, python-can's slcan
-// interface, the kernel's slcand via a pty):
-//   * on a pty it creates with openpty() (raw mode; it keeps the slave open so clients may come
-//     and go; endpoint() is the slave path, e.g. /dev/pts/7; optional symlink to it), or
-//   * on a TCP listening socket (TCP_NODELAY; one client at a time; after a disconnect the next
-//     pending connection is accepted and the channel starts closed again).
-//
-// Protocol (details in docs/can-transports.md): O/L open (a second O is acknowledged: python-can
-// sends two), C closes, S0-S9 and sxxyy are acknowledged and recorded, F answers F00 (bit 3 =
-// frames were dropped since the last F), V/v/N answer with the configured strings, Z0/Z1 switch
-// 4-digit millisecond timestamps on received frames, X1/M/m/U are acknowledged, X0/P/A and unknown
-// or malformed lines get BEL. t/T/r/R while open (not listen-only) hand the frame to the owner and
-// answer z/Z (Lawicel auto-poll; or "\r" with `cr_tx_ack`); while closed they get BEL.
+// SlcanServer: the device side of SLCAN, for the simulator: the simulated bus looks like an SLCAN
+// adapter to clients (the PC tool's slcan:/slcan-tcp: transports, python-can, slcand via a pty),
+// on a pty it creates with openpty() (the slave kept open so clients may come and go) or on a TCP
+// socket (one client at a time; the next starts with the channel closed). Its answers to each
+// command: docs/can-transports.md "SLCAN dialect".
 //
 // The owner drives it from its own loop: Poll(timeout) does the I/O, TakeReceived() returns the
 // frames clients sent, Send() queues a frame to the client (dropped and counted while the channel
 // is closed or when the client does not read: the backlog is bounded).
 //
-// Errors: the factories throw std::runtime_error; Poll() never throws for client-side problems
-// (a broken client is disconnected). Thread-safety: one thread drives a server.
+// Errors: the factories and Poll() return kIoError failures for the server's own resources (pty,
+// socket, poll); client-side problems are no failure (a broken client is disconnected).
+// Thread-safety: one thread drives a server.
 #pragma once
 
 #include <chrono>
@@ -28,6 +20,7 @@
 #include <vector>
 
 #include "volcomp/can/can_frame.hpp"
+#include "volcomp/hosted/expected.hpp"
 
 namespace volcomp::can_io {
 
@@ -50,12 +43,12 @@ struct SlcanServerStats {
 
 class SlcanServer {
  public:
-  /// A pty server. Throws when openpty() fails or the symlink cannot be created.
-  static std::unique_ptr<SlcanServer> CreatePty(const SlcanServerOptions& options = {});
+  /// A pty server; fails when openpty() fails or the symlink cannot be created.
+  static Expected<std::unique_ptr<SlcanServer>> CreatePty(const SlcanServerOptions& options = {});
   /// A TCP server on address:port (port 0 = any free port; read it back with port()).
-  static std::unique_ptr<SlcanServer> CreateTcp(const std::string& address,
-                                                uint16_t port,
-                                                const SlcanServerOptions& options = {});
+  static Expected<std::unique_ptr<SlcanServer>> CreateTcp(const std::string& address,
+                                                          uint16_t port,
+                                                          const SlcanServerOptions& options = {});
   ~SlcanServer();
   SlcanServer(const SlcanServer&) = delete;
   SlcanServer& operator=(const SlcanServer&) = delete;
@@ -67,8 +60,8 @@ class SlcanServer {
   uint16_t port() const;
 
   /// Waits up to `timeout` for I/O and handles everything pending. Returns true when frames
-  /// arrived from the client (TakeReceived() has them).
-  bool Poll(std::chrono::microseconds timeout);
+  /// arrived from the client (TakeReceived() has them); fails only when poll() itself does.
+  Expected<bool> Poll(std::chrono::microseconds timeout);
   std::vector<CanFrame> TakeReceived();
   /// Queues a frame for the client.
   void Send(const CanFrame& frame);

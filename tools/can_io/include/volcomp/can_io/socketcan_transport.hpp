@@ -1,9 +1,10 @@
 // SocketCAN client transport (Linux): a CanTransport over hal::socketcan::SocketCanSocket.
 //
 // Send() paces on ENOBUFS (the interface queue is full; CAN netdevs default to txqueuelen 10):
-// it backs off 100 µs .. 2 ms and retries until `send_timeout`, then throws with a hint to raise
+// it backs off 100 µs .. 2 ms and retries until `send_timeout`, then fails with a hint to raise
 // txqueuelen. Error frames become BusEvents; a bus-off triggers one restart request (rtnetlink,
-// needs CAP_NET_ADMIN) and, until the controller reports a restart, Send() throws CanBusOffError.
+// needs CAP_NET_ADMIN) and, until the controller reports a restart, Send() fails ("controller is
+// bus-off"). Failures are kCommunication (transport.hpp).
 //
 // Thread-safety: one thread at a time.
 #pragma once
@@ -25,20 +26,23 @@ struct SocketCanOptions {
 
 class SocketCanTransport : public CanTransport {
  public:
-  /// Opens and binds; throws std::runtime_error with SocketCanErrorText's message on failure.
-  SocketCanTransport(const std::string& iface, const SocketCanOptions& options);
+  /// Opens and binds; a failure carries SocketCanErrorText's message (kInvalidArgument for a bad
+  /// interface name, else kCommunication).
+  static Expected<std::unique_ptr<SocketCanTransport>> Open(const std::string& iface,
+                                                            const SocketCanOptions& options);
 
-  void Send(const CanFrame& frame) override;
-  std::optional<CanFrame> Receive(std::chrono::microseconds timeout) override;
+  Outcome Send(const CanFrame& frame) override;
+  Expected<std::optional<CanFrame>> Receive(std::chrono::microseconds timeout) override;
   std::string description() const override { return "socketcan:" + socket_.iface(); }
   std::vector<BusEvent> TakeEvents() override;
 
   hal::socketcan::BusState bus_state() const { return state_; }
 
  private:
+  explicit SocketCanTransport(const SocketCanOptions& options) : options_(options) {}
   void OnError(const hal::socketcan::CanErrorInfo& info);
   // Reads without blocking; true when a data frame was stored in *frame.
-  bool ReadOne(CanFrame* frame);
+  Expected<bool> ReadOne(CanFrame* frame);
 
   SocketCanOptions options_;
   hal::socketcan::SocketCanSocket socket_;

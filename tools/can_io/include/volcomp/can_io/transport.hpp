@@ -6,22 +6,20 @@
 // BITRATE is bit/s with an optional k/M suffix (500k, 1M, 1000000) and must be in the SLCAN S0..S9
 // table; without it the adapter keeps its configured bitrate. See docs/can-transports.md.
 //
-// Errors: hosted C++, failures throw std::runtime_error whose what() names the spec and the cause
-// (bad spec, unreachable endpoint, closed connection, adapter refusal, transmit timeout).
-// CanBusOffError (a runtime_error) marks a controller that is bus-off.
-//
-// Thread-safety: a transport is used from one thread at a time.
+// Errors: a Failure whose message names the spec and the cause: kInvalidArgument for a bad spec or
+// frame, kCommunication for everything the link does (unreachable endpoint, closed connection,
+// adapter refusal, transmit timeout, bus-off). Thread-safety: one thread at a time.
 #pragma once
 
 #include <chrono>
 #include <cstdint>
 #include <memory>
 #include <optional>
-#include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "volcomp/can/can_frame.hpp"
+#include "volcomp/hosted/expected.hpp"
 
 namespace volcomp::can_io {
 
@@ -40,23 +38,17 @@ struct BusEvent {
   std::string text;  // readable description
 };
 
-/// Thrown by Send() while the controller is bus-off and could not be restarted.
-class CanBusOffError : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
-};
-
 class CanTransport {
  public:
   virtual ~CanTransport() = default;
 
   /// Transmits one frame (blocks only while the adapter or the interface queue is full, up to
-  /// the transport's send timeout). Throws std::runtime_error on failure, std::invalid_argument
-  /// for an invalid frame.
-  virtual void Send(const CanFrame& frame) = 0;
-  /// The next received frame, or nullopt when none arrived within `timeout` (0 = poll). Throws
-  /// std::runtime_error when the link is gone (connection closed, device removed).
-  virtual std::optional<CanFrame> Receive(std::chrono::microseconds timeout) = 0;
+  /// the transport's send timeout). kInvalidArgument for an invalid frame, kCommunication when
+  /// the link fails or the controller is bus-off.
+  virtual Outcome Send(const CanFrame& frame) = 0;
+  /// The next received frame, or nullopt when none arrived within `timeout` (0 = poll);
+  /// kCommunication when the link is gone (connection closed, device removed).
+  virtual Expected<std::optional<CanFrame>> Receive(std::chrono::microseconds timeout) = 0;
   /// What this transport is connected to, e.g. "slcan-tcp:127.0.0.1:29536 @1000000".
   virtual std::string description() const = 0;
   /// Events seen since the last call (oldest first).
@@ -72,14 +64,14 @@ struct TransportSpec {
   uint32_t bitrate = 0;  // SLCAN: 0 = do not send S<n>
 };
 
-/// Parses a spec (forms above). Throws std::runtime_error explaining the accepted forms.
-TransportSpec ParseTransportSpec(const std::string& spec);
-/// Parses "500000", "500k", "1M" into bit/s; throws when not in the SLCAN table.
-uint32_t ParseBitrate(const std::string& text);
+/// Parses a spec (forms above); kInvalidArgument explaining the accepted forms.
+Expected<TransportSpec> ParseTransportSpec(const std::string& spec);
+/// Parses "500000", "500k", "1M" into bit/s; kInvalidArgument when not in the SLCAN table.
+Expected<uint32_t> ParseBitrate(const std::string& text);
 
-/// Opens the transport a spec names. Throws std::runtime_error with a clear message, e.g.
-/// "socketcan: socket(AF_CAN): address family not supported: this kernel has no CAN support
-/// (try slcan-tcp:HOST:PORT against a simulator, or run inside user-mode-linux)".
-std::unique_ptr<CanTransport> OpenTransport(const std::string& spec);
+/// Opens the transport a spec names. The failure says what to do, e.g. "socketcan:
+/// socket(AF_CAN): address family not supported: this kernel has no CAN support (try
+/// slcan-tcp:HOST:PORT against a simulator, or run inside user-mode-linux)" (kCommunication).
+Expected<std::unique_ptr<CanTransport>> OpenTransport(const std::string& spec);
 
 }  // namespace volcomp::can_io

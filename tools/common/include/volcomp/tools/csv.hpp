@@ -24,20 +24,12 @@
 #include <istream>
 #include <memory>
 #include <optional>
-#include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "volcomp/hosted/expected.hpp"
 
 namespace volcomp::tools {
-
-/// Thrown for malformed input by the transition API below (what() is the full message).
-/// TRANSITION: goes with the throwing API once every caller returns results.
-class InputError : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
-};
 
 class CsvTable;
 struct CsvMeta;
@@ -47,20 +39,8 @@ class CsvRow {
  public:
   /// 1-based line number in the source.
   std::size_t line() const { return line_; }
-  /// Raw text of a field by column index.
-  const std::string& text(std::size_t column) const { return fields_.at(column); }
   /// Every field's raw text, in header order.
   const std::vector<std::string>& fields() const { return fields_; }
-  /// Raw text of a named column (throws InputError if the header has no such column).
-  const std::string& text(const std::string& column) const;
-  /// Field parsed as a finite double; throws InputError naming line and column otherwise.
-  double number(const std::string& column) const;
-  double number(std::size_t column) const;
-  /// Field parsed as an integer; throws InputError naming line and column otherwise.
-  long long integer(const std::string& column) const;
-  /// Named field as a finite double, or nullopt when the column is absent or the field is empty.
-  std::optional<double> optional_number(const std::string& column) const;
-
   /// Raw text of a named column; a Failure when the header has no such column.
   Expected<std::string> Text(const std::string& column) const;
   /// Field parsed as a finite double (decimal mark of the file); a Failure naming line and column.
@@ -96,8 +76,6 @@ struct CsvMeta {
   std::vector<CsvPreambleEntry> preamble;
 
   std::optional<std::size_t> find(const std::string& column) const;
-  std::size_t require(const std::string& column) const;
-  InputError error(std::size_t line, const std::string& message) const;
   /// Index of a column, or a Failure "missing column" at the header line.
   Expected<std::size_t> Require(const std::string& column) const;
   /// Failure{kInputInvalid, "source:line: message"}.
@@ -114,11 +92,6 @@ class CsvTable {
   static Expected<CsvTable> ReadString(const std::string& text,
                                        const std::string& source = "<string>");
 
-  /// TRANSITION (throwing forms of Read*; removed once every caller returns results).
-  static CsvTable Parse(std::istream& in, const std::string& source);
-  static CsvTable ParseFile(const std::string& path);
-  static CsvTable ParseString(const std::string& text, const std::string& source = "<string>");
-
   const std::string& source() const { return meta_->source; }
   const std::vector<std::string>& header() const { return meta_->header; }
   const std::vector<CsvRow>& rows() const { return rows_; }
@@ -129,15 +102,9 @@ class CsvTable {
 
   /// Index of a column (exact, case-sensitive match after trimming), or nullopt.
   std::optional<std::size_t> find(const std::string& column) const { return meta_->find(column); }
-  /// Index of a column; throws InputError "missing column" when absent.
-  std::size_t require(const std::string& column) const { return meta_->require(column); }
   /// First of several accepted names that is present, or nullopt.
   std::optional<std::string> first_of(const std::vector<std::string>& names) const;
 
-  /// Builds an InputError message "source:line: message".
-  InputError error(std::size_t line, const std::string& message) const {
-    return meta_->error(line, message);
-  }
   /// Index of a column, or a Failure "missing column".
   Expected<std::size_t> Require(const std::string& column) const { return meta_->Require(column); }
   /// Failure{kInputInvalid, "source:line: message"}.

@@ -36,11 +36,11 @@ struct JsonValue {
   std::vector<JsonValue> array;
   std::vector<std::pair<std::string, JsonValue>> object;  // in document order
 
-  JsonValue() = default;  // null
-  JsonValue(bool b);      // NOLINT: implicit, so Set("ok", true) reads naturally
-  JsonValue(int v);       // NOLINT
-  JsonValue(unsigned v);  // NOLINT
-  JsonValue(long v);      // NOLINT
+  JsonValue() = default;            // null
+  JsonValue(bool b);                // NOLINT: implicit, so Set("ok", true) reads naturally
+  JsonValue(int v);                 // NOLINT
+  JsonValue(unsigned v);            // NOLINT
+  JsonValue(long v);                // NOLINT
   JsonValue(unsigned long v);       // NOLINT
   JsonValue(long long v);           // NOLINT
   JsonValue(unsigned long long v);  // NOLINT

@@ -1,9 +1,9 @@
 // Axis names, units per step and unit conversions for the PC tool's options and CSV columns.
 //
-// Resolution options: `--resolution-nm X=1000,Y=1000,Z=500` (nm per step for linear axes; for
-// rotary axes A/B/C the value is micro-degrees per step) or
-// `--steps-per-unit X=1000,A=100` (steps per mm, or per degree). Either must give a whole number
-// of 1e-9 units (pm or nano-degrees) per step, which is how the image stores it.
+// Step sizes come from option values: `--resolution-nm X=1000,Z=500` (nm per step; µ° per step
+// on the rotary axes A, B, C) or `--steps-per-unit X=1000,A=100` (steps per mm or per degree).
+// Either must give a whole number of 1e-9 units per step (pm or nano-degrees), as the image
+// stores it. The parsers read option values, so their failures are kUsage and name the option.
 #pragma once
 
 #include <cstdint>
@@ -11,25 +11,27 @@
 #include <string>
 #include <vector>
 
+#include "volcomp/hosted/expected.hpp"
 #include "volcomp/image/image_builder.hpp"
 
 namespace volcomp::image {
 
-/// Parses "X=1,Y=2" into {'X':"1", 'Y':"2"}; throws UsageError on bad syntax or axis names.
-std::map<char, std::string> ParseAxisAssignments(const std::string& text,
-                                                 const std::string& option);
+/// Parses "X=1,Y=2" into {'X':"1", 'Y':"2"}; kUsage on bad syntax, a bad or repeated axis name.
+Expected<std::map<char, std::string>> ParseAxisAssignments(const std::string& text,
+                                                           const std::string& option);
 
-/// Parses "X,Y,Z" into names; throws UsageError.
-std::vector<char> ParseAxisList(const std::string& text, const std::string& option);
+/// Parses "X,Y,Z" into names; kUsage on bad syntax, a bad or repeated axis name.
+Expected<std::vector<char>> ParseAxisList(const std::string& text, const std::string& option);
 
 /// Rotary axes by ISO 841 convention: A, B, C.
 bool IsRotaryName(char name);
 
-/// Builds AxisDefs for `names` from --resolution-nm / --steps-per-unit strings (exactly one of
-/// them non-empty; it must name every axis). Throws UsageError, also when both are given.
-std::vector<AxisDef> MakeAxisDefs(const std::vector<char>& names,
-                                  const std::string& resolution_nm,
-                                  const std::string& steps_per_unit);
+/// AxisDefs for `names` from the --resolution-nm / --steps-per-unit values (exactly one of them
+/// non-empty; it must name every axis); kUsage otherwise, or for a step that is not a whole
+/// number of 1e-9 units.
+Expected<std::vector<AxisDef>> MakeAxisDefs(const std::vector<char>& names,
+                                            const std::string& resolution_nm,
+                                            const std::string& steps_per_unit);
 
 /// Lower-case column prefix of an axis ("x" for 'X').
 std::string ColumnName(char axis);

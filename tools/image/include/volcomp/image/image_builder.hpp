@@ -3,7 +3,7 @@
 // This is the layer every `volcomp build ...` command uses. It chooses the element encoding
 // (fraction bits) if asked, quantises with rounding to nearest, writes the image through the
 // freestanding writer in lib/ and re-validates the result with the same parser the firmware uses,
-// so a returned image is always valid. Failures throw InputError with a readable reason (e.g. a
+// so a returned image is always valid. Failures are kInputInvalid with a readable reason (e.g. a
 // correction beyond the representable range, naming the node).
 #pragma once
 
@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "volcomp/hosted/expected.hpp"
 #include "volcomp/table/table_format.hpp"
 
 namespace volcomp::image {
@@ -67,15 +68,11 @@ struct ImageRequest {
   std::map<std::string, std::string> info;
 };
 
-/// Builds and validates an image; throws tools::InputError on any problem.
-std::vector<uint8_t> BuildImage(const ImageRequest& request);
+/// Builds and validates an image (kInputInvalid naming the problem).
+Expected<std::vector<uint8_t>> BuildImage(const ImageRequest& request);
 
-/// Largest fraction bits (0..8) at which every value fits the element type; throws InputError if
+/// Largest fraction bits (0..8) at which every value fits the element type; kInputInvalid when
 /// even 0 does not fit or a value exceeds table::kMaxCorrectionSteps.
-uint8_t ChooseFracBits(const ImageRequest& request);
-
-/// Reads a whole file into bytes (throws InputError). Writes bytes to a file (throws on failure).
-std::vector<uint8_t> ReadFileBytes(const std::string& path);
-void WriteFileBytes(const std::string& path, const std::vector<uint8_t>& bytes);
+Expected<uint8_t> ChooseFracBits(const ImageRequest& request);
 
 }  // namespace volcomp::image

@@ -1,5 +1,6 @@
 // Hosted image reading for the PC tool: load a file into aligned memory, validate it with the
-// firmware's parser, and evaluate corrections with the firmware's lookup code.
+// firmware's parser, and evaluate corrections with the firmware's lookup code. Failures are
+// Expected (kIoError for files, kInputInvalid for images).
 #pragma once
 
 #include <cstdint>
@@ -20,8 +21,6 @@ class LoadedImage {
   /// "SOURCE: invalid table image: TEXT (kName)".
   static Expected<LoadedImage> FromBytes(const std::vector<uint8_t>& bytes,
                                          const std::string& source);
-  /// TRANSITION: throws tools::InputError with that text; goes once every caller uses FromBytes.
-  LoadedImage(const std::vector<uint8_t>& bytes, const std::string& source);
   LoadedImage(LoadedImage&&) = default;
   LoadedImage& operator=(LoadedImage&&) = default;
   LoadedImage(const LoadedImage&) = delete;
@@ -39,22 +38,24 @@ class LoadedImage {
 
 /// Reads and validates the image file at `path` (kIoError when it cannot be read).
 Expected<LoadedImage> ReadImageFile(const std::string& path);
-/// TRANSITION: the throwing form of ReadImageFile.
-LoadedImage LoadImageFile(const std::string& path);
 
 /// A board configuration whose axes are exactly the image's (for tools and the simulator).
 BoardConfig BoardConfigFor(const table::TableView& view);
 
 /// The table's correction target at a position, computed by the firmware's code (GridLookup +
-/// AxisLookup via PreparedTable), before the board's clamp and rate limiter.
+/// AxisLookup via PreparedTable), before the board's clamp and rate limiter. Reads the image's
+/// memory: `image` must outlive the evaluator.
 class ImageEvaluator {
  public:
-  explicit ImageEvaluator(const LoadedImage& image);
+  /// Prepares the firmware's lookup on `image` for BoardConfigFor(its view); kInputInvalid when
+  /// the firmware refuses the table.
+  static Expected<ImageEvaluator> Create(const LoadedImage& image);
   /// `pos_steps` and `reverse` per image axis; writes Q24.8 steps per image axis.
   void CorrectionQ8(const int32_t* pos_steps, const bool* reverse, int32_t* out_q8) const;
   uint8_t axis_count() const { return axis_count_; }
 
  private:
+  explicit ImageEvaluator(uint8_t axis_count) : axis_count_(axis_count) {}
   PreparedTable table_;
   uint8_t axis_count_;
 };

@@ -1,13 +1,7 @@
-// Before/after comparison of evaluation results (`volcomp report compare BEFORE AFTER -o DIR`).
-//
-// Inputs are the JSON results `volcomp evaluate positioning|diagonal --report DIR` writes next to
-// its HTML (DIR/positioning_X.json, DIR/diagonal_NNN_NPN_PNN_PPN.json, ...), or such files given
-// directly. Results of two directories are paired by file name; two files are paired with each
-// other. Per pair every parameter is listed before and after with its reduction
-// 100·(|before| − |after|)/|before| %: for positioning each parameter of each standard evaluated
-// in both (A, R, B ... of GOST 27843; E, M, A, R, B ... of ISO 230-2), for diagonals E_i and B_i
-// of each diagonal and E_d, B_d of the body diagonals and of each face plane. Test conditions of
-// both are shown side by side; results without a partner are named in warnings.
+// Before/after comparison of evaluation results (`volcomp report compare BEFORE AFTER -o DIR`): the
+// JSON results `evaluate positioning|diagonal --report DIR` wrote, paired by name, every parameter
+// before and after with its reduction (docs/metrology.md "Before and after"). Failures are
+// returned (kInputInvalid; kIoError for a file that cannot be read), never thrown.
 #pragma once
 
 #include <optional>
@@ -27,8 +21,8 @@ struct LoadedResult {
 };
 
 /// The results in `path`: a directory (its *.json files of positioning and diagonal results,
-/// by name) or one .json file. Throws tools::InputError naming the path for anything else.
-std::vector<LoadedResult> LoadResults(const std::string& path);
+/// by name) or one .json file. A failure naming the path for anything else.
+Expected<std::vector<LoadedResult>> LoadResults(const std::string& path);
 
 struct ComparedValue {
   std::string symbol;   // "A", "E_d", "E_i"
@@ -66,11 +60,14 @@ struct Comparison {
   std::vector<std::string> warnings;  // unpaired or mismatched results
 };
 
-/// Pairs and compares; throws tools::InputError when nothing can be paired.
-Comparison CompareResults(const std::vector<LoadedResult>& before,
-                          const std::vector<LoadedResult>& after);
+/// Pairs and compares; a failure when nothing can be paired.
+Expected<Comparison> CompareResults(const std::vector<LoadedResult>& before,
+                                    const std::vector<LoadedResult>& after);
 
-void WriteComparisonText(std::ostream& out, const Comparison& comparison);
+/// Every compared value (what `report compare` reports; the charts' series stay in the HTML).
+tools::JsonValue ComparisonJson(const Comparison& comparison);
+/// Per result and table: each value before -> after with its reduction, from ComparisonJson().
+void WriteComparisonText(std::ostream& out, const tools::JsonValue& comparison);
 void AddComparisonSections(report::HtmlPage* page, const Comparison& comparison);
 
 }  // namespace volcomp::metrology

@@ -1,13 +1,7 @@
-// ISO 230-6 diagonal displacement tests: diagonal names, target positions along a diagonal
-// (§5.2) and the evaluation of E and B per diagonal (§3.4-3.7, §6).
-//
-// Each diagonal is measured like a linear axis of ISO 230-2 whose coordinate is the distance
-// along the diagonal from its start P1 (mm); deviations are in µm. Only the bidirectional
-// systematic positioning error E and the reversal value B are evaluated (§6, §5.3 note):
-//   E_i = max_j max(x̄_j↑, x̄_j↓) − min_j min(x̄_j↑, x̄_j↓),   B_i = max_j |x̄_j↑ − x̄_j↓|;
-//   E_d = max(E_1..E_4), B_d = max(B_1..B_4) over the four body diagonals (§3.4, §3.6);
-//   E_d(ab) = max(E_1(ab), E_2(ab)), B_d(ab) likewise, for the face diagonals of plane ab
-//   (§3.5, §3.7).
+// ISO 230-6 diagonal displacement tests: diagonal names, target positions along a diagonal (§5.2),
+// and E_i, B_i per diagonal and E_d, B_d per body or face group, each diagonal evaluated like an
+// ISO 230-2 axis whose coordinate is the distance from its start (mm; deviations in µm).
+// Definitions: docs/metrology.md "ISO 230-6 diagonal tests".
 #pragma once
 
 #include <array>
@@ -69,12 +63,12 @@ struct DiagonalPlan {
   std::vector<std::string> warnings;
 };
 
-/// Throws std::invalid_argument when P1 = P2 or the increment is not positive. The increment
+/// A failure (kInvalidArgument) when P1 = P2 or the increment is not positive. The increment
 /// is rounded so that a whole number of steps spans the diagonal (the standard allows
 /// adjusting I_d for rounding); warns when fewer than 5 targets per metre of diagonal or fewer
 /// than 5 in total result (§5.2). Each point is computed from P1 directly, so no rounding
 /// accumulates along the diagonal (annex A).
-DiagonalPlan PlanDiagonal(const Vec3& p1, const Vec3& p2, double increment_mm);
+Expected<DiagonalPlan> PlanDiagonal(const Vec3& p1, const Vec3& p2, double increment_mm);
 
 struct DiagonalResult {
   DiagonalName name;
@@ -105,11 +99,12 @@ struct DiagonalEvaluation {
 /// Reads the long CSV layout of positioning data with an extra `diagonal` column naming the
 /// diagonal of each row (target_mm = distance from the diagonal's start), checks every
 /// diagonal (both directions, ≥ min_approaches per target and direction, same targets in every
-/// run, §5.2 target count) and evaluates it. Throws tools::InputError with the line for a bad
+/// run, §5.2 target count) and evaluates it. A failure (kInputInvalid) naming the line for a bad
 /// diagonal name or any of the checks of GroupReadings(). The reading checks of
 /// reading_checks.hpp (implausible magnitude along the diagonal's length, Grubbs outliers) and
 /// the preamble's test conditions go into the result.
-DiagonalEvaluation EvaluateDiagonals(const tools::CsvTable& table, const GroupingOptions& options);
+Expected<DiagonalEvaluation> EvaluateDiagonals(const tools::CsvTable& table,
+                                               const GroupingOptions& options);
 
 /// The base name of the report of `ev`: "diagonal_" and the file tokens of its diagonals, sorted
 /// ("diagonal_NNN_NPN_PNN_PPN" for the four body diagonals).

@@ -23,9 +23,9 @@ struct MeanDeviations {
 
 /// Reads (positioning_csv.hpp), groups and checks (GroupReadings with `grouping`: by default ≥ 5
 /// approaches per target and direction, same targets in every run; reading_checks.hpp) and
-/// averages. Throws tools::InputError naming the line, also when the test has no ↑ approaches
+/// averages. A failure (kInputInvalid) naming the line, also when the test has no ↑ approaches
 /// (the forward table needs them).
-MeanDeviations MeanDeviationsFromCsv(const tools::CsvTable& table,
-                                     const GroupingOptions& grouping = GroupingOptions{});
+Expected<MeanDeviations> MeanDeviationsFromCsv(const tools::CsvTable& table,
+                                               const GroupingOptions& grouping = GroupingOptions{});
 
 }  // namespace volcomp::metrology

@@ -3,10 +3,13 @@
 // the profile p(θ_j) is compared with m + a·cos θ_j + b·sin θ_j, and (a, b) is the offset of
 // the centre from the PC centre (the polar chart origin). Removing a·cos θ + b·sin θ is removing
 // the fundamental (once-per-revolution) component.
-// Units: whatever the profile uses (µm, or µrad for tilt); angles in degrees.
+// Units: whatever the profile uses (µm, or µrad for tilt); angles in degrees. Fits that cannot be
+// made are failures (kInvalidArgument), not exceptions.
 #pragma once
 
 #include <vector>
+
+#include "volcomp/hosted/expected.hpp"
 
 namespace volcomp::metrology {
 
@@ -19,14 +22,16 @@ struct CentreFit {
 /// Least-squares circle centre (LSC, §3.7.4): minimizes Σ (p_j − m − a·cos θ_j − b·sin θ_j)².
 /// Solves the 3×3 normal equations, so unequal angle spacing is handled; for equal spacing over
 /// whole revolutions this is m = mean, a = (2/N)Σp·cos θ, b = (2/N)Σp·sin θ.
-/// Requires at least 3 distinct angles (throws std::invalid_argument otherwise).
-CentreFit FitLeastSquaresCentre(const std::vector<double>& angle_deg, const std::vector<double>& p);
+/// Needs at least 3 distinct angles.
+Expected<CentreFit> FitLeastSquaresCentre(const std::vector<double>& angle_deg,
+                                          const std::vector<double>& p);
 
 /// Minimum radial separation centre (MRS, the minimum zone, §3.7.5): minimizes the width of
 /// the zone between two concentric circles containing the profile, i.e. the Chebyshev fit
 /// min over (m, a, b) of max_j |p_j − m − a·cos θ_j − b·sin θ_j|, solved exactly as a linear
-/// program (simplex on the dual, 4 rows). Requires at least 4 distinct angles.
-CentreFit FitMinimumZoneCentre(const std::vector<double>& angle_deg, const std::vector<double>& p);
+/// program (simplex on the dual, 4 rows). Needs at least 4 distinct angles.
+Expected<CentreFit> FitMinimumZoneCentre(const std::vector<double>& angle_deg,
+                                         const std::vector<double>& p);
 
 /// Radial deviations of p about the centre (a, b): p_j − a·cos θ_j − b·sin θ_j.
 std::vector<double> ResidualsAbout(const std::vector<double>& angle_deg,

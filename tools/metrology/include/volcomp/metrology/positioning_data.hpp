@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "volcomp/hosted/expected.hpp"
 #include "volcomp/metrology/direction.hpp"
 
 namespace volcomp::metrology {
@@ -66,7 +67,7 @@ struct GroupingOptions {
   bool allow_few_approaches = false;
 };
 
-/// Groups the readings and checks them; throws tools::InputError ("source:line: problem") for:
+/// Groups the readings and checks them; a failure (kInputInvalid, "source:line: problem") for:
 ///   - no readings;
 ///   - the same target, direction and run given twice (names both lines);
 ///   - target positions that differ between runs (a run has a target that the other runs do not
@@ -75,6 +76,6 @@ struct GroupingOptions {
 ///   - fewer than min_approaches (or fewer than 2) approaches at a position and direction.
 /// Readings of one run missing at a position are reported as warnings when enough remain.
 /// Data with only one direction throughout are accepted (unidirectional evaluation).
-PositioningSet GroupReadings(const PositioningData& data, const GroupingOptions& options);
+Expected<PositioningSet> GroupReadings(const PositioningData& data, const GroupingOptions& options);
 
 }  // namespace volcomp::metrology

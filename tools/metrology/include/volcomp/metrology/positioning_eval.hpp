@@ -1,26 +1,7 @@
-// Evaluation of a positioning test per GOST 27843-88 or ISO 230-2:2014.
-//
-// Both standards use the same building blocks per target position P_j and direction:
-//   mean deviation X̄_j (GOST (2); ISO x̄_j),  standard deviation S_j (GOST (5) or the range
-//   method (6) S = W·a_n; ISO s_j, n − 1 divisor),  reversal B_j = X̄_j↑ − X̄_j↓ (GOST (3)).
-// They differ in the coverage factor k: GOST uses X̄ ± 3S and R = 6S, ISO 230-2:2014 uses
-// x̄ ± 2s and R = 4s.
-//
-// GOST 27843-88 parameters (§1.10-1.16, §2.14):
-//   A    = max(X̄_j + 3S_j) − min(X̄_j − 3S_j) over both directions (formula (10));
-//   A↑, A↓ the same over one direction;
-//   R_j↑ = 6S_j↑, R_j↓ = 6S_j↓ (7);  R↑, R↓ their maxima over j (§1.13);
-//   R_j  = max(3S_j↑ + 3S_j↓ + |B_j|, 6S_j↑, 6S_j↓) (8);  R_max = max_j R_j;
-//   R̄    = (Σ_j R_j↑ + Σ_j R_j↓) / 2m (9), m positions;
-//   B̄    = (1/m) Σ_j B_j (§1.15);  B_max = max_j |B_j| (§1.16).
-// ISO 230-2:2014 parameters (k = 2):
-//   E↑ = max x̄↑ − min x̄↑, E↓ likewise;  E = max(x̄↑, x̄↓) − min(x̄↑, x̄↓);
-//   M  = max x̄_j − min x̄_j with x̄_j = (x̄_j↑ + x̄_j↓)/2;
-//   A↑ = max(x̄↑ + 2s↑) − min(x̄↑ − 2s↑), A↓ likewise, A over both directions;
-//   R_j↑ = 4s_j↑;  R_j = max(2s_j↑ + 2s_j↓ + |B_j|, R_j↑, R_j↓);  R↑, R↓, R their maxima;
-//   B = max_j |B_j| (reversal value of the axis), B̄ = (1/m) Σ_j B_j.
-// Every extreme records the position (and direction) where it occurs.
-// Units: deviations and all parameters in µm (linear axis) or arc-seconds (rotary axis).
+// Evaluation of a positioning test per GOST 27843-88 (coverage factor k = 3) or ISO 230-2:2014
+// (k = 2): per target and direction the mean, standard deviation, reversal and repeatability, and
+// the overall parameters (A, R, B, E, M ...) with the position and direction of every extreme.
+// Formulas and clauses: docs/metrology.md. Units: µm (linear axis) or arc-seconds (rotary axis).
 #pragma once
 
 #include <cstddef>
@@ -107,8 +88,10 @@ struct PositioningResult {
   std::vector<std::string> warnings;
 };
 
-/// Evaluates grouped readings. Throws tools::InputError when the range method is chosen and a
-/// position has a number of approaches outside 5..10 (the a_n table of GOST formula (6)).
-PositioningResult EvaluatePositioning(const PositioningSet& set, const EvaluationOptions& options);
+/// Evaluates grouped readings. A failure (kInputInvalid, naming the line) when the range method is
+/// chosen and a position has a number of approaches outside 5..10 (the a_n table of GOST
+/// formula (6)).
+Expected<PositioningResult> EvaluatePositioning(const PositioningSet& set,
+                                                const EvaluationOptions& options);
 
 }  // namespace volcomp::metrology

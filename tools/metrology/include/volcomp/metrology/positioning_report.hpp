@@ -1,7 +1,7 @@
-// Output of a positioning evaluation: human-readable text, JSON (every parameter, per position
-// and overall, with the location of each extreme) and an HTML section with the charts of
-// GOST 27843-88 fig. 10 (X̄↑, X̄↓ with the X̄ ± kS bands per position, reversal B_j and
-// repeatability R_j per position).
+// Output of a positioning evaluation: JSON (every parameter, per position and overall, with the
+// location of each extreme), the text laid out from that JSON (so the two cannot disagree), and an
+// HTML section with the charts of GOST 27843-88 fig. 10 (X̄↑, X̄↓ with the X̄ ± kS bands per
+// position, reversal B_j and repeatability R_j per position).
 #pragma once
 
 #include <ostream>
@@ -9,24 +9,44 @@
 #include <vector>
 
 #include "volcomp/metrology/positioning_eval.hpp"
+#include "volcomp/metrology/positioning_evaluation.hpp"
 #include "volcomp/report/html_page.hpp"
-#include "volcomp/tools/json.hpp"
+#include "volcomp/tools/json_value.hpp"
 
 namespace volcomp::metrology {
 
-/// The parameter list of the result's standard with locations, then the per-position table.
-void WritePositioningText(std::ostream& out, const PositioningResult& result);
-
 /// One JSON object with the standard, the per-position values and every overall parameter.
-void WritePositioningJson(tools::JsonWriter& json, const PositioningResult& result);
+tools::JsonValue PositioningJson(const PositioningResult& result);
+
+/// The parameter list of the standard with locations, then the per-position table, from
+/// PositioningJson()'s object.
+void WritePositioningText(std::ostream& out, const tools::JsonValue& evaluation);
 
 /// Appends a section (heading, parameter table, charts, per-position table) to `page`.
 void AddPositioningSection(report::HtmlPage* page, const PositioningResult& result);
+
+/// The document `evaluate positioning` reports (--json, its report's .json, read back by
+/// compare.hpp): command, name, source, conditions, the axis and its targets, and
+/// PositioningJson() of every standard under "evaluations".
+tools::JsonValue PositioningEvaluationJson(const PositioningEvaluation& ev);
+
+/// The test, its conditions and axis, then WritePositioningText() of every standard, from
+/// PositioningEvaluationJson()'s document.
+void WritePositioningEvaluationText(std::ostream& out, const tools::JsonValue& ev);
+
+/// The report page: the test conditions, then a section per standard.
+report::HtmlPage PositioningEvaluationPage(const PositioningEvaluation& ev);
 
 /// The fig. 10-style deviation chart alone (SVG), e.g. for reuse in other reports.
 std::string PositioningDeviationChart(const PositioningResult& result, const std::string& title);
 
 /// "j=2 ↓ (150.71 mm)": position number, direction if any, and target.
 std::string DescribeLocation(const PositioningResult& result, const Extreme& e);
+
+/// The same from a location object of the JSON ({"position", `target_key`, "direction"}), the
+/// target in `unit`.
+std::string DescribeLocation(const tools::JsonValue& location,
+                             const std::string& target_key,
+                             const std::string& unit);
 
 }  // namespace volcomp::metrology

@@ -1,15 +1,8 @@
-// Plausibility checks of positioning readings that warn without stopping the evaluation (a
-// reading that cannot be a measurement at all is refused by the reader, positioning_csv.hpp):
-//
-//  - implausible magnitude: a linear-axis deviation above the larger of 1 mm and 1 µm per mm of
-//    travel (0.1 %), or a rotary deviation above 1° (3600″), is far beyond the errors of a
-//    machine tool and usually a unit slip (µm readings in a `deviation_mm` column); a file whose
-//    readings are all below 0.01 µm (0.001″) but not all zero likely holds mm in a µm column.
-//    One warning per file, naming the column, the first line, the count, and the likely unit;
-//  - outliers: Grubbs' test (two-sided, 99 %, statistics.hpp GrubbsCritical) on the approaches
-//    of each target and direction with n ≥ 3; the most extreme reading of a series above the
-//    critical value is named with its line, run and G. One pass per series (a second outlier
-//    in the same series is masked by the first; the warning says to check the series).
+// Plausibility checks of positioning readings that warn without stopping the evaluation: a
+// magnitude implausible for the axis (likely a unit slip; one warning per file naming the column
+// and the likely unit) and Grubbs outliers per target and direction (named with line, run and G).
+// Bounds and test: docs/metrology.md "Input checks". A reading that cannot be one at all is
+// refused by the reader (positioning_csv.hpp).
 #pragma once
 
 #include <optional>

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "volcomp/hosted/expected.hpp"
 #include "volcomp/metrology/test_program.hpp"
 
 namespace volcomp::metrology {
@@ -30,12 +31,11 @@ std::string TemplateRows(const std::vector<CycleMove>& moves, const std::string&
 /// is not a readings template; nullopt when it does not exist or is an empty template.
 std::optional<std::string> ReadingsAtRisk(const std::string& path);
 
-/// Throws tools::InputError saying why and naming --force when ReadingsAtRisk(path) and not
+/// A failure (kInputInvalid) saying why and naming --force when ReadingsAtRisk(path) and not
 /// `force`; commands call it before they write anything.
-void RefuseToOverwriteReadings(const std::string& path, bool force);
+Outcome RefuseToOverwriteReadings(const std::string& path, bool force);
 
-/// Writes `text` to `path` after RefuseToOverwriteReadings(path, force). `path` "-" writes to
-/// `out`.
-void WriteTemplate(const std::string& text, const std::string& path, bool force, std::ostream& out);
+/// Writes `text` to the file `path` after RefuseToOverwriteReadings(path, force).
+Outcome WriteTemplate(const std::string& text, const std::string& path, bool force);
 
 }  // namespace volcomp::metrology

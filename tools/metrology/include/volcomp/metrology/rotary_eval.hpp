@@ -1,16 +1,8 @@
-// ISO 230-7 evaluation of a rotary-axis or spindle error-motion record: builds the polar
-// profiles from the sensor channels (§5.3, §5.4, §6) and analyses each with AnalyseErrorMotion().
-//
-// Profiles (u in µm unless noted; θ the rotation angle, θ_f the fixed sensitive direction):
-//   radial, rotating sensitive direction (RSD), formula (1)/(6): u = ΔX·cos θ + ΔY·sin θ
-//   radial, fixed sensitive direction (FSD), formulas (3)/(4):   u = ΔX·cos θ_f + ΔY·sin θ_f
-//   tilt (two planes a distance L apart, A.6 / formula (5), §5.3.3 method 2): the radial
-//     profile of the difference plane2 − plane1, divided by L; in µrad (= µm/m)
-//   tilt from axial and face (A.5): (z − face)/R, µrad
-//   axial: u = Δz;  face: u = face channel
-// Preferred centres (Table 1): radial and tilt LSC, axial and face PC. The fundamental axial
-// value (§3.8.5) is reported for axial and face. For radial data from two sensors, the positive
-// and negative fundamentals c₊, c₋ of ΔX + iΔY (A.10, ref. Lu & Jamalian) describe the 2D effect.
+// ISO 230-7 evaluation of an error-motion record: the profiles formed from the sensor channels
+// (radial for a rotating or fixed sensitive direction, tilt, axial, face), each analysed with
+// AnalyseErrorMotion() and reported about its preferred centre of Table 1, and the Donaldson
+// reversal; profiles and clauses in docs/metrology.md. Options the channels cannot serve are
+// failures naming the file.
 #pragma once
 
 #include <optional>
@@ -64,10 +56,10 @@ struct RotaryEvaluation {
   std::vector<std::string> warnings;
 };
 
-/// Throws tools::InputError naming the file when the options need channels the file lacks
+/// A failure (kInputInvalid) naming the file when the options need channels the file lacks
 /// (e.g. a rotating sensitive direction without both x_um and y_um). Tilt needs
 /// options.tilt_distance_mm; without it x2/y2 give the second radial plane and a warning.
-RotaryEvaluation EvaluateRotary(const RotaryRecord& record, const RotaryOptions& options);
+Expected<RotaryEvaluation> EvaluateRotary(const RotaryRecord& record, const RotaryOptions& options);
 
 /// Sign conventions of the second record of a Donaldson reversal (ISO 230-7 annex B).
 enum class ReversalProcedure {
@@ -87,11 +79,19 @@ struct ReversalResult {
 
 /// Donaldson reversal (ISO 230-7 annex B) from the synchronous profiles T1 and T2 recorded in
 /// setups 1 and 2 at the same angles: procedure P gives P = (T1 + T2P)/2, S = (T1 − T2P)/2;
-/// procedure S gives S = (T1 + T2S)/2, P = (T1 − T2S)/2. Throws std::invalid_argument for
+/// procedure S gives S = (T1 + T2S)/2, P = (T1 − T2S)/2. A failure (kInvalidArgument) for
 /// profiles of different lengths.
-ReversalResult DonaldsonReversal(const std::vector<double>& angle_deg,
-                                 const std::vector<double>& t1,
-                                 const std::vector<double>& t2,
-                                 ReversalProcedure procedure);
+Expected<ReversalResult> DonaldsonReversal(const std::vector<double>& angle_deg,
+                                           const std::vector<double>& t1,
+                                           const std::vector<double>& t2,
+                                           ReversalProcedure procedure);
+
+/// The reversal of `channel` (e.g. "x_um") from its synchronous profiles in the two setups'
+/// records; a failure (kInputInvalid, naming the file) when setup 2 is sampled at other angles than
+/// setup 1 or a record lacks the channel.
+Expected<ReversalResult> DonaldsonReversal(const RotaryRecord& setup1,
+                                           const RotaryRecord& setup2,
+                                           const std::string& channel,
+                                           ReversalProcedure procedure);
 
 }  // namespace volcomp::metrology

@@ -14,7 +14,7 @@
 
 #include "volcomp/report/html_page.hpp"
 #include "volcomp/tools/csv.hpp"
-#include "volcomp/tools/json.hpp"
+#include "volcomp/tools/json_value.hpp"
 
 namespace volcomp::metrology {
 
@@ -32,11 +32,11 @@ struct TestConditions {
 /// The preamble entries of `table` that have a value.
 TestConditions ConditionsFromPreamble(const tools::CsvTable& table);
 
-/// "machine MILL-7; axis X; ..." (empty when there are none).
-std::string ConditionsText(const TestConditions& conditions);
+/// The JSON object {key: value, ...} of the entries, in file order.
+tools::JsonValue ConditionsJson(const TestConditions& conditions);
 
-/// `"conditions": {key: value, ...}` inside the current JSON object.
-void WriteConditionsJson(tools::JsonWriter& json, const TestConditions& conditions);
+/// "machine MILL-7; axis X; ..." from ConditionsJson()'s object (empty when there are none).
+std::string ConditionsText(const tools::JsonValue& conditions);
 
 /// A "Test conditions" table, or a paragraph saying that the file gives none and how to add them.
 void AddConditionsSection(report::HtmlPage* page, const TestConditions& conditions);

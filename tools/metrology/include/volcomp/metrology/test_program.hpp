@@ -1,13 +1,15 @@
 // Positioning test programs: target positions per GOST 27843-88 §2.7 and the move sequences of
 // the linear cycle (fig. 1) and the pseudo-pilgrim cycle with step return (fig. 2), emitted as a
 // simple G-code program. The same cycle generator serves the ISO 230-6 diagonal tests, where the
-// "axis" is the distance along the diagonal.
+// "axis" is the distance along the diagonal. An impossible plan is a failure (kInvalidArgument,
+// its message names the problem), not an exception.
 #pragma once
 
 #include <cstdint>
 #include <string>
 #include <vector>
 
+#include "volcomp/hosted/expected.hpp"
 #include "volcomp/metrology/direction.hpp"
 
 namespace volcomp::metrology {
@@ -28,9 +30,9 @@ struct TargetPlan {
 /// over the travel, r_j random decimal fractions in [0, 1), different for every position, drawn
 /// from a generator seeded with `seed` (same seed, same plan). Results are ascending, within
 /// [start, end], rounded to 0.001. For `rotary`, the four cardinal angles replace the nearest
-/// planned targets. Throws std::invalid_argument for an impossible plan (count < 2, pitch ≤ 0,
-/// end ≤ start, or more positions than the travel holds pitches).
-std::vector<double> PlanGostTargets(const TargetPlan& plan);
+/// planned targets. A failure for an impossible plan (count < 2, pitch ≤ 0, end ≤ start, or more
+/// positions than the travel holds pitches).
+Expected<std::vector<double>> PlanGostTargets(const TargetPlan& plan);
 
 enum class Cycle {
   kLinear,  // GOST fig. 1 / ISO 230-2 standard cycle: all targets ↑, then all ↓
@@ -48,11 +50,12 @@ struct CycleMove {
 
 /// The stops of `runs` repetitions of the cycle. Every target is approached once ↑ and once ↓
 /// per run; `overrun` (> 0) is the travel beyond the end targets used to reverse so that the
-/// first and last targets are approached in the stated direction.
-std::vector<CycleMove> BuildCycle(const std::vector<double>& targets,
-                                  Cycle cycle,
-                                  int runs,
-                                  double overrun);
+/// first and last targets are approached in the stated direction. A failure for fewer than 2
+/// targets, runs < 1 or overrun ≤ 0.
+Expected<std::vector<CycleMove>> BuildCycle(const std::vector<double>& targets,
+                                            Cycle cycle,
+                                            int runs,
+                                            double overrun);
 
 struct GcodeOptions {
   std::string title;                   // first comment line
@@ -66,7 +69,8 @@ struct GcodeOptions {
 
 /// A simple program: G21 G90 G94, a G0 to the first stop, G1 moves with F, G4 P<seconds> dwells
 /// at the measured stops with a comment naming target, direction and run, and M2 at the end.
-/// Axis coordinates are origin + position·direction.
-std::string EmitGcode(const std::vector<CycleMove>& moves, const GcodeOptions& options);
+/// Axis coordinates are origin + position·direction (a failure unless axes, origin and direction
+/// have one entry per axis).
+Expected<std::string> EmitGcode(const std::vector<CycleMove>& moves, const GcodeOptions& options);
 
 }  // namespace volcomp::metrology

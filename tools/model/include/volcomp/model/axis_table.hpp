@@ -8,11 +8,14 @@
 // Units: positions in mm, linear errors in µm, angular errors in µrad (1 µm/mm = 1000 µrad).
 // Between rows the functions are linear (the tables are samples of continuous functions); outside
 // the table the end rows are held constant, so a model never extrapolates a slope into the unknown.
+// A table is made by Create (kInvalidArgument for rows a table cannot hold); a default-constructed
+// one is empty.
 #pragma once
 
 #include <cstddef>
 #include <vector>
 
+#include "volcomp/hosted/expected.hpp"
 #include "volcomp/model/vec3.hpp"
 
 namespace volcomp::model {
@@ -26,8 +29,10 @@ struct AxisErrorSample {
 class AxisErrorTable {
  public:
   AxisErrorTable() = default;
-  /// Rows at strictly increasing positions (at least 2, all finite); throws std::invalid_argument.
-  AxisErrorTable(std::vector<double> position_mm, std::vector<AxisErrorSample> rows);
+  /// Rows at strictly increasing positions (at least 2, all finite); kInvalidArgument naming the
+  /// row otherwise.
+  static Expected<AxisErrorTable> Create(std::vector<double> position_mm,
+                                         std::vector<AxisErrorSample> rows);
 
   std::size_t size() const { return position_mm_.size(); }
   bool empty() const { return position_mm_.empty(); }
@@ -42,8 +47,9 @@ class AxisErrorTable {
   AxisErrorSample Sample(double position_mm) const;
 
   /// The same functions sampled every `step_mm` from min_mm() up to `max_mm` (linear
-  /// interpolation of the columns, as the dissertation's Tables 4.5-4.7 refine Tables 3.2-3.4).
-  AxisErrorTable Resampled(double step_mm, double max_mm) const;
+  /// interpolation of the columns, as the dissertation's Tables 4.5-4.7 refine Tables 3.2-3.4);
+  /// kInvalidArgument for a step that is not positive or a range that ends before min_mm().
+  Expected<AxisErrorTable> Resampled(double step_mm, double max_mm) const;
 
  private:
   std::vector<double> position_mm_;

@@ -1,16 +1,9 @@
-// The dissertation's volumetric-error formulation, reproduced with its quirks (named variant).
-//
-// Pimushkin (STANKIN, 2023), ch. 3, eqs. (3.5)-(3.10) and Appendix А, as the digest
-// shared/reference/dissertation-ch3.md D2.5-D2.8 verified against every printed number:
-//   * angles act only through the tool vector r (no Abbe arms through axis positions);
-//   * the nine angles are summed per direction: A = ε_xx+ε_yx+ε_zx, B = ε_xy+ε_yy+ε_zy,
-//     C = ε_xz+ε_yz+ε_zz (rad = 1e-3 · µm/mm), scaled by k (the "fatigue coefficient");
-//   * second order adds ±½·(products) exactly as printed in (3.5), including the printed B term
-//     ε_xz·ε_zy (the derivation gives ε_yz·ε_zx), all signs + (δ+) or all − (δ−);
-//   * Δr = l·[E″×r + ½E″×(E″×r)] with l = 1/(1 + ¼(A²+B²+C²)) from the second-order A, B, C;
-//   * the linear errors are grouped by their FIRST index (3.8): δx = δ_xx + δ_xy + δ_xz (all
-//     errors of the X axis), not by direction as physics would have it.
-// Squareness is not part of this formulation (the dissertation gives no values).
+// The dissertation's volumetric-error formulation, reproduced with its quirks (named variant):
+// Pimushkin (STANKIN, 2023), ch. 3, eqs. (3.5)-(3.10) and Appendix А, exactly as the printed
+// numbers were computed. Angles act only through the tool vector r, the nine angles are summed per
+// direction and scaled by k, the linear errors are grouped by the moving axis (3.8), no
+// squareness. Where it departs from physics: docs/table-builders.md §3.
+// Units: the dissertation's (linear µm, angles µm/mm = mrad, r in µm).
 #pragma once
 
 #include <array>

@@ -1,22 +1,16 @@
 // КМТПП: the quasi-differential method on parametric-error tables (Pimushkin 2023, ch. 4,
-// eqs. 4.1-4.11 with 2.15-2.18, algorithm of §4.2, Mathcad listing of §4.3).
-//
-// For a target q_d the method traces a virtual motion from q = 0 with the explicit-Euler astatic
-// law q ← q − K·l·(q − q_d), rotates the three physical axis vectors l_x, l_y, l_z at each trace
-// point by the summed angular errors of the nearest table row (A = ε_xx+ε_yx+ε_zx, ...; rotation
-// vector θ = A i + B j + C k, 2·tan(φ/2) form), accumulates the reached position R = r01 + S, and
-// stops when every |q_d,i − q_i| ≤ u_i (the table step). A final linear step with G = [Q1 Q2 Q3]
-// of the last point gives the command:
-//   kTracedPoint (default, "reading B"):  q = q_m + G⁻¹(q_d − R)  — smooth in q_d;
-//   kGridNode (as printed, "reading A"):  q = u·n + G⁻¹(q_d − R)  — jumps by up to u_i/2 as n
-//   changes (up to 1.94 mm on the 2 mm tables; digest dissertation-ch4.md §1.7, §4.3).
-// Only the angular columns of the tables are used (the printed method ignores the linear errors).
-// Lengths in mm; table angles in µrad (the dissertation's µm/mm × 1000).
+// eqs. 4.1-4.11 with 2.15-2.18, algorithm of §4.2, Mathcad listing of §4.3). For a target the
+// method traces a virtual motion from 0 with an astatic law, turns the axis vectors by the summed
+// angular errors of the nearest table rows, and ends with one linear step from the traced point
+// (smooth; the default) or from the grid node (as printed; it jumps). Only the angular columns of
+// the tables are used. The variants and what they reproduce: docs/table-builders.md §5.
+// Lengths in mm; table angles in µrad.
 #pragma once
 
 #include <array>
 #include <vector>
 
+#include "volcomp/hosted/expected.hpp"
 #include "volcomp/model/axis_table.hpp"
 #include "volcomp/model/tracker.hpp"
 #include "volcomp/model/vec3.hpp"
@@ -74,13 +68,13 @@ struct KmtppResult {
   bool row_clamped = false;  // a trace point fell outside a table (row held at the end)
 };
 
-/// Runs the method. Tables must be equally spaced (their spacing is u); throws
-/// std::invalid_argument for bad options or tables, std::runtime_error if max_steps is exceeded
-/// or the final axis-vector matrix is singular.
-KmtppResult Kmtpp(const std::array<AxisErrorTable, 3>& tables,
-                  const KmtppCalibration& calibration,
-                  const KmtppOptions& options,
-                  const Vec3& target_mm,
-                  std::vector<KmtppStep>* trace = nullptr);
+/// Runs the method. Tables must be equally spaced (their spacing is u): kInvalidArgument for bad
+/// options or tables; kInputInvalid when the trace exceeds max_steps or the final axis-vector
+/// matrix is singular.
+Expected<KmtppResult> Kmtpp(const std::array<AxisErrorTable, 3>& tables,
+                            const KmtppCalibration& calibration,
+                            const KmtppOptions& options,
+                            const Vec3& target_mm,
+                            std::vector<KmtppStep>* trace = nullptr);
 
 }  // namespace volcomp::model

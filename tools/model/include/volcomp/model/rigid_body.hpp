@@ -1,35 +1,16 @@
 // The 21-parameter rigid-body error model of a three-axis machine (ISO 230-1 style) and its
-// inverse.
-//
-// Per axis K (X, Y, Z): three linear error functions E_XK, E_YK, E_ZK and three angular ones
-// E_AK, E_BK, E_CK of that axis's own position (AxisErrorTable); three squareness errors; a tool
-// offset; a kinematic chain. This is the model the table builders invert and the host simulator
-// uses as its machine.
-//
-// Sign conventions (documented in docs/table-builders.md):
-//   * Every error is "actual minus nominal" of the tool point relative to the workpiece.
-//   * An axis's error functions describe the motion of the tool side relative to the workpiece side
-//     produced by that axis alone ("relative", as a laser interferometer between spindle and table
-//     measures them). With KinematicChain::workpiece_errors = kCarriage, the functions of the
-//     workpiece-carrying axes are the table carriage's own motion instead and are negated.
-//   * Squareness: X is the reference. C0Y = rotation of the Y axis line about +z, so the Y
-//   direction
-//     is (−sin C0Y, cos C0Y, 0) and the X–Y angle is 90° + C0Y. B0Z and A0Z rotate the Z line about
-//     +y and +x: Z direction = Ry(B0Z)·Rx(A0Z)·(0,0,1) ≈ (B0Z, −A0Z, 1).
-//   * The angular errors of an axis act on everything the chain puts after it (toward the tool):
-//     lever arm = nominal positions of the later axes + tool offset, measured from the common
-//     reference point where all commands are 0 (where the error tables were measured).
-//
-// Physical formulation (default): P(q) = M_1(M_2(M_3(r))), M_j(x) = R_j·x + q_j·d_j + δ_j, in chain
-// order from the workpiece to the tool; nominal P = q + r; error = P − (q + r). kSecond uses exact
-// finite rotations (exponential map of (E_A, E_B, E_C)) and exact squareness directions; kFirst
-// keeps only terms linear in the errors: Σ_j [δ_j + ε_j × a_j] + Σ_j q_j·(d_j − e_j).
-// Dissertation formulation: see dissertation.hpp (tool vector r = tool_offset).
+// inverse: per axis X, Y, Z six error functions of its own position (AxisErrorTable), three
+// squareness errors, a tool offset and a kinematic chain; the physical formulation (exact
+// rotations or first order) or the dissertation's (dissertation.hpp). The host simulator uses it
+// as its machine. Every error is actual − nominal of the tool point relative to the workpiece; the
+// sign, squareness and chain conventions and the formulas are in docs/table-builders.md §2.
+// Lengths mm, linear errors µm, angles µrad.
 #pragma once
 
 #include <array>
 #include <string>
 
+#include "volcomp/hosted/expected.hpp"
 #include "volcomp/model/axis_table.hpp"
 #include "volcomp/model/dissertation.hpp"
 #include "volcomp/model/vec3.hpp"
@@ -57,8 +38,9 @@ struct KinematicChain {
 
   /// Builds a chain from axis letters: `workpiece_axes` from the workpiece down to the base
   /// (first letter carries the workpiece), `tool_axes` from the base up to the tool (last letter
-  /// carries the tool). Each of X, Y, Z exactly once; throws std::invalid_argument otherwise.
-  static KinematicChain Parse(const std::string& workpiece_axes, const std::string& tool_axes);
+  /// carries the tool). Each of X, Y, Z exactly once; kInvalidArgument otherwise.
+  static Expected<KinematicChain> Parse(const std::string& workpiece_axes,
+                                        const std::string& tool_axes);
   /// The chain written back as "workpiece_axes|tool_axes" letters, e.g. "Y|XZ".
   std::string ToString() const;
 };
@@ -75,8 +57,12 @@ struct Model {
   double angle_scale = 1.0;  // multiplies every angular error (the dissertation's k)
 };
 
-/// Throws std::invalid_argument naming the problem (empty tables, bad chain, non-finite values).
-void ValidateModel(const Model& model);
+/// Success, or kInvalidArgument naming the problem (empty tables, bad chain, non-finite values).
+Outcome ValidateModel(const Model& model);
+
+/// The model's formulation, order and chain in words, for reports ("physical, exact rotations,
+/// chain |XYZ").
+std::string DescribeModel(const Model& model);
 
 /// Error of the tool point (actual − nominal, µm) when the machine is commanded to `command_mm`.
 /// Cheap: three table lookups and a few dozen flops (plus 3 sin/cos pairs for kSecond).

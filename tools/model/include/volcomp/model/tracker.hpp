@@ -1,29 +1,19 @@
 // Laser-tracker point-set methods of the dissertation's chapter 2: tangential static, interval and
-// quasi-differential correction (Pimushkin 2023, §2.1-2.3, eqs. 2.2-2.18, Appendices Б, В, Г).
-//
-// Data: three straight measurement lines through a common origin, one per axis (the X line at
-// commanded y = z = 0, etc.), with nodes every u mm (Tables 2.2-2.4, 2.6-2.8, 2.10-2.12). Node 0 is
-// the origin (commanded 0). Interval i runs from node i to node i+1; its direction vector CC[i]
-// is printed in the row of node i+1.
-//
-// Direction vectors (CosineSource):
-//   kPrinted  the cosines as printed: every sign dropped (digest ch.1-2 E1). Reproduces the
-//             appendices' numbers; physically wrong wherever a true cosine is negative.
-//   kSigned   unit vectors recomputed from the tracker coordinates (the dissertation's method done
-//             right). Like the dissertation, ignores along-axis (scale) error: the encoder travel
-//             q is assumed to be the true path length.
-//   kScaled   the un-normalised displacement per commanded mm, (P_{i+1} − P_i)/u: goes beyond the
-//             author by also correcting along-axis (positioning) error; with the measured origin,
-//             the implied forward model passes exactly through every measured node. Only
-//             meaningful with the quasi-differential method (which integrates the steps): static
-//             and interval would stretch one interval's step length over the whole travel.
-// Lengths in mm throughout.
+// quasi-differential correction (Pimushkin 2023, §2.1-2.3, eqs. 2.2-2.18, Appendices Б, В, Г), on
+// three straight measurement lines through a common origin, one per axis, nodes every u mm from
+// commanded 0. Interval i runs from node i to node i+1; its direction vector is printed in the row
+// of node i+1. The direction vectors are the printed cosines (signs dropped, as printed), unit
+// vectors recomputed from the readings (signed) or the displacement per commanded mm (scaled, only
+// meaningful with the quasi-differential method); docs/table-builders.md §4 compares them.
+// Lengths in mm. Invalid data and singular direction matrices are failures (kInvalidArgument,
+// kInputInvalid), never exceptions.
 #pragma once
 
 #include <array>
 #include <string>
 #include <vector>
 
+#include "volcomp/hosted/expected.hpp"
 #include "volcomp/model/inverse.hpp"
 #include "volcomp/model/vec3.hpp"
 
@@ -41,13 +31,9 @@ struct TrackerData {
   bool has_printed_cosines = false;
 };
 
-/// Throws std::invalid_argument unless every line has ≥ 3 nodes, starts at q = 0 and has
-/// equally spaced, increasing q.
-void ValidateTrackerData(const TrackerData& data);
-
-/// Tables 2.10-2.12 (315 mm cube, the data of Appendices Б-Г) and 2.6-2.8 (240 mm cube).
-TrackerData S500Tracker315();
-TrackerData S500Tracker240();
+/// kInvalidArgument unless every line has ≥ 3 nodes, starts at q = 0 and has equally spaced,
+/// increasing q.
+Outcome ValidateTrackerData(const TrackerData& data);
 
 enum class CosineSource { kPrinted, kSigned, kScaled };
 enum class OriginSource { kExtrapolated, kMeasured };
@@ -84,8 +70,9 @@ struct TrackerQuasiResult {
 /// The direction-vector field of one data set, precomputed, and the three methods on it.
 class TrackerModel {
  public:
-  /// Throws std::invalid_argument for invalid data or kPrinted without printed cosines.
-  TrackerModel(const TrackerData& data, const TrackerOptions& options);
+  /// kInvalidArgument for invalid data, kPrinted without printed cosines, two equal consecutive
+  /// nodes or a static interval outside the data.
+  static Expected<TrackerModel> Create(const TrackerData& data, const TrackerOptions& options);
 
   int intervals(int axis) const { return static_cast<int>(cc_[axis].size()); }
   double step_mm(int axis) const { return step_mm_[axis]; }
@@ -97,13 +84,13 @@ class TrackerModel {
   Vec3 OriginFromXInterval(int i) const;
   const TrackerOptions& options() const { return options_; }
 
-  // The three methods throw std::runtime_error if their direction matrix is singular.
+  // The three methods fail (kInputInvalid) when their direction matrix is singular.
   /// Appendix Б: one calibration matrix from interval `static_interval` of each axis.
-  TrackerStaticResult Static(const Vec3& target_mm) const;
+  Expected<TrackerStaticResult> Static(const Vec3& target_mm) const;
   /// Appendix В: the target's cell; discontinuous at cell borders (11-41 µm on the 315 data).
-  TrackerIntervalResult Interval(const Vec3& target_mm) const;
+  Expected<TrackerIntervalResult> Interval(const Vec3& target_mm) const;
   /// Appendix Г / eqs. 2.15-2.18: completed intervals summed, the last one solved for.
-  TrackerQuasiResult QuasiDifferential(const Vec3& target_mm) const;
+  Expected<TrackerQuasiResult> QuasiDifferential(const Vec3& target_mm) const;
 
   /// The forward map the quasi-differential method assumes (separable, piecewise linear, knots at
   /// the nodes): r(q) = r01 + Σ_axes [Σ_{i<m} u·CC[i] + (q − m·u)·CC[m]]; linear extrapolation
@@ -115,6 +102,8 @@ class TrackerModel {
   InverseSolution ExactInverse(const Vec3& target_mm, double tolerance_mm = 1e-8) const;
 
  private:
+  TrackerModel(const TrackerData& data, const TrackerOptions& options)
+      : data_(data), options_(options) {}
   int CellIndex(int axis, double value_mm) const;
 
   TrackerData data_;

@@ -11,19 +11,18 @@
 // node positions, which passes through every measurement and keeps every cross-axis term.
 //
 // Data: the commanded node (x, y, z) and the averaged tracker reading (mm, tracker frame
-// registered so that the datum reads its command). CSV (`volcomp build tracker --lattice FILE`):
-// columns x_cmd_mm, y_cmd_mm, z_cmd_mm, x_mm, y_mm, z_mm, every node of an equally spaced lattice
-// exactly once (≥ 2 nodes per axis), any order; other columns ignored.
-// Lengths in mm.
+// registered so that the datum reads its command); the file format is in
+// volcomp/datasets/tracker_csv.hpp. Lengths in mm.
 #pragma once
 
 #include <string>
+#include <utility>
 #include <vector>
 
-#include "volcomp/model/grid.hpp"
+#include "volcomp/hosted/expected.hpp"
 #include "volcomp/model/inverse.hpp"
+#include "volcomp/model/lattice.hpp"
 #include "volcomp/model/vec3.hpp"
-#include "volcomp/tools/csv.hpp"
 
 namespace volcomp::model {
 
@@ -33,14 +32,11 @@ struct TrackerLatticeData {
   std::vector<Vec3> position_mm;  // reading at each node, x fastest (CorrectionGrid order)
 };
 
-TrackerLatticeData TrackerLatticeFromCsv(const tools::CsvTable& csv);
-TrackerLatticeData LoadTrackerLatticeCsv(const std::string& path);
-
 class TrackerLattice {
  public:
-  /// Throws std::invalid_argument unless every axis has ≥ 2 nodes at a positive spacing, the
-  /// readings number nx·ny·nz and are finite.
-  explicit TrackerLattice(TrackerLatticeData data);
+  /// kInvalidArgument unless every axis has ≥ 2 nodes at a positive spacing, the readings number
+  /// nx·ny·nz and are finite.
+  static Expected<TrackerLattice> Create(TrackerLatticeData data);
 
   const TrackerLatticeData& data() const { return data_; }
 
@@ -51,6 +47,7 @@ class TrackerLattice {
   InverseSolution ExactInverse(const Vec3& target_mm, double tolerance_mm = 1e-8) const;
 
  private:
+  explicit TrackerLattice(TrackerLatticeData data) : data_(std::move(data)) {}
   TrackerLatticeData data_;
 };
 

@@ -1,9 +1,12 @@
 // A self-contained HTML report page: headings, paragraphs, tables, preformatted text and inline
 // SVG, with a small embedded stylesheet. No external resources, so the file can be archived.
+// File failures are returned (kIoError, naming the path), never thrown.
 #pragma once
 
 #include <string>
 #include <vector>
+
+#include "volcomp/hosted/expected.hpp"
 
 namespace volcomp::report {
 
@@ -24,16 +27,16 @@ class HtmlPage {
   void Figure(const std::string& svg, const std::string& caption);
 
   std::string Render() const;
-  /// Writes Render() to `path`; throws std::runtime_error naming the path on failure.
-  void WriteFile(const std::string& path) const;
+  /// Writes Render() to `path`.
+  Outcome WriteFile(const std::string& path) const;
 
  private:
   std::string title_;
   std::string body_;
 };
 
-/// Creates `dir` (and parents) if needed and returns dir + "/" + file_name; throws
-/// std::runtime_error naming the directory when it cannot be created.
-std::string PrepareReportPath(const std::string& dir, const std::string& file_name);
+/// Creates `dir` (and parents) if needed and returns dir + "/" + file_name; a failure naming the
+/// directory when it cannot be created.
+Expected<std::string> PrepareReportPath(const std::string& dir, const std::string& file_name);
 
 }  // namespace volcomp::report

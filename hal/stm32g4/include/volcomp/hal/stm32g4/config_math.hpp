@@ -7,9 +7,9 @@
 
 #include <cstdint>
 
+#include "volcomp/base/status.hpp"
 #include "volcomp/config/board_config.hpp"
 #include "volcomp/hal/stm32g4/registers.hpp"
-#include "volcomp/base/status.hpp"
 #include "volcomp/output/step_generator.hpp"
 
 namespace volcomp::stm32g4 {

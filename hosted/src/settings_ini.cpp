@@ -1,0 +1,328 @@
+// The board's settings as INI sections: keys from the setting rows, reader, writer.
+#include "volcomp/hosted/settings_ini.hpp"
+
+#include <cctype>
+#include <cstdio>
+#include <sstream>
+
+#include "volcomp/table/table_format.hpp"
+
+namespace volcomp::hosted {
+namespace {
+
+using canopen::ObjectEntry;
+using canopen::ObjectId;
+
+// The rows' file keys (their VOLCOMP_OD_KEY), expanded from od_entries.def: one per [board]
+// setting and one per axis array (its axis-1 element). Here rather than in lib/canopen's setting
+// table so the firmware images do not carry the texts.
+struct KeyRow {
+  ObjectId id;
+  const char* key;
+  SettingForm form;
+  const char* unit;
+  bool per_axis;
+};
+// clang-format off
+#define VOLCOMP_OD_KEY(key, form, unit) (key, form, unit)
+#define VOLCOMP_OD_KEY_FIELDS(key, form, unit) key, SettingForm::form, unit
+#define VOLCOMP_OD_OBJECT(index, kind, name)
+#define VOLCOMP_OD_ENTRY(id, index, sub, type, access, def, name)
+#define VOLCOMP_OD_SETTING(id, index, sub, type, limits, def, field, key, name)                \
+  {ObjectId::id, VOLCOMP_OD_KEY_FIELDS key, false},
+#define VOLCOMP_OD_AXIS_SETTING(id, index, type, limits, field, key, name)                     \
+  {ObjectId::id##1, VOLCOMP_OD_KEY_FIELDS key, true},
+const KeyRow kKeyRows[] = {
+#include "volcomp/canopen/od_entries.def"  // NOLINT(build/include)
+};
+#undef VOLCOMP_OD_OBJECT
+#undef VOLCOMP_OD_ENTRY
+#undef VOLCOMP_OD_SETTING
+#undef VOLCOMP_OD_AXIS_SETTING
+#undef VOLCOMP_OD_KEY_FIELDS
+#undef VOLCOMP_OD_KEY
+// clang-format on
+
+const std::vector<std::string> kAxisKinds = {"linear", "rotary"};
+const std::vector<std::string> kPulseFormats = {"step_dir", "cw_ccw", "quadrature"};
+
+ObjectId AxisId(ObjectId first, uint32_t axis) {
+  return static_cast<ObjectId>(static_cast<uint16_t>(first) + axis);
+}
+
+// " of 2015:1 (Max correction steps axis 1)": whose limit a value broke.
+std::string OfObject(const ObjectEntry& e) {
+  return " of " + ObjectAddress(e) + " (" + e.name + ")";
+}
+
+void Set(BoardSettings* s, ObjectId id, int64_t v) { canopen::FindSetting(id)->set(*s, v); }
+
+IniExpected<int64_t> ReadValue(const IniDocument& doc,
+                               const IniEntry& e,
+                               const SettingKey& k,
+                               const ObjectEntry& object) {
+  const canopen::ValueRange r = canopen::EntryRange(object);
+  switch (k.form) {
+    case SettingForm::kUnitsPerStep:
+      return ReadDecimalE9(doc, e, r.low, r.high, OfObject(object));
+    case SettingForm::kAxisKind: {
+      VOLCOMP_TRY_ASSIGN(const size_t i, ReadChoice(doc, e, kAxisKinds));
+      return static_cast<int64_t>(i);
+    }
+    case SettingForm::kPulseFormat: {
+      VOLCOMP_TRY_ASSIGN(const size_t i, ReadChoice(doc, e, kPulseFormats));
+      return static_cast<int64_t>(i);
+    }
+    default:
+      return ReadInteger(doc, e, r.low, r.high, OfObject(object));
+  }
+}
+
+// [board] axes: the axis names in board order.
+IniExpected<std::vector<char>> ReadAxisNames(const IniDocument& doc, const IniEntry& e) {
+  std::vector<char> out;
+  std::istringstream in(e.value);
+  const std::string valid = table::kAxisNames;
+  for (std::string n; in >> n;) {
+    if (n.size() == 1) n[0] = static_cast<char>(std::toupper(static_cast<unsigned char>(n[0])));
+    if (n.size() != 1 || valid.find(n[0]) == std::string::npos) {
+      return doc.FailKey(e, "'" + n + "' is not an axis name (" + valid + ")");
+    }
+    for (char o : out) {
+      if (o == n[0]) return doc.FailKey(e, n + " given twice");
+    }
+    out.push_back(n[0]);
+  }
+  if (out.empty()) return doc.FailKey(e, "expected the axis names in board order, e.g. X Y Z");
+  return out;
+}
+
+// The [axis] section of the axis `name`.
+const IniSection* AxisSection(const IniDocument& doc, char name) {
+  return doc.Find("axis", std::string(1, name));
+}
+
+std::vector<SettingKey> MakeKeys() {
+  std::vector<SettingKey> keys;
+  for (const KeyRow& r : kKeyRows) {
+    if (r.form == SettingForm::kAxisName) continue;  // the names are part of `axes`
+    keys.push_back({r.key, r.per_axis, r.id, r.form, r.unit});
+  }
+  return keys;
+}
+
+}  // namespace
+
+const std::vector<SettingKey>& SettingKeys() {
+  static const std::vector<SettingKey> kKeys = MakeKeys();
+  return kKeys;
+}
+
+const SettingKey* SettingKeyOf(ObjectId id) {
+  const canopen::SettingObject* s = canopen::FindSetting(id);
+  if (s == nullptr) return nullptr;
+  // An array element: its array's key, found by the axis-1 element.
+  const ObjectId first = s->axis == canopen::kBoardSetting
+                             ? id
+                             : static_cast<ObjectId>(static_cast<uint16_t>(id) - s->axis);
+  for (const KeyRow& r : kKeyRows) {
+    if (r.id != first) continue;
+    for (const SettingKey& k : SettingKeys()) {
+      if (r.form == SettingForm::kAxisName ? k.form == SettingForm::kAxisNames : k.id == first) {
+        return &k;
+      }
+    }
+  }
+  return nullptr;
+}
+
+std::string FormatSettingValue(const SettingKey& key, int64_t v) {
+  switch (key.form) {
+    case SettingForm::kAxisNames:
+    case SettingForm::kAxisName:
+      return v > 32 && v < 127 ? std::string(1, static_cast<char>(v)) : "#" + std::to_string(v);
+    case SettingForm::kUnitsPerStep:
+      return FormatDecimalE9(v);
+    case SettingForm::kAxisKind:
+      return v >= 0 && v < 2 ? kAxisKinds[static_cast<size_t>(v)] : std::to_string(v);
+    case SettingForm::kPulseFormat:
+      return v >= 0 && v < 3 ? kPulseFormats[static_cast<size_t>(v)] : std::to_string(v);
+    default:
+      return std::to_string(v);
+  }
+}
+
+std::string ObjectAddress(const ObjectEntry& e) {
+  char text[16];
+  std::snprintf(text, sizeof text, "%04X:%u", e.index, e.sub);
+  return text;
+}
+
+std::string LimitViolation(const ObjectEntry& e, int64_t v) {
+  const canopen::ValueRange r = canopen::EntryRange(e);
+  return RangeViolation(v, r.low, r.high);
+}
+
+IniOutcome ReadSettings(const IniDocument& doc, BoardSettings* s, const SettingsIniExtras& extras) {
+  std::vector<char> names = {'X', 'Y', 'Z'};
+  int names_line = 0;
+  std::vector<IniKey> board_keys;
+  for (const SettingKey& k : SettingKeys()) {
+    if (k.per_axis) continue;
+    if (k.form == SettingForm::kAxisNames) {
+      board_keys.push_back({k.key, [&](const IniEntry& e) -> IniOutcome {
+                              VOLCOMP_TRY_ASSIGN(names, ReadAxisNames(doc, e));
+                              names_line = e.line;
+                              return IniOutcome::Ok();
+                            }});
+      continue;
+    }
+    board_keys.push_back({k.key, [&doc, s, k](const IniEntry& e) -> IniOutcome {
+                            VOLCOMP_TRY_ASSIGN(const int64_t v,
+                                               ReadValue(doc, e, k, canopen::Entry(k.id)));
+                            Set(s, k.id, v);
+                            return IniOutcome::Ok();
+                          }});
+  }
+  board_keys.insert(board_keys.end(), extras.board.begin(), extras.board.end());
+  VOLCOMP_TRY(ReadKeys(doc, doc.Find("board"), board_keys));
+
+  const ObjectEntry& count = canopen::Entry(ObjectId::kAxisCountConfig);
+  if (const std::string why = LimitViolation(count, static_cast<int64_t>(names.size()));
+      !why.empty()) {
+    return doc.FailAt(names_line, "axes: " + std::to_string(names.size()) + " axes, " + why);
+  }
+  Set(s, ObjectId::kAxisCountConfig, static_cast<int64_t>(names.size()));
+  for (const IniSection& sec : doc.sections()) {
+    if (sec.name != "axis") continue;
+    bool listed = false;
+    for (char n : names) listed = listed || AxisSection(doc, n) == &sec;
+    if (!listed) return doc.FailAt(sec.line, sec.Title() + " is not one of [board] axes");
+  }
+  for (uint8_t a = 0; a < names.size(); ++a) {
+    const IniSection* sec = AxisSection(doc, names[a]);
+    if (sec == nullptr) {
+      return doc.FailAt(names_line, std::string("axes: no [axis ") + names[a] + "] section");
+    }
+    Set(s, AxisId(ObjectId::kAxisName1, a), names[a]);
+    std::vector<IniKey> keys;
+    for (const SettingKey& k : SettingKeys()) {
+      if (!k.per_axis) continue;
+      const ObjectId id = AxisId(k.id, a);
+      keys.push_back({k.key, [&doc, s, k, id](const IniEntry& e) -> IniOutcome {
+                        VOLCOMP_TRY_ASSIGN(const int64_t v,
+                                           ReadValue(doc, e, k, canopen::Entry(id)));
+                        Set(s, id, v);
+                        return IniOutcome::Ok();
+                      }});
+    }
+    if (extras.axis) {
+      const std::vector<IniKey> more = extras.axis(a);
+      keys.insert(keys.end(), more.begin(), more.end());
+    }
+    VOLCOMP_TRY(ReadKeys(doc, sec, keys));
+  }
+  return IniOutcome::Ok();
+}
+
+std::string ConsistencyProblem(const BoardSettings& s) {
+  if (ValidateSettings(s).ok()) return "";
+  for (uint8_t n = 1; n <= s.board.axis_count && n <= table::kMaxAxes; ++n) {
+    BoardSettings first = s;
+    first.board.axis_count = n;
+    if (ValidateSettings(first).ok()) continue;
+    const AxisConfig& ax = s.board.axis[n - 1];
+    const std::string axis = std::string("[axis ") + ax.name + "]";
+    const uint32_t divider = CompensationDivider(s.board.tick_hz);
+    if (!AxisLimiterParams(ax, s.board.tick_hz).ok()) {
+      return axis + ": max_rate " + std::to_string(ax.max_correction_rate_steps_s) +
+             " and max_accel " + std::to_string(ax.max_correction_accel_steps_s2) +
+             " do not fit tick_hz " + std::to_string(s.board.tick_hz) +
+             " (the compensation rate f = tick_hz / " + std::to_string(divider) +
+             ": both above 0, max_accel at least f^2 / 2^32 and below f^2 steps/s2, max_rate at "
+             "least max_accel / f)";
+    }
+    BoardSettings faster = first;
+    faster.board.axis[n - 1].drive.max_rate_hz = 0xFFFFFFFFu;
+    if (ValidateSettings(faster).ok()) {
+      return axis + ": drive_max_rate_hz " + std::to_string(ax.drive.max_rate_hz) +
+             " is below max_input_rate_hz + max_rate = " +
+             std::to_string(uint64_t{ax.max_input_rate_hz} + ax.max_correction_rate_steps_s) +
+             " (the output must keep up with the fastest input plus the fastest correction)";
+    }
+    return axis + ": refused by the board's consistency rules (ValidateSettings)";
+  }
+  return "the [board] values are refused by the board's consistency rules (ValidateSettings)";
+}
+
+IniOutcome CheckSettings(const IniDocument& doc, const BoardSettings& s) {
+  const std::string why = ConsistencyProblem(s);
+  if (why.empty()) return IniOutcome::Ok();
+  // The [axis] section of the axis the rules stop at (the file as a whole if none).
+  int line = 0;
+  for (uint8_t n = 1; n <= s.board.axis_count && n <= table::kMaxAxes && line == 0; ++n) {
+    BoardSettings first = s;
+    first.board.axis_count = n;
+    if (ValidateSettings(first).ok()) continue;
+    const IniSection* sec = AxisSection(doc, s.board.axis[n - 1].name);
+    line = sec != nullptr ? sec->line : 0;
+    break;
+  }
+  return doc.FailAt(line, why);
+}
+
+IniExpected<BoardSettings> ParseSettingsIni(const std::string& text, const std::string& source) {
+  VOLCOMP_TRY_ASSIGN(const IniDocument doc, IniDocument::Parse(text, source));
+  VOLCOMP_TRY(doc.CheckSections({"board", "axis NAME"}));
+  BoardSettings s;  // the factory settings
+  VOLCOMP_TRY(ReadSettings(doc, &s));
+  VOLCOMP_TRY(CheckSettings(doc, s));
+  return s;
+}
+
+IniExpected<BoardSettings> ReadSettingsIniFile(const std::string& path) {
+  VOLCOMP_TRY_ASSIGN(const IniDocument doc, IniDocument::ReadFile(path));
+  VOLCOMP_TRY(doc.CheckSections({"board", "axis NAME"}));
+  BoardSettings s;
+  VOLCOMP_TRY(ReadSettings(doc, &s));
+  VOLCOMP_TRY(CheckSettings(doc, s));
+  return s;
+}
+
+void WriteSettings(IniWriter& w, const BoardSettings& s, const SettingsIniWriteExtras& extras) {
+  const auto comment = [](ObjectId id, const SettingKey& k) {
+    return ObjectAddress(canopen::Entry(id)) + " " + k.unit;
+  };
+  w.Section("board");
+  for (const SettingKey& k : SettingKeys()) {
+    if (k.per_axis) continue;
+    if (k.form == SettingForm::kAxisNames) {
+      std::string names;
+      for (uint8_t a = 0; a < s.board.axis_count; ++a) {
+        names += (a == 0 ? "" : " ") + FormatSettingValue(k, s.board.axis[a].name);
+      }
+      w.Key(k.key, names, comment(k.id, k));
+      continue;
+    }
+    w.Key(k.key, FormatSettingValue(k, canopen::FindSetting(k.id)->get(s)), comment(k.id, k));
+  }
+  if (extras.board) extras.board(w);
+  for (uint8_t a = 0; a < s.board.axis_count; ++a) {
+    w.Section(std::string("axis ") + s.board.axis[a].name);
+    for (const SettingKey& k : SettingKeys()) {
+      if (!k.per_axis) continue;
+      const ObjectId id = AxisId(k.id, a);
+      w.Key(k.key, FormatSettingValue(k, canopen::FindSetting(id)->get(s)), comment(id, k));
+    }
+    if (extras.axis) extras.axis(w, a);
+  }
+}
+
+std::string FormatSettingsIni(const BoardSettings& s, const std::vector<std::string>& header) {
+  IniWriter w;
+  for (const std::string& h : header) w.Comment(h);
+  WriteSettings(w, s);
+  return w.text();
+}
+
+}  // namespace volcomp::hosted

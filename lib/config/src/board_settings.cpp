@@ -1,0 +1,158 @@
+// Board settings: validation and the stored record.
+#include "volcomp/config/board_settings.hpp"
+
+#include "volcomp/base/byte_order.hpp"
+
+namespace volcomp {
+namespace {
+constexpr uint32_t kMagic = 0x47464356;  // "VCFG"
+// 2: the EMCY inhibit time in the slot after the heartbeat; 3: each axis's direction hysteresis
+// in its reserved 16-bit slot (older records: the default).
+constexpr uint16_t kVersion = 3;
+constexpr uint16_t kVersionWithoutHysteresis = 2;
+constexpr uint16_t kVersionWithoutInhibit = 1;
+
+class Writer {
+ public:
+  explicit Writer(uint8_t* p) : p_(p) {}
+  void U8(uint8_t v) { *p_++ = v; }
+  void U16(uint16_t v) {
+    StoreLe16(p_, v);
+    p_ += 2;
+  }
+  void U32(uint32_t v) {
+    StoreLe32(p_, v);
+    p_ += 4;
+  }
+  void I32(int32_t v) { U32(static_cast<uint32_t>(v)); }
+
+ private:
+  uint8_t* p_;
+};
+
+class Reader {
+ public:
+  explicit Reader(const uint8_t* p) : p_(p) {}
+  uint8_t U8() { return *p_++; }
+  uint16_t U16() {
+    const uint16_t v = LoadLe16(p_);
+    p_ += 2;
+    return v;
+  }
+  uint32_t U32() {
+    const uint32_t v = LoadLe32(p_);
+    p_ += 4;
+    return v;
+  }
+  int32_t I32() { return static_cast<int32_t>(U32()); }
+
+ private:
+  const uint8_t* p_;
+};
+}  // namespace
+
+Status ValidateSettings(const BoardSettings& s, ConfigFinding* finding) {
+  ConfigFinding f;
+  if (s.node_id < 1 || s.node_id > 127) {
+    f.rule = ConfigRule::kNodeId;
+  } else if (s.bitrate_kbit < 10 || s.bitrate_kbit > 1000) {
+    f.rule = ConfigRule::kBitrate;
+  }
+  if (f.rule == ConfigRule::kNone) {
+    const Status b = ValidateBoardConfig(s.board, &f);
+    if (finding != nullptr) *finding = f;
+    return b;
+  }
+  if (finding != nullptr) *finding = f;
+  return Error::kConfigInvalid;
+}
+
+void SerializeSettings(const BoardSettings& s, uint8_t* out) {
+  for (uint32_t i = 0; i < kSettingsBytes; ++i) out[i] = 0;
+  Writer w(out);
+  w.U32(kMagic);
+  w.U16(kVersion);
+  w.U16(static_cast<uint16_t>(kSettingsBytes));
+  w.U8(s.node_id);
+  w.U8(s.board.axis_count);
+  w.U16(s.bitrate_kbit);
+  w.U16(s.heartbeat_ms);
+  w.U16(s.emcy_inhibit_100us);
+  w.U32(s.board.tick_hz);
+  w.U32(s.board.pulse_clock_hz);
+  for (uint32_t a = 0; a < table::kMaxAxes; ++a) {
+    const AxisConfig& x = s.board.axis[a];
+    w.U8(static_cast<uint8_t>(x.name));
+    w.U8(static_cast<uint8_t>(x.kind));
+    w.U8(static_cast<uint8_t>(x.input_format));
+    w.U8(static_cast<uint8_t>(x.output_format));
+    w.U8(x.invert_input_dir ? 1 : 0);
+    w.U8(x.input_counter_bits);
+    w.U16(x.direction_hysteresis_steps);
+    w.U32(x.resolution_e9);
+    w.U32(x.drive.pulse_width_ns);
+    w.U32(x.drive.step_space_ns);
+    w.U32(x.drive.dir_setup_ns);
+    w.U32(x.drive.dir_hold_ns);
+    w.U32(x.drive.max_rate_hz);
+    w.U32(x.max_input_rate_hz);
+    w.I32(x.max_correction_steps);
+    w.U32(x.max_correction_rate_steps_s);
+    w.U32(x.max_correction_accel_steps_s2);
+    w.I32(x.home_position_steps);
+    w.U32(0);
+    w.U32(0);
+    w.U32(0);
+  }
+}
+
+Status DeserializeSettings(const uint8_t* in, uint32_t size, BoardSettings* out) {
+  if (size < kSettingsBytes) return Error::kConfigInvalid;
+  Reader r(in);
+  if (r.U32() != kMagic) return Error::kConfigInvalid;
+  const uint16_t version = r.U16();
+  if ((version != kVersion && version != kVersionWithoutHysteresis &&
+       version != kVersionWithoutInhibit) ||
+      r.U16() != kSettingsBytes) {
+    return Error::kConfigInvalid;
+  }
+  BoardSettings s;
+  s.node_id = r.U8();
+  s.board.axis_count = r.U8();
+  s.bitrate_kbit = r.U16();
+  s.heartbeat_ms = r.U16();
+  const uint16_t inhibit = r.U16();
+  if (version != kVersionWithoutInhibit) s.emcy_inhibit_100us = inhibit;
+  s.board.tick_hz = r.U32();
+  s.board.pulse_clock_hz = r.U32();
+  for (uint32_t a = 0; a < table::kMaxAxes; ++a) {
+    AxisConfig& x = s.board.axis[a];
+    x.name = static_cast<char>(r.U8());
+    x.kind = static_cast<table::AxisKind>(r.U8());
+    x.input_format = static_cast<PulseFormat>(r.U8());
+    x.output_format = static_cast<PulseFormat>(r.U8());
+    x.invert_input_dir = r.U8() != 0;
+    x.input_counter_bits = r.U8();
+    const uint16_t hysteresis = r.U16();
+    if (version == kVersion) x.direction_hysteresis_steps = hysteresis;
+    x.resolution_e9 = r.U32();
+    x.drive.pulse_width_ns = r.U32();
+    x.drive.step_space_ns = r.U32();
+    x.drive.dir_setup_ns = r.U32();
+    x.drive.dir_hold_ns = r.U32();
+    x.drive.max_rate_hz = r.U32();
+    x.max_input_rate_hz = r.U32();
+    x.max_correction_steps = r.I32();
+    x.max_correction_rate_steps_s = r.U32();
+    x.max_correction_accel_steps_s2 = r.U32();
+    x.home_position_steps = r.I32();
+    r.U32();
+    r.U32();
+    r.U32();
+  }
+  VOLCOMP_TRY(ValidateSettings(s));
+  *out = s;
+  return Status::Ok();
+}
+
+}  // namespace volcomp

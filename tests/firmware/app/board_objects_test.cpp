@@ -1,0 +1,703 @@
+// The board application's CANopen node end to end on the mock HAL: table upload by block
+// download, activation rules (0x08000022), write protection (0x08000020), status objects, EMCY,
+// stored settings and NMT reset.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <functional>
+#include <optional>
+
+#include "frames.hpp"
+#include "test_tables.hpp"
+#include "volcomp/canopen/board_protocol.hpp"
+#include "volcomp/canopen/object_dictionary.hpp"
+#include "volcomp/canopen/sdo_abort.hpp"
+#include "volcomp/canopen_client/node_objects.hpp"
+#include "volcomp/canopen_client/sdo_client.hpp"
+#include "volcomp/canopen_client/table_staging.hpp"
+#include "volcomp/firmware/board_app.hpp"
+#include "volcomp/firmware/step_dir_io.hpp"
+#include "volcomp/hal/mock/mock_devices.hpp"
+#include "volcomp/hal/mock/mock_step_io.hpp"
+#include "volcomp/tools/hex.hpp"
+
+namespace volcomp {
+namespace {
+
+using canopen::ObjectId;
+using canopen::TableCommand;
+using canopen_client::SdoClient;
+using TransferResult = canopen_client::SdoExpected<std::vector<uint8_t>>;
+using hal::InputLine;
+
+constexpr uint8_t kNode = 0x10;
+
+testing::AlignedBytes UniformImage(double cx, uint32_t id, uint32_t resolution_y = 1000000) {
+  testing::GridCase g;
+  g.frac_bits = 8;
+  for (auto& d : g.dim) d = {8, -100000, 30000};
+  for (size_t i = 0; i < g.count(); i += 3) {
+    g.i16.push_back(static_cast<int16_t>(cx * 256));
+    g.i16.push_back(0);
+    g.i16.push_back(0);
+  }
+  g.steps.assign(g.i16.size(), 0);
+  testing::AlignedBytes img = testing::WriteGridImage(g, id);
+  if (resolution_y != 1000000) {
+    StoreLe32(img.data() + 24 + 8 + 4 + 8 + 4, resolution_y);
+    testing::FixCrc(img);
+  }
+  return img;
+}
+
+class Bench : public ::testing::Test {
+ protected:
+  Bench()
+      : config_(DefaultBoardConfig()),
+        io_(&clock_, nullptr),
+        tables_(256 * 1024, 2048, 8, &clock_, nullptr),
+        settings_(8 * 1024, 2048, 8, &clock_, nullptr),
+        can_(&clock_, nullptr, 256),
+        step_io_(config_, nullptr),
+        tick_io_(&step_io_),
+        app_({&tick_io_, &io_, &tables_, &settings_, &can_, &clock_}) {}
+
+  void Boot() {
+    ASSERT_TRUE(app_.Start(config_).ok());
+    io_.SetInput(InputLine::kEnable, true);
+    Step(100);
+    can_.TakeSent();
+  }
+  // Runs `ticks` 20 us ticks with a main-loop pass every 50 ticks (1 ms).
+  void Step(int ticks) {
+    for (int i = 0; i < ticks; ++i) {
+      step_io_.set_tick_start_ns(clock_.now());
+      app_.Tick();
+      if (++tick_count_ % 50 == 0) app_.Poll();
+      clock_.Advance(20000);
+    }
+  }
+  TransferResult Run(SdoClient& c) {
+    while (!c.done()) {
+      CanFrame f;
+      while (c.PopTx(&f)) can_.Inject(f);
+      Step(50);
+      for (const CanFrame& r : can_.TakeSent()) {
+        sent_.push_back(r);
+        c.OnFrame(r, clock_.now() / 1000);
+      }
+      c.Poll(clock_.now() / 1000);
+    }
+    CanFrame f;
+    while (c.PopTx(&f)) can_.Inject(f);
+    Step(50);
+    return c.result();
+  }
+  TransferResult Write(ObjectId id, uint32_t value) {
+    SdoClient c(kNode);
+    canopen_client::StartNumericWrite(c, id, value);
+    return Run(c);
+  }
+  TransferResult Command(TableCommand c) {
+    return Write(ObjectId::kTableControl, canopen::Value(c));
+  }
+  uint32_t Read(ObjectId id) {
+    const auto& e = canopen::Entry(id);
+    SdoClient c(kNode);
+    c.StartRead(e.index, e.sub);
+    const TransferResult r = Run(c);
+    EXPECT_TRUE(r.ok()) << r.error().message;
+    if (!r.ok()) return 0;
+    uint32_t v = 0;
+    for (size_t i = 0; i < r->size() && i < 4; ++i) v |= uint32_t{(*r)[i]} << (8 * i);
+    return v;
+  }
+  TransferResult Upload(const testing::AlignedBytes& img) {
+    SdoClient c(kNode);
+    c.StartWrite(0x2100, 0, std::vector<uint8_t>(img.data(), img.data() + img.size()));
+    return Run(c);
+  }
+  void Home() {
+    for (uint8_t a = 0; a < 3; ++a) io_.SetInput(hal::HomeLine(a), true);
+    Step(100);
+    for (uint8_t a = 0; a < 3; ++a) io_.SetInput(hal::HomeLine(a), false);
+    Step(100);
+  }
+  // The PC tool's view of the board: a blocking frame link over the mock bus (requests to 0x2110
+  // are counted).
+  canopen_client::FrameLink Link() {
+    canopen_client::FrameLink l;
+    l.send = [this](const CanFrame& f) {
+      if (LoadLe16(f.data + 1) == 0x2110) ++unlock_requests_;
+      can_.Inject(f);
+      return Outcome::Ok();
+    };
+    l.receive = [this](uint64_t timeout_us) -> Expected<std::optional<CanFrame>> {
+      const uint64_t end = clock_.now() + timeout_us * 1000;
+      while (replies_.empty() && clock_.now() < end) {
+        Step(50);
+        for (const CanFrame& r : can_.TakeSent()) {
+          sent_.push_back(r);
+          replies_.push_back(r);
+        }
+      }
+      if (replies_.empty()) return std::optional<CanFrame>();
+      const CanFrame f = replies_.front();
+      replies_.erase(replies_.begin());
+      return std::optional<CanFrame>(f);
+    };
+    l.now_us = [this] { return clock_.now() / 1000; };
+    return l;
+  }
+  // Frame level: injects one SDO request (hex, CiA 301 layout) and returns the board's SDO
+  // responses of the next main-loop pass.
+  std::vector<std::string> Exchange(const std::string& hex) {
+    can_.Inject(testing::F(0x600 + kNode, hex));
+    Step(50);
+    std::vector<std::string> out;
+    for (const CanFrame& f : can_.TakeSent()) {
+      sent_.push_back(f);
+      if (f.id == 0x580u + kNode) out.push_back(testing::ToString(f));
+    }
+    return out;
+  }
+  // An NMT command to this node; returns every frame the board sent in the next 2 ms.
+  std::vector<std::string> Nmt(uint8_t command) {
+    can_.Inject(CanFrame{0x000, false, false, 2, {command, kNode}});
+    Step(100);
+    std::vector<std::string> out;
+    for (const CanFrame& f : can_.TakeSent()) {
+      sent_.push_back(f);
+      out.push_back(testing::ToString(f));
+    }
+    return out;
+  }
+  int CountEmcy(uint16_t code) const {
+    int n = 0;
+    for (const CanFrame& f : sent_) {
+      canopen::Emcy e;
+      if (canopen::DecodeEmcy(f, kNode, &e) && e.code == code) ++n;
+    }
+    return n;
+  }
+
+  BoardConfig config_;
+  hal::mock::MockClock clock_;
+  hal::mock::MockSlowIo io_;
+  hal::mock::MockFlash tables_, settings_;
+  hal::mock::MockCan can_;
+  hal::mock::MockStepIo step_io_;
+  firmware::StepDirIo<hal::mock::MockStepIo> tick_io_;
+  firmware::BoardApp<firmware::StepDirIo<hal::mock::MockStepIo>> app_;
+  std::vector<CanFrame> sent_;
+  std::vector<CanFrame> replies_;  // received through Link(), not yet taken
+  int unlock_requests_ = 0;
+  uint64_t tick_count_ = 0;
+};
+
+TEST_F(Bench, UploadIsRefusedWhileWriteProtectedAndAllowedWhenUnlocked) {
+  Boot();
+  const testing::AlignedBytes img = UniformImage(5, 42);
+  TransferResult r = Upload(img);
+  EXPECT_FALSE(r.ok());
+  EXPECT_EQ(canopen_client::AbortOf(r), canopen::SdoAbort::kCannotStore);
+  EXPECT_EQ(CountEmcy(canopen::kEmcyRefused), 1);
+  EXPECT_EQ(Read(ObjectId::kRefusedActions), 1u);
+  EXPECT_EQ(Read(ObjectId::kWriteAccess), 0u);
+  // Wrong signature: refused; right one: writable for 60 s.
+  EXPECT_EQ(canopen_client::AbortOf(Write(ObjectId::kUnlock, 0x12345678)),
+            canopen::SdoAbort::kInvalidValue);
+  ASSERT_TRUE(Write(ObjectId::kUnlock, canopen::kUnlockSignature).ok());
+  EXPECT_EQ(Read(ObjectId::kWriteAccess), 1u);
+  r = Upload(img);
+  ASSERT_TRUE(r.ok()) << r.error().message;
+  EXPECT_EQ(Read(ObjectId::kStagedBytes), img.size());
+  clock_.Advance(61ull * 1000 * 1000 * 1000);
+  Step(50);
+  EXPECT_EQ(Read(ObjectId::kWriteAccess), 0u);
+  // The hardware write-enable input works without unlocking.
+  io_.SetInput(InputLine::kWriteEnable, true);
+  Step(100);
+  EXPECT_EQ(Read(ObjectId::kWriteAccess), 1u);
+}
+
+TEST_F(Bench, ActivationNeedsReferencedAxesAtRest) {
+  Boot();
+  io_.SetInput(InputLine::kWriteEnable, true);
+  const testing::AlignedBytes img = UniformImage(6, 77);
+  ASSERT_TRUE(Upload(img).ok());
+  ASSERT_TRUE(Command(TableCommand::kVerify).ok());  // verify
+  const uint32_t status = Read(ObjectId::kTableStatus);
+  EXPECT_EQ(canopen::DecodeTableStatus(status).staged, canopen::StagedState::kVerified)
+      << std::hex << status;
+  EXPECT_EQ(Read(ObjectId::kStagedTableCrc), LoadLe32(img.data() + img.size() - 4));
+  EXPECT_EQ(Read(ObjectId::kStagedTableId), 77u);
+  // Not referenced: refused with 0x08000022 and an EMCY.
+  TransferResult r = Command(TableCommand::kActivate);
+  EXPECT_EQ(canopen_client::AbortOf(r), canopen::SdoAbort::kDeviceState);
+  EXPECT_NE(r.error().message.find("not allowed in the present device state"), std::string::npos);
+  EXPECT_EQ(CountEmcy(canopen::kEmcyRefused), 1);
+  // Reference over CAN, then move an axis: still refused while moving.
+  ASSERT_TRUE(Write(ObjectId::kReferenceAxes, 0x07).ok());
+  EXPECT_TRUE(app_.control_tick().all_referenced());
+  step_io_.add_steps(0, 100);
+  Step(1);
+  EXPECT_EQ(canopen_client::AbortOf(Command(TableCommand::kActivate)),
+            canopen::SdoAbort::kDeviceState);
+  Step(10000);  // 200 ms at rest
+  r = Command(TableCommand::kActivate);
+  ASSERT_TRUE(r.ok()) << r.error().message;
+  EXPECT_EQ(Read(ObjectId::kActiveTableCrc), LoadLe32(img.data() + img.size() - 4));
+  EXPECT_EQ(Read(ObjectId::kActiveTableId), 77u);
+  Step(20000);
+  EXPECT_EQ(step_io_.drive(0).position(), 100 + 6);
+  const uint32_t state = Read(ObjectId::kDeviceState);
+  EXPECT_TRUE(canopen::DecodeDeviceState(state).engaged);
+  EXPECT_TRUE(canopen::DecodeDeviceState(state).table_active);
+  EXPECT_EQ(static_cast<int32_t>(Read(ObjectId::kAppliedCorrection1)), 6 * 256);
+  EXPECT_EQ(Read(ObjectId::kCommandedPosition1), 100u);
+  // Deactivate: ramps out, and stays off after a reset.
+  ASSERT_TRUE(Command(TableCommand::kDeactivate).ok());
+  Step(20000);
+  EXPECT_EQ(step_io_.drive(0).position(), 100);
+  EXPECT_EQ(Read(ObjectId::kActiveTableCrc), 0u);
+}
+
+TEST_F(Bench, ActiveTableSurvivesAResetAndBadUploads) {
+  Boot();
+  io_.SetInput(InputLine::kWriteEnable, true);
+  const testing::AlignedBytes good = UniformImage(3, 1);
+  ASSERT_TRUE(Upload(good).ok());
+  ASSERT_TRUE(Write(ObjectId::kReferenceAxes, 0x07).ok());
+  Step(10000);
+  ASSERT_TRUE(Command(TableCommand::kActivate).ok());
+  const uint32_t crc = Read(ObjectId::kActiveTableCrc);
+  // A corrupt image and an image for another board are staged but never become active.
+  testing::AlignedBytes corrupt = UniformImage(9, 2);
+  corrupt[60] ^= 0x01;
+  ASSERT_TRUE(Upload(corrupt).ok());  // the transfer itself is fine
+  EXPECT_EQ(canopen_client::AbortOf(Command(TableCommand::kVerify)),
+            canopen::SdoAbort::kInvalidValue);
+  EXPECT_EQ(canopen_client::AbortOf(Command(TableCommand::kActivate)), canopen::SdoAbort::kNoData);
+  EXPECT_EQ(canopen::DecodeTableStatus(Read(ObjectId::kTableStatus)).error, Error::kImageBadCrc);
+  ASSERT_TRUE(Upload(UniformImage(9, 3, 500000)).ok());
+  EXPECT_EQ(canopen_client::AbortOf(Command(TableCommand::kVerify)),
+            canopen::SdoAbort::kInvalidValue);
+  EXPECT_EQ(canopen::DecodeTableStatus(Read(ObjectId::kTableStatus)).error,
+            Error::kConfigResolutionMismatch);
+  EXPECT_EQ(Read(ObjectId::kActiveTableCrc), crc);
+  // NMT reset node: the stored active table comes back.
+  can_.Inject(CanFrame{0x000, false, false, 2, {0x81, kNode}});
+  Step(100);
+  EXPECT_EQ(Read(ObjectId::kActiveTableCrc), crc);
+  EXPECT_TRUE(app_.stored_table_status().ok());
+}
+
+TEST_F(Bench, SettingsAreStoredAndAppliedAfterReset) {
+  Boot();
+  io_.SetInput(InputLine::kWriteEnable, true);
+  EXPECT_EQ(Read(ObjectId::kAxisMaxCorrection2), 1000u);
+  ASSERT_TRUE(Write(ObjectId::kAxisMaxCorrection2, 250).ok());
+  EXPECT_EQ(canopen_client::AbortOf(Write(ObjectId::kAxisMaxCorrection2, 1u << 20)),
+            canopen::SdoAbort::kValueTooHigh);
+  EXPECT_TRUE(canopen::DecodeDeviceState(Read(ObjectId::kDeviceState)).settings_pending);
+  EXPECT_EQ(app_.settings().board.axis[1].max_correction_steps, 1000);
+  EXPECT_EQ(canopen_client::AbortOf(Write(ObjectId::kStoreAll, 0x12345678)),
+            canopen::SdoAbort::kCannotStore);
+  ASSERT_TRUE(Write(ObjectId::kStoreAll, canopen::kSaveSignature).ok());
+  can_.Inject(CanFrame{0x000, false, false, 2, {0x81, 0}});
+  Step(100);
+  EXPECT_EQ(app_.settings().board.axis[1].max_correction_steps, 250);
+  EXPECT_FALSE(canopen::DecodeDeviceState(Read(ObjectId::kDeviceState)).settings_pending);
+  // Restore defaults, reset: back to the defaults.
+  ASSERT_TRUE(Write(ObjectId::kRestoreAll, canopen::kLoadSignature).ok());
+  can_.Inject(CanFrame{0x000, false, false, 2, {0x81, 0}});
+  Step(100);
+  EXPECT_EQ(app_.settings().board.axis[1].max_correction_steps, 1000);
+}
+
+// 0x2137: the machine position, the table's coordinate: the home position (0x2018) at the
+// reference edge plus the input steps since; before referencing, the input since start.
+TEST_F(Bench, MachinePositionIsTheHomePositionPlusTheInputSinceReferencing) {
+  Boot();
+  io_.SetInput(InputLine::kWriteEnable, true);
+  ASSERT_TRUE(Write(ObjectId::kAxisHome1, static_cast<uint32_t>(-5000)).ok());
+  ASSERT_TRUE(Write(ObjectId::kStoreAll, canopen::kSaveSignature).ok());
+  can_.Inject(CanFrame{0x000, false, false, 2, {0x81, 0}});
+  Step(100);
+  step_io_.add_steps(0, 700);
+  Step(10);
+  EXPECT_EQ(static_cast<int32_t>(Read(ObjectId::kCommandedPosition1)), 700);
+  EXPECT_EQ(static_cast<int32_t>(Read(ObjectId::kMachinePosition1)), 700);  // not referenced
+  Home();
+  step_io_.add_steps(0, 1234);
+  step_io_.add_steps(1, -17);
+  Step(10);
+  EXPECT_EQ(static_cast<int32_t>(Read(ObjectId::kMachinePosition1)), -5000 + 1234);
+  EXPECT_EQ(static_cast<int32_t>(Read(ObjectId::kMachinePosition2)), -17);  // home 0
+  EXPECT_EQ(static_cast<int32_t>(Read(ObjectId::kCommandedPosition1)), 700 + 1234);
+}
+
+TEST_F(Bench, DiagnosticsAndIdentity) {
+  Boot();
+  EXPECT_EQ(Read(ObjectId::kVendorId), 0x564F4C43u);
+  SdoClient c(kNode);
+  c.StartRead(0x1008, 0);
+  const TransferResult name = Run(c);
+  ASSERT_TRUE(name.ok());
+  EXPECT_EQ(std::string(name->begin(), name->end()), "volcomp");
+  EXPECT_GT(Read(ObjectId::kCanRxFrames), 0u);
+  EXPECT_GT(Read(ObjectId::kTicks), 100u);
+  EXPECT_EQ(Read(ObjectId::kOutputOverruns), 0u);
+  EXPECT_EQ(Read(ObjectId::kEmcySuppressed), 0u);
+  // Heartbeat: 1000 ms by default, state pre-operational.
+  sent_.clear();
+  can_.TakeSent();
+  Step(50 * 1100);
+  int hb = 0;
+  for (const CanFrame& f : can_.TakeSent()) hb += f.id == 0x700u + kNode && f.data[0] == 0x7F;
+  EXPECT_EQ(hb, 1);
+}
+
+using Frames = std::vector<std::string>;
+
+bool Contains(const Frames& frames, const std::string& f) {
+  return std::find(frames.begin(), frames.end(), f) != frames.end();
+}
+
+// NMT reset communication puts the stored 0x1017 back in force (CiA 301): an unsaved write does
+// not survive it; a stored one (0x1010 "save") survives it and a reset node.
+TEST_F(Bench, ResetCommunicationRestoresTheStoredHeartbeatTime) {
+  Boot();
+  EXPECT_EQ(Exchange("2B17100064000000"), Frames{"590#6017100000000000"});  // 0x1017 = 100 ms
+  EXPECT_EQ(Exchange("4017100000000000"), Frames{"590#4B17100064000000"});
+  EXPECT_TRUE(Contains(Nmt(0x82), "710#00"));  // reset communication: boot-up
+  EXPECT_EQ(Exchange("4017100000000000"), Frames{"590#4B171000E8030000"});  // 1000 ms again
+  // Heartbeats 1000 ms apart, not 100.
+  can_.TakeSent();
+  Step(50 * 950);
+  int hb = 0;
+  for (const CanFrame& f : can_.TakeSent()) hb += f.id == 0x700u + kNode;
+  EXPECT_EQ(hb, 0);
+
+  // 500 ms, 0x1015 = 0, stored: both survive the resets.
+  io_.SetInput(InputLine::kWriteEnable, true);
+  Step(100);
+  EXPECT_EQ(Exchange("2B171000F4010000"), Frames{"590#6017100000000000"});
+  EXPECT_EQ(Exchange("2B15100000000000"), Frames{"590#6015100000000000"});
+  EXPECT_EQ(Exchange("2310100173617665"), Frames{"590#6010100100000000"});  // "save"
+  EXPECT_FALSE(canopen::DecodeDeviceState(Read(ObjectId::kDeviceState)).settings_pending);
+  EXPECT_TRUE(Contains(Nmt(0x82), "710#00"));
+  EXPECT_EQ(Exchange("4017100000000000"), Frames{"590#4B171000F4010000"});
+  EXPECT_EQ(Exchange("4015100000000000"), Frames{"590#4B15100000000000"});
+  EXPECT_TRUE(Contains(Nmt(0x81), "710#00"));  // reset node: from the stored settings
+  EXPECT_EQ(Exchange("4017100000000000"), Frames{"590#4B171000F4010000"});
+  EXPECT_EQ(Exchange("4015100000000000"), Frames{"590#4B15100000000000"});
+}
+
+// "Restore defaults" (0x1011:1 = "load"): the next reset communication brings the default
+// communication parameters back, not the ones stored before (CiA 301 7.5.2.14).
+TEST_F(Bench, RestoreDefaultsReachesTheCommunicationReset) {
+  Boot();
+  io_.SetInput(InputLine::kWriteEnable, true);
+  Step(100);
+  EXPECT_EQ(Exchange("2B171000F4010000"), Frames{"590#6017100000000000"});  // 0x1017 = 500 ms
+  EXPECT_EQ(Exchange("2310100173617665"), Frames{"590#6010100100000000"});  // "save"
+  EXPECT_EQ(Exchange("231110016C6F6164"), Frames{"590#6011100100000000"});  // "load"
+  EXPECT_EQ(Exchange("4017100000000000"), Frames{"590#4B171000F4010000"});  // in force until reset
+  EXPECT_TRUE(Contains(Nmt(0x82), "710#00"));
+  EXPECT_EQ(Exchange("4017100000000000"), Frames{"590#4B171000E8030000"});  // 1000 ms: default
+}
+
+// A reset communication in the middle of a table upload ends it: 0x2102 says aborted (error 80),
+// not "receiving" until the next upload.
+TEST_F(Bench, ResetCommunicationDuringAnUploadEndsItAsAborted) {
+  Boot();
+  io_.SetInput(InputLine::kWriteEnable, true);
+  Step(100);
+  EXPECT_EQ(Exchange("C600210014000000"), Frames{"590#A40021007F000000"});
+  EXPECT_EQ(Exchange("0130313233343536"), Frames{});
+  EXPECT_TRUE(Contains(Nmt(0x82), "710#00"));
+  // Result 7 (transfer) << 1 = 0x0E, failed 0x04, error 80 = 0x50.
+  EXPECT_EQ(Exchange("4002210000000000"), Frames{"590#430221000E045000"});
+}
+
+// 0x2102 after a transfer that broke says how: bits 1-7 result, 8-15 staged state (4 failed),
+// 16-31 the volcomp error (error_codes.def): aborted 80, CRC-16 81; never "I/O error".
+TEST_F(Bench, TableStatusSaysATransferWasAbortedOrFailedItsCrc) {
+  Boot();
+  io_.SetInput(InputLine::kWriteEnable, true);
+  Step(100);
+  // Block download of 20 bytes, aborted by the client after the first segment.
+  EXPECT_EQ(Exchange("C600210014000000"), Frames{"590#A40021007F000000"});
+  EXPECT_EQ(Exchange("0130313233343536"), Frames{});
+  EXPECT_EQ(Exchange("8000210000000008"), Frames{});
+  // Result 7 (transfer) << 1 = 0x0E, failed 0x04, error 80 = 0x50.
+  EXPECT_EQ(Exchange("4002210000000000"), Frames{"590#430221000E045000"});
+  // The same 20 bytes with a wrong CRC-16 (0x34F1 is right).
+  EXPECT_EQ(Exchange("C600210014000000"), Frames{"590#A40021007F000000"});
+  EXPECT_EQ(Exchange("0130313233343536"), Frames{});
+  EXPECT_EQ(Exchange("0237383941424344"), Frames{});
+  EXPECT_EQ(Exchange("8345464748494A00"), Frames{"590#A2037F0000000000"});
+  EXPECT_EQ(Exchange("C5F1350000000000"), Frames{"590#8000210004000405"});
+  // Result 3 (CRC) << 1 = 0x06, failed 0x04, error 81 = 0x51.
+  EXPECT_EQ(Exchange("4002210000000000"), Frames{"590#4302210006045100"});
+  // Silence: the board times the transfer out (0x05040000), error 82 = 0x52.
+  EXPECT_EQ(Exchange("C600210014000000"), Frames{"590#A40021007F000000"});
+  EXPECT_EQ(Exchange("0130313233343536"), Frames{});
+  Step(50 * 1200);
+  Frames quiet;
+  for (const CanFrame& f : can_.TakeSent()) quiet.push_back(testing::ToString(f));
+  EXPECT_TRUE(Contains(quiet, "590#A2017F0000000000"));  // re-ack of the partial sub-block
+  EXPECT_TRUE(Contains(quiet, "590#8000210000000405"));  // timed out
+  EXPECT_EQ(Exchange("4002210000000000"), Frames{"590#430221000E045200"});
+}
+
+// 0x2105-0x2107 describe what is staged now. A verified staged image is in flash: after a reset
+// node it is mounted, verified again and reported as before; once cleared it is gone, also after
+// a reset.
+TEST_F(Bench, StagedImageSurvivesAResetAndItsIdsDoNotOutliveIt) {
+  Boot();
+  io_.SetInput(InputLine::kWriteEnable, true);
+  Step(100);
+  const testing::AlignedBytes img = UniformImage(5, 0x4D);
+  const uint32_t crc = LoadLe32(img.data() + img.size() - 4);
+  char crc_hex[9], size_hex[9];
+  std::snprintf(crc_hex, sizeof crc_hex, "%02X%02X%02X%02X", crc & 0xFF, (crc >> 8) & 0xFF,
+                (crc >> 16) & 0xFF, crc >> 24);
+  const uint32_t size = static_cast<uint32_t>(img.size());
+  std::snprintf(size_hex, sizeof size_hex, "%02X%02X%02X%02X", size & 0xFF, (size >> 8) & 0xFF,
+                (size >> 16) & 0xFF, size >> 24);
+  ASSERT_TRUE(Upload(img).ok());
+  ASSERT_TRUE(Command(TableCommand::kVerify).ok());
+  const Frames staged_crc{std::string("590#43052100") + crc_hex};
+  const Frames staged_size{std::string("590#43062100") + size_hex};
+  const Frames staged_id{"590#430721004D000000"};
+  const Frames verified{"590#4302210000030000"};  // staged state 3, result ok
+  EXPECT_EQ(Exchange("4005210000000000"), staged_crc);
+  EXPECT_EQ(Exchange("4006210000000000"), staged_size);
+  EXPECT_EQ(Exchange("4007210000000000"), staged_id);
+  EXPECT_EQ(Exchange("4002210000000000"), verified);
+
+  EXPECT_TRUE(Contains(Nmt(0x81), "710#00"));  // reset node
+  EXPECT_EQ(Exchange("4005210000000000"), staged_crc);
+  EXPECT_EQ(Exchange("4006210000000000"), staged_size);
+  EXPECT_EQ(Exchange("4007210000000000"), staged_id);
+  EXPECT_EQ(Exchange("4002210000000000"), verified);
+  EXPECT_TRUE(canopen::DecodeDeviceState(Read(ObjectId::kDeviceState)).staged_verified);
+
+  // Cleared (0x2101 = 3): nothing staged, before and after a reset.
+  EXPECT_EQ(Exchange("2F01210003000000"), Frames{"590#6001210000000000"});
+  const Frames empty{"590#4302210000000000"};
+  for (int reset = 0; reset < 2; ++reset) {
+    EXPECT_EQ(Exchange("4005210000000000"), Frames{"590#4305210000000000"}) << reset;
+    EXPECT_EQ(Exchange("4006210000000000"), Frames{"590#4306210000000000"}) << reset;
+    EXPECT_EQ(Exchange("4007210000000000"), Frames{"590#4307210000000000"}) << reset;
+    EXPECT_EQ(Exchange("4002210000000000"), empty) << reset;
+    if (reset == 0) {
+      EXPECT_TRUE(Contains(Nmt(0x81), "710#00"));
+    }
+  }
+
+  // Complete but not verified: verified at mount. Activated: nothing staged (the bank with the
+  // table active before is not a staged image), also after a reset.
+  ASSERT_TRUE(Upload(img).ok());
+  EXPECT_TRUE(Contains(Nmt(0x81), "710#00"));
+  EXPECT_EQ(Exchange("4002210000000000"), verified);
+  ASSERT_TRUE(Write(ObjectId::kReferenceAxes, 0x07).ok());
+  Step(10000);
+  ASSERT_TRUE(Command(TableCommand::kActivate).ok());
+  ASSERT_TRUE(Upload(UniformImage(7, 0x4E)).ok());
+  ASSERT_TRUE(Write(ObjectId::kReferenceAxes, 0x07).ok());
+  Step(10000);
+  ASSERT_TRUE(Command(TableCommand::kActivate).ok());
+  EXPECT_TRUE(Contains(Nmt(0x81), "710#00"));
+  EXPECT_EQ(Exchange("4003210000000000"), Frames{"590#430321004E000000"});  // active id
+  EXPECT_EQ(Exchange("4002210000000000"), empty);
+  EXPECT_EQ(Exchange("4007210000000000"), Frames{"590#4307210000000000"});
+  // An upload cut by a reset node: the bank it went to held the table active before (0x4D), which
+  // must not come back as staged.
+  EXPECT_EQ(Exchange("C600210014000000"), Frames{"590#A40021007F000000"});
+  EXPECT_EQ(Exchange("0130313233343536"), Frames{});
+  EXPECT_TRUE(Contains(Nmt(0x81), "710#00"));
+  EXPECT_EQ(Exchange("4002210000000000"), empty);
+  EXPECT_EQ(Exchange("4007210000000000"), Frames{"590#4307210000000000"});
+
+  // An image for another board fails verification and does not come back after a reset; nor does
+  // an upload cut by an abort.
+  ASSERT_TRUE(Upload(UniformImage(9, 0x4F, 500000)).ok());
+  EXPECT_EQ(canopen_client::AbortOf(Command(TableCommand::kVerify)),
+            canopen::SdoAbort::kInvalidValue);
+  EXPECT_TRUE(Contains(Nmt(0x81), "710#00"));
+  EXPECT_EQ(Exchange("4002210000000000"), empty);
+  EXPECT_EQ(Exchange("C600210014000000"), Frames{"590#A40021007F000000"});
+  EXPECT_EQ(Exchange("0130313233343536"), Frames{});
+  EXPECT_EQ(Exchange("8000210000000008"), Frames{});
+  EXPECT_TRUE(Contains(Nmt(0x81), "710#00"));
+  EXPECT_EQ(Exchange("4002210000000000"), empty);
+}
+
+// The PC tool's staging steps (tools/canopen_client table_staging.hpp, used by `volcomp upload` and
+// the simulator's demo) against the real board objects.
+TEST_F(Bench, StagingStepsUnlockStageAndVerify) {
+  Boot();
+  const testing::AlignedBytes img = UniformImage(5, 42);
+  const uint32_t crc = LoadLe32(img.data() + img.size() - 4);
+  const canopen_client::FrameLink link = Link();
+  canopen_client::NodeObjects node(link, kNode);
+  canopen_client::SdoOutcome r = canopen_client::PrepareStaging(node);
+  ASSERT_TRUE(r.ok()) << r.error().message;
+  EXPECT_EQ(unlock_requests_, 1);  // write-protected: the steps unlocked it
+  EXPECT_EQ(Read(ObjectId::kWriteAccess), 1u);
+  r = node.WriteDomain(ObjectId::kTableData,
+                       std::vector<uint8_t>(img.data(), img.data() + img.size()));
+  ASSERT_TRUE(r.ok()) << r.error().message;
+  r = canopen_client::VerifyStaged(node, crc);
+  ASSERT_TRUE(r.ok()) << r.error().message;
+  EXPECT_EQ(Read(ObjectId::kStagedTableCrc), crc);
+  EXPECT_EQ(Read(ObjectId::kStagedTableId), 42u);
+  // A CRC that is not the image's: a failure of its own (no abort code), naming both values.
+  r = canopen_client::VerifyStaged(node, crc ^ 1u);
+  ASSERT_FALSE(r.ok());
+  EXPECT_EQ(r.error().abort, canopen::SdoAbort::kNone);
+  EXPECT_EQ(r.error().code, Error::kImageBadCrc);
+  EXPECT_NE(r.error().message.find("staged CRC-32 " + tools::Hex32(crc) + ", expected " +
+                                   tools::Hex32(crc ^ 1u)),
+            std::string::npos)
+      << r.error().message;
+  // Activation before referencing: the step, the board's reason and what to do.
+  r = canopen_client::Explain(
+      node.Write(ObjectId::kTableControl, canopen::Value(TableCommand::kActivate)), "activating");
+  ASSERT_FALSE(r.ok());
+  EXPECT_EQ(r.error().abort, canopen::SdoAbort::kDeviceState);
+  EXPECT_TRUE(r.error().by_server);
+  EXPECT_EQ(r.error().code, Error::kTransferAborted);
+  EXPECT_EQ(r.error().message.rfind("activating: ", 0), 0u) << r.error().message;
+  EXPECT_NE(r.error().message.find("; the axes must be referenced (homed) and at rest"),
+            std::string::npos)
+      << r.error().message;
+  // Already writable (hardware input): no unlock request.
+  io_.SetInput(InputLine::kWriteEnable, true);
+  Step(100);
+  ASSERT_TRUE(canopen_client::EnsureWritable(node).ok());
+  EXPECT_EQ(unlock_requests_, 1);
+}
+
+TEST_F(Bench, StagingStepsNameTheStepThatFailed) {
+  Boot();
+  const canopen_client::FrameLink link = Link();
+  canopen_client::NodeObjects node(link, kNode);
+  ASSERT_TRUE(canopen_client::PrepareStaging(node).ok());
+  // Nothing was downloaded: the board's verification refuses.
+  const canopen_client::SdoOutcome r = canopen_client::VerifyStaged(node, 0x12345678u);
+  ASSERT_FALSE(r.ok());
+  EXPECT_NE(canopen_client::AbortOf(r), canopen::SdoAbort::kNone);
+  EXPECT_EQ(r.error().message.rfind("verifying on the board (0x2101 = 4): ", 0), 0u)
+      << r.error().message;
+}
+
+// Doing less than the table asks is visible: a table asking 100 steps on axis 1 of a board whose
+// max correction is 50 is applied as 50, flagged clamped (0x2134), counted (0x2135) and reported
+// by one EMCY 0xFF20 naming axis 1, however long it stays clamped. The ramp-in at rest runs at the
+// rate limit (counted in 0x2136) without an EMCY; a ramp while the axes move sends one.
+TEST_F(Bench, ClampingAndRateLimitingAreFlaggedCountedAndReportedOnce) {
+  config_.axis[0].max_correction_steps = 50;
+  Boot();
+  io_.SetInput(InputLine::kWriteEnable, true);
+  ASSERT_TRUE(Upload(UniformImage(100, 9)).ok());
+  ASSERT_TRUE(Command(TableCommand::kVerify).ok());
+  ASSERT_TRUE(Write(ObjectId::kReferenceAxes, 0x07).ok());
+  Step(10000);
+  sent_.clear();
+  ASSERT_TRUE(Command(TableCommand::kActivate).ok());
+  Step(20000);  // 400 ms: the ramp to the clamped 50 steps takes about 35 ms
+  EXPECT_EQ(static_cast<int32_t>(Read(ObjectId::kAppliedCorrection1)), 50 * 256);
+  EXPECT_EQ(Read(ObjectId::kCorrectionLimited1), uint32_t{canopen::kLimitClamped});
+  EXPECT_EQ(Read(ObjectId::kCorrectionLimited2), 0u);
+  const uint32_t clamped = Read(ObjectId::kClampedRefreshes1);
+  // One refresh of axis 1 every 6 compensation runs (one run every CompensationDivider() ticks),
+  // all clamped.
+  EXPECT_GT(clamped, 20000u / (6 * CompensationDivider(config_.tick_hz)) - 100);
+  EXPECT_EQ(Read(ObjectId::kClampedRefreshes2), 0u);
+  EXPECT_GT(Read(ObjectId::kRateLimitedRefreshes1), 0u);  // the ramp in
+  EXPECT_EQ(Read(ObjectId::kRateLimitedRefreshes2), 0u);
+  Step(20000);
+  EXPECT_GT(Read(ObjectId::kClampedRefreshes1), clamped);
+  ASSERT_EQ(CountEmcy(canopen::kEmcyCorrectionLimited), 1);
+  for (const CanFrame& f : sent_) {
+    canopen::Emcy e;
+    if (!canopen::DecodeEmcy(f, kNode, &e) || e.code != canopen::kEmcyCorrectionLimited) continue;
+    EXPECT_EQ(e.clamped_axes(), 0x01);
+    EXPECT_EQ(e.rate_limited_axes(), 0x00);  // the ramp was at rest
+  }
+  // Compensation off: the correction ramps out, the flags clear after the hold time.
+  ASSERT_TRUE(Write(ObjectId::kCompensationEnable, 0).ok());
+  Step(20000);
+  EXPECT_EQ(Read(ObjectId::kAppliedCorrection1), 0u);
+  EXPECT_EQ(Read(ObjectId::kCorrectionLimited1), 0u);
+  // On again while axis 1 moves: clamped again (one EMCY), and the ramp in is rate limited in
+  // motion (one more EMCY), both naming axis 1.
+  sent_.clear();
+  step_io_.add_steps(0, 10);
+  Step(1);
+  ASSERT_TRUE(Write(ObjectId::kCompensationEnable, 1).ok());
+  for (int i = 0; i < 40; ++i) {  // 10 steps per ms for 40 ms
+    step_io_.add_steps(0, 10);
+    Step(50);
+  }
+  for (const CanFrame& f : can_.TakeSent()) sent_.push_back(f);
+  ASSERT_EQ(CountEmcy(canopen::kEmcyCorrectionLimited), 2);
+  uint8_t clamped_axes = 0, limited_axes = 0;
+  for (const CanFrame& f : sent_) {
+    canopen::Emcy e;
+    if (!canopen::DecodeEmcy(f, kNode, &e) || e.code != canopen::kEmcyCorrectionLimited) continue;
+    clamped_axes |= e.clamped_axes();
+    limited_axes |= e.rate_limited_axes();
+  }
+  EXPECT_EQ(clamped_axes, 0x01);
+  EXPECT_EQ(limited_axes, 0x01);
+}
+
+// A refused store says which rule and which axis (0x2123), before and after the refusal.
+TEST_F(Bench, SettingsCheckNamesTheRuleAndTheAxis) {
+  Boot();
+  io_.SetInput(InputLine::kWriteEnable, true);
+  EXPECT_EQ(Read(ObjectId::kSettingsCheck), 0u);
+  // Axis 2's drive cannot follow the fastest input plus the correction.
+  ASSERT_TRUE(Write(ObjectId::kAxisDriveMaxRate2, 1000).ok());
+  EXPECT_EQ(canopen_client::AbortOf(Write(ObjectId::kStoreAll, canopen::kSaveSignature)),
+            canopen::SdoAbort::kInvalidValue);
+  const canopen::SettingsCheck c = canopen::DecodeSettingsCheck(Read(ObjectId::kSettingsCheck));
+  EXPECT_EQ(c.finding.rule, ConfigRule::kDriveKeepsUp);
+  EXPECT_EQ(c.finding.axis, 2);
+  EXPECT_EQ(c.error, Error::kConfigInvalid);
+  canopen_client::FrameLink link = Link();
+  canopen_client::NodeObjects node(link, kNode);
+  const std::string why = canopen_client::SettingsRefusalReason(node);
+  EXPECT_NE(why.find("axis 2: "), std::string::npos) << why;
+  EXPECT_NE(why.find("drive max rate (0x201D)"), std::string::npos) << why;
+}
+
+// verify --readback of the active table: 0x2109 is the active image even while another is staged.
+TEST_F(Bench, ActiveTableDataIsTheActiveImageWhileAnotherIsStaged) {
+  Boot();
+  io_.SetInput(InputLine::kWriteEnable, true);
+  const testing::AlignedBytes a = UniformImage(6, 1), b = UniformImage(7, 2);
+  ASSERT_TRUE(Upload(a).ok());
+  ASSERT_TRUE(Command(TableCommand::kVerify).ok());
+  ASSERT_TRUE(Write(ObjectId::kReferenceAxes, 0x07).ok());
+  Step(10000);
+  ASSERT_TRUE(Command(TableCommand::kActivate).ok());
+  ASSERT_TRUE(Upload(b).ok());
+  canopen_client::FrameLink link = Link();
+  canopen_client::NodeObjects node(link, kNode);
+  const auto active = node.ReadDomain(ObjectId::kActiveTableData);
+  const auto staged = node.ReadDomain(ObjectId::kTableData);
+  ASSERT_TRUE(active.ok());
+  ASSERT_TRUE(staged.ok());
+  EXPECT_EQ(*active, std::vector<uint8_t>(a.data(), a.data() + a.size()));
+  EXPECT_EQ(*staged, std::vector<uint8_t>(b.data(), b.data() + b.size()));
+}
+
+}  // namespace
+}  // namespace volcomp

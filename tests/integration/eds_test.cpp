@@ -1,0 +1,122 @@
+// The checked-in EDS must be exactly what the object dictionary definition generates, and its
+// defaults must be what a board without stored settings reports.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <fstream>
+#include <map>
+#include <regex>
+#include <sstream>
+
+#include "volcomp/canopen/object_dictionary.hpp"
+#include "volcomp/canopen_client/eds_writer.hpp"
+#include "volcomp/canopen_client/node_objects.hpp"
+#include "volcomp/sim/sim_sdo_host.hpp"
+
+namespace volcomp {
+namespace {
+
+TEST(Eds, CheckedInFileMatchesTheObjectDictionary) {
+  const char* root = std::getenv("VOLCOMP_SOURCE_DIR");
+  ASSERT_NE(root, nullptr);
+  std::ifstream f(std::string(root) + "/docs/volcomp.eds");
+  ASSERT_TRUE(f) << "docs/volcomp.eds missing: run `volcomp eds -o docs/volcomp.eds`";
+  std::stringstream checked_in;
+  checked_in << f.rdbuf();
+  std::ostringstream generated;
+  canopen_client::WriteEds(generated);
+  EXPECT_EQ(checked_in.str(), generated.str())
+      << "docs/volcomp.eds is out of date: run `volcomp eds -o docs/volcomp.eds`";
+  // Spot checks of the content.
+  const std::string eds = generated.str();
+  EXPECT_NE(eds.find("[2100]\nParameterName=Table data\nObjectType=0x7\nDataType=0x000F\n"
+                     "AccessType=rw\nPDOMapping=0"),
+            std::string::npos);
+  EXPECT_NE(eds.find("[1018sub1]\nParameterName=Vendor-ID"), std::string::npos);
+  EXPECT_NE(eds.find("DefaultValue=$NODEID+0x580"), std::string::npos);
+}
+
+std::string CheckedInEds() {
+  const char* root = std::getenv("VOLCOMP_SOURCE_DIR");
+  if (root == nullptr) return "";
+  std::ifstream f(std::string(root) + "/docs/volcomp.eds");
+  std::stringstream text;
+  text << f.rdbuf();
+  return text.str();
+}
+
+struct EdsEntry {
+  uint16_t index = 0;
+  uint8_t sub = 0;
+  std::string access, default_value;
+};
+
+// The (sub-)entries of an EDS text with their access type and default value, read as CiA 306
+// lays them out ([XXXX] or [XXXXsubN] sections of key=value lines).
+std::vector<EdsEntry> ParseEds(const std::string& text) {
+  std::vector<EdsEntry> out;
+  const std::regex section(R"(^\[([0-9A-F]{4})(sub([0-9A-F]+))?\]$)");
+  std::istringstream in(text);
+  std::string line;
+  bool in_entry = false;
+  while (std::getline(in, line)) {
+    std::smatch m;
+    if (std::regex_match(line, m, section)) {
+      out.push_back({static_cast<uint16_t>(std::stoul(m[1], nullptr, 16)),
+                     static_cast<uint8_t>(m[3].matched ? std::stoul(m[3], nullptr, 16) : 0), "",
+                     ""});
+      in_entry = true;
+    } else if (!line.empty() && line[0] == '[') {
+      in_entry = false;
+    } else if (in_entry && line.rfind("AccessType=", 0) == 0) {
+      out.back().access = line.substr(11);
+    } else if (in_entry && line.rfind("DefaultValue=", 0) == 0) {
+      out.back().default_value = line.substr(13);
+    }
+  }
+  return out;
+}
+
+TEST(Eds, DefaultsAreWhatAFreshBoardReports) {
+  const std::string eds = CheckedInEds();
+  ASSERT_FALSE(eds.empty()) << "docs/volcomp.eds not found (VOLCOMP_SOURCE_DIR)";
+  std::map<std::pair<uint16_t, uint8_t>, EdsEntry> entries;
+  for (const EdsEntry& e : ParseEds(eds)) entries[{e.index, e.sub}] = e;
+  auto default_of = [&](uint16_t index, uint8_t sub) {
+    return entries[{index, sub}].default_value;
+  };
+  // The drive timing a fresh board runs with: 200 ns pulses at up to 2 MHz, above the 1 MHz input.
+  EXPECT_EQ(default_of(0x2019, 1), "0x000000C8");
+  EXPECT_EQ(default_of(0x201D, 1), "0x001E8480");
+  EXPECT_EQ(default_of(0x201E, 1), "0x000F4240");
+
+  // A board without stored settings, read over the simulated bus.
+  sim::SimBus bus(1000000);
+  sim::SimulatedBoard board(bus, sim::SimulatedBoardOptions());
+  sim::Endpoint& pc = bus.Attach("pc");
+  ASSERT_TRUE(board.Start().ok());
+  sim::SimSdoHost host(bus, board, pc, board.app().settings().node_id);
+  host.Idle(2000000);
+  canopen_client::NodeObjects node(host.Link(), host.node());
+  int compared = 0;
+  for (const auto& [key, e] : entries) {
+    const bool configuration = (e.index >= 0x2000 && e.index <= 0x201F) || e.index == 0x1015 ||
+                               e.index == 0x1017 || e.index == 0x2121;
+    if (!configuration || e.access == "wo" || e.default_value.empty()) continue;
+    const canopen::ObjectEntry* entry = canopen::FindEntry(e.index, e.sub);
+    ASSERT_NE(entry, nullptr) << std::hex << e.index << " sub " << int{e.sub};
+    const auto r = node.Read(entry->id);
+    ASSERT_TRUE(r.ok()) << r.error().message;
+    const uint32_t value = *r;
+    EXPECT_EQ(value, static_cast<uint32_t>(std::stoll(e.default_value, nullptr, 0)))
+        << entry->name << " (" << std::hex << e.index << " sub " << int{e.sub}
+        << "): the board reports " << std::dec << value << ", the EDS says " << e.default_value;
+    ++compared;
+  }
+  // 0x1015, 0x1017 and 0x2121, 0x2000 sub 0-4, 15 axis arrays.
+  EXPECT_EQ(compared, 3 + 5 + 16 * 7);
+  EXPECT_EQ(default_of(0x1015, 0), "0x0064");  // EMCY inhibit time 10 ms (100 x 100 us)
+}
+
+}  // namespace
+}  // namespace volcomp

@@ -1,0 +1,117 @@
+// The board's settings (lib/config board_settings.hpp): the stored record (layout, versions, round
+// trip of every field) and the node settings' rules.
+#include "volcomp/config/board_settings.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cstdint>
+
+namespace volcomp {
+namespace {
+
+// The settings record keeps 0x1015 in the slot after the heartbeat time (record version 2); a
+// version-1 record (that slot reserved, 0) gives the default inhibit time, not 0.
+TEST(SettingsRecord, KeepsTheEmcyInhibitTimeAndReadsVersion1Records) {
+  BoardSettings s;
+  s.heartbeat_ms = 0x0123;
+  s.emcy_inhibit_100us = 37;
+  uint8_t rec[kSettingsBytes];
+  SerializeSettings(s, rec);
+  EXPECT_EQ(rec[4], 3);  // version, LE16 at 4
+  EXPECT_EQ(rec[5], 0);
+  EXPECT_EQ(rec[12], 0x23);  // heartbeat LE16 at 12
+  EXPECT_EQ(rec[13], 0x01);
+  EXPECT_EQ(rec[14], 37);  // inhibit LE16 at 14
+  EXPECT_EQ(rec[15], 0);
+  BoardSettings back;
+  ASSERT_TRUE(DeserializeSettings(rec, sizeof rec, &back).ok());
+  EXPECT_EQ(back.emcy_inhibit_100us, 37);
+  rec[4] = 1;
+  rec[14] = 0;
+  ASSERT_TRUE(DeserializeSettings(rec, sizeof rec, &back).ok());
+  EXPECT_EQ(back.emcy_inhibit_100us, 100);  // the default, 10 ms
+  EXPECT_EQ(back.heartbeat_ms, 0x0123);
+  rec[4] = 4;
+  EXPECT_FALSE(DeserializeSettings(rec, sizeof rec, &back).ok());
+}
+
+// Version 3 keeps each axis's direction hysteresis in the 16-bit slot after the input counter
+// width (axis records of 64 bytes from offset 24); a version-2 record (slot reserved, 0) gives
+// the default of 1 step, not 0.
+TEST(SettingsRecord, KeepsTheDirectionHysteresisAndReadsVersion2Records) {
+  BoardSettings s;
+  s.board.axis[1].direction_hysteresis_steps = 0x0203;
+  uint8_t rec[kSettingsBytes];
+  SerializeSettings(s, rec);
+  EXPECT_EQ(rec[24 + 64 + 6], 0x03);
+  EXPECT_EQ(rec[24 + 64 + 7], 0x02);
+  BoardSettings back;
+  ASSERT_TRUE(DeserializeSettings(rec, sizeof rec, &back).ok());
+  EXPECT_EQ(back.board.axis[1].direction_hysteresis_steps, 0x0203);
+  rec[4] = 2;
+  rec[24 + 64 + 6] = rec[24 + 64 + 7] = 0;
+  ASSERT_TRUE(DeserializeSettings(rec, sizeof rec, &back).ok());
+  EXPECT_EQ(back.board.axis[1].direction_hysteresis_steps, 1);
+}
+
+TEST(SettingsRecord, EveryFieldRoundTripsAndARecordOnlyCountsWhenValid) {
+  BoardSettings s;
+  s.node_id = 0x22;
+  s.bitrate_kbit = 250;
+  s.board.tick_hz = 25000;
+  s.board.axis_count = 4;
+  s.board.axis[3].name = 'C';
+  s.board.axis[3].kind = table::AxisKind::kRotary;
+  s.board.axis[1].input_format = PulseFormat::kQuadrature;
+  s.board.axis[2].output_format = PulseFormat::kCwCcw;
+  s.board.axis[0].invert_input_dir = true;
+  s.board.axis[0].input_counter_bits = 16;
+  s.board.axis[0].max_input_rate_hz = 100000;
+  s.board.axis[2].home_position_steps = -5000;
+  s.board.axis[1].drive.dir_hold_ns = 12345;
+  s.board.axis[2].direction_hysteresis_steps = 7;
+  ASSERT_TRUE(ValidateSettings(s).ok());
+  uint8_t rec[kSettingsBytes];
+  SerializeSettings(s, rec);
+  BoardSettings back;
+  ASSERT_TRUE(DeserializeSettings(rec, sizeof rec, &back).ok());
+  uint8_t again[kSettingsBytes];
+  SerializeSettings(back, again);
+  for (uint32_t i = 0; i < kSettingsBytes; ++i) ASSERT_EQ(rec[i], again[i]) << i;
+  EXPECT_EQ(back.board.axis[3].kind, table::AxisKind::kRotary);
+  EXPECT_TRUE(back.board.axis[0].invert_input_dir);
+  EXPECT_EQ(back.board.axis[2].home_position_steps, -5000);
+  EXPECT_EQ(back.board.axis[2].direction_hysteresis_steps, 7);
+  // Short, or out of range (node-ID 0): not taken; *s untouched.
+  BoardSettings untouched;
+  EXPECT_FALSE(DeserializeSettings(rec, kSettingsBytes - 1, &untouched).ok());
+  rec[8] = 0;  // node-ID
+  EXPECT_EQ(DeserializeSettings(rec, sizeof rec, &untouched).error(), Error::kConfigInvalid);
+  EXPECT_EQ(untouched.node_id, kDefaultNodeId);
+}
+
+TEST(BoardSettings, TheNodeSettingsAreCheckedBeforeTheInstallation) {
+  BoardSettings s;
+  ConfigFinding f;
+  EXPECT_TRUE(ValidateSettings(s, &f).ok());
+  EXPECT_EQ(f.rule, ConfigRule::kNone);
+  s.node_id = 128;
+  s.board.tick_hz = 1;  // also broken: the node-ID is named first
+  EXPECT_EQ(ValidateSettings(s, &f).error(), Error::kConfigInvalid);
+  EXPECT_EQ(f.rule, ConfigRule::kNodeId);
+  s.node_id = 1;
+  s.bitrate_kbit = 5;
+  EXPECT_FALSE(ValidateSettings(s, &f).ok());
+  EXPECT_EQ(f.rule, ConfigRule::kBitrate);
+  s.bitrate_kbit = 1000;
+  EXPECT_FALSE(ValidateSettings(s, &f).ok());
+  EXPECT_EQ(f.rule, ConfigRule::kTickRate);
+  s.board.tick_hz = 50000;
+  s.board.axis[1].drive.max_rate_hz = 1000;
+  EXPECT_FALSE(ValidateSettings(s, &f).ok());
+  EXPECT_EQ(f.rule, ConfigRule::kDriveKeepsUp);
+  EXPECT_EQ(f.axis, 2);
+}
+
+}  // namespace
+}  // namespace volcomp

@@ -1,0 +1,278 @@
+// The CAN commands in-process against a simulated board (the firmware on the simulated bus,
+// served over SLCAN-TCP on a thread paced to the wall clock, as `volcomp-sim node` does): their
+// text is a layout of the JSON they report, their verdicts set the exit code, and a board that
+// is not there is a communication failure.
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <chrono>
+#include <cstdio>
+#include <thread>
+
+#include "cli_runner.hpp"
+#include "test_tables.hpp"
+#include "volcomp/can_io/slcan_server.hpp"
+#include "volcomp/sim/bus_bridge.hpp"
+#include "volcomp/sim/realtime.hpp"
+#include "volcomp/sim/simulated_board.hpp"
+#include "volcomp/tools/file_io.hpp"
+#include "volcomp/tools/json_value.hpp"
+
+namespace volcomp::testing {
+namespace {
+
+using tools::JsonValue;
+
+// A simulated board (node 16, factory settings) behind an SLCAN-TCP server.
+class SimulatedNode {
+ public:
+  SimulatedNode() : bus_(1000000), board_(bus_, Options()), ext_(bus_.Attach("external")) {
+    auto server = can_io::SlcanServer::CreateTcp("127.0.0.1", 0);
+    EXPECT_TRUE(server.ok()) << server.error().message;
+    if (!server.ok()) return;
+    server_ = std::move(server).value();
+    EXPECT_TRUE(board_.Start().ok());
+    thread_ = std::thread([this] { Serve(); });
+  }
+  ~SimulatedNode() {
+    stop_ = true;
+    if (thread_.joinable()) thread_.join();
+  }
+  std::string spec() const { return server_ ? server_->client_spec() : "slcan-tcp:127.0.0.1:1"; }
+
+ private:
+  static sim::SimulatedBoardOptions Options() {
+    sim::SimulatedBoardOptions o;
+    o.write_enable_input = true;
+    return o;
+  }
+  void Serve() {
+    sim::SlcanBridge bridge(bus_, *server_, ext_);
+    const sim::RealtimeClock clock;
+    while (!stop_) {
+      sim::AdvanceInEventOrder(bus_, board_, clock.Now());
+      auto wait = clock.Until(sim::NextEventTime(bus_, board_));
+      if (wait > std::chrono::microseconds(1000)) wait = std::chrono::microseconds(1000);
+      if (!bridge.Serve(wait).ok()) return;
+    }
+  }
+
+  sim::SimBus bus_;
+  sim::SimulatedBoard board_;
+  sim::Endpoint& ext_;
+  std::unique_ptr<can_io::SlcanServer> server_;
+  std::atomic<bool> stop_{false};
+  std::thread thread_;
+};
+
+JsonValue Json(const CliResult& r) {
+  const Expected<JsonValue> v = tools::ParseJson(r.out, "stdout");
+  EXPECT_TRUE(v.ok()) << v.error().message << "\n" << r.out;
+  return v.ok() ? *v : JsonValue();
+}
+
+bool Contains(const std::string& text, const std::string& part) {
+  return text.find(part) != std::string::npos;
+}
+
+// A 3-axis table for the board's factory installation (1 µm per step), written to a file.
+std::string TableFile(const std::string& name, uint32_t id) {
+  GridCase g;
+  g.frac_bits = 8;
+  for (auto& d : g.dim) d = {4, -100000, 50000};
+  for (size_t i = 0; i < g.count(); ++i) g.i16.push_back(static_cast<int16_t>(256 * (i % 3)));
+  const AlignedBytes img = WriteGridImage(g, id);
+  const std::string path = ::testing::TempDir() + name + "_" + std::to_string(::getpid()) + ".vct";
+  EXPECT_TRUE(
+      tools::WriteFileBytes(path, std::vector<uint8_t>(img.data(), img.data() + img.size())).ok());
+  return path;
+}
+
+class CanCommands : public ::testing::Test {
+ protected:
+  CliResult Run(std::vector<std::string> words) {
+    words.insert(words.end(), {"--can", node_.spec()});
+    return RunCli(words);
+  }
+  SimulatedNode node_;
+};
+
+TEST_F(CanCommands, StatusTextIsALayoutOfItsJson) {
+  const CliResult json = Run({"status", "--json"});
+  ASSERT_EQ(json.code, 0) << json.err;
+  const JsonValue d = Json(json);
+  const CliResult text = Run({"status"});
+  ASSERT_EQ(text.code, 0) << text.err;
+  EXPECT_EQ(
+      text.out.rfind("node 16: " + d.get("device_name")->string + " " +
+                         d.get("software_version")->string + " (vendor " +
+                         d.get("vendor_id")->string + ", product " + d.get("product_code")->string +
+                         ", revision " + d.get("revision")->string + ", serial " +
+                         std::to_string(d.get("serial_number")->integer) + ")",
+                     0),
+      0u)
+      << text.out;
+  EXPECT_TRUE(Contains(text.out, "\nstate: " + d.get("device_state_flags")->string + "\n"))
+      << text.out;
+  EXPECT_TRUE(Contains(text.out, "\nactive table: none (pass-through)\n")) << text.out;
+  EXPECT_TRUE(
+      Contains(text.out, "\nstaged table: " + d.get("staged_table")->get("state")->string + "\n"))
+      << text.out;
+  const auto& axes = d.get("axes")->array;
+  ASSERT_EQ(axes.size(), 3u);
+  for (const JsonValue& x : axes) {
+    const std::string head = "axis " + std::to_string(x.get("axis")->integer) + " " +
+                             x.get("name")->string + ": input " +
+                             std::to_string(x.get("commanded_steps")->integer) +
+                             " steps, machine not referenced, correction +0.000 µm (+0.000 steps, "
+                             "max " +
+                             std::to_string(x.get("max_correction_steps")->integer) + ")";
+    EXPECT_TRUE(Contains(text.out, head)) << head << "\n" << text.out;
+  }
+  EXPECT_EQ(d.get("counters")->object.size(), 10u);
+  EXPECT_TRUE(Contains(text.out, "\ncounters: can_rx_frames=")) << text.out;
+  for (const auto& counter : d.get("counters")->object) {
+    EXPECT_TRUE(Contains(text.out, " " + counter.first + "=")) << counter.first;
+  }
+}
+
+TEST_F(CanCommands, UploadThenVerifyVerdictsAndExitCodes) {
+  const std::string a = TableFile("a", 3);
+  CliResult r = Run({"verify", a});
+  EXPECT_EQ(r.code, 1) << r.err;  // a verdict, not an error: nothing on stderr
+  EXPECT_TRUE(r.err.empty()) << r.err;
+  EXPECT_TRUE(Contains(r.out, "the image is neither active nor staged on node 16")) << r.out;
+
+  r = Run({"upload", a, "--quiet"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_TRUE(Contains(r.out, "staged and verified on node 16")) << r.out;
+
+  r = Run({"verify", a, "--json"});
+  EXPECT_EQ(r.code, 1) << r.err;
+  JsonValue d = Json(r);
+  EXPECT_EQ(d.get("verdict")->string, "staged, not active");
+  EXPECT_EQ(d.get("exit_code")->integer, 1);
+  EXPECT_TRUE(d.get("active_crc32")->is_null());
+  EXPECT_EQ(d.get("staged_crc32")->string, d.get("image_crc32")->string);
+  // The messages go to stderr beside the object.
+  EXPECT_TRUE(Contains(r.err, "the image is staged and verified but not active")) << r.err;
+
+  r = Run({"verify", a, "--staged", "--readback", "--json"});
+  EXPECT_EQ(r.code, 0) << r.err;
+  d = Json(r);
+  EXPECT_EQ(d.get("verdict")->string, "staged");
+  EXPECT_TRUE(d.get("readback")->get("identical")->boolean);
+  const CliResult text = Run({"verify", a, "--staged", "--readback"});
+  EXPECT_EQ(text.code, 0) << text.err;
+  EXPECT_EQ(text.out, "image CRC-32 " + d.get("image_crc32")->string +
+                          "; node 16: active none, staged " + d.get("staged_crc32")->string +
+                          "\nread back the staged table, " +
+                          std::to_string(d.get("readback")->get("bytes")->integer) +
+                          " bytes: identical to the image\n"
+                          "verified: the image is staged and verified on node 16\n");
+  std::remove(a.c_str());
+}
+
+TEST_F(CanCommands, ActivateRefusalSaysWhyAndActivationReportsTheTable) {
+  CliResult r = Run({"activate", "--json"});
+  EXPECT_EQ(r.code, 1);
+  JsonValue d = Json(r);
+  EXPECT_EQ(d.get("exit_code")->integer, 1);
+  EXPECT_TRUE(Contains(d.get("error")->string, "the board says: nothing is staged"))
+      << d.get("error")->string;
+
+  const std::string a = TableFile("b", 5);
+  ASSERT_EQ(Run({"upload", a, "--quiet"}).code, 0);
+  r = Run({"upload", a, "--quiet", "--activate"});  // not referenced: staged, then refused
+  EXPECT_EQ(r.code, 1);
+  EXPECT_TRUE(Contains(r.err,
+                       "upload failed: activating (0x2101 = 1): node 16 refused 2101:00: "
+                       "abort 0x08000022"))
+      << r.err;
+  ASSERT_EQ(Run({"reference", "--axes", "1,2,3"}).code, 0);
+  std::this_thread::sleep_for(std::chrono::milliseconds(300));  // at rest
+  r = Run({"activate", "--json"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  d = Json(r);
+  EXPECT_EQ(d.get("command")->string, "activate");
+  EXPECT_EQ(d.get("active_table_id")->integer, 5);
+  EXPECT_EQ(r.err,
+            "activated: node 16 active table id 5, CRC-32 " + d.get("active_crc32")->string + "\n");
+  r = Run({"deactivate"});
+  EXPECT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(r.out, "deactivated: node 16 active table id 0, CRC-32 0x00000000\n");
+  std::remove(a.c_str());
+}
+
+TEST_F(CanCommands, SdoReadsWritesAndTheBoardsReasons) {
+  CliResult r = Run({"sdo", "write", "2018:1", "-5000"});
+  EXPECT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(r.out, "ok\n");
+  EXPECT_EQ(Run({"sdo", "read", "2018:1"}).out, "-5000 (0xFFFFEC78)\n");
+  EXPECT_EQ(Run({"sdo", "read", "2010:1"}).out, "88 (0x58)\n");
+  EXPECT_EQ(Run({"sdo", "read", "1008:0"}).out, "volcomp\n");
+  r = Run({"sdo", "read", "2999:0"});
+  EXPECT_EQ(r.code, 1);
+  EXPECT_TRUE(Contains(r.err, "error: node 16 refused 2999:00: abort 0x06020000")) << r.err;
+  r = Run({"sdo", "write", "2101:0", "4"});  // verify with nothing staged
+  EXPECT_EQ(r.code, 1);
+  EXPECT_TRUE(Contains(r.err,
+                       "writing 2101:0: node 16 refused 2101:00: abort 0x06090030 "
+                       "(invalid value for parameter); the board says: nothing is staged"))
+      << r.err;
+  r = Run({"sdo", "read", "zz"});
+  EXPECT_EQ(r.code, 2);
+  EXPECT_TRUE(Contains(r.err, "object address \"zz\": use INDEX:SUB in hex")) << r.err;
+}
+
+TEST_F(CanCommands, ConfigShowTextIsALayoutOfItsJson) {
+  ASSERT_EQ(Run({"sdo", "write", "2015:1", "800"}).code, 0);  // edited, not in force
+  const CliResult json = Run({"config", "show", "--json"});
+  ASSERT_EQ(json.code, 0) << json.err;
+  const JsonValue d = Json(json);
+  EXPECT_TRUE(d.get("settings_pending")->boolean);
+  const CliResult text = Run({"config", "show"});
+  ASSERT_EQ(text.code, 0) << text.err;
+  EXPECT_TRUE(Contains(text.out, "node 16: settings pending: ")) << text.out;
+  int rows = 0;
+  for (const JsonValue& x : d.get("objects")->array) {
+    ++rows;
+    if (x.get("object")->string != "2015:1") continue;
+    EXPECT_EQ(x.get("value")->integer, 800);
+    EXPECT_EQ(x.get("in_force")->integer, 1000);
+    EXPECT_EQ(x.get("factory_text")->string, "1000");
+  }
+  EXPECT_GT(rows, 0);
+  EXPECT_TRUE(Contains(text.out,
+                       "\n2015:1  X    max_correction      800         1000        "
+                       "1000        * ! steps"))
+      << text.out;
+  EXPECT_TRUE(Contains(text.out, "(axes 4..6 are not used: --all shows their objects)"))
+      << text.out;
+}
+
+TEST_F(CanCommands, NmtIsConfirmedByTheHeartbeat) {
+  CliResult r = Run({"nmt", "stop"});
+  EXPECT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(r.out, "node 16: stop: heartbeat reports stopped\n");
+  r = Run({"nmt", "start", "--no-wait"});
+  EXPECT_EQ(r.out, "node 16: start sent (not confirmed: --no-wait)\n");
+  r = Run({"nmt", "reset-comm"});
+  EXPECT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(r.out, "node 16: reset communication: boot-up seen, pre-operational\n");
+}
+
+// A node-ID nobody answers to: no answer is a communication failure (exit 3), naming the read.
+TEST_F(CanCommands, NoAnswerIsACommunicationFailure) {
+  const CliResult r = Run({"status", "--node", "99", "--timeout-ms", "50", "--json"});
+  EXPECT_EQ(r.code, 3);
+  const JsonValue d = Json(r);
+  EXPECT_EQ(d.get("exit_code")->integer, 3);
+  EXPECT_EQ(d.get("error")->string,
+            "reading Vendor-ID: no response from node 99 (sent abort 0x05040000: SDO protocol "
+            "timed out)");
+}
+
+}  // namespace
+}  // namespace volcomp::testing

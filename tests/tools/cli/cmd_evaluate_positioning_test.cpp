@@ -1,0 +1,149 @@
+// `volcomp evaluate positioning` run as main() runs it, on the sample data of samples/metrology/:
+// text and JSON are the same data, the report holds that JSON, bad options and inputs fail with
+// their exit code and message.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <string>
+#include <utility>
+
+#include "cli_runner.hpp"
+#include "file_contents.hpp"
+#include "sample_path.hpp"
+#include "temp_paths.hpp"
+#include "volcomp/tools/json_value.hpp"
+
+namespace volcomp {
+namespace {
+
+using testing::FreshTempPath;
+using testing::ReadText;
+using testing::RunCli;
+using testing::SamplePath;
+using testing::SourcePath;
+
+TEST(MetrologyCli, CommandsAreRegistered) {
+  for (const auto& [verb, noun] : {std::pair{"evaluate", "positioning"},
+                                   {"evaluate", "diagonal"},
+                                   {"evaluate", "rotary"},
+                                   {"program", "positioning"},
+                                   {"program", "diagonal"},
+                                   {"report", "compare"}}) {
+    const auto r = RunCli({"help", verb, noun});
+    EXPECT_EQ(r.code, 0) << verb << " " << noun;
+    EXPECT_NE(r.out.find(std::string("usage: volcomp ") + verb + " " + noun), std::string::npos)
+        << r.out;
+  }
+}
+
+TEST(MetrologyCli, EvaluatePositioningGostExampleWithReport) {
+  const std::string dir = FreshTempPath("evaluate_positioning_report");
+  const auto r = RunCli({"evaluate", "positioning",
+                         SamplePath("metrology/gost27843_example_long.csv"), "--report", dir});
+  EXPECT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("A       = 18.00"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("R_max   = 13.49"), std::string::npos) << r.out;
+  const std::string html = dir + "/positioning_gost27843_example_long.html";
+  const std::string json = dir + "/positioning_gost27843_example_long.json";
+  EXPECT_TRUE(std::filesystem::exists(html));
+  EXPECT_NE(r.err.find("report written to " + html + " and " + json + "\n"), std::string::npos)
+      << r.err;
+  // The report's JSON is the command's --json output.
+  const auto j = RunCli(
+      {"evaluate", "positioning", SamplePath("metrology/gost27843_example_long.csv"), "--json"});
+  EXPECT_EQ(ReadText(json), j.out);
+  // Again into the same directory: the earlier report is replaced, and said so.
+  const auto again = RunCli({"evaluate", "positioning",
+                             SamplePath("metrology/gost27843_example_long.csv"), "--report", dir});
+  EXPECT_NE(again.err.find("(replacing the earlier report of that name)"), std::string::npos);
+  std::filesystem::remove_all(dir);
+}
+
+TEST(MetrologyCli, EvaluatePositioningJsonBothStandards) {
+  const auto r =
+      RunCli({"evaluate", "positioning",
+              SourcePath("tests/tools/metrology/data/gost27843_example_reconstructed.csv"),
+              "--json", "--standard", "both"});
+  EXPECT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("\"standard\": \"GOST 27843-88\""), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("\"standard\": \"ISO 230-2:2014\""), std::string::npos);
+  EXPECT_NE(r.out.find("\"B_max\""), std::string::npos);
+  EXPECT_NE(r.out.find("\"M\""), std::string::npos);
+  const auto doc = tools::ParseJson(r.out, "stdout");
+  ASSERT_TRUE(doc.ok()) << doc.error().message;
+  EXPECT_EQ(doc->get("command")->string, "evaluate positioning");
+  EXPECT_EQ(doc->get("positions")->integer, 11);
+  EXPECT_EQ(doc->get("evaluations")->array.size(), 2u);
+}
+
+// Every figure of the text is in the JSON: the text printed from the JSON read back is the text.
+TEST(MetrologyCli, EvaluatePositioningTextIsALayoutOfTheJson) {
+  const std::string file = SamplePath("metrology/gost27843_example_long.csv");
+  const auto text = RunCli({"evaluate", "positioning", file, "--standard", "both"});
+  const auto json = RunCli({"evaluate", "positioning", file, "--standard", "both", "--json"});
+  ASSERT_EQ(text.code, 0);
+  ASSERT_EQ(json.code, 0);
+  const auto doc = tools::ParseJson(json.out, "stdout");
+  ASSERT_TRUE(doc.ok());
+  const cli::Command* c = nullptr;
+  for (const cli::Command* k : cli::Commands()) {
+    if (std::string(k->name) == "evaluate positioning") c = k;
+  }
+  ASSERT_NE(c, nullptr);
+  std::istringstream in;
+  std::ostringstream out, err;
+  cli::Context ctx{in, out, err};
+  args::Args args({file, "--standard", "both"}, &c->options);
+  const auto output = c->run(args, ctx);
+  ASSERT_TRUE(output.ok());
+  std::ostringstream relaid;
+  output->text(*doc, relaid);
+  EXPECT_EQ(relaid.str(), text.out);
+}
+
+TEST(MetrologyCli, EvaluateRotaryTablePositioningChecksCardinalAngles) {
+  const auto r =
+      RunCli({"evaluate", "positioning", SamplePath("metrology/rotary_table_positioning.csv")});
+  EXPECT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("rotary axis, 12 target positions"), std::string::npos) << r.out;
+  EXPECT_EQ(r.err.find("§2.8"), std::string::npos) << r.err;  // 0/90/180/270 present
+}
+
+TEST(MetrologyCli, EvaluatePositioningReadsStandardInput) {
+  const auto r = RunCli({"evaluate", "positioning", "-"},
+                        ReadText(SamplePath("metrology/gost27843_example_long.csv")));
+  EXPECT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("positioning test: <stdin>\n"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("A       = 18.00"), std::string::npos);
+}
+
+TEST(MetrologyCli, EvaluatePositioningBadOptionsAndInputs) {
+  auto r = RunCli({"evaluate", "positioning", "x.csv", "--standard", "nope"});
+  EXPECT_EQ(r.code, tools::kExitUsage);
+  EXPECT_NE(r.err.find("volcomp evaluate positioning: --standard must be gost27843, iso230-2 or "
+                       "both\n"),
+            std::string::npos)
+      << r.err;
+  r = RunCli({"evaluate", "positioning", "x.csv", "--bogus"});
+  EXPECT_EQ(r.code, tools::kExitUsage);
+  EXPECT_NE(r.err.find("--bogus"), std::string::npos) << r.err;
+  r = RunCli({"evaluate", "positioning"});
+  EXPECT_EQ(r.code, tools::kExitUsage);
+  EXPECT_NE(r.err.find("give exactly one data file (or - for stdin)"), std::string::npos);
+  r = RunCli({"evaluate", "positioning", "x.csv", "--axis-length-mm", "0"});
+  EXPECT_EQ(r.code, tools::kExitUsage);
+  EXPECT_NE(r.err.find("--axis-length-mm must be positive"), std::string::npos);
+  r = RunCli({"evaluate", "positioning", "/nonexistent/file.csv"});
+  EXPECT_EQ(r.code, tools::kExitFailed);
+  EXPECT_NE(r.err.find("volcomp evaluate positioning: error: /nonexistent/file.csv: cannot open"),
+            std::string::npos)
+      << r.err;
+  // With --json a failure is a JSON object on stdout too.
+  r = RunCli({"evaluate", "positioning", "-", "--json"}, "target_mm,direction,run,deviation_um\n");
+  EXPECT_EQ(r.code, tools::kExitFailed);
+  EXPECT_NE(r.err.find("<stdin>:1: no data rows after the header"), std::string::npos) << r.err;
+  EXPECT_NE(r.out.find("\"exit_code\": 1"), std::string::npos) << r.out;
+}
+
+}  // namespace
+}  // namespace volcomp

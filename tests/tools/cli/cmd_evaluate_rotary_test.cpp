@@ -1,0 +1,53 @@
+// `volcomp evaluate rotary` run as main() runs it, on the ISO 230-7 samples of samples/metrology/.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "cli_runner.hpp"
+#include "sample_path.hpp"
+
+namespace volcomp {
+namespace {
+
+using testing::RunCli;
+using testing::SamplePath;
+
+TEST(MetrologyCli, EvaluateRotarySamplesIncludingReversal) {
+  auto r = RunCli({"evaluate", "rotary", SamplePath("metrology/spindle_error_motion.csv"),
+                   "--tilt-distance-mm", "80", "--min-zone", "--json"});
+  EXPECT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("\"tilt\""), std::string::npos);
+  EXPECT_NE(r.out.find("\"MZ\""), std::string::npos);
+  r = RunCli({"evaluate", "rotary", SamplePath("metrology/spindle_error_motion.csv"),
+              "--tilt-distance-mm", "80", "--min-zone"});
+  EXPECT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("values about PC, LSC, MZ"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("; MZ centre offset ("), std::string::npos) << r.out;
+  r = RunCli({"evaluate", "rotary", SamplePath("metrology/reversal_setup1.csv"), "--sensitive",
+              "fixed", "--reversal", SamplePath("metrology/reversal_setup2.csv")});
+  EXPECT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("Donaldson reversal"), std::string::npos) << r.out;
+}
+
+TEST(MetrologyCli, EvaluateRotaryBadOptionsAndInputs) {
+  auto r = RunCli({"evaluate", "rotary", "x.csv", "--fsd-angle-deg", "10"});
+  EXPECT_EQ(r.code, tools::kExitUsage);
+  EXPECT_NE(r.err.find("--fsd-angle-deg needs --sensitive fixed"), std::string::npos) << r.err;
+  r = RunCli({"evaluate", "rotary", "x.csv", "--reversal-procedure", "Q"});
+  EXPECT_EQ(r.code, tools::kExitUsage);
+  r = RunCli({"evaluate", "rotary", SamplePath("metrology/reversal_setup1.csv"), "--sensitive",
+              "fixed", "--reversal", SamplePath("metrology/reversal_setup2.csv"),
+              "--reversal-channel", "q_um"});
+  EXPECT_EQ(r.code, tools::kExitFailed);
+  EXPECT_NE(r.err.find("reversal_setup1.csv: no column \"q_um\" for the reversal"),
+            std::string::npos)
+      << r.err;
+  r = RunCli({"evaluate", "rotary", "-"}, "rev,angle_deg,x_um\n1,0,0\n1,90,1\n1,180,0\n1,270,1\n");
+  EXPECT_EQ(r.code, tools::kExitFailed);
+  EXPECT_NE(r.err.find("<stdin>: a rotating sensitive direction needs column y_um"),
+            std::string::npos)
+      << r.err;
+}
+
+}  // namespace
+}  // namespace volcomp

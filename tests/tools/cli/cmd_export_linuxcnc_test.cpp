@@ -1,0 +1,89 @@
+// `volcomp export linuxcnc`, run as main() runs it: from raw readings (the layout of `evaluate
+// positioning`) the means per target and direction become the file's trims; the INI lines name
+// the joint and the type; warnings and refusals name the file.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "cli_runner.hpp"
+#include "temp_paths.hpp"
+
+namespace volcomp {
+namespace {
+
+using testing::RunCli;
+using testing::TempPath;
+
+// dev = +10 um moving up, -6 um moving down, at 0, 50, 100 mm; two runs each.
+std::string RawReadings() {
+  const std::string csv = TempPath("export_linuxcnc_raw.csv");
+  std::ofstream(csv) << "target_mm,direction,run,deviation_um\n"
+                        "0,up,1,10\n50,up,1,10\n100,up,1,10\n100,down,1,-6\n50,down,1,-6\n"
+                        "0,down,1,-6\n0,up,2,10\n50,up,2,10\n100,up,2,10\n100,down,2,-6\n"
+                        "50,down,2,-6\n0,down,2,-6\n";
+  return csv;
+}
+
+TEST(VolcompExportLinuxcnc, FromRawReadings) {
+  const std::string csv = RawReadings();
+  const std::string dir = TempPath("export_linuxcnc_lcnc");
+  // Two runs: refused unless --allow-few-runs (GOST 27843 and ISO 230-2 ask for five).
+  auto r = RunCli({"export", "linuxcnc", "--z", csv, "-o", dir});
+  EXPECT_EQ(r.code, tools::kExitFailed);
+  EXPECT_NE(r.err.find("require at least 5"), std::string::npos) << r.err;
+  r = RunCli({"export", "linuxcnc", "--z", csv, "-o", dir, "--type", "1", "--joints", "Z=4",
+              "--allow-few-runs"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  const std::string comp = (std::filesystem::path(dir) / "z.comp").string();
+  EXPECT_EQ(r.out.rfind("volcomp export linuxcnc (COMP_FILE_TYPE 1)\n"
+                        "  axis Z: 3 points from 0 to 100, bidirectional, wrote " +
+                            comp + "\n\nINI lines (also in ",
+                        0),
+            0u)
+      << r.out;
+  EXPECT_NE(r.out.find("[JOINT_4]\nCOMP_FILE = "), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("COMP_FILE_TYPE = 1"), std::string::npos) << r.out;
+  EXPECT_NE(r.err.find("warning: "), std::string::npos) << r.err;  // the few runs
+  std::ifstream f(comp);
+  double n, fwd, rev;
+  int rows = 0;
+  while (f >> n >> fwd >> rev) {
+    EXPECT_NEAR(fwd, -0.010, 1e-9);  // a constant deviation is undone exactly
+    EXPECT_NEAR(rev, 0.006, 1e-9);
+    ++rows;
+  }
+  EXPECT_EQ(rows, 3);
+}
+
+TEST(VolcompExportLinuxcnc, OptionsAreChecked) {
+  const std::string csv = RawReadings();
+  const std::string dir = TempPath("export_linuxcnc_lcnc_opts");
+  const auto usage = [](const std::vector<std::string>& words, const std::string& message) {
+    const auto r = RunCli(words);
+    EXPECT_EQ(r.code, tools::kExitUsage) << message;
+    EXPECT_EQ(r.err, "volcomp export linuxcnc: " + message +
+                         "\n(`volcomp help export linuxcnc` lists the options)\n");
+  };
+  usage({"export", "linuxcnc", "--z", csv, "-o", dir, "--type", "2"},
+        "--type must be 0 or 1 (LinuxCNC COMP_FILE_TYPE)");
+  usage({"export", "linuxcnc", "--z", csv, "-o", dir, "--joints", "Z=16"},
+        "--joints: joint of Z must be 0..15");
+  usage({"export", "linuxcnc", "--z", csv, "-o", dir, "--spacing", "Z=0"},
+        "--spacing: Z must be > 0");
+  usage({"export", "linuxcnc", "-o", dir}, "give at least one axis file, e.g. --x x.csv");
+  // Too many points for LinuxCNC: refused naming the file.
+  const auto r = RunCli(
+      {"export", "linuxcnc", "--z", csv, "-o", dir, "--spacing", "Z=0.1", "--allow-few-runs"});
+  EXPECT_EQ(r.code, tools::kExitFailed);
+  EXPECT_EQ(r.err.rfind("warning: ", 0), 0u) << r.err;
+  EXPECT_NE(r.err.find("volcomp export linuxcnc: error: " + csv +
+                       ": 1001 compensation points, LinuxCNC loads at most 256"),
+            std::string::npos)
+      << r.err;
+}
+
+}  // namespace
+}  // namespace volcomp

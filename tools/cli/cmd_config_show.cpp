@@ -1,0 +1,113 @@
+// `volcomp config show [--all] [--json]`: every configuration object of a board with its value
+// (the edited copy a store saves), the value in force (0x2124) and the factory value.
+#include <cctype>
+#include <cstdio>
+#include <ostream>
+
+#include "can_options.hpp"
+#include "commands.hpp"
+#include "config_view.hpp"
+#include "volcomp/canopen/setting_objects.hpp"
+#include "volcomp/hosted/settings_ini.hpp"
+
+namespace volcomp::cli {
+namespace {
+
+// One row: the object, its key and axis, and its three values as numbers and as the file's text.
+JsonValue ObjectData(const canopen::SettingObject& o,
+                     const BoardSettings& board,
+                     const BoardSettings& in_force,
+                     const BoardSettings& factory) {
+  const canopen::ObjectEntry& e = canopen::Entry(o.id);
+  JsonValue x = JsonValue::Object();
+  x.Set("object", hosted::ObjectAddress(e));
+  x.Set("name", e.name);
+  x.Set("key", KeyName(e));
+  x.Set("axis", AxisOf(e, board));
+  x.Set("value", o.get(board));
+  x.Set("text", ValueText(e, o.get(board)));
+  x.Set("in_force", o.get(in_force));
+  x.Set("factory", o.get(factory));
+  x.Set("unit", UnitOf(e));
+  x.Set("in_force_text", ValueText(e, o.get(in_force)));
+  x.Set("factory_text", ValueText(e, o.get(factory)));
+  return x;
+}
+
+JsonValue ShowData(uint8_t node,
+                   const BoardConfiguration& c,
+                   const BoardSettings& in_force,
+                   bool all) {
+  const BoardSettings factory;  // a fresh board's
+  JsonValue d = JsonValue::Object();
+  d.Set("node", unsigned{node});
+  d.Set("settings_pending", c.pending);
+  JsonValue& objects = d["objects"] = JsonValue::Array();
+  for (const canopen::SettingObject& o : canopen::SettingObjects()) {
+    const std::string axis = AxisOf(canopen::Entry(o.id), c.settings);
+    const bool unused_axis = !axis.empty() && std::isdigit(static_cast<unsigned char>(axis[0]));
+    if (all || !unused_axis) objects.Push(ObjectData(o, c.settings, in_force, factory));
+  }
+  d.Set("axis_count", unsigned{c.settings.board.axis_count});
+  d.Set("all_axes", all);
+  return d;
+}
+
+void ShowText(const JsonValue& d, std::ostream& out) {
+  out << "node " << d.get("node")->integer << ": "
+      << (d.get("settings_pending")->boolean ? PendingNote()
+                                             : "settings in force (no edit or store pending)")
+      << "\n";
+  char line[256];
+  std::snprintf(line, sizeof line, "%-7s %-4s %-19s %-11s %-11s %-11s %s\n", "object", "axis",
+                "key", "value", "in force", "factory",
+                "unit (* = not the factory value, ! = not in force)");
+  out << line;
+  for (const JsonValue& x : d.get("objects")->array) {
+    const int64_t value = x.get("value")->integer;
+    const bool changed = value != x.get("factory")->integer;
+    const bool not_in_force = value != x.get("in_force")->integer;
+    std::snprintf(line, sizeof line, "%-7s %-4s %-19s %-11s %-11s %-11s %s%s%s\n",
+                  x.get("object")->string.c_str(), x.get("axis")->string.c_str(),
+                  x.get("key")->string.c_str(), x.get("text")->string.c_str(),
+                  x.get("in_force_text")->string.c_str(), x.get("factory_text")->string.c_str(),
+                  changed ? "* " : "", not_in_force ? "! " : "", x.get("unit")->string.c_str());
+    out << line;
+  }
+  const int64_t axes = d.get("axis_count")->integer;
+  if (!d.get("all_axes")->boolean && axes < table::kMaxAxes) {
+    out << "(axes " << axes + 1 << ".." << unsigned{table::kMaxAxes}
+        << " are not used: --all shows their objects)\n";
+  }
+}
+
+Expected<Output> RunConfigShow(Args& args, Context&) {
+  VOLCOMP_TRY_ASSIGN(const CanConnection can, ParseCanOptions(args));
+  args.Flag("--json");  // the command layer prints the data as JSON
+  const bool all = args.Flag("--all");
+  VOLCOMP_TRY(args.Finish());
+  VOLCOMP_TRY_ASSIGN(const auto session, OpenSession(can));
+  VOLCOMP_TRY_ASSIGN(const BoardConfiguration c, ReadConfiguration(*session));
+  VOLCOMP_TRY_ASSIGN(const BoardSettings in_force, canopen_client::ReadSettingsInForce(*session));
+  return Output{ShowData(can.node, c, in_force, all), ShowText, {}};
+}
+
+}  // namespace
+
+const Command& ConfigShowCommand() {
+  static const Command kCommand{
+      "config show",
+      "every configuration object of a board: value, value in force, factory value",
+      "",
+      Join({CanOptions(),
+            {{"--all", nullptr, nullptr, nullptr, nullptr,
+              "also the objects of the axes beyond the axis count"},
+             {"--json", nullptr, nullptr, nullptr, nullptr, "machine-readable output"}}}),
+      RunConfigShow,
+      "The values are the board's edited copy (what a store saves) beside the configuration in\n"
+      "force (0x2124); they differ while settings are pending (edited or stored, applied at NMT\n"
+      "reset node). See docs/user-guide.md \"Configuring the board from a file\"."};
+  return kCommand;
+}
+
+}  // namespace volcomp::cli

@@ -1,0 +1,52 @@
+// A positioning test evaluated per standard, with its checks and test conditions.
+#include "volcomp/metrology/positioning_evaluation.hpp"
+
+#include <algorithm>
+
+#include "volcomp/metrology/positioning_checks.hpp"
+#include "volcomp/metrology/positioning_csv.hpp"
+#include "volcomp/metrology/reading_checks.hpp"
+#include "volcomp/metrology/report_files.hpp"
+
+namespace volcomp::metrology {
+
+Expected<PositioningEvaluation> EvaluatePositioningTest(const tools::CsvTable& table,
+                                                        const PositioningTestOptions& options) {
+  PositioningEvaluation ev;
+  ev.source = table.source();
+  ev.conditions = ConditionsFromPreamble(table);
+  VOLCOMP_TRY_ASSIGN(const PositioningData data, ReadPositioningCsv(table));
+  VOLCOMP_TRY_ASSIGN(const PositioningSet set, GroupReadings(data, options.grouping));
+  ev.kind = set.kind;
+  ev.positions = set.positions.size();
+  ev.has_up = set.has_up;
+  ev.has_down = set.has_down;
+  ReadingCheckOptions checks;
+  checks.travel = options.axis_length_mm;
+  const std::vector<std::string> reading_warnings = CheckReadings(data, set, checks);
+  for (const Standard s : options.standards) {
+    EvaluationOptions eo;
+    eo.standard = s;
+    eo.sigma = options.sigma;
+    VOLCOMP_TRY_ASSIGN(PositioningResult r, EvaluatePositioning(set, eo));
+    for (const auto& w : reading_warnings) r.warnings.push_back(w);
+    for (const auto& w : CheckPositionCount(set, s, options.axis_length_mm)) {
+      r.warnings.push_back(w);
+    }
+    for (const auto& w : CheckCardinalAngles(set)) r.warnings.push_back(w);
+    for (const auto& w : r.warnings) {
+      if (std::find(ev.warnings.begin(), ev.warnings.end(), w) == ev.warnings.end()) {
+        ev.warnings.push_back(w);
+      }
+    }
+    ev.results.push_back(std::move(r));
+  }
+  return ev;
+}
+
+std::string PositioningReportName(const PositioningEvaluation& ev) {
+  const auto axis = ev.conditions.Find("axis");
+  return "positioning_" + (axis ? SafeName(*axis) : SourceStem(ev.source));
+}
+
+}  // namespace volcomp::metrology
