@@ -171,14 +171,20 @@ done
 #    run 1: X as COMP_FILE_TYPE 1, Y as type 0; the same X and Y programs again.
 comp=$work/comp
 mkdir -p "$comp"
-"$volcomp" export linuxcnc --x "$work/eval/before/gost_X.csv" --type 1 --allow-few-runs -o "$comp/type1" >&2
-"$volcomp" export linuxcnc --y "$work/eval/before/gost_Y.csv" --type 0 --allow-few-runs -o "$comp/type0" >&2
 cp "$src/linuxcnc/config/volcomp-comp.hal" "$work/volcomp-sim.ini" "$comp/"
 sed -i "s|^HALFILE = .*|HALFILE = volcomp-comp.hal|" "$comp/volcomp-sim.ini"
 set_power_on "$comp/volcomp-sim.ini" "$power_on_2"
-sed -i "/^\[JOINT_0\]/r $comp/type1/joints.ini" "$comp/volcomp-sim.ini"
-sed -i "/^\[JOINT_1\]/r $comp/type0/joints.ini" "$comp/volcomp-sim.ini"
-sed -i "/^\[JOINT_[01]\]$/{n;/^\[JOINT_[01]\]$/d}" "$comp/volcomp-sim.ini"
+# As a user would: the export merges its lines into the machine's [JOINT_n] sections (--ini).
+"$volcomp" export linuxcnc --x "$work/eval/before/gost_X.csv" --type 1 --allow-few-runs \
+  -o "$comp/type1" --ini "$comp/volcomp-sim.ini" >&2
+"$volcomp" export linuxcnc --y "$work/eval/before/gost_Y.csv" --type 0 --allow-few-runs \
+  -o "$comp/type0" --ini "$comp/volcomp-sim.ini" >&2
+for j in 0 1; do
+  if [[ $(grep -c "^\[JOINT_$j\]" "$comp/volcomp-sim.ini") -ne 1 ]]; then
+    echo "run_linuxcnc_test: export linuxcnc --ini left [JOINT_$j] other than once" >&2
+    exit 1
+  fi
+done
 echo "== LinuxCNC run 2: joint compensation files (gost_X, gost_Y)" >&2
 run_lcnc "$comp" comp "$work/gost_X.ngc" "$work/gost_Y.ngc"
 "$evaluate" --rest "$comp/rest.csv" --step-mm $step_mm --out "$comp/eval" \
