@@ -130,7 +130,8 @@ void NativeCompensator::Tick(
   for (uint8_t a = 0; a < n; ++a) {
     const NativeAxis& ax = table_->axis(a);
     const int32_t s = ToSteps(pos[a], 1.0 / ax.units_per_step);
-    // Direction for the AXIS1D direction tables, as on the board: the last motion's sign.
+    // Direction for the AXIS1D direction tables: the sign of the joint's last motion (the board
+    // senses its drive's output with a hysteresis instead; docs/linuxcnc.md §6).
     if (have_last_ && s != last_steps_[a]) reverse_[a] = s < last_steps_[a];
     last_steps_[a] = s;
     steps[a] = s;
