@@ -43,7 +43,7 @@ if [[ -n $warnings ]]; then
   echo "check_install: volcomp.9: $warnings" >&2
   fail=1
 fi
-MANWIDTH=80 man -l "$stage/opt/volcomp-test/share/man/man9/volcomp.9" 2>/dev/null | grep -q "joint-pos-cmd" ||
+MANWIDTH=80 man -l "$stage/opt/volcomp-test/share/man/man9/volcomp.9" 2>/dev/null | grep "joint-pos-cmd" >/dev/null ||
   { echo "check_install: man -l volcomp.9 does not show the pins" >&2; fail=1; }
 # What the build's uninstall-linuxcnc target runs, with the same DESTDIR: it removes the files the
 # install recorded (--prefix included).
