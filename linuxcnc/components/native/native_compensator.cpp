@@ -4,10 +4,14 @@
 #include <cmath>
 #include <cstdint>
 
+#include "volcomp/config/board_config.hpp"
+
 namespace volcomp::linuxcnc {
 namespace {
 
 constexpr double kQ32 = 4294967296.0;
+// The board's default AXIS1D direction hysteresis (BoardConfig), in table steps.
+constexpr int32_t kDirectionHysteresisSteps = AxisConfig{}.direction_hysteresis_steps;
 
 // Position in table steps, saturated to the int32 range of the lookups (they clamp to the table).
 int32_t ToSteps(double pos, double steps_per_unit) {
@@ -130,10 +134,24 @@ void NativeCompensator::Tick(
   for (uint8_t a = 0; a < n; ++a) {
     const NativeAxis& ax = table_->axis(a);
     const int32_t s = ToSteps(pos[a], 1.0 / ax.units_per_step);
-    // Direction for the AXIS1D direction tables: the sign of the joint's last motion (the board
-    // senses its drive's output with a hysteresis instead; docs/linuxcnc.md §6).
-    if (have_last_ && s != last_steps_[a]) reverse_[a] = s < last_steps_[a];
-    last_steps_[a] = s;
+    // Direction for the AXIS1D direction tables, as on the board (Compensator::SenseAxis): the
+    // drive's output, the position plus the last period's GRID3 part, against the furthest point
+    // reached in the current direction; moving back by more than the hysteresis turns it.
+    const int32_t out =
+        static_cast<int32_t>(static_cast<uint32_t>(s) + static_cast<uint32_t>(grid_part_steps_[a]));
+    if (!have_last_) {
+      extreme_[a] = out;
+    } else {
+      const int32_t ahead = static_cast<int32_t>(
+          reverse_[a] ? static_cast<uint32_t>(extreme_[a]) - static_cast<uint32_t>(out)
+                      : static_cast<uint32_t>(out) - static_cast<uint32_t>(extreme_[a]));
+      if (ahead > 0) {
+        extreme_[a] = out;
+      } else if (ahead < -kDirectionHysteresisSteps) {
+        reverse_[a] = !reverse_[a];
+        extreme_[a] = out;
+      }
+    }
     steps[a] = s;
     if (ax.wrap_period_steps != 0) {
       const int64_t period = ax.wrap_period_steps;
@@ -146,9 +164,21 @@ void NativeCompensator::Tick(
     all_limits = all_limits && limits_valid_[a];
   }
   have_last_ = true;
+  // PreparedTable::TargetsQ8 in two parts: the GRID3 part alone (in whole steps) is the next
+  // period's direction sensing (zero while not engaged, as on the board), then the AXIS1D tables.
+  const PreparedTable& prepared = table_->prepared();
   int32_t wanted_q8[kMaxAxes] = {};
-  table_->prepared().TargetsQ8(steps, axis_steps, reverse_, n, wanted_q8);
+  if (prepared.has_grid) {
+    int32_t g[3];
+    prepared.grid.Lookup(steps, g);
+    for (int c = 0; c < 3; ++c) wanted_q8[prepared.grid.axis(c)] += g[c];
+  }
   engaged_ = enable && referenced && all_limits;
+  for (uint8_t a = 0; a < n; ++a) {
+    grid_part_steps_[a] = engaged_ ? (wanted_q8[a] + 128) >> 8 : 0;
+    const int8_t i = prepared.axis_table_of[a];
+    if (i >= 0) wanted_q8[a] += prepared.axis_table[i].Lookup(axis_steps[a], reverse_[a]);
+  }
   clamped_ = false;
   for (uint8_t a = 0; a < n; ++a) {
     int32_t target = 0;

@@ -1,5 +1,6 @@
 // The native component's per-period compensation (one instance): the firmware's table lookup
-// (lib/: PreparedTable::TargetsQ8, GRID3 + AXIS1D with direction and rotary wrap), the clamp to
+// (lib/: PreparedTable's GRID3 and AXIS1D lookups, direction rows and rotary wrap; the direction
+// sensed on the drive's output with the board's default hysteresis of one step), the clamp to
 // the maximum correction and the firmware's CorrectionLimiter, every servo period, at the machine
 // position of each table axis. Units: positions and corrections in the table's units (mm for
 // linear axes, degrees for rotary ones); the caller converts machine units (inch) to these.
@@ -80,7 +81,10 @@ class NativeCompensator {
   LimiterParams pending_[kMaxAxes];
   bool has_pending_[kMaxAxes] = {};
   int32_t max_q8_[kMaxAxes] = {};
-  int32_t last_steps_[kMaxAxes] = {};
+  // AXIS1D direction sensing (as Compensator::SenseAxis): the last period's GRID3 part in whole
+  // steps, the furthest output position in the current direction, the direction.
+  int32_t grid_part_steps_[kMaxAxes] = {};
+  int32_t extreme_[kMaxAxes] = {};
   bool reverse_[kMaxAxes] = {};
   double last_correction_[kMaxAxes] = {};
 };

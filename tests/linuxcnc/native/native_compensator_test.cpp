@@ -1,7 +1,9 @@
 // The native component's per-period compensation: the table at the machine position (against the
 // independent double trilinear reference), ramps in and out within the limits, clamps visibly,
 // wraps a rotary AXIS1D axis, gives the correction's velocity, takes new limits at run time
-// without a jump and refuses limits the limiter cannot hold, switches tables within the limits.
+// without a jump and refuses limits the limiter cannot hold, switches tables within the limits,
+// picks an AXIS1D table's direction row as the board does (its output turned back by more than
+// one step).
 #include "native/native_compensator.hpp"
 
 #include <gtest/gtest.h>
@@ -208,6 +210,49 @@ TEST(NativeCompensator, SwitchesTablesWithinTheLimits) {
   for (int a = 0; a < 3; ++a) {
     EXPECT_NEAR(corr[a] / kMmPerStep, ExactTrilinear(g2, at, a), kLsb + 1e-9) << a;
   }
+}
+
+// X with an AXIS1D table whose direction rows differ: +10 steps forward, -10 steps reverse.
+volcomp::testing::AlignedBytes DirectionImage() {
+  static const int16_t kForward[3] = {10, 10, 10};
+  static const int16_t kReverse[3] = {-10, -10, -10};
+  table::ImageSpec img;
+  img.table_id = 12;
+  img.axis_count = 1;
+  img.axes[0] = volcomp::testing::LinearAxis('X');
+  img.axis1d_count = 1;
+  table::Axis1dSpec& a = img.axis1d[0];
+  a.axis = 0;
+  a.dim = {3, 0, 100000};  // 0, 100, 200 mm
+  a.forward.type = table::ElementType::kInt16;
+  a.forward.i16 = kForward;
+  a.has_reverse = true;
+  a.reverse.type = table::ElementType::kInt16;
+  a.reverse.i16 = kReverse;
+  volcomp::testing::AlignedBytes out(*table::ImageSize(img));
+  if (!table::WriteImage(img, out.data(), out.size()).ok()) out.resize(0);
+  return out;
+}
+
+TEST(NativeCompensator, DirectionRowTurnsWhenTheOutputGoesBackMoreThanAStep) {
+  const auto t = Load(DirectionImage());
+  ASSERT_NE(t, nullptr);
+  NativeCompensator c;
+  c.UseTable(t.get());
+  ASSERT_TRUE(c.SetPeriod(kMs).ok());
+  double corr[1], vel[1];
+  // Settles at the row of the direction the joint last moved in (1 s at 1 kHz).
+  const auto settle_at = [&](int32_t step) {
+    const double pos[1] = {step * kMmPerStep};
+    for (int i = 0; i < 1000; ++i) c.Tick(pos, true, true, corr, vel);
+    return std::lround(corr[0] / kMmPerStep);
+  };
+  EXPECT_EQ(settle_at(50000), 10);  // forward from the start
+  EXPECT_EQ(settle_at(50001), 10);
+  EXPECT_EQ(settle_at(50000), 10);   // one step back: within the hysteresis
+  EXPECT_EQ(settle_at(49999), -10);  // two steps back from the furthest point: reverse
+  EXPECT_EQ(settle_at(50000), -10);  // one step forward: still reverse
+  EXPECT_EQ(settle_at(50001), 10);   // two: forward again
 }
 
 }  // namespace
