@@ -133,6 +133,37 @@ def reversal(rng):
                     f.write(f"{k + 1},{a:.1f},{v + rng.gauss(0, 0.01):.4f}\n")
 
 
+def circular(rng):
+    """An ISO 230-4 circular test in XY as a ballbar reads it: R 100 mm, 1° steps, CW then CCW.
+    Setup offset of the ballbar's centre (8, -5) µm; out-of-squareness 60 µm/m (ellipse at 45°,
+    ±3 µm); X/Y scale mismatch (ellipse on the axes, ±2 µm); lost motion 6 µm in X and 4 µm in Y;
+    reversal spikes of 4 µm at the quadrants, decaying over 5° after each axis reverses; the
+    measured radius 1.2 µm long; noise 0.15 µm."""
+    with open(f"{HERE}/circular_xy.csv", "w") as f:
+        f.write("# synthetic ISO 230-4 circular test (ballbar), XY plane, deviation = measured "
+                "radius - 100 mm\n")
+        f.write("# machine: MILL-7\n# axis: XY\n# date: 2026-11-27\n# operator: QA\n")
+        f.write("# instrument: ballbar 100 mm\n# air temperature C: 20.3\n"
+                "# material temperature C: 20.1\n# feed mm per min: 1000\n")
+        f.write("direction,angle_deg,deviation_um\n")
+        for d in ("cw", "ccw"):
+            s = 1.0 if d == "ccw" else -1.0  # the sense of travel
+            for k in range(360):
+                a = k if d == "ccw" else (360 - k) % 360
+                t = math.radians(a)
+                vx, vy = -s * math.sin(t), s * math.cos(t)  # direction of each axis's motion
+                sign = lambda v: (v > 1e-12) - (v < -1e-12)
+                r = 1.2 + 8 * math.cos(t) - 5 * math.sin(t)
+                r += 3 * math.sin(2 * t) + 2 * math.cos(2 * t)
+                r += -3 * sign(vx) * math.cos(t) - 2 * sign(vy) * math.sin(t)
+                for q in (0, 90, 180, 270):
+                    after = ((a - q) * s) % 360  # degrees travelled since the quadrant
+                    if after < 5:
+                        r += 4 * (1 - after / 5)
+                r += rng.gauss(0, 0.15)
+                f.write(f"{d},{a:.1f},{r:.3f}\n")
+
+
 if __name__ == "__main__":
     rng = random.Random(27843)
     gost_long()
@@ -140,3 +171,4 @@ if __name__ == "__main__":
     diagonals(rng)
     spindle(rng)
     reversal(rng)
+    circular(random.Random(2304))

@@ -1,6 +1,7 @@
-// `volcomp program positioning` and `volcomp program diagonal`: test programs as G-code
-// (metrology/test_program.hpp) on standard output or in files, and the readings templates the
-// evaluate commands read back (metrology/readings_template.hpp).
+// `volcomp program positioning`, `volcomp program diagonal` and `volcomp program circular`: test
+// programs as G-code (metrology/test_program.hpp, metrology/circular_program.hpp) on standard
+// output or in files, and the readings templates the evaluate commands read back
+// (metrology/readings_template.hpp).
 #include <algorithm>
 #include <cstdint>
 #include <optional>
@@ -13,6 +14,7 @@
 #include "commands.hpp"
 #include "file_arguments.hpp"
 #include "option_groups.hpp"
+#include "volcomp/metrology/circular_program.hpp"
 #include "volcomp/metrology/diagonal.hpp"
 #include "volcomp/metrology/readings_template.hpp"
 #include "volcomp/metrology/test_program.hpp"
@@ -337,6 +339,41 @@ Expected<Output> RunProgramDiagonal(Args& args, Context& ctx) {
   return output;
 }
 
+Expected<Output> RunProgramCircular(Args& args, Context& ctx) {
+  m::CircularProgramOptions o;
+  const std::string plane = args.Value("--plane").value_or("XY");
+  const auto centre = args.Value("--centre");
+  const auto radius = args.Number("--radius");
+  const auto feed = args.Number("--feed");
+  const auto start = args.Number("--start-angle-deg");
+  const auto run = args.Number("--run-in-deg");
+  o.pause = args.Flag("--pause");
+  const std::string out = args.Value("--output", "-o").value_or("-");
+  VOLCOMP_TRY(args.Finish());
+  VOLCOMP_TRY_ASSIGN(o.plane, ParseChoice<m::CircularPlane>("--plane", plane,
+                                                            {{"XY", m::CircularPlane::kXY},
+                                                             {"XZ", m::CircularPlane::kZX},
+                                                             {"ZX", m::CircularPlane::kZX, false},
+                                                             {"YZ", m::CircularPlane::kYZ}}));
+  if (centre) {
+    VOLCOMP_TRY_ASSIGN(const m::Vec3 c, PointOption("--centre", *centre));
+    o.centre_mm = {c.x, c.y, c.z};
+  }
+  if (!radius) return UsageFailure("missing required option --radius");
+  if (!(*radius > 0.0)) return UsageFailure("--radius must be positive");
+  o.radius_mm = *radius;
+  o.feed_mm_min = feed.value_or(1000.0);
+  if (!(o.feed_mm_min > 0.0)) return UsageFailure("--feed must be positive");
+  o.start_angle_deg = start.value_or(0.0);
+  o.run_deg = run.value_or(90.0);
+  if (!(o.run_deg > 0.0 && o.run_deg <= 180.0)) {
+    return UsageFailure("--run-in-deg must be within (0, 180]");
+  }
+  VOLCOMP_TRY_ASSIGN(const std::string gcode, AsUsage(m::EmitCircularProgram(o)));
+  VOLCOMP_TRY(WriteTextArgument(gcode, out, ctx));
+  return Output{};
+}
+
 }  // namespace
 
 const Command& ProgramPositioningCommand() {
@@ -388,6 +425,30 @@ const Command& ProgramDiagonalCommand() {
       "the high end of Z is -X-Y+Z. With --box, -o FILE.ngc writes FILE_NNN.ngc, FILE_PNN.ngc,\n"
       "FILE_NPN.ngc and FILE_PPN.ngc (start corners -X-Y-Z, +X-Y-Z, -X+Y-Z, +X+Y-Z) and\n"
       "--targets-csv one template for all four, which `evaluate diagonal` reads."};
+  return kCommand;
+}
+
+const Command& ProgramCircularCommand() {
+  static const Command kCommand{
+      "program circular",
+      "ISO 230-4 circular test program: CCW and CW with run-in/run-out arcs (G-code)",
+      "",
+      {{"--radius", nullptr, "R", "mm", nullptr, "radius of the nominal circle (required)"},
+       {"--centre", nullptr, "X,Y,Z", "mm", "0,0,0", "centre of the circle"},
+       {"--plane", nullptr, "XY|XZ|YZ", nullptr, "XY", "plane of the circle (G17, G18, G19)"},
+       {"--feed", nullptr, "F", "mm/min", "1000", "contouring feed"},
+       {"--start-angle-deg", nullptr, "A", "deg", "0",
+        "where each measured 360° begins (angle convention below)"},
+       {"--run-in-deg", nullptr, "D", "deg", "90",
+        "run-in and run-out arc before and after each measured 360°, (0, 180]"},
+       {"--pause", nullptr, nullptr, nullptr, nullptr,
+        "M0 at the start point (fit the ballbar, then cycle start)"},
+       {"--output", "-o", "FILE", nullptr, "-", "G-code program to write (- = stdout)"}},
+      RunProgramCircular,
+      "The circle is run counter-clockwise (G3), then clockwise (G2): run-in arc, measured 360°,\n"
+      "run-out arc, blended (G64), so the feed is constant over the measured circle. Angles, as\n"
+      "`evaluate circular` reads them, count counter-clockwise from the plane's first axis: XY\n"
+      "from +X towards +Y, XZ (G18) from +Z towards +X, YZ from +Y towards +Z."};
   return kCommand;
 }
 

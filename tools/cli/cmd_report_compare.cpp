@@ -35,13 +35,14 @@ Expected<Output> RunReportCompare(Args& args, Context& ctx) {
 const Command& ReportCompareCommand() {
   static const Command kCommand{
       "report compare",
-      "before/after page: positioning and diagonal results with reductions",
+      "before/after page: positioning, diagonal and circular results with reductions",
       "BEFORE AFTER",
       {{"--output", "-o", "DIR", nullptr, nullptr, "directory for compare.html (required)"},
        {"--json", nullptr, nullptr, nullptr, nullptr, "every compared value as JSON on stdout"}},
       RunReportCompare,
       "BEFORE and AFTER are report directories written by `evaluate ... --report DIR` (or\n"
-      "single .json results of it); results are paired by name (axis, diagonals)."};
+      "single .json results of it); results are paired by name (axis, diagonals, circular test "
+      "file)."};
   return kCommand;
 }
 

@@ -29,13 +29,16 @@ const Command& EdsCommand();
 const Command& EvaluatePositioningCommand();
 const Command& EvaluateDiagonalCommand();
 const Command& EvaluateRotaryCommand();
+const Command& EvaluateCircularCommand();
 const Command& ProgramPositioningCommand();
 const Command& ProgramDiagonalCommand();
+const Command& ProgramCircularCommand();
 const Command& ReportCompareCommand();
 const Command& BuildModelCommand();
 const Command& BuildTrackerCommand();
 const Command& BuildKmtppCommand();
 const Command& BuildAxisCommand();
+const Command& BuildImageCommand();
 const Command& ExportLinuxcncCommand();
 const Command& ModelEvalCommand();
 

@@ -9,6 +9,7 @@ const std::vector<Command>& Commands() {
       BenchUploadCommand(),
 #ifdef VOLCOMP_SIM_HAS_DEMO
       DemoCommand(),
+      RunCommand(),
 #endif
   };
   return commands;

@@ -9,6 +9,7 @@ const Command& NodeCommand();
 const Command& BenchUploadCommand();
 #ifdef VOLCOMP_SIM_HAS_DEMO
 const Command& DemoCommand();
+const Command& RunCommand();
 #endif
 
 }  // namespace volcomp::sim

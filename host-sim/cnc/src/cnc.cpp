@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "volcomp/sim/contract.hpp"
+#include "volcomp/sim/path_motion.hpp"
 
 namespace volcomp::sim {
 
@@ -18,6 +19,15 @@ struct Cnc::Block {
   double feed_mm_s = 0;
   double dwell_s = 0;
   uint8_t mask = 0;
+  bool arc = false;
+  PathRequest arc_words;  // its end_mm is not used (TargetOf gives the end)
+  int line = 0;
+};
+
+struct Cnc::Chain {
+  std::unique_ptr<PathMotion> motion;
+  std::vector<double> ends_mm;  // path length at the end of each block
+  std::vector<int> lines;       // program line of each block
 };
 
 struct Cnc::Move {
@@ -29,6 +39,7 @@ struct Cnc::Move {
   std::array<int, 3> dir = {1, 1, 1};
   std::array<uint64_t, 3> next_t = {0, 0, 0};
   std::array<double, 3> path_per_step_mm = {0, 0, 0};  // path length per step of each axis
+  PathSegment path = PathSegment::Line({0, 0, 0}, {0, 0, 0});
 
   uint64_t StepTime(size_t a, int64_t k) const {
     const double s = k == n[a] ? profile.length_mm() : path_per_step_mm[a] * static_cast<double>(k);
@@ -98,13 +109,107 @@ void Cnc::QueueProgram(const Program& program) {
       b.rapid = p.kind == ProgramBlock::Kind::kRapid;
       b.feed_mm_s = p.feed_mm_s;
       b.incremental = p.incremental;
+      b.arc = p.kind == ProgramBlock::Kind::kArc;
+      b.arc_words = RequestOf(p, {0, 0, 0}, config_.step_mm);
       for (size_t a = 0; a < 3; ++a) {
         b.has[a] = p.has[a];
         b.value_steps[a] = p.value_mm[a] / config_.step_mm[a];
       }
     }
+    b.line = p.line;
     queue_.push_back(b);
   }
+}
+
+std::array<int64_t, 3> Cnc::TargetOf(const Block& b, const std::array<int64_t, 3>& from) const {
+  std::array<int64_t, 3> target = from;
+  for (size_t a = 0; a < 3; ++a) {
+    if (!b.has[a]) continue;
+    const int64_t v = std::llround(b.value_steps[a]);
+    target[a] = b.incremental ? from[a] + v : v;
+  }
+  return target;
+}
+
+bool Cnc::StartChain(const Block& b, uint64_t t0) {
+  if (b.rapid) return false;
+  std::array<int64_t, 3> from = {position(0), position(1), position(2)};
+  auto mm = [&](const std::array<int64_t, 3>& steps) {
+    Point3 p;
+    for (size_t a = 0; a < 3; ++a) p[a] = static_cast<double>(steps[a]) * config_.step_mm[a];
+    return p;
+  };
+  auto segment = [&](const Block& x, const std::array<int64_t, 3>& start) {
+    PathRequest r = x.arc_words;
+    r.arc = x.arc;
+    r.end_mm = mm(TargetOf(x, start));
+    Expected<PathSegment> s = PathSegment::Resolve(mm(start), r);
+    VOLCOMP_SIM_EXPECT(s.ok(), "cnc: an arc the program check should have refused");
+    return *s;
+  };
+  std::vector<PathSegment> segments = {segment(b, from)};
+  auto chain = std::make_unique<Chain>();
+  chain->ends_mm.push_back(segments.back().length_mm());
+  chain->lines.push_back(b.line);
+  std::array<int64_t, 3> end = TargetOf(b, from);
+  const double kJoinCos = std::cos(3.14159265358979323846 / 180);
+  while (!queue_.empty()) {
+    const Block& next = queue_.front();
+    if (next.kind != Block::Kind::kMove || next.rapid || next.feed_mm_s != b.feed_mm_s) break;
+    const PathSegment s = segment(next, end);
+    const PathSegment& last = segments.back();
+    const Point3 t0v = last.TangentAt(last.length_mm()), t1v = s.TangentAt(0);
+    const double dot = t0v[0] * t1v[0] + t0v[1] * t1v[1] + t0v[2] * t1v[2];
+    if (!(last.arc() || s.arc()) || dot < kJoinCos) break;
+    segments.push_back(s);
+    chain->ends_mm.push_back(chain->ends_mm.back() + s.length_mm());
+    chain->lines.push_back(next.line);
+    end = TargetOf(next, end);
+    queue_.pop_front();
+  }
+  if (segments.size() == 1 && !segments[0].arc()) return false;
+  Point3 axis_speed;
+  for (size_t a = 0; a < 3; ++a) axis_speed[a] = config_.max_step_rate_hz * config_.step_mm[a];
+  double speed = b.feed_mm_s;
+  for (const PathSegment& s : segments) {
+    speed = std::min(speed, s.SpeedLimit(axis_speed, config_.accel_mm_s2));
+  }
+  chain->motion = std::make_unique<PathMotion>(std::move(segments), from, end, config_.step_mm,
+                                               speed, config_.accel_mm_s2, t0);
+  for (size_t a = 0; a < 3; ++a) {
+    peak_rate_hz_ = std::max(peak_rate_hz_, chain->motion->peak_speed_mm_s() / config_.step_mm[a]);
+  }
+  chain_ = std::move(chain);
+  return true;
+}
+
+int Cnc::active_line() const {
+  if (!active_) return 0;
+  if (!chain_) return active_->line;
+  const double s = chain_->motion->PathLengthAt(now_ns_);
+  size_t i = 0;
+  while (i + 1 < chain_->lines.size() && chain_->ends_mm[i] < s) ++i;
+  return chain_->lines[i];
+}
+
+Cnc::Activity Cnc::activity() const {
+  if (!active_) return Activity::kIdle;
+  switch (active_->kind) {
+    case Block::Kind::kDwell:
+      return Activity::kDwell;
+    case Block::Kind::kHome:
+      return Activity::kHome;
+    case Block::Kind::kMove:
+      break;
+  }
+  return active_->rapid ? Activity::kRapid : Activity::kFeed;
+}
+
+std::optional<PathSegment> Cnc::active_segment() const {
+  if (!active_ || active_->kind != Block::Kind::kMove) return std::nullopt;
+  if (chain_) return chain_->motion->SegmentAt(now_ns_);
+  if (move_) return move_->path;
+  return std::nullopt;
 }
 
 double Cnc::RapidSpeed_mm_s(const std::array<int64_t, 3>& delta_steps) const {
@@ -145,6 +250,7 @@ void Cnc::Start(const Block& b, uint64_t t0) {
     }
     return;
   }
+  if (StartChain(b, t0)) return;
   auto m = std::make_unique<Move>();
   m->start_ns = t0;
   std::array<int64_t, 3> delta = {0, 0, 0};
@@ -162,6 +268,14 @@ void Cnc::Start(const Block& b, uint64_t t0) {
     len2 += d * d;
   }
   const double length = std::sqrt(len2);
+  {
+    Point3 from, to;
+    for (size_t a = 0; a < 3; ++a) {
+      from[a] = static_cast<double>(position(static_cast<int>(a))) * config_.step_mm[a];
+      to[a] = from[a] + static_cast<double>(delta[a]) * config_.step_mm[a];
+    }
+    m->path = PathSegment::Line(from, to);
+  }
   if (length == 0) {
     m->end_ns = t0;
     move_ = std::move(m);
@@ -182,6 +296,13 @@ void Cnc::Start(const Block& b, uint64_t t0) {
 }
 
 bool Cnc::RunMove(uint64_t t_ns) {
+  if (chain_) {
+    PathMotion& p = *chain_->motion;
+    const bool emitted = p.EmitUntil(t_ns, [this](int a, uint64_t t, int dir) { Emit(a, t, dir); });
+    if (!emitted || p.end_ns() > t_ns) return false;
+    cursor_ns_ = p.end_ns();
+    return true;
+  }
   Move& m = *move_;
   for (size_t a = 0; a < 3; ++a) {
     while (m.done[a] < m.n[a] && m.next_t[a] <= t_ns) {
@@ -301,6 +422,7 @@ void Cnc::AdvanceTo(uint64_t t_ns) {
     active_.reset();
     move_.reset();
     homing_.reset();
+    chain_.reset();
   }
   now_ns_ = std::max(now_ns_, t_ns);
 }

@@ -66,6 +66,31 @@ Expected<std::vector<Word>> Words(const std::string& raw, const std::string& sou
 
 bool IsCode(double v, double code) { return std::fabs(v - code) < 1e-9; }
 
+// Checks and stores an arc's words: I J K in the plane or R, not both.
+Outcome ArcWords(
+    ProgramBlock& b, bool has_offset, double r, int plane, const std::string& source, int line) {
+  const char* const kPlaneName = plane == 17 ? "G17" : plane == 18 ? "G18" : "G19";
+  const std::array<int, 3> axes = plane == 18   ? std::array<int, 3>{2, 0, 1}
+                                  : plane == 19 ? std::array<int, 3>{1, 2, 0}
+                                                : std::array<int, 3>{0, 1, 2};
+  if (has_offset && !std::isnan(r)) return Refuse(source, line, "an arc with both I/J/K and R");
+  if (!has_offset && std::isnan(r)) {
+    return Refuse(source, line,
+                  "G" + std::string(b.clockwise ? "2" : "3") +
+                      " needs the centre (I, J, K) or the radius (R)");
+  }
+  if (has_offset && b.has_offset[static_cast<size_t>(axes[2])]) {
+    return Refuse(source, line,
+                  std::string(1, static_cast<char>('I' + axes[2])) + " is not in the " +
+                      kPlaneName + " plane");
+  }
+  if (!std::isnan(r) && r == 0) return Refuse(source, line, "R must not be 0");
+  b.plane = plane;
+  b.radius_form = !std::isnan(r);
+  b.radius_mm = b.radius_form ? r : 0;
+  return {};
+}
+
 }  // namespace
 
 Expected<Program> ParseGcode(const std::string& text, const std::string& source) {
@@ -74,23 +99,27 @@ Expected<Program> ParseGcode(const std::string& text, const std::string& source)
   std::string raw;
   int line = 0;
   bool incremental = false;
-  int motion = -1;  // 0, 1 or unset
+  int motion = -1;  // 0, 1, 2, 3 or unset
+  int plane = 17;
   double feed_mm_s = 0;
   while (std::getline(in, raw)) {
     ++line;
     VOLCOMP_TRY_ASSIGN(const std::vector<Word> words, Words(raw, source, line));
     ProgramBlock block;
     block.line = line;
-    bool has_coord = false, dwell = false, end = false;
+    bool has_coord = false, has_offset = false, dwell = false, end = false;
     int new_motion = -1;
-    double p = NAN;
+    double p = NAN, r = NAN;
     for (const Word& w : words) {
       switch (w.letter) {
         case 'N':
           break;
         case 'G':
-          if (IsCode(w.value, 0) || IsCode(w.value, 1)) {
+          if (IsCode(w.value, 0) || IsCode(w.value, 1) || IsCode(w.value, 2) ||
+              IsCode(w.value, 3)) {
             new_motion = static_cast<int>(w.value);
+          } else if (IsCode(w.value, 17) || IsCode(w.value, 18) || IsCode(w.value, 19)) {
+            plane = static_cast<int>(std::lround(w.value));
           } else if (IsCode(w.value, 4)) {
             dwell = true;
           } else if (IsCode(w.value, 90)) {
@@ -99,9 +128,9 @@ Expected<Program> ParseGcode(const std::string& text, const std::string& source)
             incremental = true;
           } else if (IsCode(w.value, 20)) {
             return Refuse(source, line, "G20 (inches) is not supported; use G21");
-          } else if (IsCode(w.value, 21) || IsCode(w.value, 17) || IsCode(w.value, 40) ||
-                     IsCode(w.value, 49) || IsCode(w.value, 54) || IsCode(w.value, 61) ||
-                     IsCode(w.value, 64) || IsCode(w.value, 80) || IsCode(w.value, 94)) {
+          } else if (IsCode(w.value, 21) || IsCode(w.value, 40) || IsCode(w.value, 49) ||
+                     IsCode(w.value, 54) || IsCode(w.value, 61) || IsCode(w.value, 64) ||
+                     IsCode(w.value, 80) || IsCode(w.value, 94)) {
           } else {
             std::ostringstream g;
             g << "G" << w.value << " is not supported";
@@ -135,6 +164,16 @@ Expected<Program> ParseGcode(const std::string& text, const std::string& source)
           has_coord = true;
           break;
         }
+        case 'I':
+        case 'J':
+        case 'K':
+          block.centre_offset_mm[static_cast<size_t>(w.letter - 'I')] = w.value;
+          block.has_offset[static_cast<size_t>(w.letter - 'I')] = true;
+          has_offset = true;
+          break;
+        case 'R':
+          r = w.value;
+          break;
         default:
           return Refuse(source, line, std::string("word ") + w.letter + " is not supported");
       }
@@ -149,21 +188,69 @@ Expected<Program> ParseGcode(const std::string& text, const std::string& source)
     } else if (!std::isnan(p)) {
       return Refuse(source, line, "P without G4");
     }
-    if (has_coord) {
-      if (motion < 0) return Refuse(source, line, "coordinates without G0 or G1");
+    const bool arc_words = has_offset || !std::isnan(r);
+    if (arc_words && motion != 2 && motion != 3) {
+      return Refuse(source, line, "I, J, K or R without G2 or G3");
+    }
+    if (has_coord || arc_words) {
+      if (motion < 0) return Refuse(source, line, "coordinates without G0, G1, G2 or G3");
       block.incremental = incremental;
       if (motion == 0) {
         block.kind = ProgramBlock::Kind::kRapid;
       } else {
-        if (!(feed_mm_s > 0)) return Refuse(source, line, "G1 without a feed (F)");
-        block.kind = ProgramBlock::Kind::kLinear;
+        if (!(feed_mm_s > 0)) {
+          return Refuse(source, line, "G" + std::to_string(motion) + " without a feed (F)");
+        }
+        block.kind = motion == 1 ? ProgramBlock::Kind::kLinear : ProgramBlock::Kind::kArc;
+        block.clockwise = motion == 2;
         block.feed_mm_s = feed_mm_s;
+      }
+      if (block.kind == ProgramBlock::Kind::kArc) {
+        VOLCOMP_TRY(ArcWords(block, has_offset, r, plane, source, line));
       }
       program.push_back(block);
     }
     if (end) break;
   }
   return program;
+}
+
+}  // namespace volcomp::sim
+
+namespace volcomp::sim {
+
+PathRequest RequestOf(const ProgramBlock& b, const Point3& position_mm, const Point3& step_mm) {
+  PathRequest r;
+  for (size_t a = 0; a < 3; ++a) {
+    double v = position_mm[a];
+    if (b.has[a]) v = b.incremental ? v + b.value_mm[a] : b.value_mm[a];
+    r.end_mm[a] = static_cast<double>(std::llround(v / step_mm[a])) * step_mm[a];
+  }
+  r.arc = b.kind == ProgramBlock::Kind::kArc;
+  r.clockwise = b.clockwise;
+  r.plane = b.plane;
+  r.centre_offset_mm = b.centre_offset_mm;
+  r.radius_form = b.radius_form;
+  r.radius_mm = b.radius_mm;
+  return r;
+}
+
+Outcome CheckProgramPaths(const Program& program,
+                          const Point3& start_mm,
+                          const Point3& step_mm,
+                          const std::string& source) {
+  Point3 at = start_mm;
+  for (const ProgramBlock& b : program) {
+    if (b.kind == ProgramBlock::Kind::kDwell) continue;
+    const PathRequest r = RequestOf(b, at, step_mm);
+    const Expected<PathSegment> segment = PathSegment::Resolve(at, r);
+    if (!segment.ok()) {
+      return Fail(Error::kInputInvalid,
+                  source + ":" + std::to_string(b.line) + ": " + segment.error().message);
+    }
+    at = r.end_mm;
+  }
+  return {};
 }
 
 }  // namespace volcomp::sim

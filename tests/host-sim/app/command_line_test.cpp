@@ -8,23 +8,10 @@
 #include <string>
 #include <vector>
 
+#include "sim_runner.hpp"
+
 namespace volcomp::sim {
 namespace {
-
-struct SimRun {
-  int code = -1;
-  std::string out, err;
-};
-
-SimRun Sim(const std::vector<std::string>& words) {
-  std::ostringstream out, err;
-  Context ctx{out, err};
-  SimRun r;
-  r.code = RunSimCommandLine(words, ctx);
-  r.out = out.str();
-  r.err = err.str();
-  return r;
-}
 
 TEST(SimCommandLine, HelpListsEveryCommand) {
   const SimRun help = Sim({"help"});

@@ -51,9 +51,10 @@ TEST(SimGcode, RefusesWhatItDoesNotModelWithTheLine) {
     const char* message;
   } cases[] = {
       {"G20\n", "prog:1: G20"},
-      {"G21\nG2 X1 Y1 I1\n", "prog:2: G2 is not supported"},
+      {"G21\nG2 X1 Y1 I1\n", "prog:2: G2 without a feed (F)"},
+      {"G33 X1\n", "prog:1: G33 is not supported"},
       {"G1 X1\n", "prog:1: G1 without a feed"},
-      {"\n\nX1\n", "prog:3: coordinates without G0 or G1"},
+      {"\n\nX1\n", "prog:3: coordinates without G0, G1, G2 or G3"},
       {"G4\n", "prog:1: G4 needs P"},
       {"G0 X1 (open\n", "prog:1: unclosed comment"},
       {"G0 Xabc\n", "prog:1: word X needs a number"},

@@ -1,10 +1,13 @@
-// `volcomp program positioning` and `program diagonal` run as main() runs them: G-code on standard
-// output, plans the options cannot make are usage failures.
+// `volcomp program positioning`, `program diagonal` and `program circular` run as main() runs
+// them: G-code on standard output, plans the options cannot make are usage failures. (The
+// circular program's geometry: tests/tools/metrology/circular_program_test.cpp.)
 #include <gtest/gtest.h>
 
 #include <string>
 
 #include "cli_runner.hpp"
+#include "file_contents.hpp"
+#include "temp_paths.hpp"
 
 namespace volcomp {
 namespace {
@@ -48,6 +51,47 @@ TEST(MetrologyCli, ProgramBadOptions) {
   r = RunCli({"program", "diagonal", "--box", "0,0,0:1,1,1", "--increment-mm", "1"});
   EXPECT_EQ(r.code, tools::kExitUsage);
   EXPECT_NE(r.err.find("--box writes four programs"), std::string::npos) << r.err;
+}
+
+TEST(MetrologyCli, ProgramCircular) {
+  testing::ScratchDir dir("program_circular");
+  auto r = RunCli({"program", "circular", "--radius", "150", "--centre", "100,50,-20", "--plane",
+                   "YZ", "--feed", "2000", "--run-in-deg", "60", "-o", dir / "c.ngc"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  const std::string text = testing::ReadText(dir / "c.ngc");
+  EXPECT_NE(text.find("G21 G90 G94 G19 G64\n"), std::string::npos) << text;
+  EXPECT_NE(text.find("F2000\n"), std::string::npos) << text;
+  // Start 0° is +Y of the centre in YZ: (100, 200, -20); the CCW run-in starts 60° before it.
+  EXPECT_NE(text.find("G3 Y200.0000 Z-20.0000 J-150.0000 K0.0000 (CCW measured 360 deg)"),
+            std::string::npos)
+      << text;
+  EXPECT_NE(text.find("G2 Y200.0000 Z-20.0000 J-150.0000 K0.0000 (CW measured 360 deg)"),
+            std::string::npos)
+      << text;
+  EXPECT_NE(text.find("(CW run-out 60 deg)\nM2\n"), std::string::npos) << text;
+  r = RunCli({"program", "circular", "--radius", "100", "--plane", "XZ"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("G18"), std::string::npos);
+  EXPECT_NE(r.out.find("from +Z towards +X seen from +Y"), std::string::npos) << r.out;
+}
+
+TEST(MetrologyCli, ProgramCircularBadOptions) {
+  auto r = RunCli({"program", "circular"});
+  EXPECT_EQ(r.code, tools::kExitUsage);
+  EXPECT_NE(r.err.find("missing required option --radius"), std::string::npos) << r.err;
+  r = RunCli({"program", "circular", "--radius", "0"});
+  EXPECT_EQ(r.code, tools::kExitUsage);
+  r = RunCli({"program", "circular", "--radius", "100", "--plane", "XW"});
+  EXPECT_EQ(r.code, tools::kExitUsage);
+  EXPECT_NE(r.err.find("--plane must be XY, XZ or YZ"), std::string::npos) << r.err;
+  r = RunCli({"program", "circular", "--radius", "100", "--run-in-deg", "200"});
+  EXPECT_EQ(r.code, tools::kExitUsage);
+  EXPECT_NE(r.err.find("--run-in-deg must be within (0, 180]"), std::string::npos) << r.err;
+  r = RunCli({"program", "circular", "--radius", "100", "--centre", "1,2"});
+  EXPECT_EQ(r.code, tools::kExitUsage);
+  EXPECT_NE(r.err.find("--centre: \"1,2\" is not X,Y,Z in mm"), std::string::npos) << r.err;
+  r = RunCli({"program", "circular", "--radius", "100", "--feed", "-5"});
+  EXPECT_EQ(r.code, tools::kExitUsage);
 }
 
 }  // namespace

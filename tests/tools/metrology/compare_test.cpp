@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <sstream>
 #include <string>
@@ -62,7 +63,7 @@ TEST(MetrologyCompare, WhatCannotBeReadOrPairedIsAFailure) {
   ExpectFailure(LoadResults(dir + "/none"), Error::kInputInvalid,
                 {dir + "/none: no such report directory or result file"});
   ExpectFailure(LoadResults(dir), Error::kInputInvalid,
-                {dir + ": no positioning or diagonal results (*.json)"});
+                {dir + ": no positioning, diagonal or circular results (*.json)"});
   WriteText(dir + "/other.json", "{\"command\": \"evaluate rotary\"}");
   ExpectFailure(LoadResults(dir + "/other.json"), Error::kInputInvalid,
                 {dir + "/other.json: not a result of `volcomp evaluate positioning`"});
@@ -82,6 +83,64 @@ TEST(MetrologyCompare, WhatCannotBeReadOrPairedIsAFailure) {
   other[1].name = "r";
   ExpectFailure(CompareResults(renamed, other), Error::kInputInvalid,
                 {"no result appears both before and after"});
+  std::filesystem::remove_all(dir);
+}
+
+// A circular test result: figures scaled by `k`, readings of a 4 µm ellipse (also scaled) at
+// 8 angles per direction about a centre offset (3, −2) µm.
+std::string Circular(double k) {
+  std::ostringstream s;
+  s << "{\"command\": \"evaluate circular\", \"source\": \"c.csv\", \"conditions\": {},"
+    << " \"G_cw_um\": " << 8 * k << ", \"G_ccw_um\": " << 7 * k << ", \"G_b_um\": " << 10 * k
+    << ", \"H_um\": " << 4 * k << ", \"F_max_um\": " << 12 * k << ", \"F_min_um\": " << -5 * k
+    << ", \"centre_offset_um\": {\"x\": 3, \"y\": -2}, \"mean_radius_deviation_um\": 1,"
+    << " \"paths\": {";
+  for (const char* d : {"cw", "ccw"}) {
+    s << (d[1] == 'w' ? "" : ", ") << "\"" << d << "\": {\"angle_deg\": [";
+    for (int j = 0; j < 8; ++j) s << (j ? ", " : "") << 45 * j;
+    s << "], \"deviation_um\": [";
+    for (int j = 0; j < 8; ++j) {
+      const double t = 45 * j * 3.14159265358979323846 / 180;
+      s << (j ? ", " : "") << 1 + 3 * std::cos(t) - 2 * std::sin(t) + 4 * k * std::cos(2 * t);
+    }
+    s << "]}";
+  }
+  s << "}}";
+  return s.str();
+}
+
+TEST(MetrologyCompare, CircularTestsBeforeAndAfter) {
+  const std::string dir = FreshTempPath("compare_test_circular");
+  std::filesystem::create_directories(dir);
+  WriteText(dir + "/before.json", Circular(1.0));
+  WriteText(dir + "/after.json", Circular(0.25));
+  const Comparison c = ValueOf(CompareResults(ValueOf(LoadResults(dir + "/before.json")),
+                                              ValueOf(LoadResults(dir + "/after.json"))));
+  ASSERT_EQ(c.results.size(), 1u);
+  EXPECT_EQ(c.results[0].kind, "circular");
+  std::ostringstream text;
+  WriteComparisonText(text, ComparisonJson(c));
+  EXPECT_NE(text.str().find("  ISO 230-4 circular test, values in µm\n"), std::string::npos)
+      << text.str();
+  EXPECT_NE(text.str().find("    G(b)        10.00 ->       2.50      75.0 %\n"), std::string::npos)
+      << text.str();
+  EXPECT_NE(text.str().find("    F_min       -5.00 ->      -1.25      75.0 %\n"), std::string::npos)
+      << text.str();
+  // The overlay: four paths, each about its own centre with the mean removed, so only the
+  // ellipse is left: 4 cos 2θ before (4 at 0°), 1 cos 2θ after.
+  ASSERT_EQ(c.results[0].polars.size(), 1u);
+  const ComparedPolar& p = c.results[0].polars[0];
+  ASSERT_EQ(p.before.size(), 2u);
+  ASSERT_EQ(p.after.size(), 2u);
+  EXPECT_EQ(p.before[1].label, "before CCW");
+  EXPECT_NEAR(p.before[0].value_um[0], 4.0, 1e-9);
+  EXPECT_NEAR(p.before[0].value_um[2], -4.0, 1e-9);
+  EXPECT_NEAR(p.after[1].value_um[0], 1.0, 1e-9);
+  report::HtmlPage page("compare");
+  AddComparisonSections(&page, c);
+  const std::string html = page.Render();
+  EXPECT_NE(html.find("after CCW"), std::string::npos);
+  EXPECT_NE(html.find("<svg"), std::string::npos);
   std::filesystem::remove_all(dir);
 }
 

@@ -5,9 +5,12 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <map>
+#include <utility>
 
 #include "json_fields.hpp"
 #include "volcomp/report/format.hpp"
+#include "volcomp/report/polar_chart.hpp"
 #include "volcomp/report/xy_chart.hpp"
 #include "volcomp/tools/file_io.hpp"
 
@@ -185,6 +188,66 @@ void CompareDiagonals(const JsonValue& b,
   if (!each.values.empty()) r->tables.push_back(each);
 }
 
+// The readings of one direction about the result's own least-squares centre, mean removed (as
+// `evaluate circular` plots them).
+ComparedPolar::Path CircularResiduals(const JsonValue& result,
+                                      const char* direction,
+                                      const char* who) {
+  ComparedPolar::Path p;
+  p.label = std::string(who) + " " + (std::string(direction) == "cw" ? "CW" : "CCW");
+  const JsonValue* paths = result.get("paths");
+  const JsonValue* path = paths != nullptr ? paths->get(direction) : nullptr;
+  const JsonValue* offset = result.get("centre_offset_um");
+  if (path == nullptr || offset == nullptr) return p;
+  const double x = Number(offset->get("x")).value_or(0.0);
+  const double y = Number(offset->get("y")).value_or(0.0);
+  const double mean = Number(result.get("mean_radius_deviation_um")).value_or(0.0);
+  const JsonValue* angles = path->get("angle_deg");
+  const JsonValue* deviations = path->get("deviation_um");
+  if (angles == nullptr || deviations == nullptr) return p;
+  std::vector<std::pair<double, double>> points;
+  for (std::size_t i = 0; i < angles->array.size() && i < deviations->array.size(); ++i) {
+    const double a = angles->array[i].number;
+    const double t = a * 3.14159265358979323846 / 180.0;
+    points.emplace_back(a, deviations->array[i].number - x * std::cos(t) - y * std::sin(t) - mean);
+  }
+  std::sort(points.begin(), points.end());
+  for (const auto& [a, v] : points) {
+    p.angle_deg.push_back(a);
+    p.value_um.push_back(v);
+  }
+  return p;
+}
+
+void CompareCircular(const JsonValue& b, const JsonValue& a, ComparedResult* r) {
+  ComparedTable t{"ISO 230-4 circular test", "µm", {}};
+  const std::pair<const char*, const char*> figures[] = {
+      {"G_cw_um", "G_cw"}, {"G_ccw_um", "G_ccw"}, {"G_b_um", "G(b)"},
+      {"H_um", "H"},       {"F_max_um", "F_max"}, {"F_min_um", "F_min"}};
+  const std::map<std::string, const char*> meaning = {
+      {"G_cw", "circular deviation, CW"},
+      {"G_ccw", "circular deviation, CCW"},
+      {"G(b)", "bidirectional circular deviation"},
+      {"H", "circular hysteresis"},
+      {"F_max", "largest radial deviation from the nominal circle"},
+      {"F_min", "smallest radial deviation from the nominal circle"}};
+  for (const auto& [key, symbol] : figures) {
+    const auto vb = Number(b.get(key));
+    const auto va = Number(a.get(key));
+    if (vb && va) t.values.push_back(Value(symbol, meaning.at(symbol), *vb, *va));
+  }
+  r->tables.push_back(t);
+  ComparedPolar polar;
+  polar.title = r->name + ": both directions before and after";
+  for (const char* direction : {"cw", "ccw"}) {
+    ComparedPolar::Path pb = CircularResiduals(b, direction, "before");
+    ComparedPolar::Path pa = CircularResiduals(a, direction, "after");
+    if (!pb.angle_deg.empty()) polar.before.push_back(std::move(pb));
+    if (!pa.angle_deg.empty()) polar.after.push_back(std::move(pa));
+  }
+  if (!polar.before.empty() || !polar.after.empty()) r->polars.push_back(std::move(polar));
+}
+
 std::string Reduction(const std::optional<double>& pct) {
   return pct ? report::FormatFixed(*pct, 1) + " %" : std::string("-");
 }
@@ -221,15 +284,16 @@ Expected<std::vector<LoadedResult>> LoadResults(const std::string& path) {
     VOLCOMP_TRY_ASSIGN(JsonValue json, tools::ParseJson(text, f));
     LoadedResult r{std::filesystem::path(f).stem().string(), f, std::move(json)};
     const std::string command = Command(r.json);
-    if (command == "evaluate positioning" || command == "evaluate diagonal") {
+    if (command == "evaluate positioning" || command == "evaluate diagonal" ||
+        command == "evaluate circular") {
       out.push_back(std::move(r));
     } else if (files.size() == 1) {
       return Refuse(f +
-                    ": not a result of `volcomp evaluate positioning` or `evaluate diagonal` "
-                    "(written by --report or --json)");
+                    ": not a result of `volcomp evaluate positioning`, `evaluate diagonal` or "
+                    "`evaluate circular` (written by --report or --json)");
     }
   }
-  if (out.empty()) return Refuse(path + ": no positioning or diagonal results (*.json)");
+  if (out.empty()) return Refuse(path + ": no positioning, diagonal or circular results (*.json)");
   return out;
 }
 
@@ -260,6 +324,9 @@ Expected<Comparison> CompareResults(const std::vector<LoadedResult>& before,
     if (Command(b.json) == "evaluate positioning") {
       r.kind = "positioning";
       ComparePositioning(b.json, a->json, &r, &c.warnings);
+    } else if (Command(b.json) == "evaluate circular") {
+      r.kind = "circular";
+      CompareCircular(b.json, a->json, &r);
     } else {
       r.kind = "diagonal";
       CompareDiagonals(b.json, a->json, &r, &c.warnings);
@@ -347,7 +414,7 @@ void AddComparisonSections(report::HtmlPage* page, const Comparison& c) {
   for (const ComparedResult& r : c.results) {
     for (const ComparedTable& t : r.tables) {
       for (const ComparedValue& v : t.values) {
-        if (v.symbol == "A" || v.symbol == "E_d") {
+        if (v.symbol == "A" || v.symbol == "E_d" || v.symbol == "G(b)" || v.symbol == "H") {
           summary.push_back({r.name, t.title, v.symbol, report::FormatFixed(v.before, 2),
                              report::FormatFixed(v.after, 2), Reduction(v)});
         }
@@ -428,6 +495,28 @@ void AddComparisonSections(report::HtmlPage* page, const Comparison& c) {
         if (!series.x.empty()) chart.series.push_back(series);
       }
       page->Figure(chart.Render(760, 320), s.title + ".");
+    }
+    for (const ComparedPolar& p : r.polars) {
+      report::PolarChart chart;
+      chart.title = p.title + " (µm)";
+      for (const auto* side : {&p.before, &p.after}) {
+        for (const ComparedPolar::Path& path : *side) {
+          report::PolarTrace trace;
+          trace.label = path.label;
+          const bool before = side == &p.before;
+          const bool cw = path.label.find("CCW") == std::string::npos;
+          trace.color = before ? (cw ? "#c0392b" : "#e67e22") : (cw ? "#1f5fbf" : "#17becf");
+          trace.width_px = before ? 1.2 : 1.8;
+          trace.angle_deg = path.angle_deg;
+          trace.value = path.value_um;
+          chart.traces.push_back(std::move(trace));
+        }
+      }
+      chart.centres.push_back({"least-squares centre", 0.0, 0.0, "#000000"});
+      page->Figure(chart.Render(),
+                   p.title +
+                       ", each about its own least-squares centre, the deviation magnified "
+                       "on one scale for both.");
     }
   }
 }

@@ -1,8 +1,11 @@
 // The simulated CNC controller: moves, dwells and homing cycles for three axes, emitted as step
 // times in virtual time (ns) to a StepSink, which plays the board's hardware input counter (the
 // count a tick latches is the number of steps whose time is <= the tick's). Moves follow a
-// rest-to-rest trapezoid along the straight path with no axis above `max_step_rate_hz`; homing
-// stops on the step that closes the switch (docs/simulator.md "CNC and the input counter").
+// rest-to-rest trapezoid along the straight path with no axis above `max_step_rate_hz`; an arc
+// (G2/G3) and the feed moves joined to it tangentially (within 1 degree, same feed) run as one
+// move with one trapezoid over the chain (PathMotion), at most sqrt(accel * r) on an arc; other
+// junctions stop (exact stop). Homing stops on the step that closes the switch
+// (docs/simulator.md "CNC and the input counter").
 // Lengths mm, speeds mm/s, positions in steps. Thread-safety: none (the simulation's thread).
 #pragma once
 
@@ -59,6 +62,14 @@ class Cnc {
   void QueueHome(uint8_t mask);
   /// Queues a parsed G-code program (coordinates in mm of the machine frame).
   void QueueProgram(const Program& program);
+  /// What the CNC executes at the last AdvanceTo().
+  enum class Activity { kIdle, kRapid, kFeed, kDwell, kHome };
+  Activity activity() const;
+  /// The program line of the block being executed at the last AdvanceTo() (0: none, or a block
+  /// not from a program).
+  int active_line() const;
+  /// The path of the move being executed (the segment of a chain it is on), if any.
+  std::optional<PathSegment> active_segment() const;
   /// Called at the end of every dwell (G4): the simulator's cue for a measurement.
   void set_dwell_handler(DwellHandler handler) { on_dwell_ = std::move(handler); }
 
@@ -84,8 +95,11 @@ class Cnc {
   struct Block;
   struct Move;
   struct Homing;
+  struct Chain;
 
   void Start(const Block& b, uint64_t t0);
+  bool StartChain(const Block& b, uint64_t t0);  // true when `b` runs as a PathMotion
+  std::array<int64_t, 3> TargetOf(const Block& b, const std::array<int64_t, 3>& from) const;
   bool RunMove(uint64_t t_ns);    // true when finished (end_ns_ set)
   bool RunHoming(uint64_t t_ns);  // likewise
   void Emit(int axis, uint64_t t, int dir);
@@ -98,6 +112,7 @@ class Cnc {
   std::unique_ptr<Block> active_;
   std::unique_ptr<Move> move_;
   std::unique_ptr<Homing> homing_;
+  std::unique_ptr<Chain> chain_;
   uint64_t dwell_end_ns_ = 0;
   uint64_t cursor_ns_ = 0;  // end of the last finished block
   uint64_t now_ns_ = 0;     // last AdvanceTo time

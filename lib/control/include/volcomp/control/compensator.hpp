@@ -146,7 +146,7 @@ class Compensator {
     const int32_t ahead =
         static_cast<int32_t>(((out - static_cast<uint32_t>(extreme_[a])) ^ dir) - dir);
     const uint32_t turn = static_cast<uint32_t>(ahead + hysteresis_[a]) >> 31;  // 1: turned
-    extreme_[a] = (ahead > 0) | (turn != 0) ? static_cast<int32_t>(out) : extreme_[a];
+    extreme_[a] = ((ahead > 0) | (turn != 0)) ? static_cast<int32_t>(out) : extreme_[a];
     direction_[a] = dir ^ (0u - turn);
   }
   /// One phase of the table evaluation (or zero targets when not engaged), or the Rebase() that

@@ -1,6 +1,7 @@
 // Before/after comparison of evaluation results (`volcomp report compare BEFORE AFTER -o DIR`): the
-// JSON results `evaluate positioning|diagonal --report DIR` wrote, paired by name, every parameter
-// before and after with its reduction (docs/metrology.md "Before and after"). Failures are
+// JSON results `evaluate positioning|diagonal|circular --report DIR` wrote, paired by name, every
+// parameter before and after with its reduction (docs/metrology.md "Before and after"); circular
+// tests also as one polar plot of both (a ballbar report's overlay). Failures are
 // returned (kInputInvalid; kIoError for a file that cannot be read), never thrown.
 #pragma once
 
@@ -20,8 +21,8 @@ struct LoadedResult {
   tools::JsonValue json;
 };
 
-/// The results in `path`: a directory (its *.json files of positioning and diagonal results,
-/// by name) or one .json file. A failure naming the path for anything else.
+/// The results in `path`: a directory (its *.json files of positioning, diagonal and circular
+/// results, by name) or one .json file. A failure naming the path for anything else.
 Expected<std::vector<LoadedResult>> LoadResults(const std::string& path);
 
 struct ComparedValue {
@@ -46,13 +47,23 @@ struct ComparedSeries {  // mean deviation per target before and after, for a ch
   std::vector<double> x_after, up_after, down_after;
 };
 
+struct ComparedPolar {  // circular test paths before and after, about each one's own centre
+  std::string title;
+  struct Path {
+    std::string label;
+    std::vector<double> angle_deg, value_um;
+  };
+  std::vector<Path> before, after;  // CW, CCW (those present)
+};
+
 struct ComparedResult {
-  std::string name;  // positioning_X, diagonal_NNN_NPN_PNN_PPN
-  std::string kind;  // "positioning" or "diagonal"
+  std::string name;  // positioning_X, diagonal_NNN_NPN_PNN_PPN, circular_xy
+  std::string kind;  // "positioning", "diagonal" or "circular"
   std::string before_source, after_source;
   std::vector<std::pair<std::string, std::string>> conditions_before, conditions_after;
   std::vector<ComparedTable> tables;
   std::vector<ComparedSeries> series;
+  std::vector<ComparedPolar> polars;
 };
 
 struct Comparison {

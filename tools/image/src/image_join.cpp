@@ -1,0 +1,219 @@
+// Joining a GRID3 image and an AXIS1D image into one.
+#include "volcomp/image/image_join.hpp"
+
+#include <cstdio>
+#include <cstring>
+
+#include "volcomp/table/table_writer.hpp"
+
+namespace volcomp::image {
+namespace {
+
+Unexpected<Failure> Invalid(const std::string& message) {
+  return Fail(Error::kInputInvalid, message);
+}
+
+// An element array of the image decoded into typed storage (little-endian in the image), so the
+// writer re-encodes exactly the same values.
+struct Elements {
+  std::vector<int16_t> i16;
+  std::vector<int32_t> i32;
+  std::vector<float> f32;
+
+  table::ElementArray view(table::ElementType type) const {
+    table::ElementArray a;
+    a.type = type;
+    a.i16 = i16.data();
+    a.i32 = i32.data();
+    a.f32 = f32.data();
+    return a;
+  }
+};
+
+Elements Decode(const uint8_t* p, table::ElementType type, uint64_t count) {
+  Elements e;
+  for (uint64_t i = 0; i < count; ++i) {
+    if (type == table::ElementType::kInt16) {
+      const uint16_t u = static_cast<uint16_t>(p[2 * i] | (p[2 * i + 1] << 8));
+      e.i16.push_back(static_cast<int16_t>(u));
+    } else {
+      const uint32_t u =
+          static_cast<uint32_t>(p[4 * i]) | (static_cast<uint32_t>(p[4 * i + 1]) << 8) |
+          (static_cast<uint32_t>(p[4 * i + 2]) << 16) | (static_cast<uint32_t>(p[4 * i + 3]) << 24);
+      if (type == table::ElementType::kInt32) {
+        e.i32.push_back(static_cast<int32_t>(u));
+      } else {
+        float f;
+        std::memcpy(&f, &u, sizeof f);
+        e.f32.push_back(f);
+      }
+    }
+  }
+  return e;
+}
+
+std::string AxisNames(const table::TableView& v) {
+  std::string s;
+  for (uint8_t i = 0; i < v.axis_count; ++i) s += (i ? ", " : "") + std::string(1, v.axes[i].name);
+  return s;
+}
+
+std::string UnitsPerStep(const table::AxisInfo& a) {
+  const bool rotary = a.kind == table::AxisKind::kRotary;
+  // resolution_e9: pm/step (linear) or ndeg/step (rotary); shown as nm/step or µdeg/step as the
+  // --resolution-nm option takes them.
+  const double v = a.resolution_e9 / 1000.0;
+  char text[64];
+  std::snprintf(text, sizeof text, "%.6g %s", v, rotary ? "µdeg/step (rotary)" : "nm/step");
+  return text;
+}
+
+// The index of the axis named `name` in `v`, or -1.
+int IndexOf(const table::TableView& v, char name) {
+  for (uint8_t i = 0; i < v.axis_count; ++i) {
+    if (v.axes[i].name == name) return i;
+  }
+  return -1;
+}
+
+// The INFO lines of a part, each prefixed.
+std::string PrefixedInfo(const table::TableView& v, const std::string& prefix) {
+  std::string out;
+  if (v.info == nullptr) return out;
+  const std::string text(v.info, v.info_size);
+  std::size_t start = 0;
+  while (start < text.size()) {
+    std::size_t end = text.find('\n', start);
+    if (end == std::string::npos) end = text.size();
+    const std::string line = text.substr(start, end - start);
+    if (!line.empty() && line.find_first_not_of('\0') != std::string::npos) {
+      out += prefix + line.substr(0, line.find('\0')) + "\n";
+    }
+    start = end + 1;
+  }
+  return out;
+}
+
+}  // namespace
+
+Expected<JoinedImage> JoinImages(const JoinPart& grid_part,
+                                 const JoinPart& axis_part,
+                                 const JoinOptions& options) {
+  const table::TableView& g = grid_part.image->view();
+  const table::TableView& a = axis_part.image->view();
+  const std::string& gs = grid_part.source;
+  const std::string& as = axis_part.source;
+  if (!g.grid.present) return Invalid(gs + ": no GRID3 section (--grid takes a GRID3 image)");
+  if (a.grid.present) {
+    return Invalid(as + ": has a GRID3 section (--axis takes an image of AXIS1D tables only)");
+  }
+  if (a.axis1d_count == 0) return Invalid(as + ": no AXIS1D table");
+
+  // Axes: every axis of the AXIS1D image must be the GRID3 image's axis of that name.
+  for (uint8_t i = 0; i < a.axis_count; ++i) {
+    const table::AxisInfo& ax = a.axes[i];
+    const int j = IndexOf(g, ax.name);
+    if (j < 0) {
+      return Invalid("the images do not belong together: axis " + std::string(1, ax.name) + " of " +
+                     as + " is not an axis of " + gs + " (" + AxisNames(g) + ")");
+    }
+    const table::AxisInfo& gx = g.axes[j];
+    if (gx.kind != ax.kind || gx.resolution_e9 != ax.resolution_e9) {
+      return Invalid("the images do not belong together: axis " + std::string(1, ax.name) + " is " +
+                     UnitsPerStep(gx) + " in " + gs + " but " + UnitsPerStep(ax) + " in " + as);
+    }
+  }
+  // Ids.
+  uint32_t id = g.table_id;
+  if (options.table_id) {
+    id = *options.table_id;
+  } else if (g.table_id != a.table_id) {
+    return Invalid("the images do not belong together: table id " + std::to_string(g.table_id) +
+                   " in " + gs + " but " + std::to_string(a.table_id) + " in " + as +
+                   " (give the joined image its id with --table-id)");
+  }
+  if (id == 0) return Invalid("table id 0 means no table active: give an id from 1");
+
+  table::ImageSpec spec;
+  spec.table_id = id;
+  spec.axis_count = g.axis_count;
+  for (uint8_t i = 0; i < g.axis_count; ++i) spec.axes[i] = g.axes[i];
+
+  const uint64_t grid_count =
+      uint64_t{g.grid.dim[0].nodes} * g.grid.dim[1].nodes * g.grid.dim[2].nodes * 3;
+  const Elements grid_values = Decode(g.grid.data, g.grid.type, grid_count);
+  table::GridSpec grid;
+  grid.frac_bits = g.grid.frac_bits;
+  for (int d = 0; d < 3; ++d) {
+    grid.axis[d] = g.grid.axis[d];
+    grid.dim[d] = g.grid.dim[d];
+  }
+  grid.values = grid_values.view(g.grid.type);
+  spec.grid = &grid;
+
+  // AXIS1D: the GRID3 image's own, then the AXIS1D image's, re-indexed by name.
+  std::vector<Elements> values;
+  values.reserve(2 * (g.axis1d_count + a.axis1d_count));
+  std::vector<bool> taken(g.axis_count, false);
+  auto add = [&](const table::Axis1dView& t, uint8_t axis, const std::string& source) -> Outcome {
+    if (taken[axis]) {
+      return Invalid("both " + gs + " and " + as + " have an AXIS1D table for axis " +
+                     std::string(1, g.axes[axis].name) + " (" + source + ")");
+    }
+    taken[axis] = true;
+    table::Axis1dSpec& s = spec.axis1d[spec.axis1d_count++];
+    s.axis = axis;
+    s.frac_bits = t.frac_bits;
+    s.dim = t.dim;
+    s.period_steps = t.period_steps;
+    s.backlash_q8 = t.backlash_q8;
+    values.push_back(Decode(t.forward, t.type, t.dim.nodes));
+    s.forward = values.back().view(t.type);
+    s.has_reverse = t.reverse != nullptr;
+    if (s.has_reverse) {
+      values.push_back(Decode(t.reverse, t.type, t.dim.nodes));
+      s.reverse = values.back().view(t.type);
+    }
+    return Outcome::Ok();
+  };
+  for (uint8_t i = 0; i < g.axis1d_count; ++i) {
+    VOLCOMP_TRY(add(g.axis1d[i], g.axis1d[i].axis, gs));
+  }
+  for (uint8_t i = 0; i < a.axis1d_count; ++i) {
+    const char name = a.axes[a.axis1d[i].axis].name;
+    VOLCOMP_TRY(add(a.axis1d[i], static_cast<uint8_t>(IndexOf(g, name)), as));
+  }
+
+  JoinedImage out;
+  std::string info = "builder=volcomp build image\ngrid_image=" + gs + "\naxis_image=" + as + "\n";
+  for (const auto& [k, v] : options.info) info += k + "=" + v + "\n";
+  const std::string parts = PrefixedInfo(g, "grid.") + PrefixedInfo(a, "axis.");
+  for (char c : info) {
+    if (c != '\n' && c != '\t' && static_cast<unsigned char>(c) < 0x20) {
+      return Invalid("INFO text contains a control character");
+    }
+  }
+  if (info.size() > table::kMaxInfoBytes - 3) return Invalid("INFO text too long");
+  if (info.size() + parts.size() <= table::kMaxInfoBytes - 3) {
+    info += parts;
+  } else {
+    out.warnings.push_back("the INFO lines of " + gs + " and " + as +
+                           " do not fit the joined image's INFO section: left out");
+  }
+  spec.info = info.data();
+  spec.info_size = static_cast<uint32_t>(info.size());
+
+  const Result<uint32_t> size = table::ImageSize(spec);
+  if (!size.ok()) return Invalid(std::string("image: ") + ErrorText(size.error()));
+  std::vector<uint32_t> aligned((*size + 3) / 4);
+  uint8_t* bytes = reinterpret_cast<uint8_t*>(aligned.data());
+  const Result<uint32_t> written = table::WriteImage(spec, bytes, aligned.size() * 4);
+  if (!written.ok()) {
+    return Invalid(std::string("image: ") + ErrorText(written.error()) + " (" +
+                   ErrorName(written.error()) + ")");
+  }
+  out.bytes.assign(bytes, bytes + *written);
+  return out;
+}
+
+}  // namespace volcomp::image
