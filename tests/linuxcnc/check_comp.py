@@ -3,8 +3,8 @@
 
 check_comp.py COMP_WORK JOINT:TYPE:FILE:TARGETS.csv:PROGRAM ...
 At every recorded stop of PROGRAM (rest.csv of lcnc_run.py in comp mode) the compensated command
-LinuxCNC sent to the joint (motor-pos-cmd) minus the nominal (pos-cmd) must equal the trim the
-file asks for, computed here from the file text by LinuxCNC's documented rule: the triplets
+LinuxCNC sent to the joint (motor-pos-cmd) minus the motor offset homing set (motor-offset) minus
+the nominal (pos-cmd) must equal the trim the file asks for, computed here from the file text by LinuxCNC's documented rule: the triplets
 "nominal forward reverse" (COMP_FILE_TYPE 1: trims; 0: positions, trim = nominal - position),
 linear between nominals, the forward trim after a move up, the reverse trim after a move down
 (the approach direction of the stop, from the program's targets CSV).
@@ -52,7 +52,8 @@ for spec in sys.argv[2:]:
         continue
     for s, d in zip(stops, dirs):
         nominal = float(s["pos_cmd_mm_%d" % joint])
-        applied = float(s["motor_cmd_mm_%d" % joint]) - nominal
+        applied = (float(s["motor_cmd_mm_%d" % joint]) - float(s["motor_offset_mm_%d" % joint]) -
+                   nominal)
         want = trim_at(rows, nominal, d == "up")
         worst = max(worst, abs(applied - want))
         checked += 1

@@ -8,7 +8,11 @@
 // TARGETS.csv are the templates `volcomp program ... --targets-csv` wrote: one row per measured
 // stop in program order, matched with the program's recorded stops in order. For each stop the
 // reading a laser aligned with the move would give is (tool point - commanded point) . u in um,
-// u the unit vector of the program's line (from its first to its farthest stop), for three
+// u the unit vector of the program's line (from its first to its farthest stop), the commanded
+// point being LinuxCNC's joint position (machine coordinates) and the tool point that of the
+// simulated machine with its axes at the drives' counts since power-on minus LinuxCNC's motor
+// offset: the machine frame as LinuxCNC homed it, the frame a table is measured in (homing's own
+// precision against the switch is checked apart, check_machine_position.py), for three
 // machines: `before` (the drives at LinuxCNC's commanded counts: the uncompensated machine),
 // `board` (the drives behind the volcomp board) and `native` (the step generators behind the
 // native component); for a run of volcomp-comp.hal (columns pos_cmd_mm_*) one machine, `comp1d`
@@ -31,27 +35,35 @@
 
 namespace {
 
+using volcomp::Expected;
+using volcomp::Fail;
+using volcomp::Failure;
+using volcomp::Outcome;
 using volcomp::model::Vec3;
+using volcomp::tools::CsvFields;
+using volcomp::tools::CsvTable;
 using Steps = std::array<int64_t, 3>;
-
-// This program's main reports any failure and exits 1: the value, or the failure thrown to it.
-template <typename T>
-T Get(volcomp::Expected<T> r) {
-  if (!r.ok()) throw std::runtime_error(r.error().message);
-  return std::move(r).value();
-}
 
 struct Rest {
   std::string program;
   Vec3 cmd_mm;
   Steps lcnc, board_in, board_corr, board_out, backlog, drive, native;
-  Steps machine[3];  // drive positions of the evaluated cases
-  Vec3 ferror_mm;    // LinuxCNC's joint following errors
+  Vec3 machine[3];  // axis positions (mm, machine frame) of the evaluated cases
+  Vec3 ferror_mm;   // LinuxCNC's joint following errors
 };
 
-Steps ReadSteps(const volcomp::tools::CsvRow& r, const std::string& prefix) {
-  return {Get(r.Integer(prefix + "0")), Get(r.Integer(prefix + "1")), Get(r.Integer(prefix + "2"))};
+Steps ReadSteps(CsvFields& f, const std::string& prefix) {
+  return {f.Integer(prefix + "0"), f.Integer(prefix + "1"), f.Integer(prefix + "2")};
 }
+
+// Axis positions in the machine frame: `counts` steps since power-on, minus the motor offset.
+Vec3 Machine_mm(const Steps& counts, double step_mm, const Vec3& motor_offset_mm) {
+  return Vec3{static_cast<double>(counts[0]) * step_mm, static_cast<double>(counts[1]) * step_mm,
+              static_cast<double>(counts[2]) * step_mm} -
+         motor_offset_mm;
+}
+
+Failure Usage(const std::string& m) { return Failure{volcomp::Error::kUsage, m}; }
 
 std::string Fixed(double v, int decimals) {
   char b[64];
@@ -67,7 +79,7 @@ struct Spec {
   bool diagonal;
 };
 
-int Run(int argc, char** argv) {
+Outcome Run(int argc, char** argv) {
   std::string rest_path, out;
   double step_mm = 0;
   std::vector<Spec> specs;
@@ -76,21 +88,21 @@ int Run(int argc, char** argv) {
     if (k == "--rest") {
       rest_path = v;
     } else if (k == "--step-mm") {
-      step_mm = std::stod(v);
+      step_mm = volcomp::tools::ParseDouble(v).value_or(0);
     } else if (k == "--out") {
       out = v;
     } else if (k == "--positioning" || k == "--diagonal") {
       const auto eq = v.find('=');
-      if (eq == std::string::npos) throw std::runtime_error(k + " needs PROGRAM=TARGETS");
+      if (eq == std::string::npos) return Fail(Usage(k + " needs PROGRAM=TARGETS"));
       specs.push_back({v.substr(0, eq), v.substr(eq + 1), k == "--diagonal"});
     } else {
-      throw std::runtime_error("unknown option " + k);
+      return Fail(Usage("unknown option " + k));
     }
   }
   if (rest_path.empty() || out.empty() || !(step_mm > 0)) {
-    throw std::runtime_error("usage: lcnc_evaluate --rest FILE --step-mm S --out DIR ...");
+    return Fail(Usage("usage: lcnc_evaluate --rest FILE --step-mm S --out DIR ..."));
   }
-  const auto table = Get(volcomp::tools::CsvTable::ReadFile(rest_path));
+  VOLCOMP_TRY_ASSIGN(const CsvTable table, CsvTable::ReadFile(rest_path));
   // The board run (volcomp-sim.hal) or the joint compensation run (volcomp-comp.hal: the
   // nominal joint command and the drives only).
   const bool comp_run = table.find("pos_cmd_mm_0").has_value();
@@ -98,25 +110,29 @@ int Run(int argc, char** argv) {
   if (comp_run) cases = {"comp1d"};
   std::vector<Rest> rests;
   for (const auto& r : table.rows()) {
+    CsvFields f(r);
     Rest x;
-    x.program = Get(r.Text("program"));
+    x.program = f.Text("program");
     const std::string cmd = comp_run ? "pos_cmd_mm_" : "cmd_mm_";
-    x.cmd_mm = {Get(r.Number(cmd + "0")), Get(r.Number(cmd + "1")), Get(r.Number(cmd + "2"))};
-    x.drive = ReadSteps(r, "drive_counts_");
-    x.ferror_mm = {Get(r.Number("ferror_mm_0")), Get(r.Number("ferror_mm_1")), Get(r.Number("ferror_mm_2"))};
+    x.cmd_mm = {f.Number(cmd + "0"), f.Number(cmd + "1"), f.Number(cmd + "2")};
+    x.drive = ReadSteps(f, "drive_counts_");
+    x.ferror_mm = {f.Number("ferror_mm_0"), f.Number("ferror_mm_1"), f.Number("ferror_mm_2")};
+    const Vec3 offset{f.Number("motor_offset_mm_0"), f.Number("motor_offset_mm_1"),
+                      f.Number("motor_offset_mm_2")};
     if (comp_run) {
-      x.machine[0] = x.drive;
+      x.machine[0] = Machine_mm(x.drive, step_mm, offset);
     } else {
-      x.lcnc = ReadSteps(r, "lcnc_counts_");
-      x.board_in = ReadSteps(r, "board_in_");
-      x.board_corr = ReadSteps(r, "board_corr_");
-      x.board_out = ReadSteps(r, "board_out_");
-      x.backlog = ReadSteps(r, "board_backlog_");
-      x.native = ReadSteps(r, "native_counts_");
-      x.machine[0] = x.lcnc;
-      x.machine[1] = x.drive;
-      x.machine[2] = x.native;
+      x.lcnc = ReadSteps(f, "lcnc_counts_");
+      x.board_in = ReadSteps(f, "board_in_");
+      x.board_corr = ReadSteps(f, "board_corr_");
+      x.board_out = ReadSteps(f, "board_out_");
+      x.backlog = ReadSteps(f, "board_backlog_");
+      x.native = ReadSteps(f, "native_counts_");
+      x.machine[0] = Machine_mm(x.lcnc, step_mm, offset);
+      x.machine[1] = Machine_mm(x.drive, step_mm, offset);
+      x.machine[2] = Machine_mm(x.native, step_mm, offset);
     }
+    VOLCOMP_TRY(f.status());
     rests.push_back(x);
   }
 
@@ -143,8 +159,8 @@ int Run(int argc, char** argv) {
       max_native_board_steps =
           std::max<int64_t>(max_native_board_steps, std::llabs(r.native[a] - r.drive[a]));
     }
-    const Vec3 d = volcomp::lcnc_test::ToolPoint_mm(r.native, step_mm) -
-                   volcomp::lcnc_test::ToolPoint_mm(r.drive, step_mm);
+    const Vec3 d = volcomp::lcnc_test::ToolPoint_mm(r.machine[2]) -
+                   volcomp::lcnc_test::ToolPoint_mm(r.machine[1]);
     max_native_board_um = std::max(max_native_board_um, 1000.0 * Norm(d));
   }
 
@@ -156,15 +172,15 @@ int Run(int argc, char** argv) {
     diag_csv[c] = "diagonal,target_mm,direction,run,deviation_um\n";
   }
   for (const Spec& s : specs) {
-    const auto targets = Get(volcomp::tools::CsvTable::ReadFile(s.targets));
+    VOLCOMP_TRY_ASSIGN(const CsvTable targets, CsvTable::ReadFile(s.targets));
     std::vector<const Rest*> stops;
     for (const Rest& r : rests) {
       if (r.program == s.program) stops.push_back(&r);
     }
     if (stops.size() != targets.rows().size()) {
-      throw std::runtime_error(s.program + ": " + std::to_string(stops.size()) +
-                               " recorded stops for " + std::to_string(targets.rows().size()) +
-                               " measured stops in " + s.targets);
+      return Fail(volcomp::Error::kInputInvalid,
+                  s.program + ": " + std::to_string(stops.size()) + " recorded stops for " +
+                      std::to_string(targets.rows().size()) + " measured stops in " + s.targets);
     }
     // The line's direction: from the first stop to the stop farthest from it.
     Vec3 u{0, 0, 0};
@@ -177,14 +193,17 @@ int Run(int argc, char** argv) {
     for (int c = 0; c < n_cases; ++c) pos_csv[c] = "target_mm,direction,run,deviation_um\n";
     for (size_t i = 0; i < stops.size(); ++i) {
       const Rest& r = *stops[i];
-      const auto& t = targets.rows()[i];
+      CsvFields t(targets.rows()[i]);
+      const std::string head =
+          t.Text("target_mm") + "," + t.Text("direction") + "," + t.Text("run") + ",";
+      const std::string diagonal = s.diagonal ? t.Text("diagonal") : "";
+      VOLCOMP_TRY(t.status());
       for (int c = 0; c < n_cases; ++c) {
-        const Vec3 e = volcomp::lcnc_test::ToolPoint_mm(r.machine[c], step_mm) - r.cmd_mm;
+        const Vec3 e = volcomp::lcnc_test::ToolPoint_mm(r.machine[c]) - r.cmd_mm;
         max_error_um[cases[c]] = std::max(max_error_um[cases[c]], 1000.0 * Norm(e));
-        const std::string row = Get(t.Text("target_mm")) + "," + Get(t.Text("direction")) + "," +
-                                Get(t.Text("run")) + "," + Fixed(1000.0 * Dot(e, u), 4) + "\n";
+        const std::string row = head + Fixed(1000.0 * Dot(e, u), 4) + "\n";
         if (s.diagonal) {
-          diag_csv[c] += "\"" + Get(t.Text("diagonal")) + "\"," + row;
+          diag_csv[c] += "\"" + diagonal + "\"," + row;
         } else {
           pos_csv[c] += row;
         }
@@ -215,16 +234,14 @@ int Run(int argc, char** argv) {
   std::cout << "lcnc_evaluate: " << rests.size() << " rest points, lost steps " << lost
             << ", native vs board max " << max_native_board_steps << " steps ("
             << Fixed(max_native_board_um, 3) << " um at the tool)\n";
-  return 0;
+  return Outcome::Ok();
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  try {
-    return Run(argc, argv);
-  } catch (const std::exception& e) {
-    std::cerr << "lcnc_evaluate: " << e.what() << "\n";
-    return 1;
-  }
+  const Outcome r = Run(argc, argv);
+  if (r.ok()) return 0;
+  std::cerr << "lcnc_evaluate: " << r.error().message << "\n";
+  return r.error().code == volcomp::Error::kUsage ? 2 : 1;
 }

@@ -2,7 +2,8 @@
 """LinuxCNC [DISPLAY] program of the volcomp integration test (docs/linuxcnc.md §4).
 
 Runs headless inside `linuxcnc -r volcomp-sim.ini`: resets e-stop, switches the machine on, homes
-(which references the board and the native component), waits until both compensations are engaged
+to the switches (which references the board and the native component; the machine was switched on
+elsewhere, so homing sets LinuxCNC's motor offsets), waits until both compensations are engaged
 and settled, then runs each G-code program named in VOLCOMP_LCNC_PROGRAMS (colon-separated) in
 AUTO mode. At every dwell (the programs' measured stops) it records one row of HAL values once they
 have been still for a while; at the end it writes the rows (VOLCOMP_LCNC_OUT, CSV) and a summary
@@ -95,14 +96,20 @@ STEPGEN_MAXVEL = float(linuxcnc.ini(os.environ["INI_FILE_NAME"]).find("JOINT_0",
 
 # VOLCOMP_LCNC_MODE=comp: the machine of volcomp-comp.hal (LinuxCNC's own joint compensation
 # files, no volcomp component): joint.N.pos-cmd is the nominal, motor-pos-cmd the compensated
-# command, the step generators' counts the drives.
+# command plus the motor offset (homing), the step generators' counts the drives.
 COMP_MODE = os.environ.get("VOLCOMP_LCNC_MODE") == "comp"
 COMP_COLUMNS = (["pos_cmd_mm_%d" % j for j in range(JOINTS)] +
                 ["motor_cmd_mm_%d" % j for j in range(JOINTS)] +
+                ["motor_offset_mm_%d" % j for j in range(JOINTS)] +
                 ["drive_counts_%d" % j for j in range(JOINTS)] +
                 ["ferror_mm_%d" % j for j in range(JOINTS)])
 
+# cmd_mm: the joint position LinuxCNC commands (joint.N.pos-cmd, machine coordinates since
+# homing); motor_cmd_mm: what it sends to the joint's motor (motor-pos-cmd = pos-cmd + the motor
+# offset homing established, which the step counts since power-on include).
 COLUMNS = (["cmd_mm_%d" % j for j in range(JOINTS)] +
+           ["motor_cmd_mm_%d" % j for j in range(JOINTS)] +
+           ["motor_offset_mm_%d" % j for j in range(JOINTS)] +
            ["lcnc_counts_%d" % j for j in range(JOINTS)] +
            ["board_in_%d" % j for j in range(JOINTS)] +
            ["board_corr_%d" % j for j in range(JOINTS)] +
@@ -118,10 +125,13 @@ def snapshot():
     if COMP_MODE:
         return ([g("joint.%d.pos-cmd" % j) for j in range(JOINTS)] +
                 [g("joint.%d.motor-pos-cmd" % j) for j in range(JOINTS)] +
+                [g("joint.%d.motor-offset" % j) for j in range(JOINTS)] +
                 [g("stepgen.%d.counts" % j) for j in range(JOINTS)] +
                 [g("joint.%d.f-error" % j) for j in range(JOINTS)])
     v = []
+    v += [g("joint.%d.pos-cmd" % j) for j in range(JOINTS)]
     v += [g("joint.%d.motor-pos-cmd" % j) for j in range(JOINTS)]
+    v += [g("joint.%d.motor-offset" % j) for j in range(JOINTS)]
     v += [g("stepgen.%d.counts" % j) for j in range(JOINTS)]
     v += [g("volcomp-board.%d.commanded" % j) for j in range(JOINTS)]
     v += [g("volcomp-board.%d.correction" % j) for j in range(JOINTS)]
@@ -129,7 +139,7 @@ def snapshot():
     v += [g("volcomp-board.%d.backlog" % j) for j in range(JOINTS)]
     v += [g("updown.%d.count" % j) for j in range(JOINTS)]
     v += [g("stepgen.%d.counts" % (j + JOINTS)) for j in range(JOINTS)]
-    v += [g("volcomp.%d.correction" % j) for j in range(JOINTS)]
+    v += [g("volcomp.0.joint.%d.correction" % j) for j in range(JOINTS)]
     v += [g("joint.%d.f-error" % j) for j in range(JOINTS)]
     return v
 
@@ -204,6 +214,9 @@ def raise_rtapi_priority():
                 if f.read().strip() != "rtapi_app":
                     continue
             for tid in os.listdir("/proc/%s/task" % pid):
+                with open("/proc/%s/task/%s/comm" % (pid, tid)) as f:
+                    if f.read().strip() == "volcomp-loader":
+                        continue  # the native component's file loader: not a HAL thread
                 os.sched_setscheduler(int(tid), os.SCHED_FIFO, os.sched_param(int(prio)))
                 raised.append(int(tid))
         except (OSError, ValueError):
@@ -232,10 +245,27 @@ def main():
         C.wait_complete()
         C.mode(linuxcnc.MODE_MANUAL)
         C.wait_complete()
-        C.home(-1)
-        wait_for(lambda: S.poll() or all(S.homed[:JOINTS]), 30, "homing")
+        # Homing moves at once (toward the switches): start it once the base thread keeps its
+        # period, i.e. stepgen's maxvel check has not fired for 1.5 s (LinuxCNC's start-up load
+        # delays it for a few seconds), waiting 10 s at most (homing is slower than what stepgen
+        # keeps when its check fires).
+        t_quiet = time.time()
+        seen, since = len(maxvel_reapplied), time.time()
+        while time.time() - since < 1.5 and time.time() - t_quiet < 10:
+            drain_errors()
+            if len(maxvel_reapplied) != seen:
+                seen, since = len(maxvel_reapplied), time.time()
+            time.sleep(0.05)
+        summary["quiet_wait_s"] = time.time() - t_quiet
+        t_home = time.time()
+        C.home(-1)  # to the switches, away from where the machine was switched on
+        wait_for(lambda: S.poll() or all(S.homed[:JOINTS]), 60, "homing")
+        summary["homing_s"] = time.time() - t_home
+        summary["motor_offset_mm"] = [g("joint.%d.motor-offset" % j) for j in range(JOINTS)]
+        log("homed in %.1f s, motor offsets %s mm" % (summary["homing_s"],
+                                                      summary["motor_offset_mm"]))
         if not COMP_MODE:
-            wait_for(lambda: g("volcomp-board.compensating") and g("volcomp.active"), 10,
+            wait_for(lambda: g("volcomp-board.compensating") and g("volcomp.0.active"), 10,
                      "both compensations engaged")
         home = settled_snapshot(0.3, time.time() + 10)
         if home is None:
@@ -284,8 +314,8 @@ def main():
                     "period-changes", "tick-hz", "fault", "compensating", "referenced"):
             summary["board_" + pin.replace("-", "_")] = g("volcomp-board." + pin)
         summary["board_table_crc"] = "%08X" % (g("volcomp-board.table-crc") & 0xFFFFFFFF)
-        summary["native_table_crc"] = "%08X" % (g("volcomp.table-crc") & 0xFFFFFFFF)
-        summary["native_clamped"] = g("volcomp.clamped")
+        summary["native_table_crc"] = "%08X" % (g("volcomp.0.table-crc") & 0xFFFFFFFF)
+        summary["native_clamped"] = g("volcomp.0.clamped")
         summary["pulses_out"] = [g("volcomp-board.%d.pulses-out" % j) for j in range(JOINTS)]
     with open(out, "w") as f:
         f.write("program,stop," + ",".join(COMP_COLUMNS if COMP_MODE else COLUMNS) + "\n")

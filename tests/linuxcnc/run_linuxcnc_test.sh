@@ -2,20 +2,23 @@
 # The volcomp integration test with a real LinuxCNC (docs/linuxcnc.md §4; ctest label external).
 #   run_linuxcnc_test.sh VOLCOMP LCNC_EVALUATE MODULE_DIR SOURCE_DIR ARTIFACT_DIR
 # Builds the S500 table with the PC tool, writes the GOST 27843 (X, Y, Z) and ISO 230-6 (four body
-# diagonals) programs with `volcomp program`, installs the two HAL components into LinuxCNC's
-# module directory (loadrt accepts no paths; needs root), runs `linuxcnc -r` headless with
-# lcnc_run.py as its display, evaluates the recorded rest points (lcnc_evaluate, then
-# `volcomp evaluate`) and checks the figures (check_figures.py). Exit 77 (skipped) without root
-# or without LinuxCNC.
+# diagonals) programs with `volcomp program`, runs `linuxcnc -r` headless with lcnc_run.py as its
+# display and this build's two HAL components in a private module directory (loadrt accepts no
+# paths: private_modules.sh mounts one over LinuxCNC's for the run only; needs root), on a machine
+# switched on at a different place every run (VOLCOMP_LCNC_SEED repeats one) that homes to
+# switches, evaluates the recorded rest points (lcnc_evaluate, then `volcomp evaluate`) and checks
+# the figures (check_figures.py) and the machine position the corrections were read at
+# (check_machine_position.py); then runs the recipes of docs/linuxcnc.md on LinuxCNC's own sample
+# configurations (run_recipes.sh). Exit 77 (skipped) without root or without LinuxCNC.
 set -euo pipefail
 trap 'echo "run_linuxcnc_test: failed at line $LINENO: $BASH_COMMAND" >&2' ERR
 volcomp=$1 evaluate=$2 modules=$3 src=$4 artifacts=$5
 here=$(cd "$(dirname "$0")" && pwd)
 if [[ $(id -u) -ne 0 ]]; then
-  echo "run_linuxcnc_test: needs root (installs modules into /usr/lib/linuxcnc/modules)" >&2
+  echo "run_linuxcnc_test: needs root (a private module directory, rtapi_app's RTAPI_UID)" >&2
   exit 77
 fi
-if ! command -v linuxcnc >/dev/null || [[ ! -d /usr/lib/linuxcnc/modules ]]; then
+if ! command -v linuxcnc >/dev/null || ! command -v halcompile >/dev/null; then
   echo "run_linuxcnc_test: LinuxCNC not installed (scripts/setup-deps.sh linuxcnc)" >&2
   exit 77
 fi
@@ -42,16 +45,6 @@ if ! flock -w 540 9; then
   exit 1
 fi
 
-# Install (only when the file differs), right before each run: another checkout's test may have
-# installed its own build in between.
-install_modules() {
-  for m in volcomp_board volcomp; do
-    if ! cmp -s "$modules/$m.so" "/usr/lib/linuxcnc/modules/$m.so"; then
-      install -m 644 "$modules/$m.so" "/usr/lib/linuxcnc/modules/$m.so"
-    fi
-  done
-}
-
 # rtapi_app refuses to run as root: it drops to RTAPI_UID and keeps its FIFO in RTAPI_FIFO_PATH.
 run_uid=$(id -u nobody)
 work=$(mktemp -d /tmp/volcomp-linuxcnc.XXXXXX)
@@ -62,6 +55,32 @@ chown nobody "$work/fifo"
 
 res_nm=2500
 step_mm=0.0025
+# Where the simulated machine is switched on, drawn anew each run (mm from machine zero, whole
+# steps; the home switches are 0.5 mm below zero): homing then sets LinuxCNC's motor offsets to
+# minus these, and the compensation must still read the table at the machine position.
+seed=${VOLCOMP_LCNC_SEED:-$(($(od -An -N4 -tu4 /dev/urandom | tr -d ' ') % 1000000000))}
+# 20..80 mm on X and Y, 20..60 mm on Z: the S500 table differs by more than 10 steps between
+# points 20 mm apart somewhere on the test's stops, and homing at 15 mm/s takes under 6 s.
+power_on() {  # RUN: "x,y,z" mm
+  awk -v s="$seed" -v run="$1" -v st=$step_mm 'BEGIN { srand(s); for (i = 0; i < 3 * run; ++i) rand();
+    printf "%.4f,%.4f,%.4f", int((20 + 60 * rand()) / st) * st,
+    int((20 + 60 * rand()) / st) * st, int((20 + 40 * rand()) / st) * st }'
+}
+power_on_1=$(power_on 0)
+power_on_2=$(power_on 1)
+echo "run_linuxcnc_test: seed $seed (VOLCOMP_LCNC_SEED): power-on positions run 1 $power_on_1 mm, run 2 $power_on_2 mm" >&2
+# set_power_on INI "x,y,z": the [SIM] values of volcomp-sim.ini for that power-on position.
+set_power_on() {
+  local ini=$1 j=0 p home_offset
+  home_offset=$(awk -F' *= *' '/^HOME_OFFSET/ {print $2; exit}' "$ini")
+  for p in ${2//,/ }; do
+    sed -i "s|^POWER_ON_$j = .*|POWER_ON_$j = $p|" "$ini"
+    # The switch in motor coordinates, half a step below it (it closes at and below).
+    sed -i "s|^HOME_SWITCH_$j = .*|HOME_SWITCH_$j = $(awk -v o="$home_offset" -v p="$p" \
+      -v st=$step_mm 'BEGIN { printf "%.6f", o - p - st / 2 }')|" "$ini"
+    j=$((j + 1))
+  done
+}
 # The programs' feed (mm/min): LinuxCNC's MAX_LINEAR_VELOCITY (mm/s) in volcomp-sim.ini.
 feed=$(awk -F' *= *' '/^MAX_LINEAR_VELOCITY/ {print $2 * 60}' "$src/linuxcnc/config/volcomp-sim.ini")
 dwell=0.3
@@ -99,7 +118,6 @@ run_lcnc() {
   # LinuxCNC's realtime process of the run before may still be exiting: it would compete with the
   # new one (its threads keep their SCHED_FIFO priority) and share its HAL.
   wait_for_no_linuxcnc 540
-  install_modules
   # Real-time threads already running (they compete with the base thread): listed in the log.
   ps -eLo pid,tid,cls,rtprio,pcpu,comm | awk 'NR == 1 || ($3 == "FF" || $3 == "RR") && $4 < 99' \
     >"$dir/rt_threads_before.txt" || true
@@ -111,7 +129,8 @@ run_lcnc() {
   (cd "$dir" && IFS=: && VOLCOMP_LCNC_MODE=$mode VOLCOMP_LCNC_FIFO_PRIORITY=60 \
     VOLCOMP_LCNC_OUT="$dir/rest.csv" VOLCOMP_LCNC_PROGRAMS="$*" \
     RTAPI_UID=$run_uid RTAPI_FIFO_PATH="$dir/fifo/rtapi_fifo" \
-    timeout 900 linuxcnc -r volcomp-sim.ini >"$dir/linuxcnc.log" 2>&1) || status=$?
+    timeout 900 "$here/private_modules.sh" "$modules" "$dir/rtlib" linuxcnc -r volcomp-sim.ini \
+    >"$dir/linuxcnc.log" 2>&1) || status=$?
   mkdir -p "$artifacts/$mode"
   cp "$dir/linuxcnc.log" "$dir/rest.csv" "$dir/rest.csv.json" "$dir/rt_threads_before.txt" \
      "$artifacts/$mode/" 2>/dev/null || true
@@ -124,9 +143,17 @@ run_lcnc() {
   fi
 }
 
+# 0. The native component in a bare rtapi_app: loadrt's refusals, instances, gantry, rotary, inch,
+#    run-time parameters (a few seconds).
+hal_test=0
+wait_for_no_linuxcnc 540
+"$here/run_hal_component_test.sh" "$volcomp" "$modules" "$src" "$work/hal" || hal_test=1
+cp "$work/hal/halrun.log" "$artifacts/" 2>/dev/null || mkdir -p "$artifacts"
+
 # 1. The board behind stepgen and the native component in the position loop, in one run.
 cp "$src/linuxcnc/config/volcomp-sim.ini" "$src/linuxcnc/config/volcomp-sim.hal" "$work/"
 sed -i "s|^TABLE = .*|TABLE = $work/table.vct|" "$work/volcomp-sim.ini"
+set_power_on "$work/volcomp-sim.ini" "$power_on_1"
 echo "== LinuxCNC run 1: board and native component (${#programs[@]} programs)" >&2
 start=$(date +%s)
 run_lcnc "$work" board "${programs[@]}"
@@ -144,13 +171,20 @@ done
 #    run 1: X as COMP_FILE_TYPE 1, Y as type 0; the same X and Y programs again.
 comp=$work/comp
 mkdir -p "$comp"
-"$volcomp" export linuxcnc --x "$work/eval/before/gost_X.csv" --type 1 --allow-few-runs -o "$comp/type1" >&2
-"$volcomp" export linuxcnc --y "$work/eval/before/gost_Y.csv" --type 0 --allow-few-runs -o "$comp/type0" >&2
 cp "$src/linuxcnc/config/volcomp-comp.hal" "$work/volcomp-sim.ini" "$comp/"
 sed -i "s|^HALFILE = .*|HALFILE = volcomp-comp.hal|" "$comp/volcomp-sim.ini"
-sed -i "/^\[JOINT_0\]/r $comp/type1/joints.ini" "$comp/volcomp-sim.ini"
-sed -i "/^\[JOINT_1\]/r $comp/type0/joints.ini" "$comp/volcomp-sim.ini"
-sed -i "/^\[JOINT_[01]\]$/{n;/^\[JOINT_[01]\]$/d}" "$comp/volcomp-sim.ini"
+set_power_on "$comp/volcomp-sim.ini" "$power_on_2"
+# As a user would: the export merges its lines into the machine's [JOINT_n] sections (--ini).
+"$volcomp" export linuxcnc --x "$work/eval/before/gost_X.csv" --type 1 --allow-few-runs \
+  -o "$comp/type1" --ini "$comp/volcomp-sim.ini" >&2
+"$volcomp" export linuxcnc --y "$work/eval/before/gost_Y.csv" --type 0 --allow-few-runs \
+  -o "$comp/type0" --ini "$comp/volcomp-sim.ini" >&2
+for j in 0 1; do
+  if [[ $(grep -c "^\[JOINT_$j\]" "$comp/volcomp-sim.ini") -ne 1 ]]; then
+    echo "run_linuxcnc_test: export linuxcnc --ini left [JOINT_$j] other than once" >&2
+    exit 1
+  fi
+done
 echo "== LinuxCNC run 2: joint compensation files (gost_X, gost_Y)" >&2
 run_lcnc "$comp" comp "$work/gost_X.ngc" "$work/gost_Y.ngc"
 "$evaluate" --rest "$comp/rest.csv" --step-mm $step_mm --out "$comp/eval" \
@@ -159,6 +193,12 @@ for a in X Y; do
   "$volcomp" evaluate positioning "$comp/eval/comp1d/gost_$a.csv" --standard gost27843 \
     --allow-few-runs --json >"$comp/eval/comp1d/gost_$a.json" 2>>"$work/evaluate.log"
 done
+wall12=$(($(date +%s) - start))
+
+# 3, 4. The recipes of docs/linuxcnc.md on LinuxCNC's own sample configurations.
+recipes=0
+wait_for_no_linuxcnc 540
+"$here/run_recipes.sh" "$volcomp" "$modules" "$src" "$work/recipes" "$artifacts" || recipes=1
 wall=$(($(date +%s) - start))
 
 mkdir -p "$artifacts"
@@ -169,5 +209,10 @@ cp -r "$comp/type0" "$comp/type1" "$comp/volcomp-sim.ini" "$artifacts/comp/"
 status=0
 python3 "$here/check_comp.py" "$comp" "0:1:$comp/type1/x.comp:$work/gost_X.csv:gost_X.ngc" \
   "1:0:$comp/type0/y.comp:$work/gost_Y.csv:gost_Y.ngc" || status=1
+python3 "$here/check_machine_position.py" "$work" "$volcomp" "$work/table.vct" $step_mm \
+  "$power_on_1" || status=1
+cp "$work/machine_position.json" "$artifacts/" 2>/dev/null || true
 python3 "$here/check_figures.py" "$work" "$wall" || status=1
+echo "LinuxCNC runs 1 and 2: $wall12 s; with the recipes (runs 3 and 4): $wall s; seed $seed" >&2
+[[ $recipes -eq 0 && $hal_test -eq 0 ]] || status=1
 exit $status

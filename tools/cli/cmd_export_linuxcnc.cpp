@@ -1,6 +1,7 @@
 // `volcomp export linuxcnc`: LinuxCNC joint compensation files (COMP_FILE_TYPE 0 or 1) from
-// positioning test results, with the [JOINT_n] INI lines to paste (exporters/linuxcnc_comp.hpp).
-// Writes one file per axis and joints.ini into the output directory, then reports them.
+// positioning test results, with the [JOINT_n] INI lines to merge into the machine's INI file
+// (exporters/linuxcnc_comp.hpp). Writes one file per axis and joints.ini into the output
+// directory; with --ini merges the lines into that INI file (the old one kept as FILE.bak).
 #include <filesystem>
 #include <map>
 #include <optional>
@@ -67,7 +68,24 @@ void ExportText(const JsonValue& d, std::ostream& out) {
         << (a.get("bidirectional")->boolean ? "bidirectional" : "one direction (reverse = forward)")
         << ", wrote " << a.get("file")->string << "\n";
   }
-  out << "\nINI lines (also in " << d.get("ini_file")->string << "):\n\n" << d.get("ini")->string;
+  if (const JsonValue* merged = d.get("merged_into")) {
+    out << "\nmerged into " << merged->string << " (the file before: " << d.get("backup")->string
+        << "):\n\n"
+        << d.get("ini")->string;
+    return;
+  }
+  out << "\nINI lines to merge into the [JOINT_n] sections the machine's INI file has (also in "
+      << d.get("ini_file")->string << "; --ini FILE merges them):\n\n"
+      << d.get("ini")->string;
+}
+
+// joints.ini: the lines, under a comment saying how they go in (LinuxCNC INI comments: #).
+std::string JointsIniFile(const std::string& ini) {
+  return "# volcomp export linuxcnc: merge these lines into the sections of the same name in the\n"
+         "# machine's INI file, do not append them: LinuxCNC reads the first [JOINT_n] section of\n"
+         "# a name only and ignores a second one without a message. `volcomp export linuxcnc ...\n"
+         "# --ini machine.ini` merges them.\n" +
+         ini;
 }
 
 Expected<Output> RunExportLinuxcnc(Args& args, Context& ctx) {
@@ -85,8 +103,10 @@ Expected<Output> RunExportLinuxcnc(Args& args, Context& ctx) {
   }
   VOLCOMP_TRY_ASSIGN(auto joint, ParseJoints(args.Value("--joints")));
   VOLCOMP_TRY_ASSIGN(auto spacing, ParseSpacing(args.Value("--spacing")));
+  const std::optional<std::string> merge_ini = args.Value("--ini");
   metrology::GroupingOptions grouping;
   grouping.allow_few_approaches = args.Flag("--allow-few-runs");
+  args.Flag("--json");  // the command layer prints the data as JSON
   VOLCOMP_TRY(args.Finish());
 
   std::error_code ec;
@@ -96,7 +116,14 @@ Expected<Output> RunExportLinuxcnc(Args& args, Context& ctx) {
   Output output;
   JsonValue axes = JsonValue::Array();
   std::string ini;
+  std::vector<exporters::LinuxcncJointComp> joint_comps;
+  std::map<int, char> axis_of_joint;
   for (const auto& [name, path] : inputs) {
+    const auto [other, added] = axis_of_joint.emplace(joint[name], name);
+    if (!added) {
+      return UsageFailure("--joints: " + std::string(1, other->second) + " and " +
+                          std::string(1, name) + " both on joint " + std::to_string(joint[name]));
+    }
     VOLCOMP_TRY_ASSIGN(const model::PositioningData data,
                        datasets::LoadPositioningCsv(path, grouping));
     for (const std::string& w : data.warnings) ctx.err << "warning: " << w << "\n";
@@ -109,6 +136,7 @@ Expected<Output> RunExportLinuxcnc(Args& args, Context& ctx) {
     VOLCOMP_TRY(tools::WriteTextFile(full, exporters::FormatLinuxcncComp(*comp)));
     VOLCOMP_TRY_ASSIGN(const std::string absolute, AbsolutePath(full));
     ini += exporters::LinuxcncJointIni(joint[name], absolute, comp_type);
+    joint_comps.push_back({joint[name], absolute, comp_type});
     JsonValue a = JsonValue::Object();
     a.Set("axis", std::string(1, name))
         .Set("joint", joint[name])
@@ -122,8 +150,24 @@ Expected<Output> RunExportLinuxcnc(Args& args, Context& ctx) {
     axes.Push(std::move(a));
   }
   const std::string ini_path = (std::filesystem::path(out_dir) / "joints.ini").string();
-  VOLCOMP_TRY(tools::WriteTextFile(ini_path, ini));
+  VOLCOMP_TRY(tools::WriteTextFile(ini_path, JointsIniFile(ini)));
   output.data = JsonValue::Object();
+  if (merge_ini) {
+    VOLCOMP_TRY_ASSIGN(const std::string before, tools::ReadTextFile(*merge_ini));
+    const exporters::LinuxcncIniMerge merged =
+        exporters::MergeLinuxcncJointIni(before, joint_comps, *merge_ini);
+    const std::string backup = *merge_ini + ".bak";
+    VOLCOMP_TRY(tools::WriteTextFile(backup, before));
+    VOLCOMP_TRY(tools::WriteTextFile(*merge_ini, merged.text));
+    JsonValue warnings = JsonValue::Array();
+    for (const std::string& w : merged.warnings) {
+      output.warnings.push_back(w);
+      warnings.Push(w);
+    }
+    output.data.Set("merged_into", *merge_ini)
+        .Set("backup", backup)
+        .Set("merge_warnings", std::move(warnings));
+  }
   output.data.Set("type", type)
       .Set("output", out_dir)
       .Set("axes", std::move(axes))
@@ -148,13 +192,17 @@ const Command& ExportLinuxcncCommand() {
              {"--joints", nullptr, "X=N,...", nullptr, nullptr,
               "joint 0..15 of an axis in its [JOINT_n] lines (default: X=0 ... W=8)"},
              {"--spacing", nullptr, "X=S,...", "mm (deg for A, B, C)", nullptr,
-              "point spacing per axis (default: the test's, or its smallest gap)"}},
-            AllowFewRuns()}),
+              "point spacing per axis (default: the test's, or its smallest gap)"},
+             {"--ini", nullptr, "FILE", nullptr, nullptr,
+              "merge the lines into this LinuxCNC INI file's [JOINT_n] sections (old: FILE.bak)"}},
+            AllowFewRuns(),
+            {{"--json", nullptr, nullptr, nullptr, nullptr, "machine-readable output"}}}),
       RunExportLinuxcnc,
       "Each FILE is either the raw readings `evaluate positioning` reads (the mean per\n"
       "target and direction is used) or the mean deviations (position_mm, dev_forward_um\n"
-      "[, dev_reverse_um]). Writes one file per axis (x.comp, ...) and joints.ini with the\n"
-      "INI lines to paste; see docs/linuxcnc.md."};
+      "[, dev_reverse_um]). Writes one file per axis (x.comp, ...), ending at the last\n"
+      "tested position, and joints.ini with the INI lines to merge into the machine's\n"
+      "[JOINT_n] sections (--ini FILE merges them); see docs/linuxcnc.md."};
   return kCommand;
 }
 

@@ -11,9 +11,9 @@
 #include <cstdint>
 
 #include "board/hal_step_io.hpp"
-#include "volcomp/config/board_config.hpp"
-#include "volcomp/canopen/board_protocol.hpp"
 #include "volcomp/base/status.hpp"
+#include "volcomp/canopen/board_protocol.hpp"
+#include "volcomp/config/board_config.hpp"
 
 namespace volcomp::linuxcnc {
 

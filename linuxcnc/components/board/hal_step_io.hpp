@@ -25,8 +25,8 @@
 #include <cstdint>
 
 #include "board/sampled_step_counter.hpp"
-#include "volcomp/config/board_config.hpp"
 #include "volcomp/base/status.hpp"
+#include "volcomp/config/board_config.hpp"
 #include "volcomp/output/step_generator.hpp"
 
 namespace volcomp::linuxcnc {

@@ -28,7 +28,7 @@ BoardConfig ThreadBoardConfig(const ThreadBoardParams& params, uint32_t period_n
     x.max_input_rate_hz = c.tick_hz > params.correction_rate_steps_s
                               ? c.tick_hz - params.correction_rate_steps_s
                               : 0u;
-    x.home_position_steps = 0;
+    x.home_position_steps = params.home_position_steps[a];
   }
   return c;
 }

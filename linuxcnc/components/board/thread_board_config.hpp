@@ -25,6 +25,7 @@ struct ThreadBoardParams {
   int32_t max_correction_steps = 1000;
   uint32_t correction_rate_steps_s = 2000;
   uint32_t correction_accel_steps_s2 = 200000;
+  int32_t home_position_steps[3] = {0, 0, 0};  // X, Y, Z: machine position at the home edge
 };
 
 /// The configuration for a base thread of `period_ns` (> 0). Its tick_hz is

@@ -12,8 +12,8 @@
 
 #include <cstdint>
 
-#include "volcomp/hal/tick_timer.hpp"
 #include "volcomp/base/status.hpp"
+#include "volcomp/hal/tick_timer.hpp"
 
 namespace volcomp::linuxcnc {
 

@@ -3,7 +3,7 @@
 //
 //   loadrt volcomp_board table=FILE.vct [resolution_nm=1000] [invert_dir=1] [dir_negative_high=1]
 //                        [max_correction_steps=1000] [correction_rate=2000]
-//                        [correction_accel=200000] [poll_periods=50]
+//                        [correction_accel=200000] [poll_periods=50] [home_steps=X,Y,Z]
 //   addf volcomp-board.update base-thread     (after stepgen.make-pulses, before the drives)
 //
 // Per base period: sample the STEP/DIR inputs; every kPeriodsPerTick periods run the
@@ -13,19 +13,26 @@
 // at this instant. Drive timing in the board's configuration: pulse width, step space, direction
 // setup and hold = one base period; maximum output rate = tick rate.
 //
-// The table image is read and validated at load (loadrt fails with the firmware's error) and
+// Referencing: a rising edge on an axis's home pin (wired to joint.N.homed, which rises once
+// LinuxCNC has homed the joint and made its final move to [JOINT_N]HOME) makes the board's input
+// position of that axis its home position, home_steps (HOME x SCALE, 0 by default): from then on
+// the board looks the table up at the joint position, whatever the step count was at power-on.
+//
+// The table image is read and validated at load (loadrt fails with the reason) and
 // activated through the firmware (BoardApp::ActivateImage: image validation, board match) at the
 // first period; the correction engages once every axis is referenced (a rising edge on its home
 // pin) and enable is high. A configuration the pins or the thread cannot run (e.g. a base period
 // whose tick rate is not a whole number of Hz) is refused at the first period: message, `fault`,
 // no output pulses.
 #include <cstring>
+#include <utility>
 #include <vector>
 
 #include "board/board_glue.hpp"
 #include "board/hal_step_io.hpp"
 #include "board/thread_board_config.hpp"
 #include "hal_module.hpp"
+#include "table_file.hpp"
 #include "volcomp/table/table_image.hpp"
 
 namespace lc = volcomp::linuxcnc;
@@ -50,6 +57,10 @@ int correction_accel = 200000;
 RTAPI_MP_INT(correction_accel, "correction acceleration limit, steps/s^2");
 int poll_periods = 50;
 RTAPI_MP_INT(poll_periods, "base periods per main-loop pass");
+int home_steps[3] = {0, 0, 0};
+RTAPI_MP_ARRAY_INT(home_steps,
+                   3,
+                   "machine position of X, Y, Z at the home edge, steps ([JOINT_N]HOME x SCALE)");
 }
 
 namespace {
@@ -86,21 +97,22 @@ void StartBoard(long period) {
   params.max_correction_steps = max_correction_steps;
   params.correction_rate_steps_s = static_cast<uint32_t>(correction_rate);
   params.correction_accel_steps_s2 = static_cast<uint32_t>(correction_accel);
+  for (int a = 0; a < kAxes; ++a) params.home_position_steps[a] = home_steps[a];
   const volcomp::BoardConfig config = lc::ThreadBoardConfig(params, static_cast<uint32_t>(period));
   volcomp::Status s = g_board.Start(config, static_cast<uint32_t>(period), dir_negative_high != 0);
   if (!s.ok()) {
     rtapi_print_msg(RTAPI_MSG_ERR,
                     "%s: the %s refused the configuration for a base period of %ld ns, tick %u Hz "
-                    "(%s); the board does not run\n",
+                    "(%s: %s); the board does not run\n",
                     kName, volcomp::canopen::ConfigPartName(g_board.refused_by()), period,
-                    config.tick_hz, s.name());
+                    config.tick_hz, volcomp::ErrorText(s.error()), s.name());
     g_failed = true;
   } else {
     s = g_board.ActivateImage(g_image.data(), static_cast<uint32_t>(g_image.size()));
     if (!s.ok()) {
       rtapi_print_msg(RTAPI_MSG_ERR,
-                      "%s: table activation failed (%s); the board stays in pass-through\n", kName,
-                      s.name());
+                      "%s: table activation failed (%s: %s); the board stays in pass-through\n",
+                      kName, volcomp::ErrorText(s.error()), s.name());
       g_failed = true;
     }
   }
@@ -210,11 +222,16 @@ extern "C" int rtapi_app_main(void) {
                     kName);
     return -EINVAL;
   }
-  if (!lc::ReadFile(kName, table, &g_image).ok()) return -EINVAL;
+  volcomp::Expected<std::vector<uint8_t>> bytes = lc::ReadTableFile(table);
+  if (!bytes.ok()) {
+    rtapi_print_msg(RTAPI_MSG_ERR, "%s: %s\n", kName, bytes.error().message.c_str());
+    return -EINVAL;
+  }
+  g_image = std::move(*bytes);
   const auto view = volcomp::table::ParseImage(g_image.data(), g_image.size());
   if (!view.ok()) {
-    rtapi_print_msg(RTAPI_MSG_ERR, "%s: \"%s\" is not a valid table image: %s\n", kName, table,
-                    view.status().name());
+    rtapi_print_msg(RTAPI_MSG_ERR, "%s: %s\n", kName,
+                    lc::ImageRefusal(table, view.status()).c_str());
     return -EINVAL;
   }
   g_comp_id = hal_init(kName);

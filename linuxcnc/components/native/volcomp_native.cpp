@@ -1,26 +1,45 @@
-// HAL component `volcomp`: native volumetric compensation for LinuxCNC (docs/linuxcnc.md §3).
+// HAL component `volcomp`: native volumetric compensation for LinuxCNC (docs/linuxcnc.md §3,
+// `man 9 volcomp`).
 //
-//   loadrt volcomp table=FILE.vct [max_correction_steps=1000] [correction_rate=2000]
-//                  [correction_accel=200000]
-//   addf volcomp.update servo-thread        (after motion-controller, before the stepgen/PID)
+//   loadrt volcomp table=FILE[,FILE...] [count=N | names=A[,B...]] [units=mm|inch[,...]]
+//                  [axes=XYZ[,...]]
+//   addf <name>.feedback servo-thread POSITION   (after the drives' feedback is read, before
+//                                                 motion-command-handler)
+//   addf <name>.update servo-thread POSITION     (right after motion-controller)
 //
-// Per joint j (joint j = table axis j, e.g. X Y Z for trivkins):
-//   volcomp.j.pos-cmd-in  <- joint.j.motor-pos-cmd       volcomp.j.pos-cmd-out -> stepgen/PID
-//   volcomp.j.pos-fb-in   <- stepgen/encoder feedback    volcomp.j.pos-fb-out  -> motor-pos-fb
-//   volcomp.j.correction  the correction added to the command and subtracted from the
-//                         feedback (mm)
-// Global: enable, referenced (in; e.g. motion.is-all-homed), reload (in, rising edge: read the
-// table file again; refused tables leave the active one and set table-error), active, clamped,
-// table-crc, table-error (out).
+// Two functions, as LinuxCNC's moveoff has: `feedback` gives motion this period's feedback minus
+// the correction the drive was last commanded with (so motion sees its feedback as fresh as
+// without the component), `update` computes the correction from the positions motion has just
+// written and corrects the command.
 //
-// The correction is the firmware's: trilinear GRID3 + AXIS1D lookup of the commanded position,
-// clamped to max_correction_steps, moved toward with the rate and acceleration limits at the servo
-// rate; it ramps in when enable and referenced are both high and ramps out when either drops.
+// Per instance (default name volcomp.0) and joint channel J (joint J by default; axes= names the
+// table axis of each channel, e.g. axes=XYYZ for a gantry):
+//   <name>.joint.J.joint-pos-cmd  <- joint.J.pos-cmd: the machine position the table is read at
+//   <name>.joint.J.pos-cmd-in     <- joint.J.motor-pos-cmd     pos-cmd-out -> stepgen / pid command
+//   <name>.joint.J.pos-fb-in      <- stepgen / encoder         pos-fb-out  -> joint.J.motor-pos-fb
+//   <name>.joint.J.vel-cmd-in     <- joint.J.vel-cmd           vel-cmd-out -> pid command-deriv
+//   <name>.joint.J.correction     the correction (machine units) added to the command and taken
+//                                 out of the feedback
+//   <name>.enable, .referenced (in), .reload (in, rising edge), .active, .clamped (out),
+//   .table-crc (u32), .table-error (s32: 0 or the error code of the last load), .reload-count (u32)
+//   parameters <name>.axis.L.max-correction, .max-correction-vel, .max-correction-accel (per table
+//   axis L, machine units: mm or inch, degrees for rotary axes; read every period)
+//
+// The servo-thread function reads no file and allocates nothing: tables are read, validated and
+// prepared at loadrt and by the loader thread on a reload (native/table_loader.hpp), then switched
+// in by pointer (native/table_exchange.hpp).
+#include <cmath>
 #include <cstring>
+#include <memory>
+#include <string>
 #include <vector>
 
 #include "hal_module.hpp"
+#include "native/instance_config.hpp"
 #include "native/native_compensator.hpp"
+#include "native/native_table.hpp"
+#include "native/table_exchange.hpp"
+#include "native/table_loader.hpp"
 
 namespace lc = volcomp::linuxcnc;
 
@@ -28,142 +47,329 @@ extern "C" {
 MODULE_AUTHOR("volcomp");
 MODULE_DESCRIPTION("volcomp native volumetric compensation");
 MODULE_LICENSE("GPL");
-char* table = nullptr;
-RTAPI_MP_STRING(table, "table image file (volcomp build ...)");
-int max_correction_steps = 1000;
-RTAPI_MP_INT(max_correction_steps, "largest |correction| per axis, table steps");
-int correction_rate = 2000;
-RTAPI_MP_INT(correction_rate, "correction velocity limit, table steps/s");
-int correction_accel = 200000;
-RTAPI_MP_INT(correction_accel, "correction acceleration limit, table steps/s^2");
+int count = 0;
+RTAPI_MP_INT(count, "number of instances volcomp.0 ... (default 1)");
+char* names[lc::kMaxInstances] = {};
+RTAPI_MP_ARRAY_STRING(names, 8, "instance names (instead of count)");
+char* table[lc::kMaxInstances] = {};
+RTAPI_MP_ARRAY_STRING(table, 8, "table image file of each instance (volcomp build ...)");
+char* units[lc::kMaxInstances] = {};
+RTAPI_MP_ARRAY_STRING(units, 8, "linear units of each instance: mm (default) or inch");
+char* axes[lc::kMaxInstances] = {};
+RTAPI_MP_ARRAY_STRING(axes,
+                      8,
+                      "table axis of each joint channel, e.g. XYYZ (default: the table's axes)");
 }
 
 namespace {
 
-constexpr const char* kName = "volcomp";
-constexpr int kJoints = lc::NativeCompensator::kMaxJoints;
+constexpr const char* kComponent = "volcomp";
+constexpr uint8_t kMaxAxes = lc::NativeCompensator::kMaxAxes;
 
-struct Pins {
-  hal_float_t *cmd_in[kJoints], *cmd_out[kJoints], *fb_in[kJoints], *fb_out[kJoints],
-      *correction[kJoints];
+struct ChannelPins {
+  hal_float_t *joint_pos, *cmd_in, *cmd_out, *fb_in, *fb_out, *vel_in, *vel_out, *correction;
+};
+
+struct AxisParams {
+  hal_float_t max_correction, max_vel, max_accel;
+};
+
+// In HAL's shared memory (hal_malloc): pins point here, parameters live here.
+struct InstanceHal {
+  ChannelPins channel[lc::kMaxChannels];
+  AxisParams axis[kMaxAxes];
   hal_bit_t *enable, *referenced, *reload, *active, *clamped;
-  hal_u32_t* table_crc;
+  hal_u32_t *table_crc, *reload_count;
   hal_s32_t* table_error;
 };
 
+struct Instance {
+  std::string name;
+  std::string path;
+  lc::ChannelMap map;
+  double scale[kMaxAxes] = {};  // table units per machine unit, per table axis
+  InstanceHal* hal = nullptr;
+  lc::NativeCompensator comp;
+  const lc::NativeTable* active = nullptr;     // owned; the loader frees it once replaced
+  std::unique_ptr<lc::NativeTable> reference;  // the first table's copy: reloads must match it
+  lc::TableExchange exchange;
+  double applied[kMaxAxes][3] = {};  // the limits in force, machine units (as the parameters)
+  long period_ns = 0;
+  bool last_reload = false;
+  uint32_t reloads = 0;
+  double last_correction[lc::kMaxChannels] = {};  // per channel, machine units
+  uint32_t feedback_calls = 0;  // the feedback function runs (it must be in a thread)
+  uint32_t updates = 0;
+};
+
 int g_comp_id = -1;
-Pins* g_pins = nullptr;
-lc::NativeCompensator g_comp;
-std::vector<uint8_t> g_first_image;
-long g_period_ns = 0;
-bool g_last_reload = false;
+std::vector<Instance*> g_instances;
+lc::TableLoader* g_loader = nullptr;
 
-lc::NativeLimits Limits() {
-  lc::NativeLimits l;
-  l.max_correction_steps = max_correction_steps;
-  l.rate_steps_s = static_cast<uint32_t>(correction_rate);
-  l.accel_steps_s2 = static_cast<uint32_t>(correction_accel);
-  return l;
+void Print(lc::TableLoader::Level level, const std::string& message) {
+  rtapi_print_msg(level == lc::TableLoader::Level::kError ? RTAPI_MSG_ERR : RTAPI_MSG_INFO, "%s\n",
+                  message.c_str());
 }
 
-void Load(std::vector<uint8_t> image, long period) {
-  const uint32_t tick_hz = static_cast<uint32_t>(1000000000L / period);
-  const volcomp::Status s = g_comp.Load(std::move(image), tick_hz, Limits());
-  *g_pins->table_error = static_cast<int32_t>(s.error());
-  if (!s.ok()) {
-    rtapi_print_msg(RTAPI_MSG_ERR, "%s: table \"%s\" refused (%s)%s\n", kName, table, s.name(),
-                    g_comp.loaded() ? "; the active table stays" : "");
-  }
-  *g_pins->table_crc = g_comp.table_crc32();
+const char* UnitName(const Instance& in, uint8_t a) {
+  if (in.active->axis(a).kind == volcomp::table::AxisKind::kRotary) return "deg";
+  return in.scale[a] == 1.0 ? "mm" : "inch";
 }
 
-void Update(void*, long period) {
-  Pins& p = *g_pins;
-  if (g_period_ns == 0) {
-    g_period_ns = period;
-    Load(std::move(g_first_image), period);
-  }
-  // A reload reads the file in this thread: uspace threads are ordinary threads, and the table
-  // switches only here, between two periods (the correction then moves within its limits).
-  const bool reload = *p.reload;
-  if (reload && !g_last_reload) {
-    std::vector<uint8_t> image;
-    const volcomp::Status read = lc::ReadFile(kName, table, &image);
-    if (read.ok()) {
-      Load(std::move(image), g_period_ns);
-    } else {
-      *p.table_error = static_cast<int32_t>(read.error());
+// The limit parameters, checked every period (a `setp` takes effect here); a value the limiter
+// cannot take is refused with a message and the parameter set back.
+void ApplyParams(Instance& in, bool force) {
+  for (uint8_t a = 0; a < in.active->axis_count(); ++a) {
+    AxisParams& p = in.hal->axis[a];
+    double* cur = in.applied[a];
+    const double want[3] = {p.max_correction, p.max_vel, p.max_accel};
+    if (!force && want[0] == cur[0] && want[1] == cur[1] && want[2] == cur[2]) continue;
+    const double k = in.scale[a];
+    lc::AxisLimits l;
+    l.max_correction = want[0] * k;
+    l.max_vel = want[1] * k;
+    l.max_accel = want[2] * k;
+    const volcomp::Status s = in.comp.SetLimits(a, l);
+    if (s.ok()) {
+      for (int i = 0; i < 3; ++i) cur[i] = want[i];
+      continue;
     }
+    const char* u = UnitName(in, a);
+    rtapi_print_msg(
+        RTAPI_MSG_ERR,
+        "%s: axis %c: limits refused (max-correction %g %s, max-correction-vel %g %s/s, "
+        "max-correction-accel %g %s/s^2): each must be positive, the acceleration "
+        "below %g %s/s^2 at a %ld ns servo period and the velocity at least %g %s/s "
+        "for it (%s); they stay %g, %g, %g\n",
+        in.name.c_str(), in.active->axis(a).name, want[0], u, want[1], u, want[2], u,
+        in.comp.MaxAccel(a) / k, u, in.period_ns, in.comp.MinVel(a, l.max_accel) / k, u, s.name(),
+        cur[0], cur[1], cur[2]);
+    p.max_correction = cur[0];
+    p.max_vel = cur[1];
+    p.max_accel = cur[2];
   }
-  g_last_reload = reload;
-  double pos[kJoints] = {}, corr[kJoints] = {};
-  const int n = g_comp.loaded() ? g_comp.axis_count() : 0;
-  for (int j = 0; j < n; ++j) pos[j] = *p.cmd_in[j];
-  if (n > 0) g_comp.Tick(pos, *p.enable, *p.referenced, corr);
-  for (int j = 0; j < kJoints; ++j) {
-    *p.correction[j] = corr[j];
-    *p.cmd_out[j] = *p.cmd_in[j] + corr[j];
-    *p.fb_out[j] = *p.fb_in[j] - corr[j];
-  }
-  *p.active = g_comp.loaded() && g_comp.engaged();
-  *p.clamped = g_comp.loaded() && g_comp.clamped();
 }
 
-int MakePins() {
-  g_pins = static_cast<Pins*>(hal_malloc(sizeof(Pins)));
-  if (g_pins == nullptr) return -1;
-  std::memset(g_pins, 0, sizeof(Pins));
-  Pins& p = *g_pins;
-  int r = 0;
-  for (int j = 0; j < kJoints; ++j) {
-    r |= hal_pin_float_newf(HAL_IN, &p.cmd_in[j], g_comp_id, "volcomp.%d.pos-cmd-in", j);
-    r |= hal_pin_float_newf(HAL_OUT, &p.cmd_out[j], g_comp_id, "volcomp.%d.pos-cmd-out", j);
-    r |= hal_pin_float_newf(HAL_IN, &p.fb_in[j], g_comp_id, "volcomp.%d.pos-fb-in", j);
-    r |= hal_pin_float_newf(HAL_OUT, &p.fb_out[j], g_comp_id, "volcomp.%d.pos-fb-out", j);
-    r |= hal_pin_float_newf(HAL_OUT, &p.correction[j], g_comp_id, "volcomp.%d.correction", j);
+// Before motion: the feedback motion reads, without the correction the drive was commanded with.
+void Feedback(void* arg, long) {
+  Instance& in = *static_cast<Instance*>(arg);
+  InstanceHal& h = *in.hal;
+  for (uint8_t j = 0; j < in.map.count; ++j) {
+    *h.channel[j].fb_out = *h.channel[j].fb_in - in.last_correction[j];
   }
-  r |= hal_pin_bit_newf(HAL_IN, &p.enable, g_comp_id, "volcomp.enable");
-  r |= hal_pin_bit_newf(HAL_IN, &p.referenced, g_comp_id, "volcomp.referenced");
-  r |= hal_pin_bit_newf(HAL_IN, &p.reload, g_comp_id, "volcomp.reload");
-  r |= hal_pin_bit_newf(HAL_OUT, &p.active, g_comp_id, "volcomp.active");
-  r |= hal_pin_bit_newf(HAL_OUT, &p.clamped, g_comp_id, "volcomp.clamped");
-  r |= hal_pin_u32_newf(HAL_OUT, &p.table_crc, g_comp_id, "volcomp.table-crc");
-  r |= hal_pin_s32_newf(HAL_OUT, &p.table_error, g_comp_id, "volcomp.table-error");
-  return r;
+  ++in.feedback_calls;
+}
+
+void Update(void* arg, long period) {
+  Instance& in = *static_cast<Instance*>(arg);
+  InstanceHal& h = *in.hal;
+  bool force = false;
+  if (period != in.period_ns) {  // the first period: the limits are converted for this rate
+    in.period_ns = period;
+    (void)in.comp.SetPeriod(period);
+    force = true;
+  }
+  ApplyParams(in, force);
+  const bool reload = *h.reload;
+  if (reload && !in.last_reload) in.exchange.RequestReload();
+  in.last_reload = reload;
+  if (in.exchange.SwapIn(&in.active)) {
+    in.comp.UseTable(in.active);
+    ++in.reloads;
+  }
+  const uint8_t n = in.active->axis_count();
+  double pos[kMaxAxes] = {}, corr[kMaxAxes] = {}, vel[kMaxAxes] = {};
+  for (uint8_t a = 0; a < n; ++a)
+    pos[a] = *h.channel[in.map.position_channel[a]].joint_pos * in.scale[a];
+  in.comp.Tick(pos, *h.enable, *h.referenced, corr, vel);
+  for (uint8_t j = 0; j < in.map.count; ++j) {
+    ChannelPins& c = h.channel[j];
+    const uint8_t a = in.map.axis_of[j];
+    const double k = in.scale[a];
+    const double correction = corr[a] / k;
+    *c.correction = correction;
+    *c.cmd_out = *c.cmd_in + correction;
+    *c.vel_out = *c.vel_in + vel[a] / k;
+    in.last_correction[j] = correction;
+    // Without the feedback function in a thread, motion still gets the feedback minus the
+    // correction, one period late (said once, below).
+    if (in.feedback_calls == 0) *c.fb_out = *c.fb_in - correction;
+  }
+  if (++in.updates == 1000 && in.feedback_calls == 0) {
+    rtapi_print_msg(
+        RTAPI_MSG_ERR,
+        "%s: %s.feedback runs in no thread: motion gets its feedback one servo period "
+        "late; addf %s.feedback servo-thread POSITION, after the function that reads the "
+        "drives' feedback and before motion-command-handler\n",
+        in.name.c_str(), in.name.c_str(), in.name.c_str());
+  }
+  *h.active = in.comp.engaged();
+  *h.clamped = in.comp.clamped();
+  *h.table_crc = in.active->crc32();
+  *h.table_error = in.exchange.last_error();
+  *h.reload_count = in.reloads;
+}
+
+int MakePins(Instance& in) {
+  in.hal = static_cast<InstanceHal*>(hal_malloc(sizeof(InstanceHal)));
+  if (in.hal == nullptr) return -ENOMEM;
+  std::memset(static_cast<void*>(in.hal), 0, sizeof(InstanceHal));
+  InstanceHal& h = *in.hal;
+  const char* n = in.name.c_str();
+  int r = 0;
+  for (uint8_t j = 0; j < in.map.count && r == 0; ++j) {
+    ChannelPins& c = h.channel[j];
+    r |= hal_pin_float_newf(HAL_IN, &c.joint_pos, g_comp_id, "%s.joint.%u.joint-pos-cmd", n, j);
+    r |= hal_pin_float_newf(HAL_IN, &c.cmd_in, g_comp_id, "%s.joint.%u.pos-cmd-in", n, j);
+    r |= hal_pin_float_newf(HAL_OUT, &c.cmd_out, g_comp_id, "%s.joint.%u.pos-cmd-out", n, j);
+    r |= hal_pin_float_newf(HAL_IN, &c.fb_in, g_comp_id, "%s.joint.%u.pos-fb-in", n, j);
+    r |= hal_pin_float_newf(HAL_OUT, &c.fb_out, g_comp_id, "%s.joint.%u.pos-fb-out", n, j);
+    r |= hal_pin_float_newf(HAL_IN, &c.vel_in, g_comp_id, "%s.joint.%u.vel-cmd-in", n, j);
+    r |= hal_pin_float_newf(HAL_OUT, &c.vel_out, g_comp_id, "%s.joint.%u.vel-cmd-out", n, j);
+    r |= hal_pin_float_newf(HAL_OUT, &c.correction, g_comp_id, "%s.joint.%u.correction", n, j);
+  }
+  for (uint8_t a = 0; a < in.active->axis_count() && r == 0; ++a) {
+    AxisParams& p = h.axis[a];
+    const char l = static_cast<char>(in.active->axis(a).name - 'A' + 'a');
+    r |= hal_param_float_newf(HAL_RW, &p.max_correction, g_comp_id, "%s.axis.%c.max-correction", n,
+                              l);
+    r |= hal_param_float_newf(HAL_RW, &p.max_vel, g_comp_id, "%s.axis.%c.max-correction-vel", n, l);
+    r |= hal_param_float_newf(HAL_RW, &p.max_accel, g_comp_id, "%s.axis.%c.max-correction-accel", n,
+                              l);
+    const lc::AxisLimits d = lc::NativeCompensator::DefaultLimits(in.active->axis(a));
+    p.max_correction = in.applied[a][0] = d.max_correction / in.scale[a];
+    p.max_vel = in.applied[a][1] = d.max_vel / in.scale[a];
+    p.max_accel = in.applied[a][2] = d.max_accel / in.scale[a];
+  }
+  r |= hal_pin_bit_newf(HAL_IN, &h.enable, g_comp_id, "%s.enable", n);
+  r |= hal_pin_bit_newf(HAL_IN, &h.referenced, g_comp_id, "%s.referenced", n);
+  r |= hal_pin_bit_newf(HAL_IN, &h.reload, g_comp_id, "%s.reload", n);
+  r |= hal_pin_bit_newf(HAL_OUT, &h.active, g_comp_id, "%s.active", n);
+  r |= hal_pin_bit_newf(HAL_OUT, &h.clamped, g_comp_id, "%s.clamped", n);
+  r |= hal_pin_u32_newf(HAL_OUT, &h.table_crc, g_comp_id, "%s.table-crc", n);
+  r |= hal_pin_s32_newf(HAL_OUT, &h.table_error, g_comp_id, "%s.table-error", n);
+  r |= hal_pin_u32_newf(HAL_OUT, &h.reload_count, g_comp_id, "%s.reload-count", n);
+  if (r != 0) return r;
+  *h.table_crc = in.active->crc32();
+  char fn[HAL_NAME_LEN + 1];
+  std::snprintf(fn, sizeof fn, "%s.feedback", n);
+  r = hal_export_funct(fn, Feedback, &in, /*uses_fp=*/1, /*reentrant=*/0, g_comp_id);
+  if (r != 0) return r;
+  std::snprintf(fn, sizeof fn, "%s.update", n);
+  return hal_export_funct(fn, Update, &in, /*uses_fp=*/1, /*reentrant=*/0, g_comp_id);
+}
+
+// Entry `i` of a per-instance parameter: its own, or the single value given for all.
+std::string PerInstance(char* const* values, size_t i) {
+  if (values[i] != nullptr) return values[i];
+  if (i > 0 && values[0] != nullptr && values[1] == nullptr) return values[0];
+  return "";
+}
+
+// Builds instance `name` from its parameters; false (after a message) when it cannot.
+bool MakeInstance(const std::string& name, size_t i, Instance* in) {
+  in->name = name;
+  in->path = table[i] != nullptr ? table[i] : "";
+  if (in->path.empty()) {
+    rtapi_print_msg(RTAPI_MSG_ERR,
+                    "%s: %s: no table file: table=FILE is required, one file for each instance "
+                    "(table=a.vct,b.vct for two)\n",
+                    kComponent, name.c_str());
+    return false;
+  }
+  auto fail = [&](const volcomp::Failure& f) {
+    rtapi_print_msg(RTAPI_MSG_ERR, "%s: %s: %s\n", kComponent, name.c_str(), f.message.c_str());
+    return false;
+  };
+  volcomp::Expected<std::unique_ptr<lc::NativeTable>> t = lc::NativeTable::ReadFile(in->path);
+  if (!t.ok()) return fail(t.error());
+  volcomp::Expected<double> mm_per_unit = lc::ParseLinearUnits(PerInstance(units, i));
+  if (!mm_per_unit.ok()) return fail(mm_per_unit.error());
+  volcomp::Expected<lc::ChannelMap> map = lc::MapChannels(PerInstance(axes, i), **t);
+  if (!map.ok()) return fail(map.error());
+  volcomp::Expected<std::unique_ptr<lc::NativeTable>> ref = (*t)->Copy(in->path);
+  if (!ref.ok()) return fail(ref.error());
+  in->map = *map;
+  for (uint8_t a = 0; a < (*t)->axis_count(); ++a) {
+    const bool rotary = (*t)->axis(a).kind == volcomp::table::AxisKind::kRotary;
+    in->scale[a] = rotary ? 1.0 : *mm_per_unit;
+  }
+  in->reference = std::move(*ref);
+  in->active = t->release();
+  in->comp.UseTable(in->active);
+  return true;
+}
+
+void FreeInstances() {
+  for (Instance* in : g_instances) {
+    delete in->active;
+    delete in;
+  }
+  g_instances.clear();
 }
 
 }  // namespace
 
 extern "C" int rtapi_app_main(void) {
-  if (table == nullptr || table[0] == '\0') {
-    rtapi_print_msg(RTAPI_MSG_ERR, "%s: table=FILE is required\n", kName);
+  std::vector<std::string> given;
+  for (char* n : names) {
+    if (n != nullptr) given.push_back(n);
+  }
+  volcomp::Expected<std::vector<std::string>> inst = lc::InstanceNames(count, given);
+  if (!inst.ok()) {
+    rtapi_print_msg(RTAPI_MSG_ERR, "%s: %s\n", kComponent, inst.error().message.c_str());
     return -EINVAL;
   }
-  if (max_correction_steps < 0 || correction_rate <= 0 || correction_accel <= 0) {
-    rtapi_print_msg(RTAPI_MSG_ERR, "%s: the correction limits must be positive\n", kName);
+  size_t tables = 0;
+  while (tables < lc::kMaxInstances && table[tables] != nullptr) ++tables;
+  if (tables > inst->size()) {
+    rtapi_print_msg(RTAPI_MSG_ERR, "%s: table= names %zu files for %zu instance(s)\n", kComponent,
+                    tables, inst->size());
     return -EINVAL;
   }
-  if (!lc::ReadFile(kName, table, &g_first_image).ok()) return -EINVAL;
-  // Validate now so that a bad file fails loadrt; the configuration needs the servo period,
-  // known at the first call of the function.
-  {
-    lc::NativeCompensator probe;
-    const volcomp::Status s = probe.Load(g_first_image, 1000, Limits());
-    if (!s.ok()) {
-      rtapi_print_msg(RTAPI_MSG_ERR, "%s: table \"%s\" refused: %s\n", kName, table, s.name());
+  for (size_t i = 0; i < inst->size(); ++i) {
+    Instance* in = new Instance();
+    g_instances.push_back(in);
+    if (!MakeInstance((*inst)[i], i, in)) {
+      FreeInstances();
       return -EINVAL;
     }
   }
-  g_comp_id = hal_init(kName);
-  if (g_comp_id < 0) return g_comp_id;
-  if (MakePins() != 0 ||
-      hal_export_funct("volcomp.update", Update, nullptr, 1, 0, g_comp_id) != 0) {
-    rtapi_print_msg(RTAPI_MSG_ERR, "%s: cannot create pins or function\n", kName);
-    hal_exit(g_comp_id);
-    return -EINVAL;
+  g_comp_id = hal_init(kComponent);
+  if (g_comp_id < 0) {
+    FreeInstances();
+    return g_comp_id;
   }
+  for (Instance* in : g_instances) {
+    const int r = MakePins(*in);
+    if (r != 0) {
+      rtapi_print_msg(RTAPI_MSG_ERR,
+                      "%s: %s: cannot create its pins, parameters or function (%d)\n", kComponent,
+                      in->name.c_str(), r);
+      hal_exit(g_comp_id);
+      FreeInstances();
+      return r < 0 ? r : -EINVAL;
+    }
+  }
+  std::vector<lc::TableLoader::Job> jobs;
+  for (Instance* in : g_instances) {
+    jobs.push_back({in->name, in->path, in->reference.get(), &in->exchange});
+    rtapi_print_msg(RTAPI_MSG_INFO, "%s: table \"%s\" (axes %s, %zu bytes, CRC-32 %08X)\n",
+                    in->name.c_str(), in->path.c_str(), in->active->AxisNames().c_str(),
+                    in->active->size_bytes(), in->active->crc32());
+  }
+  g_loader = new lc::TableLoader(Print);
+  g_loader->Start(std::move(jobs));
   hal_ready(g_comp_id);
   return 0;
 }
 
-extern "C" void rtapi_app_exit(void) { hal_exit(g_comp_id); }
+extern "C" void rtapi_app_exit(void) {
+  hal_exit(g_comp_id);  // no more servo-thread calls
+  if (g_loader != nullptr) {
+    g_loader->Stop();
+    delete g_loader;
+    g_loader = nullptr;
+  }
+  FreeInstances();
+}

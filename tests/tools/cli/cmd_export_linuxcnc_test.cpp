@@ -5,6 +5,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -40,7 +41,9 @@ TEST(VolcompExportLinuxcnc, FromRawReadings) {
   const std::string comp = (std::filesystem::path(dir) / "z.comp").string();
   EXPECT_EQ(r.out.rfind("volcomp export linuxcnc (COMP_FILE_TYPE 1)\n"
                         "  axis Z: 3 points from 0 to 100, bidirectional, wrote " +
-                            comp + "\n\nINI lines (also in ",
+                            comp +
+                            "\n\nINI lines to merge into the [JOINT_n] sections the machine's "
+                            "INI file has (also in ",
                         0),
             0u)
       << r.out;
@@ -56,6 +59,41 @@ TEST(VolcompExportLinuxcnc, FromRawReadings) {
     ++rows;
   }
   EXPECT_EQ(rows, 3);
+}
+
+TEST(VolcompExportLinuxcnc, MergesIntoAnIniFile) {
+  const std::string csv = RawReadings();
+  const std::string dir = TempPath("export_linuxcnc_merge");
+  const std::string ini = TempPath("export_linuxcnc_machine.ini");
+  const std::string before = "[JOINT_0]\nHOME = 0\n\n[JOINT_0]\nCOMP_FILE = x\n";
+  std::ofstream(ini) << before;
+  const auto r = RunCli({"export", "linuxcnc", "--x", csv, "--z", csv, "-o", dir, "--joints", "Z=2",
+                         "--allow-few-runs", "--ini", ini, "--json"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  const std::string x = std::filesystem::absolute(std::filesystem::path(dir) / "x.comp").string();
+  const std::string z = std::filesystem::absolute(std::filesystem::path(dir) / "z.comp").string();
+  std::stringstream merged, backup;
+  merged << std::ifstream(ini).rdbuf();
+  backup << std::ifstream(ini + ".bak").rdbuf();
+  EXPECT_EQ(merged.str(), "[JOINT_0]\nHOME = 0\nCOMP_FILE = " + x +
+                              "\nCOMP_FILE_TYPE = 1\n\n[JOINT_0]\nCOMP_FILE = x\n\n"
+                              "[JOINT_2]\nCOMP_FILE = " +
+                              z + "\nCOMP_FILE_TYPE = 1\n");
+  EXPECT_EQ(backup.str(), before);
+  // The repeated section: a warning on stderr and in the JSON.
+  const std::string warning = ini + ": [JOINT_0] appears 2 times (again at line 4)";
+  EXPECT_NE(r.err.find("warning: " + warning), std::string::npos) << r.err;
+  EXPECT_NE(r.out.find("\"merge_warnings\""), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find(warning), std::string::npos) << r.out;
+  // joints.ini says how its lines go in.
+  std::stringstream joints;
+  joints << std::ifstream(std::filesystem::path(dir) / "joints.ini").rdbuf();
+  EXPECT_EQ(joints.str().rfind("# volcomp export linuxcnc: merge these lines", 0), 0u);
+  // Two axes on one joint are refused.
+  const auto twice = RunCli({"export", "linuxcnc", "--x", csv, "--z", csv, "-o", dir, "--joints",
+                             "Z=0", "--allow-few-runs"});
+  EXPECT_EQ(twice.code, tools::kExitUsage);
+  EXPECT_NE(twice.err.find("--joints: X and Z both on joint 0"), std::string::npos) << twice.err;
 }
 
 TEST(VolcompExportLinuxcnc, OptionsAreChecked) {

@@ -1,6 +1,8 @@
 // LinuxCNC joint compensation files: the trims invert the measured deviations (checked against the
 // closed-form inverse of a linear deviation), type 0 and type 1 carry the same trims in
-// LinuxCNC's two conventions, and LinuxCNC's 256-entry limit is refused with a clear message.
+// LinuxCNC's two conventions, the file ends at the last tested position, LinuxCNC's 256-entry
+// limit is refused with a clear message, and the INI lines merge into the machine's [JOINT_n]
+// sections (never a second header) with warnings for what a user must know.
 #include "volcomp/exporters/linuxcnc_comp.hpp"
 
 #include <gtest/gtest.h>
@@ -106,6 +108,72 @@ TEST(LinuxcncComp, MoreThanLinuxcncLoadsIsRefused) {
       ValueOf(BuildLinuxcncComp(Linear(1.0, 0.0, 0, false), LinuxcncCompType::kTrims, 200.0 / 255))
           .rows.size(),
       256u);
+}
+
+TEST(LinuxcncComp, EndsAtTheLastTestedPosition) {
+  // 0..200 mm at a spacing of 30: the lattice 0, 30, ..., 180, 210 would end 10 mm past the test.
+  const LinuxcncComp c =
+      ValueOf(BuildLinuxcncComp(Linear(12.0, -0.08, -5.0, true), LinuxcncCompType::kTrims, 30.0));
+  ASSERT_EQ(c.rows.size(), 8u);
+  EXPECT_DOUBLE_EQ(c.rows[6].nominal, 180.0);
+  EXPECT_DOUBLE_EQ(c.rows.back().nominal, 200.0);
+  for (const LinuxcncCompRow& r : c.rows) {
+    EXPECT_NEAR(r.forward, Trim(r.nominal, 12.0, -0.08), 1e-9) << r.nominal;
+    EXPECT_NEAR(r.reverse, Trim(r.nominal, 7.0, -0.08), 1e-9) << r.nominal;
+  }
+  // A spacing that meets the end exactly keeps its lattice.
+  const LinuxcncComp even =
+      ValueOf(BuildLinuxcncComp(Linear(12.0, -0.08, -5.0, true), LinuxcncCompType::kTrims, 40.0));
+  ASSERT_EQ(even.rows.size(), 6u);
+  EXPECT_DOUBLE_EQ(even.rows.back().nominal, 200.0);
+}
+
+TEST(LinuxcncComp, MergesIntoTheExistingJointSections) {
+  const std::string ini =
+      "[KINS]\nJOINTS = 3\n\n[JOINT_0]\nTYPE = LINEAR\n# a comment\nHOME = 0\n\n"
+      "[JOINT_1]\nTYPE = LINEAR\nCOMP_FILE = old.comp\nCOMP_FILE_TYPE = 1\nHOME = 0\n\n"
+      "[AXIS_X]\nMIN_LIMIT = 0\n";
+  const LinuxcncIniMerge m = MergeLinuxcncJointIni(ini,
+                                                   {{0, "/c/x.comp", LinuxcncCompType::kTrims},
+                                                    {1, "/c/y.comp", LinuxcncCompType::kPositions},
+                                                    {2, "/c/z.comp", LinuxcncCompType::kTrims}},
+                                                   "machine.ini");
+  EXPECT_EQ(m.text,
+            "[KINS]\nJOINTS = 3\n\n[JOINT_0]\nTYPE = LINEAR\n# a comment\nHOME = 0\n"
+            "COMP_FILE = /c/x.comp\nCOMP_FILE_TYPE = 1\n\n"
+            "[JOINT_1]\nTYPE = LINEAR\nCOMP_FILE = /c/y.comp\nCOMP_FILE_TYPE = 0\nHOME = 0\n\n"
+            "[AXIS_X]\nMIN_LIMIT = 0\n\n"
+            "[JOINT_2]\nCOMP_FILE = /c/z.comp\nCOMP_FILE_TYPE = 1\n");
+  ASSERT_EQ(m.warnings.size(), 2u);
+  EXPECT_EQ(m.warnings[0], "machine.ini: [JOINT_1] COMP_FILE was old.comp, now /c/y.comp");
+  EXPECT_EQ(m.warnings[1], "machine.ini: [JOINT_1] COMP_FILE_TYPE was 1, now 0");
+  // Merging again changes nothing and says nothing.
+  const LinuxcncIniMerge again =
+      MergeLinuxcncJointIni(m.text,
+                            {{0, "/c/x.comp", LinuxcncCompType::kTrims},
+                             {1, "/c/y.comp", LinuxcncCompType::kPositions},
+                             {2, "/c/z.comp", LinuxcncCompType::kTrims}},
+                            "machine.ini");
+  EXPECT_EQ(again.text, m.text);
+  EXPECT_TRUE(again.warnings.empty());
+}
+
+TEST(LinuxcncComp, RepeatedSectionIsNamedNotRepeated) {
+  // What `cat joints.ini >> machine.ini` leaves: a second [JOINT_0], which LinuxCNC ignores.
+  const std::string ini =
+      "[JOINT_0]\nHOME = 0\nCOMP_FILE = a.comp\nCOMP_FILE = b.comp\n"
+      "[JOINT_0]\nCOMP_FILE = c.comp\n";
+  const LinuxcncIniMerge m =
+      MergeLinuxcncJointIni(ini, {{0, "/c/x.comp", LinuxcncCompType::kTrims}}, "m.ini");
+  EXPECT_EQ(m.text,
+            "[JOINT_0]\nHOME = 0\nCOMP_FILE = /c/x.comp\nCOMP_FILE_TYPE = 1\n"
+            "[JOINT_0]\nCOMP_FILE = c.comp\n");
+  ASSERT_EQ(m.warnings.size(), 3u);
+  EXPECT_EQ(m.warnings[0],
+            "m.ini: [JOINT_0] appears 2 times (again at line 5): LinuxCNC reads the first only; "
+            "the lines went into the first, merge or delete the others");
+  EXPECT_EQ(m.warnings[1], "m.ini: [JOINT_0] COMP_FILE was a.comp, now /c/x.comp");
+  EXPECT_EQ(m.warnings[2], "m.ini: [JOINT_0] had a second COMP_FILE (b.comp): removed");
 }
 
 }  // namespace

@@ -3,8 +3,9 @@
 // kLinuxcncMaxCompEntries lines. COMP_FILE_TYPE 1 holds the trims (added to the command), type 0
 // the positions reached (trim = nominal − forward). The trims are the 1-D corrections of
 // builders::BuildAxis1d (ReverseMode::kTables), the correction an AXIS1D table applies; without
-// reverse deviations the reverse trims equal the forward ones. LinuxCNC's reading of the file:
-// docs/linuxcnc.md §5.
+// reverse deviations the reverse trims equal the forward ones; the nominals stop at the last tested
+// position. The INI lines go into the machine's existing [JOINT_n] sections
+// (MergeLinuxcncJointIni). LinuxCNC's reading of the file and the INI: docs/linuxcnc.md §5.
 #pragma once
 
 #include <cstddef>
@@ -33,6 +34,8 @@ struct LinuxcncComp {
   double max_residual = 0;  // of the inversion, µm (arcsec)
 };
 
+/// Rows on the lattice of BuildAxis1d (`spacing`, 0: the test's), the last one at the last tested
+/// position rather than past it (LinuxCNC's nominals need not be equally spaced).
 /// kInvalidArgument naming the problem: BuildAxis1d's, or more rows than LinuxCNC loads (the
 /// message names the count, the limit and a spacing that fits).
 Expected<LinuxcncComp> BuildLinuxcncComp(const model::PositioningData& data,
@@ -46,5 +49,28 @@ std::string FormatLinuxcncComp(const LinuxcncComp& comp);
 /// The INI lines that load `comp_file` for joint `joint` (0..15): [JOINT_n], COMP_FILE and
 /// COMP_FILE_TYPE, each with its line end.
 std::string LinuxcncJointIni(int joint, const std::string& comp_file, LinuxcncCompType type);
+
+/// One joint's compensation file for MergeLinuxcncJointIni.
+struct LinuxcncJointComp {
+  int joint = 0;  // 0..15
+  std::string comp_file;
+  LinuxcncCompType type = LinuxcncCompType::kTrims;
+};
+
+struct LinuxcncIniMerge {
+  std::string text;                   // the INI text with the lines merged
+  std::vector<std::string> warnings;  // complete sentences naming `source` and its lines
+};
+
+/// Merges COMP_FILE and COMP_FILE_TYPE of each of `joints` into `ini` (a LinuxCNC INI file's
+/// text, named `source` in warnings), every other line unchanged: into the joint's existing
+/// [JOINT_n] section (after its last key), replacing the values it already has (a warning names
+/// the old one), or in a new section at the end when the file has none. LinuxCNC reads a key from
+/// the first section of a name only (a second [JOINT_n] header, as `cat joints.ini >> machine.ini`
+/// makes, leaves COMP_FILE ignored without a message): a file that repeats a joint's header gets
+/// the lines in the first one and a warning naming the repeats' lines.
+LinuxcncIniMerge MergeLinuxcncJointIni(const std::string& ini,
+                                       const std::vector<LinuxcncJointComp>& joints,
+                                       const std::string& source);
 
 }  // namespace volcomp::exporters

@@ -3,8 +3,8 @@
 // keeps the drive's direction rules (checked by a drive counter written here), the step I/O and
 // the thread's tick timer refuse what the pins and the thread cannot do, the firmware on pins
 // passes the input through and then adds the table's correction (checked against the independent
-// double trilinear reference), and the native compensator applies the table, ramps out when
-// disabled, clamps visibly and refuses a table for other axes without losing the active one.
+// double trilinear reference) from the position its home edge assigns. (The native component's
+// tests are in ../native/.)
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -17,7 +17,6 @@
 #include "board/hal_step_io.hpp"
 #include "board/thread_board_config.hpp"
 #include "board/thread_tick_timer.hpp"
-#include "native/native_compensator.hpp"
 #include "test_tables.hpp"
 #include "volcomp/firmware/board_app.hpp"
 #include "volcomp/firmware/step_dir_io.hpp"
@@ -247,9 +246,7 @@ TEST(LinuxcncBoardIo, SampledOutputLosesNoPulse) {
   EXPECT_GT(io.rendered_pulses(0), 10000);
 }
 
-// 1 um per step; positions in mm.
-constexpr double kMmPerStep = 0.001;
-
+// 1 um per step.
 testing::GridCase Grid(uint64_t seed, double amplitude_steps) {
   std::mt19937_64 rng(seed);
   testing::GridCase g =
@@ -258,118 +255,25 @@ testing::GridCase Grid(uint64_t seed, double amplitude_steps) {
   return g;
 }
 
-std::vector<uint8_t> Bytes(const testing::AlignedBytes& a) {
-  return std::vector<uint8_t>(a.data(), a.data() + a.size());
-}
-
-TEST(LinuxcncNative, AppliesTheTableAndRampsOut) {
-  const testing::GridCase g = Grid(11, 40.0);
-  NativeCompensator c;
-  ASSERT_TRUE(c.Load(Bytes(testing::WriteGridImage(g)), 1000, NativeLimits()).ok());
-  EXPECT_EQ(c.axis_count(), 3u);
-  const int32_t at[3] = {static_cast<int32_t>(g.dim[0].spacing_steps / 3),
-                         static_cast<int32_t>(g.dim[1].spacing_steps * 1.5),
-                         static_cast<int32_t>(g.dim[2].spacing_steps / 2)};
-  const double pos[3] = {at[0] * kMmPerStep, at[1] * kMmPerStep, at[2] * kMmPerStep};
-  double corr[3];
-  for (int i = 0; i < 2000; ++i) c.Tick(pos, true, true, corr);  // 2 s at 1 kHz: settled
-  EXPECT_TRUE(c.engaged());
-  EXPECT_FALSE(c.clamped());
-  for (int a = 0; a < 3; ++a) {
-    // The fixed-point lookup is within 1 LSB (1/256 step) of the exact value.
-    EXPECT_NEAR(corr[a] / kMmPerStep, testing::ExactTrilinear(g, at, a), 1.0 / 256 + 1e-9) << a;
-  }
-  for (int i = 0; i < 2000; ++i) c.Tick(pos, false, true, corr);
-  for (int a = 0; a < 3; ++a) EXPECT_EQ(corr[a], 0.0) << a;
-  EXPECT_FALSE(c.engaged());
-}
-
-// The native component steps its compensator every thread period, so its limits hold per period
-// at any thread rate, also above the board's 20 kHz compensation rate (where a board runs its
-// compensator every CompensationDivider() ticks): at 50 kHz the correction moves at most
-// rate / 50000 steps a period, and still reaches the table.
-TEST(LinuxcncNative, LimitsHoldPerPeriodOnAFastThread) {
-  const testing::GridCase g = Grid(14, 40.0);
-  NativeCompensator c;
-  const uint32_t hz = 50000;
-  ASSERT_GT(CompensationDivider(hz), 1u);
-  NativeLimits limits;  // 2000 steps/s, 200000 steps/s^2
-  ASSERT_TRUE(c.Load(Bytes(testing::WriteGridImage(g)), hz, limits).ok());
-  const double pos[3] = {0.0, 0.0, 0.0};
-  double corr[3], last[3] = {0.0, 0.0, 0.0};
-  double largest_step = 0;
-  for (int i = 0; i < 100000; ++i) {  // 2 s
-    c.Tick(pos, true, true, corr);
-    for (int a = 0; a < 3; ++a) {
-      largest_step = std::max(largest_step, std::fabs(corr[a] - last[a]) / kMmPerStep);
-      last[a] = corr[a];
-    }
-  }
-  EXPECT_GT(largest_step, 0.0);
-  // 2000 steps/s at 50 kHz: 0.04 step a period (the output is the applied correction in 1/256
-  // steps). Converted for a run every third period instead, it would move 0.12.
-  EXPECT_LE(largest_step, 2000.0 / hz + 1.0 / 256);
-  const int32_t at[3] = {0, 0, 0};
-  for (int a = 0; a < 3; ++a) {
-    EXPECT_NEAR(corr[a] / kMmPerStep, testing::ExactTrilinear(g, at, a), 1.0 / 256 + 1e-9) << a;
-  }
-}
-
-TEST(LinuxcncNative, ClampsVisiblyAndKeepsTheActiveTable) {
-  const testing::GridCase g = Grid(12, 200.0);
-  NativeCompensator c;
-  NativeLimits limits;
-  limits.max_correction_steps = 5;
-  ASSERT_TRUE(c.Load(Bytes(testing::WriteGridImage(g)), 1000, limits).ok());
-  const double pos[3] = {0.0, 0.0, 0.0};
-  double corr[3];
-  for (int i = 0; i < 2000; ++i) c.Tick(pos, true, true, corr);
-  bool any_over = false;
-  const int32_t at[3] = {0, 0, 0};
-  for (int a = 0; a < 3; ++a) {
-    EXPECT_LE(std::fabs(corr[a]), 5 * kMmPerStep + 1e-12) << a;
-    any_over |= std::fabs(testing::ExactTrilinear(g, at, a)) > 5.0;
-  }
-  EXPECT_EQ(c.clamped(), any_over);
-  // A table for another step size is refused; the active one stays.
-  const uint32_t crc = c.table_crc32();
-  // A valid image whose X has 2 um steps.
-  testing::GridCase other = Grid(13, 10.0);
-  std::vector<uint8_t> wrong;
-  {
-    table::ImageSpec spec;
-    table::GridSpec grid;
-    grid.frac_bits = other.frac_bits;
-    for (int d = 0; d < 3; ++d) grid.dim[d] = other.dim[d];
-    grid.values.type = other.type;
-    grid.values.i16 = other.i16.data();
-    spec.axis_count = 3;
-    spec.axes[0] = testing::LinearAxis('X', 2000000);
-    spec.axes[1] = testing::LinearAxis('Y');
-    spec.axes[2] = testing::LinearAxis('Z');
-    spec.grid = &grid;
-    testing::AlignedBytes out(*table::ImageSize(spec));
-    ASSERT_TRUE(table::WriteImage(spec, out.data(), out.size()).ok());
-    wrong = Bytes(out);
-  }
-  EXPECT_EQ(c.Load(wrong, 1000, limits).error(), Error::kConfigAxisMismatch);
-  EXPECT_EQ(c.table_crc32(), crc);
-  c.Tick(pos, true, true, corr);
-  EXPECT_TRUE(c.engaged());
-}
-
 // The firmware on pins, as the component runs it: stepgen-like input lines, one tick every two
 // base periods, the main loop every 50, the output sampled by drive counters. Unreferenced it
-// passes the input through; referenced and enabled, at every rest point the drives stand at the
-// input plus the whole-step correction, which is the table's value there (the double trilinear
-// reference) rounded to a step. (BoardGlue is process-wide: the only test that starts it.)
+// passes the input through; the home edge (joint.N.homed) arrives where the input count is not 0
+// (LinuxCNC homed to switches away from the power-on position) and makes that point the
+// configured home position (home_steps); referenced and enabled, at every rest point the drives
+// stand at the input plus the whole-step correction, which is the table's value (the double
+// trilinear reference) at the machine position = input - input at home + home position, rounded
+// to a step. (BoardGlue is process-wide: the only test that starts it.)
 TEST(LinuxcncBoard, FirmwareOnPinsPassesThroughThenCompensates) {
   testing::GridCase g = Grid(21, 30.0);
   for (auto& d : g.dim) d.spacing_steps = 500;
   static const testing::AlignedBytes image = testing::WriteGridImage(g);  // outlives the board
   ASSERT_GT(image.size(), 0u);
+  const int32_t home_counts[3] = {1234, -567, 890};  // input counts where the joints home
+  ThreadBoardParams params;
+  const int32_t home_steps[3] = {700, 300, 0};
+  for (int a = 0; a < 3; ++a) params.home_position_steps[a] = home_steps[a];
   BoardGlue board;
-  ASSERT_TRUE(board.Start(ThreadBoardConfig(ThreadBoardParams(), kPeriodNs), kPeriodNs, true).ok());
+  ASSERT_TRUE(board.Start(ThreadBoardConfig(params, kPeriodNs), kPeriodNs, true).ok());
   ASSERT_TRUE(board.ticking());
   ASSERT_TRUE(board.ActivateImage(image.data(), static_cast<uint32_t>(image.size())).ok());
   StepgenLines in[3];
@@ -401,10 +305,12 @@ TEST(LinuxcncBoard, FirmwareOnPinsPassesThroughThenCompensates) {
   // Moves to random points of the grid and rests (long enough for every step and the correction
   // to settle: 4 cells x 500 steps at 16.7 kHz, then 0.1 s).
   std::mt19937_64 rng(8);
+  int32_t machine[3] = {};  // the target in machine coordinates (after referencing)
   auto move_and_rest = [&]() {
     for (int a = 0; a < 3; ++a) {
       const int32_t span = static_cast<int32_t>((g.dim[a].nodes - 1) * g.dim[a].spacing_steps);
-      target[a] = std::uniform_int_distribution<int32_t>(0, span)(rng);
+      machine[a] = std::uniform_int_distribution<int32_t>(0, span)(rng);
+      target[a] = machine[a] + home_counts[a] - home_steps[a];
     }
     run(6 * 2000 + 5000);
     for (int a = 0; a < 3; ++a) ASSERT_EQ(in[a].position, target[a]) << a;
@@ -419,9 +325,9 @@ TEST(LinuxcncBoard, FirmwareOnPinsPassesThroughThenCompensates) {
       EXPECT_EQ(drive[a].count, in[a].position) << a;  // pass-through
     }
   }
-  for (int a = 0; a < 3; ++a) target[a] = 0;
+  for (int a = 0; a < 3; ++a) target[a] = home_counts[a];
   run(20000);
-  for (int a = 0; a < 3; ++a) lines.home[a] = true;  // rising edges: referenced at 0
+  for (int a = 0; a < 3; ++a) lines.home[a] = true;  // rising edges: referenced here
   run(2000);
   int max_correction = 0;
   for (int i = 0; i < 8; ++i) {
@@ -434,7 +340,7 @@ TEST(LinuxcncBoard, FirmwareOnPinsPassesThroughThenCompensates) {
       EXPECT_EQ(drive[a].count, int64_t{in[a].position} + st.correction[a]) << a;
       EXPECT_EQ(st.output[a], in[a].position + st.correction[a]) << a;
       EXPECT_EQ(st.backlog[a], 0) << a;
-      EXPECT_NEAR(st.correction[a], testing::ExactTrilinear(g, target, a), 0.5 + 1.0 / 256) << a;
+      EXPECT_NEAR(st.correction[a], testing::ExactTrilinear(g, machine, a), 0.5 + 1.0 / 256) << a;
       max_correction = std::max(max_correction, std::abs(st.correction[a]));
     }
     EXPECT_EQ(st.overruns, 0u);
