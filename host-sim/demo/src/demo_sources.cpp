@@ -6,10 +6,13 @@
 #include <string>
 
 #include "demo_session.hpp"
+#include "summary_document.hpp"
 
 namespace volcomp::sim::demo {
 namespace {
 
+using summary_document::At;
+using summary_document::Num;
 using tools::JsonValue;
 
 JsonValue Triple(const std::array<double, 3>& v) {
@@ -45,16 +48,6 @@ JsonValue Channel(const ChannelErrors& c) {
   return o;
 }
 
-const JsonValue& At(const JsonValue& v, const std::string& key) {
-  static const JsonValue kNull;
-  const JsonValue* m = v.get(key);
-  return m != nullptr ? *m : kNull;
-}
-double Num(const JsonValue& v, const std::string& key) { return At(v, key).number; }
-double Num(const JsonValue& v, const std::string& key, size_t i) {
-  const JsonValue& a = At(v, key);
-  return i < a.array.size() ? a.array[i].number : 0.0;
-}
 bool On(const JsonValue& v) { return At(v, "on").boolean; }
 
 std::string Fmt3(const char* format, const JsonValue& v, const std::string& key) {

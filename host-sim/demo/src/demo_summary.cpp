@@ -6,11 +6,14 @@
 #include <string>
 #include <vector>
 
+#include "summary_document.hpp"
 #include "volcomp/sim/demo.hpp"
 
 namespace volcomp::sim {
 namespace {
 
+using summary_document::At;
+using summary_document::Num;
 using tools::JsonValue;
 
 double Reduction(double before, double after) {
@@ -211,17 +214,6 @@ JsonValue Steps(const DemoResult& r) {
   return out;
 }
 
-// Reading the document back (it is ours: a missing member is null, and reads as 0).
-const JsonValue& At(const JsonValue& v, const std::string& key) {
-  static const JsonValue kNull;
-  const JsonValue* m = v.get(key);
-  return m != nullptr ? *m : kNull;
-}
-double Num(const JsonValue& v, const std::string& key) { return At(v, key).number; }
-double Num(const JsonValue& v, const std::string& key, size_t i) {
-  const JsonValue& a = At(v, key);
-  return i < a.array.size() ? a.array[i].number : 0.0;
-}
 unsigned long long Count(const JsonValue& v, const std::string& key) {
   const JsonValue& n = At(v, key);
   return n.is_unsigned ? n.uinteger : static_cast<unsigned long long>(n.integer);

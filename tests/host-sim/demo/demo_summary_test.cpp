@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 #include <regex>
 #include <sstream>
 #include <string>
@@ -44,6 +45,20 @@ std::string TempDir(const std::string& name) {
                    ("volcomp_sim_summary_" + std::to_string(::getpid()) + "_" + name);
   std::filesystem::remove_all(dir);
   return dir.string();
+}
+
+// Writes the report of `r` into `dir`, prints its summary into *text and reads summary.json back.
+void ReportAndRead(const DemoResult& r,
+                   const std::string& dir,
+                   std::ostringstream* text,
+                   std::optional<JsonValue>* json) {
+  ASSERT_TRUE(WriteDemoReport(r, dir).ok());
+  PrintSummary(r, *text);
+  const Expected<std::string> file = tools::ReadTextFile(dir + "/summary.json");
+  ASSERT_TRUE(file.ok()) << file.error().message;
+  Expected<JsonValue> parsed = tools::ParseJson(*file, "summary.json");
+  ASSERT_TRUE(parsed.ok()) << parsed.error().message;
+  *json = std::move(*parsed);
 }
 
 std::vector<std::string> Lines(const std::string& text) {
@@ -181,13 +196,9 @@ TEST(SimDemoSummary, WornRunWritesEveryPrintedFigureAndNamesEverySource) {
   const Expected<DemoResult> run = RunDemo(o, log);
   ASSERT_TRUE(run.ok()) << run.error().message;
   const DemoResult& r = run.value();
-  ASSERT_TRUE(WriteDemoReport(r, dir).ok());
   std::ostringstream text;
-  PrintSummary(r, text);
-  const Expected<std::string> file = tools::ReadTextFile(dir + "/summary.json");
-  ASSERT_TRUE(file.ok()) << file.error().message;
-  const Expected<JsonValue> json = tools::ParseJson(*file, "summary.json");
-  ASSERT_TRUE(json.ok()) << json.error().message;
+  std::optional<JsonValue> json;
+  ASSERT_NO_FATAL_FAILURE(ReportAndRead(r, dir, &text, &json));
   {
     SCOPED_TRACE("every printed number");
     CheckEveryPrintedNumberIsInTheJson(text.str(), *json);
@@ -281,13 +292,9 @@ TEST(SimDemoSummary, IdealRunWritesEveryPrintedFigure) {
   const Expected<DemoResult> run = RunDemo(o, log);
   ASSERT_TRUE(run.ok()) << run.error().message;
   const DemoResult& r = run.value();
-  ASSERT_TRUE(WriteDemoReport(r, dir).ok());
   std::ostringstream text;
-  PrintSummary(r, text);
-  const Expected<std::string> file = tools::ReadTextFile(dir + "/summary.json");
-  ASSERT_TRUE(file.ok()) << file.error().message;
-  const Expected<JsonValue> json = tools::ParseJson(*file, "summary.json");
-  ASSERT_TRUE(json.ok()) << json.error().message;
+  std::optional<JsonValue> json;
+  ASSERT_NO_FATAL_FAILURE(ReportAndRead(r, dir, &text, &json));
   CheckEveryPrintedNumberIsInTheJson(text.str(), *json);
   CheckFigureRows(text.str(), *json);
   CheckStepsAndRun(r, *json);

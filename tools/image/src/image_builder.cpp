@@ -4,6 +4,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "element_storage.hpp"
 #include "volcomp/table/table_writer.hpp"
 
 namespace volcomp::image {
@@ -95,23 +96,8 @@ Outcome CheckRequest(const ImageRequest& r) {
   });
 }
 
-// Encoded element storage for one array.
-struct Encoded {
-  std::vector<int16_t> i16;
-  std::vector<int32_t> i32;
-  std::vector<float> f32;
-  table::ElementArray view(table::ElementType type) const {
-    table::ElementArray a;
-    a.type = type;
-    a.i16 = i16.data();
-    a.i32 = i32.data();
-    a.f32 = f32.data();
-    return a;
-  }
-};
-
-Encoded Encode(const std::vector<double>& values, table::ElementType type, uint8_t frac) {
-  Encoded e;
+ElementStorage Encode(const std::vector<double>& values, table::ElementType type, uint8_t frac) {
+  ElementStorage e;
   const double scale = std::ldexp(1.0, frac);
   for (double v : values) {
     switch (type) {
@@ -202,7 +188,7 @@ Expected<std::vector<uint8_t>> BuildImage(const ImageRequest& request) {
   for (size_t i = 0; i < request.axes.size(); ++i) {
     spec.axes[i] = {request.axes[i].name, request.axes[i].kind, request.axes[i].resolution_e9};
   }
-  Encoded grid_values;
+  ElementStorage grid_values;
   table::GridSpec grid;
   if (request.grid) {
     const auto& g = *request.grid;
@@ -215,7 +201,7 @@ Expected<std::vector<uint8_t>> BuildImage(const ImageRequest& request) {
     grid.values = grid_values.view(type);
     spec.grid = &grid;
   }
-  std::vector<Encoded> axis_values(request.axis_tables.size() * 2);
+  std::vector<ElementStorage> axis_values(request.axis_tables.size() * 2);
   spec.axis1d_count = static_cast<uint8_t>(request.axis_tables.size());
   if (request.axis_tables.size() > table::kMaxAxes) return Invalid("too many AXIS1D");
   for (size_t i = 0; i < request.axis_tables.size(); ++i) {

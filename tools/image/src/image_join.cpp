@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <cstring>
 
+#include "element_storage.hpp"
 #include "volcomp/table/table_writer.hpp"
 
 namespace volcomp::image {
@@ -15,23 +16,8 @@ Unexpected<Failure> Invalid(const std::string& message) {
 
 // An element array of the image decoded into typed storage (little-endian in the image), so the
 // writer re-encodes exactly the same values.
-struct Elements {
-  std::vector<int16_t> i16;
-  std::vector<int32_t> i32;
-  std::vector<float> f32;
-
-  table::ElementArray view(table::ElementType type) const {
-    table::ElementArray a;
-    a.type = type;
-    a.i16 = i16.data();
-    a.i32 = i32.data();
-    a.f32 = f32.data();
-    return a;
-  }
-};
-
-Elements Decode(const uint8_t* p, table::ElementType type, uint64_t count) {
-  Elements e;
+ElementStorage Decode(const uint8_t* p, table::ElementType type, uint64_t count) {
+  ElementStorage e;
   for (uint64_t i = 0; i < count; ++i) {
     if (type == table::ElementType::kInt16) {
       const uint16_t u = static_cast<uint16_t>(p[2 * i] | (p[2 * i + 1] << 8));
@@ -141,7 +127,7 @@ Expected<JoinedImage> JoinImages(const JoinPart& grid_part,
 
   const uint64_t grid_count =
       uint64_t{g.grid.dim[0].nodes} * g.grid.dim[1].nodes * g.grid.dim[2].nodes * 3;
-  const Elements grid_values = Decode(g.grid.data, g.grid.type, grid_count);
+  const ElementStorage grid_values = Decode(g.grid.data, g.grid.type, grid_count);
   table::GridSpec grid;
   grid.frac_bits = g.grid.frac_bits;
   for (int d = 0; d < 3; ++d) {
@@ -152,7 +138,7 @@ Expected<JoinedImage> JoinImages(const JoinPart& grid_part,
   spec.grid = &grid;
 
   // AXIS1D: the GRID3 image's own, then the AXIS1D image's, re-indexed by name.
-  std::vector<Elements> values;
+  std::vector<ElementStorage> values;
   values.reserve(2 * (g.axis1d_count + a.axis1d_count));
   std::vector<bool> taken(g.axis_count, false);
   auto add = [&](const table::Axis1dView& t, uint8_t axis, const std::string& source) -> Outcome {
