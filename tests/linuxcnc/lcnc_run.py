@@ -167,6 +167,7 @@ def run_program(path, rows):
     name = os.path.basename(path)
     stop = 0
     in_dwell = False
+    dwell_line = None
     errors_before = len(errors)
     t0 = time.time()
     wait_for(lambda: S.poll() or S.interp_state != linuxcnc.INTERP_IDLE or len(errors) > errors_before,
@@ -180,7 +181,11 @@ def run_program(path, rows):
         if os.environ.get("VOLCOMP_LCNC_DEBUG") and (S.exec_state, S.interp_state) != getattr(run_program, "last", None):
             run_program.last = (S.exec_state, S.interp_state)
             log("t=%.3f exec %d interp %d pos %.3f" % (time.time() - t0, S.exec_state, S.interp_state, S.position[0]))
-        if waiting and not in_dwell:
+        # A new dwell: waiting after not waiting, or waiting on another line (on a busy machine
+        # the short move between two stops can pass while the values of one are being taken, so
+        # the poller never sees the CNC not waiting between the two dwells).
+        if waiting and (not in_dwell or S.current_line != dwell_line):
+            dwell_line = S.current_line
             # The dwell of a measured stop: the machine stands still; take the values once they
             # have been still for 100 ms (the correction settles within a few ms at rest).
             v = settled_snapshot(0.1, time.time() + 5.0)
