@@ -28,23 +28,10 @@ namespace m = volcomp::metrology;
 using report::FormatFixed;
 using report::FormatNumber;
 
-std::optional<m::Vec3> ParsePoint(const std::string& text) {
-  std::vector<double> v;
-  std::string part;
-  std::istringstream in(text);
-  while (std::getline(in, part, ',')) {
-    const auto d = tools::ParseDouble(part);
-    if (!d) return std::nullopt;
-    v.push_back(*d);
-  }
-  if (v.size() != 3) return std::nullopt;
-  return m::Vec3{v[0], v[1], v[2]};
-}
-
 Expected<m::Vec3> PointOption(const std::string& option, const std::string& text) {
-  const auto p = ParsePoint(text);
+  const auto p = tools::ParseTriple(text);
   if (!p) return UsageFailure(option + ": \"" + text + "\" is not X,Y,Z in mm");
-  return *p;
+  return m::Vec3{(*p)[0], (*p)[1], (*p)[2]};
 }
 
 // An integer option within 1..max (each has a default, so it is never absent).

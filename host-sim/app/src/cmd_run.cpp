@@ -4,6 +4,7 @@
 
 #include "commands.hpp"
 #include "volcomp/sim/program_run.hpp"
+#include "volcomp/tools/csv.hpp"
 #include "volcomp/tools/file_io.hpp"
 #include "volcomp/tools/hex.hpp"
 #include "volcomp/tools/json_value.hpp"
@@ -131,12 +132,11 @@ Expected<int> RunProgramCommand(args::Args& args, Context& ctx) {
     o.settings_source = *settings;
   }
   if (ballbar) {
-    Point3 p;
-    char tail = 0;
-    if (std::sscanf(ballbar->c_str(), "%lf,%lf,%lf%c", &p[0], &p[1], &p[2], &tail) != 3) {
+    const auto p = tools::ParseTriple(*ballbar);
+    if (!p) {
       return UsageFailure("--ballbar needs the pivot as X,Y,Z (mm), not \"" + *ballbar + "\"");
     }
-    o.ballbar_pivot_mm = p;
+    o.ballbar_pivot_mm = *p;
   }
   if (table) {
     VOLCOMP_TRY_ASSIGN(o.table_image, tools::ReadFileBytes(*table));

@@ -170,13 +170,23 @@ bool Cnc::StartChain(const Block& b, uint64_t t0) {
   if (segments.size() == 1 && !segments[0].arc()) return false;
   Point3 axis_speed;
   for (size_t a = 0; a < 3; ++a) axis_speed[a] = config_.max_step_rate_hz * config_.step_mm[a];
+  std::array<bool, 3> moves = {false, false, false};
+  for (const PathSegment& s : segments) {
+    const Point3 e = s.end_mm();
+    for (size_t a = 0; a < 3; ++a) moves[a] = moves[a] || e[a] != s.start_mm()[a];
+    if (s.arc())
+      moves[static_cast<size_t>(s.plane_axes()[0])] =
+          moves[static_cast<size_t>(s.plane_axes()[1])] = true;
+  }
   double speed = b.feed_mm_s;
   for (const PathSegment& s : segments) {
     speed = std::min(speed, s.SpeedLimit(axis_speed, config_.accel_mm_s2));
   }
   chain->motion = std::make_unique<PathMotion>(std::move(segments), from, end, config_.step_mm,
                                                speed, config_.accel_mm_s2, t0);
+  // An axis moves at most at the path speed; only the axes the chain moves count.
   for (size_t a = 0; a < 3; ++a) {
+    if (!moves[a]) continue;
     peak_rate_hz_ = std::max(peak_rate_hz_, chain->motion->peak_speed_mm_s() / config_.step_mm[a]);
   }
   chain_ = std::move(chain);

@@ -37,17 +37,19 @@ double PathMotion::PathLengthAt(uint64_t t_ns) const {
   return profile_.PositionAt(t);
 }
 
-const PathSegment& PathMotion::SegmentAt(uint64_t t_ns) const {
-  const double s = PathLengthAt(t_ns);
+size_t PathMotion::SegmentIndex(double s_mm) const {
   size_t i = 0;
-  while (i + 1 < segments_.size() && offset_mm_[i + 1] <= s) ++i;
-  return segments_[i];
+  while (i + 1 < segments_.size() && offset_mm_[i + 1] <= s_mm) ++i;
+  return i;
+}
+
+const PathSegment& PathMotion::SegmentAt(uint64_t t_ns) const {
+  return segments_[SegmentIndex(PathLengthAt(t_ns))];
 }
 
 Point3 PathMotion::PositionAt(uint64_t t_ns) const {
   const double s = PathLengthAt(t_ns);
-  size_t i = 0;
-  while (i + 1 < segments_.size() && offset_mm_[i + 1] <= s) ++i;
+  const size_t i = SegmentIndex(s);
   return segments_[i].PointAt(s - offset_mm_[i]);
 }
 

@@ -124,3 +124,20 @@ TEST(Csv, AHugeFieldIsReadWithoutRecursion) {
 
 }  // namespace
 }  // namespace volcomp::tools
+
+namespace volcomp::tools {
+namespace {
+
+TEST(ParseTriple, ThreeNumbersSeparatedByCommasOrNothing) {
+  const auto p = ParseTriple(" 200, -140.5,1e2 ");
+  ASSERT_TRUE(p.has_value());
+  EXPECT_EQ((*p)[0], 200);
+  EXPECT_EQ((*p)[1], -140.5);
+  EXPECT_EQ((*p)[2], 100);
+  for (const char* bad : {"", "1,2", "1,2,3,4", "1,,3", "1,2,x", "1;2;3"}) {
+    EXPECT_FALSE(ParseTriple(bad).has_value()) << bad;
+  }
+}
+
+}  // namespace
+}  // namespace volcomp::tools

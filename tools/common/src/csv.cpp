@@ -154,6 +154,20 @@ std::optional<double> ParseDouble(const std::string& text) {
   return v;
 }
 
+std::optional<std::array<double, 3>> ParseTriple(const std::string& text) {
+  std::array<double, 3> v{};
+  size_t from = 0;
+  for (size_t i = 0; i < 3; ++i) {
+    const size_t comma = i < 2 ? text.find(',', from) : text.size();
+    if (comma == std::string::npos) return std::nullopt;
+    const auto d = ParseDouble(text.substr(from, comma - from));
+    if (!d) return std::nullopt;
+    v[i] = *d;
+    from = comma + 1;
+  }
+  return v;
+}
+
 std::optional<long long> ParseInteger(const std::string& text) {
   const std::string t = Trim(text);
   if (t.empty()) return std::nullopt;

@@ -64,6 +64,7 @@ class PathMotion {
     uint64_t next_ns = 0;
     int next_dir = 1;
   };
+  size_t SegmentIndex(double s_mm) const;  // the segment holding path length s
   void Advance(int a);
   void FindNext(int a);
   uint64_t TimeOf(size_t seg, double s_local) const;

@@ -20,6 +20,7 @@
 // and stack linear in the input (no regular expressions, no recursion per character).
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <istream>
 #include <memory>
@@ -145,5 +146,7 @@ class CsvFields {
 std::optional<double> ParseDouble(const std::string& text);
 /// Parses a base-10 integer from the whole of `text` (leading/trailing spaces allowed).
 std::optional<long long> ParseInteger(const std::string& text);
+/// Parses exactly three comma-separated numbers ("X,Y,Z", each as ParseDouble reads it).
+std::optional<std::array<double, 3>> ParseTriple(const std::string& text);
 
 }  // namespace volcomp::tools
