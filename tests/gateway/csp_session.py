@@ -118,6 +118,7 @@ class Session:
         self.history = []
         self.max_dev = {"rest": 0.0, "moving": 0.0}
         self.corrections = [0] * 3
+        self.max_abs_correction = 0        # largest |correction| since while_running() began
         self.frames_checked = 0
         self.stray = []                    # unexpected frames on the drive bus
 
@@ -186,6 +187,7 @@ class Session:
             self.pending[a] = t
             c = i32(t - self.target[a])
             self.corrections[a] = c
+            self.max_abs_correction = max(self.max_abs_correction, abs(c))
             self.frames_checked += 1
             if self.expect_zero and c != 0:
                 self.fail("axis %d: target corrected by %d without an active table" % (a, c))
@@ -230,12 +232,16 @@ class Session:
         if left > 0:
             time.sleep(left)
 
-    def while_running(self, argv, kind="moving", path=None, min_cycles=0):
-        """Runs a PC tool command while the cycles go on; returns (rc, output)."""
+    def while_running(self, argv, kind="moving", path=None, min_cycles=0, stall_s=0):
+        """Runs a PC tool command while the cycles go on; returns (rc, output). stall_s: the
+        master stops cycling that long right after the start (a stalled master, on purpose)."""
         p = subprocess.Popen(argv, stdout=subprocess.PIPE, stderr=subprocess.STDOUT)
         n = 0
         self.max_gap = 0.0  # longest time between two cycles meanwhile (a stalled master)
+        self.max_abs_correction = 0
         last = time.monotonic()
+        if stall_s:
+            time.sleep(stall_s)
         while p.poll() is None or n < min_cycles:
             self.step(kind, path)
             now = time.monotonic()
@@ -297,6 +303,9 @@ def main():
     ap.add_argument("--table", required=True, help="table image to upload")
     ap.add_argument("--grid-csv", required=True, help="write the grid CSV here and exit")
     ap.add_argument("--write-grid-only", action="store_true")
+    ap.add_argument("--stall-first-attempt-s", type=float, default=0.0,
+                    help="stall the master this long during the first 'activation while moving' "
+                    "(tests the session's own retry path; the board then rightly accepts)")
     args = ap.parse_args()
     nodes = grid_csv(args.grid_csv)
     if args.write_grid_only:
@@ -347,8 +356,16 @@ def run(s, grid, args):
         s.fail("reference failed")
     print("== activation while moving is refused", flush=True)
     for attempt in range(3):
+        # Judged after the attempt: refused, the targets must have stayed uncorrected; accepted
+        # during a stall of the master, the correction rightly ramps in.
+        s.expect_zero = False
         rc, out = s.while_running(tool + ["activate"] + can_opt, path=around(HOME, 150000, 200),
-                                  min_cycles=20)
+                                  min_cycles=20,
+                                  stall_s=args.stall_first_attempt_s if attempt == 0 else 0)
+        s.expect_zero = True
+        if rc != 0 and s.max_abs_correction != 0:
+            s.fail("a refused activation corrected the targets (up to %d increments)" %
+                   s.max_abs_correction)
         if rc != 0 or s.max_gap < 0.08:
             break
         # The master itself stalled for most of the 100 ms "at rest" window (an overloaded
@@ -358,6 +375,11 @@ def run(s, grid, args):
         s.while_running(tool + ["deactivate"] + can_opt, path=around(HOME, 150000, 200))
         s.settle()
         s.expect_zero = True
+        # The activation consumed the staged table: stage it again for the next attempt.
+        up_rc, _ = s.while_running(tool + ["upload", args.table] + can_opt + ["--quiet"],
+                                   path=around(HOME, 150000, 200))
+        if up_rc != 0:
+            s.fail("upload for another attempt failed")
     if rc == 0:
         s.fail("activation while moving was not refused")
     print("== at rest: activation, ramp-in, exact correction", flush=True)

@@ -10,6 +10,7 @@
 # uml-gateway-stats.json (the firmware's own counters and latency), uml-gateway-latency.json
 # (per-frame forwarding latency from the candump kernel timestamps).
 # usage: run_uml_gateway.sh VOLCOMP_FW_LINUX VOLCOMP SOURCE_DIR ARTIFACT_DIR
+# VOLCOMP_UML_SESSION_ARGS: more options for csp_session.py (e.g. --stall-first-attempt-s 0.5)
 set -euo pipefail
 fw=$(realpath "$1") volcomp=$(realpath "$2") src=$(realpath "$3") artifacts=$4
 source "$(dirname "$0")/uml_lib.sh"
@@ -94,7 +95,7 @@ rc=1
   $fw --config board.conf --ready-file ready --stats stats.json > fw.log 2>&1 &
   board=\$!
   for i in \$(seq 100); do [ -s ready ] && break; sleep 0.05; done
-  /usr/bin/python3 $session --volcomp $volcomp --table table.vct --grid-csv grid-check.csv
+  /usr/bin/python3 $session --volcomp $volcomp --table table.vct --grid-csv grid-check.csv ${VOLCOMP_UML_SESSION_ARGS:-}
   kill -TERM \$board
   wait \$board
   echo "firmware exit code \$?"
