@@ -19,15 +19,28 @@ SdoOutcome NodeObjects::Write(canopen::ObjectId id, uint32_t value) {
   return WriteDomain(id, NumericPayload(id, value));
 }
 
+template <typename ReadFn>
+auto NodeObjects::Repeated(const ReadFn& read) -> decltype(read()) {
+  auto r = read();
+  for (uint8_t attempt = 1;
+       attempt < options_.read_attempts && !r.ok() && canopen::IsProtocolAbort(r.error().abort);
+       ++attempt) {
+    ++read_retries_;
+    r = read();
+  }
+  return r;
+}
+
 SdoExpected<uint32_t> NodeObjects::Read(canopen::ObjectId id) {
   const canopen::ObjectEntry& e = canopen::Entry(id);
-  return ReadU32(*link_, node_, e.index, e.sub, options_);
+  return Repeated([&] { return ReadU32(*link_, node_, e.index, e.sub, options_); });
 }
 
 SdoExpected<std::string> NodeObjects::ReadString(canopen::ObjectId id) {
   const canopen::ObjectEntry& e = canopen::Entry(id);
-  VOLCOMP_TRY_ASSIGN(const std::vector<uint8_t> data,
-                     ReadObject(*link_, node_, e.index, e.sub, false, options_));
+  VOLCOMP_TRY_ASSIGN(const std::vector<uint8_t> data, Repeated([&] {
+                       return ReadObject(*link_, node_, e.index, e.sub, false, options_);
+                     }));
   return std::string(data.begin(), data.end());
 }
 
@@ -40,7 +53,7 @@ SdoOutcome NodeObjects::WriteDomain(canopen::ObjectId id,
 
 SdoExpected<std::vector<uint8_t>> NodeObjects::ReadDomain(canopen::ObjectId id) {
   const canopen::ObjectEntry& e = canopen::Entry(id);
-  return ReadObject(*link_, node_, e.index, e.sub, true, options_);
+  return Repeated([&] { return ReadObject(*link_, node_, e.index, e.sub, true, options_); });
 }
 
 }  // namespace volcomp::canopen_client

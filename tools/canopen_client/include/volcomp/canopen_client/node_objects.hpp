@@ -32,6 +32,8 @@ class NodeObjects {
 
   /// Numeric objects: written with the entry's size (4 bytes for non-numeric types).
   SdoOutcome Write(canopen::ObjectId id, uint32_t value);
+  // Reads are repeated after a protocol abort (Options::read_attempts); read_retries() counts the
+  // repeats of this object's life, for reports.
   /// Numeric objects of 1..4 bytes, zero-extended.
   SdoExpected<uint32_t> Read(canopen::ObjectId id);
   SdoExpected<std::string> ReadString(canopen::ObjectId id);
@@ -42,11 +44,18 @@ class NodeObjects {
                          std::function<void(uint32_t, uint32_t)> progress = {});
   /// Domains, read by block transfer.
   SdoExpected<std::vector<uint8_t>> ReadDomain(canopen::ObjectId id);
+  /// Reads repeated after a protocol abort so far.
+  uint32_t read_retries() const { return read_retries_; }
 
  private:
+  // Runs `read` until it succeeds, fails otherwise than by a protocol abort, or the attempts end.
+  template <typename ReadFn>
+  auto Repeated(const ReadFn& read) -> decltype(read());
+
   const FrameLink* link_;
   uint8_t node_;
   SdoClient::Options options_;
+  uint32_t read_retries_ = 0;
 };
 
 }  // namespace volcomp::canopen_client

@@ -57,6 +57,11 @@ class SdoClient {
     uint32_t timeout_ms = 1000;  // per response
     bool use_block = true;       // block transfer for downloads > 4 bytes
     uint8_t upload_block_size = 127;
+    /// Reads through NodeObjects are repeated up to this many attempts in all when one ends with
+    /// a protocol abort from either side (0x0503xxxx / 0x0504xxxx: a timeout, a stale or garbled
+    /// frame): a read changes nothing on the node, so a fresh attempt is safe. Writes are not
+    /// repeated (a repeated table command is not the same request).
+    uint8_t read_attempts = 2;
   };
 
   SdoClient(uint8_t node_id, Options options);
