@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Checks one run of a docs/linuxcnc.md recipe on a LinuxCNC sample configuration.
 
-check_recipe.py NAME RUN_DIR VOLCOMP TABLE STEP MM_PER_UNIT [servo]
+check_recipe.py NAME RUN_DIR VOLCOMP TABLE STEP MM_PER_UNIT [servo|pid]
 RUN_DIR holds recipe.csv(.json) of lcnc_recipe_run.py and linuxcnc.log. STEP: the machine's
 resolution in machine units (one step or encoder count); MM_PER_UNIT: 25.4 for an inch machine.
 Checks: LinuxCNC ran without error; `show thread` lists volcomp.0.feedback between the feedback
@@ -10,7 +10,8 @@ recipe's addf positions); at every stop the correction is the table's value
 at LinuxCNC's joint position (`volcomp lookup`) within one step, the drive stands at the motor
 command plus the correction and LinuxCNC's following error is below a step (servo: plus pid's
 deadband, [JOINT_N]DEADBAND); with `servo`, pid's command-deriv is volcomp's vel-cmd-out (the
-feed-forward); the reload checks of lcnc_recipe_run.py, when present: a reload of the same table
+feed-forward); with `pid`, command-deriv is unconnected (pid differentiates the corrected command);
+the feedback capture is a `*.capture-position` function or a Mesa card's `hm2_*.read`; the reload checks of lcnc_recipe_run.py, when present: a reload of the same table
 keeps its CRC, a damaged one is refused with the text of `volcomp inspect` and a readable reason
 in the log, an unreadable one with the uid and errno text, the active table stays, and the good
 table loads again. Prints the figures; exit 1 with every failed check listed.
@@ -25,7 +26,8 @@ import sys
 
 name, run, volcomp, table = sys.argv[1:5]
 step, mm_per_unit = float(sys.argv[5]), float(sys.argv[6])
-servo = len(sys.argv) > 7 and sys.argv[7] == "servo"
+mode = sys.argv[7] if len(sys.argv) > 7 else ""
+servo = mode in ("servo", "pid")
 summary = json.load(open(os.path.join(run, "recipe.csv.json")))
 rows = list(csv.DictReader(open(os.path.join(run, "recipe.csv"))))
 log = open(os.path.join(run, "linuxcnc.log"), errors="replace").read()
@@ -53,7 +55,9 @@ for line in summary.get("threads", "").splitlines():
         order[m.group(2)] = int(m.group(1))
 mc, vc = order.get("motion-controller"), order.get("volcomp.0.update")
 mch, vf = order.get("motion-command-handler"), order.get("volcomp.0.feedback")
-capture = min((n for f, n in order.items() if f.endswith("capture-position")), default=None)
+capture = min((n for f, n in order.items()
+               if f.endswith("capture-position") or re.match(r"hm2_\w+\.\d+\.read$", f)),
+              default=None)
 check(mc is not None and vc == mc + 1,
       "show thread: volcomp.0.update at %s, motion-controller at %s (it must come right after)"
       % (vc, mc))
@@ -93,11 +97,14 @@ for r, w in zip(rows, want):
               % (where, float(r["drive_%d" % j]), corr))
         check(ferror <= step + deadband, "%s: following error %.6f" % (where, ferror))
 check(worst["correction"] > step, "the corrections were all below a step: nothing was tested")
-if servo:
-    ff = summary.get("feed_forward", "")
-    linked = [l for l in ff.splitlines() if "command-deriv" in l and "<==" in l]
+ff = summary.get("feed_forward", "")
+linked = [l for l in ff.splitlines() if "command-deriv" in l and "<==" in l]
+if mode == "servo":
     check(len(linked) >= joints,
           "pid command-deriv pins not all fed (feed-forward):\n%s" % ff)
+if mode == "pid":
+    check(not linked and "command-deriv" in ff,
+          "pid command-deriv pins fed (the recipe assumes pid differentiates the command):\n%s" % ff)
 print("%s: homed in %.1f s (motor offsets %s); %d stops: correction up to %.4f mm, within %.3f "
       "steps of the table at the joint position; drive = motor command + correction within %.3f "
       "steps; following error at rest %.3f steps; show thread: capture %s, volcomp.0.feedback %s, "

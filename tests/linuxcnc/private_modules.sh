@@ -3,8 +3,10 @@
 # LinuxCNC's module directory, in a private mount namespace, without touching the system's
 # directory: `loadrt` takes no path, only NAME.so from the directory rtapi_app was built with, so
 # DIR/modules gets a link to every system module plus the build's volcomp.so and
-# volcomp_board.so, and is mounted over the module directory for COMMAND and its children only
-# (rtapi_app included). Needs root (unshare, mount). Nothing is left behind when COMMAND ends.
+# volcomp_board.so (and the modules VOLCOMP_EXTRA_MODULES names: paths, space-separated, e.g. a
+# test's stand-in for hardware), and is mounted over the module directory for COMMAND and its
+# children only (rtapi_app included). Needs root (unshare, mount). Nothing is left behind when
+# COMMAND ends.
 set -euo pipefail
 if [[ ${1:-} == --inside ]]; then
   shift
@@ -19,6 +21,9 @@ if [[ ${1:-} == --inside ]]; then
     ln -sf "$f" "$dir/modules/$name"
   done
   install -m 644 "$build/volcomp.so" "$build/volcomp_board.so" "$dir/modules/"
+  for extra in ${VOLCOMP_EXTRA_MODULES:-}; do
+    install -m 644 "$extra" "$dir/modules/"
+  done
   chmod 755 "$dir" "$dir/modules"
   mount --bind "$dir/modules" "$sysdir"
   exec "$@"

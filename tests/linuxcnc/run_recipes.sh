@@ -6,6 +6,11 @@
 #          corexykins, inch) + the block "# volcomp-stepgen.hal" of the docs
 # servo:   sim/tklinuxcnc/servo_sim.ini (servo_sim.hal: pid + encoder, home switch on X,
 #          COMP_FILE on X, inch) + the block "# volcomp-servo.hal"; then the reload checks
+# hm2-stepper, hm2-servo: by_interface/mesa/hm2-stepper and hm2-servo (5i20.ini: a Mesa card's
+#          stepgens in position mode; pid on its pwmgens and encoders, a shared home switch, an
+#          index on Y; inch) + the blocks "# volcomp-hm2-stepper.hal", "# volcomp-hm2-servo.hal";
+#          the card is hm2_standin.comp (built here with halcompile), loaded in place of the
+#          driver under the card's name
 # Each copy changes only what running headless needs (DISPLAY, no APP) and what the docs tell a
 # user to add to the INI file ([HAL]HALFILE after the machine's, [VOLCOMP]TABLE). The tables come
 # from the S500 model over each machine's joint range. Checks: check_recipe.py.
@@ -14,7 +19,9 @@ volcomp=$(realpath "$1") modules=$(realpath "$2") src=$(realpath "$3")
 work=$(realpath -m "$4") artifacts=$(realpath -m "$5")
 here=$(cd "$(dirname "$0")" && pwd)
 samples=${VOLCOMP_LINUXCNC_SAMPLES:-/usr/share/doc/linuxcnc/examples/sample-configs}
-if [[ ! -f $samples/sim/axis/corexy/corexy_by_kins.ini || ! -f $samples/sim/tklinuxcnc/servo_sim.ini ]]; then
+mesa=$samples/by_interface/mesa
+if [[ ! -f $samples/sim/axis/corexy/corexy_by_kins.ini || ! -f $samples/sim/tklinuxcnc/servo_sim.ini ||
+      ! -f $mesa/hm2-stepper/5i20.ini || ! -f $mesa/hm2-servo/5i20.ini ]]; then
   echo "run_recipes: LinuxCNC's sample configurations are not in $samples" >&2
   exit 1
 fi
@@ -81,12 +88,26 @@ run_recipe() {  # NAME DIR INI
   fi
 }
 
-build_table() {  # OUT RANGE (mm, over the machine's joint range)
+build_table() {  # OUT RANGE [SPACING_MM] (mm, over the machine's joint range)
   "$volcomp" build model --model "$src/samples/model/s500.conf" --resolution-nm X=1000,Y=1000,Z=1000 \
-    --range "$2" --spacing-mm 20 -o "$1" >/dev/null
+    --range "$2" --spacing-mm "${3:-20}" -o "$1" >/dev/null
 }
 
+# A copy of a Mesa sample with the stand-in in place of the card's driver (the only change to its
+# HAL file).
+mesa_sample() {  # SAMPLE DIR
+  cp -rL "$mesa/$1" "$2"
+  sed -i '/^loadrt hostmot2/d; s|^loadrt \[HOSTMOT2\](DRIVER) .*|loadrt hm2_standin names=hm2_[HOSTMOT2](BOARD).0|' \
+    "$2/$1.hal"
+  grep -q '^loadrt hm2_standin' "$2/$1.hal" || { echo "run_recipes: $1.hal: no driver line" >&2; return 1; }
+  cp "$2/5i20.ini" "$2/machine.ini"
+  headless "$2/machine.ini"
+}
+
+# VOLCOMP_RECIPES="NAME ...": only those runs (when working on one; the test runs all).
+want() { [[ -z ${VOLCOMP_RECIPES:-} || " $VOLCOMP_RECIPES " == *" $1 "* ]]; }
 status=0
+if want stepgen; then
 # --- stepgen: corexy (corexykins: joint 0 = X+Y, joint 1 = X-Y; the table is in joint space) ---
 d=$work/stepgen
 cp -rL "$samples/sim/axis/corexy" "$d"
@@ -102,6 +123,8 @@ run_recipe stepgen "$d" machine.ini env VOLCOMP_RECIPE_FEED=6 \
   VOLCOMP_RECIPE_POINTS="0.4,0.2,-0.3;0.6,0.1,-0.5;0.3,0.4,-0.2" || status=1
 python3 "$here/check_recipe.py" stepgen "$d" "$volcomp" "$d/table.vct" 0.000125 25.4 || status=1
 
+fi
+if want servo; then
 # --- servo: tklinuxcnc/servo_sim (pid + encoder; X homes to a switch; COMP_FILE on X) ---
 d=$work/servo
 cp -rL "$samples/sim/tklinuxcnc" "$d"
@@ -117,4 +140,41 @@ run_recipe servo "$d" machine.ini env VOLCOMP_RECIPE_FEED=100 \
 # One encoder count (6000 per inch).
 python3 "$here/check_recipe.py" servo "$d" "$volcomp" "$d/table.vct" 0.000166667 25.4 servo ||
   status=1
+
+fi
+# --- Mesa cards: the stand-in, built like any third-party component ---
+mkdir -p "$work/hm2_standin"
+(cd "$work/hm2_standin" && halcompile --compile "$here/hm2_standin.comp" >halcompile.log 2>&1) || {
+  echo "run_recipes: halcompile of hm2_standin.comp failed:" >&2
+  cat "$work/hm2_standin/halcompile.log" >&2
+  exit 1
+}
+standin=$work/hm2_standin/hm2_standin.so
+
+if want hm2-stepper; then
+d=$work/hm2-stepper
+mesa_sample hm2-stepper "$d"
+doc_block volcomp-hm2-stepper.hal "$d/volcomp-hm2-stepper.hal"
+build_table "$d/table.vct" X=-260:260,Y=-260:260,Z=-260:260 40
+edit_ini "$d/machine.ini" volcomp-hm2-stepper.hal "$d/table.vct"
+echo "== LinuxCNC run 5: docs recipe on LinuxCNC's sample by_interface/mesa/hm2-stepper (card's stepgens, inch)" >&2
+run_recipe hm2-stepper "$d" machine.ini env VOLCOMP_EXTRA_MODULES="$standin" \
+  VOLCOMP_RECIPE_FEED=120 VOLCOMP_RECIPE_POINTS="2,1,-1;-3,4,2;5,-2,0.5" || status=1
+# One step (SCALE 1000 per inch).
+python3 "$here/check_recipe.py" hm2-stepper "$d" "$volcomp" "$d/table.vct" 0.001 25.4 || status=1
+
+fi
+if want hm2-servo; then
+d=$work/hm2-servo
+mesa_sample hm2-servo "$d"
+doc_block volcomp-hm2-servo.hal "$d/volcomp-hm2-servo.hal"
+build_table "$d/table.vct" X=-80:260,Y=-80:260,Z=-80:80
+edit_ini "$d/machine.ini" volcomp-hm2-servo.hal "$d/table.vct"
+echo "== LinuxCNC run 6: docs recipe on LinuxCNC's sample by_interface/mesa/hm2-servo (pid on the card's pwmgens and encoders, inch)" >&2
+run_recipe hm2-servo "$d" machine.ini env VOLCOMP_EXTRA_MODULES="$standin" \
+  VOLCOMP_RECIPE_FEED=50 VOLCOMP_RECIPE_POINTS="2,1,-1;-1,3,1;4,-2,0.5" || status=1
+# One encoder count (81920 per inch); command-deriv unconnected: pid differentiates the command.
+python3 "$here/check_recipe.py" hm2-servo "$d" "$volcomp" "$d/table.vct" 0.0000122070 25.4 pid ||
+  status=1
+fi
 exit $status
