@@ -53,6 +53,30 @@ TEST(Csv, ErrorsNameLineAndProblem) {
   EXPECT_EQ(ErrorOf("a,b\n1,1e999\n", "b"), "in.csv:2: column \"b\": \"1e999\" is not a number");
 }
 
+// What Excel writes when a sheet has a wider row somewhere: every row padded with separators,
+// empty rows as separators only.
+TEST(Csv, SpreadsheetPaddingAndEmptyRowsAreSkipped) {
+  const CsvTable t = Parse(";;;;\naxis;target_mm;dev_um;;\nX;0;1,5;;\n;;;;\nX;10;-2;;\n;;;;\n");
+  ASSERT_EQ(t.header().size(), 3u);
+  EXPECT_EQ(t.header()[2], "dev_um");
+  ASSERT_EQ(t.rows().size(), 2u);
+  EXPECT_DOUBLE_EQ(Num(t.rows()[0], "dev_um"), 1.5);
+  EXPECT_DOUBLE_EQ(Num(t.rows()[1], "target_mm"), 10);
+  EXPECT_EQ(t.rows()[1].line(), 5u);
+  // A cell beyond the header is data, not padding.
+  EXPECT_EQ(ErrorOf("a;b;;\n1;2;;\n1;2;3;\n"), "in.csv:3: expected 2 fields, found 3");
+  // An empty name between two columns is still an error.
+  EXPECT_EQ(ErrorOf("a;;b\n1;2;3\n"), "in.csv:1: empty column name in header");
+}
+
+TEST(Csv, ATitleRowAboveTheHeaderIsNamedAsSuch) {
+  EXPECT_EQ(ErrorOf("Positioning test X;;;\naxis;target_mm;dev_um;\nX;0;1\n"),
+            "in.csv:1: \"Positioning test X\" looks like a title row (one cell, the rest of the "
+            "row empty), not the header: delete it or start it with #");
+  // A single-column file is not a title row.
+  EXPECT_EQ(Parse("x_mm\n4\n").rows().size(), 1u);
+}
+
 TEST(Csv, RowsOutliveTheTable) {
   std::vector<CsvRow> rows;
   {

@@ -1,6 +1,7 @@
 // CSV reader with line-numbered errors.
 #include "volcomp/tools/csv.hpp"
 
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
@@ -27,6 +28,10 @@ std::string Trim(const std::string& s) {
 bool IsSkippable(const std::string& line) {
   const std::string t = Trim(line);
   return t.empty() || t[0] == '#';
+}
+
+bool AllEmpty(const std::vector<std::string>& fields) {
+  return std::all_of(fields.begin(), fields.end(), [](const std::string& f) { return f.empty(); });
 }
 
 char DetectSeparator(const std::string& header) {
@@ -282,7 +287,20 @@ Expected<CsvTable> CsvTable::Read(std::istream& in, const std::string& source) {
       if (!SplitLine(line, sep, &meta->header)) {
         return Fail(meta->LineFailure(line_no, "unterminated quote in header"));
       }
+      if (AllEmpty(meta->header)) {  // a spreadsheet's empty row (";;;") above the header
+        meta->header.clear();
+        continue;
+      }
       meta->header_line = line_no;
+      // A spreadsheet pads every row to its widest: empty names after the last column go.
+      const std::size_t width = meta->header.size();
+      while (meta->header.size() > 1 && meta->header.back().empty()) meta->header.pop_back();
+      if (meta->header.size() == 1 && width > 1) {
+        return Fail(meta->LineFailure(
+            line_no, "\"" + meta->header[0] +
+                         "\" looks like a title row (one cell, the rest of the row empty), not "
+                         "the header: delete it or start it with #"));
+      }
       for (std::size_t i = 0; i < meta->header.size(); ++i) {
         if (meta->header[i].empty()) {
           return Fail(meta->LineFailure(line_no, "empty column name in header"));
@@ -298,6 +316,9 @@ Expected<CsvTable> CsvTable::Read(std::istream& in, const std::string& source) {
     }
     if (!SplitLine(line, sep, &fields))
       return Fail(meta->LineFailure(line_no, "unterminated quote"));
+    // A spreadsheet's padding: empty cells after the last column, rows of empty cells only.
+    while (fields.size() > meta->header.size() && fields.back().empty()) fields.pop_back();
+    if (AllEmpty(fields)) continue;
     if (fields.size() != meta->header.size()) {
       return Fail(meta->LineFailure(line_no, "expected " + std::to_string(meta->header.size()) +
                                                  " fields, found " +
