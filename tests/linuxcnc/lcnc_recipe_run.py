@@ -22,6 +22,7 @@ import time
 
 import hal
 import linuxcnc
+import rtapi_priority
 
 PROBE = hal.component("volcomp-recipe-probe")
 PROBE.ready()
@@ -139,31 +140,6 @@ def reload_and_wait(expect_error):
             "reload_count": g("volcomp.0.reload-count"), "active": g("volcomp.0.active")}
 
 
-def raise_rtapi_priority():
-    """SCHED_FIFO 60 for rtapi_app's HAL threads, as on a real-time kernel (as lcnc_run.py does),
-    so that volcomp.0.update.tmax measures the function, not the time other processes of this
-    shared machine held the CPU; the component's loader thread stays an ordinary thread."""
-    if os.geteuid() != 0:
-        return 0
-    raised = 0
-    for pid in os.listdir("/proc"):
-        if not pid.isdigit():
-            continue
-        try:
-            with open("/proc/%s/comm" % pid) as f:
-                if f.read().strip() != "rtapi_app":
-                    continue
-            for tid in os.listdir("/proc/%s/task" % pid):
-                with open("/proc/%s/task/%s/comm" % (pid, tid)) as f:
-                    if f.read().strip() == "volcomp-loader":
-                        continue
-                os.sched_setscheduler(int(tid), os.SCHED_FIFO, os.sched_param(60))
-                raised += 1
-        except (OSError, ValueError):
-            continue
-    return raised
-
-
 def reload_checks(summary):
     table = os.environ["VOLCOMP_RECIPE_TABLE"]
     good = table + ".good"
@@ -221,7 +197,9 @@ def main():
             rows.append([cmd] + settled(0.2, 10))
             log("%s: %.1f s" % (cmd, time.time() - t0))
         if os.environ.get("VOLCOMP_RECIPE_RELOAD") == "1":
-            summary["fifo_threads"] = raise_rtapi_priority()
+            # SCHED_FIFO 60 for the HAL threads, as on a real-time kernel, so that tmax measures the
+            # function, not the time other processes of this shared machine held the CPU.
+            summary["fifo_threads"] = len(rtapi_priority.raise_rtapi_priority(60))
             reload_checks(summary)
         summary["ok"] = True
     except Exception as e:  # reported in the summary; the test fails on it

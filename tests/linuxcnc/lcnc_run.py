@@ -18,6 +18,7 @@ import time
 
 import hal
 import linuxcnc
+import rtapi_priority
 
 JOINTS = 3
 PROBE = hal.component("volcomp-probe")
@@ -204,28 +205,12 @@ def run_program(path, rows):
 
 
 def raise_rtapi_priority():
-    """SCHED_FIFO for rtapi_app's threads, as LinuxCNC has on a real-time kernel: on this
-    standard kernel its threads run SCHED_OTHER, and other load on the machine would delay the
-    20 us base thread (its work is not lost, only late: stepgen falls behind the servo thread)."""
+    """SCHED_FIFO for rtapi_app's threads (VOLCOMP_LCNC_FIFO_PRIORITY): the 20 us base thread must
+    not be delayed by other load (stepgen would fall behind the servo thread)."""
     prio = os.environ.get("VOLCOMP_LCNC_FIFO_PRIORITY")
     if not prio or os.geteuid() != 0:
         return []
-    raised = []
-    for pid in os.listdir("/proc"):
-        if not pid.isdigit():
-            continue
-        try:
-            with open("/proc/%s/comm" % pid) as f:
-                if f.read().strip() != "rtapi_app":
-                    continue
-            for tid in os.listdir("/proc/%s/task" % pid):
-                with open("/proc/%s/task/%s/comm" % (pid, tid)) as f:
-                    if f.read().strip() == "volcomp-loader":
-                        continue  # the native component's file loader: not a HAL thread
-                os.sched_setscheduler(int(tid), os.SCHED_FIFO, os.sched_param(int(prio)))
-                raised.append(int(tid))
-        except (OSError, ValueError):
-            continue
+    raised = rtapi_priority.raise_rtapi_priority(int(prio))
     # This poller too (below rtapi_app): it must see every dwell of the programs.
     os.sched_setscheduler(0, os.SCHED_FIFO, os.sched_param(max(1, int(prio) - 30)))
     log("SCHED_FIFO %s for rtapi_app threads %s" % (prio, raised))

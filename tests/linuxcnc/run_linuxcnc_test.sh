@@ -121,7 +121,7 @@ run_lcnc() {
   # Real-time threads already running (they compete with the base thread): listed in the log.
   ps -eLo pid,tid,cls,rtprio,pcpu,comm | awk 'NR == 1 || ($3 == "FF" || $3 == "RR") && $4 < 99' \
     >"$dir/rt_threads_before.txt" || true
-  cp "$here/lcnc_run.py" "$dir/"
+  cp "$here/lcnc_run.py" "$here/rtapi_priority.py" "$dir/"
   sed -i "s|^DISPLAY = .*|DISPLAY = $dir/lcnc_run.py|" "$dir/volcomp-sim.ini"
   mkdir -p "$dir/fifo"
   chown nobody "$dir/fifo"

@@ -1,0 +1,29 @@
+"""SCHED_FIFO for rtapi_app's HAL threads, as LinuxCNC has on a real-time kernel (shared by the
+LinuxCNC test's display programs lcnc_run.py and lcnc_recipe_run.py)."""
+import os
+
+
+def raise_rtapi_priority(priority):
+    """Gives every thread of every rtapi_app SCHED_FIFO `priority` (root only), except the native
+    component's table loader (`volcomp-loader`), which must stay an ordinary thread. On this
+    standard kernel the HAL threads run SCHED_OTHER: other load on the machine would delay them
+    (their work is not lost, only late). Returns the thread ids raised."""
+    if os.geteuid() != 0:
+        return []
+    raised = []
+    for pid in os.listdir("/proc"):
+        if not pid.isdigit():
+            continue
+        try:
+            with open("/proc/%s/comm" % pid) as f:
+                if f.read().strip() != "rtapi_app":
+                    continue
+            for tid in os.listdir("/proc/%s/task" % pid):
+                with open("/proc/%s/task/%s/comm" % (pid, tid)) as f:
+                    if f.read().strip() == "volcomp-loader":
+                        continue
+                os.sched_setscheduler(int(tid), os.SCHED_FIFO, os.sched_param(priority))
+                raised.append(int(tid))
+        except (OSError, ValueError):
+            continue
+    return raised
