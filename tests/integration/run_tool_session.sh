@@ -3,7 +3,8 @@
 # format), refusal of activation before referencing, reference, activate, verify --readback,
 # status --json, skip of an upload that is already active, and a connection cut in the middle of
 # an upload (node stopped), after which a restarted node still has the old table and a new
-# upload completes.
+# upload completes; a node restarted in the middle of an upload on the same port, which the
+# upload's retry waits for (heartbeat or boot-up) before it starts again.
 # usage: run_tool_session.sh VOLCOMP_SIM VOLCOMP SOURCE_DIR
 set -euo pipefail
 sim=$1 volcomp=$2 src=$3
@@ -50,7 +51,22 @@ cat "$work/cut.txt"
 grep -q "upload failed" "$work/cut.txt" || fail "no clear failure message"
 start_node
 "$volcomp" verify "$work/a.vct" --can "$can" || fail "old table not active after the cut"
-"$volcomp" upload "$work/b.vct" --can "$can" --quiet
+
+echo "== the node restarts in the middle of an upload: the retry waits for it"
+"$volcomp" upload "$work/b.vct" --can "$can" --retries 3 --quiet >"$work/restart.txt" 2>&1 &
+upload_pid=$!
+sleep 0.4
+kill "$node_pid"; wait "$node_pid" || true
+sleep 1.5
+start_node "${can##*:}"  # the same port: the tool reconnects to what it was given
+wait "$upload_pid" || { cat "$work/restart.txt"; fail "the upload did not survive a restart"; }
+cat "$work/restart.txt"
+grep -q "^waiting up to 1 s for node 16 (heartbeat or boot-up)" "$work/restart.txt" ||
+  fail "no wait before the retry"
+grep -q "^node 16 is there (heartbeat: " "$work/restart.txt" || fail "the node's return not seen"
+grep -q "staged and verified" "$work/restart.txt" || fail "not staged after the restart"
+"$volcomp" verify "$work/a.vct" --can "$can" || fail "old table not active after the restart"
+"$volcomp" upload "$work/b.vct" --can "$can" --quiet --force
 "$volcomp" reference --can "$can"
 sleep 0.3
 "$volcomp" activate --can "$can"

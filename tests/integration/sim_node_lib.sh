@@ -2,10 +2,11 @@
 # $work/flash, and a 24x24x24 sample grid large enough for an upload to take a few seconds.
 # Needs: $sim (volcomp-sim), $work (scratch directory), fail().
 
-# Starts the node; sets $node_pid and $can (the --can spec).
+# start_node [PORT]: starts the node on PORT (default: any free port); sets $node_pid and $can
+# (the --can spec).
 start_node() {
   rm -f "$work/ready"
-  "$sim" node --slcan-tcp 0 --flash-dir "$work/flash" --ready-file "$work/ready" --duration 300 \
+  "$sim" node --slcan-tcp "${1:-0}" --flash-dir "$work/flash" --ready-file "$work/ready" --duration 300 \
     >>"$work/node.log" 2>&1 &
   node_pid=$!
   for _ in $(seq 100); do [[ -s $work/ready ]] && break; sleep 0.05; done

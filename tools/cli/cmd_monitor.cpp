@@ -46,9 +46,10 @@ void CsvHeader(const std::vector<AxisInfo>& axes, std::ostream& out) {
   out << "time_s,state";
   for (const AxisInfo& x : axes) {
     const std::string n(1, x.name);
-    out << "," << n << "_commanded_" << x.position_unit() << "," << n << "_correction_"
-        << x.correction_unit() << "," << n << "_correction_steps," << n << "_at_max_correction,"
-        << n << "_clamped," << n << "_rate_limited";
+    out << "," << n << "_commanded_" << x.position_unit() << "," << n << "_machine_"
+        << x.position_unit() << "," << n << "_correction_" << x.correction_unit() << "," << n
+        << "_correction_steps," << n << "_at_max_correction," << n << "_clamped," << n
+        << "_rate_limited";
   }
   out << ",output_overruns,refused_actions,sdo_aborts\n" << std::flush;
 }
@@ -60,11 +61,16 @@ void CsvRow(double t, const Snapshot& n, const std::vector<AxisInfo>& axes, std:
   char cell[128];
   std::snprintf(cell, sizeof cell, "%.3f,%s", t, state.c_str());
   out << cell;
+  const bool referenced = canopen::DecodeDeviceState(static_cast<uint16_t>(n.state)).referenced;
   for (uint32_t a = 0; a < axes.size(); ++a) {
     const double steps = n.correction_q8[a] / 256.0;
-    std::snprintf(cell, sizeof cell, ",%.6f,%.4f,%.4f,%d,%d,%d",
-                  n.commanded[a] * axes[a].units_per_step(), steps * axes[a].correction_per_step(),
-                  steps, AtMaxCorrection(n, axes[a], a) ? 1 : 0,
+    char machine[32] = "";  // empty until the axes are referenced
+    if (referenced)
+      std::snprintf(machine, sizeof machine, "%.6f", n.machine[a] * axes[a].units_per_step());
+    std::snprintf(cell, sizeof cell, ",%.6f,%s,%.4f,%.4f,%d,%d,%d",
+                  n.commanded[a] * axes[a].units_per_step(), machine,
+                  steps * axes[a].correction_per_step(), steps,
+                  AtMaxCorrection(n, axes[a], a) ? 1 : 0,
                   (n.limit_flags[a] & canopen::kLimitClamped) != 0 ? 1 : 0,
                   (n.limit_flags[a] & canopen::kLimitRateLimited) != 0 ? 1 : 0);
     out << cell;
@@ -85,12 +91,23 @@ void JsonLine(double t, const Snapshot& n, const std::vector<AxisInfo>& axes, st
   tools::WriteJson(line, out, /*compact=*/true);
 }
 
-void TextLine(const Snapshot& n, std::ostream& out) {
-  char cell[64];
+// Per axis: its name, the machine position once referenced (else the input), the correction in
+// µm (arcsec) and steps, and the limit in force.
+void TextLine(const Snapshot& n, const std::vector<AxisInfo>& axes, std::ostream& out) {
+  char cell[160];
+  const bool referenced = canopen::DecodeDeviceState(static_cast<uint16_t>(n.state)).referenced;
   out << "state " << StateText(n.state) << " |";
-  for (uint32_t a = 0; a < n.axes && a < 6; ++a) {
-    std::snprintf(cell, sizeof cell, " a%u %d%+.2f", a + 1, n.commanded[a],
-                  n.correction_q8[a] / 256.0);
+  for (uint32_t a = 0; a < axes.size(); ++a) {
+    const AxisInfo& x = axes[a];
+    const double steps = n.correction_q8[a] / 256.0;
+    const char* limit = (n.limit_flags[a] & canopen::kLimitClamped) != 0       ? " CLAMPED"
+                        : (n.limit_flags[a] & canopen::kLimitRateLimited) != 0 ? " RATE LIMITED"
+                                                                               : "";
+    std::snprintf(cell, sizeof cell, " %c %s %.4f %s, correction %+.2f %s (%+.2f steps)%s |",
+                  x.name, referenced ? "machine" : "input",
+                  (referenced ? n.machine[a] : n.commanded[a]) * x.units_per_step(),
+                  x.position_unit(), steps * x.correction_per_step(), x.correction_unit(), steps,
+                  limit);
     out << cell;
   }
   out << " | rx " << n.counters[kCanRxCounter] << " tx " << n.counters[kCanTxCounter] << " aborts "
@@ -119,13 +136,10 @@ Expected<Output> RunMonitor(Args& args, Context& ctx) {
   const auto start = Clock::now();
   // With --csv or --json, stdout carries only the data; heartbeat and EMCY lines go to stderr.
   std::ostream& events = req.format == Format::kText ? ctx.out : ctx.err;
-  std::vector<AxisInfo> axes;
-  if (req.format != Format::kText) {
-    VOLCOMP_TRY_ASSIGN(
-        const uint32_t count,
-        ReadNumber(s, ObjectId::kAxisCountConfig, canopen::Entry(ObjectId::kAxisCountConfig).name));
-    VOLCOMP_TRY_ASSIGN(axes, ReadAxes(s, count));
-  }
+  VOLCOMP_TRY_ASSIGN(
+      const uint32_t count,
+      ReadNumber(s, ObjectId::kAxisCountConfig, canopen::Entry(ObjectId::kAxisCountConfig).name));
+  VOLCOMP_TRY_ASSIGN(const std::vector<AxisInfo> axes, ReadAxes(s, count));
   if (req.format == Format::kCsv) CsvHeader(axes, ctx.out);
   const auto deadline = start + std::chrono::duration_cast<Clock::duration>(
                                     std::chrono::duration<double>(req.duration_s));
@@ -149,7 +163,7 @@ Expected<Output> RunMonitor(Args& args, Context& ctx) {
         JsonLine(t, n, axes, ctx.out);
         break;
       case Format::kText:
-        TextLine(n, ctx.out);
+        TextLine(n, axes, ctx.out);
         break;
     }
     ctx.out << std::flush;

@@ -6,10 +6,12 @@
 // canopen_client/table_staging.hpp (unlock, clear the staging bank, block transfer into 0x2100,
 // verify on the board, check the staged CRC-32), and optionally activated (0x2101 = 1). A transfer
 // that broke (a protocol abort) or a link that failed is retried from the start (--retries),
-// which is always safe: staging never touches the active table. The messages and the progress
-// stream as the upload goes (on stderr with --json, whose object comes at the end).
+// which is always safe: staging never touches the active table; each retry first waits for the
+// board to show it is there (a heartbeat or its boot-up), at most 1, 2, 4, 8 s. The messages and
+// the progress stream as the upload goes (on stderr with --json, whose object comes at the end).
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <iostream>
@@ -194,6 +196,43 @@ Expected<Written, AttemptFailure> Activate(CanSession& s,
   return Written{"active", 0};
 }
 
+// How long a retry waits for the board at most: 1 s, doubled per attempt, 8 s at the most.
+std::chrono::milliseconds RetryWait(long long attempt) {
+  return std::chrono::milliseconds(1000LL << std::min<long long>(attempt, 3));
+}
+
+// Before a retry: waits until the node shows it is there (a heartbeat or its boot-up: a board
+// that reset or lost power comes back with one), at most `bound`, reconnecting while the link is
+// down; says what it saw. A node whose heartbeat is off (0x1017 = 0) is silent: then the retry
+// comes after `bound`.
+void WaitForBoard(const CanConnection& can, std::chrono::milliseconds bound, std::ostream& err) {
+  using Clock = std::chrono::steady_clock;
+  const auto end = Clock::now() + bound;
+  const double bound_s = std::chrono::duration<double>(bound).count();
+  char line[160];
+  std::snprintf(line, sizeof line, "waiting up to %.0f s for node %u (heartbeat or boot-up)\n",
+                bound_s, unsigned{can.node});
+  err << line;
+  for (auto now = Clock::now(); now < end; now = Clock::now()) {
+    const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(end - now);
+    Expected<std::unique_ptr<CanSession>> session = OpenSession(can);
+    Expected<std::optional<uint8_t>> seen =
+        session.ok() ? (*session)->WaitForHeartbeat(left) : Fail(session.error());
+    if (seen.ok() && seen->has_value()) {
+      err << "node " << unsigned{can.node}
+          << " is there (heartbeat: " << canopen_client::NmtStateName(**seen) << ")\n";
+      return;
+    }
+    if (!seen.ok()) {  // no link yet: try again shortly
+      std::this_thread::sleep_for(std::min(left, std::chrono::milliseconds(100)));
+    }
+  }
+  std::snprintf(line, sizeof line,
+                "nothing from node %u within %.0f s (its heartbeat may be off: 0x1017 = 0)\n",
+                unsigned{can.node}, bound_s);
+  err << line;
+}
+
 // One complete attempt over a fresh session.
 Expected<Written, AttemptFailure> UploadOnce(const UploadRequest& req,
                                              const image::LoadedImage& img,
@@ -276,9 +315,9 @@ Expected<Output> RunUpload(Args& args, Context& ctx) {
       return Fail(link ? Error::kCommunication : f.failure.code,
                   "upload failed: " + f.failure.message);
     }
-    ctx.err << "upload attempt " << attempt + 1 << " failed: " << f.failure.message << "\n"
-            << (link ? "reconnecting and retrying...\n" : "retrying from the start...\n");
-    if (link) std::this_thread::sleep_for(std::chrono::milliseconds(500));
+    ctx.err << "upload attempt " << attempt + 1 << " failed: " << f.failure.message << "\n";
+    WaitForBoard(req.can, RetryWait(attempt), ctx.err);
+    ctx.err << (link ? "reconnecting and retrying...\n" : "retrying from the start...\n");
   }
 }
 

@@ -90,6 +90,16 @@ Expected<std::optional<uint8_t>> CanSession::WaitForBootUp(uint8_t expected,
   return seen ? std::optional<uint8_t>(expected) : other;
 }
 
+Expected<std::optional<uint8_t>> CanSession::WaitForHeartbeat(std::chrono::milliseconds timeout) {
+  std::optional<uint8_t> state;
+  VOLCOMP_TRY(ReceiveUntil(timeout, [&](const CanFrame& f) {
+    if (f.dlc != 1 || f.id != canopen::kHeartbeatCobBase + node()) return false;
+    state = f.data[0];
+    return true;
+  }));
+  return state;
+}
+
 Expected<std::optional<uint8_t>> CanSession::WaitForState(uint8_t state,
                                                           std::chrono::milliseconds timeout) {
   std::optional<uint8_t> last;

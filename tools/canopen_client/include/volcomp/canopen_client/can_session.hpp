@@ -46,6 +46,9 @@ class CanSession : public NodeObjects {
   /// whose boot-up was seen meanwhile (a reset node comes back with its stored node-ID), else none.
   Expected<std::optional<uint8_t>> WaitForBootUp(uint8_t expected,
                                                  std::chrono::milliseconds timeout);
+  /// Receives for up to `timeout` until this node sends a heartbeat or its boot-up message (state
+  /// 0); returns that state, none when nothing came from it.
+  Expected<std::optional<uint8_t>> WaitForHeartbeat(std::chrono::milliseconds timeout);
   /// Receives for up to `timeout` until this node's heartbeat reports `state`; returns the state of
   /// the last heartbeat received meanwhile (none when no heartbeat came).
   Expected<std::optional<uint8_t>> WaitForState(uint8_t state, std::chrono::milliseconds timeout);
