@@ -74,4 +74,17 @@ sleep 0.3
 "$volcomp" deactivate --can "$can"
 "$volcomp" status --can "$can" | tee "$work/out.txt"
 grep -q "active table: none" "$work/out.txt" || fail "deactivate"
+
+echo "== an upload says which staged table it replaces"
+"$volcomp" upload "$work/a.vct" --can "$can" --quiet >/dev/null
+"$volcomp" upload "$work/b.vct" --can "$can" --quiet --json >"$work/replace.json" 2>"$work/replace.txt"
+cat "$work/replace.txt"
+a_crc=$("$volcomp" inspect "$work/a.vct" --json | python3 -c 'import json,sys; print(json.load(sys.stdin)["crc32"])')
+grep -q "^replacing the staged table of node 16 (id 1, CRC-32 $a_crc, verified, not active)" \
+  "$work/replace.txt" || fail "no word of the staged table replaced"
+python3 - "$work/replace.json" "$a_crc" <<'PY' || fail "upload --json: replaced_staged"
+import json, sys
+r = json.load(open(sys.argv[1]))["replaced_staged"]
+assert r == {"table_id": 1, "crc32": sys.argv[2], "state": "verified"}, r
+PY
 echo "tool session: OK"

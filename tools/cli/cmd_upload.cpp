@@ -45,6 +45,7 @@ struct UploadRequest {
 struct Written {
   const char* result = "staged";  // "staged", "active" or "already active"
   double transfer_s = 0;          // 0 when nothing was transferred
+  JsonValue replaced;             // the staged table this upload replaced (null: none)
 };
 
 // Why an attempt failed, and whether another one can succeed.
@@ -156,6 +157,29 @@ class ProgressBar {
 
 // Stages the image: unlock, clear, block transfer into 0x2100, verify. Returns the seconds the
 // transfer took.
+// The staged table a new upload is about to replace (complete or verified, not active yet), said
+// before it goes; null when nothing is staged.
+Expected<JsonValue, AttemptFailure> StagedToReplace(CanSession& s, std::ostream& msg) {
+  VOLCOMP_TRY_ASSIGN(const uint32_t status,
+                     FromSdo(s.Read(ObjectId::kTableStatus), "reading the table status (0x2102)"));
+  const canopen::StagedState staged = canopen::DecodeTableStatus(status).staged;
+  if (staged != canopen::StagedState::kVerified && staged != canopen::StagedState::kComplete) {
+    return JsonValue();
+  }
+  VOLCOMP_TRY_ASSIGN(const uint32_t id, FromSdo(s.Read(ObjectId::kStagedTableId),
+                                                "reading the staged table id (0x2107)"));
+  VOLCOMP_TRY_ASSIGN(const uint32_t crc, FromSdo(s.Read(ObjectId::kStagedTableCrc),
+                                                 "reading the staged CRC-32 (0x2105)"));
+  const char* state = canopen::kStagedStateNames[static_cast<int>(staged)];
+  msg << "replacing the staged table of node " << unsigned{s.node()} << " (id " << id << ", CRC-32 "
+      << Hex32(crc) << ", " << state << ", not active)\n";
+  JsonValue r = JsonValue::Object();
+  r.Set("table_id", uint64_t{id});
+  r.Set("crc32", Hex32(crc));
+  r.Set("state", state);
+  return r;
+}
+
 Expected<double, AttemptFailure> WriteTable(CanSession& s,
                                             const image::LoadedImage& img,
                                             bool quiet,
@@ -193,7 +217,7 @@ Expected<Written, AttemptFailure> Activate(CanSession& s,
   }
   msg << "activated: node " << unsigned{req.can.node} << " compensates with table "
       << img.view().table_id << " (CRC-32 " << Hex32(crc) << ")\n";
-  return Written{"active", 0};
+  return Written{"active", 0, {}};
 }
 
 // How long a retry waits for the board at most: 1 s, doubled per attempt, 8 s at the most.
@@ -247,7 +271,7 @@ Expected<Written, AttemptFailure> UploadOnce(const UploadRequest& req,
   if (active == crc && !req.force) {
     msg << "node " << unsigned{req.can.node} << " already has this table active (CRC-32 "
         << Hex32(crc) << "): nothing to do\n";
-    return Written{"already active", 0};
+    return Written{"already active", 0, {}};
   }
   VOLCOMP_TRY_ASSIGN(const uint32_t capacity,
                      FromSdo(s.Read(ObjectId::kTableBankSize), "reading the bank size (0x2108)"));
@@ -257,11 +281,15 @@ Expected<Written, AttemptFailure> UploadOnce(const UploadRequest& req,
                                              " bytes does not fit the board's table bank of " +
                                              std::to_string(capacity) + " bytes"});
   }
+  VOLCOMP_TRY_ASSIGN(JsonValue replaced, StagedToReplace(s, msg));
   VOLCOMP_TRY_ASSIGN(const double secs, WriteTable(s, img, req.quiet, msg));
   msg << "staged and verified on node " << unsigned{req.can.node} << "\n";
-  if (!req.activate) return Written{"staged", secs};
-  VOLCOMP_TRY_ASSIGN(Written w, Activate(s, req, img, msg));
+  Written w{"staged", secs, {}};
+  if (req.activate) {
+    VOLCOMP_TRY_ASSIGN(w, Activate(s, req, img, msg));
+  }
   w.transfer_s = secs;
+  w.replaced = std::move(replaced);
   return w;
 }
 
@@ -291,6 +319,7 @@ JsonValue UploadData(const UploadRequest& req, const image::LoadedImage& img, co
   image.Set("table_id", uint64_t{img.view().table_id});
   image.Set("crc32", Hex32(img.view().crc32));
   d.Set("result", w.result);
+  if (!w.replaced.is_null()) d["replaced_staged"] = w.replaced;
   if (w.transfer_s > 0) {
     d.Set("transfer_s", w.transfer_s);
     d.Set("rate_bytes_s", static_cast<double>(img.size()) / w.transfer_s);
