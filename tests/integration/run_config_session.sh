@@ -3,8 +3,9 @@
 # configuration saved, edited and applied (written, stored, reset node, read back), saved again
 # and applied to a fresh board, which then saves the identical file; the values checked with
 # `sdo read`; files with an unknown key or an out-of-range value refused with their line before
-# anything is sent (the frame log stays empty); the NMT commands; status and monitor --csv in
-# machine units.
+# anything is sent (the frame log stays empty); a new units per step refused while a table is
+# active (the home position in mm before and after), applied with --force; the NMT commands;
+# status and monitor in machine units.
 # usage: run_config_session.sh VOLCOMP_SIM VOLCOMP
 set -euo pipefail
 sim=$(realpath "$1") volcomp=$(realpath "$2")
@@ -74,6 +75,38 @@ grep -q "range.ini:$line: max_correction = 70000: above the highest value 65536"
 [[ ! -s range.log ]] || fail "frames were sent for a refused file"
 "$volcomp" config save third.ini --can "$can"
 cmp second.ini third.ini || fail "the board changed after refused files"
+
+echo "== a new units per step: the home position in mm, refused while a table is active"
+printf 'x_mm,y_mm,z_mm,dx_um,dy_um,dz_um\n' >grid.csv
+for x in 0 100; do for y in 0 100; do for z in 0 100; do
+  printf '%s,%s,%s,5,-3,2\n' $x $y $z >>grid.csv
+done; done; done
+"$volcomp" build grid --csv grid.csv -o t.vct --resolution-nm X=1000,Y=1000,Z=1000 --table-id 7 \
+  >/dev/null
+"$volcomp" reference --axes 1,2,3,4 --can "$can" >/dev/null
+"$volcomp" upload t.vct --can "$can" --activate --quiet >/dev/null || fail "upload --activate"
+# X: 0.001 -> 0.0025 mm per step with home_position -5000 steps (-5 mm -> -12.5 mm).
+sed '0,/^units_per_step = 0.001 /s//units_per_step = 0.0025 /' third.ini >coarse.ini
+set +e
+"$volcomp" config apply coarse.ini --can "$can" --log coarse.log >out.txt 2>err.txt; code=$?
+set -e
+[[ $code == 1 ]] || { cat out.txt err.txt; fail "resolution change with a table active: exit $code"; }
+grep -q "while table id 7 (CRC-32 0x[0-9A-F]*) is active" err.txt || { cat err.txt; fail "no table named"; }
+grep -q "axis 1 X: units per step 0.001 -> 0.0025 mm; home position -5000 steps = -5.0000 mm -> -5000 steps = -12.5000 mm" \
+  err.txt || { cat err.txt; fail "no home position in mm"; }
+grep -q -- "--force; nothing written" err.txt || fail "no --force hint"
+! grep -qE ' 610#2[0-9A-F]' coarse.log || fail "frames written for a refused change"
+"$volcomp" config apply coarse.ini --can "$can" --force --json >coarse.json 2>/dev/null ||
+  fail "apply --force"
+python3 - <<'PY' || fail "apply --force: resolution_changes"
+import json
+r = json.load(open("coarse.json"))
+x = r["resolution_changes"][0]
+assert (x["name"], x["units_per_step_before"], x["units_per_step"]) == ("X", 0.001, 0.0025), x
+assert abs(x["home_position_before"] + 5) < 1e-9 and abs(x["home_position"] + 12.5) < 1e-9, x
+assert r["outcome"] == "in force", r["outcome"]
+PY
+"$volcomp" status --can "$can" | grep -q "active table: none" || fail "the table was not dropped"
 
 echo "== nmt"
 "$volcomp" nmt stop --can "$can" | grep -q "heartbeat reports stopped" || fail "nmt stop"

@@ -2,21 +2,28 @@
 // first (the settings file's reader and the firmware's rules: refused with its line, nothing sent);
 // then the objects that differ are written and stored (1010:1), the node reset (NMT 0x81), and
 // every object read back and compared. A refused write or store undoes the edits written before it.
+// A new units per step is said with what it does to the home position in mm, and refused while a
+// table is active unless --force (the board drops that table at the reset: it no longer matches).
 // The changes and the store stream as they happen; the verdict is the command's result.
+#include <algorithm>
 #include <chrono>
+#include <cstdio>
 #include <ostream>
 
 #include "can_options.hpp"
 #include "commands.hpp"
 #include "config_view.hpp"
+#include "sdo_failure.hpp"
 #include "volcomp/canopen/board_protocol.hpp"
 #include "volcomp/canopen/setting_objects.hpp"
 #include "volcomp/canopen_client/board_settings_io.hpp"
 #include "volcomp/hosted/settings_ini.hpp"
+#include "volcomp/tools/hex.hpp"
 
 namespace volcomp::cli {
 namespace {
 
+using canopen::ObjectId;
 using canopen_client::CanSession;
 using canopen_client::Difference;
 
@@ -26,6 +33,46 @@ JsonValue Descriptions(const std::vector<Difference>& list, const BoardSettings&
   JsonValue a = JsonValue::Array();
   for (const Difference& d : list) a.Push(canopen_client::DescribeDifference(d, names));
   return a;
+}
+
+// The axes whose units per step `wanted` changes, each with its home position before and after
+// (steps and machine units: the same steps are another place at another resolution).
+JsonValue ResolutionChanges(const BoardSettings& before, const BoardSettings& wanted) {
+  JsonValue list = JsonValue::Array();
+  const uint8_t n = std::min(before.board.axis_count, wanted.board.axis_count);
+  for (uint8_t i = 0; i < n; ++i) {
+    const AxisConfig& a = before.board.axis[i];
+    const AxisConfig& b = wanted.board.axis[i];
+    if (a.resolution_e9 == b.resolution_e9) continue;
+    const char* unit = b.kind == table::AxisKind::kRotary ? "deg" : "mm";
+    JsonValue x = JsonValue::Object();
+    x.Set("axis", unsigned{i} + 1u);
+    x.Set("name", std::string(1, b.name));
+    x.Set("unit", unit);
+    x.Set("units_per_step_before", a.resolution_e9 * 1e-9);
+    x.Set("units_per_step", b.resolution_e9 * 1e-9);
+    x.Set("home_position_steps_before", int64_t{a.home_position_steps});
+    x.Set("home_position_steps", int64_t{b.home_position_steps});
+    x.Set("home_position_before", a.home_position_steps * (a.resolution_e9 * 1e-9));
+    x.Set("home_position", b.home_position_steps * (b.resolution_e9 * 1e-9));
+    list.Push(std::move(x));
+  }
+  return list;
+}
+
+std::string ResolutionChangeText(const JsonValue& x) {
+  char line[320];
+  const std::string& unit = x.get("unit")->string;
+  std::snprintf(line, sizeof line,
+                "axis %d %s: units per step %.9g -> %.9g %s; home position %lld steps = %.4f %s "
+                "-> %lld steps = %.4f %s",
+                static_cast<int>(x.get("axis")->integer), x.get("name")->string.c_str(),
+                x.get("units_per_step_before")->number, x.get("units_per_step")->number,
+                unit.c_str(), static_cast<long long>(x.get("home_position_steps_before")->integer),
+                x.get("home_position_before")->number, unit.c_str(),
+                static_cast<long long>(x.get("home_position_steps")->integer),
+                x.get("home_position")->number, unit.c_str());
+  return line;
 }
 
 // Writes and stores `changes`; a refusal part-way undoes the edits written so far.
@@ -118,6 +165,9 @@ void ApplyText(const JsonValue& d, std::ostream& out) {
 Expected<Output> RunConfigApply(Args& args, Context& ctx) {
   VOLCOMP_TRY_ASSIGN(const CanConnection can, ParseCanOptions(args));
   const bool no_reset = args.Flag("--no-reset");
+  const bool force = args.Flag("--force");
+  args.Flag("--json");                               // the command layer prints the data as JSON
+  std::ostream& msg = ctx.json ? ctx.err : ctx.out;  // with --json stdout carries the object only
   const auto files = args.Positionals();
   VOLCOMP_TRY(args.Finish());
   if (files.size() != 1) return UsageFailure("expected one FILE");
@@ -138,11 +188,32 @@ Expected<Output> RunConfigApply(Args& args, Context& ctx) {
     d.Set("outcome", "already in force");
     return Output{std::move(d), ApplyText, {}};
   }
-  for (const JsonValue& x : d.get("changes")->array) ctx.out << "  " << x.string << "\n";
+  JsonValue resolution = ResolutionChanges(before.settings, wanted);
+  if (!resolution.array.empty()) {
+    VOLCOMP_TRY_ASSIGN(const uint32_t crc,
+                       ReadNumber(s, ObjectId::kActiveTableCrc, "the active CRC-32 (0x2104)"));
+    VOLCOMP_TRY_ASSIGN(const uint32_t id,
+                       ReadNumber(s, ObjectId::kActiveTableId, "the active table id (0x2103)"));
+    std::string what;
+    for (const JsonValue& x : resolution.array) what += "\n  " + ResolutionChangeText(x);
+    if (crc != 0 && !force) {
+      return Fail(Error::kInvalidArgument,
+                  "the file changes the units per step while table id " + std::to_string(id) +
+                      " (CRC-32 " + tools::Hex32(crc) +
+                      ") is active: the board drops it at the reset (it was built for the old "
+                      "resolution) and the same home steps are another place:" +
+                      what +
+                      "\nrebuild the table for the new resolution and convert home_position_steps, "
+                      "or --force; nothing written");
+    }
+    msg << "units per step changed"
+        << (crc != 0 ? " (the active table is dropped at the reset)" : "") << ":" << what << "\n";
+  }
+  d["resolution_changes"] = std::move(resolution);
+  for (const JsonValue& x : d.get("changes")->array) msg << "  " << x.string << "\n";
   VOLCOMP_TRY_ASSIGN(const size_t written, WriteAndStore(s, changes));
   d.Set("written", uint64_t{written});
-  ctx.out << "node " << unsigned{can.node} << ": " << written
-          << " objects written, stored (1010:1)\n";
+  msg << "node " << unsigned{can.node} << ": " << written << " objects written, stored (1010:1)\n";
   if (no_reset) {
     d.Set("outcome", "stored");
     return Output{std::move(d), ApplyText, {}};
@@ -168,7 +239,10 @@ const Command& ConfigApplyCommand() {
       "FILE",
       Join({CanOptions(),
             {{"--no-reset", nullptr, nullptr, nullptr, nullptr,
-              "store only: in force at the next NMT reset node or power-up"}}}),
+              "store only: in force at the next NMT reset node or power-up"},
+             {"--force", nullptr, nullptr, nullptr, nullptr,
+              "change the units per step although a table is active (it is dropped)"}},
+            JsonResultOption()}),
       RunConfigApply,
       "The file is checked first (unknown keys, values outside the objects' limits, the\n"
       "firmware's consistency rules: refused with its line, nothing written); then the objects\n"
