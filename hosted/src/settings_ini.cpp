@@ -78,6 +78,25 @@ IniExpected<int64_t> ReadValue(const IniDocument& doc,
   }
 }
 
+// `steps_per_unit` (steps per mm, or per degree): the resolution as the drive's datasheet and
+// most controllers give it, stored as units per step x 1e9 (0x2012), which must be exact.
+IniExpected<int64_t> ReadStepsPerUnit(const IniDocument& doc, const IniEntry& e) {
+  VOLCOMP_TRY_ASSIGN(const int64_t steps_e9, ReadDecimalE9(doc, e, 1, INT64_MAX));
+  constexpr int64_t kE18 = 1000000000000000000;
+  const int64_t per_step_e9 = kE18 / steps_e9;
+  if (per_step_e9 < 1 || per_step_e9 > 0xFFFFFFFF) {
+    return doc.FailKey(e, "a step of " + std::to_string(per_step_e9) +
+                              "e-9 units is outside 0x2012's range (1e-9 .. 4.29 units)");
+  }
+  if (kE18 % steps_e9 != 0) {
+    return doc.FailKey(e, "1 / " + e.value +
+                              " units per step is not exact to 1e-9 (0x2012 stores "
+                              "units per step x 1e9): give units_per_step = " +
+                              FormatDecimalE9(per_step_e9) + " (or a rounder step count)");
+  }
+  return per_step_e9;
+}
+
 // [board] axes: the axis names in board order.
 IniExpected<std::vector<char>> ReadAxisNames(const IniDocument& doc, const IniEntry& e) {
   std::vector<char> out;
@@ -152,6 +171,9 @@ std::string FormatSettingValue(const SettingKey& key, int64_t v) {
   }
 }
 
+// The resolution as steps per unit: read in place of units_per_step, never written.
+constexpr const char* kStepsPerUnitKey = "steps_per_unit";
+
 std::string ObjectAddress(const ObjectEntry& e) {
   char text[16];
   std::snprintf(text, sizeof text, "%04X:%u", e.index, e.sub);
@@ -216,11 +238,25 @@ IniOutcome ReadSettings(const IniDocument& doc, BoardSettings* s, const Settings
                         return IniOutcome::Ok();
                       }});
     }
+    const ObjectId resolution = AxisId(ObjectId::kAxisResolution1, a);
+    keys.push_back({kStepsPerUnitKey, [&doc, s, resolution](const IniEntry& e) -> IniOutcome {
+                      VOLCOMP_TRY_ASSIGN(const int64_t v, ReadStepsPerUnit(doc, e));
+                      Set(s, resolution, v);
+                      return IniOutcome::Ok();
+                    }});
     if (extras.axis) {
       const std::vector<IniKey> more = extras.axis(a);
       keys.insert(keys.end(), more.begin(), more.end());
     }
     VOLCOMP_TRY(ReadKeys(doc, sec, keys));
+    const IniEntry* per_step = sec->Find(SettingKeyOf(resolution)->key);
+    const IniEntry* per_unit = sec->Find(kStepsPerUnitKey);
+    if (per_step != nullptr && per_unit != nullptr) {
+      return doc.FailAt(std::max(per_step->line, per_unit->line),
+                        "give units_per_step (line " + std::to_string(per_step->line) +
+                            ") or steps_per_unit (line " + std::to_string(per_unit->line) +
+                            "), not both");
+    }
   }
   return IniOutcome::Ok();
 }
@@ -312,7 +348,15 @@ void WriteSettings(IniWriter& w, const BoardSettings& s, const SettingsIniWriteE
     for (const SettingKey& k : SettingKeys()) {
       if (!k.per_axis) continue;
       const ObjectId id = AxisId(k.id, a);
-      w.Key(k.key, FormatSettingValue(k, canopen::FindSetting(id)->get(s)), comment(id, k));
+      const int64_t v = canopen::FindSetting(id)->get(s);
+      std::string note = comment(id, k);
+      if (k.form == SettingForm::kUnitsPerStep && v > 0) {  // what the datasheet says
+        char steps[48];
+        std::snprintf(steps, sizeof steps, " (%.9g steps per %s)", 1e9 / static_cast<double>(v),
+                      s.board.axis[a].kind == table::AxisKind::kRotary ? "degree" : "mm");
+        note += steps;
+      }
+      w.Key(k.key, FormatSettingValue(k, v), note);
     }
     if (extras.axis) extras.axis(w, a);
   }

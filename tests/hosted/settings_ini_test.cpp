@@ -165,6 +165,30 @@ TEST(BoardIni, TheFirmwaresConsistencyRulesNameTheAxis) {
       << r;
 }
 
+// Steps per mm (per degree), as datasheets and controllers give the resolution: stored exactly as
+// units per step x 1e9, refused where that is not exact, never beside units_per_step.
+TEST(BoardIni, StepsPerUnitIsTheResolutionTheOtherWayRound) {
+  const std::string head = "[board]\naxes = X C\n[axis X]\n";
+  const BoardSettings s = ParseBoardIni(
+      head + "steps_per_unit = 400\n[axis C]\nkind = rotary\nsteps_per_unit = 1000.0\n", "m.ini");
+  EXPECT_EQ(s.board.axis[0].resolution_e9, 2500000u);  // 1 / 400 mm = 0.0025 mm
+  EXPECT_EQ(s.board.axis[1].resolution_e9, 1000000u);  // 0.001 degree
+  EXPECT_EQ(Refusal(head + "steps_per_unit = 3\n[axis C]\n"),
+            "m.ini:4: steps_per_unit: 1 / 3 units per step is not exact to 1e-9 (0x2012 stores "
+            "units per step x 1e9): give units_per_step = 0.333333333 (or a rounder step count)");
+  EXPECT_EQ(Refusal(head + "units_per_step = 0.0025\nsteps_per_unit = 400\n[axis C]\n"),
+            "m.ini:5: give units_per_step (line 4) or steps_per_unit (line 5), not both");
+  EXPECT_NE(Refusal(head + "steps_per_unit = 0\n[axis C]\n").find("m.ini:4: steps_per_unit"),
+            std::string::npos);
+  // The saved file keeps units_per_step and says the steps per unit beside it.
+  const std::string text = FormatSettingsIni(s, {});
+  EXPECT_NE(text.find("\nunits_per_step = 0.0025 "), std::string::npos) << text;
+  EXPECT_NE(text.find("mm per step (degrees on a rotary axis) (400 steps per mm)\n"),
+            std::string::npos)
+      << text;
+  EXPECT_NE(text.find("(1000 steps per degree)\n"), std::string::npos) << text;
+}
+
 TEST(BoardIni, TheWrittenFileReadsBackAsItself) {
   const BoardSettings s = ParseBoardIni(kMachine, "m.ini");
   const std::string text = FormatSettingsIni(s, {"header line"});
