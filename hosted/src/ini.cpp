@@ -34,6 +34,8 @@ std::string StripComment(const std::string& s) {
 
 // Numbers are read into int64_t; anything beyond this is "out of range" before any limit.
 constexpr int64_t kReadLimit = int64_t{1} << 40;
+// A decimal x 1e9 (up to 1e8 with 9 decimals: a steps-per-mm count); x 10 still fits int64.
+constexpr int64_t kDecimalReadLimit = 100000000000000000;
 
 }  // namespace
 
@@ -198,7 +200,7 @@ IniExpected<int64_t> ReadDecimalE9(
   for (char c : whole + frac + std::string(9 - frac.size(), '0')) {
     if (c < '0' || c > '9') return doc.FailKey(e, "expected a decimal, got '" + v + "'");
     x = x * 10 + (c - '0');
-    if (x > kReadLimit) return doc.FailKey(e, v + " is out of range");
+    if (x > kDecimalReadLimit) return doc.FailKey(e, v + " is out of range");
   }
   if (const std::string why = RangeViolation(x, low, high); !why.empty()) {
     return doc.FailAt(e.line, e.key + " = " + v + ": " + why + " (x 1e-9)" + of);

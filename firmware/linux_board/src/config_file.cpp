@@ -130,8 +130,8 @@ class ConfigParser {
       AxisConfig& ax = st.board.axis[a];
       const IniSection* s = doc_.Find("axis", std::string(1, ax.name));
       // A drive increment is this board's step: there is no sensible default.
-      if (s->Find("units_per_step") == nullptr) {
-        return doc_.FailAt(s->line, s->Title() + " needs units_per_step");
+      if (s->Find("units_per_step") == nullptr && s->Find("steps_per_unit") == nullptr) {
+        return doc_.FailAt(s->line, s->Title() + " needs units_per_step (or steps_per_unit)");
       }
       // No step output: the drive's rate only has to cover the input and the correction.
       const uint64_t needed = uint64_t{ax.max_input_rate_hz} + ax.max_correction_rate_steps_s;

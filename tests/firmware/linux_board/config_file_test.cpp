@@ -87,6 +87,16 @@ TEST(ConfigFileTest, MinimalFileGetsTheDefaults) {
   EXPECT_TRUE(c.flash_sync);
 }
 
+// The drive's increments per mm, as its datasheet says, in place of units_per_step.
+TEST(ConfigFileTest, StepsPerUnitStandsInForUnitsPerStep) {
+  const auto r = ParseConfig(
+      "[board]\naxes = X\n[axis X]\nsteps_per_unit = 2000\n[can]\ncontroller = a\n"
+      "[flash]\ntables = t\n",
+      "test.conf");
+  ASSERT_TRUE(r.ok()) << r.error().ToString();
+  EXPECT_EQ(r->settings.board.axis[0].resolution_e9, 500000u);  // 0.0005 mm
+}
+
 TEST(ConfigFileTest, FormatParsesBackToTheSameConfiguration) {
   const auto loaded_a = LoadConfigFile(SourceDir() + "/firmware/linux_board/volcomp-fw-linux.conf");
   ASSERT_TRUE(loaded_a.ok()) << loaded_a.error().ToString();
@@ -120,7 +130,7 @@ TEST(ConfigFileTest, MistakesAreNamedWithTheirLine) {
       {base + "[axis Y]\nunits_per_step = 0.001\n", "[axis Y] is not one of [board] axes"},
       {"[board]\naxes = X Q\n", "axes: 'Q' is not an axis name"},
       {"[board]\naxes = X X\n", "axes: X given twice"},
-      {"[board]\naxes = X\n[axis X]\nkind = linear\n", "needs units_per_step"},
+      {"[board]\naxes = X\n[axis X]\nkind = linear\n", "needs units_per_step (or steps_per_unit)"},
       {"[board]\naxes = X\n[axis X]\nunits_per_step = 0.0000000001\n", "at most 9 decimals"},
       {"[board]\naxes = X\n[axis X]\nunits_per_step = 0\n",
        "units_per_step = 0: below the lowest value 1"},
