@@ -207,9 +207,9 @@ std::string AxisChart(const TableMap& map, const MapAxisTable& t) {
   c.x_label = std::string(1, a.name) + ", " + a.position_unit;
   c.y_label = std::string("correction, ") + a.correction_name;
   report::XySeries f, r, d;
-  f.label = "forward (moving +)";
-  r.label = "reverse (moving −)";
-  d.label = "reverse − forward (backlash)";
+  f.label = "forward (+)";
+  r.label = "reverse (−)";
+  d.label = "reverse − forward";
   r.color = "#d62728";
   d.color = "#7f7f7f";
   d.dash = "5 3";
@@ -302,11 +302,12 @@ void AddTableMapSections(report::HtmlPage* page, const TableMap& map, int level)
       page->Heading(level + 1, "GRID3, plane " + PlaneName(map, p));
       std::string text = "Slices at the lower, middle and upper lattice node of " +
                          std::string(1, w.name) + ". Arrows: the in-plane correction at each ";
-      text += "node";
       if (l.arrow_stride_u > 1 || l.arrow_stride_v > 1) {
-        text += " drawn (one node in " + std::to_string(l.arrow_stride_u) + " along " +
+        text += "drawn node (one node in " + std::to_string(l.arrow_stride_u) + " along " +
                 AxisOfDim(map, l.u).name + ", one in " + std::to_string(l.arrow_stride_v) +
                 " along " + AxisOfDim(map, l.v).name + ")";
+      } else {
+        text += "node";
       }
       if (l.length_plot) {
         text += ", magnified ×" + FormatNumber(l.magnification, 6) +
@@ -331,12 +332,13 @@ void AddTableMapSections(report::HtmlPage* page, const TableMap& map, int level)
   for (const MapAxisTable& t : map.axis_tables) {
     const MapAxis& a = map.axes[t.axis];
     page->Heading(level + 1, std::string("AXIS1D ") + a.name);
-    page->Figure(AxisChart(map, t),
-                 std::string("Correction of ") + a.name +
-                     " by its own position: forward while it moves +, reverse (the reverse "
-                     "table or the forward one, plus the backlash term) while it moves −; the "
-                     "dashed curve is their difference." +
-                     (t.wrap_period_steps != 0 ? " The table wraps every turn." : ""));
+    page->Figure(
+        AxisChart(map, t),
+        std::string("Correction of ") + a.name +
+            " by its own position: forward while it moves +, reverse (the reverse "
+            "table or the forward one, plus the backlash term) while it moves −; the "
+            "dashed curve is their difference reverse − forward, the backlash the table corrects." +
+            (t.wrap_period_steps != 0 ? " The table wraps every turn." : ""));
   }
 }
 
