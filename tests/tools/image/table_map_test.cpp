@@ -308,6 +308,87 @@ TEST(image_table_map, AxisTableCurvesAndJson) {
   EXPECT_EQ(planes[2].get("slices")->array.at(1).get("position")->number, 50);
 }
 
+// A lattice of 61 x 3 x 2 nodes: the slices sample every other node along X (and the last),
+// arrows every 6th node; two-node Z has no middle slice.
+TEST(image_table_map, LargeLatticeIsSampledAtNodes) {
+  ImageRequest r;
+  r.axes = {{'X'}, {'Y'}, {'Z'}};
+  GridCorrections g;
+  g.lattice = {Lattice{61, 0, 5000}, Lattice{3, 0, 10000}, Lattice{2, 0, 10000}};
+  for (uint32_t k = 0; k < 2; ++k) {
+    for (uint32_t j = 0; j < 3; ++j) {
+      for (uint32_t i = 0; i < 61; ++i) {
+        for (int c = 0; c < 3; ++c)
+          g.correction_steps.push_back(Field(c, 5.0 * i, 10.0 * j, 10.0 * k));
+      }
+    }
+  }
+  r.grid = g;
+  const LoadedImage img = ValueOf(LoadedImage::FromBytes(ValueOf(BuildImage(r)), "big.vct"));
+  const TableMap map = ValueOf(MapTable(img, "big.vct"));
+  const MapDimension& x = map.dim[0];
+  EXPECT_EQ(x.node_stride, 2);
+  ASSERT_EQ(x.sample_pos.size(), 31u);
+  EXPECT_EQ(x.sample_node.back(), 60);
+  EXPECT_DOUBLE_EQ(x.sample_pos.back(), 300);
+  EXPECT_EQ(map.dim[1].samples_per_cell, 4);
+  ASSERT_EQ(map.slices.size(), 2u + 3 + 3);
+  EXPECT_STREQ(map.slices[1].which, "upper");
+  for (const MapSlice& s : map.slices) {
+    const auto& pu = map.dim[s.u].sample_pos;
+    const auto& pv = map.dim[s.v].sample_pos;
+    for (size_t j = 0; j < pv.size(); ++j) {
+      for (size_t i = 0; i < pu.size(); ++i) {
+        double p[3];
+        p[s.u] = pu[i];
+        p[s.v] = pv[j];
+        p[s.w] = s.position;
+        for (int c = 0; c < 3; ++c) {
+          EXPECT_NEAR(s.value[(j * pu.size() + i) * 3 + c], Field(c, p[0], p[1], p[2]), 0.005);
+        }
+      }
+    }
+  }
+  // Arrows at X nodes 0, 6, ..., 60 and every Y node: 11 x 3 on the XY slices.
+  const std::string vectors = SliceSvgs(map, map.slices[0])[0];
+  size_t dots = 0;
+  for (const std::string& c : Elements(vectors, "circle")) dots += TextAttr(c, "fill") == "#555555";
+  EXPECT_EQ(dots, 33u);
+}
+
+// A rotary axis's wrap table: positions in degrees, corrections in arcsec, the end of the turn
+// evaluated as its start.
+TEST(image_table_map, RotaryAxisTableInDegreesAndArcsec) {
+  ImageRequest r;
+  r.axes = {{'X'}, {'A', table::AxisKind::kRotary, 1000000}};  // 0.001 deg per step
+  AxisCorrections t;
+  t.axis = 1;
+  t.lattice = {5, 0, 90000};
+  t.forward_steps = {0, 1, 2, 1, 0};
+  t.wrap_period_steps = 360000;
+  r.axis_tables.push_back(t);
+  const LoadedImage img = ValueOf(LoadedImage::FromBytes(ValueOf(BuildImage(r)), "a.vct"));
+  const TableMap map = ValueOf(MapTable(img, "a.vct"));
+  EXPECT_FALSE(map.has_grid);
+  ASSERT_EQ(map.axis_tables.size(), 1u);
+  const MapAxisTable& a = map.axis_tables[0];
+  EXPECT_DOUBLE_EQ(a.to, 360);
+  const double arcsec_per_step = 0.001 * 3600;
+  for (size_t i = 0; i < a.position.size(); ++i) {
+    const double deg = a.position[i];
+    const double steps = deg <= 180 ? deg / 90 : (360 - deg) / 90;
+    EXPECT_NEAR(a.forward[i], steps * arcsec_per_step, 0.02) << deg;
+    EXPECT_NEAR(a.reverse[i], a.forward[i], 1e-12) << deg;
+  }
+  const tools::JsonValue j = TableMapJson(map);
+  EXPECT_EQ(j.get("axes")->array.at(1).get("correction_unit")->string, "arcsec");
+  EXPECT_EQ(j.get("axes")->array.at(1).get("position_unit")->string, "deg");
+  EXPECT_EQ(j.get("grid3"), nullptr);
+  report::HtmlPage page("map");
+  AddTableMapSections(&page, map, 2);
+  EXPECT_NE(page.Render().find("correction, arcsec"), std::string::npos);
+}
+
 TEST(image_table_map, PageIsSelfContained) {
   const LoadedImage img = FieldImage(true);
   const TableMap map = ValueOf(MapTable(img, "field.vct"));
