@@ -77,10 +77,11 @@ LoadedImage FieldImage(bool with_axis_table) {
   return ValueOf(LoadedImage::FromBytes(ValueOf(BuildImage(r)), "field.vct"));
 }
 
-// The smallest 1, 2 or 5 x 10^k at or above x.
-double CeilOneTwoFive(double x) {
+// The documented colour bar limit: the smallest of 1, 1.2, 1.5, 2, 2.5, 3, 4, 5, 6, 8 x 10^k at
+// or above x.
+double ColourBarLimit(double x) {
   for (double mag = 1e-3;; mag *= 10) {
-    for (double m : {1.0, 2.0, 5.0}) {
+    for (double m : {1.0, 1.2, 1.5, 2.0, 2.5, 3.0, 4.0, 5.0, 6.0, 8.0}) {
       if (m * mag >= x - 1e-12) return m * mag;
     }
   }
@@ -153,7 +154,7 @@ TEST(image_table_map, SummaryAndSlicesFollowTheField) {
     }
     EXPECT_NEAR(map.extreme[c].max_abs, max_abs, 1.0 / 256) << c;
     for (int q = 0; q < 3; ++q) EXPECT_DOUBLE_EQ(map.extreme[c].position[q], at[q]) << c;
-    EXPECT_DOUBLE_EQ(map.extreme[c].colour_limit, CeilOneTwoFive(max_abs)) << c;
+    EXPECT_DOUBLE_EQ(map.extreme[c].colour_limit, ColourBarLimit(max_abs)) << c;
   }
   // Three planes, lower / middle / upper node of the third axis: Z 0, 25, 50; Y -20, 20, 60;
   // X 0, 50 (node 1 of 0..3), 150.

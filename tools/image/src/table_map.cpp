@@ -135,7 +135,7 @@ void FindExtremes(TableMap* map, const GridLookup& grid) {
       }
     }
   }
-  for (auto& e : map->extreme) e.colour_limit = NiceCeil(e.max_abs);
+  for (auto& e : map->extreme) e.colour_limit = ColourLimit(e.max_abs);
 }
 
 Outcome MapGrid(TableMap* map, const table::Grid3View& g) {

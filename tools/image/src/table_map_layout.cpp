@@ -12,22 +12,26 @@ constexpr int kArrowCells = 10;  // at most about this many arrow spacings acros
 
 const int kPlaneDims[3][2] = {{0, 1}, {0, 2}, {1, 2}};
 
-double Mantissa(double x, bool up) {
+// The largest (smallest) of `steps` x 10^k at or below (above) x > 0; `steps` ascending in
+// [1, 10].
+template <size_t N>
+double Round(double x, const double (&steps)[N], bool up) {
   const double mag = std::pow(10.0, std::floor(std::log10(x)));
   const double f = x / mag;
   if (up) {
-    const double steps[] = {1, 2, 5, 10};
     for (double s : steps) {
       if (f <= s * (1 + 1e-12)) return s * mag;
     }
     return 10 * mag;
   }
-  const double steps[] = {10, 5, 2, 1};
-  for (double s : steps) {
-    if (f >= s * (1 - 1e-12)) return s * mag;
+  for (size_t i = N; i-- > 0;) {
+    if (f >= steps[i] * (1 - 1e-12)) return steps[i] * mag;
   }
   return mag;
 }
+
+constexpr double kOneTwoFive[] = {1, 2, 5};
+constexpr double kColourSteps[] = {1, 1.2, 1.5, 2, 2.5, 3, 4, 5, 6, 8};
 
 }  // namespace
 
@@ -38,8 +42,12 @@ std::string PlaneName(const TableMap& map, int plane) {
          map.axes[map.dim[kPlaneDims[plane][1]].axis].name;
 }
 
-double NiceCeil(double x) { return x > 0 && std::isfinite(x) ? Mantissa(x, true) : 1.0; }
-double NiceFloor(double x) { return x > 0 && std::isfinite(x) ? Mantissa(x, false) : 1.0; }
+double NiceFloor(double x) {
+  return x > 0 && std::isfinite(x) ? Round(x, kOneTwoFive, false) : 1.0;
+}
+double ColourLimit(double x) {
+  return x > 0 && std::isfinite(x) ? Round(x, kColourSteps, true) : 1.0;
+}
 
 PlaneLayout LayoutPlane(const TableMap& map, int plane) {
   PlaneLayout l;

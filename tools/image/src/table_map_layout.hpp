@@ -14,9 +14,11 @@ int PlaneOf(const MapSlice& slice);
 /// The plane's axis names, e.g. "XZ".
 std::string PlaneName(const TableMap& map, int plane);
 
-/// The smallest (largest) 1, 2 or 5 x 10^k at or above (below) `x`; 1 for x <= 0.
-double NiceCeil(double x);
+/// The largest 1, 2 or 5 x 10^k at or below `x`; 1 for x <= 0.
 double NiceFloor(double x);
+/// The colour bar's limit for a largest |value| `x`: the smallest of 1, 1.2, 1.5, 2, 2.5, 3, 4,
+/// 5, 6, 8 x 10^k at or above it (a round number, at most 25 % above x); 1 for x <= 0.
+double ColourLimit(double x);
 
 struct PlaneLayout {
   int u = 0, v = 1;

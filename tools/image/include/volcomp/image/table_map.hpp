@@ -67,7 +67,7 @@ struct MapExtreme {
   double min = 0, max = 0, max_abs = 0;
   std::array<uint32_t, 3> node = {0, 0, 0};
   std::array<double, 3> position = {0, 0, 0};  // display units, per lattice dimension
-  double colour_limit = 1;                     // the colour bar's ± limit (a 1-2-5 step value)
+  double colour_limit = 1;  // the colour bar's ± limit: a round value at or above max_abs
 };
 
 /// One AXIS1D table sampled between its nodes.
