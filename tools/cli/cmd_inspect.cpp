@@ -158,22 +158,29 @@ void InspectReportText(const JsonValue& d, std::ostream& out) {
   InspectText(d, out);
   const JsonValue& map = *d.get("map");
   out << "map: " << map.get("report")->string << "\n";
+  // A position on an axis with its unit: "X = 400 mm".
+  const auto position = [&map](const std::string& axis, double value) {
+    std::string unit;
+    for (const JsonValue& a : map.get("axes")->array) {
+      if (a.get("name")->string == axis) unit = " " + a.get("position_unit")->string;
+    }
+    return axis + " = " + report::FormatNumber(value, 6) + unit;
+  };
   if (const JsonValue* g = map.get("grid3")) {
     for (const JsonValue& c : g->get("components")->array) {
       std::string at;
       for (const auto& [axis, pos] : c.get("max_abs_at")->object) {
-        at += (at.empty() ? "" : ", ") + axis + " = " + report::FormatNumber(pos.number, 6);
+        at += (at.empty() ? "" : ", ") + position(axis, pos.number);
       }
       out << "  largest |" << c.get("component")->string << "| "
           << report::FormatNumber(c.get("max_abs")->number, 4) << " " << c.get("unit")->string
           << " at " << at << "\n";
     }
     for (const JsonValue& p : g->get("planes")->array) {
-      out << "  plane " << p.get("plane")->string << ": slices at "
-          << p.get("slices")->array[0].get("axis")->string << " =";
+      out << "  plane " << p.get("plane")->string << ": slices at";
       const char* sep = " ";
       for (const JsonValue& s : p.get("slices")->array) {
-        out << sep << report::FormatNumber(s.get("position")->number, 6) << " ("
+        out << sep << position(s.get("axis")->string, s.get("position")->number) << " ("
             << s.get("which")->string << ")";
         sep = ", ";
       }

@@ -53,9 +53,10 @@ TEST(cli_inspect, ReportWritesTheMapAndItsSummary) {
   const auto text = RunCli({"inspect", img, "--report", dir / "map"});
   ASSERT_EQ(text.code, 0) << text.err;
   EXPECT_NE(text.out.find("map: " + dir / "map/index.html\n"), std::string::npos) << text.out;
-  EXPECT_NE(text.out.find("largest |dz| 3 um at X = 0, Y = 0, Z = 0\n"), std::string::npos)
+  EXPECT_NE(text.out.find("largest |dz| 3 um at X = 0 mm, Y = 0 mm, Z = 0 mm\n"), std::string::npos)
       << text.out;
-  EXPECT_NE(text.out.find("plane XY: slices at Z = 0 (lower), 0.01 (upper)"), std::string::npos)
+  EXPECT_NE(text.out.find("plane XY: slices at Z = 0 mm (lower), Z = 0.01 mm (upper), vectors x"),
+            std::string::npos)
       << text.out;
 }
 
