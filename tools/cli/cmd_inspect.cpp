@@ -1,4 +1,5 @@
-// `volcomp inspect IMAGE [--json]`: what an image holds, validated by the firmware's parser.
+// `volcomp inspect IMAGE [--json] [--report DIR]`: what an image holds, validated by the
+// firmware's parser; with --report, a picture of its correction (DIR/index.html).
 #include <algorithm>
 #include <cstdio>
 #include <limits>
@@ -6,6 +7,8 @@
 
 #include "commands.hpp"
 #include "volcomp/image/image_reader.hpp"
+#include "volcomp/image/table_map.hpp"
+#include "volcomp/report/format.hpp"
 #include "volcomp/tools/hex.hpp"
 
 namespace volcomp::cli {
@@ -150,13 +153,68 @@ void InspectText(const JsonValue& d, std::ostream& out) {
   }
 }
 
+// The text view with the map's summary after it.
+void InspectReportText(const JsonValue& d, std::ostream& out) {
+  InspectText(d, out);
+  const JsonValue& map = *d.get("map");
+  out << "map: " << map.get("report")->string << "\n";
+  // A position on an axis with its unit: "X = 400 mm".
+  const auto position = [&map](const std::string& axis, double value) {
+    std::string unit;
+    for (const JsonValue& a : map.get("axes")->array) {
+      if (a.get("name")->string == axis) unit = " " + a.get("position_unit")->string;
+    }
+    return axis + " = " + report::FormatNumber(value, 6) + unit;
+  };
+  if (const JsonValue* g = map.get("grid3")) {
+    for (const JsonValue& c : g->get("components")->array) {
+      std::string at;
+      for (const auto& [axis, pos] : c.get("max_abs_at")->object) {
+        at += (at.empty() ? "" : ", ") + position(axis, pos.number);
+      }
+      out << "  largest |" << c.get("component")->string << "| "
+          << report::FormatNumber(c.get("max_abs")->number, 4) << " " << c.get("unit")->string
+          << " at " << at << "\n";
+    }
+    for (const JsonValue& p : g->get("planes")->array) {
+      out << "  plane " << p.get("plane")->string << ": slices at";
+      const char* sep = " ";
+      for (const JsonValue& s : p.get("slices")->array) {
+        out << sep << position(s.get("axis")->string, s.get("position")->number) << " ("
+            << s.get("which")->string << ")";
+        sep = ", ";
+      }
+      const double m = p.get("magnification")->number;
+      out << ", vectors "
+          << (m > 0 ? "x" + report::FormatNumber(m, 6)
+                    : report::FormatNumber(p.get("arrow_px_per_unit")->number, 6) + " px per unit")
+          << "\n";
+    }
+  }
+  for (const JsonValue& t : map.get("axis1d")->array) {
+    out << "  AXIS1D " << t.get("axis")->string << ": forward "
+        << report::FormatNumber(t.get("forward_min")->number, 4) << " .. "
+        << report::FormatNumber(t.get("forward_max")->number, 4) << ", reverse - forward "
+        << report::FormatNumber(t.get("backlash_min")->number, 4) << " .. "
+        << report::FormatNumber(t.get("backlash_max")->number, 4) << " " << t.get("unit")->string
+        << "\n";
+  }
+}
+
 Expected<Output> RunInspect(Args& args, Context&) {
   args.Flag("--json");  // the command layer prints the data as JSON
+  const auto report_dir = args.Value("--report");
   const auto files = args.Positionals();
   VOLCOMP_TRY(args.Finish());
   if (files.size() != 1) return UsageFailure("expected one IMAGE file");
   VOLCOMP_TRY_ASSIGN(const image::LoadedImage img, image::ReadImageFile(files[0]));
-  return Output{InspectData(files[0], img.view()), InspectText};
+  JsonValue data = InspectData(files[0], img.view());
+  if (!report_dir) return Output{std::move(data), InspectText};
+  VOLCOMP_TRY_ASSIGN(const image::TableMap map, image::MapTable(img, files[0]));
+  VOLCOMP_TRY_ASSIGN(const std::string path, image::WriteTableMapReport(map, *report_dir));
+  JsonValue& m = data["map"] = image::TableMapJson(map);
+  m.Set("report", path);
+  return Output{std::move(data), InspectReportText};
 }
 
 }  // namespace
@@ -166,7 +224,10 @@ const Command& InspectCommand() {
       "inspect",
       "summarise a table image",
       "IMAGE",
-      {{"--json", nullptr, nullptr, nullptr, nullptr, "machine-readable output"}},
+      {{"--json", nullptr, nullptr, nullptr, nullptr, "machine-readable output"},
+       {"--report", nullptr, "DIR", nullptr, nullptr,
+        "also write DIR/index.html: the correction on slices through the lattice (magnified "
+        "vectors, colour maps per component) and the AXIS1D curves"}},
       RunInspect};
   return kCommand;
 }

@@ -3,6 +3,8 @@
 #include <cstdio>
 #include <sstream>
 
+#include "volcomp/image/image_reader.hpp"
+#include "volcomp/image/table_map.hpp"
 #include "volcomp/metrology/diagonal_report.hpp"
 #include "volcomp/metrology/positioning_report.hpp"
 #include "volcomp/report/format.hpp"
@@ -355,6 +357,18 @@ Outcome WriteDemoReport(const DemoResult& r, const std::string& dir) {
         "Rebuild it with the PC tool: volcomp build model --model model/measured.conf "
         "--resolution-nm X=1000,Y=1000,Z=1000 --spacing-mm " +
         FormatFixed(r.options.grid_spacing_mm, 0) + " -o table.vct");
+  }
+  {
+    // The final table's map, drawn as `volcomp inspect table.vct --report DIR` draws it; its
+    // figures in table_map.json.
+    VOLCOMP_TRY_ASSIGN(const image::LoadedImage img,
+                       image::LoadedImage::FromBytes(r.table.image, "table.vct"));
+    VOLCOMP_TRY_ASSIGN(const image::TableMap map, image::MapTable(img, "table.vct"));
+    image::AddTableMapSections(&page, map, 3);
+    std::ostringstream json;
+    tools::WriteJson(image::TableMapJson(map), json);
+    json << "\n";
+    VOLCOMP_TRY(tools::WriteTextFile(dir + "/table_map.json", json.str()));
   }
   for (const ParametricResult& p : r.parametric) {
     page.Figure(ParametricChart(p, false), "");

@@ -53,6 +53,22 @@ void ReportAndRead(const DemoResult& r,
                    std::ostringstream* text,
                    std::optional<JsonValue>* json) {
   ASSERT_TRUE(WriteDemoReport(r, dir).ok());
+  {
+    SCOPED_TRACE("the final table's map on the page, its figures in table_map.json");
+    const Expected<std::string> page = tools::ReadTextFile(dir + "/index.html");
+    ASSERT_TRUE(page.ok()) << page.error().message;
+    EXPECT_NE(page->find("<h3>Correction map: table.vct</h3>"), std::string::npos);
+    EXPECT_NE(page->find("<h4>GRID3, plane XY</h4>"), std::string::npos);
+    const Expected<std::string> map = tools::ReadTextFile(dir + "/table_map.json");
+    ASSERT_TRUE(map.ok()) << map.error().message;
+    const Expected<JsonValue> parsed = tools::ParseJson(*map, "table_map.json");
+    ASSERT_TRUE(parsed.ok()) << parsed.error().message;
+    const size_t tables = r.table.axis_tables.size();
+    EXPECT_EQ(parsed->get("axis1d")->array.size(), tables);
+    for (const JsonValue& t : parsed->get("axis1d")->array) {
+      EXPECT_NE(page->find("<h4>AXIS1D " + t.get("axis")->string + "</h4>"), std::string::npos);
+    }
+  }
   PrintSummary(r, *text);
   const Expected<std::string> file = tools::ReadTextFile(dir + "/summary.json");
   ASSERT_TRUE(file.ok()) << file.error().message;
