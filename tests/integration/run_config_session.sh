@@ -122,7 +122,8 @@ set -e
 echo "== status and monitor in machine units"
 "$volcomp" status --can "$can" | tee status.txt
 grep -q "^axis 4 C: input 0 steps, machine not referenced, correction +0.000 arcsec" status.txt || fail "status axis C"
-grep -q "max 800)" status.txt || fail "status: max correction of X"
+# X has 0.0025 mm per step since coarse.ini: 800 steps = 2000 µm
+grep -q "max 800 = 2000.000 µm)" status.txt || fail "status: max correction of X"
 "$volcomp" status --can "$can" --json >status.json
 grep -q '"name": "C"' status.json || fail "status --json: names"
 grep -q '"commanded_mm": 0' status.json || fail "status --json: mm"

@@ -112,6 +112,8 @@ JsonValue AxisData(const Snapshot& n, const AxisInfo& x, uint32_t a, bool refere
   d.Set(std::string("applied_correction_") + x.correction_unit(),
         n.correction_q8[a] / 256.0 * x.correction_per_step());
   d.Set("max_correction_steps", int64_t{x.max_correction_steps});
+  d.Set(std::string("max_correction_") + x.correction_unit(),
+        x.max_correction_steps * x.correction_per_step());
   d.Set("at_max_correction", AtMaxCorrection(n, x, a));
   d.Set("clamped", (n.limit_flags[a] & canopen::kLimitClamped) != 0);
   d.Set("rate_limited", (n.limit_flags[a] & canopen::kLimitRateLimited) != 0);

@@ -88,11 +88,13 @@ void AxisLine(const JsonValue& x, std::ostream& out) {
   char line[320];
   std::snprintf(line, sizeof line,
                 "axis %d %s: input %d steps, machine %s, correction %+.3f %s (%+.3f steps, max "
-                "%d)%s, output %d steps, max backlog %u\n",
+                "%d = %.3f %s)%s, output %d steps, max backlog %u\n",
                 static_cast<int>(x.get("axis")->integer), x.get("name")->string.c_str(),
                 static_cast<int>(x.get("commanded_steps")->integer), machine, correction,
                 rotary ? "arcsec" : "µm", x.get("applied_correction_steps")->number,
-                static_cast<int>(x.get("max_correction_steps")->integer), LimitText(x).c_str(),
+                static_cast<int>(x.get("max_correction_steps")->integer),
+                x.get(rotary ? "max_correction_arcsec" : "max_correction_um")->number,
+                rotary ? "arcsec" : "µm", LimitText(x).c_str(),
                 static_cast<int>(x.get("output_steps")->integer),
                 static_cast<unsigned>(x.get("max_backlog_steps")->integer));
   out << line;
