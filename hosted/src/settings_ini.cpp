@@ -97,6 +97,49 @@ IniExpected<int64_t> ReadStepsPerUnit(const IniDocument& doc, const IniEntry& e)
   return per_step_e9;
 }
 
+// `max_correction_um` (`max_correction_arcsec` on a rotary axis): the max correction (0x2015, in
+// steps) in the units of the table, read after the section's other keys (it needs the axis's kind
+// and units per step); it must be a whole number of steps, and is never given beside the steps.
+IniOutcome ReadMaxCorrectionInUnits(const IniDocument& doc,
+                                    const IniSection& sec,
+                                    ObjectId id,
+                                    BoardSettings* s,
+                                    const AxisConfig* axis) {
+  const bool rotary = axis->kind == table::AxisKind::kRotary;
+  const char* key = rotary ? "max_correction_arcsec" : "max_correction_um";
+  const char* other = rotary ? "max_correction_um" : "max_correction_arcsec";
+  if (const IniEntry* wrong = sec.Find(other)) {
+    return doc.FailKey(
+        *wrong, std::string("the axis is ") + (rotary ? "rotary" : "linear") + ": give " + key);
+  }
+  const IniEntry* e = sec.Find(key);
+  if (e == nullptr) return IniOutcome::Ok();
+  const SettingKey& steps_key = *SettingKeyOf(id);
+  if (const IniEntry* steps = sec.Find(steps_key.key)) {
+    return doc.FailAt(std::max(steps->line, e->line), std::string("give ") + steps_key.key +
+                                                          " (line " + std::to_string(steps->line) +
+                                                          ") or " + key + " (line " +
+                                                          std::to_string(e->line) + "), not both");
+  }
+  VOLCOMP_TRY_ASSIGN(const int64_t value_e9, ReadDecimalE9(doc, *e, 0, INT64_MAX));
+  // One step in the key's unit x 1e9: units per step x 1e9 (mm, degrees) x 1000 um or 3600 arcsec.
+  const int64_t step_e9 = int64_t{axis->resolution_e9} * (rotary ? 3600 : 1000);
+  const int64_t steps = value_e9 / step_e9;
+  if (value_e9 % step_e9 != 0) {
+    return doc.FailKey(
+        *e, "not a whole number of steps of " + FormatDecimalE9(step_e9) + " " +
+                (rotary ? "arcsec" : "um") + ": give " + FormatDecimalE9(steps * step_e9) + " or " +
+                FormatDecimalE9((steps + 1) * step_e9) + " (" + std::to_string(steps) + " or " +
+                std::to_string(steps + 1) + " steps), or " + steps_key.key + " in steps");
+  }
+  const ObjectEntry& object = canopen::Entry(id);
+  if (const std::string why = LimitViolation(object, steps); !why.empty()) {
+    return doc.FailKey(*e, std::to_string(steps) + " steps: " + why + OfObject(object));
+  }
+  Set(s, id, steps);
+  return IniOutcome::Ok();
+}
+
 // [board] axes: the axis names in board order.
 IniExpected<std::vector<char>> ReadAxisNames(const IniDocument& doc, const IniEntry& e) {
   std::vector<char> out;
@@ -244,11 +287,16 @@ IniOutcome ReadSettings(const IniDocument& doc, BoardSettings* s, const Settings
                       Set(s, resolution, v);
                       return IniOutcome::Ok();
                     }});
+    for (const char* later : {"max_correction_um", "max_correction_arcsec"}) {  // below
+      keys.push_back({later, [](const IniEntry&) { return IniOutcome::Ok(); }});
+    }
     if (extras.axis) {
       const std::vector<IniKey> more = extras.axis(a);
       keys.insert(keys.end(), more.begin(), more.end());
     }
     VOLCOMP_TRY(ReadKeys(doc, sec, keys));
+    VOLCOMP_TRY(ReadMaxCorrectionInUnits(doc, *sec, AxisId(ObjectId::kAxisMaxCorrection1, a), s,
+                                         &s->board.axis[a]));
     const IniEntry* per_step = sec->Find(SettingKeyOf(resolution)->key);
     const IniEntry* per_unit = sec->Find(kStepsPerUnitKey);
     if (per_step != nullptr && per_unit != nullptr) {
@@ -355,6 +403,11 @@ void WriteSettings(IniWriter& w, const BoardSettings& s, const SettingsIniWriteE
         std::snprintf(steps, sizeof steps, " (%.9g steps per %s)", 1e9 / static_cast<double>(v),
                       s.board.axis[a].kind == table::AxisKind::kRotary ? "degree" : "mm");
         note += steps;
+      }
+      if (k.id == ObjectId::kAxisMaxCorrection1) {  // in the table's units too
+        const bool rotary = s.board.axis[a].kind == table::AxisKind::kRotary;
+        note += " (" + FormatDecimalE9(v * s.board.axis[a].resolution_e9 * (rotary ? 3600 : 1000)) +
+                (rotary ? " arcsec)" : " um)");
       }
       w.Key(k.key, FormatSettingValue(k, v), note);
     }

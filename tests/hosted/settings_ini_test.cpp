@@ -189,6 +189,31 @@ TEST(BoardIni, StepsPerUnitIsTheResolutionTheOtherWayRound) {
   EXPECT_NE(text.find("(1000 steps per degree)\n"), std::string::npos) << text;
 }
 
+// The max correction in the table's units (µm, arcsec), as the integrator thinks of it: a whole
+// number of steps of the axis, never beside the steps, and the right unit for the axis's kind.
+TEST(BoardIni, MaxCorrectionInMicrometresOrArcseconds) {
+  const std::string head = "[board]\naxes = X C\n[axis X]\nunits_per_step = 0.0025\n";
+  const std::string rotary = "[axis C]\nkind = rotary\nunits_per_step = 0.001\n";
+  const BoardSettings s = ParseBoardIni(
+      head + "max_correction_um = 50\n" + rotary + "max_correction_arcsec = 36\n", "m.ini");
+  EXPECT_EQ(s.board.axis[0].max_correction_steps, 20);  // 50 um / 2.5 um
+  EXPECT_EQ(s.board.axis[1].max_correction_steps, 10);  // 36 arcsec / 3.6 arcsec
+  EXPECT_EQ(Refusal(head + "max_correction_um = 51\n" + rotary),
+            "m.ini:5: max_correction_um: not a whole number of steps of 2.5 um: give 50 or 52.5 "
+            "(20 or 21 steps), or max_correction in steps");
+  EXPECT_EQ(Refusal(head + "max_correction = 20\nmax_correction_um = 50\n" + rotary),
+            "m.ini:6: give max_correction (line 5) or max_correction_um (line 6), not both");
+  EXPECT_EQ(Refusal(head + "max_correction_arcsec = 36\n" + rotary),
+            "m.ini:5: max_correction_arcsec: the axis is linear: give max_correction_um");
+  const std::string text = FormatSettingsIni(s, {});
+  EXPECT_NE(text.find("max_correction = 20 "), std::string::npos) << text;
+  EXPECT_NE(text.find("# 2015:1 steps (50 um)\n"), std::string::npos) << text;
+  EXPECT_NE(text.find("# 2015:2 steps (36 arcsec)\n"), std::string::npos) << text;
+  EXPECT_NE(Refusal(head + "max_correction_um = 1000000\n" + rotary)
+                .find("m.ini:5: max_correction_um: 400000 steps: above the highest value 65536"),
+            std::string::npos);
+}
+
 TEST(BoardIni, TheWrittenFileReadsBackAsItself) {
   const BoardSettings s = ParseBoardIni(kMachine, "m.ini");
   const std::string text = FormatSettingsIni(s, {"header line"});
@@ -199,7 +224,7 @@ TEST(BoardIni, TheWrittenFileReadsBackAsItself) {
   EXPECT_NE(text.find("\nunits_per_step = 0.0005 "), std::string::npos) << text;
   EXPECT_NE(text.find("\nhome_position = -5000 "), std::string::npos) << text;
   EXPECT_NE(text.find("\n[axis C]\nkind = rotary "), std::string::npos) << text;
-  EXPECT_NE(text.find("# 2015:1 steps\n"), std::string::npos) << text;
+  EXPECT_NE(text.find("# 2015:1 steps ("), std::string::npos) << text;
   const BoardSettings back = ParseBoardIni(text, "saved.ini");
   for (const SettingObject& o : SettingObjects()) {
     EXPECT_EQ(o.get(back), o.get(s)) << canopen::Entry(o.id).name;

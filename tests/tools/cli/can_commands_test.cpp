@@ -127,8 +127,14 @@ TEST_F(CanCommands, StatusTextIsALayoutOfItsJson) {
                              std::to_string(x.get("commanded_steps")->integer) +
                              " steps, machine not referenced, correction +0.000 µm (+0.000 steps, "
                              "max " +
-                             std::to_string(x.get("max_correction_steps")->integer) + ")";
-    EXPECT_TRUE(Contains(text.out, head)) << head << "\n" << text.out;
+                             std::to_string(x.get("max_correction_steps")->integer) + " = ";
+    char um[32];
+    std::snprintf(um, sizeof um, "%.3f µm)", x.get("max_correction_um")->number);
+    EXPECT_TRUE(Contains(text.out, head + um)) << head << um << "\n" << text.out;
+    // The µm are the steps at the axis's units per step (an outside check of the conversion).
+    EXPECT_NEAR(x.get("max_correction_um")->number,
+                x.get("max_correction_steps")->integer * x.get("units_per_step")->number * 1000,
+                1e-9);
   }
   EXPECT_EQ(d.get("counters")->object.size(), 10u);
   EXPECT_TRUE(Contains(text.out, "\ncounters: can_rx_frames=")) << text.out;
