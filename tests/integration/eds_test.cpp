@@ -8,6 +8,7 @@
 #include <regex>
 #include <sstream>
 
+#include "volcomp/canopen/identity.hpp"
 #include "volcomp/canopen/object_dictionary.hpp"
 #include "volcomp/canopen_client/eds_writer.hpp"
 #include "volcomp/canopen_client/node_objects.hpp"
@@ -116,6 +117,26 @@ TEST(Eds, DefaultsAreWhatAFreshBoardReports) {
   // 0x1015, 0x1017 and 0x2121, 0x2000 sub 0-4, 15 axis arrays.
   EXPECT_EQ(compared, 3 + 5 + 16 * 7);
   EXPECT_EQ(default_of(0x1015, 0), "0x0064");  // EMCY inhibit time 10 ms (100 x 100 us)
+
+  // 0x1009: the EDS and the node agree. The default is the board's; the EDS declares the value
+  // read-only (not const) and names the simulated node's value in its comments; the simulated
+  // node reports exactly that.
+  EXPECT_EQ(default_of(0x1009, 0), canopen::HardwareVersion(canopen::Hardware::kBoard));
+  EXPECT_EQ((entries[{0x1009, 0}].access), "ro");
+  const auto hardware = node.ReadString(canopen::ObjectId::kHardwareVersion);
+  ASSERT_TRUE(hardware.ok()) << hardware.error().message;
+  EXPECT_EQ(*hardware, canopen::HardwareVersion(canopen::Hardware::kSimulator));
+  const size_t comments = eds.find("[Comments]\n");
+  ASSERT_NE(comments, std::string::npos);
+  const std::string comment_block = eds.substr(comments, eds.find("\n\n", comments) - comments);
+  EXPECT_NE(comment_block.find("0x1009"), std::string::npos) << comment_block;
+  EXPECT_NE(comment_block.find("\"" + *hardware + "\" on the simulated node"), std::string::npos)
+      << comment_block;
+  // Software version and device name: one definition too.
+  EXPECT_EQ(default_of(0x100A, 0), canopen::kSoftwareVersionText);
+  const auto software = node.ReadString(canopen::ObjectId::kSoftwareVersion);
+  ASSERT_TRUE(software.ok());
+  EXPECT_EQ(*software, canopen::kSoftwareVersionText);
 }
 
 }  // namespace

@@ -18,6 +18,7 @@ class TestValues : public canopen::ObjectValues {
   std::vector<uint8_t> domain_readback;  // what a read of the domain returns
   int begins = 0, ends_ok = 0, ends_failed = 0;
   canopen::SdoAbort last_end = canopen::SdoAbort::kNone;  // outcome of the last domain write
+  canopen::AbortOrigin last_end_origin = canopen::AbortOrigin::kServer;  // and who ended it
   uint32_t begin_size = 0;
   canopen::SdoAbort fail_write_with = canopen::SdoAbort::kNone;  // returned by Write if set
   // Returned by DomainWriteData if set (the application refusing data in mid-transfer).
@@ -79,9 +80,11 @@ class TestValues : public canopen::ObjectValues {
     *done = flushes % flush_steps == 0;
     return canopen::SdoAbort::kNone;
   }
-  canopen::SdoAbort DoEndDomainWrite(canopen::SdoAbort outcome) override {
+  canopen::SdoAbort DoEndDomainWrite(canopen::SdoAbort outcome,
+                                     canopen::AbortOrigin origin) override {
     ++(canopen::Failed(outcome) ? ends_failed : ends_ok);
     last_end = outcome;
+    last_end_origin = origin;
     return canopen::SdoAbort::kNone;
   }
 };

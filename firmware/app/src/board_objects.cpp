@@ -274,11 +274,20 @@ SdoAbort BoardObjects::TableControl(uint8_t command) {
   using canopen::TableCommand;
   switch (static_cast<TableCommand>(command)) {
     case TableCommand::kVerify: {
+      // CiA 301 7.2.4.3.17 (docs/canopen.md, "Rules that protect the machine"): the command value
+      // is valid, the staged data are not: nothing to verify is "no data available", an upload
+      // in progress "the present device state", an image that fails the checks "data cannot be
+      // transferred or stored to the application" (with EMCY 0x6300 and the error in 0x2102).
+      const StagedState staged = tables.staged_state();
+      if (staged == StagedState::kReceiving) return Refuse(SdoAbort::kDeviceState);
+      if (staged != StagedState::kComplete && staged != StagedState::kVerified) {
+        return Refuse(SdoAbort::kNoData);
+      }
       const Status s = tables.Verify(board);
       if (!s.ok()) {
         parts_.node->ReportEvent(canopen::kEmcyTableInvalid, canopen::kErrManufacturer,
                                  static_cast<uint32_t>(s.error()));
-        return SdoAbort::kInvalidValue;
+        return SdoAbort::kCannotStore;
       }
       return SdoAbort::kNone;
     }
@@ -357,6 +366,7 @@ SdoAbort BoardObjects::DoWrite(const ObjectEntry& e, const uint8_t* data, uint32
 SdoAbort BoardObjects::DoBeginDomainWrite(const ObjectEntry& e, uint32_t size) {
   if (e.id != ObjectId::kTableData) return SdoAbort::kUnsupportedAccess;
   if (!parts_.policy->writable()) return Refuse(SdoAbort::kCannotStore);
+  transfer_abort_ = SdoAbort::kNone;
   if (size > parts_.tables->capacity()) return SdoAbort::kTooLong;
   if (!parts_.tables->BeginUpload(size).ok()) return Refuse(SdoAbort::kHardware);
   return SdoAbort::kNone;
@@ -372,15 +382,33 @@ SdoAbort BoardObjects::DoDomainWriteFlush(bool* done) {
   return parts_.tables->FlushUpload(done).ok() ? SdoAbort::kNone : SdoAbort::kHardware;
 }
 
-SdoAbort BoardObjects::DoEndDomainWrite(SdoAbort outcome) {
+SdoAbort BoardObjects::DoEndDomainWrite(SdoAbort outcome, canopen::AbortOrigin origin) {
   if (canopen::Failed(outcome)) {
-    // The transfer broke: 0x2102 says how (aborted, CRC-16, timeout), not "I/O error".
-    parts_.tables->AbandonUpload(canopen::TransferError(outcome));
+    // The transfer broke: 0x2102 says how (aborted by the board or by the client, CRC-16,
+    // timeout), not "I/O error"; 0x210A keeps the abort code.
+    transfer_abort_ = outcome;
+    parts_.tables->AbandonUpload(canopen::TransferError(outcome, origin));
     return SdoAbort::kNone;
   }
   const Status s = parts_.tables->FinishUpload();
   if (s.ok()) return SdoAbort::kNone;
-  return s.error() == Error::kImageSizeMismatch ? SdoAbort::kTypeMismatch : SdoAbort::kHardware;
+  if (s.error() != Error::kImageSizeMismatch) return SdoAbort::kHardware;
+  // Fewer or more bytes than announced (the SDO server checks this first; kept for any path).
+  return parts_.tables->staged_bytes() < parts_.tables->expected_size() ? SdoAbort::kTooShort
+                                                                        : SdoAbort::kTooLong;
+}
+
+uint32_t BoardObjects::transfer_abort_code() const {
+  switch (parts_.tables->last_error()) {
+    case Error::kTransferAborted:
+    case Error::kTransferAbortedByClient:
+    case Error::kTransferCrcMismatch:
+    case Error::kTransferTimeout:
+    case Error::kImageSizeMismatch:
+      return canopen::Code(transfer_abort_);
+    default:
+      return 0;
+  }
 }
 
 }  // namespace volcomp::firmware

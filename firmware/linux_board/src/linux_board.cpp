@@ -75,7 +75,7 @@ Expected<void> LinuxBoard::Open(hal::CanPort* controller, hal::CanPort* drives) 
   ao.use_enable_input = config_.enable_input;
   ao.table_bank_size = config_.table_bank_bytes;
   ao.settings_bank_size = config_.sector_bytes;
-  ao.identity.hardware_version = "linux";
+  ao.identity.hardware_version = canopen::HardwareVersion(canopen::Hardware::kLinuxBoard);
   ao.identity.serial_number = config_.serial_number;
   const Status s = app_->Start(config_.settings, config_.gateway, ao);
   if (!s.ok()) {

@@ -78,7 +78,7 @@ Outcome SimulatedBoard::Start() {
   io_.SetInput(hal::InputLine::kWriteEnable, options_.write_enable_input);
   clock_.Set(now_ns_);
   firmware::AppOptions app;
-  app.identity.hardware_version = "simulator";
+  app.identity.hardware_version = canopen::HardwareVersion(canopen::Hardware::kSimulator);
   const Status s = app_->Start(options_.settings, app);
   next_poll_ns_ = now_ns_;
   FollowTickTimer();

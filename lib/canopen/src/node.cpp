@@ -128,12 +128,13 @@ void Node::OnFrame(const CanFrame& f, uint32_t now_ms) {
 void Node::Poll(uint32_t now_ms) {
   now_ms_ = now_ms;
   if (state_ != NmtState::kStopped) sdo_.Poll(now_ms);
-  // Report failed transfers (protocol aborts: toggle, timeout, sequence, CRC, ...) by EMCY; the
-  // application reports the requests it refuses itself.
+  // Report the transfers this node found broken (protocol aborts it sent: toggle, timeout,
+  // sequence, CRC, ...) by EMCY; the application reports the requests it refuses itself. A
+  // client's abort is no error of this node, whatever its code: it is not reported.
   if (sdo_.aborts() != reported_aborts_) {
     reported_aborts_ = sdo_.aborts();
     const SdoAbort code = sdo_.last_abort();
-    if (IsProtocolAbort(code)) {
+    if (IsProtocolAbort(code) && sdo_.last_abort_origin() == AbortOrigin::kServer) {
       ReportEvent(kEmcySdoTransferFailed, kErrCommunication, Code(code));
     }
   }
@@ -260,7 +261,9 @@ SdoAbort Node::DoBeginDomainWrite(const ObjectEntry& e, uint32_t size) {
 SdoAbort Node::DoDomainWriteData(const uint8_t* data, uint32_t size) {
   return app_->DomainWriteData(data, size);
 }
-SdoAbort Node::DoEndDomainWrite(SdoAbort outcome) { return app_->EndDomainWrite(outcome); }
+SdoAbort Node::DoEndDomainWrite(SdoAbort outcome, AbortOrigin origin) {
+  return app_->EndDomainWrite(outcome, origin);
+}
 // The application's pacing of a domain download (how much it takes between flushes, and its
 // flush steps), so the server sizes sub-blocks and holds acknowledgements as it asks.
 uint32_t Node::DoDomainWriteWindow() { return app_->DomainWriteWindow(); }

@@ -48,7 +48,7 @@ const char* SdoAbortText(SdoAbort a) {
     case SdoAbort::kGeneral:
       return "general error";
     case SdoAbort::kCannotStore:
-      return "data cannot be transferred or stored (write-protected)";
+      return "data cannot be transferred or stored to the application";
     case SdoAbort::kLocalControl:
       return "data cannot be transferred or stored because of local control";
     case SdoAbort::kDeviceState:

@@ -62,12 +62,12 @@ void SdoServer::Respond(uint8_t cmd, const uint8_t* payload4) {
   Queue(f);
 }
 
-void SdoServer::EndTransfer(SdoAbort outcome) {
+void SdoServer::EndTransfer(SdoAbort outcome, AbortOrigin origin) {
   const bool downloading = state_ == State::kDownloadSegmented || state_ == State::kBlockDownload ||
                            state_ == State::kBlockDownloadEnd;
   if (domain_ && downloading) {
     // A failure of a complete transfer is reported by FinishDownload(), not here.
-    (void)values_->EndDomainWrite(outcome);
+    (void)values_->EndDomainWrite(outcome, origin);
   }
   state_ = State::kIdle;
   domain_ = false;
@@ -94,6 +94,7 @@ void SdoServer::Abort(SdoAbort code) {
   EndTransfer(code);
   ++aborts_;
   last_abort_ = code;
+  last_abort_origin_ = AbortOrigin::kServer;
 }
 
 bool SdoServer::DiscardLeftover(uint8_t cmd, uint32_t now_ms) {
@@ -124,12 +125,19 @@ SdoAbort SdoServer::Lookup(uint16_t index, uint8_t sub, bool write) {
   return SdoAbort::kNone;
 }
 
+SdoAbort SdoServer::CheckLength(uint32_t size) const {
+  const uint32_t fixed = FixedSize(entry_->type);
+  if (fixed == 0 || size == fixed) return SdoAbort::kNone;
+  return size > fixed ? SdoAbort::kTooLong : SdoAbort::kTooShort;
+}
+
 SdoAbort SdoServer::Deliver(const uint8_t* data, uint32_t size) {
   if (size_known_ && offset_ + size > size_) return SdoAbort::kTooLong;
   if (crc_on_) crc_ = Crc16Update(crc_, data, size);
   offset_ += size;
   if (domain_) return values_->DomainWriteData(data, size);
-  if (small_len_ + size > kSmallCapacity) return SdoAbort::kTooLong;
+  const uint32_t fixed = FixedSize(entry_->type);
+  if (small_len_ + size > (fixed != 0 ? fixed : kSmallCapacity)) return SdoAbort::kTooLong;
   for (uint32_t i = 0; i < size; ++i) small_[small_len_++] = data[i];
   return SdoAbort::kNone;
 }
@@ -143,8 +151,8 @@ SdoAbort SdoServer::FinishDownload() {
     domain_ = false;  // ended, successfully or not
     return code;
   }
-  const uint32_t fixed = FixedSize(entry_->type);
-  if (fixed != 0 && small_len_ != fixed) return SdoAbort::kTypeMismatch;
+  const SdoAbort length = CheckLength(small_len_);
+  if (Failed(length)) return length;
   return values_->Write(*entry_, small_, small_len_);
 }
 
@@ -163,8 +171,9 @@ void SdoServer::OnFrame(const CanFrame& f, uint32_t now_ms) {
       if (!Failed(code)) code = SdoAbort::kGeneral;  // 0 is no abort code: still a failure
       ++aborts_;
       last_abort_ = code;
+      last_abort_origin_ = AbortOrigin::kClient;
       OpenDiscardWindow();
-      EndTransfer(code);
+      EndTransfer(code, AbortOrigin::kClient);
     }
     return;
   }
@@ -239,7 +248,7 @@ void SdoServer::InitiateDownload(const CanFrame& f) {
       if (!Failed(c)) c = values_->EndDomainWrite(SdoAbort::kNone);
       if (Failed(c)) return Abort(c);
     } else {
-      if (fixed != 0 && n != fixed) return Abort(SdoAbort::kTypeMismatch);
+      if (const SdoAbort length = CheckLength(n); Failed(length)) return Abort(length);
       const SdoAbort c = values_->Write(*entry_, f.data + 4, n);
       if (Failed(c)) return Abort(c);
     }
@@ -260,7 +269,10 @@ SdoAbort SdoServer::BeginTransfer(bool size_known, uint32_t size) {
     domain_ = !Failed(c);
     return c;
   }
-  return size_known_ && size_ > kSmallCapacity ? SdoAbort::kTooLong : SdoAbort::kNone;
+  // A fixed-size value announced with the wrong size is refused at once, on every path.
+  if (!size_known_) return SdoAbort::kNone;
+  if (FixedSize(entry_->type) != 0) return CheckLength(size_);
+  return size_ > kSmallCapacity ? SdoAbort::kTooLong : SdoAbort::kNone;
 }
 
 void SdoServer::DownloadSegment(const CanFrame& f) {

@@ -277,12 +277,12 @@ TEST_F(Bench, ActiveTableSurvivesAResetAndBadUploads) {
   corrupt[60] ^= 0x01;
   ASSERT_TRUE(Upload(corrupt).ok());  // the transfer itself is fine
   EXPECT_EQ(canopen_client::AbortOf(Command(TableCommand::kVerify)),
-            canopen::SdoAbort::kInvalidValue);
+            canopen::SdoAbort::kCannotStore);
   EXPECT_EQ(canopen_client::AbortOf(Command(TableCommand::kActivate)), canopen::SdoAbort::kNoData);
   EXPECT_EQ(canopen::DecodeTableStatus(Read(ObjectId::kTableStatus)).error, Error::kImageBadCrc);
   ASSERT_TRUE(Upload(UniformImage(9, 3, 500000)).ok());
   EXPECT_EQ(canopen_client::AbortOf(Command(TableCommand::kVerify)),
-            canopen::SdoAbort::kInvalidValue);
+            canopen::SdoAbort::kCannotStore);
   EXPECT_EQ(canopen::DecodeTableStatus(Read(ObjectId::kTableStatus)).error,
             Error::kConfigResolutionMismatch);
   EXPECT_EQ(Read(ObjectId::kActiveTableCrc), crc);
@@ -428,20 +428,33 @@ TEST_F(Bench, TableStatusSaysATransferWasAbortedOrFailedItsCrc) {
   Boot();
   io_.SetInput(InputLine::kWriteEnable, true);
   Step(100);
-  // Block download of 20 bytes, aborted by the client after the first segment.
-  EXPECT_EQ(Exchange("C600210014000000"), Frames{"590#A40021007F000000"});
-  EXPECT_EQ(Exchange("0130313233343536"), Frames{});
-  EXPECT_EQ(Exchange("8000210000000008"), Frames{});
-  // Result 7 (transfer) << 1 = 0x0E, failed 0x04, error 80 = 0x50.
-  EXPECT_EQ(Exchange("4002210000000000"), Frames{"590#430221000E045000"});
+  // Block download of 20 bytes, aborted by the client after the first segment, with its own
+  // timeout (0x05040000) and CRC (0x05040004) codes and a general one: each recorded as the
+  // client's abort (result 7 << 1 = 0x0E, failed 0x04, error 83 = 0x53) with its code in 0x210A,
+  // and no EMCY (the board detected nothing).
+  for (const char* code : {"00000405", "04000405", "00000008"}) {
+    EXPECT_EQ(Exchange("C600210014000000"), Frames{"590#A40021007F000000"});
+    EXPECT_EQ(Exchange("0130313233343536"), Frames{});
+    EXPECT_EQ(Exchange(std::string("80002100") + code), Frames{});
+    Step(2000);  // 200 ms: the discard window closes, an EMCY would have left
+    EXPECT_EQ(Exchange("4002210000000000"), Frames{"590#430221000E045300"});
+    EXPECT_EQ(Exchange("400A210000000000"), Frames{std::string("590#430A2100") + code});
+  }
+  EXPECT_EQ(Exchange("4001100000000000"), Frames{"590#4F01100000000000"});  // 0x1001 clear
+  EXPECT_EQ(Exchange("4003100000000000"), Frames{"590#4F03100000000000"});  // no history
+  EXPECT_EQ(CountEmcy(canopen::kEmcySdoTransferFailed), 0);
+  EXPECT_EQ(sent_.size() - std::count_if(sent_.begin(), sent_.end(),
+                                         [](const CanFrame& f) { return f.id != 0x80u + kNode; }),
+            0u);  // no EMCY of any code
   // The same 20 bytes with a wrong CRC-16 (0x34F1 is right).
   EXPECT_EQ(Exchange("C600210014000000"), Frames{"590#A40021007F000000"});
   EXPECT_EQ(Exchange("0130313233343536"), Frames{});
   EXPECT_EQ(Exchange("0237383941424344"), Frames{});
   EXPECT_EQ(Exchange("8345464748494A00"), Frames{"590#A2037F0000000000"});
   EXPECT_EQ(Exchange("C5F1350000000000"), Frames{"590#8000210004000405"});
-  // Result 3 (CRC) << 1 = 0x06, failed 0x04, error 81 = 0x51.
+  // Result 3 (CRC) << 1 = 0x06, failed 0x04, error 81 = 0x51; the board's own abort code.
   EXPECT_EQ(Exchange("4002210000000000"), Frames{"590#4302210006045100"});
+  EXPECT_EQ(Exchange("400A210000000000"), Frames{"590#430A210004000405"});
   // Silence: the board times the transfer out (0x05040000), error 82 = 0x52.
   EXPECT_EQ(Exchange("C600210014000000"), Frames{"590#A40021007F000000"});
   EXPECT_EQ(Exchange("0130313233343536"), Frames{});
@@ -451,6 +464,65 @@ TEST_F(Bench, TableStatusSaysATransferWasAbortedOrFailedItsCrc) {
   EXPECT_TRUE(Contains(quiet, "590#A2017F0000000000"));  // re-ack of the partial sub-block
   EXPECT_TRUE(Contains(quiet, "590#8000210000000405"));  // timed out
   EXPECT_EQ(Exchange("4002210000000000"), Frames{"590#430221000E045200"});
+}
+
+// Verification (0x2101 = 4) refused says what is wrong with the staged data (CiA 301 7.2.4.3.17),
+// never 0x06090030 (4 is a valid value of 0x2101): nothing complete staged 0x08000024, an image
+// that fails the checks 0x08000020 (with EMCY 0x6300 and the error in 0x2102).
+TEST_F(Bench, VerifyRefusalsSayWhatIsWrongWithTheStagedData) {
+  Boot();
+  io_.SetInput(InputLine::kWriteEnable, true);
+  Step(100);
+  EXPECT_EQ(Exchange("2F01210004000000"), Frames{"590#8001210024000008"});
+  EXPECT_EQ(CountEmcy(canopen::kEmcyRefused), 1);
+  // An upload the client aborted is no image either.
+  EXPECT_EQ(Exchange("C600210014000000"), Frames{"590#A40021007F000000"});
+  EXPECT_EQ(Exchange("0130313233343536"), Frames{});
+  EXPECT_EQ(Exchange("8000210000000405"), Frames{});
+  Step(2000);
+  EXPECT_EQ(Exchange("2F01210004000000"), Frames{"590#8001210024000008"});
+  // 20 bytes that are no image: complete, then refused by the checks.
+  EXPECT_EQ(Exchange("C600210014000000"), Frames{"590#A40021007F000000"});
+  EXPECT_EQ(Exchange("0130313233343536"), Frames{});
+  EXPECT_EQ(Exchange("0237383941424344"), Frames{});
+  EXPECT_EQ(Exchange("8345464748494A00"), Frames{"590#A2037F0000000000"});
+  EXPECT_EQ(Exchange("C5F1340000000000"), Frames{"590#A100000000000000"});
+  EXPECT_EQ(Exchange("2F01210004000000"), Frames{"590#8001210020000008"});
+  Step(1000);  // the EMCY pair leaves as the inhibit time (0x1015) allows
+  Exchange("4000100000000000");
+  EXPECT_EQ(CountEmcy(canopen::kEmcyTableInvalid), 1);
+  EXPECT_EQ(canopen::DecodeTableStatus(Read(ObjectId::kTableStatus)).staged,
+            canopen::StagedState::kFailed);
+  EXPECT_EQ(Exchange("400A210000000000"), Frames{"590#430A210000000000"});  // no transfer broke
+}
+
+// The PC tool explains a client's abort with its code (0x2102 error 83, 0x210A), and a refused
+// verification as a problem of the staged data, not as write protection.
+TEST_F(Bench, StagingReasonsNameTheClientsAbortCodeAndTheVerifyRefusal) {
+  Boot();
+  io_.SetInput(InputLine::kWriteEnable, true);
+  Step(100);
+  EXPECT_EQ(Exchange("C600210014000000"), Frames{"590#A40021007F000000"});
+  EXPECT_EQ(Exchange("0130313233343536"), Frames{});
+  EXPECT_EQ(Exchange("8000210000000405"), Frames{});
+  Step(2000);
+  const canopen_client::FrameLink link = Link();
+  canopen_client::NodeObjects node(link, kNode);
+  EXPECT_EQ(canopen_client::StagingFailureReason(node),
+            "the transfer was aborted by the client (its abort code: 0x210A) "
+            "(kTransferAbortedByClient): aborted by the client, code 0x05040000 (SDO protocol "
+            "timed out)");
+  ASSERT_TRUE(Upload(UniformImage(9, 0x4F, 500000)).ok());  // for another board
+  const canopen_client::SdoOutcome r =
+      canopen_client::WriteTableCommand(node, TableCommand::kVerify);
+  ASSERT_FALSE(r.ok());
+  EXPECT_EQ(r.error().abort, canopen::SdoAbort::kCannotStore);
+  EXPECT_EQ(r.error().message.rfind("verifying on the board (0x2101 = 4): ", 0), 0u)
+      << r.error().message;
+  EXPECT_NE(r.error().message.find("; the staged image is not valid for this board"),
+            std::string::npos)
+      << r.error().message;
+  EXPECT_EQ(r.error().message.find("write-protected"), std::string::npos) << r.error().message;
 }
 
 // 0x2105-0x2107 describe what is staged now. A verified staged image is in flash: after a reset
@@ -527,7 +599,7 @@ TEST_F(Bench, StagedImageSurvivesAResetAndItsIdsDoNotOutliveIt) {
   // an upload cut by an abort.
   ASSERT_TRUE(Upload(UniformImage(9, 0x4F, 500000)).ok());
   EXPECT_EQ(canopen_client::AbortOf(Command(TableCommand::kVerify)),
-            canopen::SdoAbort::kInvalidValue);
+            canopen::SdoAbort::kCannotStore);
   EXPECT_TRUE(Contains(Nmt(0x81), "710#00"));
   EXPECT_EQ(Exchange("4002210000000000"), empty);
   EXPECT_EQ(Exchange("C600210014000000"), Frames{"590#A40021007F000000"});

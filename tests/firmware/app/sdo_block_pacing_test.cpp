@@ -125,7 +125,7 @@ class TableValue : public canopen::ObjectValues {
     }
     return SdoAbort::kNone;
   }
-  SdoAbort DoEndDomainWrite(SdoAbort outcome) override {
+  SdoAbort DoEndDomainWrite(SdoAbort outcome, canopen::AbortOrigin) override {
     if (canopen::Failed(outcome)) {
       store_->AbandonUpload(Error::kTransferAborted);
       return SdoAbort::kNone;

@@ -71,8 +71,10 @@ TEST_F(SdoServerTest, ExpeditedDownloadAndUpload) {
   EXPECT_EQ(Send("2B171000E8030000"), Frames{"590#6017100000000000"});  // 0x1017 = 1000 ms
   EXPECT_EQ(node_.heartbeat_ms(), 1000);
   EXPECT_EQ(Send("4017100000000000"), Frames{"590#4B171000E8030000"});
-  // Wrong size for a U16: 4 bytes.
-  EXPECT_EQ(Send("23171000E8030000"), Frames{"590#8017100010000706"});
+  // Wrong size for a U16: 4 bytes is too long (0x06070012), 1 byte too short (0x06070013).
+  EXPECT_EQ(Send("23171000E8030000"), Frames{"590#8017100012000706"});
+  EXPECT_EQ(Send("2F171000E8000000"), Frames{"590#8017100013000706"});
+  EXPECT_EQ(node_.heartbeat_ms(), 1000);
   // Read-only, write-only, missing object, missing sub-index.
   EXPECT_EQ(Send("2300100001000000"), Frames{"590#8000100002000106"});
   EXPECT_EQ(Send("4010210000000000"), Frames{"590#8010210001000106"});
@@ -196,6 +198,70 @@ TEST_F(SdoServerTest, ClientAbortMidBlockEndsTheTransferSilently) {
   EXPECT_FALSE(node_.sdo().busy());
   // A new transfer works afterwards.
   EXPECT_EQ(Send("4017100000000000").size(), 1u);
+}
+
+// A client's abort is the client's finding, whatever its code: its own timeout (0x05040000) or
+// CRC check (0x05040004) is no error of this node. The application hears the code and that the
+// client sent it; no EMCY, nothing in 0x1001 / 0x1003. The same codes sent by the node (it timed
+// the transfer out, the CRC it computed differs) are reported by EMCY 0xFF11.
+TEST_F(SdoServerTest, AClientsAbortRaisesNoEmcyWhateverItsCode) {
+  for (const char* abort : {"8000210000000405", "8000210004000405", "8000210021000008"}) {
+    EXPECT_EQ(Send("C600210014000000"), Frames{"590#A40021007F000000"});
+    EXPECT_EQ(Send("0130313233343536"), Frames{});
+    EXPECT_EQ(Send(abort), Frames{}) << abort;
+    EXPECT_EQ(values_.last_end_origin, canopen::AbortOrigin::kClient) << abort;
+    EXPECT_EQ(node_.sdo().last_abort_origin(), canopen::AbortOrigin::kClient);
+    Advance(200);  // the discard window closes; still nothing to send
+    EXPECT_EQ(Drain(), Frames{}) << abort;
+  }
+  EXPECT_EQ(values_.last_end, canopen::SdoAbort::kLocalControl);
+  EXPECT_EQ(values_.ends_failed, 3);
+  EXPECT_EQ(node_.error_register(), 0);
+  EXPECT_EQ(Send("4003100000000000"), Frames{"590#4F03100000000000"});  // 0x1003: no history
+  // The node's own timeout: reported.
+  Send("C600210014000000");
+  Send("0130313233343536");
+  Advance(150);
+  Drain();
+  Advance(1000);
+  EXPECT_EQ(Drain(),
+            (Frames{"090#11FF110000040500", "090#0000000000000000", "590#8000210000000405"}));
+  EXPECT_EQ(values_.last_end_origin, canopen::AbortOrigin::kServer);
+}
+
+// A fixed-size value written with the wrong length is refused with 0x06070012 (too long) or
+// 0x06070013 (too short) on every download path, never the generic 0x06070010; with the size
+// announced, at the initiate frame.
+TEST_F(SdoServerTest, LengthErrorsAreTooLongOrTooShortOnEveryWritePath) {
+  // Expedited without the size (e = 1, s = 0): the object's own size is taken.
+  EXPECT_EQ(Send("22171000F4010000"), Frames{"590#6017100000000000"});
+  EXPECT_EQ(node_.heartbeat_ms(), 500);
+  // Segmented, size announced: 4 and 1 bytes for the U16 0x1017.
+  EXPECT_EQ(Send("2117100004000000"), Frames{"590#8017100012000706"});
+  EXPECT_EQ(Send("2117100001000000"), Frames{"590#8017100013000706"});
+  // Segmented without the size: 3 bytes in the last segment are too long, 1 too short.
+  EXPECT_EQ(Send("2017100000000000"), Frames{"590#6017100000000000"});
+  EXPECT_EQ(Send("09E8030000000000"), Frames{"590#8017100012000706"});
+  EXPECT_EQ(Send("2017100000000000"), Frames{"590#6017100000000000"});
+  EXPECT_EQ(Send("0DE8000000000000"), Frames{"590#8017100013000706"});
+  // Block, size announced: refused at the initiate frame.
+  EXPECT_EQ(Send("C617100004000000"), Frames{"590#8017100012000706"});
+  EXPECT_EQ(Send("C617100001000000"), Frames{"590#8017100013000706"});
+  // Block without the size or CRC (C0): one segment of 7 bytes is too long at once; 1 byte (6
+  // unused) too short at the end frame.
+  EXPECT_EQ(Send("C017100000000000"), Frames{"590#A01710007F000000"});
+  EXPECT_EQ(Send("81E8030000000000"), Frames{"590#A2017F0000000000"});
+  EXPECT_EQ(Send("C100000000000000"), Frames{"590#8017100012000706"});
+  EXPECT_EQ(Send("C017100000000000"), Frames{"590#A01710007F000000"});
+  EXPECT_EQ(Send("81E8000000000000"), Frames{"590#A2017F0000000000"});
+  EXPECT_EQ(Send("D900000000000000"), Frames{"590#8017100013000706"});
+  // The right length on the block path works.
+  EXPECT_EQ(Send("C017100000000000"), Frames{"590#A01710007F000000"});
+  EXPECT_EQ(Send("81E8030000000000"), Frames{"590#A2017F0000000000"});
+  EXPECT_EQ(Send("D500000000000000"), Frames{"590#A100000000000000"});
+  EXPECT_EQ(node_.heartbeat_ms(), 1000);
+  // Every abort above was the node's finding about the request: EMCY only for protocol aborts.
+  EXPECT_EQ(node_.error_register(), 0);
 }
 
 // A block segment as CiA 301 7.2.4.3.14 lays it out: byte 0 = c << 7 | seqno, then 7 data bytes

@@ -224,8 +224,8 @@ TEST_F(CanCommands, SdoReadsWritesAndTheBoardsReasons) {
   r = Run({"sdo", "write", "2101:0", "4"});  // verify with nothing staged
   EXPECT_EQ(r.code, 1);
   EXPECT_TRUE(Contains(r.err,
-                       "writing 2101:0: node 16 refused 2101:00: abort 0x06090030 "
-                       "(invalid value for parameter); the board says: nothing is staged"))
+                       "writing 2101:0: node 16 refused 2101:00: abort 0x08000024 "
+                       "(no data available); the board says: nothing is staged"))
       << r.err;
   r = Run({"sdo", "read", "zz"});
   EXPECT_EQ(r.code, 2);

@@ -94,6 +94,14 @@ void WriteEds(std::ostream& out, const EdsInfo& info) {
       << "\nFileVersion=1\nFileRevision=0\nEDSVersion=4.0\n"
          "Description=volcomp: 3-D volumetric error compensation co-processor\n"
          "CreatedBy=volcomp\n\n";
+  // CiA 306 [Comments]: 0x1009 is the one identity value that differs between the board and its
+  // stand-ins (canopen/identity.hpp).
+  out << "[Comments]\nLines=2\nLine1=0x1009 Manufacturer hardware version (ro): "
+      << info.hardware_version << " on the volcomp board (the DefaultValue);\nLine2=\""
+      << canopen::HardwareVersion(canopen::Hardware::kLinuxBoard)
+      << "\" on a Linux board (volcomp-fw-linux), \""
+      << canopen::HardwareVersion(canopen::Hardware::kSimulator)
+      << "\" on the simulated node (volcomp-sim).\n\n";
   const ObjectEntry* vendor = canopen::FindEntry(0x1018, 1);
   const ObjectEntry* product = canopen::FindEntry(0x1018, 2);
   const ObjectEntry* revision = canopen::FindEntry(0x1018, 3);

@@ -25,6 +25,19 @@ std::string AbortHint(canopen::SdoAbort abort_code) {
   }
 }
 
+std::string VerifyHint(canopen::SdoAbort abort_code) {
+  switch (abort_code) {
+    case canopen::SdoAbort::kCannotStore:
+      return "the staged image is not valid for this board: upload a table built for it";
+    case canopen::SdoAbort::kDeviceState:
+      return "an upload is in progress: wait for it to end";
+    case canopen::SdoAbort::kNoData:
+      return "nothing complete is staged: upload a table first";
+    default:
+      return "";
+  }
+}
+
 SdoFailure Explain(SdoFailure f, const std::string& step) {
   const std::string hint = AbortHint(f.abort);
   f.message = step + ": " + f.message + (hint.empty() ? "" : "; " + hint);
@@ -37,7 +50,15 @@ std::string StagingFailureReason(NodeObjects& node) {
   const canopen::TableStatus st = canopen::DecodeTableStatus(*word);
   if (st.staged == canopen::StagedState::kEmpty) return "nothing is staged (upload a table first)";
   if (st.staged != canopen::StagedState::kFailed || st.error == Error::kOk) return "";
-  return std::string(ErrorText(st.error)) + " (" + ErrorName(st.error) + ")";
+  std::string why = std::string(ErrorText(st.error)) + " (" + ErrorName(st.error) + ")";
+  if (st.error == Error::kTransferAbortedByClient) {
+    // The client's own abort code (0x210A): what the client saw, not what the board found.
+    if (const SdoExpected<uint32_t> code = node.Read(ObjectId::kTransferAbortCode); code.ok()) {
+      why += ": aborted by the client, code " + Hex32(*code) + " (" +
+             canopen::SdoAbortText(canopen::AbortFromCode(*code)) + ")";
+    }
+  }
+  return why;
 }
 
 std::string SettingsRefusalReason(NodeObjects& node) {
@@ -84,6 +105,13 @@ SdoOutcome WriteTableCommand(NodeObjects& node, TableCommand command) {
   SdoOutcome r = node.Write(ObjectId::kTableControl, canopen::Value(command));
   if (command == TableCommand::kVerify || command == TableCommand::kActivate) {
     r = WithStagingReason(node, std::move(r));
+  }
+  if (command == TableCommand::kVerify && !r.ok()) {
+    // Verification needs no write access: its refusals say what is wrong with the staged data.
+    SdoFailure f = r.error();
+    const std::string hint = VerifyHint(f.abort);
+    f.message = TableCommandStep(command) + ": " + f.message + (hint.empty() ? "" : "; " + hint);
+    return Fail(std::move(f));
   }
   return Explain(std::move(r), TableCommandStep(command));
 }

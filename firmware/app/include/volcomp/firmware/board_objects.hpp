@@ -14,6 +14,7 @@
 #include <cstdint>
 
 #include "volcomp/canopen/board_protocol.hpp"
+#include "volcomp/canopen/identity.hpp"
 #include "volcomp/canopen/node.hpp"
 #include "volcomp/canopen/object_values.hpp"
 #include "volcomp/config/board_settings.hpp"
@@ -25,10 +26,11 @@
 
 namespace volcomp::firmware {
 
+// 0x1008-0x100A (canopen/identity.hpp): a port names its hardware with canopen::HardwareVersion.
 struct IdentityInfo {
-  const char* device_name = "volcomp";
-  const char* hardware_version = "host";
-  const char* software_version = "0.1.0";
+  const char* device_name = canopen::kDeviceNameText;
+  const char* hardware_version = canopen::HardwareVersion(canopen::Hardware::kBoard);
+  const char* software_version = canopen::kSoftwareVersionText;
   uint32_t serial_number = 0;
 };
 
@@ -69,6 +71,9 @@ class BoardObjects : public canopen::ObjectValues {
   uint32_t staged_bytes() const { return parts_.tables->staged_bytes(); }
   uint32_t staged_table_id() const { return parts_.tables->staged_table_id(); }
   uint32_t table_bank_size() const { return parts_.tables->capacity(); }
+  /// 0x210A: the SDO abort code that ended the last table transfer (the client's or the
+  /// board's), while 0x2102 reports that transfer's failure; 0 otherwise.
+  uint32_t transfer_abort_code() const;
   uint8_t write_access() const { return parts_.policy->writable() ? 1 : 0; }
   uint8_t compensation_enable() const { return parts_.policy->bus_enable() ? 1 : 0; }
   /// 0x2122 (canopen::EncodeDeviceState).
@@ -121,8 +126,8 @@ class BoardObjects : public canopen::ObjectValues {
                             uint32_t size) override;
   canopen::SdoAbort DoBeginDomainWrite(const canopen::ObjectEntry& e, uint32_t size) override;
   canopen::SdoAbort DoDomainWriteData(const uint8_t* data, uint32_t size) override;
-  canopen::SdoAbort DoEndDomainWrite(canopen::SdoAbort outcome) override;
-  // Table uploads are paced: the store programs flash between sub-blocks.
+  canopen::SdoAbort DoEndDomainWrite(canopen::SdoAbort outcome,
+                                     canopen::AbortOrigin origin) override;
   uint32_t DoDomainWriteWindow() override { return parts_.tables->upload_window(); }
   canopen::SdoAbort DoDomainWriteFlush(bool* done) override;
 
@@ -144,7 +149,8 @@ class BoardObjects : public canopen::ObjectValues {
   bool settings_pending_ = false;  // pending_ differs from the settings in force
   uint8_t last_command_ = 0;
   uint32_t refused_ = 0;
-  uint32_t now_ms_ = 0;                          // at the last WatchLimits()
+  canopen::SdoAbort transfer_abort_ = canopen::SdoAbort::kNone;  // of the last broken transfer
+  uint32_t now_ms_ = 0;                                          // at the last WatchLimits()
   uint32_t seen_clamped_[table::kMaxAxes] = {};  // counters at the last WatchLimits()
   uint32_t seen_limited_[table::kMaxAxes] = {};
   uint32_t clamped_at_ms_[table::kMaxAxes] = {};  // when they last advanced

@@ -68,6 +68,8 @@ class TableStore {
   StagedState staged_state() const { return state_; }
   /// Bytes received (receiving, failed) or staged; 0 when nothing is staged.
   uint32_t staged_bytes() const { return state_ == StagedState::kEmpty ? 0 : bank_.staged_size(); }
+  /// The size announced for the upload in progress or last (0 = not announced).
+  uint32_t expected_size() const { return expected_size_; }
   uint32_t staged_crc32() const { return staged_crc_; }
   uint32_t staged_table_id() const { return staged_id_; }
   const uint8_t* staged_data() const { return bank_.staged_data(); }

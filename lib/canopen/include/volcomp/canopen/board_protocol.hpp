@@ -125,6 +125,7 @@ constexpr TableResult TableResultOf(Error e) {
       return TableResult::kCrc;
     case Error::kTransferAborted:
     case Error::kTransferTimeout:
+    case Error::kTransferAbortedByClient:
       return TableResult::kTransfer;
     case Error::kConfigAxisMismatch:
     case Error::kConfigResolutionMismatch:
@@ -139,8 +140,11 @@ constexpr TableResult TableResultOf(Error e) {
   }
 }
 
-/// The staging error of a table transfer that ended with SDO abort `a` (sent or received).
-constexpr Error TransferError(SdoAbort a) {
+/// The staging error of a table transfer that ended with SDO abort `a` sent by `origin`. A
+/// client's abort is recorded as such whatever its code (a client's 0x05040000 is its own
+/// timeout, not the board's; its code is in 0x210A).
+constexpr Error TransferError(SdoAbort a, AbortOrigin origin) {
+  if (origin == AbortOrigin::kClient) return Error::kTransferAbortedByClient;
   switch (a) {
     case SdoAbort::kCrc:
       return Error::kTransferCrcMismatch;

@@ -121,7 +121,7 @@ class Node : private ObjectValues {
   SdoAbort DoWrite(const ObjectEntry& e, const uint8_t* data, uint32_t size) override;
   SdoAbort DoBeginDomainWrite(const ObjectEntry& e, uint32_t size) override;
   SdoAbort DoDomainWriteData(const uint8_t* data, uint32_t size) override;
-  SdoAbort DoEndDomainWrite(SdoAbort outcome) override;
+  SdoAbort DoEndDomainWrite(SdoAbort outcome, AbortOrigin origin) override;
   uint32_t DoDomainWriteWindow() override;
   SdoAbort DoDomainWriteFlush(bool* done) override;
   bool ReadCommunication(const ObjectEntry& e, uint32_t* value) const;

@@ -30,17 +30,20 @@ class ObjectValues {
   }
   /// Streams a DOMAIN write: BeginDomainWrite (size 0 = not indicated), DomainWriteData in order,
   /// then EndDomainWrite(SdoAbort::kNone) when the transfer completed, or EndDomainWrite(code)
-  /// with the abort code that ended it (sent by the server: CRC, size, timeout, ...; or received
-  /// from the client). After a failed transfer the implementation must discard what it received;
-  /// the code tells it why (for its diagnostics). The return value of a failed transfer's
-  /// EndDomainWrite is ignored.
+  /// with the abort code that ended it and who sent it (`origin`: the server's own abort for a
+  /// CRC, size or timeout failure, or the client's abort frame with whatever code it chose).
+  /// After a failed transfer the implementation must discard what it received; code and origin
+  /// tell it why (for its diagnostics). The return value of a failed transfer's EndDomainWrite is
+  /// ignored.
   SdoAbort BeginDomainWrite(const ObjectEntry& e, uint32_t size) {
     return DoBeginDomainWrite(e, size);
   }
   SdoAbort DomainWriteData(const uint8_t* data, uint32_t size) {
     return DoDomainWriteData(data, size);
   }
-  SdoAbort EndDomainWrite(SdoAbort outcome) { return DoEndDomainWrite(outcome); }
+  SdoAbort EndDomainWrite(SdoAbort outcome, AbortOrigin origin = AbortOrigin::kServer) {
+    return DoEndDomainWrite(outcome, origin);
+  }
   /// Flow control of a DOMAIN write whose data takes time to make durable (flash): the most bytes
   /// DomainWriteData() accepts between two complete flushes without doing that slow work itself
   /// (0 = no limit: the value needs no pacing). Asked once per block download, after
@@ -64,7 +67,7 @@ class ObjectValues {
   virtual SdoAbort DoWrite(const ObjectEntry& e, const uint8_t* data, uint32_t size) = 0;
   virtual SdoAbort DoBeginDomainWrite(const ObjectEntry& e, uint32_t size) = 0;
   virtual SdoAbort DoDomainWriteData(const uint8_t* data, uint32_t size) = 0;
-  virtual SdoAbort DoEndDomainWrite(SdoAbort outcome) = 0;
+  virtual SdoAbort DoEndDomainWrite(SdoAbort outcome, AbortOrigin origin) = 0;
   virtual uint32_t DoDomainWriteWindow() { return 0; }
   virtual SdoAbort DoDomainWriteFlush(bool* done) {
     *done = true;

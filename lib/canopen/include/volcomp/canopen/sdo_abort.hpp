@@ -36,6 +36,11 @@ enum class [[nodiscard]] SdoAbort : uint32_t{
     kNoData = 0x08000024,             // no data available
 };
 
+/// Which side ended a transfer with an abort: the server (this node detected the failure: a
+/// timeout, CRC, sequence or length error, a refusal) or the client (its abort frame: it reports
+/// what the client saw, not something this node detected).
+enum class AbortOrigin : uint8_t { kServer, kClient };
+
 /// The code on the wire (bytes 4..7 of an abort frame, little-endian).
 constexpr uint32_t Code(SdoAbort a) { return static_cast<uint32_t>(a); }
 /// An abort code read from the wire.

@@ -33,8 +33,9 @@ class SdoServer {
   /// Transfers ended by an abort (sent or received), since Init().
   uint32_t aborts() const { return aborts_; }
   uint32_t malformed() const { return malformed_; }
-  /// Abort code of the last aborted transfer (kNone if none).
+  /// Abort code of the last aborted transfer (kNone if none), and who sent it.
   SdoAbort last_abort() const { return last_abort_; }
+  AbortOrigin last_abort_origin() const { return last_abort_origin_; }
 
  private:
   enum class State : uint8_t {
@@ -74,8 +75,11 @@ class SdoServer {
   void RequestBlockAck();
   void Respond(uint8_t cmd, const uint8_t* payload4 = nullptr);
   void Abort(SdoAbort code);
-  // Ends the transfer in progress with `outcome` (kNone = completed).
-  void EndTransfer(SdoAbort outcome);
+  // Ends the transfer in progress with `outcome` (kNone = completed) sent by `origin`.
+  void EndTransfer(SdoAbort outcome, AbortOrigin origin = AbortOrigin::kServer);
+  // The abort (sent or received) that ends a transfer a download of a fixed-size value would make
+  // `size` bytes long: kNone when it fits, else too long / too short (CiA 301 0x06070012/13).
+  SdoAbort CheckLength(uint32_t size) const;
   // On an abort inside a block download sub-block: drop what follows of that sub-block.
   void OpenDiscardWindow();
   // True (and the frame is dropped) when byte 0 `cmd` continues the aborted sub-block.
@@ -129,6 +133,7 @@ class SdoServer {
   uint32_t aborts_ = 0;
   uint32_t malformed_ = 0;
   SdoAbort last_abort_ = SdoAbort::kNone;
+  AbortOrigin last_abort_origin_ = AbortOrigin::kServer;
 };
 
 }  // namespace volcomp::canopen

@@ -6,15 +6,18 @@
 #include <ostream>
 #include <string>
 
+#include "volcomp/canopen/identity.hpp"
+
 namespace volcomp::canopen_client {
 
 struct EdsInfo {
   std::string file_name = "volcomp.eds";
   std::string vendor_name = "volcomp project";
   std::string product_name = "volcomp volumetric compensation co-processor";
-  std::string device_name = "volcomp";     // 0x1008 default
-  std::string hardware_version = "1.0";    // 0x1009 default
-  std::string software_version = "0.1.0";  // 0x100A default
+  std::string device_name = canopen::kDeviceNameText;  // 0x1008 default
+  // 0x1009 default (the board's); the other hardware's values go to [Comments]
+  std::string hardware_version = canopen::HardwareVersion(canopen::Hardware::kBoard);
+  std::string software_version = canopen::kSoftwareVersionText;  // 0x100A default
 };
 
 void WriteEds(std::ostream& out, const EdsInfo& info = EdsInfo());

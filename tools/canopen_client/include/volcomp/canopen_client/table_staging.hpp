@@ -22,6 +22,9 @@ namespace volcomp::canopen_client {
 /// What to do about the board's common refusals (write-protected, not referenced / moving, nothing
 /// staged); empty for other codes.
 std::string AbortHint(canopen::SdoAbort abort_code);
+/// What a refused verification (0x2101 = 4) means: 0x08000020 the staged image fails the board's
+/// checks, 0x08000022 an upload is in progress, 0x08000024 nothing complete is staged.
+std::string VerifyHint(canopen::SdoAbort abort_code);
 
 /// `f` with its message prefixed by `step` and followed by what to do ("step: reason; hint").
 SdoFailure Explain(SdoFailure f, const std::string& step);
