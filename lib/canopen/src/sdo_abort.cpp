@@ -37,6 +37,10 @@ const char* SdoAbortText(SdoAbort a) {
       return "data type does not match, length too high";
     case SdoAbort::kTooShort:
       return "data type does not match, length too low";
+    case SdoAbort::kCannotMap:
+      return "object cannot be mapped to the PDO";
+    case SdoAbort::kPdoLength:
+      return "number and length of mapped objects exceed the PDO length";
     case SdoAbort::kNoSubIndex:
       return "sub-index does not exist";
     case SdoAbort::kInvalidValue:

@@ -10,7 +10,7 @@
 
 namespace volcomp::canopen {
 
-inline constexpr const char* kDeviceNameText = "volcomp";   // 0x1008
+inline constexpr const char* kDeviceNameText = "volcomp";     // 0x1008
 inline constexpr const char* kSoftwareVersionText = "0.1.0";  // 0x100A
 
 /// What the firmware runs on (0x1009).

@@ -25,6 +25,8 @@ enum class [[nodiscard]] SdoAbort : uint32_t{
     kTypeMismatch = 0x06070010,       // data type does not match, length does not match
     kTooLong = 0x06070012,            // data type does not match, length too high
     kTooShort = 0x06070013,           // data type does not match, length too low
+    kCannotMap = 0x06040041,          // object cannot be mapped to the PDO
+    kPdoLength = 0x06040042,          // number and length of mapped objects exceed the PDO
     kNoSubIndex = 0x06090011,         // sub-index does not exist
     kInvalidValue = 0x06090030,       // invalid value for parameter (download only)
     kValueTooHigh = 0x06090031,       // value of parameter written too high
