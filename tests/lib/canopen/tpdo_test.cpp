@@ -1,6 +1,6 @@
 // Transmit PDO: frame-level timing on the node's millisecond clock (change with inhibit time,
-// event timer), NMT state and valid bit, mapping changes and mapping checks (CiA 301 7.2.2, 7.5.2.35
-// and 7.5.2.36).
+// event timer), NMT state and valid bit, mapping changes and mapping checks (CiA
+// 301 7.2.2, 7.5.2.35 and 7.5.2.36).
 #include "volcomp/canopen/tpdo.hpp"
 
 #include <gtest/gtest.h>

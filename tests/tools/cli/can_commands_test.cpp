@@ -133,7 +133,8 @@ TEST_F(CanCommands, StatusTextIsALayoutOfItsJson) {
     EXPECT_TRUE(Contains(text.out, head + um)) << head << um << "\n" << text.out;
     // The µm are the steps at the axis's units per step (an outside check of the conversion).
     EXPECT_NEAR(x.get("max_correction_um")->number,
-                x.get("max_correction_steps")->integer * x.get("units_per_step")->number * 1000,
+                static_cast<double>(x.get("max_correction_steps")->integer) *
+                    x.get("units_per_step")->number * 1000,
                 1e-9);
   }
   EXPECT_EQ(d.get("counters")->object.size(), 10u);

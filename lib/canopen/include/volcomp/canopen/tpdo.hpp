@@ -25,7 +25,7 @@ constexpr uint32_t PdoMapping(uint16_t index, uint8_t sub, uint8_t bits) {
 }
 
 struct TpdoParameters {
-  uint32_t cob_id = kPdoCobIdInvalid;  // :1, bits 10..0 the CAN-ID
+  uint32_t cob_id = kPdoCobIdInvalid;                       // :1, bits 10..0 the CAN-ID
   uint8_t transmission_type = kPdoEventDrivenManufacturer;  // :2
   uint16_t inhibit_100us = 0;                               // :3 (0 = none)
   uint16_t event_timer_ms = 0;                              // :5 (0 = off)
