@@ -348,8 +348,8 @@ Outcome WriteDemoReport(const DemoResult& r, const std::string& dir) {
         FormatFixed(r.options.axis_run_pitch_mm, 0) +
         ",Y=" + FormatFixed(r.options.axis_run_pitch_mm, 0) +
         ",Z=" + FormatFixed(r.options.axis_run_pitch_mm, 0) +
-        " -o axis.vct (the PC tool writes them as two images; the demo puts both sections in "
-        "one, as the board applies them).");
+        " --reverse backlash -o axis.vct; volcomp build image --grid grid.vct --axis axis.vct -o "
+        "table.vct (the demo's table.vct, joined the same way).");
   } else {
     page.Paragraph(
         "Rebuild it with the PC tool: volcomp build model --model model/measured.conf "

@@ -104,18 +104,16 @@ Expected<std::vector<builders::AxisSection>> MeasureAxisTables(Session& s, DemoR
                                       s.o.axis_run_pitch_mm, s.step_mm()));
     tables.push_back(std::move(table));
     const builders::Axis1dTable& t = tables.back().table;
-    double reversal = 0, largest = 0;
-    for (size_t k = 0; k < t.forward.size(); ++k) {
-      reversal += (t.forward[k] - t.reverse[k]) / static_cast<double>(t.forward.size());
-      largest = std::max({largest, std::fabs(t.forward[k]), std::fabs(t.reverse[k])});
-    }
+    double largest = 0;
+    for (double f : t.forward)
+      largest = std::max({largest, std::fabs(f), std::fabs(f + t.backlash)});
     char b[300];
     std::snprintf(b, sizeof b,
                   "%c: %zu nodes every %.0f mm, each at +-%.2f mm, %d runs each way (table 1 "
-                  "active): AXIS1D forward - reverse %.2f um on average, largest correction "
-                  "%.2f um   (%.1f s)",
+                  "active): AXIS1D forward table and backlash %.2f um (the mean reversal), "
+                  "largest correction %.2f um   (%.1f s)",
                   "XYZ"[a], nodes.size(), s.o.axis_run_pitch_mm, quarter_lead, s.o.gost_runs,
-                  reversal, largest, Since(t0));
+                  t.backlash, largest, Since(t0));
     s.progress.Line(b);
   }
   return tables;
