@@ -79,8 +79,8 @@ Expected<TableBuildResult> BuildTableImage(const model::Model& measured,
 /// `spacing_mm` and one backlash value, the mean reversal over the nodes (`volcomp build axis
 /// --reverse backlash`, BuildAxisSection). The lost motion of a nut and its coupling is one value
 /// along the axis; its reversal measured at every node scatters by the runs' repeatability
-/// (about ±0.5 um per node with 5 runs on the worn machine), which per-node reverse tables would carry
-/// into the table and the mean of the nodes does not.
+/// (about ±0.5 um per node with 5 runs on the worn machine), which per-node reverse tables would
+/// carry into the table and the mean of the nodes does not.
 Expected<builders::AxisSection> BuildAxisTable(const model::PositioningData& deviations,
                                                int axis,
                                                double spacing_mm,
