@@ -94,8 +94,8 @@ TEST(BoardIni, AHandWrittenFileMeansWhatItSays) {
 }
 
 TEST(BoardIni, EveryStoredObjectHasItsKey) {
-  // 0x1015, 0x1017, 0x2000:1-4 and fifteen per-axis arrays of six.
-  EXPECT_EQ(SettingObjects().size(), 2u + 4u + 16u * 6u);
+  // 0x1015, 0x1017, 0x2000:1-4 and seventeen per-axis arrays of six.
+  EXPECT_EQ(SettingObjects().size(), 2u + 4u + 17u * 6u);
   for (const SettingObject& o : SettingObjects()) {
     EXPECT_NE(SettingKeyOf(o.id), nullptr) << canopen::Entry(o.id).name;
   }

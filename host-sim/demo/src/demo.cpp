@@ -207,6 +207,7 @@ Expected<DemoResult> RunDemo(const DemoOptions& o, std::ostream& log) {
             {layout.inner_hi[0], layout.centre[1], layout.centre[2]},
             0};
   r.error_sources = demo::ErrorSources(s);
+  r.circle_centre_mm = layout.centre;
   demo::PrintSetup(s, r, wo);
   VOLCOMP_TRY(demo::PlanTests(s, rng));
 

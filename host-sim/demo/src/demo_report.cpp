@@ -1,10 +1,12 @@
 // HTML report and data files of a demo run.
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <sstream>
 
 #include "volcomp/image/image_reader.hpp"
 #include "volcomp/image/table_map.hpp"
+#include "volcomp/metrology/circular_report.hpp"
 #include "volcomp/metrology/diagonal_report.hpp"
 #include "volcomp/metrology/positioning_report.hpp"
 #include "volcomp/report/format.hpp"
@@ -118,6 +120,24 @@ std::string LatencyChart(const DemoResult& r) {
   return c.Render();
 }
 
+std::string Lower(std::string s) {
+  for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return s;
+}
+
+// A ballbar's readings in the format `volcomp evaluate circular` reads.
+std::string BallbarCsv(const metrology::CircularData& d) {
+  std::string csv = "direction,angle_deg,deviation_um\n";
+  for (const auto& [name, path] :
+       {std::pair<const char*, const metrology::CircularPath*>{"ccw", &d.ccw}, {"cw", &d.cw}}) {
+    for (size_t i = 0; i < path->angle_deg.size(); ++i) {
+      csv += std::string(name) + "," + FormatFixed(path->angle_deg[i], 3) + "," +
+             FormatFixed(path->deviation_um[i], 2) + "\n";
+    }
+  }
+  return csv;
+}
+
 // The measured phases in order, with their column label and file tag.
 struct Phase {
   std::string label, tag;
@@ -184,9 +204,10 @@ void AddWornSections(report::HtmlPage* page, const DemoResult& r) {
   std::vector<std::vector<std::string>> goals;
   for (const Goal& g : r.goals) {
     const char* unit = g.at_least ? " %" : " µm";
-    goals.push_back({g.what, FormatFixed(g.value, 2) + unit,
-                     std::string(g.at_least ? "≥ " : "≤ ") + FormatFixed(g.limit, 2) + unit,
-                     g.holds ? "holds" : "FAILS"});
+    goals.push_back(
+        {g.what, FormatFixed(g.value, 2) + unit,
+         std::string(g.at_least ? "≥ " : "≤ ") + FormatFixed(g.limit, 2) + unit,
+         g.holds ? "holds" : (g.asserted ? "FAILS" : "misses (reported, not asserted)")});
   }
   page->Table({"goal", "measured", "limit", ""}, goals);
   const ErrorBudget& e = r.budget;
@@ -216,6 +237,51 @@ void AddWornSections(report::HtmlPage* page, const DemoResult& r) {
         FormatFixed(e.goal_limit_um, 2)}});
 }
 
+// The circular tests: G(b) and H per plane and phase, and each plane's polar plot before and
+// after (the plot of `volcomp evaluate circular --report`).
+void AddCircularSection(report::HtmlPage* page,
+                        const DemoResult& r,
+                        const std::vector<Phase>& phases) {
+  page->Heading(2, "ISO 230-4 circular tests (ballbar at the centre, r " +
+                       FormatFixed(r.options.circle_radius_mm, 0) + " mm, " +
+                       FormatFixed(r.options.circle_feed_mm_min, 0) + " mm/min)");
+  std::vector<std::string> header = {"plane, figure"};
+  for (const Phase& ph : phases) header.push_back(ph.label);
+  header.push_back("reduction");
+  std::vector<std::vector<std::string>> rows;
+  for (size_t k = 0; k < r.before.circular.size(); ++k) {
+    for (int h = 0; h < 2; ++h) {
+      std::vector<std::string> cells = {r.before.circular[k].plane + (h ? " H, µm" : " G(b), µm")};
+      for (const Phase& ph : phases) {
+        const auto& c = ph.results->circular;
+        cells.push_back(k < c.size() ? FormatFixed(h ? c[k].result.H_um : c[k].result.G_b_um, 2)
+                                     : "-");
+      }
+      const auto& b = r.before.circular[k].result;
+      const bool after = k < r.after.circular.size();
+      cells.push_back(after ? Pct(h ? b.H_um : b.G_b_um, h ? r.after.circular[k].result.H_um
+                                                           : r.after.circular[k].result.G_b_um)
+                            : "-");
+      rows.push_back(cells);
+    }
+  }
+  page->Table(header, rows);
+  for (size_t k = 0; k < r.before.circular.size() && k < r.after.circular.size(); ++k) {
+    for (const PhaseResults* p : {&r.before, &r.after}) {
+      const CircularTestResult& c = p->circular[k];
+      metrology::CircularEvaluation ev;
+      ev.data = c.data;
+      ev.result = c.result;
+      page->Figure(metrology::CircularPolarSvg(ev),
+                   c.plane + ", " +
+                       (p == &r.before ? "before compensation" : "after: " + r.after_label) +
+                       ": G(b) " + FormatFixed(c.result.G_b_um, 2) + " µm, H " +
+                       FormatFixed(c.result.H_um, 2) + " µm (data/circle_" + Lower(c.plane) + "_" +
+                       (p == &r.before ? "before" : "after") + ".csv).");
+    }
+  }
+}
+
 }  // namespace
 
 Outcome WriteDemoReport(const DemoResult& r, const std::string& dir) {
@@ -234,6 +300,13 @@ Outcome WriteDemoReport(const DemoResult& r, const std::string& dir) {
         tools::WriteTextFile(dir + "/data/diagonals_" + tag + ".csv", ph.results->diagonals.csv));
     VOLCOMP_TRY(
         tools::WriteTextFile(dir + "/data/points_" + tag + ".csv", PointsCsv(ph.results->points)));
+    for (const CircularTestResult& c : ph.results->circular) {
+      VOLCOMP_TRY(tools::WriteTextFile(dir + "/data/circle_" + Lower(c.plane) + "_" + tag + ".csv",
+                                       BallbarCsv(c.data)));
+    }
+  }
+  for (const CircularTestResult& c : r.before.circular) {
+    VOLCOMP_TRY(tools::WriteTextFile(dir + "/programs/circle_" + Lower(c.plane) + ".ngc", c.gcode));
   }
   if (r.options.machine == MachineProfile::kWorn) VOLCOMP_TRY(WriteWornData(r, dir));
   for (size_t a = 0; a < 3; ++a) {
@@ -306,6 +379,7 @@ Outcome WriteDemoReport(const DemoResult& r, const std::string& dir) {
   header.push_back("reduction");
   page.Table(header, rows);
   if (worn) AddWornSections(&page, r);
+  if (!r.before.circular.empty()) AddCircularSection(&page, r, phases);
   page.Heading(2, "Steps, timing and latency");
   page.Table(
       {"figure", "value"},
@@ -350,8 +424,8 @@ Outcome WriteDemoReport(const DemoResult& r, const std::string& dir) {
         FormatFixed(r.options.axis_run_pitch_mm, 0) +
         ",Y=" + FormatFixed(r.options.axis_run_pitch_mm, 0) +
         ",Z=" + FormatFixed(r.options.axis_run_pitch_mm, 0) +
-        " -o axis.vct (the PC tool writes them as two images; the demo puts both sections in "
-        "one, as the board applies them).");
+        " --reverse backlash -o axis.vct; volcomp build image --grid grid.vct --axis axis.vct -o "
+        "table.vct (the demo's table.vct, joined the same way).");
   } else {
     page.Paragraph(
         "Rebuild it with the PC tool: volcomp build model --model model/measured.conf "

@@ -211,6 +211,10 @@ Expected<PhaseResults> MeasurePhase(Session& s, DemoResult& r) {
     s.progress.Line(b);
     VOLCOMP_TRY(AfterTest(s, r, "random points"));
   }
+  if (s.o.machine == MachineProfile::kWorn && s.o.circular_tests) {
+    VOLCOMP_TRY_ASSIGN(p.circular, MeasureCircularTests(s));
+    VOLCOMP_TRY(AfterTest(s, r, "ISO 230-4 circular tests"));
+  }
   return p;
 }
 

@@ -80,6 +80,9 @@ Outcome HomeAtPowerUp(Session& s, DemoResult& r);
 // GOST 27843 per axis, ISO 230-6 body diagonals, random points (a drift check after each test
 // when the session has them).
 Expected<PhaseResults> MeasurePhase(Session& s, DemoResult& r);
+// The ISO 230-4 circular test in XY, XZ and YZ about the centre of the travel (demo_circular.cpp):
+// `volcomp program circular`'s program through the board, a ballbar at the centre.
+Expected<std::vector<CircularTestResult>> MeasureCircularTests(Session& s);
 // The six error motions of each axis along a line through the reference point.
 Outcome MeasureErrorMotions(Session& s, DemoResult& r);
 // The measured model and its GRID3 section (ModelGridSource, BuildGridSection).

@@ -2,6 +2,7 @@
 // and the error budget. SummaryData builds one document with every figure; the text is printed
 // from that document only (and --report writes it as summary.json), so the text cannot show a
 // figure the JSON lacks.
+#include <cctype>
 #include <cstdio>
 #include <string>
 #include <vector>
@@ -102,7 +103,68 @@ JsonValue Figures(const DemoResult& r) {
         k + "_b", axis + "  B (reversal)", [a](const PhaseResults& p) { return p.Gost()[a].B; },
         reversal);
   }
+  // The ISO 230-4 circular tests (worn machine): G(b) and H per plane.
+  for (size_t k = 0; k < r.before.circular.size(); ++k) {
+    const std::string plane = r.before.circular[k].plane;
+    std::string key = "circle_" + plane;
+    for (char& c : key) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    auto of = [k](const PhaseResults& p) -> const metrology::CircularResult* {
+      return k < p.circular.size() ? &p.circular[k].result : nullptr;
+    };
+    t.Row(
+        key + "_gb", "ISO 230-4 circle " + plane + "  G(b) (ballbar)",
+        [of](const PhaseResults& p) { return of(p) ? of(p)->G_b_um : 0.0; }, RowKind::kReduce);
+    t.Row(
+        key + "_h", "ISO 230-4 circle " + plane + "  H (hysteresis)",
+        [of](const PhaseResults& p) { return of(p) ? of(p)->H_um : 0.0; }, RowKind::kReduce);
+  }
   return t.Take();
+}
+
+// Every figure of the circular tests, per plane and phase (the summary prints G(b) and H; the
+// rest, for a program reading them, as `volcomp evaluate circular --json` names them).
+JsonValue Circular(const DemoResult& r) {
+  JsonValue c = JsonValue::Object();
+  c.Set("radius_mm", r.options.circle_radius_mm)
+      .Set("feed_mm_min", r.options.circle_feed_mm_min)
+      .Set("centre_mm", Vec(r.circle_centre_mm));
+  std::vector<const PhaseResults*> phases = {&r.before};
+  std::vector<std::string> labels = {"before"};
+  for (const NamedPhase& p : r.intermediate) {
+    phases.push_back(&p.results);
+    labels.push_back(p.label);
+  }
+  phases.push_back(&r.after);
+  labels.push_back(r.after_label);
+  JsonValue planes = JsonValue::Array();
+  for (size_t k = 0; k < r.before.circular.size(); ++k) {
+    JsonValue plane = JsonValue::Object();
+    plane.Set("plane", r.before.circular[k].plane);
+    JsonValue by_phase = JsonValue::Array();
+    for (size_t i = 0; i < phases.size(); ++i) {
+      if (k >= phases[i]->circular.size()) continue;
+      const CircularTestResult& t = phases[i]->circular[k];
+      const metrology::CircularResult& e = t.result;
+      JsonValue o = JsonValue::Object();
+      o.Set("phase", labels[i])
+          .Set("points_cw", static_cast<unsigned long long>(e.points_cw))
+          .Set("points_ccw", static_cast<unsigned long long>(e.points_ccw))
+          .Set("G_cw_um", e.G_cw_um)
+          .Set("G_ccw_um", e.G_ccw_um)
+          .Set("G_b_um", e.G_b_um)
+          .Set("H_um", e.H_um)
+          .Set("F_max_um", e.F_max_um)
+          .Set("F_min_um", e.F_min_um)
+          .Set("centre_offset_um",
+               JsonValue::Object().Set("x", e.centre_offset_x_um).Set("y", e.centre_offset_y_um))
+          .Set("cutting_max_error_um", t.cutting_max_error_um);
+      by_phase.Push(std::move(o));
+    }
+    plane.Set("phases", std::move(by_phase));
+    planes.Push(std::move(plane));
+  }
+  c.Set("planes", std::move(planes));
+  return c;
 }
 
 JsonValue Goals(const DemoResult& r) {
@@ -114,7 +176,8 @@ JsonValue Goals(const DemoResult& r) {
         .Set("unit", g.at_least ? "%" : "um")
         .Set("limit", g.limit)
         .Set("at_least", g.at_least)
-        .Set("holds", g.holds);
+        .Set("holds", g.holds)
+        .Set("asserted", g.asserted);
     goals.Push(std::move(o));
   }
   return goals;
@@ -250,12 +313,19 @@ void PrintFigures(const JsonValue& d, std::ostream& out) {
 void PrintGoals(const JsonValue& d, std::ostream& out) {
   out << "\n== goals of the worn profile =============================================\n";
   char b[300];
+  bool reported = false;
   for (const JsonValue& g : At(d, "goals").array) {
+    const bool asserted = At(g, "asserted").boolean;
+    if (!asserted && !reported) {
+      out << "reported, not asserted (not in the exit code; what remains is mostly the worn "
+             "machine's scatter at rest and its screw error: docs/simulator.md, circular tests):\n";
+      reported = true;
+    }
     const std::string& unit = Str(g, "unit");
     std::snprintf(b, sizeof b, "%-84s %8.2f %s %s %6.2f %s  %s\n", Str(g, "name").c_str(),
                   Num(g, "value"), unit.c_str(),
                   At(g, "at_least").boolean ? ">=" : "<=", Num(g, "limit"), unit.c_str(),
-                  At(g, "holds").boolean ? "holds" : "FAILS");
+                  At(g, "holds").boolean ? "holds" : (asserted ? "FAILS" : "misses"));
     out << b;
   }
 }
@@ -354,6 +424,7 @@ tools::JsonValue SummaryData(const DemoResult& r) {
   phases.Push(r.after_label);
   d.Set("phases", std::move(phases));
   d.Set("figures", Figures(r));
+  if (!r.before.circular.empty()) d.Set("circular", Circular(r));
   if (worn) {
     d.Set("goals", Goals(r));
     d.Set("error_budget", Budget(r));
@@ -376,7 +447,8 @@ void PrintSummaryData(const tools::JsonValue& d, std::ostream& out) {
   }
   PrintSteps(d, out);
   if (At(d, "passed").boolean) {
-    out << (worn ? "\nall checks passed: every goal of the worn profile holds, zero lost steps, "
+    out << (worn ? "\nall checks passed: every asserted goal of the worn profile holds, zero lost "
+                   "steps, "
                    "zero timing violations, latency <= 2 ticks\n"
                  : "\nall checks passed: residual >= 95 % below uncompensated (E_d and random "
                    "points), zero lost steps, zero timing violations, latency <= 2 ticks\n");

@@ -77,7 +77,7 @@ Expected<Point3> TouchOff(World& world,
                           const Program& program,
                           const Point3& start_mm,
                           const Point3& step_mm,
-                          const ProgramRunOptions& o,
+                          const ProgramInWorldOptions& o,
                           ProgramRunResult& r) {
   Point3 at = start_mm;
   if (o.touch_off_mm) {
@@ -130,7 +130,25 @@ Expected<ProgramRunResult> RunProgramOnMachine(const ProgramRunOptions& o, std::
   VOLCOMP_TRY_ASSIGN(const std::unique_ptr<World> installation, MakeWorld(o));
   World& world = *installation;
   VOLCOMP_TRY(PrepareBoard(world, o, r, log));
+  ProgramInWorldOptions p;
+  p.program_name = o.program_name;
+  p.touch_off_mm = o.touch_off_mm;
+  p.ballbar_pivot_mm = o.ballbar_pivot_mm;
+  p.ballbar_seed = o.seed ^ 0x62616c6c626172ull;
+  p.sample_period_s = o.sample_period_s;
+  p.limit_s = o.limit_s;
+  VOLCOMP_TRY(RunProgramInWorld(world, program, p, r));
+  const StepAudit audit = world.Audit();
+  r.lost_steps = audit.lost_steps;
+  r.timing_violations = audit.timing_violations;
+  r.rest_checks = audit.rest_checks;
+  return r;
+}
 
+Outcome RunProgramInWorld(World& world,
+                          const Program& program,
+                          const ProgramInWorldOptions& o,
+                          ProgramRunResult& r) {
   Cnc& cnc = world.cnc();
   Point3 step_mm, start_mm;
   for (int a = 0; a < 3; ++a) {
@@ -147,7 +165,7 @@ Expected<ProgramRunResult> RunProgramOnMachine(const ProgramRunOptions& o, std::
   if (o.ballbar_pivot_mm) {
     const Point3& p = *o.ballbar_pivot_mm;
     ballbar.emplace(&world.machine(), model::Vec3{p[0], p[1], p[2]}, BallbarOptions{},
-                    o.seed ^ 0x62616c6c626172ull);
+                    o.ballbar_seed);
   }
   const model::Vec3 work_offset{offset_mm[0], offset_mm[1], offset_mm[2]};
   int last_degree[2] = {-1, -1};  // per direction: the last whole degree read
@@ -208,7 +226,7 @@ Expected<ProgramRunResult> RunProgramOnMachine(const ProgramRunOptions& o, std::
     if (it == r.lines.end()) it = r.lines.insert(r.lines.end(), LineFigures{s.line, s.kind});
     ++it->samples;
     it->max_error_um = std::max(it->max_error_um, s.error_um);
-    r.samples.push_back(s);
+    if (o.keep_samples) r.samples.push_back(s);
   };
   while (!cnc.idle()) {
     if (world.now_ns() - t0 > o.limit_s * kSecond_ns) {
@@ -241,11 +259,7 @@ Expected<ProgramRunResult> RunProgramOnMachine(const ProgramRunOptions& o, std::
     }
     VOLCOMP_TRY_ASSIGN(r.circular, metrology::EvaluateCircular(data));
   }
-  const StepAudit audit = world.Audit();
-  r.lost_steps = audit.lost_steps;
-  r.timing_violations = audit.timing_violations;
-  r.rest_checks = audit.rest_checks;
-  return r;
+  return Outcome::Ok();
 }
 
 Outcome WriteProgramRunReport(const ProgramRunResult& r, const std::string& dir) {

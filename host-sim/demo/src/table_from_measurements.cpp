@@ -151,7 +151,7 @@ Expected<builders::AxisSection> BuildAxisTable(const model::PositioningData& dev
                                                double spacing_mm,
                                                const std::array<double, 3>& step_mm) {
   builders::Axis1dOptions o;
-  o.reverse = builders::ReverseMode::kTables;
+  o.reverse = builders::ReverseMode::kBacklash;
   o.spacing = spacing_mm;
   const image::AxisDef image_axis = ImageAxes(step_mm)[static_cast<size_t>(axis)];
   return builders::BuildAxisSection(deviations, o, image_axis, static_cast<uint8_t>(axis), false);

@@ -34,7 +34,13 @@ ConfigRule AxisRule(const AxisConfig& a, uint32_t tick_hz) {
       a.drive.max_rate_hz) {
     return ConfigRule::kDriveKeepsUp;
   }
-  return AxisLimiterParams(a, tick_hz).ok() ? ConfigRule::kNone : ConfigRule::kLimiter;
+  if (!AxisLimiterParams(a, tick_hz).ok()) return ConfigRule::kLimiter;
+  // A switch is never slower than the correction: the limiter's velocity carries over from one
+  // set of limits to the other (Compensator, "Direction switch").
+  return a.direction_switch_accel_steps_s2 < a.max_correction_accel_steps_s2 ||
+                 !AxisSwitchLimiterParams(a, tick_hz, CompensationDivider(tick_hz)).ok()
+             ? ConfigRule::kDirectionSwitch
+             : ConfigRule::kNone;
 }
 
 ConfigFinding FirstBrokenRule(const BoardConfig& config) {
@@ -58,6 +64,27 @@ ConfigFinding FirstBrokenRule(const BoardConfig& config) {
 }
 
 }  // namespace
+
+Result<LimiterParams> AxisSwitchLimiterParams(const AxisConfig& axis,
+                                              uint32_t tick_hz,
+                                              uint32_t ticks_per_step) {
+  if (tick_hz == 0 || ticks_per_step == 0 || axis.drive.max_rate_hz <= axis.max_input_rate_hz) {
+    return Error::kConfigInvalid;
+  }
+  const uint64_t rate = axis.drive.max_rate_hz - axis.max_input_rate_hz;
+  // The largest acceleration the period represents (accel * n^2 < f^2) and the one that reaches
+  // the rate within one period (accel * n <= rate * f). Configuration time: divisions are fine.
+  const uint64_t n = ticks_per_step;
+  const uint64_t f = tick_hz;
+  uint64_t accel = axis.direction_switch_accel_steps_s2;
+  const uint64_t below_one_step = (f * f - 1u) / (n * n);
+  const uint64_t within_one_period = rate * f / n;
+  accel = accel < below_one_step ? accel : below_one_step;
+  accel = accel < within_one_period ? accel : within_one_period;
+  return CorrectionLimiter::MakeParams(
+      tick_hz, static_cast<uint32_t>(rate < 0xFFFFFFFFu ? rate : 0xFFFFFFFFu),
+      static_cast<uint32_t>(accel), ticks_per_step);
+}
 
 Status ValidateBoardConfig(const BoardConfig& config, ConfigFinding* finding) {
   const ConfigFinding f = FirstBrokenRule(config);

@@ -7,8 +7,10 @@ namespace volcomp {
 namespace {
 constexpr uint32_t kMagic = 0x47464356;  // "VCFG"
 // 2: the EMCY inhibit time in the slot after the heartbeat; 3: each axis's direction hysteresis
-// in its reserved 16-bit slot (older records: the default).
-constexpr uint16_t kVersion = 3;
+// in its reserved 16-bit slot; 4: each axis's direction switch acceleration in the first of its
+// reserved 32-bit slots (older records: the defaults).
+constexpr uint16_t kVersion = 4;
+constexpr uint16_t kVersionWithoutSwitch = 3;
 constexpr uint16_t kVersionWithoutHysteresis = 2;
 constexpr uint16_t kVersionWithoutInhibit = 1;
 
@@ -100,7 +102,7 @@ void SerializeSettings(const BoardSettings& s, uint8_t* out) {
     w.U32(x.max_correction_rate_steps_s);
     w.U32(x.max_correction_accel_steps_s2);
     w.I32(x.home_position_steps);
-    w.U32(0);
+    w.U32(x.direction_switch_accel_steps_s2);
     w.U32(0);
     w.U32(0);
   }
@@ -111,8 +113,8 @@ Status DeserializeSettings(const uint8_t* in, uint32_t size, BoardSettings* out)
   Reader r(in);
   if (r.U32() != kMagic) return Error::kConfigInvalid;
   const uint16_t version = r.U16();
-  if ((version != kVersion && version != kVersionWithoutHysteresis &&
-       version != kVersionWithoutInhibit) ||
+  if ((version != kVersion && version != kVersionWithoutSwitch &&
+       version != kVersionWithoutHysteresis && version != kVersionWithoutInhibit) ||
       r.U16() != kSettingsBytes) {
     return Error::kConfigInvalid;
   }
@@ -134,7 +136,7 @@ Status DeserializeSettings(const uint8_t* in, uint32_t size, BoardSettings* out)
     x.invert_input_dir = r.U8() != 0;
     x.input_counter_bits = r.U8();
     const uint16_t hysteresis = r.U16();
-    if (version == kVersion) x.direction_hysteresis_steps = hysteresis;
+    if (version >= kVersionWithoutSwitch) x.direction_hysteresis_steps = hysteresis;
     x.resolution_e9 = r.U32();
     x.drive.pulse_width_ns = r.U32();
     x.drive.step_space_ns = r.U32();
@@ -146,7 +148,8 @@ Status DeserializeSettings(const uint8_t* in, uint32_t size, BoardSettings* out)
     x.max_correction_rate_steps_s = r.U32();
     x.max_correction_accel_steps_s2 = r.U32();
     x.home_position_steps = r.I32();
-    r.U32();
+    const uint32_t switch_accel = r.U32();
+    if (version == kVersion) x.direction_switch_accel_steps_s2 = switch_accel;
     r.U32();
     r.U32();
   }

@@ -49,7 +49,16 @@ Status Compensator::Configure(const BoardConfig& config, uint32_t ticks_per_run)
     const AxisConfig& ax = config.axis[a];
     const Result<LimiterParams> p = AxisLimiterParams(ax, config.tick_hz, ticks_per_run);
     if (!p.ok()) return p.status();
+    const Result<LimiterParams> q = AxisSwitchLimiterParams(ax, config.tick_hz, ticks_per_run);
+    if (!q.ok()) return q.status();
     limiter_[a] = CorrectionLimiter(*p);
+    limits_[a][0] = *p;
+    limits_[a][1] = *q;
+    // Configuration time (a division is fine): on a valid configuration the switch's acceleration
+    // step is at least the correction's, so the scale is at most 1 (capped there).
+    const uint64_t scale = (static_cast<uint64_t>(p->accel_q32) << 30) / q->accel_q32;
+    switch_k_scale_q30_[a] = static_cast<int32_t>(scale < (1u << 30) ? scale : (1u << 30));
+    switch_state_[a] = 0;
     max_q8_[a] = ax.max_correction_steps * (1 << table::kCorrectionFracBits);
     clamped_refreshes_[a] = 0;
     rate_limited_refreshes_[a] = 0;
@@ -99,13 +108,28 @@ bool Compensator::passthrough() const {
   return true;
 }
 
+// Inlined into RefreshTargets(): the tick's hot range (toolchain/hot-sections.ld) lists no other
+// function of the refresh.
+__attribute__((always_inline)) inline void Compensator::DisengageAxis(uint32_t a) {
+  grid_part_steps_[a] = 0;
+  const uint32_t state = switch_state_[a];
+  CorrectionLimiter& limiter = limiter_[a];
+  const bool rest = limiter.at_rest();
+  if ((state & 1u) != 0 && rest) limiter.set_params(limits_[a][0]);  // at rest: k stays 0
+  // A switch in progress comes to rest where it is (at its limits), then ramps out at the
+  // correction's; the direction of the next refresh follows the drive.
+  const bool braking = (state & 1u) != 0 && !rest;
+  target_q8_[a] = braking ? static_cast<int32_t>(limiter.position_q32() >> 24) : 0;
+  switch_state_[a] = (direction_[a] & 2u) | (braking ? 1u : 0u);
+}
+
 void Compensator::RefreshTargets(const int32_t* machine_pos_steps) {
   if (rebase_pending_) {
     Rebase(machine_pos_steps);
     return;
   }
   if (!engaged()) {
-    for (uint8_t a = 0; a < axis_count_; ++a) target_q8_[a] = grid_part_steps_[a] = 0;
+    for (uint8_t a = 0; a < axis_count_; ++a) DisengageAxis(a);
     phase_ = 0;
     return;
   }
@@ -133,14 +157,28 @@ void Compensator::RefreshTargets(const int32_t* machine_pos_steps) {
     const int8_t i = table.axis_table_of[a];
     int32_t t = c >= 0 ? grid_q8_[c] : 0;
     grid_part_steps_[a] = (t + 128) >> 8;
+    const uint32_t direction = direction_[a];
     if (i >= 0) {
       const int32_t pos = (wrap_mask_ >> a) & 1u ? wrap_[a].position() : machine_pos_steps[a];
-      t += table.axis_table[i].Lookup(pos, direction_[a] != 0);
+      t += table.axis_table[i].Lookup(pos, direction != 0);
     }
     const int32_t max = max_q8_[a];
     const int32_t asked = t;
     t = t > max ? max : t;
     t = t < -max ? -max : t;
+    // Direction switch (selects, not branches): it begins at the refresh that first looks the
+    // table up in the new direction if the correction had caught up with its target (within one
+    // step: a ramp in progress keeps the correction's limits), and lasts while the limiter moves.
+    CorrectionLimiter& limiter = limiter_[a];
+    const uint32_t state = switch_state_[a];
+    const int32_t behind = target_q8_[a] - static_cast<int32_t>(limiter.position_q32() >> 24);
+    const uint32_t moving = limiter.at_rest() ? 0u : 1u;
+    const uint32_t enter = ((state ^ direction) >> 1) & (i >= 0 ? 1u : 0u) &
+                           (static_cast<uint32_t>(behind + 256) < 512u ? 1u : 0u) &
+                           (~state | (moving ^ 1u));
+    const uint32_t on = enter | (state & moving);
+    limiter.SwitchParams(limits_[a][on & 1u], enter != 0 ? switch_k_scale_q30_[a] : 1 << 30);
+    switch_state_[a] = (direction & 2u) | (on & 1u);
     target_q8_[a] = t;
     // Selects, not branches: whether the table was clamped, whether the limiter is at its rate.
     clamped_refreshes_[a] += t != asked ? 1u : 0u;

@@ -11,8 +11,8 @@ namespace volcomp::canopen {
 namespace {
 
 TEST(SettingObjects, OneObjectPerSettingRowInDictionaryOrder) {
-  // 0x1015, 0x1017, 0x2000:1-4 and fifteen per-axis arrays of six.
-  ASSERT_EQ(kSettingObjectCount, 2u + 4u + 16u * 6u);
+  // 0x1015, 0x1017, 0x2000:1-4 and seventeen per-axis arrays of six.
+  ASSERT_EQ(kSettingObjectCount, 2u + 4u + 17u * 6u);
   EXPECT_EQ(SettingObjects().size(), kSettingObjectCount);
   const SettingObject* previous = nullptr;
   for (const SettingObject& s : SettingObjects()) {

@@ -17,7 +17,7 @@ TEST(SettingsRecord, KeepsTheEmcyInhibitTimeAndReadsVersion1Records) {
   s.emcy_inhibit_100us = 37;
   uint8_t rec[kSettingsBytes];
   SerializeSettings(s, rec);
-  EXPECT_EQ(rec[4], 3);  // version, LE16 at 4
+  EXPECT_EQ(rec[4], 4);  // version, LE16 at 4
   EXPECT_EQ(rec[5], 0);
   EXPECT_EQ(rec[12], 0x23);  // heartbeat LE16 at 12
   EXPECT_EQ(rec[13], 0x01);
@@ -31,7 +31,7 @@ TEST(SettingsRecord, KeepsTheEmcyInhibitTimeAndReadsVersion1Records) {
   ASSERT_TRUE(DeserializeSettings(rec, sizeof rec, &back).ok());
   EXPECT_EQ(back.emcy_inhibit_100us, 100);  // the default, 10 ms
   EXPECT_EQ(back.heartbeat_ms, 0x0123);
-  rec[4] = 4;
+  rec[4] = 5;
   EXPECT_FALSE(DeserializeSettings(rec, sizeof rec, &back).ok());
 }
 
@@ -54,6 +54,43 @@ TEST(SettingsRecord, KeepsTheDirectionHysteresisAndReadsVersion2Records) {
   EXPECT_EQ(back.board.axis[1].direction_hysteresis_steps, 1);
 }
 
+// Version 4 keeps each axis's direction switch acceleration in the first reserved 32-bit slot
+// after the home position (offset 52 of the axis record); a version-3 record (slot reserved, 0)
+// gives the default, not 0 (which the rules would refuse).
+TEST(SettingsRecord, KeepsTheDirectionSwitchAccelerationAndReadsVersion3Records) {
+  BoardSettings s;
+  s.board.axis[2].direction_switch_accel_steps_s2 = 0x01020304;
+  uint8_t rec[kSettingsBytes];
+  SerializeSettings(s, rec);
+  const size_t at = 24 + 2 * 64 + 52;
+  EXPECT_EQ(rec[at], 0x04);
+  EXPECT_EQ(rec[at + 3], 0x01);
+  BoardSettings back;
+  ASSERT_TRUE(DeserializeSettings(rec, sizeof rec, &back).ok());
+  EXPECT_EQ(back.board.axis[2].direction_switch_accel_steps_s2, 0x01020304u);
+  EXPECT_EQ(back.board.axis[2].direction_hysteresis_steps, 1);
+  rec[4] = 3;
+  rec[at] = rec[at + 1] = rec[at + 2] = rec[at + 3] = 0;
+  ASSERT_TRUE(DeserializeSettings(rec, sizeof rec, &back).ok());
+  EXPECT_EQ(back.board.axis[2].direction_switch_accel_steps_s2,
+            AxisConfig().direction_switch_accel_steps_s2);
+}
+
+// The direction switch is never slower than the correction: its acceleration below the
+// correction's is refused, and its limiter takes the rate the drive has left beyond the input.
+TEST(SettingsRules, DirectionSwitchAccelerationAtLeastTheCorrections) {
+  BoardSettings s;
+  ConfigFinding f;
+  ASSERT_TRUE(ValidateSettings(s, &f).ok());
+  s.board.axis[0].direction_switch_accel_steps_s2 =
+      s.board.axis[0].max_correction_accel_steps_s2 - 1;
+  EXPECT_FALSE(ValidateSettings(s, &f).ok());
+  EXPECT_EQ(f.rule, ConfigRule::kDirectionSwitch);
+  EXPECT_EQ(f.axis, 1);
+  s.board.axis[0].direction_switch_accel_steps_s2 = s.board.axis[0].max_correction_accel_steps_s2;
+  EXPECT_TRUE(ValidateSettings(s, &f).ok());
+}
+
 TEST(SettingsRecord, EveryFieldRoundTripsAndARecordOnlyCountsWhenValid) {
   BoardSettings s;
   s.node_id = 0x22;
@@ -70,6 +107,7 @@ TEST(SettingsRecord, EveryFieldRoundTripsAndARecordOnlyCountsWhenValid) {
   s.board.axis[2].home_position_steps = -5000;
   s.board.axis[1].drive.dir_hold_ns = 12345;
   s.board.axis[2].direction_hysteresis_steps = 7;
+  s.board.axis[1].direction_switch_accel_steps_s2 = 3000000;
   ASSERT_TRUE(ValidateSettings(s).ok());
   uint8_t rec[kSettingsBytes];
   SerializeSettings(s, rec);
@@ -82,6 +120,7 @@ TEST(SettingsRecord, EveryFieldRoundTripsAndARecordOnlyCountsWhenValid) {
   EXPECT_TRUE(back.board.axis[0].invert_input_dir);
   EXPECT_EQ(back.board.axis[2].home_position_steps, -5000);
   EXPECT_EQ(back.board.axis[2].direction_hysteresis_steps, 7);
+  EXPECT_EQ(back.board.axis[1].direction_switch_accel_steps_s2, 3000000u);
   // Short, or out of range (node-ID 0): not taken; *s untouched.
   BoardSettings untouched;
   EXPECT_FALSE(DeserializeSettings(rec, kSettingsBytes - 1, &untouched).ok());

@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <random>
+#include <vector>
 
 #include "test_tables.hpp"
 
@@ -246,6 +247,117 @@ TEST_F(CompensatorTest, ACorrectionThatMovesTheDriveBackReversesIt) {
   RunN(10000);
   EXPECT_TRUE(comp_.reverse(0));
   EXPECT_EQ(corr_[0], 3);  // 0 from the grid, +3 from the reverse table
+}
+
+// A switch between the forward and reverse tables (the lost motion to take up) moves at the
+// direction switch limits: the acceleration 0x2020 (default 10^8 steps/s^2) and the rate the
+// drive has left beyond the input (2 MHz - 1 MHz), not at the correction's 1000 steps/s; it ends
+// when the correction is at rest again. The bounds below are worked from those figures here, not
+// taken from the limiter.
+TEST_F(CompensatorTest, DirectionSwitchTakesUpAtTheSwitchLimits) {
+  const double runs_per_s = static_cast<double>(kTickHz) / CompensationDivider(kTickHz);
+  const double switch_accel = config_.axis[0].direction_switch_accel_steps_s2 /
+                              (runs_per_s * runs_per_s);  // steps per run^2
+  const double switch_rate =
+      (config_.axis[0].drive.max_rate_hz - config_.axis[0].max_input_rate_hz) / runs_per_s;
+  TableFixture f(0, 0, 0, /*x_table=*/true);
+  comp_.SetTable(Prepare(f), pos_);
+  comp_.SetReferenced(true);
+  comp_.SetEnabled(true);
+  pos_[0] = 100;
+  RunN(2000);
+  ASSERT_EQ(corr_[0], 0);
+  EXPECT_FALSE(comp_.switching(0));
+  pos_[0] = 98;  // the drive reverses: the reverse table's +3 steps
+  std::vector<double> applied = {comp_.applied_q8(0) / kQ8};
+  bool seen_switching = false;
+  int runs_to_full = -1;
+  for (int i = 0; i < 200; ++i) {
+    comp_.Run(pos_, corr_);
+    applied.push_back(comp_.applied_q8(0) / kQ8);
+    seen_switching = seen_switching || comp_.switching(0);
+    if (runs_to_full < 0 && comp_.applied_q8(0) == 3 * 256) runs_to_full = i + 1;
+  }
+  EXPECT_TRUE(seen_switching);
+  EXPECT_EQ(corr_[0], 3);
+  // Bang-bang over 3 steps takes 2 * sqrt(3 / a) runs, after at most one refresh cycle (the axis's
+  // slice) and the run the direction turns in; at the correction's limits it would take over 50.
+  const double bang_bang = 2 * std::sqrt(3 / switch_accel);
+  ASSERT_GT(runs_to_full, 0);
+  EXPECT_LE(runs_to_full, comp_.refresh_runs() + 1 + std::ceil(bang_bang) + 1);
+  EXPECT_GT(3 / kStepsPerRun, 40.0);
+  for (size_t i = 1; i < applied.size(); ++i) {
+    ASSERT_LE(std::fabs(applied[i] - applied[i - 1]), switch_rate + 1.0 / 256) << i;
+    if (i >= 2) {
+      ASSERT_LE(std::fabs(applied[i] - 2 * applied[i - 1] + applied[i - 2]),
+                switch_accel + 2.0 / 256)
+          << i;
+    }
+  }
+  // Caught up: back at the correction's limits.
+  EXPECT_FALSE(comp_.switching(0));
+
+  // A table change that moves the drive forward by 40 steps (the command stands still) turns the
+  // drive forward in the middle of its ramp: the switch to the forward table (-3 steps) goes with
+  // the ramp at the correction's 1000 steps/s (a ramp is never sped up).
+  TableFixture g(40, 0, 0, /*x_table=*/true);
+  comp_.SetTable(Prepare(g), pos_);
+  last_[0] = comp_.applied_q8(0) / kQ8;
+  max_rate_ = 0;
+  for (int i = 0; i < 10000; ++i) {
+    RunN(1);
+    ASSERT_FALSE(comp_.switching(0)) << i;
+  }
+  EXPECT_FALSE(comp_.reverse(0));
+  EXPECT_EQ(corr_[0], 40);
+  EXPECT_LE(max_rate_, kStepsPerRun + 1.0 / 256);
+}
+
+// Engaging, or a fault during a switch, is not a switch: a direction that turned while the
+// compensation was disengaged ramps in at the correction's limits, and a switch in progress when
+// the compensation disengages comes to rest, then ramps out at the correction's limits.
+TEST_F(CompensatorTest, EngagingAndDisengagingAreNotSwitches) {
+  TableFixture f(0, 0, 0, /*x_table=*/true);
+  comp_.SetTable(Prepare(f), pos_);
+  comp_.SetReferenced(true);
+  pos_[0] = 100;
+  RunN(100);
+  pos_[0] = 90;  // reversed while disengaged
+  RunN(100);
+  EXPECT_TRUE(comp_.reverse(0));
+  comp_.SetEnabled(true);
+  last_[0] = comp_.applied_q8(0) / kQ8;
+  max_rate_ = 0;
+  for (int i = 0; i < 5000; ++i) {
+    RunN(1);
+    EXPECT_FALSE(comp_.switching(0));
+  }
+  EXPECT_EQ(corr_[0], 3);
+  EXPECT_LE(max_rate_, kStepsPerRun + 1.0 / 256);
+
+  // Forward again (the forward table's 0), and a fault two runs into the refresh that switches.
+  pos_[0] = 200;
+  int runs = 0;
+  while (!comp_.switching(0) && runs < 100) {
+    RunN(1);
+    ++runs;
+  }
+  ASSERT_TRUE(comp_.switching(0));
+  RunN(1);
+  comp_.SetFault(true);
+  int braking = 0;
+  while (comp_.switching(0) && braking < 100) {
+    RunN(1);
+    ++braking;
+  }
+  EXPECT_FALSE(comp_.switching(0));
+  EXPECT_LT(braking, 20);
+  last_[0] = comp_.applied_q8(0) / kQ8;
+  max_rate_ = 0;
+  RunN(10000);
+  EXPECT_EQ(corr_[0], 0);
+  EXPECT_TRUE(comp_.passthrough());
+  EXPECT_LE(max_rate_, kStepsPerRun + 1.0 / 256);
 }
 
 TEST_F(CompensatorTest, ImageForAnotherBoardIsRefusedAndNothingChanges) {

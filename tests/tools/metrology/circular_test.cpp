@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "circle_fit.hpp"
 #include "test_support.hpp"
 
 namespace volcomp::metrology {
@@ -78,71 +79,18 @@ TEST(Circular, OrderAndAngleRangeDoNotMatter) {
   EXPECT_NEAR(r.H_um, 8.0, 1e-9);
 }
 
-// --- The independent evaluator: geometry in the plane, no linearization. ---
+// --- The independent evaluator (tests/support/circle_fit.hpp): geometry in the plane, no
+// linearization. ---
 
-struct Point {
-  double x, y;
-};
+using Point = ::volcomp::testing::PlanePoint;
+using Circle = ::volcomp::testing::FittedCircle;
+using ::volcomp::testing::FitCircle;
 
-// The points of a path: nominal radius R plus the deviation, along the reading's angle (µm).
 std::vector<Point> Points(const CircularPath& p, double radius_um) {
-  std::vector<Point> pts;
-  for (std::size_t i = 0; i < p.angle_deg.size(); ++i) {
-    const double r = radius_um + p.deviation_um[i];
-    pts.push_back({r * std::cos(Rad(p.angle_deg[i])), r * std::sin(Rad(p.angle_deg[i]))});
-  }
-  return pts;
+  return ::volcomp::testing::PathPoints(p.angle_deg, p.deviation_um, radius_um);
 }
-
-struct Circle {
-  double cx, cy, r;
-};
-
-// Geometric least-squares circle: minimizes Σ (|P − C| − r)² by Gauss-Newton from the centroid.
-Circle FitCircle(const std::vector<Point>& pts) {
-  Circle c{0, 0, 0};
-  const double n = static_cast<double>(pts.size());
-  for (const Point& p : pts) c.cx += p.x / n, c.cy += p.y / n;
-  for (const Point& p : pts) c.r += std::hypot(p.x - c.cx, p.y - c.cy) / n;
-  for (int it = 0; it < 50; ++it) {
-    double JtJ[3][3] = {}, Jtr[3] = {};
-    for (const Point& p : pts) {
-      const double dist = std::hypot(p.x - c.cx, p.y - c.cy);
-      const double J[3] = {-(p.x - c.cx) / dist, -(p.y - c.cy) / dist, -1.0};
-      const double res = dist - c.r;
-      for (int i = 0; i < 3; ++i) {
-        Jtr[i] += J[i] * res;
-        for (int j = 0; j < 3; ++j) JtJ[i][j] += J[i] * J[j];
-      }
-    }
-    // Cramer's rule for the 3×3 step JtJ·δ = −Jtr.
-    auto det = [](double m[3][3]) {
-      return m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) -
-             m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
-             m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
-    };
-    const double d = det(JtJ);
-    double step[3];
-    for (int k = 0; k < 3; ++k) {
-      double m[3][3];
-      for (int i = 0; i < 3; ++i) {
-        for (int j = 0; j < 3; ++j) m[i][j] = j == k ? -Jtr[i] : JtJ[i][j];
-      }
-      step[k] = det(m) / d;
-    }
-    c.cx += step[0], c.cy += step[1], c.r += step[2];
-  }
-  return c;
-}
-
-// Max − min of the distances from `c`.
 double Spread(const std::vector<Point>& pts, const Circle& c) {
-  double lo = 1e300, hi = -1e300;
-  for (const Point& p : pts) {
-    const double d = std::hypot(p.x - c.cx, p.y - c.cy);
-    lo = std::min(lo, d), hi = std::max(hi, d);
-  }
-  return hi - lo;
+  return ::volcomp::testing::RadialSpread(pts, c);
 }
 
 // A machine's circle: radius 50 mm, centre offset (12, −7) µm, ellipse ±6 µm at 30°, a

@@ -180,33 +180,27 @@ class BoardApp final : private BoardControl {
     if (!started_) return;
     // A table switch and referencing in the same run share one rebase (the state is the same as
     // rebasing after each: a rebase overwrites all the tracking state), which takes this run's
-    // target refresh slice (Compensator::RequestRebase()): the rare run costs no more than a
-    // normal one.
+    // target refresh slice: the rare run costs no more than a normal one. It is its own path
+    // (ControlTick::CompensateRebasing()), so the static cycle bound does not add the hand-over's
+    // work to a normal run's refresh (docs/mcu-target.md, "Two rates").
     const PreparedTable* table = nullptr;
-    bool rebase = false;
-    if (hand_over_.Take(&table)) {
-      if (table != nullptr) {
-        control_tick_.compensator().BindTable(table);
-        rebase = true;
-      } else {
-        control_tick_.compensator().ClearTable();
-      }
-    }
+    const bool taken = hand_over_.Take(&table);
+    if (taken && table == nullptr) control_tick_.compensator().ClearTable();
     // The run completes without the main loop in between (the hand-over's rule), so a load and a
     // store take a request: no exclusive-access retry loop.
     const uint8_t refs = pending_reference_.load(std::memory_order_acquire);
-    if (refs != 0) {
-      pending_reference_.store(0, std::memory_order_relaxed);
-      if (control_tick_.MarkReferenced(refs)) rebase = true;
+    if (table != nullptr || refs != 0) {
+      if (table != nullptr) control_tick_.compensator().BindTable(table);
+      if (refs != 0) {
+        pending_reference_.store(0, std::memory_order_relaxed);
+        control_tick_.MarkReferenced(refs);  // referenced or not: one rebase costs no more
+      }
+      TakeEnableRequests();
+      control_tick_.CompensateRebasing();
+    } else {
+      TakeEnableRequests();
+      control_tick_.Compensate();
     }
-    if (rebase) control_tick_.compensator().RequestRebase();
-    if (pending_unreference_.load(std::memory_order_acquire)) {
-      pending_unreference_.store(false, std::memory_order_relaxed);
-      control_tick_.Unreference();
-    }
-    control_tick_.compensator().SetEnabledAndFault(enabled_.load(std::memory_order_relaxed),
-                                                   fault_flag_.load(std::memory_order_relaxed));
-    control_tick_.Compensate();
   }
 
   /// Tick() timed with the clock (two clock reads, a virtual call each); the largest duration is
@@ -253,6 +247,16 @@ class BoardApp final : private BoardControl {
   bool started() const { return started_; }
 
  private:
+  // The run's unreferencing request, enable and fault (CompensationTick()).
+  __attribute__((always_inline)) void TakeEnableRequests() {
+    if (pending_unreference_.load(std::memory_order_acquire)) {
+      pending_unreference_.store(false, std::memory_order_relaxed);
+      control_tick_.Unreference();
+    }
+    control_tick_.compensator().SetEnabledAndFault(enabled_.load(std::memory_order_relaxed),
+                                                   fault_flag_.load(std::memory_order_relaxed));
+  }
+
   // Applies `s` with the tick stopped, in the order the tick needs; the first refusal is returned
   // and its device named in *part. A bit-rate mismatch the port reports (it runs at the
   // interface's rate) still leaves everything else applied.

@@ -22,6 +22,7 @@
 
 #include "volcomp/hosted/expected.hpp"
 #include "volcomp/metrology/circular.hpp"
+#include "volcomp/sim/gcode.hpp"
 #include "volcomp/sim/path.hpp"
 
 namespace volcomp::sim {
@@ -94,6 +95,29 @@ struct ProgramRunResult {
 /// board's refusal of the table (upload or activation), the program not finishing in limit_s, a
 /// ballbar that read no full circle about its pivot or too little of one.
 Expected<ProgramRunResult> RunProgramOnMachine(const ProgramRunOptions& options, std::ostream& log);
+
+class World;
+
+/// The program part of a run, on an installation that is ready (homed and referenced, its table
+/// active or none): the paths checked, the touch-off, the program sampled along its path, the
+/// ballbar (if any) evaluated. The demo runs its circular tests with it (docs/simulator.md 7.2).
+struct ProgramInWorldOptions {
+  std::string program_name;
+  std::optional<Point3> touch_off_mm;      // default: the end of the program's first move
+  std::optional<Point3> ballbar_pivot_mm;  // as ProgramRunOptions::ballbar_pivot_mm
+  uint64_t ballbar_seed = 1;               // the ballbar's own noise
+  double sample_period_s = 100e-6;
+  uint64_t limit_s = 3600;
+  bool keep_samples = true;  // false: only the figures (the per-line maxima, the ballbar)
+};
+
+/// Fills `r`'s touch-off, work offset, duration, error figures, lines, samples and ballbar (not
+/// program, machine, table_crc or the step audit, which are the installation's). Failures as
+/// RunProgramOnMachine()'s for the program, the time limit and the ballbar.
+Outcome RunProgramInWorld(World& world,
+                          const Program& program,
+                          const ProgramInWorldOptions& options,
+                          ProgramRunResult& r);
 
 /// The samples as CSV (t_s,line,kind,x_cmd_mm,..,x_mm,..,error_um), the error along the program
 /// as an HTML page with an SVG chart and, with a ballbar, its readings as ballbar.csv in the

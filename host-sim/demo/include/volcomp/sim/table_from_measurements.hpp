@@ -75,8 +75,12 @@ Expected<TableBuildResult> BuildTableImage(const model::Model& measured,
                                            const builders::GridBuildOptions& lattice,
                                            uint32_t table_id);
 
-/// The AXIS1D section of `axis` (0..2) from mean deviations per target, with forward and reverse
-/// tables at `spacing_mm` (`volcomp build axis --reverse tables`, BuildAxisSection).
+/// The AXIS1D section of `axis` (0..2) from mean deviations per target: the forward table at
+/// `spacing_mm` and one backlash value, the mean reversal over the nodes (`volcomp build axis
+/// --reverse backlash`, BuildAxisSection). The lost motion of a nut and its coupling is one value
+/// along the axis; its reversal measured at every node scatters by the runs' repeatability
+/// (about ±0.5 um per node with 5 runs on the worn machine), which per-node reverse tables would
+/// carry into the table and the mean of the nodes does not.
 Expected<builders::AxisSection> BuildAxisTable(const model::PositioningData& deviations,
                                                int axis,
                                                double spacing_mm,

@@ -48,6 +48,13 @@ struct AxisConfig {
   // and back the same way. 1 step ignores the one-step dither of the output's rounding at rest; a
   // reversal of h steps or less is not recognised, so it leaves at most h steps of lost motion.
   uint16_t direction_hysteresis_steps = 1;
+  // A switch between the AXIS1D forward and reverse tables (the lost motion to take up once the
+  // drive has reversed) moves the correction at this acceleration and at the rate the drive has
+  // left beyond the fastest input (drive max rate - max input rate) instead of at the
+  // correction's own limits, until the correction has caught up (docs/control-path.md,
+  // "Direction switch"). 10^8 steps/s^2 (100 m/s^2 at 1 um/step): a 20-step dead band is taken
+  // up in 0.9 ms, while a CNC axis accelerating at 10 m/s^2 moves 4 steps.
+  uint32_t direction_switch_accel_steps_s2 = 100000000;
 };
 
 /// Control tick rates ValidateBoardConfig accepts.
@@ -78,22 +85,23 @@ struct BoardConfig {
 /// (they travel in 0x2123): append, never renumber.
 enum class ConfigRule : uint8_t {
   kNone = 0,
-  kTickRate = 1,       // tick_hz within kMinTickHz..kMaxTickHz
-  kPulseClock = 2,     // pulse clock >= 100 x tick rate
-  kAxisCount = 3,      // 1..kMaxAxes axes
-  kAxisName = 4,       // one of XYZABCUVW, each once
-  kResolution = 5,     // units per step not zero
-  kAxisKind = 6,       // linear or rotary
-  kPulseFormat = 7,    // input/output pulse format 0..2
-  kCounterBits = 8,    // input counter 16 or 32 bits
-  kMaxCorrection = 9,  // max correction 0..table::kMaxCorrectionSteps
-  kRateNotZero = 10,   // max input rate and drive max rate not zero
-  kCounterWrap = 11,   // a 16-bit counter does not wrap by half within a tick
-  kDriveKeepsUp = 12,  // max input rate + max correction rate <= drive max rate
-  kLimiter = 13,       // correction rate/accel representable at the tick rate
-  kNodeId = 14,        // node-ID 1..127
-  kBitrate = 15,       // bit rate 10..1000 kbit/s
-  kCount = 16,
+  kTickRate = 1,          // tick_hz within kMinTickHz..kMaxTickHz
+  kPulseClock = 2,        // pulse clock >= 100 x tick rate
+  kAxisCount = 3,         // 1..kMaxAxes axes
+  kAxisName = 4,          // one of XYZABCUVW, each once
+  kResolution = 5,        // units per step not zero
+  kAxisKind = 6,          // linear or rotary
+  kPulseFormat = 7,       // input/output pulse format 0..2
+  kCounterBits = 8,       // input counter 16 or 32 bits
+  kMaxCorrection = 9,     // max correction 0..table::kMaxCorrectionSteps
+  kRateNotZero = 10,      // max input rate and drive max rate not zero
+  kCounterWrap = 11,      // a 16-bit counter does not wrap by half within a tick
+  kDriveKeepsUp = 12,     // max input rate + max correction rate <= drive max rate
+  kLimiter = 13,          // correction rate/accel representable at the tick rate
+  kNodeId = 14,           // node-ID 1..127
+  kBitrate = 15,          // bit rate 10..1000 kbit/s
+  kDirectionSwitch = 16,  // direction switch acceleration >= the correction's
+  kCount = 17,
 };
 
 inline constexpr const char* kConfigRuleTexts[] = {
@@ -115,6 +123,7 @@ inline constexpr const char* kConfigRuleTexts[] = {
     "acceleration from f^2/2^32 to below f^2 steps/s2, rate at least acceleration/f steps/s",
     "node-ID must be 1..127",
     "bit rate must be 10..1000 kbit/s",
+    "direction switch acceleration (0x2020) must be at least the max correction accel (0x2017)",
 };
 static_assert(sizeof(kConfigRuleTexts) / sizeof(kConfigRuleTexts[0]) ==
                   static_cast<size_t>(ConfigRule::kCount),
@@ -146,6 +155,18 @@ inline Result<LimiterParams> AxisLimiterParams(const AxisConfig& axis,
 inline Result<LimiterParams> AxisLimiterParams(const AxisConfig& axis, uint32_t tick_hz) {
   return AxisLimiterParams(axis, tick_hz, CompensationDivider(tick_hz));
 }
+
+/// The limiter of `axis` while it takes up an AXIS1D direction switch, stepped every
+/// `ticks_per_step` ticks of `tick_hz`: the rate the drive has left beyond the fastest input
+/// (drive.max_rate_hz - max_input_rate_hz, at least the correction's rate on a valid
+/// configuration) and direction_switch_accel_steps_s2, taken as at most what the limiter's period
+/// represents: below one step per period squared, and no more than reaches that rate within one
+/// period (a larger value would move the correction no faster). So the factory value holds at every
+/// tick rate: at a 1 kHz compensation rate it is 10^6 steps/s^2 (docs/control-path.md). Fails
+/// (kConfigInvalid) only where the correction's own limits do.
+Result<LimiterParams> AxisSwitchLimiterParams(const AxisConfig& axis,
+                                              uint32_t tick_hz,
+                                              uint32_t ticks_per_step);
 
 /// Checks that an image was built for this board: axis count, names, kinds, units per step.
 Status CheckImageMatchesBoard(const table::TableView& image, const BoardConfig& config);

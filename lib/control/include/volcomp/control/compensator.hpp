@@ -2,6 +2,8 @@
 // clamped to the board's maximum, then approached within rate/acceleration limits; Run() returns
 // whole steps. Target = the table only while enabled, referenced, fault-free and with a table
 // (else zero: the correction ramps in and out within the limits); zero correction = pass-through.
+// A switch between an axis's AXIS1D forward and reverse tables moves at the axis's direction switch
+// limits until the correction has caught up (docs/control-path.md, "Direction switch").
 // One Run() is one compensation run (every CompensationDivider(tick_hz) control ticks on a board);
 // the table evaluation is spread over refresh_runs() runs (docs/mcu-target.md, "Target refresh
 // spread over runs"). Run() and its parts: no division, no allocation, O(axes). Threading: the
@@ -182,6 +184,12 @@ class Compensator {
   /// correction went back by more than its direction hysteresis): the AXIS1D reverse table
   /// applies.
   bool reverse(int axis) const { return direction_[axis] != 0; }
+  /// True while the axis's correction takes up a switch between its AXIS1D forward and reverse
+  /// tables at the direction switch limits (AxisSwitchLimiterParams()): from the refresh that
+  /// first looks its table up in the new direction, if the correction had caught up with its
+  /// target then (within one step: not in a ramp), to a refresh of the axis at which it is at
+  /// rest again.
+  bool switching(int axis) const { return (switch_state_[axis] & 1u) != 0; }
   uint8_t axis_count() const { return axis_count_; }
 
   /// Runs per target refresh: the grid's three parts, then one per axis.
@@ -191,6 +199,10 @@ class Compensator {
  private:
   // Bitwise, not short-circuit: no branches in the run (each Set...() may run every run).
   void UpdateEngaged() { engaged_ = (has_table_ & enabled_ & referenced_ & !fault_) != 0; }
+  // While disengaged: a switch in progress comes to rest at the switch limits where it is, then
+  // the correction ramps out at the correction's limits; the direction a refresh compares with
+  // follows the drive (engaging is not a switch).
+  void DisengageAxis(uint32_t a);
 
   uint8_t axis_count_ = 0;
   bool engaged_ = false;  // has_table_ && enabled_ && referenced_ && !fault_ (one load per run)
@@ -206,6 +218,13 @@ class Compensator {
   uint32_t clamped_refreshes_[table::kMaxAxes] = {};
   uint32_t rate_limited_refreshes_[table::kMaxAxes] = {};
   CorrectionLimiter limiter_[table::kMaxAxes];
+  LimiterParams limits_[table::kMaxAxes][2] = {};  // [a][0] the correction's, [a][1] a switch's
+  // The correction's acceleration step over the switch's, Q30 (<= 1): re-expresses the limiter's
+  // velocity when it enters the switch limits.
+  int32_t switch_k_scale_q30_[table::kMaxAxes] = {};
+  // Bit 0: the axis at its switch limits; bit 1: the AXIS1D direction of its last refresh
+  // (reverse). One word: one load and one store in the refresh.
+  uint32_t switch_state_[table::kMaxAxes] = {};
   WrapTracker wrap_[table::kMaxAxes];
   uint8_t wrap_mask_ = 0;  // the active table's wrap_mask, 0 without a table
   int32_t last_pos_[table::kMaxAxes] = {};

@@ -42,6 +42,12 @@ class ControlTick {
   /// sensing, one target refresh slice (or a requested rebase), the limiters; publishes the
   /// corrections the next RunSteps() apply.
   inline void Compensate();
+  /// Compensate() for a run that rebases the compensator (a table switch or referencing): the
+  /// rebase in place of the target refresh slice, as compensator().RequestRebase() followed by
+  /// Compensate() would do it, written as its own path so that the static cycle bound of such a
+  /// run (the hand-over's work and the rebase) and of a normal run (the refresh) are separate
+  /// (docs/mcu-target.md, "Two rates").
+  inline void CompensateRebasing();
   /// Ticks per compensation run (CompensationDivider() of the configured tick rate).
   uint32_t compensation_divider() const { return divider_; }
 
@@ -109,6 +115,10 @@ class ControlTick {
   uint64_t ticks_ = 0;
   uint32_t idle_ticks_ = 0xFFFFFFFFu;
   int32_t home_[table::kMaxAxes] = {};  // machine position at the reference (home_position_steps)
+
+  // Compensate()'s walks over the axes before and after the refresh (or rebase).
+  inline void SenseAxes();
+  inline void LimitAndPublish();
 };
 
 __attribute__((always_inline)) inline bool ControlTick::RunSteps(const uint32_t* input_counters) {
@@ -137,8 +147,7 @@ __attribute__((always_inline)) inline bool ControlTick::RunSteps(const uint32_t*
   return due;
 }
 
-__attribute__((always_inline)) inline void ControlTick::Compensate() {
-  // Compensator::Run() in its three steps, fused with the machine-position work of each axis.
+__attribute__((always_inline)) inline void ControlTick::SenseAxes() {
   const uint32_t n = axis_count_;
   for (uint32_t a = 0; a < n; ++a) {
     const int32_t machine =
@@ -147,10 +156,26 @@ __attribute__((always_inline)) inline void ControlTick::Compensate() {
     machine_[a] = machine;
     compensator_.SenseAxis(static_cast<uint8_t>(a), machine);
   }
-  compensator_.RefreshTargets(machine_);
+}
+
+__attribute__((always_inline)) inline void ControlTick::LimitAndPublish() {
+  const uint32_t n = axis_count_;
   for (uint32_t a = 0; a < n; ++a) {
     published_[a].store(compensator_.LimitAxis(static_cast<uint8_t>(a)), std::memory_order_relaxed);
   }
+}
+
+__attribute__((always_inline)) inline void ControlTick::Compensate() {
+  // Compensator::Run() in its three steps, fused with the machine-position work of each axis.
+  SenseAxes();
+  compensator_.RefreshTargets(machine_);
+  LimitAndPublish();
+}
+
+__attribute__((always_inline)) inline void ControlTick::CompensateRebasing() {
+  SenseAxes();
+  compensator_.Rebase(machine_);
+  LimitAndPublish();
 }
 
 }  // namespace volcomp

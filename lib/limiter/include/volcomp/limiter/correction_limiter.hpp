@@ -7,6 +7,7 @@
 
 #include <cstdint>
 
+#include "volcomp/base/interp_arith.hpp"
 #include "volcomp/base/status.hpp"
 
 namespace volcomp {
@@ -31,6 +32,15 @@ class CorrectionLimiter {
 
   explicit CorrectionLimiter(Params p = Params()) : params_(p) {}
   void set_params(Params p) { params_ = p; }
+  /// Takes limits `p` in the middle of a motion: the velocity carries over, re-expressed in the
+  /// new acceleration unit as k * `k_scale_q30` / 2^30 (the old unit over the new, <= 1 when the
+  /// new acceleration is at least the old), rounded toward minus infinity: the velocity changes by
+  /// less than one new acceleration step, within the new limits (a velocity one step above the new
+  /// rate limit is braked by Step()). Not on the per-step path (a direction switch).
+  void SwitchParams(Params p, int32_t k_scale_q30) {
+    params_ = p;
+    k_ = static_cast<int32_t>(MulAddLong(0, k_, k_scale_q30) >> 30);  // one SMLAL
+  }
   /// Jumps to `position_q32` at rest (power-up: 0).
   void Reset(int64_t position_q32 = 0) {
     pos_ = position_q32;
