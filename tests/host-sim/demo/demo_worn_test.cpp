@@ -57,7 +57,9 @@ TEST(SimDemo, WornQuickMeetsTheGoals) {
     for (size_t i = 0; i < r.goals.size(); ++i) {
       const Goal& g = r.goals[i];
       EXPECT_EQ(g.asserted, i < 6) << g.what;
-      if (g.asserted) EXPECT_TRUE(g.holds) << g.what;
+      if (g.asserted) {
+        EXPECT_TRUE(g.holds) << g.what;
+      }
       EXPECT_EQ(g.holds, g.value >= g.limit || !g.at_least) << g.what;
     }
     for (size_t k = 0; k < 3; ++k) {
