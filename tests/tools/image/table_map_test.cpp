@@ -130,6 +130,26 @@ const MapSlice& FindSlice(const TableMap& map, int u, int v, const char* which) 
   return map.slices.front();
 }
 
+// Every sample of every slice, between the nodes too, is the field there.
+void ExpectSamplesAreTheField(const TableMap& map) {
+  for (const MapSlice& s : map.slices) {
+    const auto& pu = map.dim[s.u].sample_pos;
+    const auto& pv = map.dim[s.v].sample_pos;
+    ASSERT_EQ(s.value.size(), pu.size() * pv.size() * 3);
+    for (size_t j = 0; j < pv.size(); ++j) {
+      for (size_t i = 0; i < pu.size(); ++i) {
+        double p[3];
+        p[s.u] = pu[i];
+        p[s.v] = pv[j];
+        p[s.w] = s.position;
+        for (int c = 0; c < 3; ++c) {
+          EXPECT_NEAR(s.value[(j * pu.size() + i) * 3 + c], Field(c, p[0], p[1], p[2]), 0.005);
+        }
+      }
+    }
+  }
+}
+
 TEST(image_table_map, SummaryAndSlicesFollowTheField) {
   const LoadedImage img = FieldImage(false);
   const TableMap map = ValueOf(MapTable(img, "field.vct"));
@@ -164,22 +184,7 @@ TEST(image_table_map, SummaryAndSlicesFollowTheField) {
   EXPECT_EQ(FindSlice(map, 1, 2, "middle").node, 1u);
   // Every sample, between the nodes too, is the field there (the firmware's trilinear lookup
   // reproduces a linear field; Q8 steps = 1/256 µm).
-  for (const MapSlice& s : map.slices) {
-    const auto& pu = map.dim[s.u].sample_pos;
-    const auto& pv = map.dim[s.v].sample_pos;
-    ASSERT_EQ(s.value.size(), pu.size() * pv.size() * 3);
-    for (size_t j = 0; j < pv.size(); ++j) {
-      for (size_t i = 0; i < pu.size(); ++i) {
-        double p[3];
-        p[s.u] = pu[i];
-        p[s.v] = pv[j];
-        p[s.w] = s.position;
-        for (int c = 0; c < 3; ++c) {
-          EXPECT_NEAR(s.value[(j * pu.size() + i) * 3 + c], Field(c, p[0], p[1], p[2]), 0.005);
-        }
-      }
-    }
-  }
+  ExpectSamplesAreTheField(map);
   EXPECT_GT(map.dim[0].sample_pos.size(), kNodes[0]);  // samples between the nodes
 }
 
@@ -335,21 +340,7 @@ TEST(image_table_map, LargeLatticeIsSampledAtNodes) {
   EXPECT_EQ(map.dim[1].samples_per_cell, 4);
   ASSERT_EQ(map.slices.size(), 2u + 3 + 3);
   EXPECT_STREQ(map.slices[1].which, "upper");
-  for (const MapSlice& s : map.slices) {
-    const auto& pu = map.dim[s.u].sample_pos;
-    const auto& pv = map.dim[s.v].sample_pos;
-    for (size_t j = 0; j < pv.size(); ++j) {
-      for (size_t i = 0; i < pu.size(); ++i) {
-        double p[3];
-        p[s.u] = pu[i];
-        p[s.v] = pv[j];
-        p[s.w] = s.position;
-        for (int c = 0; c < 3; ++c) {
-          EXPECT_NEAR(s.value[(j * pu.size() + i) * 3 + c], Field(c, p[0], p[1], p[2]), 0.005);
-        }
-      }
-    }
-  }
+  ExpectSamplesAreTheField(map);
   // Arrows at X nodes 0, 6, ..., 60 and every Y node: 11 x 3 on the XY slices.
   const std::string vectors = SliceSvgs(map, map.slices[0])[0];
   size_t dots = 0;
