@@ -3,6 +3,7 @@
 #include <sstream>
 
 #include "commands.hpp"
+#include "volcomp/metrology/circular_report.hpp"
 #include "volcomp/sim/program_run.hpp"
 #include "volcomp/tools/csv.hpp"
 #include "volcomp/tools/file_io.hpp"
@@ -45,20 +46,7 @@ tools::JsonValue ResultJson(const ProgramRunResult& r) {
   }
   j.Set("segments", segments);
   if (r.circular) {
-    const metrology::CircularResult& c = *r.circular;
-    tools::JsonValue b = tools::JsonValue::Object();
-    b.Set("points_cw", static_cast<unsigned long long>(c.points_cw));
-    b.Set("points_ccw", static_cast<unsigned long long>(c.points_ccw));
-    b.Set("G_cw_um", c.G_cw_um);
-    b.Set("G_ccw_um", c.G_ccw_um);
-    b.Set("G_b_um", c.G_b_um);
-    b.Set("H_um", c.H_um);
-    b.Set("F_max_um", c.F_max_um);
-    b.Set("F_min_um", c.F_min_um);
-    tools::JsonValue offset = tools::JsonValue::Object();
-    offset.Set("x", c.centre_offset_x_um);
-    offset.Set("y", c.centre_offset_y_um);
-    b.Set("centre_offset_um", offset);
+    tools::JsonValue b = metrology::CircularFiguresJson(*r.circular);
     j.Set("ballbar", b);
   }
   return j;

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "summary_document.hpp"
+#include "volcomp/metrology/circular_report.hpp"
 #include "volcomp/sim/demo.hpp"
 
 namespace volcomp::sim {
@@ -146,18 +147,11 @@ JsonValue Circular(const DemoResult& r) {
       const CircularTestResult& t = phases[i]->circular[k];
       const metrology::CircularResult& e = t.result;
       JsonValue o = JsonValue::Object();
-      o.Set("phase", labels[i])
-          .Set("points_cw", static_cast<unsigned long long>(e.points_cw))
-          .Set("points_ccw", static_cast<unsigned long long>(e.points_ccw))
-          .Set("G_cw_um", e.G_cw_um)
-          .Set("G_ccw_um", e.G_ccw_um)
-          .Set("G_b_um", e.G_b_um)
-          .Set("H_um", e.H_um)
-          .Set("F_max_um", e.F_max_um)
-          .Set("F_min_um", e.F_min_um)
-          .Set("centre_offset_um",
-               JsonValue::Object().Set("x", e.centre_offset_x_um).Set("y", e.centre_offset_y_um))
-          .Set("cutting_max_error_um", t.cutting_max_error_um);
+      o.Set("phase", labels[i]);
+      for (auto& [key, value] : metrology::CircularFiguresJson(e).object) {
+        o.Set(key, std::move(value));
+      }
+      o.Set("cutting_max_error_um", t.cutting_max_error_um);
       by_phase.Push(std::move(o));
     }
     plane.Set("phases", std::move(by_phase));

@@ -64,16 +64,9 @@ report::PolarChart Chart(const CircularEvaluation& ev) {
 
 }  // namespace
 
-JsonValue CircularJson(const CircularEvaluation& ev) {
-  const CircularResult& r = ev.result;
+JsonValue CircularFiguresJson(const CircularResult& r) {
   const bool both = r.has_cw && r.has_ccw;
   JsonValue j = JsonValue::Object();
-  j.Set("command", "evaluate circular");
-  j.Set("standard", "ISO 230-4:2005");
-  j.Set("source", ev.data.source);
-  j.Set("conditions", ConditionsJson(ev.conditions));
-  j.Set("nominal_radius_mm",
-        NumberOrNull(ev.data.nominal_radius_mm > 0, ev.data.nominal_radius_mm));
   j.Set("points_cw", static_cast<uint64_t>(r.points_cw));
   j.Set("points_ccw", static_cast<uint64_t>(r.points_ccw));
   j.Set("G_cw_um", NumberOrNull(r.has_cw, r.G_cw_um));
@@ -88,6 +81,18 @@ JsonValue CircularJson(const CircularEvaluation& ev) {
   offset.Set("y", r.centre_offset_y_um);
   j.Set("centre_offset_um", std::move(offset));
   j.Set("mean_radius_deviation_um", r.mean_radius_dev_um);
+  return j;
+}
+
+JsonValue CircularJson(const CircularEvaluation& ev) {
+  JsonValue j = JsonValue::Object();
+  j.Set("command", "evaluate circular");
+  j.Set("standard", "ISO 230-4:2005");
+  j.Set("source", ev.data.source);
+  j.Set("conditions", ConditionsJson(ev.conditions));
+  j.Set("nominal_radius_mm",
+        NumberOrNull(ev.data.nominal_radius_mm > 0, ev.data.nominal_radius_mm));
+  for (auto& [key, value] : CircularFiguresJson(ev.result).object) j.Set(key, std::move(value));
   // The readings (for plots and `report compare`'s overlay), as read.
   JsonValue paths = JsonValue::Object();
   for (const auto& [name, path] :
@@ -102,7 +107,7 @@ JsonValue CircularJson(const CircularEvaluation& ev) {
   }
   j.Set("paths", std::move(paths));
   JsonValue warnings = JsonValue::Array();
-  for (const auto& w : r.warnings) warnings.Push(w);
+  for (const auto& w : ev.result.warnings) warnings.Push(w);
   j.Set("warnings", std::move(warnings));
   return j;
 }

@@ -20,8 +20,12 @@ struct CircularEvaluation {
   TestConditions conditions;
 };
 
-/// Keys G_cw_um, G_ccw_um, G_b_um, H_um (null for a missing direction), F_max_um, F_min_um,
-/// centre_offset_um {x, y}, the context (source, conditions, radius, points, warnings) and the
+/// The figures of one test: points_cw, points_ccw, G_cw_um, G_ccw_um, G_b_um, H_um, H_angle_deg
+/// (null for a missing direction), F_max_um, F_min_um, centre_offset_um {x, y},
+/// mean_radius_deviation_um. The one writer of these keys (evaluate circular, volcomp-sim run
+/// --ballbar, the demo's summary).
+tools::JsonValue CircularFiguresJson(const CircularResult& r);
+/// CircularFiguresJson()'s keys, the context (source, conditions, radius, warnings) and the
 /// readings (paths {cw, ccw} {angle_deg, deviation_um}).
 tools::JsonValue CircularJson(const CircularEvaluation& ev);
 /// The figures as text, from CircularJson()'s document.
