@@ -311,8 +311,7 @@ void PrintGoals(const JsonValue& d, std::ostream& out) {
   for (const JsonValue& g : At(d, "goals").array) {
     const bool asserted = At(g, "asserted").boolean;
     if (!asserted && !reported) {
-      out << "reported, not asserted (not in the exit code; what remains is mostly the worn "
-             "machine's scatter at rest and its screw error: docs/simulator.md, circular tests):\n";
+      out << "reported, not asserted (not in the exit code):\n";
       reported = true;
     }
     const std::string& unit = Str(g, "unit");

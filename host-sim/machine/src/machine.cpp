@@ -90,10 +90,13 @@ void Machine::OnDriveTick(const std::array<int64_t, 3>& drive_steps, uint64_t t_
   for (size_t a = 0; a < 3; ++a) {
     if (drive_steps[a] != last_steps_[a]) {
       last_steps_[a] = drive_steps[a];
+      last_step_ns_[a] = t_ns;
       moving_[a] = true;
       lost_motion_[a].Follow(options_.power_up_mm[a] +
                              static_cast<double>(drive_steps[a]) * options_.step_mm[a]);
-    } else if (moving_[a]) {  // came to rest: the carriage settles somewhere new
+    } else if (moving_[a] &&
+               static_cast<double>(t_ns - last_step_ns_[a]) >= 1e6 * w.scatter_standstill_ms) {
+      // came to rest: the carriage settles somewhere new
       moving_[a] = false;
       if (w.scatter) scatter_mm_[a] = 1e-3 * w.scatter_sigma_um[a] * rng_.Gaussian();
     }

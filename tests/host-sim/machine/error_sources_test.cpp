@@ -73,7 +73,9 @@ TEST(SimWear, ScatterIsDrawnWhenAnAxisComesToRest) {
     const int64_t x = (i % 2) * 1000;
     m.OnDriveTick({x, 0, 0}, t += 20000);  // moving
     const double moving = m.AxisPositions_mm({x, 0, 0}).x;
-    m.OnDriveTick({x, 0, 0}, t += 20000);  // at rest: a new settling offset
+    m.OnDriveTick({x, 0, 0}, t += 19'000'000);  // 19 ms without a step: not yet at rest
+    EXPECT_EQ(m.AxisPositions_mm({x, 0, 0}).x, moving);
+    m.OnDriveTick({x, 0, 0}, t += 1'000'000);  // 20 ms: at rest, a new settling offset
     const double settled = m.AxisPositions_mm({x, 0, 0}).x;
     m.OnDriveTick({x, 0, 0}, t += 20000);  // still at rest: kept
     EXPECT_EQ(m.AxisPositions_mm({x, 0, 0}).x, settled);
@@ -87,6 +89,23 @@ TEST(SimWear, ScatterIsDrawnWhenAnAxisComesToRest) {
   const double mean = sum / n, sd = std::sqrt(sum2 / n - mean * mean);
   EXPECT_NEAR(mean, 0, 4 * 0.8 / std::sqrt(n));
   EXPECT_NEAR(sd, 0.8, 0.05 * 0.8);
+}
+
+TEST(SimWear, ScatterIsNotDrawnBetweenTheStepsOfASlowAxis) {
+  Machine m = WornWith([](WornMachineProfile& w) {
+    w.scatter = true;
+    w.scatter_sigma_um = {0.8, 0, 0};
+  });
+  // A step every 15 ms (1 µm steps: 4 mm/min), ticks of 20 µs between: the carriage moves
+  // with the drive, no settling offset appears.
+  uint64_t t = 0;
+  for (int64_t x = 1; x <= 200; ++x) {
+    for (int tick = 0; tick < 750; ++tick) {
+      m.OnDriveTick({x, 0, 0}, t += 20000);
+      ASSERT_DOUBLE_EQ(m.AxisPositions_mm({x, 0, 0}).x, 40.0 + 1e-3 * static_cast<double>(x))
+          << "step " << x << " tick " << tick;
+    }
+  }
 }
 
 TEST(SimWear, ShortPeriodScrewErrorOfTheDrivePosition) {

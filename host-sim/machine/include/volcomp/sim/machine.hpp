@@ -86,6 +86,7 @@ class Machine {
   double time_s_ = 0;
   std::array<int64_t, 3> last_steps_ = {0, 0, 0};
   std::array<bool, 3> moving_ = {false, false, false};
+  std::array<uint64_t, 3> last_step_ns_ = {0, 0, 0};
   std::array<LostMotion, 3> lost_motion_;
   std::array<double, 3> scatter_mm_ = {0, 0, 0};
 };

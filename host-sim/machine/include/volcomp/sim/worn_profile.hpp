@@ -16,6 +16,10 @@ struct WornMachineProfile {
 
   bool scatter = false;
   std::array<double, 3> scatter_sigma_um = {0.7, 0.8, 0.6};  // a new offset at every rest
+  // An axis is at rest once its drive has made no step for this long (20 ms: slower than
+  // 7.5 mm/min at 2.5 µm per step). The gaps between the steps of a slow axis along a contour are
+  // not stops; the near-standstill where a contour reverses the axis is one.
+  double scatter_standstill_ms = 20;
 
   bool screw_error = false;  // A·sin(2π·d/P + φ) of the drive position d
   double screw_period_mm = 5;
