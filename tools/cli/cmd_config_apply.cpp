@@ -210,6 +210,10 @@ Expected<Output> RunConfigApply(Args& args, Context& ctx) {
         << (crc != 0 ? " (the active table is dropped at the reset)" : "") << ":" << what << "\n";
   }
   d["resolution_changes"] = std::move(resolution);
+  d["switch_accel_bounds"] = SwitchAccelBounds(wanted);
+  for (const JsonValue& x : d.get("switch_accel_bounds")->array) {
+    msg << SwitchAccelBoundText(x) << "\n";
+  }
   for (const JsonValue& x : d.get("changes")->array) msg << "  " << x.string << "\n";
   VOLCOMP_TRY_ASSIGN(const size_t written, WriteAndStore(s, changes));
   d.Set("written", uint64_t{written});

@@ -50,6 +50,7 @@ JsonValue ShowData(uint8_t node,
   }
   d.Set("axis_count", unsigned{c.settings.board.axis_count});
   d.Set("all_axes", all);
+  d["switch_accel_bounds"] = SwitchAccelBounds(in_force);
   return d;
 }
 
@@ -78,6 +79,9 @@ void ShowText(const JsonValue& d, std::ostream& out) {
   if (!d.get("all_axes")->boolean && axes < table::kMaxAxes) {
     out << "(axes " << axes + 1 << ".." << unsigned{table::kMaxAxes}
         << " are not used: --all shows their objects)\n";
+  }
+  for (const JsonValue& x : d.get("switch_accel_bounds")->array) {
+    out << "in force, " << SwitchAccelBoundText(x) << "\n";
   }
 }
 

@@ -20,6 +20,15 @@ std::string ValueText(const canopen::ObjectEntry& e, int64_t value);
 /// Its unit and meaning, "" for objects without a key.
 std::string UnitOf(const canopen::ObjectEntry& e);
 
+/// The axes of `s` whose direction switch acceleration (0x2020) takes effect below the configured
+/// value at the board's compensation rate (DirectionSwitchAccelInEffect, lib/config): per axis
+/// `object`, `axis`, `configured`, `in_effect` (steps/s^2), `compensation_hz` and `bound`
+/// ("compensation period": below one step per period squared; "drive rate": reaches the rate the
+/// drive has beyond the input within one period). Empty when every value takes effect.
+JsonValue SwitchAccelBounds(const BoardSettings& s);
+/// One such axis as a line of text.
+std::string SwitchAccelBoundText(const JsonValue& x);
+
 /// What it means that settings are pending.
 const char* PendingNote();
 

@@ -65,6 +65,28 @@ ConfigFinding FirstBrokenRule(const BoardConfig& config) {
 
 }  // namespace
 
+SwitchAccelInEffect DirectionSwitchAccelInEffect(const AxisConfig& axis,
+                                                 uint32_t tick_hz,
+                                                 uint32_t ticks_per_step) {
+  SwitchAccelInEffect e{axis.direction_switch_accel_steps_s2, SwitchAccelBound::kNone};
+  if (tick_hz == 0 || ticks_per_step == 0) return e;
+  const uint64_t rate = axis.drive.max_rate_hz > axis.max_input_rate_hz
+                            ? axis.drive.max_rate_hz - axis.max_input_rate_hz
+                            : 0u;
+  // The largest acceleration the period represents (accel * n^2 < f^2) and the one that reaches
+  // the rate within one period (accel * n <= rate * f). Configuration time: divisions are fine.
+  const uint64_t n = ticks_per_step;
+  const uint64_t f = tick_hz;
+  const uint64_t below_one_step = (f * f - 1u) / (n * n);
+  const uint64_t within_one_period = rate * f / n;
+  if (below_one_step < e.steps_s2 && below_one_step <= within_one_period) {
+    e = {static_cast<uint32_t>(below_one_step), SwitchAccelBound::kPeriod};
+  } else if (within_one_period < e.steps_s2) {
+    e = {static_cast<uint32_t>(within_one_period), SwitchAccelBound::kRate};
+  }
+  return e;
+}
+
 Result<LimiterParams> AxisSwitchLimiterParams(const AxisConfig& axis,
                                               uint32_t tick_hz,
                                               uint32_t ticks_per_step) {
@@ -72,18 +94,9 @@ Result<LimiterParams> AxisSwitchLimiterParams(const AxisConfig& axis,
     return Error::kConfigInvalid;
   }
   const uint64_t rate = axis.drive.max_rate_hz - axis.max_input_rate_hz;
-  // The largest acceleration the period represents (accel * n^2 < f^2) and the one that reaches
-  // the rate within one period (accel * n <= rate * f). Configuration time: divisions are fine.
-  const uint64_t n = ticks_per_step;
-  const uint64_t f = tick_hz;
-  uint64_t accel = axis.direction_switch_accel_steps_s2;
-  const uint64_t below_one_step = (f * f - 1u) / (n * n);
-  const uint64_t within_one_period = rate * f / n;
-  accel = accel < below_one_step ? accel : below_one_step;
-  accel = accel < within_one_period ? accel : within_one_period;
   return CorrectionLimiter::MakeParams(
       tick_hz, static_cast<uint32_t>(rate < 0xFFFFFFFFu ? rate : 0xFFFFFFFFu),
-      static_cast<uint32_t>(accel), ticks_per_step);
+      DirectionSwitchAccelInEffect(axis, tick_hz, ticks_per_step).steps_s2, ticks_per_step);
 }
 
 Status ValidateBoardConfig(const BoardConfig& config, ConfigFinding* finding) {

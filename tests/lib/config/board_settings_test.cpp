@@ -91,6 +91,29 @@ TEST(SettingsRules, DirectionSwitchAccelerationAtLeastTheCorrections) {
   EXPECT_TRUE(ValidateSettings(s, &f).ok());
 }
 
+// The acceleration in effect: the configured one unless the limiter's period cannot represent it
+// (accel < f^2 / n^2) or it would reach the drive's spare rate in under one period
+// (accel <= rate * f / n), each worked by hand here.
+TEST(SettingsRules, DirectionSwitchAccelerationInEffectNamesItsBound) {
+  AxisConfig a;  // factory: 10^8 steps/s^2
+  a.drive.max_rate_hz = 2000000;
+  a.max_input_rate_hz = 1000000;
+  SwitchAccelInEffect e = DirectionSwitchAccelInEffect(a, 50000, CompensationDivider(50000));
+  EXPECT_EQ(e.steps_s2, 100000000u);  // (50000 / 3)^2 = 2.8e8 and 1e6 * 50000 / 3 both above
+  EXPECT_EQ(e.bound, SwitchAccelBound::kNone);
+  e = DirectionSwitchAccelInEffect(a, 1000, 1);  // 1 kHz: (10^6 - 1) / 1
+  EXPECT_EQ(e.steps_s2, 999999u);
+  EXPECT_EQ(e.bound, SwitchAccelBound::kPeriod);
+  a.drive.max_rate_hz = 1000100;  // 100 steps/s to spare: 100 * 50000 / 3 = 1666666
+  e = DirectionSwitchAccelInEffect(a, 50000, 3);
+  EXPECT_EQ(e.steps_s2, 1666666u);
+  EXPECT_EQ(e.bound, SwitchAccelBound::kRate);
+  a.drive.max_rate_hz = 1000000;  // nothing to spare
+  e = DirectionSwitchAccelInEffect(a, 50000, 3);
+  EXPECT_EQ(e.steps_s2, 0u);
+  EXPECT_EQ(e.bound, SwitchAccelBound::kRate);
+}
+
 TEST(SettingsRecord, EveryFieldRoundTripsAndARecordOnlyCountsWhenValid) {
   BoardSettings s;
   s.node_id = 0x22;

@@ -259,6 +259,37 @@ TEST_F(CanCommands, ConfigShowTextIsALayoutOfItsJson) {
       << text.out;
 }
 
+// A drive with 2000 steps/s to spare beyond the 1 MHz input: a direction switch reaches that rate
+// within one compensation period (50 kHz / 3) at 2000 * 50000 / 3 = 33 333 333 steps/s^2, below
+// the factory 10^8 of 0x2020. `config apply` says so before it writes, `config show` for the
+// settings in force; both in their JSON.
+TEST_F(CanCommands, ConfigSaysWhereTheDirectionSwitchAccelerationIsBound) {
+  const std::string ini = ::testing::TempDir() + "bound_" + std::to_string(::getpid()) + ".ini";
+  ASSERT_TRUE(tools::WriteTextFile(ini,
+                                   "[board]\naxes = X Y Z\n[axis X]\ndrive_max_rate_hz = 1002000\n"
+                                   "[axis Y]\n[axis Z]\n")
+                  .ok());
+  const CliResult apply = Run({"config", "apply", ini, "--json"});
+  ASSERT_EQ(apply.code, 0) << apply.err;
+  const std::string line =
+      "axis X: direction_switch_accel (2020:1) 100000000 steps/s2 takes effect as 33333333 "
+      "steps/s2: it reaches the rate the drive has beyond the input within one period at 16666 Hz";
+  EXPECT_TRUE(Contains(apply.err, line)) << apply.err;
+  for (const CliResult& r : {apply, Run({"config", "show", "--json"})}) {
+    const JsonValue d = Json(r);
+    ASSERT_NE(d.get("switch_accel_bounds"), nullptr) << r.out;
+    const auto& bounds = d.get("switch_accel_bounds")->array;
+    ASSERT_EQ(bounds.size(), 1u) << r.out;
+    EXPECT_EQ(bounds[0].get("object")->string, "2020:1");
+    EXPECT_EQ(bounds[0].get("configured")->integer, 100000000);
+    EXPECT_EQ(bounds[0].get("in_effect")->integer, 33333333);
+    EXPECT_EQ(bounds[0].get("bound")->string, "drive rate");
+  }
+  const CliResult text = Run({"config", "show"});
+  EXPECT_TRUE(Contains(text.out, "in force, " + line + "\n")) << text.out;
+  std::remove(ini.c_str());
+}
+
 TEST_F(CanCommands, NmtIsConfirmedByTheHeartbeat) {
   CliResult r = Run({"nmt", "stop"});
   EXPECT_EQ(r.code, 0) << r.err;

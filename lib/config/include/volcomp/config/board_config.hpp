@@ -156,6 +156,25 @@ inline Result<LimiterParams> AxisLimiterParams(const AxisConfig& axis, uint32_t 
   return AxisLimiterParams(axis, tick_hz, CompensationDivider(tick_hz));
 }
 
+/// What bounds the acceleration of a direction switch below direction_switch_accel_steps_s2.
+enum class SwitchAccelBound : uint8_t {
+  kNone,    // the configured value is in effect
+  kPeriod,  // the most the limiter's period represents (below one step per period squared)
+  kRate,    // the acceleration that reaches the drive's spare rate within one period
+};
+
+/// The acceleration (steps/s^2) an AXIS1D direction switch of `axis` is taken up with when the
+/// limiter steps every `ticks_per_step` ticks of `tick_hz`, and what bounds it: the one definition
+/// used by AxisSwitchLimiterParams() and by the PC tool, which reports a bound value (`config
+/// show`, `config apply`). 0 with kRate where the drive has no rate to spare beyond the input.
+struct SwitchAccelInEffect {
+  uint32_t steps_s2 = 0;
+  SwitchAccelBound bound = SwitchAccelBound::kNone;
+};
+SwitchAccelInEffect DirectionSwitchAccelInEffect(const AxisConfig& axis,
+                                                 uint32_t tick_hz,
+                                                 uint32_t ticks_per_step);
+
 /// The limiter of `axis` while it takes up an AXIS1D direction switch, stepped every
 /// `ticks_per_step` ticks of `tick_hz`: the rate the drive has left beyond the fastest input
 /// (drive.max_rate_hz - max_input_rate_hz, at least the correction's rate on a valid
