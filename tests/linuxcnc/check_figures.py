@@ -132,8 +132,10 @@ print("LinuxCNC: following error max %s mm while moving (FERROR %s mm), %.3f ste
       % (["%.3f" % v for v in lc["ferror_mm"]],
          ini_value(os.path.join(work, "volcomp-sim.ini"), "FERROR"), chk["max_rest_ferror_steps"],
          ["%.3f" % v for v in lc["stepgen_lag_mm"]]))
-print("stepgen maxvel checks that saw a longer base period: %d messages, maxvel set back %d times"
-      % (len(lc.get("stepgen_notes", [])), lc.get("maxvel_reapplied", 0)))
+print("stepgen maxvel checks that saw a longer base period: %d messages, maxvel set back %d times, "
+      "step timing set back %d times"
+      % (len(lc.get("stepgen_notes", [])), lc.get("maxvel_reapplied", 0),
+         lc.get("step_timing_reapplied", 0)))
 print("programs %.0f s, test wall time %.0f s" % (lc.get("program_wall_s", 0), wall))
 if failures:
     print("FAILED:\n  " + "\n  ".join(failures))

@@ -12,6 +12,7 @@ Uses Debian's linuxcnc and hal modules (/usr/bin/python3).
 """
 import json
 import os
+import re
 import sys
 import threading
 import time
@@ -35,6 +36,7 @@ def log(msg):
 
 stepgen_notes = []
 maxvel_reapplied = []
+timing_reapplied = []
 
 
 def drain_errors():
@@ -67,20 +69,33 @@ def g(name):
 
 
 def guard_maxvel():
-    """stepgen compares maxvel with the rate its step timing allows, computed from the base period
-    it last saw, and when that check sees a late period (it does under load in this non-real-time
-    setup) lowers maxvel for good; motion then outruns the step generator. Set it back to the
-    configured value and count it (reported)."""
+    """stepgen's update-freq rounds each step timing parameter (steplen, stepspace, dirsetup,
+    dirhold; ns) up to a whole number of the base period make-pulses last ran with, and stores the
+    rounded value back: one late period (it happens under load in this non-real-time setup, e.g.
+    64 us) leaves steplen and stepspace at 64000 ns for good, since a multiple of the late period
+    is a multiple of the normal one. Its rate limit 1/(steplen + stepspace) is then 7812 steps/s
+    (19.5 mm/s) and it lowers maxvel to that every servo period: motion at 70 mm/s outruns the step
+    generator until the following error stops the machine. When maxvel is found lowered, set the
+    timing parameters back to what the HAL file sets and maxvel to the INI's, and count both
+    (reported)."""
     want = STEPGEN_MAXVEL
     if want <= 0:
         return
     for j in range(JOINTS if COMP_MODE else 2 * JOINTS):
         name = "stepgen.%d.maxvel" % j
-        if abs(g(name) - want) > 1e-9:
-            if len(maxvel_reapplied) < 12:
-                log("%s was %.3f, set to %.3f again" % (name, g(name), want))
-            hal.set_p(name, str(want))
-            maxvel_reapplied.append(j)
+        if abs(g(name) - want) <= 1e-9:
+            continue
+        for param, ns in STEP_TIMING_NS.get(j, {}).items():
+            pname = "stepgen.%d.%s" % (j, param)
+            if g(pname) > -(-ns // BASE_PERIOD_NS) * BASE_PERIOD_NS:  # above its normal rounding
+                if len(timing_reapplied) < 12:
+                    log("%s was %d ns, set to %d ns again" % (pname, g(pname), ns))
+                hal.set_p(pname, str(ns))
+                timing_reapplied.append(j)
+        if len(maxvel_reapplied) < 12:
+            log("%s was %.3f, set to %.3f again" % (name, g(name), want))
+        hal.set_p(name, str(want))
+        maxvel_reapplied.append(j)
 
 
 def guard_maxvel_every_ms(stop):
@@ -92,8 +107,27 @@ def guard_maxvel_every_ms(stop):
 
 
 # The configured stepgen maxvel ([JOINT_0]STEPGEN_MAXVEL of the INI file linuxcnc runs with).
-STEPGEN_MAXVEL = float(linuxcnc.ini(os.environ["INI_FILE_NAME"]).find("JOINT_0", "STEPGEN_MAXVEL")
-                       or 0)
+INI_PATH = os.environ["INI_FILE_NAME"]
+STEPGEN_MAXVEL = float(linuxcnc.ini(INI_PATH).find("JOINT_0", "STEPGEN_MAXVEL") or 0)
+BASE_PERIOD_NS = int(linuxcnc.ini(INI_PATH).find("EMCMOT", "BASE_PERIOD"))
+
+
+def configured_step_timing():
+    """{stepgen index: {parameter: ns}}: the step timing the INI's [HAL]HALFILE sets (setp)."""
+    halfile = os.path.join(os.path.dirname(INI_PATH), linuxcnc.ini(INI_PATH).find("HAL", "HALFILE"))
+    timing = {}
+    with open(halfile) as f:
+        for line in f:
+            m = re.match(r"\s*setp\s+stepgen\.(\d+)\.(steplen|stepspace|dirsetup|dirhold)\s+(\d+)",
+                         line)
+            if m:
+                timing.setdefault(int(m.group(1)), {})[m.group(2)] = int(m.group(3))
+    if not timing:
+        sys.exit("lcnc_run: %s sets no stepgen step timing (setp stepgen.N.steplen ...)" % halfile)
+    return timing
+
+
+STEP_TIMING_NS = configured_step_timing()
 
 # VOLCOMP_LCNC_MODE=comp: the machine of volcomp-comp.hal (LinuxCNC's own joint compensation
 # files, no volcomp component): joint.N.pos-cmd is the nominal, motor-pos-cmd the compensated
@@ -166,15 +200,21 @@ def run_program(path, rows):
     C.wait_complete()
     C.auto(linuxcnc.AUTO_RUN, 0)
     name = os.path.basename(path)
+    with open(path) as f:  # the measured stops: a dwell each (1-based line numbers)
+        dwell_lines = [i + 1 for i, line in enumerate(f) if line.lstrip().upper().startswith("G4")]
+    seen_lines = []
     stop = 0
     in_dwell = False
     dwell_line = None
     errors_before = len(errors)
     t0 = time.time()
+    last_poll, max_poll_gap = time.time(), 0.0
     wait_for(lambda: S.poll() or S.interp_state != linuxcnc.INTERP_IDLE or len(errors) > errors_before,
              10, name + " to start")
     while True:
         S.poll()
+        now = time.time()
+        max_poll_gap, last_poll = max(max_poll_gap, now - last_poll), now
         drain_errors()
         if len(errors) > errors_before:
             raise RuntimeError("%s: %s" % (name, "; ".join(errors[errors_before:])))
@@ -187,11 +227,19 @@ def run_program(path, rows):
         # the poller never sees the CNC not waiting between the two dwells).
         if waiting and (not in_dwell or S.current_line != dwell_line):
             dwell_line = S.current_line
+            seen_lines.append(dwell_line)
             # The dwell of a measured stop: the machine stands still; take the values once they
             # have been still for 100 ms (the correction settles within a few ms at rest).
-            v = settled_snapshot(0.1, time.time() + 5.0)
+            t_stop = time.time()
+            v = settled_snapshot(0.1, t_stop + 5.0)
             if v is None:
                 raise RuntimeError("%s stop %d: values did not settle" % (name, stop))
+            S.poll()
+            if S.exec_state != linuxcnc.EXEC_WAITING_FOR_DELAY or S.current_line != dwell_line:
+                # Taken after the dwell ended: the values may be the next stop's, which is then
+                # missed (the evaluation's count of stops fails).
+                log("%s stop %d: values still only after %.2f s, after the dwell (line %d) ended"
+                    % (name, stop, time.time() - t_stop, dwell_line))
             rows.append([name, stop] + v)
             stop += 1
         in_dwell = waiting
@@ -200,8 +248,14 @@ def run_program(path, rows):
             break
         if S.task_state != linuxcnc.STATE_ON:
             raise RuntimeError("%s: machine switched off (%s)" % (name, "; ".join(errors)))
+        last_poll = time.time()  # the gap: this sleep and how late it returns (not a snapshot)
         time.sleep(0.005)
-    log("%s: %d stops in %.1f s" % (name, stop, time.time() - t0))
+    log("%s: %d stops in %.1f s (longest gap between two status polls %.3f s)"
+        % (name, stop, time.time() - t0, max_poll_gap))
+    if stop != len(dwell_lines):
+        raise RuntimeError("%s: %d stops seen for %d dwells (lines seen while dwelling: %s; the "
+                           "program's dwells: %s)" % (name, stop, len(dwell_lines), seen_lines,
+                                                     dwell_lines))
 
 
 def raise_rtapi_priority():
@@ -211,9 +265,12 @@ def raise_rtapi_priority():
     if not prio or os.geteuid() != 0:
         return []
     raised = rtapi_priority.raise_rtapi_priority(int(prio))
-    # This poller too (below rtapi_app): it must see every dwell of the programs.
+    # LinuxCNC's task (it runs the dwells) and this poller, below rtapi_app: the poller must see
+    # every dwell of the programs.
+    task = rtapi_priority.raise_task_priority(max(1, int(prio) - 20))
     os.sched_setscheduler(0, os.SCHED_FIFO, os.sched_param(max(1, int(prio) - 30)))
-    log("SCHED_FIFO %s for rtapi_app threads %s" % (prio, raised))
+    log("SCHED_FIFO %s for rtapi_app threads %s, %d for milltask threads %s"
+        % (prio, raised, max(1, int(prio) - 20), task))
     return raised
 
 
@@ -290,6 +347,9 @@ def main():
     summary["errors"] = errors
     summary["stepgen_notes"] = stepgen_notes
     summary["maxvel_reapplied"] = len(maxvel_reapplied)
+    summary["step_timing_reapplied"] = len(timing_reapplied)
+    summary["step_timing_ns"] = {"stepgen.%d.%s" % (j, p): g("stepgen.%d.%s" % (j, p))
+                                 for j in sorted(STEP_TIMING_NS) for p in STEP_TIMING_NS[j]}
     summary["stepgen_maxvel"] = [g("stepgen.%d.maxvel" % j)
                                  for j in range(JOINTS if COMP_MODE else 2 * JOINTS)]
     if COMP_MODE:

@@ -83,7 +83,10 @@ set_power_on() {
 }
 # The programs' feed (mm/min): LinuxCNC's MAX_LINEAR_VELOCITY (mm/s) in volcomp-sim.ini.
 feed=$(awk -F' *= *' '/^MAX_LINEAR_VELOCITY/ {print $2 * 60}' "$src/linuxcnc/config/volcomp-sim.ini")
-dwell=0.3
+# 0.5 s: the recorder waits for 100 ms of still values; on a loaded machine values were seen to
+# settle only after 0.2 s, and a snapshot still waiting when its 0.3 s dwell ended missed the next
+# stop (docs/linuxcnc.md §4).
+dwell=0.5
 "$volcomp" build model --model "$src/samples/model/s500.conf" \
   --resolution-nm X=$res_nm,Y=$res_nm,Z=$res_nm --spacing-mm 10 -o "$work/table.vct" >"$work/build.txt"
 programs=() eval_args=()
