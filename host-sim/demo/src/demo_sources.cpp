@@ -83,7 +83,9 @@ tools::JsonValue ErrorSources(Session& s) {
   lost.Set("on", w.lost_motion).Set("um", Triple(w.lost_motion_um));
   d.Set("lost_motion", std::move(lost));
   JsonValue scatter = JsonValue::Object();
-  scatter.Set("on", w.scatter).Set("sigma_um", Triple(w.scatter_sigma_um));
+  scatter.Set("on", w.scatter)
+      .Set("sigma_um", Triple(w.scatter_sigma_um))
+      .Set("standstill_ms", w.scatter_standstill_ms);
   d.Set("scatter", std::move(scatter));
   JsonValue screw = JsonValue::Object();
   screw.Set("on", w.screw_error)
@@ -144,10 +146,13 @@ void PrintErrorSources(const tools::JsonValue& d, Progress& progress) {
   out << "    lost motion: "
       << (On(lost) ? Fmt3("X %.1f, Y %.1f, Z %.1f um", lost, "um") : std::string("off")) << "\n";
   const JsonValue& scatter = At(d, "scatter");
-  out << "    scatter at rest: "
-      << (On(scatter) ? Fmt3("sigma X %.2f, Y %.2f, Z %.2f um", scatter, "sigma_um")
-                      : std::string("off"))
-      << "\n";
+  out << "    scatter at rest: ";
+  if (On(scatter)) {
+    std::snprintf(b, sizeof b, " (at rest: no step for %.0f ms)", Num(scatter, "standstill_ms"));
+    out << Fmt3("sigma X %.2f, Y %.2f, Z %.2f um", scatter, "sigma_um") << b << "\n";
+  } else {
+    out << "off\n";
+  }
   const JsonValue& screw = At(d, "screw");
   if (On(screw)) {
     std::snprintf(b, sizeof b, "    screw, short period %.1f mm: amplitude ",

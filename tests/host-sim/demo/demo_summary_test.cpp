@@ -294,6 +294,12 @@ TEST(SimDemoSummary, WornRunWritesEveryPrintedFigureAndNamesEverySource) {
           "    screw, short period ", "    thermal: ", "    sag: ", "    instruments: "}) {
       EXPECT_NE(header.find(source), std::string::npos) << source << "\n" << header;
     }
+    const JsonValue& scatter = Member(Member(Member(*json, "run"), "error_sources"), "scatter");
+    EXPECT_EQ(Member(scatter, "standstill_ms").number, o.wear.scatter_standstill_ms);
+    EXPECT_NE(header.find("(at rest: no step for " +
+                          Fixed(Member(scatter, "standstill_ms").number, 0) + " ms)"),
+              std::string::npos)
+        << header;
     std::smatch m;
     ASSERT_TRUE(
         std::regex_search(header, m, std::regex(R"(lost motion: X (\S+), Y (\S+), Z (\S+) um)")))
