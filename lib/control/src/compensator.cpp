@@ -45,36 +45,61 @@ void PreparedTable::TargetsQ8(const int32_t* pos_steps,
 
 Status Compensator::Configure(const BoardConfig& config, uint32_t ticks_per_run) {
   VOLCOMP_TRY(ValidateBoardConfig(config));
+  Reset(config.axis_count);
   for (uint8_t a = 0; a < config.axis_count; ++a) {
-    const AxisConfig& ax = config.axis[a];
-    const Result<LimiterParams> p = AxisLimiterParams(ax, config.tick_hz, ticks_per_run);
-    if (!p.ok()) return p.status();
-    const Result<LimiterParams> q = AxisSwitchLimiterParams(ax, config.tick_hz, ticks_per_run);
-    if (!q.ok()) return q.status();
-    limiter_[a] = CorrectionLimiter(*p);
-    limits_[a][0] = *p;
-    limits_[a][1] = *q;
-    // Configuration time (a division is fine): on a valid configuration the switch's acceleration
-    // step is at least the correction's, so the scale is at most 1 (capped there).
-    const uint64_t scale = (static_cast<uint64_t>(p->accel_q32) << 30) / q->accel_q32;
-    switch_k_scale_q30_[a] = static_cast<int32_t>(scale < (1u << 30) ? scale : (1u << 30));
+    VOLCOMP_TRY(SetAxisLimits(a, config.axis[a], config.tick_hz, ticks_per_run));
+  }
+  return Status::Ok();
+}
+
+void Compensator::Reset(uint8_t axis_count) {
+  for (uint8_t a = 0; a < table::kMaxAxes; ++a) {
+    limiter_[a] = CorrectionLimiter();
+    limits_[a][0] = limits_[a][1] = LimiterParams();
+    switch_k_scale_q30_[a] = 1 << 30;
     switch_state_[a] = 0;
-    max_q8_[a] = ax.max_correction_steps * (1 << table::kCorrectionFracBits);
+    max_q8_[a] = 0;
     clamped_refreshes_[a] = 0;
     rate_limited_refreshes_[a] = 0;
     last_pos_[a] = 0;
     grid_part_steps_[a] = 0;
     extreme_[a] = 0;
-    hysteresis_[a] = ax.direction_hysteresis_steps;
+    hysteresis_[a] = 0;
     direction_[a] = 0;
     target_q8_[a] = 0;
   }
   wrap_mask_ = 0;
   rebase_pending_ = false;
-  axis_count_ = config.axis_count;
+  axis_count_ = axis_count <= table::kMaxAxes ? axis_count : table::kMaxAxes;
   has_table_ = false;
   UpdateEngaged();
   phase_ = 0;
+}
+
+Status Compensator::SetAxisLimits(uint8_t a,
+                                  const AxisConfig& axis,
+                                  uint32_t tick_hz,
+                                  uint32_t ticks_per_run) {
+  if (a >= axis_count_) return Error::kInvalidArgument;
+  if (axis.max_correction_steps < 0 || axis.max_correction_steps > table::kMaxCorrectionSteps ||
+      axis.direction_switch_accel_steps_s2 < axis.max_correction_accel_steps_s2) {
+    return Error::kConfigInvalid;
+  }
+  const Result<LimiterParams> p = AxisLimiterParams(axis, tick_hz, ticks_per_run);
+  if (!p.ok()) return p.status();
+  const Result<LimiterParams> q = AxisSwitchLimiterParams(axis, tick_hz, ticks_per_run);
+  if (!q.ok()) return q.status();
+  if (!limiter_[a].at_rest()) return Error::kBusy;
+  limiter_[a].set_params(*p);
+  limits_[a][0] = *p;
+  limits_[a][1] = *q;
+  // Configuration time (a division is fine): the switch's acceleration step is at least the
+  // correction's where the period does not bound it, so the scale is at most 1 (capped there).
+  const uint64_t scale = (static_cast<uint64_t>(p->accel_q32) << 30) / q->accel_q32;
+  switch_k_scale_q30_[a] = static_cast<int32_t>(scale < (1u << 30) ? scale : (1u << 30));
+  switch_state_[a] &= 2u;  // at rest: no switch in progress
+  max_q8_[a] = axis.max_correction_steps * (1 << table::kCorrectionFracBits);
+  hysteresis_[a] = axis.direction_hysteresis_steps;
   return Status::Ok();
 }
 

@@ -12,7 +12,8 @@ std::string Lower(std::string s) {
 }
 
 // HAL names: printable, no spaces, up to 47 characters (HAL_NAME_LEN); the longest name an
-// instance makes is its parameter "<name>.axis.x.max-correction-accel".
+// instance makes is its parameter "<name>.axis.x.max-correction-accel" (or the
+// "direction-hysteresis" one, as long).
 constexpr size_t kMaxNameLength = 47 - (sizeof(".axis.x.max-correction-accel") - 1);
 
 }  // namespace

@@ -4,14 +4,10 @@
 #include <cmath>
 #include <cstdint>
 
-#include "volcomp/config/board_config.hpp"
-
 namespace volcomp::linuxcnc {
 namespace {
 
 constexpr double kQ32 = 4294967296.0;
-// The board's default AXIS1D direction hysteresis (BoardConfig), in table steps.
-constexpr int32_t kDirectionHysteresisSteps = AxisConfig{}.direction_hysteresis_steps;
 
 // Position in table steps, saturated to the int32 range of the lookups (they clamp to the table).
 int32_t ToSteps(double pos, double steps_per_unit) {
@@ -21,11 +17,13 @@ int32_t ToSteps(double pos, double steps_per_unit) {
   return static_cast<int32_t>(s);
 }
 
-// `value` in whole units of `unit`, when it is a finite positive number that fits a uint32.
-bool WholeSteps(double value, double unit, uint32_t* out) {
-  if (!(value > 0) || !std::isfinite(value)) return false;
-  const double s = std::nearbyint(value / unit);
-  if (!(s >= 1) || s > 4294967295.0) return false;
+// `value` in whole units of `unit` (the nearest, or the one at or below when `down`; a billionth
+// of a step below a whole one counts as it), when it is a finite number from `min` to `max` steps.
+bool WholeSteps(
+    double value, double unit, double min, double max, uint32_t* out, bool down = false) {
+  if (!std::isfinite(value)) return false;
+  const double s = down ? std::floor(value / unit + 1e-9) : std::nearbyint(value / unit);
+  if (!(s >= min) || s > max) return false;
   *out = static_cast<uint32_t>(s);
   return true;
 }
@@ -33,37 +31,51 @@ bool WholeSteps(double value, double unit, uint32_t* out) {
 }  // namespace
 
 AxisLimits NativeCompensator::DefaultLimits(const NativeAxis& axis) {
+  const AxisConfig d;
+  const double u = axis.units_per_step;
   AxisLimits l;
-  l.max_correction = 1000 * axis.units_per_step;
-  l.max_vel = 2000 * axis.units_per_step;
-  l.max_accel = 200000 * axis.units_per_step;
+  l.max_correction = d.max_correction_steps * u;
+  l.max_vel = d.max_correction_rate_steps_s * u;
+  l.max_accel = d.max_correction_accel_steps_s2 * u;
+  l.direction_hysteresis = d.direction_hysteresis_steps * u;
+  l.switch_vel = static_cast<double>(d.drive.max_rate_hz - d.max_input_rate_hz) * u;
+  l.switch_accel = d.direction_switch_accel_steps_s2 * u;
   return l;
 }
 
 void NativeCompensator::UseTable(const NativeTable* table) {
   if (table_ == nullptr) {
     axis_count_ = table->axis_count();
+    comp_.Reset(axis_count_);
     for (uint8_t a = 0; a < axis_count_; ++a) limits_[a] = DefaultLimits(table->axis(a));
   }
   table_ = table;
+  table_bound_ = false;
 }
 
-Status NativeCompensator::Convert(uint8_t a,
-                                  const AxisLimits& l,
-                                  LimiterParams* params,
-                                  int32_t* max_q8) const {
+Status NativeCompensator::Convert(uint8_t a, const AxisLimits& l, AxisConfig* axis) const {
   if (table_ == nullptr || a >= axis_count_ || tick_hz_ == 0) return Error::kNotReady;
-  const double ups = table_->axis(a).units_per_step;
-  if (!(l.max_correction >= 0) || !std::isfinite(l.max_correction)) return Error::kConfigInvalid;
-  const double q8 = std::nearbyint(l.max_correction / ups * (1 << table::kCorrectionFracBits));
-  *max_q8 = q8 >= table::kMaxCorrectionQ8 ? table::kMaxCorrectionQ8 : static_cast<int32_t>(q8);
-  uint32_t rate = 0, accel = 0;
-  if (!WholeSteps(l.max_vel, ups, &rate) || !WholeSteps(l.max_accel, ups, &accel)) {
+  const NativeAxis& t = table_->axis(a);
+  const double u = t.units_per_step;
+  AxisConfig c;
+  c.name = t.name;
+  c.kind = t.kind;
+  c.resolution_e9 = t.resolution_e9;
+  uint32_t max = 0, hysteresis = 0;
+  // No input stream: the whole switch velocity is the drive rate the switch may use.
+  c.max_input_rate_hz = 0;
+  // The maximum correction rounds down: never a larger correction than asked.
+  if (!WholeSteps(l.max_correction, u, 0, table::kMaxCorrectionSteps, &max, true) ||
+      !WholeSteps(l.max_vel, u, 1, 4294967295.0, &c.max_correction_rate_steps_s) ||
+      !WholeSteps(l.max_accel, u, 1, 4294967295.0, &c.max_correction_accel_steps_s2) ||
+      !WholeSteps(l.direction_hysteresis, u, 0, 65535, &hysteresis) ||
+      !WholeSteps(l.switch_vel, u, 1, 4294967295.0, &c.drive.max_rate_hz) ||
+      !WholeSteps(l.switch_accel, u, 1, 4294967295.0, &c.direction_switch_accel_steps_s2)) {
     return Error::kConfigInvalid;
   }
-  const Result<LimiterParams> p = CorrectionLimiter::MakeParams(tick_hz_, rate, accel, 1);
-  if (!p.ok()) return p.status();
-  *params = *p;
+  c.max_correction_steps = static_cast<int32_t>(max);
+  c.direction_hysteresis_steps = static_cast<uint16_t>(hysteresis);
+  *axis = c;
   return Status::Ok();
 }
 
@@ -74,39 +86,29 @@ Status NativeCompensator::SetPeriod(long period_ns) {
   period_s_ = static_cast<double>(period_ns) * 1e-9;
   Status result = Status::Ok();
   for (uint8_t a = 0; a < axis_count_; ++a) {
-    LimiterParams p;
-    int32_t max_q8 = 0;
-    const Status s = Convert(a, limits_[a], &p, &max_q8);
-    if (!s.ok()) {
-      result = s;
-      continue;
-    }
-    max_q8_[a] = max_q8;
-    if (!limits_valid_[a]) {
-      limiter_[a].set_params(p);  // at rest: nothing applied yet
-      limits_valid_[a] = true;
-    } else {
-      pending_[a] = p;
-      has_pending_[a] = true;
-    }
+    const Status s = SetLimits(a, limits_[a]);
+    if (!s.ok()) result = s;
   }
   return result;
 }
 
 Status NativeCompensator::SetLimits(uint8_t a, const AxisLimits& limits) {
-  LimiterParams p;
-  int32_t max_q8 = 0;
-  VOLCOMP_TRY(Convert(a, limits, &p, &max_q8));
+  AxisConfig c;
+  VOLCOMP_TRY(Convert(a, limits, &c));
+  const Status s = comp_.SetAxisLimits(a, c, tick_hz_, 1);
+  // kBusy: valid, taken once the axis's correction is at rest (Tick()).
+  if (!s.ok() && s.error() != Error::kBusy) return s;
   limits_[a] = limits;
-  max_q8_[a] = max_q8;
-  if (!limits_valid_[a]) {
-    limiter_[a].set_params(p);
-    limits_valid_[a] = true;
-  } else {
-    pending_[a] = p;
-    has_pending_[a] = true;
-  }
+  config_[a] = c;
+  has_pending_[a] = !s.ok();
+  limits_valid_[a] = limits_valid_[a] || s.ok();
   return Status::Ok();
+}
+
+SwitchAccelBound NativeCompensator::SwitchAccel(uint8_t a, double* accel) const {
+  const SwitchAccelInEffect e = DirectionSwitchAccelInEffect(config_[a], tick_hz_, 1);
+  *accel = table_ != nullptr ? e.steps_s2 * table_->axis(a).units_per_step : 0;
+  return e.bound;
 }
 
 double NativeCompensator::MaxAccel(uint8_t a) const {
@@ -129,75 +131,43 @@ void NativeCompensator::Tick(
     engaged_ = clamped_ = false;
     return;
   }
-  int32_t steps[kMaxAxes] = {}, axis_steps[kMaxAxes] = {};
+  int32_t steps[kMaxAxes] = {};
   bool all_limits = true;
+  uint32_t clamped_before = 0;
   for (uint8_t a = 0; a < n; ++a) {
-    const NativeAxis& ax = table_->axis(a);
-    const int32_t s = ToSteps(pos[a], 1.0 / ax.units_per_step);
-    // Direction for the AXIS1D direction tables, as on the board (Compensator::SenseAxis): the
-    // drive's output, the position plus the last period's GRID3 part, against the furthest point
-    // reached in the current direction; moving back by more than the hysteresis turns it.
-    const int32_t out =
-        static_cast<int32_t>(static_cast<uint32_t>(s) + static_cast<uint32_t>(grid_part_steps_[a]));
-    if (!have_last_) {
-      extreme_[a] = out;
-    } else {
-      const int32_t ahead = static_cast<int32_t>(
-          reverse_[a] ? static_cast<uint32_t>(extreme_[a]) - static_cast<uint32_t>(out)
-                      : static_cast<uint32_t>(out) - static_cast<uint32_t>(extreme_[a]));
-      if (ahead > 0) {
-        extreme_[a] = out;
-      } else if (ahead < -kDirectionHysteresisSteps) {
-        reverse_[a] = !reverse_[a];
-        extreme_[a] = out;
-      }
-    }
-    steps[a] = s;
-    if (ax.wrap_period_steps != 0) {
-      const int64_t period = ax.wrap_period_steps;
-      int64_t r = (int64_t{s} - ax.wrap_origin_steps) % period;
-      if (r < 0) r += period;
-      axis_steps[a] = static_cast<int32_t>(ax.wrap_origin_steps + r);
-    } else {
-      axis_steps[a] = s;
+    steps[a] = ToSteps(pos[a], 1.0 / table_->axis(a).units_per_step);
+    // The first period: the drive-direction sensing starts here, forward (no motion sensed).
+    if (!have_last_) comp_.MoveAxis(a, steps[a]);
+    if (has_pending_[a] && comp_.at_rest(a)) {
+      has_pending_[a] = !comp_.SetAxisLimits(a, config_[a], tick_hz_, 1).ok();
+      limits_valid_[a] = limits_valid_[a] || !has_pending_[a];
     }
     all_limits = all_limits && limits_valid_[a];
+    clamped_before += comp_.clamped_refreshes(a);
   }
   have_last_ = true;
-  // PreparedTable::TargetsQ8 in two parts: the GRID3 part alone (in whole steps) is the next
-  // period's direction sensing (zero while not engaged, as on the board), then the AXIS1D tables.
-  const PreparedTable& prepared = table_->prepared();
-  int32_t wanted_q8[kMaxAxes] = {};
-  if (prepared.has_grid) {
-    int32_t g[3];
-    prepared.grid.Lookup(steps, g);
-    for (int c = 0; c < 3; ++c) wanted_q8[prepared.grid.axis(c)] += g[c];
+  if (!table_bound_) {
+    comp_.BindTable(&table_->prepared());
+    table_bound_ = true;
   }
-  engaged_ = enable && referenced && all_limits;
+  // Every period: the rotary wrap from the absolute position (as a homing jump needs), the
+  // refresh cycle from its first phase (RunWhole() runs them all).
+  comp_.RequestRebase();
+  comp_.SetEnabled(enable);
+  comp_.SetReferenced(referenced);
+  comp_.SetFault(!all_limits);
+  comp_.RunWhole(steps);
+  engaged_ = comp_.engaged();
+  uint32_t clamped_after = 0;
   for (uint8_t a = 0; a < n; ++a) {
-    grid_part_steps_[a] = engaged_ ? (wanted_q8[a] + 128) >> 8 : 0;
-    const int8_t i = prepared.axis_table_of[a];
-    if (i >= 0) wanted_q8[a] += prepared.axis_table[i].Lookup(axis_steps[a], reverse_[a]);
-  }
-  clamped_ = false;
-  for (uint8_t a = 0; a < n; ++a) {
-    int32_t target = 0;
-    if (engaged_) {
-      const int32_t max = max_q8_[a];
-      target = wanted_q8[a] > max ? max : (wanted_q8[a] < -max ? -max : wanted_q8[a]);
-      clamped_ = clamped_ || target != wanted_q8[a];
-    }
-    if (has_pending_[a] && limiter_[a].at_rest()) {
-      limiter_[a].set_params(pending_[a]);
-      has_pending_[a] = false;
-    }
-    const int64_t q32 = limits_valid_[a] ? limiter_[a].Step(int64_t{target} * (int64_t{1} << 24))
-                                         : limiter_[a].position_q32();
-    const double c = static_cast<double>(q32) / kQ32 * table_->axis(a).units_per_step;
+    clamped_after += comp_.clamped_refreshes(a);
+    const double c =
+        static_cast<double>(comp_.applied_q32(a)) / kQ32 * table_->axis(a).units_per_step;
     velocity[a] = (c - last_correction_[a]) / period_s_;
     last_correction_[a] = c;
     correction[a] = c;
   }
+  clamped_ = clamped_after != clamped_before;
 }
 
 }  // namespace volcomp::linuxcnc

@@ -1,9 +1,10 @@
-// The native component's per-period compensation (one instance): the firmware's table lookup
-// (lib/: PreparedTable's GRID3 and AXIS1D lookups, direction rows and rotary wrap; the direction
-// sensed on the drive's output with the board's default hysteresis of one step), the clamp to
-// the maximum correction and the firmware's CorrectionLimiter, every servo period, at the machine
-// position of each table axis. Units: positions and corrections in the table's units (mm for
-// linear axes, degrees for rotary ones); the caller converts machine units (inch) to these.
+// The native component's per-period compensation (one instance): the firmware's Compensator
+// (lib/control), run whole every servo period (Compensator::RunWhole(): the table lookup with
+// direction rows and rotary wrap, the direction sensed on the drive's output with its hysteresis,
+// the clamp to the maximum correction, the correction limiter and the direction switch limits),
+// at the machine position of each table axis. Units: positions, corrections and limits in the
+// table's units (mm for linear axes, degrees for rotary ones); the caller converts machine units
+// (inch) to these. The correction is the limiter's exact value (Q32.32 steps), not whole steps.
 //
 // Servo thread only (Tick, UseTable, SetLimits, SetPeriod): no allocation, no blocking, no file
 // access; a table is built outside the thread (NativeTable) and handed over by pointer.
@@ -13,24 +14,32 @@
 
 #include "native/native_table.hpp"
 #include "volcomp/base/status.hpp"
-#include "volcomp/limiter/correction_limiter.hpp"
+#include "volcomp/config/board_config.hpp"
+#include "volcomp/control/compensator.hpp"
 #include "volcomp/table/table_format.hpp"
 
 namespace volcomp::linuxcnc {
 
-/// Limits of one axis's correction, in the table's units (mm or degrees).
+/// Limits of one axis, in the table's units (mm or degrees): the board's AxisConfig fields of the
+/// same names (board_config.hpp), converted to whole table steps (the nearest; max_correction the
+/// one at or below: MaxCorrectionInForce()).
 struct AxisLimits {
-  double max_correction = 0;  // largest |correction|
-  double max_vel = 0;         // per second
-  double max_accel = 0;       // per second^2
+  double max_correction = 0;        // largest |correction|
+  double max_vel = 0;               // per second
+  double max_accel = 0;             // per second^2
+  double direction_hysteresis = 0;  // the output's move back that turns the AXIS1D direction
+  // A switch between the AXIS1D forward and reverse rows: its velocity (the board's drive rate
+  // beyond the input; here there is no input stream, the whole value is the switch's) and
+  // acceleration (at least max_accel; in force as DirectionSwitchAccelInEffect() says).
+  double switch_vel = 0;
+  double switch_accel = 0;
 };
-
 class NativeCompensator {
  public:
   static constexpr uint8_t kMaxAxes = table::kMaxAxes;
 
-  /// The firmware's default limits in steps (BoardConfig): 1000 steps, 2000 steps/s,
-  /// 200000 steps/s^2; `DefaultLimits` gives them in the units of `axis`.
+  /// The board's default limits (AxisConfig{}: 1000 steps, 2000 steps/s, 200000 steps/s^2,
+  /// hysteresis 1 step, switch at 10^6 steps/s and 10^8 steps/s^2) in the units of `axis`.
   static AxisLimits DefaultLimits(const NativeAxis& axis);
 
   /// Makes `table` the active table (kept by the caller until the next UseTable and while Tick
@@ -42,13 +51,21 @@ class NativeCompensator {
   /// The servo period (ns, > 0): converts the limits for it. kConfigInvalid when a limit does not
   /// fit this period (then that axis keeps its previous limits, none before the first success).
   Status SetPeriod(long period_ns);
-  /// Limits of axis `a` (needs a table and a period). The maximum correction applies at once;
-  /// the velocity and acceleration from the next period in which the axis's correction is at
-  /// rest (the limiter continues its motion under the limits it started it with).
-  /// kConfigInvalid when they do not fit the limiter at this period (nothing changes): see
-  /// LimitsFit().
+  /// Limits of axis `a` (needs a table and a period). The maximum correction and the hysteresis
+  /// apply from the next period in which the axis's correction is at rest, as the velocities and
+  /// accelerations do (the limiter continues its motion under the limits it started it with).
+  /// kConfigInvalid when they do not fit the limiter at this period or break a rule of the board
+  /// (nothing changes): MaxAccel() and MinVel() give the bounds of the limiter.
   Status SetLimits(uint8_t a, const AxisLimits& limits);
   const AxisLimits& limits(uint8_t a) const { return limits_[a]; }
+  /// The maximum correction of axis `a` in force (table units): whole table steps at or below
+  /// limits(a).max_correction.
+  double MaxCorrectionInForce(uint8_t a) const {
+    return table_ != nullptr ? config_[a].max_correction_steps * table_->axis(a).units_per_step : 0;
+  }
+  /// The acceleration (table units/s^2) a direction switch of axis `a` runs with at this period,
+  /// and what bounds it below limits(a).switch_accel (DirectionSwitchAccelInEffect()).
+  SwitchAccelBound SwitchAccel(uint8_t a, double* accel) const;
   /// The largest acceleration (table units/s^2) axis `a`'s limiter takes at this period, and the
   /// smallest velocity for an acceleration `accel` (one acceleration step per period).
   double MaxAccel(uint8_t a) const;
@@ -66,26 +83,21 @@ class NativeCompensator {
   uint8_t axis_count() const { return axis_count_; }
 
  private:
-  Status Convert(uint8_t a, const AxisLimits& l, LimiterParams* params, int32_t* max_q8) const;
+  Status Convert(uint8_t a, const AxisLimits& l, AxisConfig* axis) const;
 
   const NativeTable* table_ = nullptr;
+  bool table_bound_ = false;  // table_ is the compensator's
   uint8_t axis_count_ = 0;
   uint32_t tick_hz_ = 0;
   double period_s_ = 0;
   bool engaged_ = false;
   bool clamped_ = false;
   bool have_last_ = false;
+  Compensator comp_;
   AxisLimits limits_[kMaxAxes];
+  AxisConfig config_[kMaxAxes];  // limits_ in steps, as the compensator has them (or will)
   bool limits_valid_[kMaxAxes] = {};
-  CorrectionLimiter limiter_[kMaxAxes];
-  LimiterParams pending_[kMaxAxes];
   bool has_pending_[kMaxAxes] = {};
-  int32_t max_q8_[kMaxAxes] = {};
-  // AXIS1D direction sensing (as Compensator::SenseAxis): the last period's GRID3 part in whole
-  // steps, the furthest output position in the current direction, the direction.
-  int32_t grid_part_steps_[kMaxAxes] = {};
-  int32_t extreme_[kMaxAxes] = {};
-  bool reverse_[kMaxAxes] = {};
   double last_correction_[kMaxAxes] = {};
 };
 

@@ -22,13 +22,15 @@
 //                                 out of the feedback
 //   <name>.enable, .referenced (in), .reload (in, rising edge), .active, .clamped (out),
 //   .table-crc (u32), .table-error (s32: 0 or the error code of the last load), .reload-count (u32)
-//   parameters <name>.axis.L.max-correction, .max-correction-vel, .max-correction-accel (per table
-//   axis L, machine units: mm or inch, degrees for rotary axes; read every period)
+//   parameters <name>.axis.L.max-correction, .max-correction-vel, .max-correction-accel,
+//   .direction-hysteresis, .switch-vel, .switch-accel (per table axis L, machine units: mm or
+//   inch, degrees for rotary axes; read every period)
 //
 // The servo-thread function reads no file and allocates nothing: tables are read, validated and
 // prepared at loadrt and by the loader thread on a reload (native/table_loader.hpp), then switched
 // in by pointer (native/table_exchange.hpp).
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <memory>
 #include <string>
@@ -70,9 +72,21 @@ struct ChannelPins {
   hal_float_t *joint_pos, *cmd_in, *cmd_out, *fb_in, *fb_out, *vel_in, *vel_out, *correction;
 };
 
+// One per AxisLimits field, in its order (the parameter names: kParamNames).
+constexpr int kLimitCount = 6;
+constexpr const char* kParamNames[kLimitCount] = {"max-correction",       "max-correction-vel",
+                                                  "max-correction-accel", "direction-hysteresis",
+                                                  "switch-vel",           "switch-accel"};
+constexpr const char* kParamUnits[kLimitCount] = {"", "/s", "/s^2", "", "/s", "/s^2"};
+
 struct AxisParams {
-  hal_float_t max_correction, max_vel, max_accel;
+  hal_float_t value[kLimitCount];
 };
+
+constexpr double lc::AxisLimits::*kFields[kLimitCount] = {
+    &lc::AxisLimits::max_correction, &lc::AxisLimits::max_vel,
+    &lc::AxisLimits::max_accel,      &lc::AxisLimits::direction_hysteresis,
+    &lc::AxisLimits::switch_vel,     &lc::AxisLimits::switch_accel};
 
 // In HAL's shared memory (hal_malloc): pins point here, parameters live here.
 struct InstanceHal {
@@ -93,7 +107,7 @@ struct Instance {
   const lc::NativeTable* active = nullptr;     // owned; the loader frees it once replaced
   std::unique_ptr<lc::NativeTable> reference;  // the first table's copy: reloads must match it
   lc::TableExchange exchange;
-  double applied[kMaxAxes][3] = {};  // the limits in force, machine units (as the parameters)
+  double applied[kMaxAxes][kLimitCount] = {};  // the limits taken, machine units (as the params)
   long period_ns = 0;
   bool last_reload = false;
   uint32_t reloads = 0;
@@ -116,37 +130,71 @@ const char* UnitName(const Instance& in, uint8_t a) {
   return in.scale[a] == 1.0 ? "mm" : "inch";
 }
 
-// The limit parameters, checked every period (a `setp` takes effect here); a value the limiter
-// cannot take is refused with a message and the parameter set back.
+// Says, once per change of the limits, a limit that takes effect other than as set: the maximum
+// correction rounded down to whole table steps, a direction switch slower than switch-accel (the
+// servo period or switch-vel bounds it). So the value in force is never a silent one.
+void SayLimitsInForce(Instance& in, uint8_t a) {
+  const char* u = UnitName(in, a);
+  const char name = in.active->axis(a).name;
+  const double k = in.scale[a];
+  const double max = in.comp.MaxCorrectionInForce(a) / k;
+  if (max != in.applied[a][0]) {
+    rtapi_print_msg(RTAPI_MSG_INFO,
+                    "%s: axis %c: max-correction %g %s takes effect as %g %s (whole table steps "
+                    "of %g %s, rounded down)\n",
+                    in.name.c_str(), name, in.applied[a][0], u, max, u,
+                    in.active->axis(a).units_per_step / k, u);
+  }
+  double accel = 0;
+  const volcomp::SwitchAccelBound b = in.comp.SwitchAccel(a, &accel);
+  if (b == volcomp::SwitchAccelBound::kNone) return;
+  rtapi_print_msg(RTAPI_MSG_INFO,
+                  "%s: axis %c: switch-accel %g %s/s^2 takes effect as %g %s/s^2, the most %s\n",
+                  in.name.c_str(), name, in.applied[a][5], u, accel / k, u,
+                  b == volcomp::SwitchAccelBound::kPeriod
+                      ? "a servo period represents (below one table step per period^2)"
+                      : "that reaches switch-vel within one servo period");
+}
+
+// The limit parameters, checked every period (a `setp` takes effect here); values the limiter
+// cannot take are refused with a message and the parameters set back.
 void ApplyParams(Instance& in, bool force) {
   for (uint8_t a = 0; a < in.active->axis_count(); ++a) {
     AxisParams& p = in.hal->axis[a];
     double* cur = in.applied[a];
-    const double want[3] = {p.max_correction, p.max_vel, p.max_accel};
-    if (!force && want[0] == cur[0] && want[1] == cur[1] && want[2] == cur[2]) continue;
+    bool same = true;
+    for (int i = 0; i < kLimitCount; ++i) same = same && p.value[i] == cur[i];
+    if (!force && same) continue;
     const double k = in.scale[a];
     lc::AxisLimits l;
-    l.max_correction = want[0] * k;
-    l.max_vel = want[1] * k;
-    l.max_accel = want[2] * k;
+    for (int i = 0; i < kLimitCount; ++i) l.*kFields[i] = p.value[i] * k;
     const volcomp::Status s = in.comp.SetLimits(a, l);
     if (s.ok()) {
-      for (int i = 0; i < 3; ++i) cur[i] = want[i];
+      for (int i = 0; i < kLimitCount; ++i) cur[i] = p.value[i];
+      SayLimitsInForce(in, a);
       continue;
     }
     const char* u = UnitName(in, a);
+    std::string given, kept;
+    for (int i = 0; i < kLimitCount; ++i) {
+      char b[96];
+      std::snprintf(b, sizeof b, "%s%s %g %s%s", i > 0 ? ", " : "", kParamNames[i], p.value[i], u,
+                    kParamUnits[i]);
+      given += b;
+      std::snprintf(b, sizeof b, "%s%g", i > 0 ? ", " : "", cur[i]);
+      kept += b;
+    }
     rtapi_print_msg(
         RTAPI_MSG_ERR,
-        "%s: axis %c: limits refused (max-correction %g %s, max-correction-vel %g %s/s, "
-        "max-correction-accel %g %s/s^2): each must be positive, the acceleration "
-        "below %g %s/s^2 at a %ld ns servo period and the velocity at least %g %s/s "
-        "for it (%s); they stay %g, %g, %g\n",
-        in.name.c_str(), in.active->axis(a).name, want[0], u, want[1], u, want[2], u,
-        in.comp.MaxAccel(a) / k, u, in.period_ns, in.comp.MinVel(a, l.max_accel) / k, u, s.name(),
-        cur[0], cur[1], cur[2]);
-    p.max_correction = cur[0];
-    p.max_vel = cur[1];
-    p.max_accel = cur[2];
+        "%s: axis %c: limits refused (%s): the velocities and accelerations must be positive, "
+        "max-correction at most %g %s, direction-hysteresis at most %g %s, max-correction-accel "
+        "below %g %s/s^2 at a %ld ns servo period, max-correction-vel at least %g %s/s for it, "
+        "switch-accel at least max-correction-accel (%s); they stay %s\n",
+        in.name.c_str(), in.active->axis(a).name, given.c_str(),
+        volcomp::table::kMaxCorrectionSteps * in.active->axis(a).units_per_step / k, u,
+        65535 * in.active->axis(a).units_per_step / k, u, in.comp.MaxAccel(a) / k, u, in.period_ns,
+        in.comp.MinVel(a, l.max_accel) / k, u, s.name(), kept.c_str());
+    for (int i = 0; i < kLimitCount; ++i) p.value[i] = cur[i];
   }
 }
 
@@ -231,15 +279,12 @@ int MakePins(Instance& in) {
   for (uint8_t a = 0; a < in.active->axis_count() && r == 0; ++a) {
     AxisParams& p = h.axis[a];
     const char l = static_cast<char>(in.active->axis(a).name - 'A' + 'a');
-    r |= hal_param_float_newf(HAL_RW, &p.max_correction, g_comp_id, "%s.axis.%c.max-correction", n,
-                              l);
-    r |= hal_param_float_newf(HAL_RW, &p.max_vel, g_comp_id, "%s.axis.%c.max-correction-vel", n, l);
-    r |= hal_param_float_newf(HAL_RW, &p.max_accel, g_comp_id, "%s.axis.%c.max-correction-accel", n,
-                              l);
-    const lc::AxisLimits d = lc::NativeCompensator::DefaultLimits(in.active->axis(a));
-    p.max_correction = in.applied[a][0] = d.max_correction / in.scale[a];
-    p.max_vel = in.applied[a][1] = d.max_vel / in.scale[a];
-    p.max_accel = in.applied[a][2] = d.max_accel / in.scale[a];
+    lc::AxisLimits d = lc::NativeCompensator::DefaultLimits(in.active->axis(a));
+    for (int i = 0; i < kLimitCount && r == 0; ++i) {
+      r |= hal_param_float_newf(HAL_RW, &p.value[i], g_comp_id, "%s.axis.%c.%s", n, l,
+                                kParamNames[i]);
+      p.value[i] = in.applied[a][i] = d.*kFields[i] / in.scale[a];
+    }
   }
   r |= hal_pin_bit_newf(HAL_IN, &h.enable, g_comp_id, "%s.enable", n);
   r |= hal_pin_bit_newf(HAL_IN, &h.referenced, g_comp_id, "%s.referenced", n);

@@ -232,6 +232,70 @@ TEST_F(CompensatorTest, ZeroHysteresisTurnsOnEveryStepBack) {
   EXPECT_EQ(corr_[0], 0);
 }
 
+// SetAxisLimits() while running (the native LinuxCNC component's parameters): refused with kBusy
+// while the axis's correction moves and nothing changes; at rest the new limits hold and the
+// axis's state (its correction, its direction) carries on; the board's rules refuse the rest.
+TEST_F(CompensatorTest, SetAxisLimitsWaitsForRestAndKeepsTheState) {
+  TableFixture f(50, 0, 0, /*x_table=*/true);
+  comp_.SetTable(Prepare(f), pos_);
+  comp_.SetReferenced(true);
+  comp_.SetEnabled(true);
+  pos_[0] = 100;
+  RunN(10);  // ramping in
+  AxisConfig slow = config_.axis[0];
+  slow.max_correction_rate_steps_s = 100;
+  slow.max_correction_accel_steps_s2 = 50000;
+  slow.direction_hysteresis_steps = 5;
+  const uint32_t div = CompensationDivider(kTickHz);
+  ASSERT_FALSE(comp_.at_rest(0));
+  EXPECT_EQ(comp_.SetAxisLimits(0, slow, kTickHz, div).error(), Error::kBusy);
+  RunN(10000);
+  ASSERT_TRUE(comp_.at_rest(0));
+  ASSERT_EQ(corr_[0], 50);
+  ASSERT_TRUE(comp_.SetAxisLimits(0, slow, kTickHz, div).ok());
+  EXPECT_EQ(comp_.applied_q8(0), 50 * 256);  // the correction carries on
+  EXPECT_FALSE(comp_.reverse(0));
+  pos_[0] = 96;  // 4 steps back: within the new hysteresis of 5
+  RunN(100);
+  EXPECT_FALSE(comp_.reverse(0));
+  pos_[0] = 94;  // 6: reverse, +3 taken up at the switch limits
+  RunN(5000);
+  EXPECT_TRUE(comp_.reverse(0));
+  EXPECT_EQ(corr_[0], 53);
+  // Ramp-out at the new rate: 100 steps/s.
+  comp_.SetEnabled(false);
+  max_rate_ = 0;
+  for (int i = 0; i < 5000; ++i) RunN(1);
+  EXPECT_LE(max_rate_, 100.0 * CompensationDivider(kTickHz) / kTickHz + 1.0 / 256);
+  EXPECT_GT(max_rate_, 0.0);
+  AxisConfig bad = slow;
+  bad.direction_switch_accel_steps_s2 = bad.max_correction_accel_steps_s2 - 1;
+  EXPECT_EQ(comp_.SetAxisLimits(0, bad, kTickHz, div).error(), Error::kConfigInvalid);
+  bad = slow;
+  bad.max_correction_steps = table::kMaxCorrectionSteps + 1;
+  EXPECT_EQ(comp_.SetAxisLimits(0, bad, kTickHz, div).error(), Error::kConfigInvalid);
+  bad = slow;
+  bad.max_correction_accel_steps_s2 = 0;
+  EXPECT_EQ(comp_.SetAxisLimits(0, bad, kTickHz, div).error(), Error::kConfigInvalid);
+  EXPECT_EQ(comp_.SetAxisLimits(3, slow, kTickHz, div).error(), Error::kInvalidArgument);
+}
+
+// RunWhole() is Run() with every refresh phase in the one run: after one RunWhole() the targets
+// are the table's at the new position (Run() needs refresh_runs() runs for that).
+TEST_F(CompensatorTest, RunWholeRefreshesEveryAxisInOneRun) {
+  TableFixture f(10, -20, 30);
+  comp_.SetTable(Prepare(f), pos_);
+  comp_.SetReferenced(true);
+  comp_.SetEnabled(true);
+  comp_.RunWhole(pos_);
+  EXPECT_EQ(comp_.target_q8(0), 10 * 256);
+  EXPECT_EQ(comp_.target_q8(1), -20 * 256);
+  EXPECT_EQ(comp_.target_q8(2), 30 * 256);
+  EXPECT_GT(comp_.applied_q32(0), 0);
+  for (int i = 0; i < 20000; ++i) comp_.RunWhole(pos_);
+  EXPECT_EQ(comp_.applied_q32(1), int64_t{-20} << 32);
+}
+
 // The drive, not the command, decides: with the command standing still, a correction that falls
 // by 40 steps (a new table) moves the drive back, and the reverse table applies.
 TEST_F(CompensatorTest, ACorrectionThatMovesTheDriveBackReversesIt) {

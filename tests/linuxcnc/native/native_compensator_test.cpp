@@ -3,7 +3,8 @@
 // wraps a rotary AXIS1D axis, gives the correction's velocity, takes new limits at run time
 // without a jump and refuses limits the limiter cannot hold, switches tables within the limits,
 // picks an AXIS1D table's direction row as the board does (its output turned back by more than
-// one step).
+// the hysteresis, a parameter) and takes up a switch of rows at the switch limits (checked against
+// the kinematics of a move at those limits, and against the same switch at the correction's).
 #include "native/native_compensator.hpp"
 
 #include <gtest/gtest.h>
@@ -234,25 +235,137 @@ volcomp::testing::AlignedBytes DirectionImage() {
   return out;
 }
 
+// The correction (whole steps) once settled with the joint at `step` (1 s at 1 kHz): the row of
+// the direction the joint last moved in.
+long SettleAt(NativeCompensator& c, int32_t step) {
+  const double pos[1] = {step * kMmPerStep};
+  double corr[1], vel[1];
+  for (int i = 0; i < 1000; ++i) c.Tick(pos, true, true, corr, vel);
+  return std::lround(corr[0] / kMmPerStep);
+}
+
 TEST(NativeCompensator, DirectionRowTurnsWhenTheOutputGoesBackMoreThanAStep) {
   const auto t = Load(DirectionImage());
   ASSERT_NE(t, nullptr);
   NativeCompensator c;
   c.UseTable(t.get());
   ASSERT_TRUE(c.SetPeriod(kMs).ok());
-  double corr[1], vel[1];
-  // Settles at the row of the direction the joint last moved in (1 s at 1 kHz).
-  const auto settle_at = [&](int32_t step) {
-    const double pos[1] = {step * kMmPerStep};
-    for (int i = 0; i < 1000; ++i) c.Tick(pos, true, true, corr, vel);
-    return std::lround(corr[0] / kMmPerStep);
-  };
+  const auto settle_at = [&](int32_t step) { return SettleAt(c, step); };
   EXPECT_EQ(settle_at(50000), 10);  // forward from the start
   EXPECT_EQ(settle_at(50001), 10);
   EXPECT_EQ(settle_at(50000), 10);   // one step back: within the hysteresis
   EXPECT_EQ(settle_at(49999), -10);  // two steps back from the furthest point: reverse
   EXPECT_EQ(settle_at(50000), -10);  // one step forward: still reverse
   EXPECT_EQ(settle_at(50001), 10);   // two: forward again
+}
+
+// The hysteresis is the axis's parameter: with 3 steps, a move back by 3 steps keeps the forward
+// row, by 4 turns it.
+TEST(NativeCompensator, DirectionHysteresisIsAParameterOfTheAxis) {
+  const auto t = Load(DirectionImage());
+  ASSERT_NE(t, nullptr);
+  NativeCompensator c;
+  c.UseTable(t.get());
+  ASSERT_TRUE(c.SetPeriod(kMs).ok());
+  AxisLimits l = NativeCompensator::DefaultLimits(t->axis(0));
+  EXPECT_NEAR(l.direction_hysteresis, 1 * kMmPerStep, 1e-15);  // the board's default
+  l.direction_hysteresis = 3 * kMmPerStep;
+  ASSERT_TRUE(c.SetLimits(0, l).ok());
+  const auto settle_at = [&](int32_t step) { return SettleAt(c, step); };
+  EXPECT_EQ(settle_at(50000), 10);
+  EXPECT_EQ(settle_at(49997), 10);  // 3 steps back: within the hysteresis
+  EXPECT_EQ(settle_at(49996), -10);
+  EXPECT_EQ(settle_at(49999), -10);  // 3 forward from the furthest point back
+  EXPECT_EQ(settle_at(50000), 10);
+}
+
+// A switch between the rows (20 steps here) is taken up at the switch limits: within the switch
+// acceleration in every period and the switch velocity, in the periods a move of 20 steps at that
+// acceleration takes (a triangle profile), faster than the correction's own limits allow, which
+// the same switch then needs when the switch limits are set to them.
+TEST(NativeCompensator, TakesUpADirectionSwitchAtTheSwitchLimits) {
+  const auto t = Load(DirectionImage());
+  ASSERT_NE(t, nullptr);
+  constexpr double kDistance = 20, kSwitchAccel = 400000, kSwitchVel = 10000;  // steps, /s, /s^2
+  const auto reversal = [&](double switch_accel, double switch_vel, double* peak_vel) {
+    NativeCompensator c;
+    c.UseTable(t.get());
+    EXPECT_TRUE(c.SetPeriod(kMs).ok());
+    AxisLimits l = NativeCompensator::DefaultLimits(t->axis(0));
+    l.switch_accel = switch_accel * kMmPerStep;
+    l.switch_vel = switch_vel * kMmPerStep;
+    EXPECT_TRUE(c.SetLimits(0, l).ok());
+    double corr[1], vel[1], last_vel = 0;
+    const double fwd[1] = {50000 * kMmPerStep}, back[1] = {49990 * kMmPerStep};
+    for (int i = 0; i < 1000; ++i) c.Tick(fwd, true, true, corr, vel);
+    EXPECT_NEAR(corr[0] / kMmPerStep, 10, 1e-9);
+    *peak_vel = 0;
+    int periods = 0;
+    for (int i = 0; i < 1000; ++i) {
+      c.Tick(back, true, true, corr, vel);
+      const double v = vel[0] / kMmPerStep, dv = std::fabs(v - last_vel);
+      EXPECT_LE(dv, std::max(switch_accel, 200000.0) * 1e-3 + 1e-6) << "period " << i;
+      EXPECT_LE(std::fabs(v), std::max(switch_vel, 2000.0) + 1e-6) << "period " << i;
+      *peak_vel = std::max(*peak_vel, std::fabs(v));
+      last_vel = v;
+      if (std::fabs(corr[0] / kMmPerStep + 10) > 1e-9) periods = i + 1;
+    }
+    EXPECT_NEAR(corr[0] / kMmPerStep, -10, 1e-9);
+    return periods;
+  };
+  // Periods a move of d steps needs from rest to rest at a T^2 velocity change per period: m
+  // periods up and m - 1 down cover a T^2 m^2, so 2 sqrt(d / (a T^2)) - 1 at the least.
+  const auto periods_for = [&](double accel) { return 2 * std::sqrt(kDistance / (accel * 1e-6)); };
+  double peak = 0, peak_slow = 0;
+  const int fast = reversal(kSwitchAccel, kSwitchVel, &peak);
+  EXPECT_GE(fast, std::ceil(periods_for(kSwitchAccel)) - 1);  // 14.1: 14
+  EXPECT_LE(fast, std::ceil(periods_for(kSwitchAccel)) + 1);
+  EXPECT_GT(peak, 2000.0);  // beyond the correction's velocity limit
+  // The same switch at the correction's limits (200000 steps/s^2, 2000 steps/s): 19 periods at
+  // the least.
+  const int slow = reversal(200000, 2000, &peak_slow);
+  EXPECT_GE(slow, std::ceil(periods_for(200000)) - 1);
+  EXPECT_LE(peak_slow, 2000.0 + 1e-6);
+  EXPECT_LT(fast, slow);
+}
+
+// The board's rules hold here too: a switch slower than the correction, a maximum correction
+// beyond the table format's, a negative hysteresis are refused and change nothing; the maximum
+// correction rounds down to whole steps; a switch
+// acceleration above what the period represents is taken as that, and said.
+TEST(NativeCompensator, RefusesSwitchLimitsTheBoardWouldRefuseAndSaysTheBound) {
+  const auto t = Load(DirectionImage());
+  NativeCompensator c;
+  c.UseTable(t.get());
+  ASSERT_TRUE(c.SetPeriod(kMs).ok());
+  const AxisLimits before = c.limits(0);
+  AxisLimits l = before;
+  l.switch_accel = before.max_accel / 2;
+  EXPECT_EQ(c.SetLimits(0, l).error(), Error::kConfigInvalid);
+  l = before;
+  l.max_correction = (table::kMaxCorrectionSteps + 1) * kMmPerStep;
+  EXPECT_EQ(c.SetLimits(0, l).error(), Error::kConfigInvalid);
+  l = before;
+  l.direction_hysteresis = -kMmPerStep;
+  EXPECT_EQ(c.SetLimits(0, l).error(), Error::kConfigInvalid);
+  EXPECT_EQ(c.limits(0).switch_accel, before.switch_accel);
+  // The maximum correction in whole steps, rounded down: never a larger correction than asked.
+  l = before;
+  l.max_correction = 2.54 * kMmPerStep;
+  ASSERT_TRUE(c.SetLimits(0, l).ok());
+  EXPECT_NEAR(c.MaxCorrectionInForce(0), 2 * kMmPerStep, 1e-15);
+  l.max_correction = 3 * kMmPerStep;
+  ASSERT_TRUE(c.SetLimits(0, l).ok());
+  EXPECT_NEAR(c.MaxCorrectionInForce(0), 3 * kMmPerStep, 1e-15);
+  // The default 10^8 steps/s^2 at a 1 ms period: below one step per period^2, 10^6 - 1.
+  double accel = 0;
+  EXPECT_EQ(c.SwitchAccel(0, &accel), SwitchAccelBound::kPeriod);
+  EXPECT_NEAR(accel, (1e6 - 1) * kMmPerStep, 1e-9);
+  l = before;
+  l.switch_accel = 500000 * kMmPerStep;
+  ASSERT_TRUE(c.SetLimits(0, l).ok());
+  EXPECT_EQ(c.SwitchAccel(0, &accel), SwitchAccelBound::kNone);
+  EXPECT_NEAR(accel, 500000 * kMmPerStep, 1e-9);
 }
 
 }  // namespace

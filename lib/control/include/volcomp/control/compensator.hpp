@@ -62,6 +62,19 @@ class Compensator {
   Status Configure(const BoardConfig& config) {
     return Configure(config, CompensationDivider(config.tick_hz));
   }
+  /// Configure() in parts, for a caller without a whole board configuration (the native LinuxCNC
+  /// component: its axes come from the table, its limits from HAL parameters, its rate from the
+  /// servo thread). Reset(): `axis_count` axes (1..kMaxAxes), no table, every axis forward at
+  /// zero correction and at rest, with placeholder limits until SetAxisLimits() (call it for each
+  /// axis before Run()).
+  void Reset(uint8_t axis_count);
+  /// Axis `a`'s limits from `axis` as Configure() takes them (max_correction_steps, the
+  /// correction's rate and acceleration, direction_hysteresis_steps, the direction switch limits),
+  /// for one Run() every `ticks_per_run` ticks of `tick_hz`; the axis's state (direction, table,
+  /// correction) carries on. kBusy while its correction moves (nothing changes: set them when
+  /// at_rest(a), so its velocity never jumps); kConfigInvalid where ValidateBoardConfig() would
+  /// refuse them (rules kMaxCorrection, kLimiter, kDirectionSwitch).
+  Status SetAxisLimits(uint8_t a, const AxisConfig& axis, uint32_t tick_hz, uint32_t ticks_per_run);
 
   /// Makes `table` the active table (copied; the image bytes it points to must stay valid until
   /// the next SetTable/ClearTable). The applied correction moves to the new target within limits.
@@ -128,6 +141,16 @@ class Compensator {
     for (uint8_t a = 0; a < axis_count_; ++a) correction_steps[a] = LimitAxis(a);
   }
 
+  /// Run() with the whole target refresh in the one run (every phase of RefreshTargets(), and a
+  /// requested Rebase() first), for a caller whose run is long enough (the native LinuxCNC
+  /// component, once per servo period); the correction stays in Q32.32 (applied_q32()).
+  void RunWhole(const int32_t* machine_pos_steps) {
+    for (uint8_t a = 0; a < axis_count_; ++a) SenseAxis(a, machine_pos_steps[a]);
+    if (rebase_pending_) Rebase(machine_pos_steps);
+    for (uint32_t k = 0; k < refresh_runs(); ++k) RefreshTargets(machine_pos_steps);
+    for (uint8_t a = 0; a < axis_count_; ++a) (void)LimitAxis(a);
+  }
+
   /// Run() in its three steps, for ControlTick::Compensate() (which walks its axes once before and
   /// once after the refresh): SenseAxis() for every axis, then RefreshTargets(), then LimitAxis()
   /// for every axis, in this order, once per run.
@@ -173,6 +196,10 @@ class Compensator {
   int32_t applied_q8(int axis) const {
     return static_cast<int32_t>(limiter_[axis].position_q32() >> 24);
   }
+  /// The applied correction of an axis unrounded, Q32.32 steps.
+  int64_t applied_q32(int axis) const { return limiter_[axis].position_q32(); }
+  /// True while the axis's correction does not move (its limiter at rest).
+  bool at_rest(int axis) const { return limiter_[axis].at_rest(); }
   /// Target refreshes of axis `axis` (one per refresh_runs() while engaged) in which the table
   /// asked for more than the maximum correction (the target was clamped); wraps at 2^32.
   uint32_t clamped_refreshes(int axis) const { return clamped_refreshes_[axis]; }
