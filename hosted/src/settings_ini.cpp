@@ -339,6 +339,33 @@ std::string ConsistencyProblem(const BoardSettings& s) {
   return "the [board] values are refused by the board's consistency rules (ValidateSettings)";
 }
 
+std::string FindingText(const BoardSettings& s, const ConfigFinding& f) {
+  if (f.rule == ConfigRule::kNone) return "";
+  std::string where;
+  if (f.axis >= 1 && f.axis <= s.board.axis_count && f.axis <= table::kMaxAxes) {
+    where = std::string("[axis ") + s.board.axis[f.axis - 1].name + "]: ";
+  } else if (f.axis != 0) {
+    where = "axis " + std::to_string(f.axis) + ": ";
+  }
+  const std::string rule =
+      "(rule " + std::to_string(static_cast<int>(f.rule)) + ": " + ConfigRuleText(f.rule) + ")";
+  if (f.rule == ConfigRule::kPulseTiming && !where.empty() && f.axis <= s.board.axis_count) {
+    const AxisConfig& ax = s.board.axis[f.axis - 1];
+    const uint32_t rate = PulseTimingRateHz(ax);
+    return where + "drive_max_rate_hz " + std::to_string(ax.drive.max_rate_hz) +
+           " is more than the pulse timing allows: pulse_width_ns " +
+           std::to_string(ax.drive.pulse_width_ns) + " + step_space_ns " +
+           std::to_string(ax.drive.step_space_ns) + " = " +
+           std::to_string(uint64_t{ax.drive.pulse_width_ns} + ax.drive.step_space_ns) +
+           " ns a step, at most " + std::to_string(rate) +
+           " Hz; set drive_max_rate_hz to at most " + std::to_string(rate) +
+           " (and max_input_rate_hz + max_rate within it), or the shorter pulse times the drive's "
+           "datasheet gives for its rate " +
+           rule;
+  }
+  return where + ConfigRuleText(f.rule);
+}
+
 IniOutcome CheckSettings(const IniDocument& doc, const BoardSettings& s) {
   const std::string why = ConsistencyProblem(s);
   if (why.empty()) return IniOutcome::Ok();

@@ -397,6 +397,16 @@ TEST(GatewayAppMappingTest, StepPulseTimingDoesNotConcernTheGateway) {
   EXPECT_TRUE(m.app_.Start(s, Mapping()).ok());
   EXPECT_TRUE(m.app_.gateway_active());
   EXPECT_TRUE(m.io_.output(hal::OutputLine::kReady));
+  // Nor its settings rules: the settings check (0x2123) finds nothing (a step/dir board would
+  // name kPulseTiming: 30 us a step send 33 kHz, the drive rate is 2 MHz).
+  m.io_.SetInput(hal::InputLine::kWriteEnable, true);
+  EXPECT_TRUE(m.Write(ObjectId::kAxisDriveMaxRate1, 1900000).ok());
+  SdoClient c(kNode);
+  c.StartRead(0x2123, 0);
+  const auto check = m.Run(c);
+  ASSERT_TRUE(check.ok());
+  ASSERT_EQ(check->size(), 4u);
+  EXPECT_EQ((*check)[0], 0u);  // bits 0-7: the rule broken, none
 }
 
 // Tables live in files (hal/linux FileFlash): a new process finds the active table.

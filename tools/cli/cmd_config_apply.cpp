@@ -17,6 +17,7 @@
 #include "volcomp/canopen/board_protocol.hpp"
 #include "volcomp/canopen/setting_objects.hpp"
 #include "volcomp/canopen_client/board_settings_io.hpp"
+#include "volcomp/canopen_client/table_staging.hpp"
 #include "volcomp/hosted/settings_ini.hpp"
 #include "volcomp/tools/hex.hpp"
 
@@ -75,14 +76,20 @@ std::string ResolutionChangeText(const JsonValue& x) {
   return line;
 }
 
-// Writes and stores `changes`; a refusal part-way undoes the edits written so far.
-Expected<size_t> WriteAndStore(CanSession& s, const std::vector<Difference>& changes) {
+// Writes and stores `changes` (toward `wanted`); a refusal part-way undoes the edits written so
+// far. A store the board refuses by a rule of its own kind (kPulseTiming on a step/dir board,
+// which the file check cannot know) is said with the values, the limit and the fix.
+Expected<size_t> WriteAndStore(CanSession& s,
+                               const std::vector<Difference>& changes,
+                               const BoardSettings& wanted) {
   size_t written = 0;
   Outcome stored = canopen_client::WriteObjects(s, changes, &written);
   if (stored.ok()) stored = canopen_client::StoreSettings(s);
   if (stored.ok()) return written;
-  const Failure& f = stored.error();
+  Failure f = stored.error();
   if (f.code == Error::kCommunication) return Fail(f);
+  const std::string why = hosted::FindingText(wanted, canopen_client::SettingsFinding(s));
+  if (!why.empty()) f.message += "; the board refuses the settings: " + why;
   std::vector<Difference> undo;
   for (size_t i = 0; i < written; ++i)
     undo.push_back({changes[i].id, changes[i].to, changes[i].from});
@@ -215,7 +222,7 @@ Expected<Output> RunConfigApply(Args& args, Context& ctx) {
     msg << SwitchAccelBoundText(x) << "\n";
   }
   for (const JsonValue& x : d.get("changes")->array) msg << "  " << x.string << "\n";
-  VOLCOMP_TRY_ASSIGN(const size_t written, WriteAndStore(s, changes));
+  VOLCOMP_TRY_ASSIGN(const size_t written, WriteAndStore(s, changes, wanted));
   d.Set("written", uint64_t{written});
   msg << "node " << unsigned{can.node} << ": " << written << " objects written, stored (1010:1)\n";
   if (no_reset) {

@@ -172,7 +172,7 @@ uint8_t BoardObjects::correction_limited(uint8_t a) const {
 
 uint32_t BoardObjects::settings_check() const {
   canopen::SettingsCheck c;
-  c.error = ValidateSettings(WithCommunication(pending_), &c.finding).error();
+  c.error = ValidateSettings(WithCommunication(pending_), &c.finding, parts_.output_stage).error();
   return canopen::EncodeSettingsCheck(c);
 }
 
@@ -318,7 +318,7 @@ SdoAbort BoardObjects::StoreSettings() {
   // "Save all parameters" includes the communication parameters in force (0x1015, 0x1017): they
   // become what the resets restore.
   const BoardSettings s = WithCommunication(pending_);
-  if (!ValidateSettings(s).ok()) return SdoAbort::kInvalidValue;
+  if (!ValidateSettings(s, nullptr, parts_.output_stage).ok()) return SdoAbort::kInvalidValue;
   if (!parts_.settings_store->Save(s).ok()) return Refuse(SdoAbort::kHardware);
   parts_.node->set_stored_communication({s.heartbeat_ms, s.emcy_inhibit_100us});
   UpdateSettingsPending();

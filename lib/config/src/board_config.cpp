@@ -99,6 +99,26 @@ Result<LimiterParams> AxisSwitchLimiterParams(const AxisConfig& axis,
       DirectionSwitchAccelInEffect(axis, tick_hz, ticks_per_step).steps_s2, ticks_per_step);
 }
 
+uint32_t PulseTimingRateHz(const AxisConfig& axis) {
+  if (axis.output_format == PulseFormat::kQuadrature) return 0;
+  const uint64_t period_ns = uint64_t{axis.drive.pulse_width_ns} + axis.drive.step_space_ns;
+  return period_ns == 0 ? 0u : static_cast<uint32_t>(uint64_t{1000000000u} / period_ns);
+}
+
+Status ValidateStepOutputConfig(const BoardConfig& config, ConfigFinding* finding) {
+  ConfigFinding f;
+  VOLCOMP_TRY(ValidateBoardConfig(config, finding));
+  for (uint8_t i = 0; i < config.axis_count; ++i) {
+    const uint32_t rate = PulseTimingRateHz(config.axis[i]);
+    if (rate != 0 && config.axis[i].drive.max_rate_hz > rate) {
+      f = {ConfigRule::kPulseTiming, static_cast<uint8_t>(i + 1)};
+      break;
+    }
+  }
+  if (finding != nullptr) *finding = f;
+  return f.rule == ConfigRule::kNone ? Status::Ok() : Status(Error::kConfigInvalid);
+}
+
 Status ValidateBoardConfig(const BoardConfig& config, ConfigFinding* finding) {
   const ConfigFinding f = FirstBrokenRule(config);
   if (finding != nullptr) *finding = f;

@@ -53,7 +53,7 @@ class Reader {
 };
 }  // namespace
 
-Status ValidateSettings(const BoardSettings& s, ConfigFinding* finding) {
+Status ValidateSettings(const BoardSettings& s, ConfigFinding* finding, OutputStage stage) {
   ConfigFinding f;
   if (s.node_id < 1 || s.node_id > 127) {
     f.rule = ConfigRule::kNodeId;
@@ -61,7 +61,8 @@ Status ValidateSettings(const BoardSettings& s, ConfigFinding* finding) {
     f.rule = ConfigRule::kBitrate;
   }
   if (f.rule == ConfigRule::kNone) {
-    const Status b = ValidateBoardConfig(s.board, &f);
+    const Status b = stage == OutputStage::kStepPulses ? ValidateStepOutputConfig(s.board, &f)
+                                                       : ValidateBoardConfig(s.board, &f);
     if (finding != nullptr) *finding = f;
     return b;
   }

@@ -750,6 +750,31 @@ TEST_F(Bench, SettingsCheckNamesTheRuleAndTheAxis) {
   EXPECT_NE(why.find("drive max rate (0x201D)"), std::string::npos) << why;
 }
 
+// The step/dir board keeps the step output's rule too: pulse width + step space of 2.5 us each
+// send at most 200 kHz, so a drive max rate of 400 kHz is refused at the store (0x2123 names rule
+// kPulseTiming and the axis, with the PC tool's words), 200 kHz is taken. (The CAN gateway does not
+// keep it: GatewayAppMappingTest.StepPulseTimingDoesNotConcernTheGateway.)
+TEST_F(Bench, StepBoardRefusesADriveRateItsPulseTimingCannotSend) {
+  Boot();
+  io_.SetInput(InputLine::kWriteEnable, true);
+  ASSERT_TRUE(Write(ObjectId::kAxisPulseWidth1, 2500).ok());
+  ASSERT_TRUE(Write(ObjectId::kAxisStepSpace1, 2500).ok());
+  ASSERT_TRUE(Write(ObjectId::kAxisInputMaxRate1, 190000).ok());
+  ASSERT_TRUE(Write(ObjectId::kAxisDriveMaxRate1, 400000).ok());
+  EXPECT_EQ(canopen_client::AbortOf(Write(ObjectId::kStoreAll, canopen::kSaveSignature)),
+            canopen::SdoAbort::kInvalidValue);
+  const canopen::SettingsCheck c = canopen::DecodeSettingsCheck(Read(ObjectId::kSettingsCheck));
+  EXPECT_EQ(c.finding.rule, ConfigRule::kPulseTiming);
+  EXPECT_EQ(c.finding.axis, 1);
+  canopen_client::FrameLink link = Link();
+  canopen_client::NodeObjects node(link, kNode);
+  const std::string why = canopen_client::SettingsRefusalReason(node);
+  EXPECT_NE(why.find("axis 1: on a step output"), std::string::npos) << why;
+  ASSERT_TRUE(Write(ObjectId::kAxisDriveMaxRate1, 200000).ok());  // 1e9 / 5000 ns: exactly
+  EXPECT_EQ(Read(ObjectId::kSettingsCheck), 0u);
+  EXPECT_TRUE(Write(ObjectId::kStoreAll, canopen::kSaveSignature).ok());
+}
+
 // verify --readback of the active table: 0x2109 is the active image even while another is staged.
 TEST_F(Bench, ActiveTableDataIsTheActiveImageWhileAnotherIsStaged) {
   Boot();

@@ -91,6 +91,43 @@ TEST(SettingsRules, DirectionSwitchAccelerationAtLeastTheCorrections) {
   EXPECT_TRUE(ValidateSettings(s, &f).ok());
 }
 
+// Pulse timing against the drive rate, on a board with step outputs only: 2500 + 2500 ns a step
+// send 1e9 / 5000 = 200 000 steps/s; a drive rate one above is refused (kPulseTiming, its axis),
+// the rules every board keeps (the gateway's) do not ask it; a quadrature output sends edges, no
+// pulses, and zero times set no bound.
+TEST(SettingsRules, PulseTimingMustAllowTheDriveRateOnAStepBoard) {
+  BoardSettings s;
+  AxisConfig& y = s.board.axis[1];
+  y.drive.pulse_width_ns = 2500;
+  y.drive.step_space_ns = 2500;
+  y.max_input_rate_hz = 190000;
+  y.drive.max_rate_hz = 200000;
+  EXPECT_EQ(PulseTimingRateHz(y), 200000u);
+  ConfigFinding f;
+  EXPECT_TRUE(ValidateSettings(s, &f, OutputStage::kStepPulses).ok());
+  y.drive.max_rate_hz = 200001;
+  EXPECT_FALSE(ValidateSettings(s, &f, OutputStage::kStepPulses).ok());
+  EXPECT_EQ(f.rule, ConfigRule::kPulseTiming);
+  EXPECT_EQ(f.axis, 2);
+  EXPECT_TRUE(ValidateSettings(s, &f, OutputStage::kCanSetpoints).ok());
+  EXPECT_EQ(f.rule, ConfigRule::kNone);
+  EXPECT_TRUE(ValidateSettings(s, &f).ok());
+  // A rule every board keeps comes first (here the drive cannot follow input + correction).
+  y.max_input_rate_hz = 199000;
+  EXPECT_FALSE(ValidateSettings(s, &f, OutputStage::kStepPulses).ok());
+  EXPECT_EQ(f.rule, ConfigRule::kDriveKeepsUp);
+  y.max_input_rate_hz = 190000;
+  y.output_format = PulseFormat::kQuadrature;
+  EXPECT_EQ(PulseTimingRateHz(y), 0u);
+  EXPECT_TRUE(ValidateSettings(s, &f, OutputStage::kStepPulses).ok());
+  y.output_format = PulseFormat::kCwCcw;
+  y.drive.pulse_width_ns = y.drive.step_space_ns = 0;
+  EXPECT_EQ(PulseTimingRateHz(y), 0u);
+  EXPECT_TRUE(ValidateSettings(s, &f, OutputStage::kStepPulses).ok());
+  // The factory settings keep it on every axis.
+  EXPECT_TRUE(ValidateSettings(BoardSettings(), &f, OutputStage::kStepPulses).ok());
+}
+
 // The acceleration in effect: the configured one unless the limiter's period cannot represent it
 // (accel < f^2 / n^2) or it would reach the drive's spare rate in under one period
 // (accel <= rate * f / n), each worked by hand here.

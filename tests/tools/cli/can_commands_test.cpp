@@ -290,6 +290,38 @@ TEST_F(CanCommands, ConfigSaysWhereTheDirectionSwitchAccelerationIsBound) {
   std::remove(ini.c_str());
 }
 
+// The integrator's drive takes 2.5 us pulses and 2.5 us spaces: at most 200 kHz. A file that
+// says 400 kHz passes the file check (the rules every board keeps: the CAN gateway never sends
+// pulses), and the step/dir board refuses it at the store: `config apply` says the values, the
+// limit and the fix, and undoes the edits; 200 kHz is applied.
+TEST_F(CanCommands, ConfigApplySaysWhyTheBoardRefusesAPulseTimingAndUndoesTheEdits) {
+  const std::string ini = ::testing::TempDir() + "pulse_" + std::to_string(::getpid()) + ".ini";
+  const auto file = [&](int rate) {
+    return "[board]\naxes = X Y Z\n[axis X]\npulse_width_ns = 2500\nstep_space_ns = 2500\n"
+           "max_input_rate_hz = 190000\ndrive_max_rate_hz = " +
+           std::to_string(rate) + "\n[axis Y]\n[axis Z]\n";
+  };
+  ASSERT_TRUE(tools::WriteTextFile(ini, file(400000)).ok());
+  const CliResult refused = Run({"config", "apply", ini});
+  EXPECT_NE(refused.code, 0);
+  EXPECT_TRUE(Contains(refused.err,
+                       "the board refuses the settings: [axis X]: drive_max_rate_hz 400000 is more "
+                       "than the pulse timing allows: pulse_width_ns 2500 + step_space_ns 2500 = "
+                       "5000 ns a step, at most 200000 Hz; set drive_max_rate_hz to at most "
+                       "200000"))
+      << refused.err;
+  EXPECT_TRUE(Contains(refused.err, "edits written were undone")) << refused.err;
+  const JsonValue after = Json(Run({"config", "show", "--json"}));
+  EXPECT_FALSE(after.get("settings_pending")->boolean);
+  for (const JsonValue& x : after.get("objects")->array) {
+    if (x.get("object")->string == "201D:1") EXPECT_EQ(x.get("value")->integer, 2000000);
+  }
+  ASSERT_TRUE(tools::WriteTextFile(ini, file(200000)).ok());
+  const CliResult applied = Run({"config", "apply", ini});
+  EXPECT_EQ(applied.code, 0) << applied.err << applied.out;
+  std::remove(ini.c_str());
+}
+
 TEST_F(CanCommands, NmtIsConfirmedByTheHeartbeat) {
   CliResult r = Run({"nmt", "stop"});
   EXPECT_EQ(r.code, 0) << r.err;

@@ -61,14 +61,16 @@ std::string StagingFailureReason(NodeObjects& node) {
   return why;
 }
 
-std::string SettingsRefusalReason(NodeObjects& node) {
+ConfigFinding SettingsFinding(NodeObjects& node) {
   const SdoExpected<uint32_t> word = node.Read(ObjectId::kSettingsCheck);
-  if (!word.ok()) return "";
-  const canopen::SettingsCheck c = canopen::DecodeSettingsCheck(*word);
-  if (c.finding.rule == ConfigRule::kNone) return "";
-  const std::string axis =
-      c.finding.axis != 0 ? "axis " + std::to_string(c.finding.axis) + ": " : std::string();
-  return axis + ConfigRuleText(c.finding.rule);
+  return word.ok() ? canopen::DecodeSettingsCheck(*word).finding : ConfigFinding();
+}
+
+std::string SettingsRefusalReason(NodeObjects& node) {
+  const ConfigFinding f = SettingsFinding(node);
+  if (f.rule == ConfigRule::kNone) return "";
+  const std::string axis = f.axis != 0 ? "axis " + std::to_string(f.axis) + ": " : std::string();
+  return axis + ConfigRuleText(f.rule);
 }
 
 SdoFailure WithStagingReason(NodeObjects& node, SdoFailure f) {

@@ -78,6 +78,10 @@ IniOutcome CheckSettings(const IniDocument& doc, const BoardSettings& s);
 /// Why the firmware refuses `s` as a whole ("" when ValidateSettings accepts it): the axis it stops
 /// at (found by validating the first n axes) and, where trying the rules tells, the rule in keys.
 std::string ConsistencyProblem(const BoardSettings& s);
+/// A board's finding on `s` (ValidateSettings(), the settings check 0x2123) in words: the axis by
+/// its section ("[axis X]: "), the rule, and where the rule has figures (kPulseTiming) the values,
+/// the limit and the fix in keys. "" for kNone.
+std::string FindingText(const BoardSettings& s, const ConfigFinding& f);
 
 /// The PC tool's board file: [board] and [axis NAME] only, from the factory settings, checked.
 IniExpected<BoardSettings> ParseSettingsIni(const std::string& text, const std::string& source);

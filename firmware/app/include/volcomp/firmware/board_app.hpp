@@ -263,7 +263,7 @@ class BoardApp final : private BoardControl {
   Status ApplySettings(const BoardSettings& s, canopen::ConfigPart* part) {
     using canopen::ConfigPart;
     *part = ConfigPart::kSettings;
-    VOLCOMP_TRY(ValidateSettings(s));
+    VOLCOMP_TRY(ValidateSettings(s, nullptr, Io::kOutputStage));
     *part = ConfigPart::kTickIo;
     VOLCOMP_TRY(dev_.tick_io->Configure(s.board));
     *part = ConfigPart::kDataPath;
@@ -297,7 +297,8 @@ class BoardApp final : private BoardControl {
   }
 
   BoardObjects::Parts ObjectParts() {
-    return {this, &policy_, &settings_, &control_tick_, &tables_, &settings_store_, &node_};
+    return {this,     &policy_,         &settings_, &control_tick_,
+            &tables_, &settings_store_, &node_,     Io::kOutputStage};
   }
 
   uint32_t NowMs() const {

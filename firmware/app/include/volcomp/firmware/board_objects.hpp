@@ -45,6 +45,7 @@ class BoardObjects : public canopen::ObjectValues {
     TableStore* tables = nullptr;
     SettingsStore* settings_store = nullptr;
     canopen::Node* node = nullptr;
+    OutputStage output_stage = OutputStage::kAny;  // the settings rules (0x2123, 0x1010)
   };
 
   BoardObjects(const Parts& parts, const IdentityInfo& identity);

@@ -17,6 +17,9 @@ namespace volcomp::firmware {
 
 class CspIo {
  public:
+  /// No step pulses: the settings' drive pulse timing does not concern it.
+  static constexpr OutputStage kOutputStage = OutputStage::kCanSetpoints;
+
   explicit CspIo(gateway::CspGateway* gateway) : input_(gateway), output_(gateway) {}
 
   /// No step hardware: the output stage only (the gateway's PDO mapping is GatewayApp's).

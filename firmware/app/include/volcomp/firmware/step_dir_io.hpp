@@ -23,6 +23,9 @@ class StepDirIo {
                 "StepIo must provide Configure(), ReadCounters() and Apply()");
 
  public:
+  /// Its settings keep the step output's rules too (kPulseTiming).
+  static constexpr OutputStage kOutputStage = OutputStage::kStepPulses;
+
   explicit StepDirIo(StepIo* step_io) : step_io_(step_io) {}
 
   /// The step I/O hardware first (formats, counter widths, pulse clock, tick length: what the

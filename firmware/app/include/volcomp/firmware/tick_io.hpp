@@ -1,6 +1,9 @@
 // The two ends of the control tick as one static type: BoardApp's template parameter (no virtual
 // call on the tick path). A tick I/O type provides
 //
+//   static constexpr OutputStage kOutputStage;
+//       What drives the axes (board_settings.hpp): the settings rules the board keeps
+//       (ValidateSettings() with it: at a start, in the settings check 0x2123 and at a store).
 //   Status Configure(const BoardConfig& config);
 //       Start() (main loop, tick stopped, at power-on and every node reset): sets up the input
 //       and output hardware (step I/O) and then the output stage for `config`, which
@@ -27,6 +30,7 @@
 
 #include "volcomp/base/status.hpp"
 #include "volcomp/config/board_config.hpp"
+#include "volcomp/config/board_settings.hpp"
 #include "volcomp/control/control_tick.hpp"
 #include "volcomp/table/table_format.hpp"
 
@@ -49,7 +53,8 @@ struct IsTickIo : std::false_type {};
 template <typename T>
 struct IsTickIo<
     T,
-    std::void_t<decltype(Status(std::declval<T&>().Configure(std::declval<const BoardConfig&>()))),
+    std::void_t<decltype(OutputStage(T::kOutputStage)),
+                decltype(Status(std::declval<T&>().Configure(std::declval<const BoardConfig&>()))),
                 decltype(std::declval<T&>().ReadCounters(static_cast<uint32_t*>(nullptr))),
                 decltype(std::declval<T&>().Output(std::declval<const ControlTick&>())),
                 decltype(OutputStatus(std::declval<const T&>().output_status()))>>

@@ -101,7 +101,8 @@ enum class ConfigRule : uint8_t {
   kNodeId = 14,           // node-ID 1..127
   kBitrate = 15,          // bit rate 10..1000 kbit/s
   kDirectionSwitch = 16,  // direction switch acceleration >= the correction's
-  kCount = 17,
+  kPulseTiming = 17,      // step outputs: pulse width + step space allow the drive max rate
+  kCount = 18,
 };
 
 inline constexpr const char* kConfigRuleTexts[] = {
@@ -124,6 +125,8 @@ inline constexpr const char* kConfigRuleTexts[] = {
     "node-ID must be 1..127",
     "bit rate must be 10..1000 kbit/s",
     "direction switch acceleration (0x2020) must be at least the max correction accel (0x2017)",
+    "on a step output, drive pulse width (0x2019) + step space (0x201A) must allow the drive max "
+    "rate (0x201D): together at most 1e9 / rate ns",
 };
 static_assert(sizeof(kConfigRuleTexts) / sizeof(kConfigRuleTexts[0]) ==
                   static_cast<size_t>(ConfigRule::kCount),
@@ -142,6 +145,19 @@ struct ConfigFinding {
 /// Checks ranges and consistency (rates versus tick, timing versus rate); kConfigInvalid if bad,
 /// with the first broken rule and its axis in *finding (optional; kNone when ok).
 Status ValidateBoardConfig(const BoardConfig& config, ConfigFinding* finding = nullptr);
+
+/// The fastest step rate (Hz, rounded down) a step/dir or CW/CCW output can send with `axis`'s
+/// pulse timing, one pulse width plus one step space per step; 0 where it sets no bound (a
+/// quadrature output sends edges, no pulses; or both times 0).
+uint32_t PulseTimingRateHz(const AxisConfig& axis);
+
+/// The rules of a board that sends step pulses (the step/dir board, not the CAN gateway, whose
+/// settings carry drive pulse timing it never uses): ValidateBoardConfig(), then per axis
+/// kPulseTiming: drive.max_rate_hz at most PulseTimingRateHz() where that bounds it. Without it the
+/// other rules (kDriveKeepsUp) would count on a rate the output cannot send: the step output
+/// would fall behind its input at full speed. kConfigInvalid with the first broken rule and its
+/// axis in *finding (optional; kNone when ok).
+Status ValidateStepOutputConfig(const BoardConfig& config, ConfigFinding* finding = nullptr);
 
 /// The correction limiter of `axis` stepped every `ticks_per_step` ticks of `tick_hz`; without it,
 /// at the board's compensation rate (CompensationDivider()). kConfigInvalid as

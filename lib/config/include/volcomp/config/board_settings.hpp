@@ -33,9 +33,19 @@ struct BoardSettings {
   uint16_t emcy_inhibit_100us = kDefaultEmcyInhibit100us;  // 0x1015, 0 = no inhibit
 };
 
-/// Range checks of everything in `s` (the node settings, then ValidateBoardConfig); kConfigInvalid
-/// with the first broken rule and its axis in *finding (optional; kNone when ok).
-Status ValidateSettings(const BoardSettings& s, ConfigFinding* finding = nullptr);
+/// What drives the board's axes, for the rules that concern one kind of output stage only.
+enum class OutputStage : uint8_t {
+  kAny,          // the rules every board keeps (a stored record, a file before the board is known)
+  kStepPulses,   // the step/dir board: also the step output's (ValidateStepOutputConfig)
+  kCanSetpoints  // the CAN gateway: the rules every board keeps
+};
+
+/// Range checks of everything in `s` (the node settings, then ValidateBoardConfig, or
+/// ValidateStepOutputConfig for kStepPulses); kConfigInvalid with the first broken rule and its
+/// axis in *finding (optional; kNone when ok).
+Status ValidateSettings(const BoardSettings& s,
+                        ConfigFinding* finding = nullptr,
+                        OutputStage stage = OutputStage::kAny);
 
 /// Serialized size of a BoardSettings record.
 inline constexpr uint32_t kSettingsBytes = 24 + table::kMaxAxes * 64 + 8;

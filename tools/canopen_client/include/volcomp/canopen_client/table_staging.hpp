@@ -45,6 +45,9 @@ std::string StagingFailureReason(NodeObjects& node);
 /// pending settings break and its axis ("axis 2: max input rate ... must not exceed ..."), or
 /// empty when they break none or 0x2123 cannot be read.
 std::string SettingsRefusalReason(NodeObjects& node);
+/// The rule the board's pending settings break and its axis (0x2123), kNone when they break none
+/// or 0x2123 cannot be read.
+ConfigFinding SettingsFinding(NodeObjects& node);
 
 /// `f` with the board's reason appended when the board refused (by_server) and its staging bank
 /// says why (StagingFailureReason); unchanged otherwise.
