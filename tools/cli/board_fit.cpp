@@ -1,12 +1,15 @@
 // The table-against-installation check of `upload` and `activate`.
 #include "board_fit.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
 #include "sdo_failure.hpp"
 #include "volcomp/canopen/board_protocol.hpp"
 #include "volcomp/canopen_client/board_settings_io.hpp"
+#include "volcomp/hosted/settings_ini.hpp"
+#include "volcomp/image/image_reader.hpp"
 #include "volcomp/image/table_demands.hpp"
 
 namespace volcomp::cli {
@@ -32,10 +35,15 @@ std::string Fixed(double v, int digits) {
 Expected<BoardInstallation> ReadInstallation(canopen_client::NodeObjects& node) {
   // The configuration the board runs with (0x2124), which decides what it clamps, not the edited
   // objects (they differ while settings are pending).
-  BoardInstallation b;
   VOLCOMP_TRY_ASSIGN(const uint32_t state, ReadObject(node, ObjectId::kDeviceState));
-  b.settings_pending = canopen::DecodeDeviceState(state).settings_pending;
   VOLCOMP_TRY_ASSIGN(const BoardSettings s, canopen_client::ReadSettingsInForce(node));
+  BoardInstallation b = InstallationOf(s);
+  b.settings_pending = canopen::DecodeDeviceState(state).settings_pending;
+  return b;
+}
+
+BoardInstallation InstallationOf(const BoardSettings& s) {
+  BoardInstallation b;
   for (size_t a = 0; a < s.board.axis_count && a < table::kMaxAxes; ++a) {
     const AxisConfig& c = s.board.axis[a];
     BoardAxis x;
@@ -139,6 +147,101 @@ Expected<std::vector<FitProblem>> RequireTableFits(canopen_client::NodeObjects& 
   }
   for (const FitProblem& p : problems) warnings << "warning: " << p.message << "\n";
   return problems;
+}
+
+std::vector<std::string> HomeOutsideLattice(const table::TableView& v, const BoardSettings& s) {
+  std::vector<std::string> out;
+  for (uint8_t a = 0; a < v.axis_count && a < s.board.axis_count; ++a) {
+    const AxisConfig& ax = s.board.axis[a];
+    const table::Dimension* dim = nullptr;
+    for (int d = 0; d < 3 && v.grid.present; ++d) {
+      if (v.grid.axis[d] == a) dim = &v.grid.dim[d];
+    }
+    for (uint8_t i = 0; dim == nullptr && i < v.axis1d_count; ++i) {
+      if (v.axis1d[i].axis == a && v.axis1d[i].period_steps == 0) dim = &v.axis1d[i].dim;
+    }
+    if (dim == nullptr || dim->nodes == 0) continue;
+    const int64_t first = dim->origin_steps;
+    const int64_t last = first + int64_t{dim->spacing_steps} * (dim->nodes - 1);
+    const int64_t home = ax.home_position_steps;
+    if (home >= first && home <= last) continue;
+    const double u = ax.resolution_e9 * 1e-9;
+    const char* unit = ax.kind == table::AxisKind::kRotary ? "deg" : "mm";
+    char b[320];
+    std::snprintf(b, sizeof b,
+                  "[axis %c]: the home position %lld steps (%.4f %s), where the board references, "
+                  "lies outside the table's %c range %.4f..%.4f %s: the board holds the edge "
+                  "value there (build the lattice over the whole travel and the home)",
+                  ax.name, static_cast<long long>(home), home * u, unit, ax.name, first * u,
+                  last * u, unit);
+    out.push_back(b);
+  }
+  return out;
+}
+
+Expected<std::optional<BoardFileCheck>> ParseBoardFileCheck(Args& args) {
+  const std::optional<std::string> path = args.Value("--board");
+  const std::optional<long long> bank = args.Integer("--bank-bytes");
+  const bool allow = args.Flag("--allow-clamp");
+  if (!path) {
+    if (bank || allow) return UsageFailure("--bank-bytes and --allow-clamp need --board FILE");
+    return std::optional<BoardFileCheck>();
+  }
+  if (bank && (*bank < 1 || *bank > 0xFFFFFFFFll)) {
+    return UsageFailure("--bank-bytes must be 1..4294967295");
+  }
+  const hosted::IniExpected<BoardSettings> file = hosted::ReadSettingsIniFile(*path);
+  if (!file.ok()) return Fail(file.error().ToFailure());
+  BoardFileCheck c;
+  c.path = *path;
+  c.settings = *file;
+  c.bank_bytes = bank ? static_cast<uint32_t>(*bank) : 0u;
+  c.allow_clamp = allow;
+  return std::optional<BoardFileCheck>(std::move(c));
+}
+
+Outcome CheckImageAgainstBoardFile(const BoardFileCheck& check,
+                                   const std::vector<uint8_t>& bytes,
+                                   std::vector<std::string>* warnings,
+                                   JsonValue* report) {
+  VOLCOMP_TRY_ASSIGN(const image::LoadedImage img, image::LoadedImage::FromBytes(bytes, "image"));
+  const std::vector<FitProblem> fits = CheckTableFits(img.view(), InstallationOf(check.settings));
+  std::vector<std::string> refused, warned;
+  for (const FitProblem& p : fits) {
+    (p.limit && check.allow_clamp ? warned : refused).push_back(p.message);
+  }
+  if (check.bank_bytes != 0 && bytes.size() > check.bank_bytes) {
+    refused.push_back("the image of " + std::to_string(bytes.size()) +
+                      " bytes does not fit the board's table bank of " +
+                      std::to_string(check.bank_bytes) + " bytes (--bank-bytes)");
+  }
+  for (std::string& w : HomeOutsideLattice(img.view(), check.settings)) {
+    warned.push_back(std::move(w));
+  }
+  JsonValue r = JsonValue::Object();
+  JsonValue problems = JsonValue::Array(), said = JsonValue::Array();
+  for (const std::string& p : refused) problems.Push(p);
+  for (const std::string& w : warned) said.Push(w);
+  r.Set("file", check.path)
+      .Set("image_bytes", uint64_t{bytes.size()})
+      .Set("bank_bytes", uint64_t{check.bank_bytes})
+      .Set("problems", std::move(problems))
+      .Set("warnings", std::move(said));
+  *report = std::move(r);
+  if (!refused.empty()) {
+    std::string text;
+    for (const std::string& p : refused) text += "\n  " + p;
+    const bool limits_only =
+        std::all_of(fits.begin(), fits.end(), [](const FitProblem& p) { return p.limit; });
+    return Fail(Error::kInvalidArgument,
+                "the image does not fit the board of " + check.path + " (nothing written):" + text +
+                    (limits_only && !check.allow_clamp
+                         ? "\n(--allow-clamp writes it anyway; the board then shows the limit in "
+                           "force in `volcomp status`)"
+                         : ""));
+  }
+  for (std::string& w : warned) warnings->push_back(std::move(w));
+  return Outcome::Ok();
 }
 
 }  // namespace volcomp::cli

@@ -10,11 +10,14 @@
 // about, and the board shows them in force (0x2134-0x2136, EMCY 0xFF20).
 #pragma once
 
+#include <optional>
 #include <ostream>
 #include <string>
 #include <vector>
 
+#include "command.hpp"
 #include "volcomp/canopen_client/node_objects.hpp"
+#include "volcomp/config/board_settings.hpp"
 #include "volcomp/hosted/expected.hpp"
 #include "volcomp/table/table_image.hpp"
 
@@ -54,5 +57,34 @@ Expected<std::vector<FitProblem>> RequireTableFits(canopen_client::NodeObjects& 
                                                    const table::TableView& view,
                                                    bool allow_limits,
                                                    std::ostream& warnings);
+
+/// The installation a board settings file describes (the file `config save` writes).
+BoardInstallation InstallationOf(const BoardSettings& s);
+
+/// Axes whose home position (AxisConfig::home_position_steps, where the board references) lies
+/// outside the table's lattice along that axis (its GRID3 dimension, or its AXIS1D table unless
+/// it wraps): there the board holds the lattice's edge value. One message per such axis.
+std::vector<std::string> HomeOutsideLattice(const table::TableView& view, const BoardSettings& s);
+
+/// A build's `--board FILE` (the board's settings file), `--bank-bytes N`, `--allow-clamp`.
+struct BoardFileCheck {
+  std::string path;
+  BoardSettings settings;
+  uint32_t bank_bytes = 0;  // 0: not given
+  bool allow_clamp = false;
+};
+/// Reads the options (and the file, as `config apply` does); nullopt without --board. A usage
+/// failure for --bank-bytes or --allow-clamp without --board.
+Expected<std::optional<BoardFileCheck>> ParseBoardFileCheck(Args& args);
+
+/// The image `bytes` against the board file, before it is written: fails (kInvalidArgument)
+/// naming every problem on a mismatch (axes, units per step), an image larger than bank_bytes, a
+/// clamp or rate limit unless allow_clamp. `*warnings` gets the limits allowed and the home
+/// positions outside the lattice. `*report` (JSON): file, image_bytes, bank_bytes (0: not given),
+/// problems, warnings.
+Outcome CheckImageAgainstBoardFile(const BoardFileCheck& check,
+                                   const std::vector<uint8_t>& bytes,
+                                   std::vector<std::string>* warnings,
+                                   JsonValue* report);
 
 }  // namespace volcomp::cli

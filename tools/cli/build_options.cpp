@@ -179,6 +179,7 @@ Expected<GridCommand> ParseGridCommand(Args& args, const builders::GridSource& s
     c.grid.max_correction_um = *bound;
   }
   VOLCOMP_TRY(ParseImageOptions(args, &c.request));
+  VOLCOMP_TRY_ASSIGN(c.board, ParseBoardFileCheck(args));
   args.Flag("--json");  // the command layer prints the report as JSON
   return c;
 }

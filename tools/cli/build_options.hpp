@@ -4,9 +4,11 @@
 #pragma once
 
 #include <array>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "board_fit.hpp"
 #include "command.hpp"
 #include "volcomp/builders/grid.hpp"
 #include "volcomp/builders/grid_source.hpp"
@@ -38,6 +40,7 @@ struct GridCommand {
   std::string output;
   image::ImageRequest request;  // axes X, Y, Z, element, frac bits, table id, --info entries
   builders::GridBuildOptions grid;
+  std::optional<BoardFileCheck> board;  // --board FILE: checked before the image is written
 };
 
 /// Reads -o, --resolution-nm/--steps-per-unit, --range, --spacing-mm, --max-interp-error-um,

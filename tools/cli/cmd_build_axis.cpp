@@ -8,6 +8,7 @@
 #include <utility>
 #include <vector>
 
+#include "board_fit.hpp"
 #include "build_options.hpp"
 #include "choice_option.hpp"
 #include "commands.hpp"
@@ -109,6 +110,7 @@ Expected<Output> RunBuildAxis(Args& args, Context& ctx) {
   image::ImageRequest req;
   VOLCOMP_TRY_ASSIGN(req.axes, ParseAxisResolutions(args, names));
   VOLCOMP_TRY(ParseImageOptions(args, &req));
+  VOLCOMP_TRY_ASSIGN(const std::optional<BoardFileCheck> board, ParseBoardFileCheck(args));
   VOLCOMP_TRY(args.Finish());
 
   Output output;
@@ -129,12 +131,15 @@ Expected<Output> RunBuildAxis(Args& args, Context& ctx) {
   req.info.emplace("builder", "volcomp build axis");
   req.info.emplace("reverse", reverse);
   VOLCOMP_TRY_ASSIGN(const std::vector<uint8_t> bytes, image::BuildImage(req));
+  JsonValue board_check;
+  if (board) VOLCOMP_TRY(CheckImageAgainstBoardFile(*board, bytes, &output.warnings, &board_check));
   VOLCOMP_TRY(tools::WriteFileBytes(out_path, bytes));
   output.data = JsonValue::Object();
   output.data.Set("image", out_path)
       .Set("bytes", uint64_t{bytes.size()})
       .Set("reverse", reverse)
       .Set("axes", std::move(axes));
+  if (board) output.data.Set("board_check", std::move(board_check));
   output.text = BuildAxisText;
   return output;
 }
@@ -155,7 +160,8 @@ const Command& BuildAxisCommand() {
               "table spacing per axis (default: the test's, or its smallest gap)"},
              {"--wrap", nullptr, nullptr, nullptr, nullptr,
               "rotary table spanning exactly 360° wraps around"}},
-            ImageOptions()}),
+            ImageOptions(),
+            BoardFileOptions()}),
       RunBuildAxis,
       PositioningFileNotes()};
   return kCommand;

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "board_fit.hpp"
 #include "build_options.hpp"
 #include "commands.hpp"
 #include "option_groups.hpp"
@@ -26,17 +27,23 @@ Expected<Output> RunBuildGrid(Args& args, Context& ctx) {
   image::ImageRequest req;
   VOLCOMP_TRY_ASSIGN(req.axes, ParseAxisResolutions(args, names));
   VOLCOMP_TRY(ParseImageOptions(args, &req));
+  VOLCOMP_TRY_ASSIGN(const std::optional<BoardFileCheck> board, ParseBoardFileCheck(args));
   VOLCOMP_TRY(args.Finish());
 
   VOLCOMP_TRY_ASSIGN(const tools::CsvTable csv, tools::CsvTable::ReadFile(csv_path));
   VOLCOMP_TRY_ASSIGN(req.grid, builders::NodeGridFromCsv(csv, req.axes));
   req.info.emplace("source", csv_path);
   VOLCOMP_TRY_ASSIGN(const std::vector<uint8_t> image, image::BuildImage(req));
+  Output output;
+  if (board) {
+    JsonValue check;
+    VOLCOMP_TRY(CheckImageAgainstBoardFile(*board, image, &output.warnings, &check));
+  }
   VOLCOMP_TRY(tools::WriteFileBytes(out_path, image));
   const auto& lattice = req.grid->lattice;
   ctx.err << "wrote " << out_path << ": " << image.size() << " bytes, " << lattice[0].nodes << "x"
           << lattice[1].nodes << "x" << lattice[2].nodes << " nodes\n";
-  return Output{};
+  return output;
 }
 
 }  // namespace
@@ -49,7 +56,8 @@ const Command& BuildGridCommand() {
              {"--output", "-o", "IMAGE", nullptr, nullptr, "image file to write (required)"},
              {"--axes", nullptr, "X,Y,Z", nullptr, "X,Y,Z", "the three grid axes"}},
             ResolutionOptions(),
-            ImageOptions()}),
+            ImageOptions(),
+            BoardFileOptions()}),
       RunBuildGrid};
   return kCommand;
 }

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "board_fit.hpp"
 #include "commands.hpp"
 #include "option_groups.hpp"
 #include "volcomp/image/image_join.hpp"
@@ -41,6 +42,7 @@ Expected<Output> RunBuildImage(Args& args, Context&) {
     if (eq == std::string::npos || eq == 0) return UsageFailure("--info takes KEY=VALUE");
     options.info[kv.substr(0, eq)] = kv.substr(eq + 1);
   }
+  VOLCOMP_TRY_ASSIGN(const std::optional<BoardFileCheck> board, ParseBoardFileCheck(args));
   VOLCOMP_TRY(args.Finish());
   if (id) {
     if (*id < 1 || *id > 0xFFFFFFFFll) {
@@ -55,6 +57,12 @@ Expected<Output> RunBuildImage(Args& args, Context&) {
   VOLCOMP_TRY_ASSIGN(const image::LoadedImage axis, image::ReadImageFile(axis_path));
   VOLCOMP_TRY_ASSIGN(const image::JoinedImage joined,
                      image::JoinImages({grid_path, &grid}, {axis_path, &axis}, options));
+  Output output;
+  output.warnings = joined.warnings;
+  JsonValue board_check;
+  if (board) {
+    VOLCOMP_TRY(CheckImageAgainstBoardFile(*board, joined.bytes, &output.warnings, &board_check));
+  }
   VOLCOMP_TRY(tools::WriteFileBytes(out_path, joined.bytes));
   VOLCOMP_TRY_ASSIGN(const image::LoadedImage result,
                      image::LoadedImage::FromBytes(joined.bytes, out_path));
@@ -63,8 +71,6 @@ Expected<Output> RunBuildImage(Args& args, Context&) {
   for (uint8_t i = 0; i < v.axis1d_count; ++i) {
     names.Push(std::string(1, v.axes[v.axis1d[i].axis].name));
   }
-  Output output;
-  output.warnings = joined.warnings;
   output.data = JsonValue::Object();
   output.data.Set("image", out_path)
       .Set("bytes", uint64_t{joined.bytes.size()})
@@ -73,6 +79,7 @@ Expected<Output> RunBuildImage(Args& args, Context&) {
       .Set("grid_image", grid_path)
       .Set("axis_image", axis_path)
       .Set("axis1d_axes", std::move(names));
+  if (board) output.data.Set("board_check", std::move(board_check));
   output.text = BuildImageText;
   return output;
 }
@@ -84,16 +91,18 @@ const Command& BuildImageCommand() {
       "build image",
       "join a GRID3 image and an AXIS1D image (same axes and units per step) into one",
       "",
-      {{"--grid", nullptr, "IMAGE", nullptr, nullptr,
-        "image with the GRID3 (build grid, build model, ...) (required)"},
-       {"--axis", nullptr, "IMAGE", nullptr, nullptr,
-        "image with the AXIS1D tables (build axis) (required)"},
-       {"--output", "-o", "IMAGE", nullptr, nullptr, "image file to write (required)"},
-       {"--table-id", nullptr, "N", nullptr, nullptr,
-        "id of the joined image, 1..4294967295 (default: the parts' id, which must agree)"},
-       {"--info", nullptr, "KEY=VALUE", nullptr, nullptr,
-        "text for the image's INFO section (machine, operator, ...)", true},
-       {"--json", nullptr, nullptr, nullptr, nullptr, "machine-readable build report on stdout"}},
+      Join({{{"--grid", nullptr, "IMAGE", nullptr, nullptr,
+              "image with the GRID3 (build grid, build model, ...) (required)"},
+             {"--axis", nullptr, "IMAGE", nullptr, nullptr,
+              "image with the AXIS1D tables (build axis) (required)"},
+             {"--output", "-o", "IMAGE", nullptr, nullptr, "image file to write (required)"},
+             {"--table-id", nullptr, "N", nullptr, nullptr,
+              "id of the joined image, 1..4294967295 (default: the parts' id, which must agree)"},
+             {"--info", nullptr, "KEY=VALUE", nullptr, nullptr,
+              "text for the image's INFO section (machine, operator, ...)", true},
+             {"--json", nullptr, nullptr, nullptr, nullptr,
+              "machine-readable build report on stdout"}},
+            BoardFileOptions()}),
       RunBuildImage,
       "Every axis of the AXIS1D image must be an axis of the GRID3 image with the same kind and\n"
       "units per step; the joined image keeps the GRID3 image's axes. The tables are copied with\n"

@@ -138,9 +138,14 @@ Expected<Output> RunGridBuild(const GridCommand& command,
   const Expected<builders::GridImage> img =
       builders::BuildGridImage(command.grid, command.request, source);
   if (!img.ok()) return BuildFailure(img.error());
-  VOLCOMP_TRY(tools::WriteFileBytes(command.output, img->bytes));
   Output output;
+  JsonValue board;
+  if (command.board) {
+    VOLCOMP_TRY(CheckImageAgainstBoardFile(*command.board, img->bytes, &output.warnings, &board));
+  }
+  VOLCOMP_TRY(tools::WriteFileBytes(command.output, img->bytes));
   output.data = ReportData(command, *img, source);
+  if (command.board) output.data.Set("board_check", std::move(board));
   output.text = ReportText;
   return output;
 }

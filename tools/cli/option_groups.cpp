@@ -45,6 +45,19 @@ const Options& ImageOptions() {
   };
   return kOptions;
 }
+const Options& BoardFileOptions() {
+  static const Options kOptions = {
+      {"--board", nullptr, "FILE", nullptr, nullptr,
+       "check the image against the board's settings file (`config save`) before writing it: "
+       "axes and units per step, clamp and rate limit, the home positions inside the lattice"},
+      {"--bank-bytes", nullptr, "N", "bytes", nullptr,
+       "with --board: the board's table bank size (0x2108, `volcomp status` shows it): refuse a "
+       "larger image"},
+      {"--allow-clamp", nullptr, nullptr, nullptr, nullptr,
+       "with --board: write an image the board would clamp or rate-limit (warned)"},
+  };
+  return kOptions;
+}
 const Options& GridOptions() {
   static const Options kOptions = Join({
       {{"--output", "-o", "IMAGE", nullptr, nullptr, "image file to write (required)"}},
@@ -58,6 +71,7 @@ const Options& GridOptions() {
        {"--max-correction-um", nullptr, "B", "µm", "1000",
         "refuse a node correction larger than B (catches wrong units)"}},
       ImageOptions(),
+      BoardFileOptions(),
       {{"--json", nullptr, nullptr, nullptr, nullptr, "machine-readable build report on stdout"}},
   });
   return kOptions;

@@ -18,6 +18,8 @@ const Options& CanOptions();
 const Options& ResolutionOptions();
 const Options& ImageOptions();
 const Options& GridOptions();
+/// `--board FILE`, `--bank-bytes N`, `--allow-clamp` of the builds (board_fit.hpp).
+const Options& BoardFileOptions();
 const Options& ModelOptions();
 const Options& JsonReport();
 const Options& PositioningFileOptions();

@@ -16,6 +16,7 @@
 #include "temp_paths.hpp"
 #include "volcomp/tools/csv.hpp"
 #include "volcomp/tools/exit_codes.hpp"
+#include "volcomp/tools/file_io.hpp"
 #include "volcomp/tools/json_value.hpp"
 
 namespace volcomp {
@@ -132,6 +133,36 @@ TEST(VolcompBuildImage, PartsThatDoNotBelongTogetherAreRefused) {
   EXPECT_EQ(r.code, tools::kExitUsage);
   r = RunCli({"build", "image", "--grid", "/nonexistent/g.vct", "--axis", "a.vct", "-o", "c.vct"});
   EXPECT_EQ(r.code, tools::kExitFailed);
+}
+
+// The joined image is the one the board gets: `--board FILE` checks it against the board's
+// settings file before it is written (as `build model` does), here the bank size: the joined
+// image's own size passes, one byte less is refused and nothing is written.
+TEST(VolcompBuildImage, BoardFileChecksTheJoinedImage) {
+  Parts p;
+  const std::string board = p.dir / "board.ini";
+  ASSERT_TRUE(tools::WriteTextFile(board,
+                                   "[board]\naxes = X Y Z\n[axis X]\n[axis Y]\n[axis Z]\n"
+                                   "units_per_step = 0.0005\n")
+                  .ok());
+  auto r = RunCli({"build", "image", "--grid", p.grid, "--axis", p.axis, "-o", p.joined, "--board",
+                   board, "--json"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  const tools::JsonValue d = ValueOf(tools::ParseJson(r.out, "stdout"));
+  ASSERT_NE(d.get("board_check"), nullptr) << r.out;
+  const int64_t size = d.get("bytes")->integer;
+  EXPECT_EQ(d.get("board_check")->get("image_bytes")->integer, size);
+  EXPECT_TRUE(d.get("board_check")->get("problems")->array.empty());
+  std::filesystem::remove(p.joined);
+  r = RunCli({"build", "image", "--grid", p.grid, "--axis", p.axis, "-o", p.joined, "--board",
+              board, "--bank-bytes", std::to_string(size - 1)});
+  EXPECT_EQ(r.code, tools::kExitFailed);
+  EXPECT_NE(r.err.find("the image of " + std::to_string(size) +
+                       " bytes does not fit the board's table bank of " + std::to_string(size - 1) +
+                       " bytes"),
+            std::string::npos)
+      << r.err;
+  EXPECT_FALSE(std::filesystem::exists(p.joined));
 }
 
 }  // namespace

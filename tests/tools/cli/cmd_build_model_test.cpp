@@ -2,6 +2,7 @@
 // (text and JSON from the same data), and bad input is refused with a clear message and exit code.
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -10,6 +11,7 @@
 #include "sample_path.hpp"
 #include "temp_paths.hpp"
 #include "volcomp/image/image_reader.hpp"
+#include "volcomp/tools/file_io.hpp"
 #include "volcomp/tools/json_value.hpp"
 
 namespace volcomp {
@@ -103,6 +105,73 @@ TEST(VolcompBuildModel, GridOptionsAreChecked) {
         "option --angle-scale: \"big\" is not a number");
   usage({"build", "model", "-o", TempPath("build_model_x.vctb")},
         "missing required option --model");
+}
+
+// `--board FILE` checks the image against the board's settings file before writing it. The S500
+// table asks up to 421.9 steps on X (TableFit's figure), its lattice spans X 0..400 mm; the board
+// file says X clamps at 20 steps and references at -5 mm: refused with nothing written, written
+// with --allow-clamp and both said (text and JSON alike); another units per step is a mismatch
+// that --allow-clamp does not pass; --bank-bytes below the image's size is refused.
+TEST(VolcompBuildModel, BoardFileChecksTheImageBeforeItIsWritten) {
+  const std::string board = TempPath("build_model_board.ini");
+  ASSERT_TRUE(tools::WriteTextFile(board,
+                                   "[board]\naxes = X Y Z\n[axis X]\nhome_position = -5000\n"
+                                   "max_correction = 20\n[axis Y]\n[axis Z]\n")
+                  .ok());
+  const std::string out = TempPath("build_model_board.vct");
+  std::filesystem::remove(out);
+  const std::vector<std::string> build = {
+      "build",   "model", "--model",         testing::SamplePath("model/s500.conf"),
+      "-o",      out,     "--resolution-nm", "X=1000,Y=1000,Z=1000",
+      "--board", board};
+  const auto refused = RunCli(build);
+  EXPECT_EQ(refused.code, 1) << refused.err;
+  EXPECT_NE(refused.err.find("the image does not fit the board of " + board +
+                             " (nothing written):\n  axis 1 (X): the table asks for up to 421.9 "
+                             "steps of correction, the board's max correction (0x2015:1) is 20 "
+                             "steps: it would be clamped"),
+            std::string::npos)
+      << refused.err;
+  EXPECT_FALSE(std::filesystem::exists(out));
+  const auto allowed = RunCli(Appended(build, {"--allow-clamp", "--json"}));
+  ASSERT_EQ(allowed.code, 0) << allowed.err;
+  EXPECT_TRUE(std::filesystem::exists(out));
+  const std::string home =
+      "[axis X]: the home position -5000 steps (-5.0000 mm), where the board references, lies "
+      "outside the table's X range 0.0000..400.0000 mm";
+  EXPECT_NE(allowed.err.find("warning: axis 1 (X): the table asks for up to 421.9 steps"),
+            std::string::npos)
+      << allowed.err;
+  EXPECT_NE(allowed.err.find("warning: " + home), std::string::npos) << allowed.err;
+  const tools::JsonValue d = ValueOf(tools::ParseJson(allowed.out, "stdout"));
+  const tools::JsonValue* check = d.get("board_check");
+  ASSERT_NE(check, nullptr) << allowed.out;
+  EXPECT_EQ(check->get("file")->string, board);
+  EXPECT_TRUE(check->get("problems")->array.empty());
+  ASSERT_EQ(check->get("warnings")->array.size(), 2u);
+  EXPECT_EQ(check->get("warnings")->array[1].string.rfind(home, 0), 0u);
+  EXPECT_EQ(check->get("image_bytes")->integer,
+            static_cast<int64_t>(std::filesystem::file_size(out)));
+  const auto small = RunCli(Appended(build, {"--allow-clamp", "--bank-bytes", "1000"}));
+  EXPECT_EQ(small.code, 1);
+  EXPECT_NE(small.err.find("does not fit the board's table bank of 1000 bytes (--bank-bytes)"),
+            std::string::npos)
+      << small.err;
+  ASSERT_TRUE(tools::WriteTextFile(board,
+                                   "[board]\naxes = X Y Z\n[axis X]\nunits_per_step = 0.0005\n"
+                                   "[axis Y]\n[axis Z]\n")
+                  .ok());
+  const auto other = RunCli(Appended(build, {"--allow-clamp"}));
+  EXPECT_EQ(other.code, 1);
+  EXPECT_NE(other.err.find("axis 1 (X): the table was built for 1000000 e-9 units per step, the "
+                           "board runs 500000 (0x2012:1)"),
+            std::string::npos)
+      << other.err;
+  const auto usage =
+      RunCli({"build", "model", "--model", testing::SamplePath("model/s500.conf"), "-o", out,
+              "--resolution-nm", "X=1000,Y=1000,Z=1000", "--allow-clamp"});
+  EXPECT_EQ(usage.code, 2);
+  EXPECT_NE(usage.err.find("--bank-bytes and --allow-clamp need --board FILE"), std::string::npos);
 }
 
 TEST(VolcompBuildModel, AModelFileThatCannotBeReadIsAFailure) {
