@@ -12,8 +12,10 @@
 namespace volcomp::sim {
 namespace {
 
-std::string WriteProgram() {
-  const std::string path = testing::TempPath("cmd_run.ngc");
+// The program file of one test case (its own name: the cases run in parallel processes, and a
+// case rewriting a file another one is reading made that one fail).
+std::string WriteProgram(const std::string& name) {
+  const std::string path = testing::TempPath(name);
   std::ofstream f(path);
   f << "G21 G90 G17\nG0 X100 Y100 Z100\nG1 X150 F6000\nG2 X150 Y100 I-10 J0\nG4 P0.05\nM2\n";
   return path;
@@ -27,7 +29,7 @@ double After(const std::string& text, const std::string& label) {
 }
 
 TEST(SimRunCommand, TheJsonHoldsEveryFigureTheTextPrints) {
-  const std::string program = WriteProgram();
+  const std::string program = WriteProgram("cmd_run_json.ngc");
   const SimRun text = Sim({"run", program});
   ASSERT_EQ(text.code, 0) << text.err;
   const SimRun json = Sim({"run", program, "--json"});
@@ -64,18 +66,19 @@ TEST(SimRunCommand, TheJsonHoldsEveryFigureTheTextPrints) {
 }
 
 TEST(SimRunCommand, RefusesWhatItCannotRun) {
+  const std::string program = WriteProgram("cmd_run_refusals.ngc");
   const SimRun none = Sim({"run"});
   EXPECT_EQ(none.code, 2);
   EXPECT_EQ(none.err, "volcomp-sim run: give one program file (PROGRAM.ngc)\n");
-  const SimRun machine = Sim({"run", WriteProgram(), "--machine", "new"});
+  const SimRun machine = Sim({"run", program, "--machine", "new"});
   EXPECT_EQ(machine.code, 2);
   EXPECT_EQ(machine.err, "volcomp-sim run: --machine must be ideal or worn\n");
   const std::string ini = testing::TempPath("cmd_run_bad.ini");
   std::ofstream(ini) << "[axis X]\n[axis Y]\nmax_rate = fast\n[axis Z]\n";
-  const SimRun settings = Sim({"run", WriteProgram(), "--settings", ini});
+  const SimRun settings = Sim({"run", program, "--settings", ini});
   EXPECT_EQ(settings.code, 1);
   EXPECT_NE(settings.err.find("cmd_run_bad.ini:3:"), std::string::npos) << settings.err;
-  const SimRun ballbar = Sim({"run", WriteProgram(), "--ballbar", "1,2"});
+  const SimRun ballbar = Sim({"run", program, "--ballbar", "1,2"});
   EXPECT_EQ(ballbar.code, 2);
   EXPECT_EQ(ballbar.err, "volcomp-sim run: --ballbar needs the pivot as X,Y,Z (mm), not \"1,2\"\n");
   const SimRun missing = Sim({"run", testing::TempPath("no_such_program.ngc")});

@@ -56,7 +56,8 @@ std::string CircleProgram(int plane) {
 }
 
 TEST(SimProgramRun, OnAMachineWithoutErrorsTheToolFollowsArcsInEveryPlaneToTheStep) {
-  const std::string model = WriteZeroModel(testing::TempPath("program_run_zero"));
+  // Each test case its own folder: they run in parallel processes.
+  const std::string model = WriteZeroModel(testing::TempPath("program_run_zero_arcs"));
   for (int plane : {17, 18, 19}) {
     ProgramRunOptions o;
     o.program_name = "circle_g" + std::to_string(plane) + ".ngc";
@@ -97,7 +98,7 @@ TEST(SimProgramRun, TheBallbarReadsEveryDegreeOfBothDirectionsOnTheMeasuredCircl
       "G21 G90 G17 G64\nG0 X200 Y90 Z100\nG3 X250 Y140 I0 J50 F2000\nG3 X250 Y140 I-50 J0\n"
       "G3 X200 Y190 I-50 J0\nG2 X250 Y140 I0 J-50\nG2 X250 Y140 I-50 J0\n"
       "G2 X200 Y90 I-50 J0\nM2\n";
-  o.model_spec = WriteZeroModel(testing::TempPath("program_run_zero"));
+  o.model_spec = WriteZeroModel(testing::TempPath("program_run_zero_ballbar"));
   o.ballbar_pivot_mm = Point3{200, 140, 100};
   std::ostringstream log;
   const ProgramRunResult r = testing::ValueOf(RunProgramOnMachine(o, log));
