@@ -293,7 +293,7 @@ TEST_F(CompensatorTest, RunWholeRefreshesEveryAxisInOneRun) {
   EXPECT_EQ(comp_.target_q8(2), 30 * 256);
   EXPECT_GT(comp_.applied_q32(0), 0);
   for (int i = 0; i < 20000; ++i) comp_.RunWhole(pos_);
-  EXPECT_EQ(comp_.applied_q32(1), int64_t{-20} << 32);
+  EXPECT_EQ(comp_.applied_q32(1), int64_t{-20} * (int64_t{1} << 32));
 }
 
 // The drive, not the command, decides: with the command standing still, a correction that falls
