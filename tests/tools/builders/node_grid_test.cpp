@@ -58,6 +58,13 @@ TEST(builders_node_grid, RefusalsNameTheLine) {
   EXPECT_EQ(error_of(head + "0,0,0,1,2,3\n"), "g.csv:1: axis X needs at least 2 node positions");
   EXPECT_EQ(error_of(head + "0,0,0,1,2,3\n0,0,0,1,2,3\n10,10,10,1,2,3\n"),
             "g.csv:1: lattice 2x2x2 needs 8 rows, found 3");
+  // Found by fuzz_csv: a position beyond the int32 step range was converted to int64 (UB).
+  EXPECT_EQ(error_of(head + "2.01111e+38,0,0,1,2,3\n"),
+            "g.csv:2: column \"x_mm\": 2.01111e+38 is beyond the lattice's step range (at most "
+            "2147483647 steps from 0)");
+  EXPECT_EQ(error_of("x_steps,y_mm,z_mm,dx_um,dy_um,dz_um\n-9000000000000000000,0,0,1,2,3\n"),
+            "g.csv:2: column \"x_steps\": -9000000000000000000 is beyond the lattice's step range "
+            "(at most 2147483647 steps from 0)");
 }
 
 }  // namespace

@@ -146,6 +146,24 @@ TEST(Csv, AHugeFieldIsReadWithoutRecursion) {
   EXPECT_EQ(p.preamble()[0].value, "v");
 }
 
+// Issue 27 item 6: quote characters inside an unquoted field and very wide headers were
+// quadratic (a copy of the field per quote, every column name compared with every other).
+TEST(Csv, QuotesAndWideHeadersAreReadInOnePass) {
+  const std::string word(50000, 'a'), quotes(50000, '"');
+  const CsvTable q = Parse("name,v\n" + word + quotes + ",1\n");
+  EXPECT_EQ(ValueOf(q.rows()[0].Text("name")), word + quotes);  // kept as written
+  const CsvTable after = Parse("name,v\r\n\"ab\"cd,1\r\nx,\"2\"\r\n");
+  EXPECT_EQ(ValueOf(after.rows()[0].Text("name")), "abcd");
+  EXPECT_EQ(ValueOf(after.rows()[1].Text("v")), "2");  // no CR kept from a CRLF line
+  EXPECT_DOUBLE_EQ(Num(after.rows()[1], "v"), 2);
+
+  std::string header;
+  for (int i = 0; i < 20000; ++i) header += "c" + std::to_string(i) + ",";
+  EXPECT_NE(ErrorOf(header + "c17,c5\n").find("column \"c17\" appears twice"), std::string::npos);
+  EXPECT_NE(ErrorOf("a,b,b,a\n").find("column \"b\" appears twice"), std::string::npos);
+  EXPECT_EQ(Parse(header + "last\n").header().size(), 20001u);
+}
+
 }  // namespace
 }  // namespace volcomp::tools
 

@@ -16,13 +16,26 @@ using image::AxisDef;
 using tools::CsvRow;
 using tools::CsvTable;
 
+// A lattice position is an int32 step count (the image's origin_steps): a value beyond it is
+// refused where it is read, before any arithmetic on it.
+Expected<int64_t> WithinStepRange(const CsvTable& csv,
+                                  const CsvRow& row,
+                                  const std::string& column,
+                                  double steps) {
+  if (std::fabs(steps) <= INT32_MAX) return static_cast<int64_t>(steps);
+  VOLCOMP_TRY_ASSIGN(const std::string text, row.Text(column));
+  return Fail(csv.LineFailure(row.line(), "column \"" + column + "\": " + text +
+                                              " is beyond the lattice's step range (at most " +
+                                              std::to_string(INT32_MAX) + " steps from 0)"));
+}
+
 // Reads a position column (mm/deg or steps) of `row` as whole steps.
 Expected<int64_t> PositionSteps(const CsvTable& csv, const CsvRow& row, const AxisDef& axis) {
   const std::string base = image::ColumnName(axis.name);
   const std::string unit_col = base + (axis.kind == table::AxisKind::kRotary ? "_deg" : "_mm");
   if (csv.find(base + "_steps")) {
     VOLCOMP_TRY_ASSIGN(const long long steps, row.Integer(base + "_steps"));
-    return static_cast<int64_t>(steps);
+    return WithinStepRange(csv, row, base + "_steps", static_cast<double>(steps));
   }
   VOLCOMP_TRY_ASSIGN(const double v, row.Number(unit_col));
   const double steps = v / axis.units_per_step();
@@ -33,7 +46,7 @@ Expected<int64_t> PositionSteps(const CsvTable& csv, const CsvRow& row, const Ax
         row.line(), "column \"" + unit_col + "\": " + text + " is not a whole number of steps (" +
                         std::to_string(axis.units_per_step()) + " per step)"));
   }
-  return static_cast<int64_t>(rounded);
+  return WithinStepRange(csv, row, unit_col, rounded);
 }
 
 Expected<double> CorrectionSteps(const CsvTable& csv, const CsvRow& row, const AxisDef& axis) {

@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
+#include <string_view>
 
 namespace volcomp::tools {
 namespace {
@@ -18,15 +19,20 @@ bool IsDigit(char c) { return c >= '0' && c <= '9'; }
 bool IsAlpha(char c) { return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z'); }
 bool IsWordChar(char c) { return IsAlpha(c) || IsDigit(c) || c == '_'; }
 
-std::string Trim(const std::string& s) {
+bool IsPadding(char c) { return c == ' ' || c == '\t' || c == '\r'; }
+
+// The field without its leading blanks and trailing blanks or CR (a view into `s`).
+std::string_view Trimmed(std::string_view s) {
   std::size_t b = 0, e = s.size();
   while (b < e && (s[b] == ' ' || s[b] == '\t')) ++b;
-  while (e > b && (s[e - 1] == ' ' || s[e - 1] == '\t' || s[e - 1] == '\r')) --e;
+  while (e > b && IsPadding(s[e - 1])) --e;
   return s.substr(b, e - b);
 }
 
-bool IsSkippable(const std::string& line) {
-  const std::string t = Trim(line);
+std::string Trim(const std::string& s) { return std::string(Trimmed(s)); }
+
+bool IsSkippable(std::string_view line) {
+  const std::string_view t = Trimmed(line);
   return t.empty() || t[0] == '#';
 }
 
@@ -34,43 +40,75 @@ bool AllEmpty(const std::vector<std::string>& fields) {
   return std::all_of(fields.begin(), fields.end(), [](const std::string& f) { return f.empty(); });
 }
 
-char DetectSeparator(const std::string& header) {
-  if (header.find(',') != std::string::npos) return ',';
-  if (header.find(';') != std::string::npos) return ';';
-  if (header.find('\t') != std::string::npos) return '\t';
+char DetectSeparator(std::string_view header) {
+  if (header.find(',') != std::string_view::npos) return ',';
+  if (header.find(';') != std::string_view::npos) return ';';
+  if (header.find('\t') != std::string_view::npos) return '\t';
   return ',';
 }
 
-// Splits one line; returns false on an unterminated quote.
-bool SplitLine(const std::string& line, char sep, std::vector<std::string>* out) {
-  out->clear();
-  std::string field;
-  bool quoted = false, was_quoted = false;
-  for (std::size_t i = 0; i < line.size(); ++i) {
-    const char c = line[i];
-    if (quoted) {
-      if (c == '"' && i + 1 < line.size() && line[i + 1] == '"') {
-        field += '"';
-        ++i;
-      } else if (c == '"') {
-        quoted = false;
-      } else {
-        field += c;
+// Splits one line into `out` (reusing its strings); returns false on an unterminated quote.
+// One pass over the line: an unquoted field is a trimmed range of it, a quoted one is built from
+// the ranges between its doubled quotes; a quote opens a field only where nothing but blanks
+// precedes it in the field.
+bool SplitLine(std::string_view line, char sep, std::vector<std::string>* out) {
+  std::size_t count = 0;
+  auto next_field = [&]() -> std::string& {
+    if (count == out->size()) out->emplace_back();
+    std::string& f = (*out)[count++];
+    f.clear();
+    return f;
+  };
+  std::size_t i = 0;
+  const std::size_t n = line.size();
+  while (true) {
+    std::size_t b = i;
+    while (b < n && (line[b] == ' ' || line[b] == '\t')) ++b;
+    if (b < n && line[b] == '"') {
+      std::string& f = next_field();
+      std::size_t j = b + 1;
+      while (true) {
+        const std::size_t q = line.find('"', j);
+        if (q == std::string_view::npos) return false;
+        f.append(line.data() + j, q - j);
+        if (q + 1 < n && line[q + 1] == '"') {
+          f += '"';
+          j = q + 2;
+        } else {
+          j = q + 1;
+          break;
+        }
       }
-    } else if (c == '"' && Trim(field).empty()) {
-      quoted = was_quoted = true;
-      field.clear();
-    } else if (c == sep) {
-      out->push_back(was_quoted ? field : Trim(field));
-      field.clear();
-      was_quoted = false;
-    } else {
-      field += c;
+      // After the closing quote, text up to the separator belongs to the field as written.
+      const std::size_t s = line.find(sep, j);
+      const std::size_t end = s == std::string_view::npos ? n : s;
+      f.append(line.data() + j, end - j);
+      if (s == std::string_view::npos) break;
+      i = s + 1;
+      continue;
     }
+    const std::size_t s = line.find(sep, i);
+    const std::size_t end = s == std::string_view::npos ? n : s;
+    next_field().assign(Trimmed(line.substr(i, end - i)));
+    if (s == std::string_view::npos) break;
+    i = s + 1;
   }
-  if (quoted) return false;
-  out->push_back(was_quoted ? field : Trim(field));
+  out->resize(count);
   return true;
+}
+
+// The first name that appears again later in `names` (the earliest second occurrence), or null.
+// Sorted indices, so a header of thousands of columns costs n log n, not n².
+const std::string* FirstRepeated(const std::vector<std::string>& names) {
+  std::vector<std::size_t> order(names.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::size_t a, std::size_t b) { return names[a] < names[b]; });
+  std::size_t first_second = names.size();
+  for (std::size_t k = 1; k < order.size(); ++k) {
+    if (names[order[k]] == names[order[k - 1]]) first_second = std::min(first_second, order[k]);
+  }
+  return first_second < names.size() ? &names[first_second] : nullptr;
 }
 
 // A decimal number with `mark` as its decimal separator: \s*[+-]?(\d+M\d*|M\d+)([eE][+-]?\d+)?\s*
@@ -103,7 +141,7 @@ bool IsDecimalPointNumber(const std::string& field) { return IsDecimalNumber(fie
 
 // `# key: value` before the header: key is a letter, then word characters, then up to four more
 // space-separated words; blanks around key and value are dropped.
-std::optional<CsvPreambleEntry> PreambleEntry(const std::string& line, std::size_t line_no) {
+std::optional<CsvPreambleEntry> PreambleEntry(std::string_view line, std::size_t line_no) {
   std::size_t i = 0;
   const std::size_t n = line.size();
   while (i < n && IsBlank(line[i])) ++i;
@@ -125,8 +163,8 @@ std::optional<CsvPreambleEntry> PreambleEntry(const std::string& line, std::size
   std::size_t e = n;
   while (i < e && IsBlank(line[i])) ++i;
   while (e > i && IsBlank(line[e - 1])) --e;
-  return CsvPreambleEntry{line.substr(key_begin, key_end - key_begin), line.substr(i, e - i),
-                          line_no};
+  return CsvPreambleEntry{std::string(line.substr(key_begin, key_end - key_begin)),
+                          std::string(line.substr(i, e - i)), line_no};
 }
 
 // Decides the decimal mark of a ';' or TAB separated file from its numbers.
@@ -264,18 +302,27 @@ std::string CsvFields::Text(const std::string& column) {
 }
 
 Expected<CsvTable> CsvTable::Read(std::istream& in, const std::string& source) {
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (in.bad()) return Fail(Error::kIoError, source + ": read error");
+  return ReadString(text.str(), source);
+}
+
+Expected<CsvTable> CsvTable::ReadString(const std::string& text, const std::string& source) {
   auto meta = std::make_shared<CsvMeta>();
   meta->source = source;
   CsvTable t;
-  std::string line;
   std::size_t line_no = 0;
   char sep = ',';
   std::vector<std::string> fields;
-  while (std::getline(in, line)) {
+  std::string_view rest(text);
+  if (rest.substr(0, 3) == "\xEF\xBB\xBF") rest.remove_prefix(3);  // UTF-8 byte-order mark
+  while (!rest.empty()) {
+    const std::size_t nl = rest.find('\n');
+    std::string_view line = rest.substr(0, nl);
+    rest.remove_prefix(nl == std::string_view::npos ? rest.size() : nl + 1);
+    if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
     ++line_no;
-    if (line_no == 1 && line.size() >= 3 && line.compare(0, 3, "\xEF\xBB\xBF") == 0) {
-      line.erase(0, 3);  // UTF-8 byte-order mark
-    }
     if (IsSkippable(line)) {
       if (meta->header.empty()) {
         if (auto e = PreambleEntry(line, line_no)) meta->preamble.push_back(*e);
@@ -301,16 +348,12 @@ Expected<CsvTable> CsvTable::Read(std::istream& in, const std::string& source) {
                          "\" looks like a title row (one cell, the rest of the row empty), not "
                          "the header: delete it or start it with #"));
       }
-      for (std::size_t i = 0; i < meta->header.size(); ++i) {
-        if (meta->header[i].empty()) {
-          return Fail(meta->LineFailure(line_no, "empty column name in header"));
-        }
-        for (std::size_t j = 0; j < i; ++j) {
-          if (meta->header[i] == meta->header[j]) {
-            return Fail(meta->LineFailure(
-                line_no, "column \"" + meta->header[i] + "\" appears twice in header"));
-          }
-        }
+      for (const std::string& name : meta->header) {
+        if (name.empty()) return Fail(meta->LineFailure(line_no, "empty column name in header"));
+      }
+      if (const std::string* twice = FirstRepeated(meta->header)) {
+        return Fail(
+            meta->LineFailure(line_no, "column \"" + *twice + "\" appears twice in header"));
       }
       continue;
     }
@@ -324,13 +367,11 @@ Expected<CsvTable> CsvTable::Read(std::istream& in, const std::string& source) {
                                                  " fields, found " +
                                                  std::to_string(fields.size())));
     }
-    CsvRow row;
+    CsvRow& row = t.rows_.emplace_back();
     row.meta_ = meta;
     row.line_ = line_no;
     row.fields_ = fields;
-    t.rows_.push_back(std::move(row));
   }
-  if (in.bad()) return Fail(Error::kIoError, source + ": read error");
   if (meta->header.empty()) {
     return Fail(Error::kInputInvalid, source + ": no header line (empty input)");
   }
@@ -343,11 +384,6 @@ Expected<CsvTable> CsvTable::ReadFile(const std::string& path) {
   std::ifstream f(path, std::ios::binary);
   if (!f) return Fail(Error::kIoError, path + ": cannot open");
   return Read(f, path);
-}
-
-Expected<CsvTable> CsvTable::ReadString(const std::string& text, const std::string& source) {
-  std::istringstream s(text);
-  return Read(s, source);
 }
 
 std::optional<std::size_t> CsvMeta::find(const std::string& column) const {
