@@ -194,6 +194,7 @@ def settled_snapshot(still_s, deadline):
 
 
 def run_program(path, rows):
+    """Runs one program, taking the values at each dwell; returns its figures for the summary."""
     C.mode(linuxcnc.MODE_AUTO)
     C.wait_complete()
     C.program_open(path)
@@ -256,6 +257,8 @@ def run_program(path, rows):
         raise RuntimeError("%s: %d stops seen for %d dwells (lines seen while dwelling: %s; the "
                            "program's dwells: %s)" % (name, stop, len(dwell_lines), seen_lines,
                                                      dwell_lines))
+    return {"program": name, "stops": stop, "wall_s": round(time.time() - t0, 3),
+            "max_poll_gap_s": round(max_poll_gap, 4)}
 
 
 def raise_rtapi_priority():
@@ -326,7 +329,7 @@ def main():
             hal.set_p("minmax.%d.reset" % j, "0")
         t0 = time.time()
         for p in programs:
-            run_program(p, rows)
+            summary.setdefault("programs", []).append(run_program(p, rows))
         summary["program_wall_s"] = time.time() - t0
         summary["ok"] = True
     except Exception as e:  # reported in the summary; the test fails on it
