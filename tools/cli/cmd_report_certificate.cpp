@@ -44,8 +44,9 @@ Expected<m::CertificateTable> TableFromStatus(const std::string& path) {
   if (present == nullptr || id == nullptr || crc == nullptr || !id->is_number() ||
       !crc->is_string()) {
     return Fail(Error::kInputInvalid,
-                path + ": not the output of `volcomp status --json` (no active_table.present, "
-                       ".id and .crc32)");
+                path +
+                    ": not the output of `volcomp status --json` (no active_table.present, "
+                    ".id and .crc32)");
   }
   if (!present->boolean) {
     return Fail(Error::kInputInvalid, path + ": the board had no active table when it was saved");
@@ -56,8 +57,15 @@ Expected<m::CertificateTable> TableFromStatus(const std::string& path) {
     return Fail(Error::kInputInvalid, path + ": active_table.crc32 '" + crc->string +
                                           "' is not a 32-bit hexadecimal value");
   }
-  return m::CertificateTable{path, "status", static_cast<uint32_t>(id->integer),
-                             static_cast<uint32_t>(value)};
+  if (!id->is_int || id->integer < 0 || id->integer > 0xFFFFFFFF) {
+    return Fail(Error::kInputInvalid, path + ": active_table.id is not a 32-bit table id");
+  }
+  m::CertificateTable table;
+  table.source = path;
+  table.origin = "status";
+  table.table_id = static_cast<uint32_t>(id->integer);
+  table.crc32 = static_cast<uint32_t>(value);
+  return table;
 }
 
 Expected<m::CertificateTable> Table(const std::optional<std::string>& image_path,
@@ -65,19 +73,22 @@ Expected<m::CertificateTable> Table(const std::optional<std::string>& image_path
   m::CertificateTable from_image, from_status;
   if (image_path) {
     VOLCOMP_TRY_ASSIGN(const image::LoadedImage img, image::ReadImageFile(*image_path));
-    from_image = {*image_path, "image", img.view().table_id, img.view().crc32};
+    from_image.source = *image_path;
+    from_image.origin = "image";
+    from_image.table_id = img.view().table_id;
+    from_image.crc32 = img.view().crc32;
   }
   if (status_path) {
     VOLCOMP_TRY_ASSIGN(from_status, TableFromStatus(*status_path));
   }
   if (image_path && status_path &&
       (from_image.table_id != from_status.table_id || from_image.crc32 != from_status.crc32)) {
-    return Fail(Error::kInputInvalid,
-                "the board's active table in " + *status_path + " (id " +
-                    std::to_string(*from_status.table_id) + ", CRC-32 " +
-                    tools::Hex32(*from_status.crc32) + ") is not " + *image_path + " (id " +
-                    std::to_string(*from_image.table_id) + ", CRC-32 " +
-                    tools::Hex32(*from_image.crc32) + ")");
+    return Fail(Error::kInputInvalid, "the board's active table in " + *status_path + " (id " +
+                                          std::to_string(*from_status.table_id) + ", CRC-32 " +
+                                          tools::Hex32(*from_status.crc32) + ") is not " +
+                                          *image_path + " (id " +
+                                          std::to_string(*from_image.table_id) + ", CRC-32 " +
+                                          tools::Hex32(*from_image.crc32) + ")");
   }
   if (image_path && status_path) from_status.same_as_image = *image_path;
   return status_path ? from_status : from_image;
@@ -135,7 +146,8 @@ const Command& ReportCertificateCommand() {
        {"--status", nullptr, "FILE", nullptr, nullptr,
         "a saved `volcomp status --json`: the board's active table id and CRC-32 (must match "
         "--table when both are given)"},
-       {"--date", nullptr, "YYYY-MM-DD", nullptr, nullptr, "the certificate's date (default: today)"},
+       {"--date", nullptr, "YYYY-MM-DD", nullptr, nullptr,
+        "the certificate's date (default: today)"},
        {"--json", nullptr, nullptr, nullptr, nullptr, "every figure and field as JSON on stdout"}},
       RunReportCertificate,
       "BEFORE and AFTER are report directories written by `evaluate ... --report DIR` (or single\n"

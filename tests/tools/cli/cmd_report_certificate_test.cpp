@@ -50,8 +50,8 @@ struct Results {
                         dir + when})
                     .code,
                 0);
-      EXPECT_EQ(RunCli({"evaluate", "circular", SamplePath("metrology/circular_xy.csv"),
-                        "--report", dir + when})
+      EXPECT_EQ(RunCli({"evaluate", "circular", SamplePath("metrology/circular_xy.csv"), "--report",
+                        dir + when})
                     .code,
                 0);
     }
@@ -67,9 +67,9 @@ TEST(ReportCertificate, FiguresTolerancesAndVerdicts) {
   // E_d's tolerance just below the figure: fail; H's far above: pass; G_b none: no verdict.
   Write(r.dir + "/info.ini", "[machine]\nserial = SN-1\n[tolerance]\niso230-6.E_d.body = " +
                                  std::to_string(e_d - 0.01) + "\niso230-4.H = 1000\n");
-  auto res = RunCli({"report", "certificate", r.dir + "/before", r.dir + "/after", "-o",
-                     r.dir + "/cert", "--info", r.dir + "/info.ini", "--date", "2026-02-28",
-                     "--json"});
+  auto res =
+      RunCli({"report", "certificate", r.dir + "/before", r.dir + "/after", "-o", r.dir + "/cert",
+              "--info", r.dir + "/info.ini", "--date", "2026-02-28", "--json"});
   ASSERT_EQ(res.code, 0) << res.err;
   const tools::JsonValue doc = Json(res.out);
   EXPECT_EQ(doc.get("date")->string, "2026-02-28");
@@ -113,8 +113,8 @@ TEST(ReportCertificate, FiguresTolerancesAndVerdicts) {
   EXPECT_EQ(html.find("<svg"), std::string::npos);  // no charts
 
   // Text: the verdict and the figure line.
-  res = RunCli({"report", "certificate", r.dir + "/before", r.dir + "/after", "-o",
-                r.dir + "/cert", "--info", r.dir + "/info.ini", "--date", "2026-02-28"});
+  res = RunCli({"report", "certificate", r.dir + "/before", r.dir + "/after", "-o", r.dir + "/cert",
+                "--info", r.dir + "/info.ini", "--date", "2026-02-28"});
   ASSERT_EQ(res.code, 0) << res.err;
   EXPECT_NE(res.out.find("verdict: fail (1 of 2 toleranced figures out of tolerance after)"),
             std::string::npos)
@@ -175,8 +175,9 @@ TEST(ReportCertificate, TableFromImageAndFromSavedStatus) {
   const tools::JsonValue image = Json(RunCli({"inspect", r.dir + "/t.vct", "--json"}).out);
   const std::string crc = image.get("crc32")->string;
   auto run = [&](std::vector<std::string> extra) {
-    std::vector<std::string> words = {"report", "certificate", r.dir + "/before", r.dir + "/after",
-                                      "-o", r.dir + "/cert", "--json"};
+    std::vector<std::string> words = {"report",         "certificate", r.dir + "/before",
+                                      r.dir + "/after", "-o",          r.dir + "/cert",
+                                      "--json"};
     words.insert(words.end(), extra.begin(), extra.end());
     return RunCli(words);
   };
@@ -214,8 +215,8 @@ TEST(ReportCertificate, TableFromImageAndFromSavedStatus) {
 TEST(ReportCertificate, BadInputRefused) {
   Results r;
   auto run = [&](std::vector<std::string> extra) {
-    std::vector<std::string> words = {"report", "certificate", r.dir + "/before", r.dir + "/after",
-                                      "-o", r.dir + "/cert"};
+    std::vector<std::string> words = {"report",         "certificate", r.dir + "/before",
+                                      r.dir + "/after", "-o",          r.dir + "/cert"};
     words.insert(words.end(), extra.begin(), extra.end());
     return RunCli(words);
   };
@@ -236,11 +237,11 @@ TEST(ReportCertificate, BadInputRefused) {
   // Results that do not pair: a diagonal before, only a circular test after.
   std::filesystem::create_directories(r.dir + "/other");
   std::filesystem::copy(r.dir + "/after/circular_circular_xy.json", r.dir + "/other/x.json");
-  res = RunCli({"report", "certificate", r.dir + "/before/diagonal_NPP_PNP_PPN_PPP_XY_PN_Z200_XY_PP_Z200.json",
+  res = RunCli({"report", "certificate",
+                r.dir + "/before/diagonal_NPP_PNP_PPN_PPP_XY_PN_Z200_XY_PP_Z200.json",
                 r.dir + "/other", "-o", r.dir + "/c2"});
   EXPECT_EQ(res.code, tools::kExitFailed);
-  EXPECT_NE(res.err.find("no result appears both before and after"), std::string::npos)
-      << res.err;
+  EXPECT_NE(res.err.find("no result appears both before and after"), std::string::npos) << res.err;
   EXPECT_FALSE(std::filesystem::exists(r.dir + "/c2/certificate.html"));
   res = RunCli({"report", "certificate", r.dir + "/before", "-o", r.dir + "/c3"});
   EXPECT_EQ(res.code, tools::kExitUsage);

@@ -25,25 +25,22 @@ struct FigureSpec {
 
 // Per compared table (by its title), the figures the certificate states, in page order.
 const std::vector<FigureSpec>& IsoPositioning() {
-  static const std::vector<FigureSpec> k = {
-      {"A", "iso230-2.A", "positioning accuracy"},
-      {"E", "iso230-2.E", "systematic positioning error"},
-      {"B", "iso230-2.B", "reversal value"},
-      {"M", "iso230-2.M", "range of mean positioning error"},
-      {"R", "iso230-2.R", "repeatability"}};
+  static const std::vector<FigureSpec> k = {{"A", "iso230-2.A", "positioning accuracy"},
+                                            {"E", "iso230-2.E", "systematic positioning error"},
+                                            {"B", "iso230-2.B", "reversal value"},
+                                            {"M", "iso230-2.M", "range of mean positioning error"},
+                                            {"R", "iso230-2.R", "repeatability"}};
   return k;
 }
 const std::vector<FigureSpec>& GostPositioning() {
-  static const std::vector<FigureSpec> k = {
-      {"A", "gost27843.A", "positioning accuracy"},
-      {"R_max", "gost27843.R_max", "repeatability, largest"},
-      {"B_max", "gost27843.B_max", "reversal, largest"}};
+  static const std::vector<FigureSpec> k = {{"A", "gost27843.A", "positioning accuracy"},
+                                            {"R_max", "gost27843.R_max", "repeatability, largest"},
+                                            {"B_max", "gost27843.B_max", "reversal, largest"}};
   return k;
 }
 const std::vector<FigureSpec>& Diagonal() {
-  static const std::vector<FigureSpec> k = {
-      {"E_d", "iso230-6.E_d", "diagonal displacement"},
-      {"B_d", "iso230-6.B_d", "diagonal reversal"}};
+  static const std::vector<FigureSpec> k = {{"E_d", "iso230-6.E_d", "diagonal displacement"},
+                                            {"B_d", "iso230-6.B_d", "diagonal reversal"}};
   return k;
 }
 const std::vector<FigureSpec>& Circular() {
@@ -299,7 +296,8 @@ JsonValue CertificateJson(const Certificate& c) {
   j.Set("uncertainty", kUncertaintyNotEvaluated);
   j.Set("toleranced", c.Toleranced());
   j.Set("failed_after", c.FailedAfter());
-  j.Set("verdict", c.Toleranced() == 0 ? JsonValue() : JsonValue(c.FailedAfter() == 0 ? "pass" : "fail"));
+  j.Set("verdict",
+        c.Toleranced() == 0 ? JsonValue() : JsonValue(c.FailedAfter() == 0 ? "pass" : "fail"));
   JsonValue warnings = JsonValue::Array();
   for (const std::string& w : c.warnings) warnings.Push(w);
   j.Set("warnings", std::move(warnings));
@@ -346,8 +344,8 @@ void WriteCertificateText(std::ostream& out, const JsonValue& c) {
   const JsonValue& v = json::At(c, "verdict");
   out << "verdict: "
       << (v.is_null() ? std::string("none (no tolerances given)")
-                      : v.string + " (" + std::to_string(json::Integer(c, "failed_after")) + " of " +
-                            std::to_string(json::Integer(c, "toleranced")) +
+                      : v.string + " (" + std::to_string(json::Integer(c, "failed_after")) +
+                            " of " + std::to_string(json::Integer(c, "toleranced")) +
                             " toleranced figures out of tolerance after)")
       << "; uncertainty " << json::Text(c, "uncertainty") << "\n";
 }

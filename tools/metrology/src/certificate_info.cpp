@@ -50,9 +50,9 @@ const std::vector<std::pair<std::string, std::vector<std::string>>>& Certificate
 
 const std::vector<std::string>& CertificateFigureIds() {
   static const std::vector<std::string> kIds = {
-      "iso230-2.A",      "iso230-2.E",     "iso230-2.B",     "iso230-2.M",   "iso230-2.R",
-      "gost27843.A",     "gost27843.R_max", "gost27843.B_max", "iso230-6.E_d", "iso230-6.B_d",
-      "iso230-4.G_b",    "iso230-4.G_cw",  "iso230-4.G_ccw", "iso230-4.H"};
+      "iso230-2.A",   "iso230-2.E",      "iso230-2.B",      "iso230-2.M",   "iso230-2.R",
+      "gost27843.A",  "gost27843.R_max", "gost27843.B_max", "iso230-6.E_d", "iso230-6.B_d",
+      "iso230-4.G_b", "iso230-4.G_cw",   "iso230-4.G_ccw",  "iso230-4.H"};
   return kIds;
 }
 
@@ -113,7 +113,8 @@ Expected<CertificateInfo> ParseCertificateInfo(const std::string& text, const st
     if (key.empty()) return fail("'" + line + "': no key before '='");
     if (section.empty()) return fail("key '" + key + "' before any [section]");
     for (const auto& [k, w] : seen) {
-      if (k == section + "." + key) return fail("key '" + key + "' given twice (first at " + w + ")");
+      if (k == section + "." + key)
+        return fail("key '" + key + "' given twice (first at " + w + ")");
     }
     seen.emplace_back(section + "." + key, where);
     if (section != "tolerance") {

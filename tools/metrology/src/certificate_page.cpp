@@ -41,9 +41,8 @@ std::string Cell(const std::string& text, const char* cls = nullptr) {
 
 // A field: its value, or an empty line to fill in by hand.
 std::string FieldRow(const std::string& label, const std::string& value) {
-  return "<tr><td>" + EscapeXml(label) + "</td>" + (value.empty() ? "<td class=\"fill\"></td>"
-                                                                   : Cell(value)) +
-         "</tr>\n";
+  return "<tr><td>" + EscapeXml(label) + "</td>" +
+         (value.empty() ? "<td class=\"fill\"></td>" : Cell(value)) + "</tr>\n";
 }
 
 std::string Verdict(const std::optional<bool>& pass) {
@@ -64,8 +63,9 @@ std::string Condition(const std::vector<std::pair<std::string, std::string>>& li
 // The conditions the table has no column for, as "key: value; ..." (the geometry lines the
 // diagonal templates carry and the program name stay in the JSON).
 std::string OtherConditions(const std::vector<std::pair<std::string, std::string>>& list) {
-  static const char* const kShown[] = {"axis",     "date", "instrument", "air temperature C",
-                                       "material temperature C", "operator", "program"};
+  static const char* const kShown[] = {
+      "axis",     "date",   "instrument", "air temperature C", "material temperature C",
+      "operator", "program"};
   std::string out;
   for (const auto& [k, v] : list) {
     if (std::find(std::begin(kShown), std::end(kShown), k) != std::end(kShown)) continue;
@@ -106,9 +106,8 @@ std::string ConditionRows(const std::vector<CertificateTest>& tests) {
   std::vector<std::pair<std::string, std::vector<std::string>>> rows;
   for (const CertificateTest& t : tests) {
     const auto cells = ConditionCells(t);
-    auto same = std::find_if(rows.begin(), rows.end(), [&](const auto& r) {
-      return r.second == cells;
-    });
+    auto same =
+        std::find_if(rows.begin(), rows.end(), [&](const auto& r) { return r.second == cells; });
     if (same != rows.end()) {
       same->first += ", " + t.label;
     } else {
@@ -152,9 +151,11 @@ std::string CertificateHtml(const Certificate& c) {
   h += "<h2>Compensation table</h2><table>\n";
   const bool has_table = c.table.table_id.has_value();
   h += "<tr><td>table id</td>" +
-       (has_table ? Cell(std::to_string(*c.table.table_id)) : std::string("<td class=\"fill\"></td>")) +
+       (has_table ? Cell(std::to_string(*c.table.table_id))
+                  : std::string("<td class=\"fill\"></td>")) +
        "<td>CRC-32</td>" +
-       (c.table.crc32 ? Cell(tools::Hex32(*c.table.crc32)) : std::string("<td class=\"fill\"></td>")) +
+       (c.table.crc32 ? Cell(tools::Hex32(*c.table.crc32))
+                      : std::string("<td class=\"fill\"></td>")) +
        "<td>read from</td>" +
        (c.table.source.empty()
             ? std::string("<td class=\"fill\"></td>")
