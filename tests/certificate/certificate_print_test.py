@@ -267,6 +267,9 @@ def main():
         check(str(image["table_id"]) in text and image["crc32"] in text,
               "PDF shows table id %d and CRC-32 %s" % (image["table_id"], image["crc32"]))
         check(DATE in text and ("volcomp " + version) in text, "PDF shows the date and version")
+        check("feed mm per min: 1000" in text and "dwell s: 2" in text and
+              "ballbar 100 mm" in text and "laser interferometer" in text,
+              "PDF shows the instruments and the programs' feed and dwell")
         check(len(re.findall(r"\bsignature\b", text)) == 2, "two signature lines")
         check(".csv" not in text, "titles say what was tested, not file names")
 
