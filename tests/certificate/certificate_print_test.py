@@ -270,6 +270,7 @@ def main():
         check("feed mm per min: 1000" in text and "dwell s: 2" in text and
               "ballbar 100 mm" in text and "laser interferometer" in text,
               "PDF shows the instruments and the programs' feed and dwell")
+        check("operator: N. N." in text and "operator: QA" in text, "PDF shows the operators")
         check(len(re.findall(r"\bsignature\b", text)) == 2, "two signature lines")
         check(".csv" not in text, "titles say what was tested, not file names")
 

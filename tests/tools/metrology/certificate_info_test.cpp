@@ -64,6 +64,15 @@ TEST(CertificateInfo, MistakesNameFileLineAndKey) {
   ExpectRefused("[tolerance]\niso230-2.A =\n", "info.ini:2: tolerance 'iso230-2.A' has no value");
 }
 
+// As a Windows editor saves it: a byte order mark and CRLF line ends.
+TEST(CertificateInfo, ByteOrderMarkAndCrLf) {
+  const auto info = ParseCertificateInfo(
+      "\xEF\xBB\xBF[machine]\r\nserial = 12\r\n[tolerance]\r\niso230-4.H = 3\r\n", "i");
+  ASSERT_TRUE(info.ok()) << info.error().message;
+  EXPECT_EQ(info->Field("machine", "serial"), "12");
+  EXPECT_EQ(info->Tolerance("iso230-4.H", "XY")->value, 3.0);
+}
+
 TEST(CertificateInfo, EveryFigureIdIsATolerance) {
   for (const std::string& id : CertificateFigureIds()) {
     const auto info = ParseCertificateInfo("[tolerance]\n" + id + ".XY = 1\n", "i");

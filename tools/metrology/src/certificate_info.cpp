@@ -79,7 +79,8 @@ Expected<CertificateInfo> ParseCertificateInfo(const std::string& text, const st
   info.source = source;
   std::string section;
   std::vector<std::pair<std::string, std::string>> seen;  // "section.key", where
-  std::size_t start = 0;
+  // A UTF-8 byte order mark (Windows editors write one) is not part of the first line.
+  std::size_t start = text.compare(0, 3, "\xEF\xBB\xBF") == 0 ? 3 : 0;
   int line_no = 0;
   auto fail = [&](const std::string& message) {
     return Fail(Error::kInputInvalid, source + ":" + std::to_string(line_no) + ": " + message);

@@ -64,8 +64,7 @@ std::string Condition(const std::vector<std::pair<std::string, std::string>>& li
 // diagonal templates carry and the program name stay in the JSON).
 std::string OtherConditions(const std::vector<std::pair<std::string, std::string>>& list) {
   static const char* const kShown[] = {
-      "axis",     "date",   "instrument", "air temperature C", "material temperature C",
-      "operator", "program"};
+      "axis", "date", "instrument", "air temperature C", "material temperature C", "program"};
   std::string out;
   for (const auto& [k, v] : list) {
     if (std::find(std::begin(kShown), std::end(kShown), k) != std::end(kShown)) continue;
