@@ -8,6 +8,8 @@
 #           (candump), user-mode-linux + kmod (real SocketCAN in a UML kernel)
 #   linuxcnc  LinuxCNC 2.9 (uspace: HAL and motion in POSIX non-realtime mode) and its development
 #           headers, for the HAL components and the LinuxCNC integration test (docs/linuxcnc.md)
+#   report  headless Chromium and poppler-utils (pdfinfo, pdftotext): the certificate's print test
+#           (`volcomp report certificate` printed to PDF, tests/certificate)
 # Installs only what is missing; needs root or sudo for that, and stops with a clear message
 # otherwise.
 set -euo pipefail
@@ -17,6 +19,7 @@ declare -A GROUPS_PKGS=(
   [can]="python3-can can-utils user-mode-linux kmod libgpiod-dev"
   [fuzz]="clang-14 libclang-rt-14-dev"
   [linuxcnc]="linuxcnc-uspace linuxcnc-uspace-dev python3"
+  [report]="chromium poppler-utils python3"
   [arm]="gcc-arm-none-eabi binutils-arm-none-eabi libnewlib-arm-none-eabi libstdc++-arm-none-eabi-newlib qemu-system-arm python3"
 )
 

@@ -17,6 +17,8 @@ scripts/check-format.sh
 # LinuxCNC before the host build: its headers decide whether the HAL components are built, and
 # the LinuxCNC integration test (label external) runs with the host tests.
 scripts/setup-deps.sh linuxcnc
+# Headless Chromium and poppler-utils: the certificate's print test (tests/certificate, external).
+scripts/setup-deps.sh report
 jobs=$(nproc 2>/dev/null || echo 2)
 
 run_preset() {

@@ -142,6 +142,14 @@ Outcome CheckProgramOutput(const ProgramOutputOptions& o, m::GcodeOptions* g) {
   return m::RefuseToOverwriteReadings(*o.targets_csv, o.force);
 }
 
+// The feed and dwell of the program, as test conditions of its readings template (they reach the
+// reports and the certificate through the preamble).
+std::vector<std::pair<std::string, std::string>> FeedAndDwell(const m::GcodeOptions& g,
+                                                              bool rotary) {
+  return {{rotary ? "feed deg per min" : "feed mm per min", FormatNumber(g.feed)},
+          {"dwell s", FormatNumber(g.dwell_s)}};
+}
+
 // The readings template to `path` ("-": standard output), refused when it holds readings.
 Outcome WriteTemplate(const std::string& text, const std::string& path, bool force, Context& ctx) {
   if (path == "-") return WriteTextArgument(text, path, ctx);
@@ -205,6 +213,7 @@ Expected<Output> RunProgramPositioning(Args& args, Context& ctx) {
                     (plan.rotary ? "arc-seconds" : "µm") +
                     ") and the test conditions below; rows follow the program's measured stops.";
     h.known = {{"axis", axis}, {"test", test}};
+    for (auto& kv : FeedAndDwell(g, plan.rotary)) h.known.push_back(std::move(kv));
     if (files.out != "-") h.known.emplace_back("program", files.out);
     const std::string header = std::string(plan.rotary ? "target_deg" : "target_mm") +
                                ",direction,run," +
@@ -314,6 +323,7 @@ Expected<Output> RunProgramDiagonal(Args& args, Context& ctx) {
         "(deviation along the diagonal = actual - target, in µm) and the test conditions below; "
         "target_mm is the distance from the diagonal's start corner.";
     h.omit = {"axis"};
+    h.known = FeedAndDwell(g, false);
     for (const auto& d : programs) {
       h.known.emplace_back("diagonal " + m::DiagonalFileToken(d.name), DiagonalTestLine(d, runs));
     }

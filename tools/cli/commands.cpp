@@ -29,6 +29,7 @@ const std::vector<const Command*>& Commands() {
       &ProgramDiagonalCommand(),
       &ProgramCircularCommand(),
       &ReportCompareCommand(),
+      &ReportCertificateCommand(),
       &BuildModelCommand(),
       &BuildTrackerCommand(),
       &BuildKmtppCommand(),

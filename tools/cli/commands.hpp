@@ -34,6 +34,7 @@ const Command& ProgramPositioningCommand();
 const Command& ProgramDiagonalCommand();
 const Command& ProgramCircularCommand();
 const Command& ReportCompareCommand();
+const Command& ReportCertificateCommand();
 const Command& BuildModelCommand();
 const Command& BuildTrackerCommand();
 const Command& BuildKmtppCommand();

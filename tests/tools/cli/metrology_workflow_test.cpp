@@ -165,6 +165,38 @@ TEST(MetrologyWorkflow, BoxGivesFourDiagonalsAndATemplateEvaluateReads) {
   EXPECT_NE(e.out.find("E_d = "), std::string::npos);
 }
 
+// The program's feed and dwell are test conditions of its template, so the reports (and the
+// certificate) state them.
+TEST(MetrologyWorkflow, FeedAndDwellAreConditionsOfTheTemplate) {
+  ScratchDir s("workflow_feed");
+  ASSERT_EQ(
+      Volcomp({"program", "positioning", "--axis", "Z", "--end", "190", "--pitch", "5", "--feed",
+               "800", "--dwell-s", "1.5", "--targets-csv", s / "z.csv", "-o", s / "z.ngc"})
+          .code,
+      0);
+  EXPECT_NE(ReadText(s / "z.csv").find("# feed mm per min: 800\n# dwell s: 1.5\n"),
+            std::string::npos)
+      << ReadText(s / "z.csv").substr(0, 600);
+  ASSERT_EQ(Volcomp({"program", "positioning", "--rotary", "--axis", "C", "--pitch", "30", "--feed",
+                     "3600", "--targets-csv", s / "c.csv", "-o", s / "c.ngc"})
+                .code,
+            0);
+  EXPECT_NE(ReadText(s / "c.csv").find("# feed deg per min: 3600\n# dwell s: 2\n"),
+            std::string::npos)
+      << ReadText(s / "c.csv").substr(0, 600);
+  ASSERT_EQ(Volcomp({"program", "diagonal", "--box", "10,10,10:390,270,190", "--increment-mm", "50",
+                     "--dwell-s", "0.5", "-o", s / "d.ngc", "--targets-csv", s / "d.csv"})
+                .code,
+            0);
+  const std::string d = ReadText(s / "d.csv");
+  EXPECT_NE(d.find("# feed mm per min: 1000\n# dwell s: 0.5\n"), std::string::npos)
+      << d.substr(0, 600);
+  WriteText(s / "z.csv", Fill(ReadText(s / "z.csv"), Reading, {}));
+  ASSERT_EQ(Volcomp({"evaluate", "positioning", s / "z.csv", "--report", s / "r"}).code, 0);
+  const std::string json = ReadText(s / "r/positioning_Z.json");
+  EXPECT_NE(json.find("\"feed mm per min\": \"800\""), std::string::npos) << json.substr(0, 800);
+}
+
 TEST(MetrologyWorkflow, TestConditionsReachTheReports) {
   ScratchDir s("workflow_conditions");
   const std::string csv = s / "x.csv";
