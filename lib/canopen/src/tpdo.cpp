@@ -22,7 +22,7 @@ SdoAbort CheckTpdoMapping(const TpdoParameters& p) {
   uint32_t bits = 0;
   for (uint8_t i = 0; i < p.mapped; ++i) {
     const ObjectEntry* e = MappedEntry(p.mapping[i]);
-    if (e == nullptr || !Readable(e->access) || FixedSize(e->type) == 0 ||
+    if (e == nullptr || !e->pdo_mappable || FixedSize(e->type) == 0 ||
         (p.mapping[i] & 0xFFu) != 8 * FixedSize(e->type)) {
       return SdoAbort::kCannotMap;
     }
