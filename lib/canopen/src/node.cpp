@@ -36,10 +36,8 @@ void Node::ResetCommunication(uint32_t now_ms) { Boot(now_ms); }
 
 void Node::Boot(uint32_t now_ms) {
   comm_ = stored_;
-  for (uint8_t n = 0; n < kTpdoCount; ++n) {
-    ConfigureTpdo(n);
-    pdo_waiting_[n] = false;
-  }
+  for (uint8_t n = 0; n < kTpdoCount; ++n) ConfigureTpdo(n);
+  pdo_waiting_ = 0;
   sdo_.Init(node_id_, this, sdo_config_);
   reported_aborts_ = 0;
   urgent_count_ = 0;
@@ -105,6 +103,11 @@ void Node::OnFrame(const CanFrame& f, uint32_t now_ms) {
     if (f.data[1] != 0 && f.data[1] != node_id_) return;
     switch (static_cast<NmtCommand>(f.data[0])) {
       case NmtCommand::kStart:
+        // Entering operational: each TPDO sends its state at once (they are polled only while
+        // operational).
+        if (state_ != NmtState::kOperational) {
+          for (Tpdo& t : tpdo_) t.Restart();
+        }
         state_ = NmtState::kOperational;
         break;
       case NmtCommand::kStop:
@@ -142,13 +145,14 @@ void Node::Poll(uint32_t now_ms) {
       ReportEvent(kEmcySdoTransferFailed, kErrCommunication, Code(code));
     }
   }
-  // The TPDOs (main loop: the values they sample are the main loop's). A frame still waiting
-  // for PopTx is replaced by the newer one of the same PDO (its latest state goes out).
-  for (uint8_t n = 0; n < kTpdoCount; ++n) {
-    CanFrame f;
-    if (tpdo_[n].Poll(*this, state_ == NmtState::kOperational, now_ms, &f)) {
-      pdo_tx_[n] = f;
-      pdo_waiting_[n] = true;
+  // The TPDOs, only while operational (main loop: the values they sample are the main loop's).
+  // A frame still waiting for PopTx is replaced by the newer one of the same PDO (its latest
+  // state goes out).
+  if (state_ == NmtState::kOperational) {
+    for (uint8_t n = 0; n < kTpdoCount; ++n) {
+      if (tpdo_[n].Poll(*this, true, now_ms, &pdo_tx_[n])) {
+        pdo_waiting_ = static_cast<uint8_t>(pdo_waiting_ | 1u << n);
+      }
     }
   }
   const uint16_t heartbeat_ms = comm_.heartbeat_ms;
@@ -170,10 +174,13 @@ bool Node::PopTx(CanFrame* frame) {
     return true;
   }
   if (PopEmcy(frame)) return true;
-  for (uint8_t n = 0; n < kTpdoCount; ++n) {
-    if (pdo_waiting_[n]) {
-      pdo_waiting_[n] = false;
-      if (state_ != NmtState::kOperational) continue;  // left operational since it was due
+  if (pdo_waiting_ != 0) {
+    if (state_ != NmtState::kOperational) {
+      pdo_waiting_ = 0;  // left operational since they were due
+    } else {
+      const uint8_t n = (pdo_waiting_ & 1u) != 0 ? 0 : 1;
+      static_assert(kTpdoCount == 2, "one bit per TPDO");
+      pdo_waiting_ = static_cast<uint8_t>(pdo_waiting_ & ~(1u << n));
       *frame = pdo_tx_[n];
       return true;
     }

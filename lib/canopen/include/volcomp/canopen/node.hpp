@@ -171,7 +171,7 @@ class Node : private ObjectValues {
   uint32_t reported_aborts_ = 0;
   Tpdo tpdo_[kTpdoCount];
   CanFrame pdo_tx_[kTpdoCount];  // a frame each TPDO has due, waiting for PopTx
-  bool pdo_waiting_[kTpdoCount] = {};
+  uint8_t pdo_waiting_ = 0;      // bit n: pdo_tx_[n] waits
 };
 
 }  // namespace volcomp::canopen

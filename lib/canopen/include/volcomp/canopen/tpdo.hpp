@@ -42,6 +42,9 @@ class Tpdo {
   /// New parameters in force (the timers restart: the next due frame is sent at once).
   void Configure(const TpdoParameters& p);
   const TpdoParameters& parameters() const { return p_; }
+  /// The next due frame is sent at once (entering NMT operational: the caller need not Poll()
+  /// outside operational).
+  void Restart() { sent_once_ = false; }
   /// The frame due at `now_ms`, if any: the PDO valid, `operational`, and either the mapped bytes
   /// changed since the last frame sent or the event timer elapsed, never sooner than the inhibit
   /// time after the last one. The values are read through `values`; a read that fails sends
@@ -52,6 +55,7 @@ class Tpdo {
   bool Sample(ObjectValues& values, uint8_t data[8], uint8_t* dlc) const;
 
   TpdoParameters p_;
+  const ObjectEntry* entries_[kPdoMaxMapped] = {};  // of p_.mapping, found once by Configure()
   bool sent_once_ = false;
   uint32_t last_sent_ms_ = 0;
   uint8_t last_data_[8] = {};
