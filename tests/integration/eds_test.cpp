@@ -35,6 +35,15 @@ TEST(Eds, CheckedInFileMatchesTheObjectDictionary) {
             std::string::npos);
   EXPECT_NE(eds.find("[1018sub1]\nParameterName=Vendor-ID"), std::string::npos);
   EXPECT_NE(eds.find("DefaultValue=$NODEID+0x580"), std::string::npos);
+  // What a TPDO may map: the produced ro numbers, nothing else (CiA 306 PDOMapping).
+  EXPECT_NE(eds.find("[2122]\nParameterName=Device state\nObjectType=0x7\nDataType=0x0006\n"
+                     "AccessType=ro\nDefaultValue=0x0000\nPDOMapping=1"),
+            std::string::npos);
+  EXPECT_NE(eds.find("[2138sub1]\nParameterName=Applied correction steps axis 1\nObjectType=0x7\n"
+                     "DataType=0x0003\nAccessType=ro\nDefaultValue=0\nPDOMapping=1"),
+            std::string::npos);
+  EXPECT_NE(eds.find("AccessType=rw\nDefaultValue=$NODEID+0x180\nPDOMapping=0"), std::string::npos);
+  EXPECT_NE(eds.find("NrOfTXPDO=2\n"), std::string::npos);
 }
 
 std::string CheckedInEds() {
@@ -117,6 +126,31 @@ TEST(Eds, DefaultsAreWhatAFreshBoardReports) {
   // 0x1015, 0x1017 and 0x2121, 0x2000 sub 0-4, 15 axis arrays.
   EXPECT_EQ(compared, 3 + 5 + 16 * 7);
   EXPECT_EQ(default_of(0x1015, 0), "0x0064");  // EMCY inhibit time 10 ms (100 x 100 us)
+
+  // The TPDOs (0x1800.., 0x1A00..): each default the fresh board reports, $NODEID resolved.
+  int pdo_compared = 0;
+  for (const auto& [key, e] : entries) {
+    if (e.index < 0x1800 || e.index > 0x1BFF) continue;
+    const canopen::ObjectEntry* entry = canopen::FindEntry(e.index, e.sub);
+    ASSERT_NE(entry, nullptr) << std::hex << e.index << " sub " << int{e.sub};
+    const auto r = node.Read(entry->id);
+    ASSERT_TRUE(r.ok()) << r.error().message;
+    std::string text = e.default_value;
+    uint32_t expected = 0;
+    if (text.rfind("$NODEID+", 0) == 0) {
+      expected = board.app().settings().node_id +
+                 static_cast<uint32_t>(std::stoul(text.substr(8), nullptr, 0));
+    } else {
+      expected = static_cast<uint32_t>(std::stoll(text, nullptr, 0));
+    }
+    EXPECT_EQ(*r, expected) << std::hex << e.index << " sub " << int{e.sub} << ": " << text;
+    ++pdo_compared;
+  }
+  EXPECT_EQ(pdo_compared, 2 * 5 + 2 * 9);
+  EXPECT_EQ(default_of(0x1800, 1), "$NODEID+0x180");
+  EXPECT_EQ(default_of(0x1801, 1), "$NODEID+0x280");
+  EXPECT_EQ(default_of(0x1A00, 1), "0x21220010");  // device state, 16 bits
+  EXPECT_EQ(default_of(0x1A01, 4), "0x21380610");  // axis 6's correction steps, 16 bits
 
   // 0x1009: the EDS and the node agree. The default is the board's; the EDS declares the value
   // read-only (not const) and names the simulated node's value in its comments; the simulated

@@ -4,7 +4,12 @@ volcomp's C++ code), on Debian's python3-can 4.1.0 over SLCAN.
 
 It uploads a table image to a node by SDO block download (CRC-16/XMODEM = binascii.crc_hqx), has
 the node verify it, reads the staged CRC-32 back and compares it with zlib.crc32 of the image,
-references the axes, activates the table and checks the active CRC-32. Exit code 0 on success.
+references the axes, activates the table and checks the active CRC-32. Then the transmit PDOs,
+from the CiA 301 frame layout and the documented mapping (docs/canopen.md, "PDOs"): NMT start,
+TPDO1 (0x180 + node-ID: device state U16, clamped axes U8, rate-limited axes U8, corrections of
+axes 1-2 as I16 steps) and TPDO2 (0x280 + node-ID: axes 3-6) decoded and compared with SDO reads of
+0x2122, 0x2125, 0x2126 and 0x2131 (q8), the event timer changed by SDO and its rate counted, TPDO2
+disabled by bit 31 of its COB-ID and enabled again. Exit code 0 on success.
 
 usage: independent_sdo_client.py CHANNEL IMAGE [--node 16]
   CHANNEL: socket://HOST:PORT (SLCAN over TCP) or a serial/pty path (SLCAN over a tty)
@@ -98,6 +103,76 @@ class Client:
         return resent
 
 
+def collect(bus, seconds):
+    """Every frame received during `seconds`: (arrival time, CAN-ID, data)."""
+    out, end = [], time.monotonic() + seconds
+    while time.monotonic() < end:
+        msg = bus.recv(max(0.0, end - time.monotonic()))
+        if msg is not None and not msg.is_extended_id:
+            out.append((time.monotonic(), msg.arbitration_id, bytes(msg.data)))
+    return out
+
+
+def signed32(v):
+    return v - (1 << 32) if v & 0x80000000 else v
+
+
+def steps_of_q8(q8):
+    """0x2131 (q8 steps) rounded half away from zero, saturated at +-32767 (the TPDO form)."""
+    steps = int((abs(q8) + 128) // 256) * (1 if q8 >= 0 else -1)
+    return max(-32767, min(32767, steps))
+
+
+def check_pdos(c, bus, node):
+    tpdo1, tpdo2 = 0x180 + node, 0x280 + node
+    assert c.read(0x1800, 1) == tpdo1, "TPDO1 COB-ID"
+    assert c.read(0x1801, 1) == tpdo2, "TPDO2 COB-ID"
+    before = collect(bus, 0.5)  # pre-operational: no PDO
+    assert not [f for f in before if f[1] in (tpdo1, tpdo2)], "a PDO before NMT start"
+    bus.send(can.Message(arbitration_id=0x000, data=bytes([0x01, node]), is_extended_id=False))
+    for attempt in range(5):  # the values could change between the frame and the reads
+        frames = collect(bus, 1.0)
+        f1 = [f for f in frames if f[1] == tpdo1]
+        f2 = [f for f in frames if f[1] == tpdo2]
+        assert f1 and f2, "no TPDO in operational (%d frames seen)" % len(frames)
+        assert len(f1[-1][2]) == 8 and len(f2[-1][2]) == 8, "TPDO length"
+        state, clamped, limited, c1, c2 = struct.unpack("<HBBhh", f1[-1][2])
+        rest = struct.unpack("<hhhh", f2[-1][2])
+        sdo_state = c.read(0x2122, 0)
+        sdo_clamped, sdo_limited = c.read(0x2125, 0), c.read(0x2126, 0)
+        sdo = [steps_of_q8(signed32(c.read(0x2131, a))) for a in range(1, 7)]
+        if (state, clamped, limited, [c1, c2] + list(rest)) == (sdo_state, sdo_clamped,
+                                                                 sdo_limited, sdo):
+            break
+    else:
+        raise AssertionError("TPDO %04X %02X %02X %s differ from SDO %04X %02X %02X %s"
+                             % (state, clamped, limited, [c1, c2] + list(rest), sdo_state,
+                                sdo_clamped, sdo_limited, sdo))
+    print("TPDO1 state 0x%04X clamped 0x%02X limited 0x%02X corrections %s steps: as SDO reads"
+          % (state, clamped, limited, [c1, c2] + list(rest)))
+    # At rest only the event timer sends: 100 ms by default; 50 ms by SDO (writable while the PDO
+    # exists) doubles the rate. Generous bounds: the machine may be loaded.
+    window = 3.0
+    n100 = len([f for f in collect(bus, window) if f[1] == tpdo1])
+    c.write(0x1800, 5, 50, size=2)
+    n50 = len([f for f in collect(bus, window) if f[1] == tpdo1])
+    c.write(0x1800, 5, 100, size=2)
+    print("TPDO1 frames in %.0f s: %d with the 100 ms event timer, %d with 50 ms"
+          % (window, n100, n50))
+    assert 15 <= n100 <= window * 1000 / 100 + 5, "100 ms event timer: %d frames" % n100
+    assert n50 >= 1.4 * n100 and n50 <= window * 1000 / 50 + 5, "50 ms event timer: %d" % n50
+    # Bit 31 of the COB-ID: TPDO2 does not exist, no frame; cleared: back at once.
+    c.write(0x1801, 1, tpdo2 | 0x80000000)
+    collect(bus, 0.1)
+    off = [f for f in collect(bus, 0.6) if f[1] == tpdo2]
+    assert not off, "TPDO2 sent while its COB-ID says it does not exist"
+    c.write(0x1801, 1, tpdo2)
+    on = [f for f in collect(bus, 0.6) if f[1] == tpdo2]
+    assert on, "TPDO2 not back after clearing bit 31"
+    print("TPDO2 disabled by bit 31 (no frame in 0.6 s), enabled again (%d frames)" % len(on))
+    bus.send(can.Message(arbitration_id=0x000, data=bytes([0x80, node]), is_extended_id=False))
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("channel")
@@ -141,6 +216,7 @@ def main():
         active = c.read(0x2104, 0)
         print("active CRC-32 0x%08X" % active)
         assert active == expected_crc, "active CRC-32 differs"
+        check_pdos(c, bus, a.node)
         print("independent client: OK")
         return 0
     finally:

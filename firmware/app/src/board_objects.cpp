@@ -84,6 +84,7 @@ BoardSettings BoardObjects::WithCommunication(BoardSettings s) const {
   const canopen::CommunicationParameters comm = parts_.node->communication();
   s.heartbeat_ms = comm.heartbeat_ms;
   s.emcy_inhibit_100us = comm.emcy_inhibit_100us;
+  for (uint8_t n = 0; n < kTpdoCount; ++n) s.tpdo[n] = comm.tpdo[n];
   return s;
 }
 
@@ -95,6 +96,7 @@ void BoardObjects::UpdateSettingsPending() {
   BoardSettings edited = pending_;
   edited.heartbeat_ms = in_force.heartbeat_ms;
   edited.emcy_inhibit_100us = in_force.emcy_inhibit_100us;
+  for (uint8_t n = 0; n < kTpdoCount; ++n) edited.tpdo[n] = in_force.tpdo[n];
   uint8_t a_bytes[kSettingsBytes], p_bytes[kSettingsBytes];
   SerializeSettings(in_force, a_bytes);
   SerializeSettings(edited, p_bytes);
@@ -168,6 +170,12 @@ uint8_t BoardObjects::correction_limited(uint8_t a) const {
   const uint8_t bit = static_cast<uint8_t>(1u << a);
   return static_cast<uint8_t>(((clamped_mask_ & bit) != 0 ? canopen::kLimitClamped : 0) |
                               ((limited_mask_ & bit) != 0 ? canopen::kLimitRateLimited : 0));
+}
+
+int16_t BoardObjects::correction_steps(uint8_t a) const {
+  const int64_t q8 = applied_correction(a);
+  const int64_t steps = q8 >= 0 ? (q8 + 128) / 256 : -((-q8 + 128) / 256);
+  return static_cast<int16_t>(steps > 32767 ? 32767 : steps < -32767 ? -32767 : steps);
 }
 
 uint32_t BoardObjects::settings_check() const {
@@ -315,12 +323,13 @@ SdoAbort BoardObjects::TableControl(uint8_t command) {
 }
 
 SdoAbort BoardObjects::StoreSettings() {
-  // "Save all parameters" includes the communication parameters in force (0x1015, 0x1017): they
+  // "Save all parameters" includes the communication parameters in force (0x1015, 0x1017, the
+  // TPDOs' 0x1800+n / 0x1A00+n): they
   // become what the resets restore.
   const BoardSettings s = WithCommunication(pending_);
   if (!ValidateSettings(s, nullptr, parts_.output_stage).ok()) return SdoAbort::kInvalidValue;
   if (!parts_.settings_store->Save(s).ok()) return Refuse(SdoAbort::kHardware);
-  parts_.node->set_stored_communication({s.heartbeat_ms, s.emcy_inhibit_100us});
+  parts_.node->set_stored_communication(CommunicationOf(s));
   UpdateSettingsPending();
   return SdoAbort::kNone;
 }

@@ -36,6 +36,8 @@ void Node::ResetCommunication(uint32_t now_ms) { Boot(now_ms); }
 
 void Node::Boot(uint32_t now_ms) {
   comm_ = stored_;
+  for (uint8_t n = 0; n < kTpdoCount; ++n) ConfigureTpdo(n);
+  pdo_waiting_ = 0;
   sdo_.Init(node_id_, this, sdo_config_);
   reported_aborts_ = 0;
   urgent_count_ = 0;
@@ -101,6 +103,11 @@ void Node::OnFrame(const CanFrame& f, uint32_t now_ms) {
     if (f.data[1] != 0 && f.data[1] != node_id_) return;
     switch (static_cast<NmtCommand>(f.data[0])) {
       case NmtCommand::kStart:
+        // Entering operational: each TPDO sends its state at once (they are polled only while
+        // operational).
+        if (state_ != NmtState::kOperational) {
+          for (Tpdo& t : tpdo_) t.Restart();
+        }
         state_ = NmtState::kOperational;
         break;
       case NmtCommand::kStop:
@@ -138,6 +145,16 @@ void Node::Poll(uint32_t now_ms) {
       ReportEvent(kEmcySdoTransferFailed, kErrCommunication, Code(code));
     }
   }
+  // The TPDOs, only while operational (main loop: the values they sample are the main loop's).
+  // A frame still waiting for PopTx is replaced by the newer one of the same PDO (its latest
+  // state goes out).
+  if (state_ == NmtState::kOperational) {
+    for (uint8_t n = 0; n < kTpdoCount; ++n) {
+      if (tpdo_[n].Poll(*this, true, now_ms, &pdo_tx_[n])) {
+        pdo_waiting_ = static_cast<uint8_t>(pdo_waiting_ | 1u << n);
+      }
+    }
+  }
   const uint16_t heartbeat_ms = comm_.heartbeat_ms;
   if (heartbeat_ms != 0 && static_cast<uint32_t>(now_ms - last_heartbeat_ms_) >= heartbeat_ms) {
     last_heartbeat_ms_ = now_ms;
@@ -157,6 +174,17 @@ bool Node::PopTx(CanFrame* frame) {
     return true;
   }
   if (PopEmcy(frame)) return true;
+  if (pdo_waiting_ != 0) {
+    if (state_ != NmtState::kOperational) {
+      pdo_waiting_ = 0;  // left operational since they were due
+    } else {
+      const uint8_t n = (pdo_waiting_ & 1u) != 0 ? 0 : 1;
+      static_assert(kTpdoCount == 2, "one bit per TPDO");
+      pdo_waiting_ = static_cast<uint8_t>(pdo_waiting_ & ~(1u << n));
+      *frame = pdo_tx_[n];
+      return true;
+    }
+  }
   return state_ != NmtState::kStopped && sdo_.PopTx(frame);
 }
 
@@ -190,7 +218,107 @@ void Node::ReportEvent(uint16_t code, uint8_t register_bits, uint32_t detail) {
   ClearErrors();
 }
 
+uint32_t Node::TpdoCobId(uint8_t n) const {
+  const uint32_t stored = comm_.tpdo[n].cob_id;
+  return (stored & 0x7FFu) == TpdoCobBase(n) ? stored + node_id_ : stored;
+}
+
+void Node::ConfigureTpdo(uint8_t n) {
+  TpdoParameters p = comm_.tpdo[n];
+  p.cob_id = TpdoCobId(n);
+  tpdo_[n].Configure(p);
+}
+
+bool Node::WriteTpdo(const ObjectEntry& e, uint32_t v, SdoAbort* result) {
+  const bool comm = e.index >= 0x1800 && e.index < 0x1800 + kTpdoCount;
+  const bool map = e.index >= 0x1A00 && e.index < 0x1A00 + kTpdoCount;
+  if (!comm && !map) return false;
+  const uint8_t n = static_cast<uint8_t>(e.index & 0xFFu);
+  TpdoParameters& p = comm_.tpdo[n];
+  const bool valid = (p.cob_id & kPdoCobIdInvalid) == 0;
+  *result = SdoAbort::kNone;
+  TpdoParameters next = p;
+  if (comm) {
+    switch (e.sub) {
+      case 1: {
+        // CiA 301: only bit 31 changes while the PDO exists; 11-bit CAN-IDs only (bit 29 clear),
+        // none of the restricted ones (0x000-0x07F, 0x101-0x180, 0x581-0x5FF, 0x601-0x67F,
+        // 0x6E0-0x6FF, 0x701-0x7FF) and not a bare pre-defined base (its stored form).
+        const uint32_t id = v & 0x7FFu;
+        const bool restricted = id <= 0x07F || (id >= 0x101 && id <= 0x180) ||
+                                (id >= 0x581 && id <= 0x5FF) || (id >= 0x601 && id <= 0x67F) ||
+                                id >= 0x6E0 || id == TpdoCobBase(n);
+        if ((v & 0x3FFFF800u) != 0 || restricted) {
+          *result = SdoAbort::kInvalidValue;
+          return true;
+        }
+        if (valid && (v & ~kPdoCobIdInvalid) != (TpdoCobId(n) & ~kPdoCobIdInvalid)) {
+          *result = SdoAbort::kInvalidValue;
+          return true;
+        }
+        next.cob_id = id == TpdoCobBase(n) + node_id_ ? (v & ~0x7FFu) | TpdoCobBase(n) : v;
+        break;
+      }
+      case 2:
+        if (v != kPdoEventDrivenManufacturer && v != kPdoEventDrivenProfile) {
+          *result = SdoAbort::kInvalidValue;  // no SYNC consumer: event-driven types only
+          return true;
+        }
+        if (valid && v != p.transmission_type) {
+          *result = SdoAbort::kInvalidValue;
+          return true;
+        }
+        next.transmission_type = static_cast<uint8_t>(v);
+        break;
+      case 3:
+        if (valid && v != p.inhibit_100us) {
+          *result = SdoAbort::kInvalidValue;
+          return true;
+        }
+        next.inhibit_100us = static_cast<uint16_t>(v);
+        break;
+      case 5:
+        next.event_timer_ms = static_cast<uint16_t>(v);
+        break;
+      default:
+        *result = SdoAbort::kReadOnly;
+        return true;
+    }
+  } else if (e.sub == 0) {
+    if (valid) {
+      *result = SdoAbort::kDeviceState;  // CiA 301: the mapping changes only while invalid
+      return true;
+    }
+    next.mapped = static_cast<uint8_t>(v);
+    *result = CheckTpdoMapping(next);
+    if (*result != SdoAbort::kNone) return true;
+  } else {
+    if (valid || p.mapped != 0) {
+      *result = SdoAbort::kDeviceState;  // CiA 301: entries only with sub 0 = 0
+      return true;
+    }
+    next.mapping[e.sub - 1] = v;
+  }
+  p = next;
+  ConfigureTpdo(n);
+  return true;
+}
+
 bool Node::ReadCommunication(const ObjectEntry& e, uint32_t* value) const {
+  if (e.index >= 0x1800 && e.index < 0x1800 + kTpdoCount && e.sub != 0) {
+    const uint8_t n = static_cast<uint8_t>(e.index & 0xFFu);
+    const TpdoParameters& p = comm_.tpdo[n];
+    *value = e.sub == 1   ? TpdoCobId(n)
+             : e.sub == 2 ? p.transmission_type
+             : e.sub == 3 ? p.inhibit_100us
+                          : p.event_timer_ms;
+    return true;
+  }
+  if (e.index >= 0x1A00 && e.index < 0x1A00 + kTpdoCount) {
+    const TpdoParameters& p = comm_.tpdo[e.index & 0xFFu];
+    *value = e.sub == 0 ? p.mapped : p.mapping[e.sub - 1];
+    return true;
+  }
   switch (e.id) {
     case ObjectId::kErrorRegister:
       *value = error_register_;
@@ -239,6 +367,10 @@ SdoAbort Node::DoRead(const ObjectEntry& e,
 }
 
 SdoAbort Node::DoWrite(const ObjectEntry& e, const uint8_t* data, uint32_t size) {
+  uint32_t v = 0;
+  for (uint32_t i = 0; i < size && i < 4; ++i) v |= uint32_t{data[i]} << (8 * i);
+  SdoAbort tpdo = SdoAbort::kNone;
+  if (WriteTpdo(e, v, &tpdo)) return tpdo;
   switch (e.id) {
     case ObjectId::kErrorCount:
       if (size != 1 || data[0] != 0) return SdoAbort::kInvalidValue;  // only 0 (clear) allowed

@@ -12,15 +12,29 @@ const ObjectEntry kObjectEntries[] = {
 #define VOLCOMP_OD_LIMIT_FIELDS(low, high, limited) low, high, limited
 #define VOLCOMP_OD_OBJECT(index, kind, name)
 #define VOLCOMP_OD_ENTRY(id, index, sub, type, access, def, name) \
-  {ObjectId::id, index, sub, DataType::type, Access::access, def, name, 0, 0, false},
+  {ObjectId::id, index, sub, DataType::type, Access::access, def, name, 0, 0, false, false},
+#define VOLCOMP_OD_VALUE(id, index, sub, type, access, def, source, name) \
+  {ObjectId::id,                                                          \
+   index,                                                                 \
+   sub,                                                                   \
+   DataType::type,                                                        \
+   Access::access,                                                        \
+   def,                                                                   \
+   name,                                                                  \
+   0,                                                                     \
+   0,                                                                     \
+   false,                                                                 \
+   Access::access == Access::kRo && FixedSize(DataType::type) != 0},
 #define VOLCOMP_OD_SETTING(id, index, sub, type, limits, def, field, key, name) \
   {ObjectId::id, index,                                                         \
    sub,          DataType::type,                                                \
    Access::kRw,  static_cast<int64_t>(def),                                     \
-   name,         VOLCOMP_OD_LIMIT_FIELDS limits},
+   name,         VOLCOMP_OD_LIMIT_FIELDS limits,                                \
+   false},
 #include "volcomp/canopen/od_entries.def"
 #undef VOLCOMP_OD_OBJECT
 #undef VOLCOMP_OD_ENTRY
+#undef VOLCOMP_OD_VALUE
 #undef VOLCOMP_OD_SETTING
 #undef VOLCOMP_OD_LIMITS
 #undef VOLCOMP_OD_NO_LIMITS

@@ -22,7 +22,7 @@ SdoAbort CheckTpdoMapping(const TpdoParameters& p) {
   uint32_t bits = 0;
   for (uint8_t i = 0; i < p.mapped; ++i) {
     const ObjectEntry* e = MappedEntry(p.mapping[i]);
-    if (e == nullptr || !Readable(e->access) || FixedSize(e->type) == 0 ||
+    if (e == nullptr || !e->pdo_mappable || FixedSize(e->type) == 0 ||
         (p.mapping[i] & 0xFFu) != 8 * FixedSize(e->type)) {
       return SdoAbort::kCannotMap;
     }
@@ -33,14 +33,17 @@ SdoAbort CheckTpdoMapping(const TpdoParameters& p) {
 
 void Tpdo::Configure(const TpdoParameters& p) {
   p_ = p;
+  for (uint8_t i = 0; i < kPdoMaxMapped; ++i) {
+    entries_[i] = i < p_.mapped ? MappedEntry(p_.mapping[i]) : nullptr;
+  }
   sent_once_ = false;
   last_dlc_ = 0;
 }
 
 bool Tpdo::Sample(ObjectValues& values, uint8_t data[8], uint8_t* dlc) const {
   uint8_t n = 0;
-  for (uint8_t i = 0; i < p_.mapped; ++i) {
-    const ObjectEntry* e = MappedEntry(p_.mapping[i]);
+  for (uint8_t i = 0; i < p_.mapped && i < kPdoMaxMapped; ++i) {
+    const ObjectEntry* e = entries_[i];
     if (e == nullptr) return false;
     const uint32_t size = FixedSize(e->type);
     if (size == 0 || n + size > 8) return false;

@@ -8,11 +8,17 @@ namespace {
 constexpr uint32_t kMagic = 0x47464356;  // "VCFG"
 // 2: the EMCY inhibit time in the slot after the heartbeat; 3: each axis's direction hysteresis
 // in its reserved 16-bit slot; 4: each axis's direction switch acceleration in the first of its
-// reserved 32-bit slots (older records: the defaults).
-constexpr uint16_t kVersion = 4;
+// reserved 32-bit slots (older records: the defaults); 5: the TPDO parameters after the version-4
+// record (kPdoRecordBytes each; the record grows to kSettingsBytes).
+constexpr uint16_t kVersion = 5;
+constexpr uint16_t kVersionWithoutPdo = 4;
 constexpr uint16_t kVersionWithoutSwitch = 3;
 constexpr uint16_t kVersionWithoutHysteresis = 2;
 constexpr uint16_t kVersionWithoutInhibit = 1;
+static_assert(kVersionWithoutInhibit < kVersionWithoutHysteresis &&
+                  kVersionWithoutHysteresis < kVersionWithoutSwitch &&
+                  kVersionWithoutSwitch < kVersionWithoutPdo && kVersionWithoutPdo < kVersion,
+              "versions in order: every one between the first and kVersion is read");
 
 class Writer {
  public:
@@ -107,18 +113,27 @@ void SerializeSettings(const BoardSettings& s, uint8_t* out) {
     w.U32(0);
     w.U32(0);
   }
+  w.U32(0);  // reserved (the version-4 record's last 8 bytes)
+  w.U32(0);
+  for (const PdoSettings& p : s.tpdo) {
+    w.U32(p.cob_id);
+    w.U8(p.transmission_type);
+    w.U8(p.mapped);
+    w.U16(p.inhibit_100us);
+    w.U16(p.event_timer_ms);
+    w.U16(0);
+    for (uint32_t m : p.mapping) w.U32(m);
+  }
 }
 
 Status DeserializeSettings(const uint8_t* in, uint32_t size, BoardSettings* out) {
-  if (size < kSettingsBytes) return Error::kConfigInvalid;
+  if (size < kSettingsBytesV4) return Error::kConfigInvalid;
   Reader r(in);
   if (r.U32() != kMagic) return Error::kConfigInvalid;
   const uint16_t version = r.U16();
-  if ((version != kVersion && version != kVersionWithoutSwitch &&
-       version != kVersionWithoutHysteresis && version != kVersionWithoutInhibit) ||
-      r.U16() != kSettingsBytes) {
-    return Error::kConfigInvalid;
-  }
+  if (version < kVersionWithoutInhibit || version > kVersion) return Error::kConfigInvalid;
+  const uint32_t bytes = version == kVersion ? kSettingsBytes : kSettingsBytesV4;
+  if (r.U16() != bytes || size < bytes) return Error::kConfigInvalid;
   BoardSettings s;
   s.node_id = r.U8();
   s.board.axis_count = r.U8();
@@ -150,9 +165,23 @@ Status DeserializeSettings(const uint8_t* in, uint32_t size, BoardSettings* out)
     x.max_correction_accel_steps_s2 = r.U32();
     x.home_position_steps = r.I32();
     const uint32_t switch_accel = r.U32();
-    if (version == kVersion) x.direction_switch_accel_steps_s2 = switch_accel;
+    if (version >= kVersionWithoutPdo) x.direction_switch_accel_steps_s2 = switch_accel;
     r.U32();
     r.U32();
+  }
+  r.U32();
+  r.U32();
+  if (version == kVersion) {
+    for (PdoSettings& p : s.tpdo) {
+      p.cob_id = r.U32();
+      p.transmission_type = r.U8();
+      p.mapped = r.U8();
+      p.inhibit_100us = r.U16();
+      p.event_timer_ms = r.U16();
+      r.U16();
+      for (uint32_t& m : p.mapping) m = r.U32();
+      if (p.mapped > kPdoMaxMapped) return Error::kConfigInvalid;
+    }
   }
   VOLCOMP_TRY(ValidateSettings(s));
   *out = s;

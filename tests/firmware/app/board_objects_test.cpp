@@ -4,6 +4,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
+#include <cstdio>
 #include <functional>
 #include <optional>
 
@@ -794,6 +796,257 @@ TEST_F(Bench, ActiveTableDataIsTheActiveImageWhileAnotherIsStaged) {
   ASSERT_TRUE(staged.ok());
   EXPECT_EQ(*active, std::vector<uint8_t>(a.data(), a.data() + a.size()));
   EXPECT_EQ(*staged, std::vector<uint8_t>(b.data(), b.data() + b.size()));
+}
+
+// ---- Transmit PDOs (CiA 301; docs/canopen.md, "PDOs") ------------------------------------------
+// The expected bytes are put together here from the objects' values read by SDO and the CiA 301
+// layout (little-endian, in mapping order), not by the node's mapping code.
+
+class PdoBench : public Bench {
+ protected:
+  using Timed = std::vector<std::pair<uint64_t, CanFrame>>;
+  // The frames with CAN-ID `id` the board sends in the next `ms` main-loop passes (1 ms each),
+  // with the millisecond each left.
+  Timed Watch(uint32_t id, int ms) {
+    Timed out;
+    for (int i = 0; i < ms; ++i) {
+      Step(50);
+      for (const CanFrame& f : can_.TakeSent()) {
+        if (f.id == id) out.push_back({clock_.now() / 1000000, f});
+      }
+    }
+    return out;
+  }
+  // An expedited SDO download of `bytes` (1, 2 or 4) to (index, sub): the response frame.
+  std::string Download(uint16_t index, uint8_t sub, uint32_t value, int bytes) {
+    const uint8_t cs = bytes == 1 ? 0x2F : bytes == 2 ? 0x2B : 0x23;
+    char hex[17];
+    std::snprintf(hex, sizeof hex, "%02X%02X%02X%02X%02X%02X%02X%02X", cs, index & 0xFF, index >> 8,
+                  sub, value & 0xFF, (value >> 8) & 0xFF, (value >> 16) & 0xFF, value >> 24);
+    const Frames r = Exchange(hex);
+    return r.size() == 1 ? r[0] : "none";
+  }
+  static std::string Ok(uint16_t index, uint8_t sub) {
+    char s[32];
+    std::snprintf(s, sizeof s, "590#60%02X%02X%02X00000000", index & 0xFF, index >> 8, sub);
+    return s;
+  }
+  static std::string Abort(uint16_t index, uint8_t sub, uint32_t code) {
+    char s[32];
+    std::snprintf(s, sizeof s, "590#80%02X%02X%02X%02X%02X%02X%02X", index & 0xFF, index >> 8, sub,
+                  code & 0xFF, (code >> 8) & 0xFF, (code >> 16) & 0xFF, code >> 24);
+    return s;
+  }
+  // Axis 1 clamped at 50 steps by a table asking 100, the board at rest.
+  void ClampAxis1() {
+    config_.axis[0].max_correction_steps = 50;
+    Boot();
+    io_.SetInput(InputLine::kWriteEnable, true);
+    ASSERT_TRUE(Upload(UniformImage(100, 9)).ok());
+    ASSERT_TRUE(Command(TableCommand::kVerify).ok());
+    ASSERT_TRUE(Write(ObjectId::kReferenceAxes, 0x07).ok());
+    Step(10000);
+    ASSERT_TRUE(Command(TableCommand::kActivate).ok());
+    Step(20000);
+  }
+};
+
+int16_t RoundedSteps(uint32_t q8_raw) {
+  const double steps = std::round(static_cast<int32_t>(q8_raw) / 256.0);
+  return static_cast<int16_t>(std::clamp(steps, -32767.0, 32767.0));
+}
+
+TEST_F(PdoBench, DefaultTpdosCarryStateFlagsAndCorrectionsOnlyInOperational) {
+  ClampAxis1();
+  EXPECT_TRUE(Watch(0x190, 300).empty());                        // pre-operational: no PDO
+  can_.Inject(CanFrame{0x000, false, false, 2, {0x01, kNode}});  // NMT start
+  const Timed t1 = Watch(0x190, 3);
+  ASSERT_EQ(t1.size(), 1u);  // at once on entering operational
+  const CanFrame& f = t1[0].second;
+  const uint32_t state = Read(ObjectId::kDeviceState);
+  uint8_t clamped = 0, limited = 0;
+  for (uint8_t a = 0; a < 6; ++a) {
+    const uint32_t flags = Read(canopen::AxisEntry(ObjectId::kCorrectionLimited1, a).id);
+    clamped = static_cast<uint8_t>(clamped | ((flags & canopen::kLimitClamped) ? 1u << a : 0));
+    limited = static_cast<uint8_t>(limited | ((flags & canopen::kLimitRateLimited) ? 1u << a : 0));
+  }
+  const int16_t c1 = RoundedSteps(Read(ObjectId::kAppliedCorrection1));
+  const int16_t c2 = RoundedSteps(Read(ObjectId::kAppliedCorrection2));
+  EXPECT_EQ(c1, 50);
+  EXPECT_EQ(clamped, 0x01);
+  EXPECT_TRUE(canopen::DecodeDeviceState(state).engaged);
+  const uint8_t expected1[8] = {static_cast<uint8_t>(state),
+                                static_cast<uint8_t>(state >> 8),
+                                clamped,
+                                limited,
+                                static_cast<uint8_t>(c1),
+                                static_cast<uint8_t>(c1 >> 8),
+                                static_cast<uint8_t>(c2),
+                                static_cast<uint8_t>(c2 >> 8)};
+  ASSERT_EQ(f.dlc, 8);
+  for (int i = 0; i < 8; ++i) EXPECT_EQ(f.data[i], expected1[i]) << "byte " << i;
+  // 0x2138 is 0x2131 rounded to steps.
+  EXPECT_EQ(static_cast<int16_t>(Read(ObjectId::kCorrectionSteps1)), c1);
+
+  // TPDO2: axes 3-6.
+  can_.Inject(CanFrame{0x000, false, false, 2, {0x80, kNode}});  // pre-operational
+  Step(100);
+  can_.Inject(CanFrame{0x000, false, false, 2, {0x01, kNode}});
+  const Timed t2 = Watch(0x290, 3);
+  ASSERT_EQ(t2.size(), 1u);
+  ASSERT_EQ(t2[0].second.dlc, 8);
+  for (uint8_t a = 2; a < 6; ++a) {
+    const int16_t c = RoundedSteps(Read(canopen::AxisEntry(ObjectId::kAppliedCorrection1, a).id));
+    EXPECT_EQ(t2[0].second.data[2 * (a - 2)], static_cast<uint8_t>(c));
+    EXPECT_EQ(t2[0].second.data[2 * (a - 2) + 1], static_cast<uint8_t>(c >> 8));
+  }
+
+  // At rest: the event timer, one frame every 100 ms.
+  const Timed rest = Watch(0x190, 1000);
+  EXPECT_GE(rest.size(), 9u);
+  EXPECT_LE(rest.size(), 11u);
+  for (size_t i = 1; i < rest.size(); ++i) {
+    EXPECT_GE(rest[i].first - rest[i - 1].first, 99u);
+    EXPECT_LE(rest[i].first - rest[i - 1].first, 102u);
+  }
+  // Stopped, pre-operational: none.
+  can_.Inject(CanFrame{0x000, false, false, 2, {0x02, kNode}});
+  EXPECT_TRUE(Watch(0x190, 500).empty());
+  can_.Inject(CanFrame{0x000, false, false, 2, {0x80, kNode}});
+  EXPECT_TRUE(Watch(0x190, 500).empty());
+  EXPECT_TRUE(Watch(0x290, 10).empty());
+}
+
+TEST_F(PdoBench, InhibitTimeHoldsFramesApartEvenWithAShortEventTimer) {
+  Boot();
+  can_.Inject(CanFrame{0x000, false, false, 2, {0x01, kNode}});
+  Step(50);
+  // The event timer may change at any time; 5 ms asks more often than the 20 ms inhibit time
+  // allows: frames leave every 21 ms (20 ms rounded up plus the clock's 1 ms), never sooner.
+  EXPECT_EQ(Download(0x1800, 5, 5, 2), Ok(0x1800, 5));
+  const Timed f = Watch(0x190, 500);
+  ASSERT_GE(f.size(), 20u);
+  for (size_t i = 1; i < f.size(); ++i) {
+    EXPECT_GE(f[i].first - f[i - 1].first, 20u) << i;
+    EXPECT_LE(f[i].first - f[i - 1].first, 23u) << i;
+  }
+  // Moving axis 1 changes the state (moving) and the commanded position: still no faster.
+  int moved = 0;
+  Timed m;
+  for (int i = 0; i < 300; ++i) {
+    step_io_.add_steps(0, 5);
+    moved += 5;
+    const Timed one = Watch(0x190, 1);
+    m.insert(m.end(), one.begin(), one.end());
+  }
+  ASSERT_GE(m.size(), 10u);
+  for (size_t i = 1; i < m.size(); ++i) EXPECT_GE(m[i].first - m[i - 1].first, 20u) << i;
+}
+
+TEST_F(PdoBench, WriteRulesAbortCodesAndRemappingBySdo) {
+  Boot();
+  can_.Inject(CanFrame{0x000, false, false, 2, {0x01, kNode}});
+  Step(50);
+  // While TPDO1 exists: COB-ID (other than bit 31), transmission type, inhibit time refused
+  // (0x06090030), the mapping count too (0x08000022); the event timer may change.
+  EXPECT_EQ(Download(0x1800, 1, 0x1A0, 4), Abort(0x1800, 1, 0x06090030));
+  EXPECT_EQ(Download(0x1800, 2, 255, 1), Abort(0x1800, 2, 0x06090030));
+  EXPECT_EQ(Download(0x1800, 3, 50, 2), Abort(0x1800, 3, 0x06090030));
+  EXPECT_EQ(Download(0x1A00, 0, 0, 1), Abort(0x1A00, 0, 0x08000022));
+  EXPECT_EQ(Download(0x1A00, 1, 0x21300120, 4), Abort(0x1A00, 1, 0x08000022));
+  EXPECT_EQ(Download(0x1800, 5, 1000, 2), Ok(0x1800, 5));
+  EXPECT_EQ(Download(0x1800, 4, 0, 1), Abort(0x1800, 4, 0x06090011));  // sub 4: none
+  EXPECT_EQ(Download(0x1800, 0, 5, 1), Abort(0x1800, 0, 0x06010002));  // const
+  // Bit 31 set: the PDO no longer exists, nothing is sent.
+  EXPECT_EQ(Download(0x1800, 1, 0x80000190, 4), Ok(0x1800, 1));
+  EXPECT_TRUE(Watch(0x190, 1200).empty());
+  // SYNC types are not offered; restricted and 29-bit CAN-IDs are refused.
+  EXPECT_EQ(Download(0x1800, 2, 1, 1), Abort(0x1800, 2, 0x06090030));
+  EXPECT_EQ(Download(0x1800, 1, 0x80000590, 4), Abort(0x1800, 1, 0x06090030));
+  EXPECT_EQ(Download(0x1800, 1, 0xA0000190, 4), Abort(0x1800, 1, 0x06090030));
+  // Mapping entries only with sub 0 = 0.
+  EXPECT_EQ(Download(0x1A00, 1, 0x21300120, 4), Abort(0x1A00, 1, 0x08000022));
+  EXPECT_EQ(Download(0x1A00, 0, 0, 1), Ok(0x1A00, 0));
+  EXPECT_EQ(Download(0x1A00, 1, 0x21300120, 4), Ok(0x1A00, 1));  // commanded position 1, I32
+  EXPECT_EQ(Download(0x1A00, 2, 0x20000108, 4), Ok(0x1A00, 2));  // node-ID setting: no
+  EXPECT_EQ(Download(0x1A00, 0, 2, 1), Abort(0x1A00, 0, 0x06040041));
+  EXPECT_EQ(Download(0x1A00, 2, 0x21300210, 4), Ok(0x1A00, 2));  // wrong length: no
+  EXPECT_EQ(Download(0x1A00, 0, 2, 1), Abort(0x1A00, 0, 0x06040041));
+  EXPECT_EQ(Download(0x1A00, 2, 0x21370120, 4), Ok(0x1A00, 2));
+  EXPECT_EQ(Download(0x1A00, 3, 0x21300220, 4), Ok(0x1A00, 3));
+  EXPECT_EQ(Download(0x1A00, 0, 3, 1), Abort(0x1A00, 0, 0x06040042));  // 96 bits
+  EXPECT_EQ(Download(0x1A00, 0, 9, 1), Abort(0x1A00, 0, 0x06040042));
+  EXPECT_EQ(Download(0x1A00, 0, 2, 1), Ok(0x1A00, 0));
+  // New COB-ID and type while invalid, then valid: frames follow the new mapping at once.
+  EXPECT_EQ(Download(0x1800, 1, 0x800001A0, 4), Ok(0x1800, 1));
+  EXPECT_EQ(Download(0x1800, 2, 255, 1), Ok(0x1800, 2));
+  EXPECT_EQ(Download(0x1800, 3, 0, 2), Ok(0x1800, 3));
+  step_io_.add_steps(0, 1234);
+  Step(50);
+  sent_.clear();
+  EXPECT_EQ(Download(0x1800, 1, 0x1A0, 4), Ok(0x1800, 1));
+  Timed f;  // the frame leaves in the pass that served the write (Exchange keeps it in sent_)
+  for (const CanFrame& s : sent_) {
+    if (s.id == 0x1A0) f.push_back({0, s});
+  }
+  const Timed later = Watch(0x1A0, 3);
+  f.insert(f.end(), later.begin(), later.end());
+  ASSERT_EQ(f.size(), 1u);
+  const uint32_t commanded = Read(ObjectId::kCommandedPosition1);
+  const uint32_t machine = Read(ObjectId::kMachinePosition1);
+  EXPECT_EQ(static_cast<int32_t>(commanded), 1234);
+  ASSERT_EQ(f[0].second.dlc, 8);
+  for (int i = 0; i < 4; ++i) {
+    EXPECT_EQ(f[0].second.data[i], static_cast<uint8_t>(commanded >> (8 * i)));
+    EXPECT_EQ(f[0].second.data[4 + i], static_cast<uint8_t>(machine >> (8 * i)));
+  }
+  // Inhibit 0: every change leaves on the next pass.
+  step_io_.add_steps(0, 1);
+  EXPECT_EQ(Watch(0x1A0, 2).size(), 1u);
+  EXPECT_TRUE(Watch(0x190, 10).empty());  // the old CAN-ID is gone
+  EXPECT_EQ(Read(ObjectId::kTpdo1CobId), 0x1A0u);
+  EXPECT_EQ(Read(ObjectId::kTpdo1Mapped), 2u);
+  EXPECT_EQ(Read(ObjectId::kTpdo1Mapping2), 0x21370120u);
+}
+
+// The PDO parameters are in force at once (no reset), saved by 0x1010 with the other
+// communication parameters, restored by reset communication and reset node; "load" (0x1011)
+// brings the defaults back at the next reset.
+TEST_F(PdoBench, StoredPdoParametersSurviveResetsAndRestoreDefaultsBringsTheDefaultsBack) {
+  Boot();
+  EXPECT_EQ(Download(0x1801, 1, 0x80000290, 4), Ok(0x1801, 1));
+  EXPECT_EQ(Download(0x1801, 1, 0x80000391, 4), Ok(0x1801, 1));
+  EXPECT_EQ(Download(0x1801, 1, 0x391, 4), Ok(0x1801, 1));
+  EXPECT_EQ(Download(0x1801, 5, 40, 2), Ok(0x1801, 5));
+  EXPECT_FALSE(canopen::DecodeDeviceState(Read(ObjectId::kDeviceState)).settings_pending);
+  // A reset communication without a store: the defaults (nothing stored yet).
+  EXPECT_TRUE(Contains(Nmt(0x82), "710#00"));
+  EXPECT_EQ(Read(ObjectId::kTpdo2CobId), 0x290u);
+  EXPECT_EQ(Read(ObjectId::kTpdo2EventTimer), 100u);
+  // Again, stored.
+  EXPECT_EQ(Download(0x1801, 1, 0x80000290, 4), Ok(0x1801, 1));
+  EXPECT_EQ(Download(0x1801, 1, 0x80000391, 4), Ok(0x1801, 1));
+  EXPECT_EQ(Download(0x1801, 1, 0x391, 4), Ok(0x1801, 1));
+  EXPECT_EQ(Download(0x1801, 5, 40, 2), Ok(0x1801, 5));
+  io_.SetInput(InputLine::kWriteEnable, true);
+  Step(100);
+  EXPECT_EQ(Exchange("2310100173617665"), Frames{"590#6010100100000000"});  // "save"
+  EXPECT_EQ(Download(0x1801, 5, 1000, 2), Ok(0x1801, 5));                   // in force, not stored
+  EXPECT_TRUE(Contains(Nmt(0x82), "710#00"));
+  EXPECT_EQ(Read(ObjectId::kTpdo2CobId), 0x391u);
+  EXPECT_EQ(Read(ObjectId::kTpdo2EventTimer), 40u);
+  can_.Inject(CanFrame{0x000, false, false, 2, {0x01, kNode}});
+  const Timed f = Watch(0x391, 500);
+  EXPECT_GE(f.size(), 11u);  // every 40 ms
+  EXPECT_LE(f.size(), 14u);
+  EXPECT_TRUE(Contains(Nmt(0x81), "710#00"));  // reset node: from the stored settings
+  EXPECT_EQ(Read(ObjectId::kTpdo2CobId), 0x391u);
+  EXPECT_EQ(Read(ObjectId::kTpdo2EventTimer), 40u);
+  EXPECT_EQ(Exchange("231110016C6F6164"), Frames{"590#6011100100000000"});  // "load"
+  EXPECT_EQ(Read(ObjectId::kTpdo2CobId), 0x391u);                           // until the reset
+  EXPECT_TRUE(Contains(Nmt(0x82), "710#00"));
+  EXPECT_EQ(Read(ObjectId::kTpdo2CobId), 0x290u);
+  EXPECT_EQ(Read(ObjectId::kTpdo2EventTimer), 100u);
 }
 
 }  // namespace

@@ -31,7 +31,7 @@ constexpr uint64_t kFrameNs = 111000;  // 47 + 64 bits at 1 Mbit/s, no stuff bit
 // Main loop CPU cycles (Cortex-M4 model, rows of tests/target main_loop_cycles: the traced worst
 // pass of an SDO block download on the firmware's own main loop, node and board objects included,
 // rounded up): a pass with nothing to do (main_loop_pass without a flush step, 981), a pass that
-// receives a segment (main_loop_segment 3347: the worst is a sub-block's last segment, whose pass
+// receives a segment (main_loop_segment 3353: the worst is a sub-block's last segment, whose pass
 // also runs the first flush step), a pass with a flush step (main_loop_pass 4840: a page erase).
 // Each figure includes the pass itself, which the test adds again: conservative.
 constexpr uint64_t kPassCycles = 1000;     // a pass with nothing received

@@ -38,7 +38,9 @@ TEST(Node, BootUpHeartbeatAndNmtStates) {
   n.OnFrame(F(0x000, "0122"), 150);  // start this node
   EXPECT_EQ(n.state(), canopen::NmtState::kOperational);
   n.Poll(200);
-  EXPECT_EQ(Drain(n), Frames{"722#05"});
+  // Operational: the heartbeat, then the default TPDOs' first frames (0x180 / 0x280 + node-ID,
+  // the test values all 0).
+  EXPECT_EQ(Drain(n), (Frames{"722#05", "1A2#0000000000000000", "2A2#0000000000000000"}));
   n.OnFrame(F(0x000, "0233"), 210);  // another node: ignored
   EXPECT_EQ(n.state(), canopen::NmtState::kOperational);
   n.OnFrame(F(0x000, "0200"), 220);  // broadcast stop
@@ -232,10 +234,16 @@ TEST(ObjectDictionary, TableIsSortedUniqueAndConsistent) {
   EXPECT_EQ(canopen::FindEntry(0x3000, 0, &exists), nullptr);
   EXPECT_FALSE(exists);
   // Every array/record header's sub 0 gives the highest sub-index that exists (except 0x1003,
-  // whose sub 0 is the number of errors recorded).
+  // whose sub 0 is the number of errors recorded, and the PDO mappings 0x1A00.., whose sub 0 is
+  // the number of entries mapped: their 8 entries exist).
   for (size_t h = 0; h < canopen::kObjectHeaderCount; ++h) {
     const auto& o = canopen::kObjectHeaders[h];
     if (o.index == 0x1003) continue;
+    if (o.index >= 0x1A00 && o.index <= 0x1BFF) {
+      EXPECT_NE(canopen::FindEntry(o.index, 8), nullptr) << std::hex << o.index;
+      EXPECT_EQ(canopen::FindEntry(o.index, 9), nullptr) << std::hex << o.index;
+      continue;
+    }
     if (o.kind == canopen::ObjectKind::kVar) {
       EXPECT_NE(canopen::FindEntry(o.index, 0), nullptr) << std::hex << o.index;
       continue;

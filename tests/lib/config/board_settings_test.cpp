@@ -9,6 +9,13 @@
 namespace volcomp {
 namespace {
 
+// A record of version 4 or older is kSettingsBytesV4 long (its size LE16 at 6): what such a board
+// stored, before the PDO parameters.
+void OldSize(uint8_t* rec) {
+  rec[6] = static_cast<uint8_t>(kSettingsBytesV4 & 0xFF);
+  rec[7] = static_cast<uint8_t>(kSettingsBytesV4 >> 8);
+}
+
 // The settings record keeps 0x1015 in the slot after the heartbeat time (record version 2); a
 // version-1 record (that slot reserved, 0) gives the default inhibit time, not 0.
 TEST(SettingsRecord, KeepsTheEmcyInhibitTimeAndReadsVersion1Records) {
@@ -17,7 +24,7 @@ TEST(SettingsRecord, KeepsTheEmcyInhibitTimeAndReadsVersion1Records) {
   s.emcy_inhibit_100us = 37;
   uint8_t rec[kSettingsBytes];
   SerializeSettings(s, rec);
-  EXPECT_EQ(rec[4], 4);  // version, LE16 at 4
+  EXPECT_EQ(rec[4], 5);  // version, LE16 at 4
   EXPECT_EQ(rec[5], 0);
   EXPECT_EQ(rec[12], 0x23);  // heartbeat LE16 at 12
   EXPECT_EQ(rec[13], 0x01);
@@ -27,11 +34,12 @@ TEST(SettingsRecord, KeepsTheEmcyInhibitTimeAndReadsVersion1Records) {
   ASSERT_TRUE(DeserializeSettings(rec, sizeof rec, &back).ok());
   EXPECT_EQ(back.emcy_inhibit_100us, 37);
   rec[4] = 1;
+  OldSize(rec);
   rec[14] = 0;
   ASSERT_TRUE(DeserializeSettings(rec, sizeof rec, &back).ok());
   EXPECT_EQ(back.emcy_inhibit_100us, 100);  // the default, 10 ms
   EXPECT_EQ(back.heartbeat_ms, 0x0123);
-  rec[4] = 5;
+  rec[4] = 6;
   EXPECT_FALSE(DeserializeSettings(rec, sizeof rec, &back).ok());
 }
 
@@ -49,6 +57,7 @@ TEST(SettingsRecord, KeepsTheDirectionHysteresisAndReadsVersion2Records) {
   ASSERT_TRUE(DeserializeSettings(rec, sizeof rec, &back).ok());
   EXPECT_EQ(back.board.axis[1].direction_hysteresis_steps, 0x0203);
   rec[4] = 2;
+  OldSize(rec);
   rec[24 + 64 + 6] = rec[24 + 64 + 7] = 0;
   ASSERT_TRUE(DeserializeSettings(rec, sizeof rec, &back).ok());
   EXPECT_EQ(back.board.axis[1].direction_hysteresis_steps, 1);
@@ -70,6 +79,7 @@ TEST(SettingsRecord, KeepsTheDirectionSwitchAccelerationAndReadsVersion3Records)
   EXPECT_EQ(back.board.axis[2].direction_switch_accel_steps_s2, 0x01020304u);
   EXPECT_EQ(back.board.axis[2].direction_hysteresis_steps, 1);
   rec[4] = 3;
+  OldSize(rec);
   rec[at] = rec[at + 1] = rec[at + 2] = rec[at + 3] = 0;
   ASSERT_TRUE(DeserializeSettings(rec, sizeof rec, &back).ok());
   EXPECT_EQ(back.board.axis[2].direction_switch_accel_steps_s2,
@@ -210,6 +220,82 @@ TEST(BoardSettings, TheNodeSettingsAreCheckedBeforeTheInstallation) {
   EXPECT_FALSE(ValidateSettings(s, &f).ok());
   EXPECT_EQ(f.rule, ConfigRule::kDriveKeepsUp);
   EXPECT_EQ(f.axis, 2);
+}
+
+}  // namespace
+}  // namespace volcomp
+
+namespace volcomp {
+namespace {
+
+// Version 5 appends the TPDOs' parameters to the version-4 record (416 bytes), 44 bytes each:
+// COB-ID LE32, transmission type, number mapped, inhibit LE16, event timer LE16, 2 reserved, the
+// 8 mapping entries LE32. A version-4 record (416 bytes, all a board before the PDOs stored) still
+// loads, with the default PDOs.
+TEST(SettingsRecord, KeepsTheTpdosAndReadsVersion4Records) {
+  EXPECT_EQ(kSettingsBytesV4, 416u);
+  EXPECT_EQ(kSettingsBytes, 416u + 2 * 44);
+  BoardSettings s;
+  s.tpdo[1].cob_id = 0x80000391;
+  s.tpdo[1].transmission_type = 255;
+  s.tpdo[1].inhibit_100us = 0x0304;
+  s.tpdo[1].event_timer_ms = 0x0506;
+  s.tpdo[1].mapped = 1;
+  s.tpdo[1].mapping[0] = 0x21220010;
+  s.tpdo[1].mapping[7] = 0x0A0B0C0D;
+  uint8_t rec[kSettingsBytes];
+  SerializeSettings(s, rec);
+  EXPECT_EQ(rec[6] | rec[7] << 8, 504);
+  const size_t t1 = 416, t2 = 416 + 44;
+  EXPECT_EQ(rec[t1 + 0], 0x80);  // TPDO1's default, stored form 0x180: base + node-ID
+  EXPECT_EQ(rec[t1 + 1], 0x01);
+  EXPECT_EQ(rec[t1 + 4], 254);
+  EXPECT_EQ(rec[t1 + 5], 5);
+  EXPECT_EQ(rec[t1 + 6], 200);    // inhibit 200 x 100 us
+  EXPECT_EQ(rec[t1 + 8], 100);    // event timer 100 ms
+  EXPECT_EQ(rec[t1 + 12], 0x10);  // 0x2122:0, 16 bits
+  EXPECT_EQ(rec[t1 + 14], 0x22);
+  EXPECT_EQ(rec[t1 + 15], 0x21);
+  EXPECT_EQ(rec[t2 + 0], 0x91);
+  EXPECT_EQ(rec[t2 + 1], 0x03);
+  EXPECT_EQ(rec[t2 + 3], 0x80);
+  EXPECT_EQ(rec[t2 + 4], 255);
+  EXPECT_EQ(rec[t2 + 5], 1);
+  EXPECT_EQ(rec[t2 + 6], 0x04);
+  EXPECT_EQ(rec[t2 + 7], 0x03);
+  EXPECT_EQ(rec[t2 + 8], 0x06);
+  EXPECT_EQ(rec[t2 + 9], 0x05);
+  EXPECT_EQ(rec[t2 + 12 + 28], 0x0D);
+  EXPECT_EQ(rec[t2 + 12 + 31], 0x0A);
+  BoardSettings back;
+  ASSERT_TRUE(DeserializeSettings(rec, sizeof rec, &back).ok());
+  EXPECT_EQ(back.tpdo[1].cob_id, 0x80000391u);
+  EXPECT_EQ(back.tpdo[1].transmission_type, 255);
+  EXPECT_EQ(back.tpdo[1].inhibit_100us, 0x0304);
+  EXPECT_EQ(back.tpdo[1].event_timer_ms, 0x0506);
+  EXPECT_EQ(back.tpdo[1].mapped, 1);
+  EXPECT_EQ(back.tpdo[1].mapping[7], 0x0A0B0C0Du);
+  EXPECT_EQ(back.tpdo[0].cob_id, 0x180u);
+  // More than 8 mapped: not a record this firmware wrote.
+  rec[t2 + 5] = 9;
+  EXPECT_FALSE(DeserializeSettings(rec, sizeof rec, &back).ok());
+  // The same record as version 4 stored it: 416 bytes, its size field 416.
+  rec[4] = 4;
+  OldSize(rec);
+  BoardSettings old;
+  ASSERT_TRUE(DeserializeSettings(rec, kSettingsBytesV4, &old).ok());
+  EXPECT_EQ(old.tpdo[1].cob_id, 0x280u);
+  EXPECT_EQ(old.tpdo[1].transmission_type, 254);
+  EXPECT_EQ(old.tpdo[1].inhibit_100us, 200);
+  EXPECT_EQ(old.tpdo[1].event_timer_ms, 100);
+  EXPECT_EQ(old.tpdo[1].mapped, 4);
+  EXPECT_EQ(old.tpdo[1].mapping[0], 0x21380310u);  // 0x2138:3, I16
+  EXPECT_EQ(old.tpdo[0].mapping[1], 0x21250008u);
+  // A version-5 record cut to the old length is not taken.
+  rec[4] = 5;
+  rec[6] = static_cast<uint8_t>(kSettingsBytes & 0xFF);
+  rec[7] = static_cast<uint8_t>(kSettingsBytes >> 8);
+  EXPECT_FALSE(DeserializeSettings(rec, kSettingsBytesV4, &old).ok());
 }
 
 }  // namespace

@@ -121,8 +121,7 @@ class BoardApp final : private BoardControl {
     stored_status_ = tables_.Init(dev_.table_flash, bank);
     if (stored_status_.ok()) stored_status_ = ActivateStored();
     if (dev_.can != nullptr) {
-      node_.Start(settings_.node_id, &objects_, NowMs(),
-                  {settings_.heartbeat_ms, settings_.emcy_inhibit_100us}, options.sdo);
+      node_.Start(settings_.node_id, &objects_, NowMs(), CommunicationOf(settings_), options.sdo);
       if (!config_status_.ok()) {
         uint8_t m[5];
         canopen::EncodeConfigRefused(config_status_.error(), config_refused_by_, m);
@@ -362,7 +361,7 @@ class BoardApp final : private BoardControl {
         Start(BoardSettings(defaults_), AppOptions(options_)).IgnoreError();
         break;
       case canopen::ResetRequest::kCommunication:
-        node_.ResetCommunication(now);  // the stored 0x1015 / 0x1017 back in force
+        node_.ResetCommunication(now);  // the stored 0x1015 / 0x1017 / TPDOs back in force
         break;
       case canopen::ResetRequest::kNone:
         break;

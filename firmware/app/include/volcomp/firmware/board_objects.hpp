@@ -26,6 +26,16 @@
 
 namespace volcomp::firmware {
 
+/// The node's communication parameters in `s` (0x1015, 0x1017, the TPDOs): what a start puts in
+/// force and what a reset communication restores.
+inline canopen::CommunicationParameters CommunicationOf(const BoardSettings& s) {
+  canopen::CommunicationParameters c;
+  c.heartbeat_ms = s.heartbeat_ms;
+  c.emcy_inhibit_100us = s.emcy_inhibit_100us;
+  for (uint8_t n = 0; n < kTpdoCount; ++n) c.tpdo[n] = s.tpdo[n];
+  return c;
+}
+
 // 0x1008-0x100A (canopen/identity.hpp): a port names its hardware with canopen::HardwareVersion.
 struct IdentityInfo {
   const char* device_name = canopen::kDeviceNameText;
@@ -92,6 +102,13 @@ class BoardObjects : public canopen::ObjectValues {
   uint32_t max_backlog(uint8_t a) const {
     return parts_.control->output_status().max_backlog_steps[a];
   }
+  /// 0x2125 / 0x2126: the axes clamped / rate limited now (bit a-1 for axis a: 0x2134's flags
+  /// gathered, for a TPDO).
+  uint8_t clamped_axes() const { return clamped_mask_; }
+  uint8_t rate_limited_axes() const { return limited_mask_; }
+  /// 0x2138: the applied correction (0x2131, q8) rounded to whole steps (half away from zero),
+  /// saturated at +-32767: the TPDOs' 16-bit form of it.
+  int16_t correction_steps(uint8_t a) const;
   /// 0x2134:a+1 (canopen::CorrectionLimitBit) of axis `a`.
   uint8_t correction_limited(uint8_t a) const;
   uint32_t clamped_refreshes(uint8_t a) const {

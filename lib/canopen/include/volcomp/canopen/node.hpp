@@ -1,6 +1,7 @@
 // CiA 301 node over one CAN channel with the pre-defined connection set: NMT slave, heartbeat and
-// EMCY producers (inhibit time 0x1015 in 100 us units), error register and history, and the SDO
-// server. The node answers the communication objects itself and passes every other object to
+// EMCY producers (inhibit time 0x1015 in 100 us units), error register and history, the SDO
+// server and the transmit PDOs (0x1800+n / 0x1A00+n, tpdo.hpp; sampled by Poll() in NMT
+// operational). The node answers the communication objects itself and passes every other object to
 // the application's ObjectValues; frames out are drained with PopTx(). Single-threaded (main
 // loop). States, objects, EMCY queueing and frame order: docs/canopen.md, "Node".
 #pragma once
@@ -11,6 +12,7 @@
 #include "volcomp/canopen/node_defaults.hpp"
 #include "volcomp/canopen/object_values.hpp"
 #include "volcomp/canopen/sdo_server.hpp"
+#include "volcomp/canopen/tpdo.hpp"
 
 namespace volcomp::canopen {
 
@@ -37,9 +39,16 @@ enum class ResetRequest : uint8_t { kNone, kNode, kCommunication };
 struct CommunicationParameters {
   uint16_t heartbeat_ms = kDefaultHeartbeatMs;             // 0x1017 (0 = off)
   uint16_t emcy_inhibit_100us = kDefaultEmcyInhibit100us;  // 0x1015 (0 = no inhibit)
+  /// 0x1800+n / 0x1A00+n, COB-IDs in stored form (board_settings.hpp PdoSettings: the bare
+  /// pre-defined base 0x180 / 0x280 means base + node-ID).
+  TpdoParameters tpdo[kTpdoCount] = {::volcomp::DefaultTpdo(0), ::volcomp::DefaultTpdo(1)};
 };
 
+/// The pre-defined CAN-ID base of TPDO n (CiA 301: 0x180, 0x280, 0x380, 0x480 + node-ID).
+constexpr uint32_t TpdoCobBase(uint8_t n) { return 0x180u + 0x100u * n; }
+
 inline constexpr uint8_t kEmcyQueueLength = 8;
+using ::volcomp::kTpdoCount;
 
 /// COB-IDs of the pre-defined connection set (EMCY and heartbeat: + node-ID; SDO:
 /// sdo_protocol.hpp).
@@ -125,6 +134,11 @@ class Node : private ObjectValues {
   uint32_t DoDomainWriteWindow() override;
   SdoAbort DoDomainWriteFlush(bool* done) override;
   bool ReadCommunication(const ObjectEntry& e, uint32_t* value) const;
+  // 0x1800+n / 0x1A00+n writes (CiA 301 rules); false when `e` is no TPDO object.
+  bool WriteTpdo(const ObjectEntry& e, uint32_t value, SdoAbort* result);
+  // TPDO n's parameters in force, its COB-ID resolved with the node-ID, to its engine.
+  void ConfigureTpdo(uint8_t n);
+  uint32_t TpdoCobId(uint8_t n) const;
   void Boot(uint32_t now_ms);
   void QueueUrgent(const CanFrame& f);
   void QueueEmcy(const CanFrame& f);
@@ -155,6 +169,9 @@ class Node : private ObjectValues {
   uint32_t emcy_suppressed_ = 0;
   uint32_t malformed_ = 0;
   uint32_t reported_aborts_ = 0;
+  Tpdo tpdo_[kTpdoCount];
+  CanFrame pdo_tx_[kTpdoCount];  // a frame each TPDO has due, waiting for PopTx
+  uint8_t pdo_waiting_ = 0;      // bit n: pdo_tx_[n] waits
 };
 
 }  // namespace volcomp::canopen

@@ -2,18 +2,19 @@
 // (0x1A00+n), the mapped values sampled through ObjectValues, and when a frame is due:
 // transmission types 254/255 (event-driven, the only ones a node without SYNC offers), sent on a
 // change of the mapped bytes once the inhibit time has passed, and on the event timer; only in
-// NMT operational. Single-threaded (main loop); no heap. Not yet wired into the node's
-// dictionary: docs/canopen.md, "PDOs".
+// NMT operational. Single-threaded (main loop); no heap. The node (node.hpp) owns the board's
+// TPDOs and serves their objects: docs/canopen.md, "PDOs".
 #pragma once
 
 #include <cstdint>
 
 #include "volcomp/can/can_frame.hpp"
 #include "volcomp/canopen/object_values.hpp"
+#include "volcomp/config/board_settings.hpp"
 
 namespace volcomp::canopen {
 
-inline constexpr uint8_t kPdoMaxMapped = 8;
+using ::volcomp::kPdoMaxMapped;
 inline constexpr uint32_t kPdoCobIdInvalid = 0x80000000u;  // bit 31: the PDO does not exist
 inline constexpr uint32_t kPdoCobIdNoRtr = 0x40000000u;    // bit 30: no RTR allowed
 inline constexpr uint8_t kPdoEventDrivenManufacturer = 254;
@@ -24,18 +25,16 @@ constexpr uint32_t PdoMapping(uint16_t index, uint8_t sub, uint8_t bits) {
   return uint32_t{index} << 16 | uint32_t{sub} << 8 | bits;
 }
 
-struct TpdoParameters {
-  uint32_t cob_id = kPdoCobIdInvalid;                       // :1, bits 10..0 the CAN-ID
-  uint8_t transmission_type = kPdoEventDrivenManufacturer;  // :2
-  uint16_t inhibit_100us = 0;                               // :3 (0 = none)
-  uint16_t event_timer_ms = 0;                              // :5 (0 = off)
-  uint8_t mapped = 0;                                       // 0x1A00+n:0
-  uint32_t mapping[kPdoMaxMapped] = {};
-};
+/// The parameters (lib/config board_settings.hpp, where the board stores them): cob_id :1 (bits
+/// 10..0 the CAN-ID, bit 31 kPdoCobIdInvalid), transmission_type :2, inhibit_100us :3 (0 =
+/// none), event_timer_ms :5 (0 = off), mapped (0x1A00+n:0) and mapping[] (0x1A00+n:1..8). A
+/// default-constructed one does not exist (bit 31 set, nothing mapped).
+using TpdoParameters = ::volcomp::PdoSettings;
 
-/// kNone when every mapping entry names a readable numeric (sub-)entry of the dictionary with
-/// its size in bits and the entries fit 8 bytes; else the CiA 301 abort a write making it so
-/// gets (0x06040041 cannot be mapped, 0x06040042 exceeds the PDO length).
+/// kNone when every mapping entry names a mappable (sub-)entry of the dictionary
+/// (ObjectEntry::pdo_mappable: a produced ro numeric value) with its size in bits and the entries
+/// fit 8 bytes; else the CiA 301 abort a write making it so gets (0x06040041 cannot be mapped,
+/// 0x06040042 exceeds the PDO length).
 SdoAbort CheckTpdoMapping(const TpdoParameters& p);
 
 class Tpdo {
@@ -43,6 +42,9 @@ class Tpdo {
   /// New parameters in force (the timers restart: the next due frame is sent at once).
   void Configure(const TpdoParameters& p);
   const TpdoParameters& parameters() const { return p_; }
+  /// The next due frame is sent at once (entering NMT operational: the caller need not Poll()
+  /// outside operational).
+  void Restart() { sent_once_ = false; }
   /// The frame due at `now_ms`, if any: the PDO valid, `operational`, and either the mapped bytes
   /// changed since the last frame sent or the event timer elapsed, never sooner than the inhibit
   /// time after the last one. The values are read through `values`; a read that fails sends
@@ -53,6 +55,7 @@ class Tpdo {
   bool Sample(ObjectValues& values, uint8_t data[8], uint8_t* dlc) const;
 
   TpdoParameters p_;
+  const ObjectEntry* entries_[kPdoMaxMapped] = {};  // of p_.mapping, found once by Configure()
   bool sent_once_ = false;
   uint32_t last_sent_ms_ = 0;
   uint8_t last_data_[8] = {};

@@ -25,12 +25,56 @@ inline constexpr uint16_t kDefaultHeartbeatMs = 1000;  // 0x1017 (0 = off)
 /// to 100 frames/s while the first EMCY after a quiet spell still leaves at once.
 inline constexpr uint16_t kDefaultEmcyInhibit100us = 100;
 
+/// A PDO's CiA 301 parameters as stored (0x1800+n / 0x1A00+n for a TPDO). `cob_id` in stored
+/// form: an 11-bit CAN-ID equal to the pre-defined base (0x180, 0x280, 0x200 ...: node-ID 0, which
+/// no node has) means "base + the node-ID in force", so a stored default follows a node-ID change
+/// (CiA 301 pre-defined connection set); any other value is the CAN-ID itself.
+inline constexpr uint8_t kPdoMaxMapped = 8;
+struct PdoSettings {
+  uint32_t cob_id = 0x80000000u;         // :1, bit 31 set: the PDO does not exist
+  uint8_t transmission_type = 254;       // :2 (254/255: event-driven)
+  uint16_t inhibit_100us = 0;            // :3 (0 = none)
+  uint16_t event_timer_ms = 0;           // :5 (0 = off)
+  uint8_t mapped = 0;                    // 0x1A00+n:0
+  uint32_t mapping[kPdoMaxMapped] = {};  // index << 16 | sub << 8 | length in bits
+};
+
+/// The board's transmit PDOs (docs/canopen.md, "PDOs"): their defaults.
+inline constexpr uint8_t kTpdoCount = 2;
+inline constexpr uint16_t kDefaultTpdoInhibit100us = 200;  // 20 ms
+inline constexpr uint16_t kDefaultTpdoEventTimerMs = 100;
+/// TPDO1 (COB-ID 0x180 + node-ID): device state 0x2122 (U16), clamped axes 0x2125 (U8), rate-
+/// limited axes 0x2126 (U8), applied correction steps 0x2138:1-2 (I16 each). TPDO2 (0x280 +
+/// node-ID): 0x2138:3-6.
+constexpr PdoSettings DefaultTpdo(uint8_t n) {
+  PdoSettings p;
+  p.transmission_type = 254;
+  p.inhibit_100us = kDefaultTpdoInhibit100us;
+  p.event_timer_ms = kDefaultTpdoEventTimerMs;
+  constexpr uint32_t kCorrection = 0x2138u << 16 | 16u;  // 0x2138:sub, I16
+  if (n == 0) {
+    p.cob_id = 0x180;  // + node-ID (stored form)
+    p.mapped = 5;
+    p.mapping[0] = 0x2122u << 16 | 16u;  // device state, U16
+    p.mapping[1] = 0x2125u << 16 | 8u;   // clamped axes, U8
+    p.mapping[2] = 0x2126u << 16 | 8u;   // rate-limited axes, U8
+    p.mapping[3] = kCorrection | 1u << 8;
+    p.mapping[4] = kCorrection | 2u << 8;
+  } else {
+    p.cob_id = 0x280;
+    p.mapped = 4;
+    for (uint32_t a = 0; a < 4; ++a) p.mapping[a] = kCorrection | (3u + a) << 8;
+  }
+  return p;
+}
+
 struct BoardSettings {
   BoardConfig board = DefaultBoardConfig();
-  uint8_t node_id = kDefaultNodeId;                        // 1..127
-  uint16_t bitrate_kbit = kDefaultBitrateKbit;             // 10..1000
-  uint16_t heartbeat_ms = kDefaultHeartbeatMs;             // 0x1017, 0 = off
-  uint16_t emcy_inhibit_100us = kDefaultEmcyInhibit100us;  // 0x1015, 0 = no inhibit
+  uint8_t node_id = kDefaultNodeId;                                 // 1..127
+  uint16_t bitrate_kbit = kDefaultBitrateKbit;                      // 10..1000
+  uint16_t heartbeat_ms = kDefaultHeartbeatMs;                      // 0x1017, 0 = off
+  uint16_t emcy_inhibit_100us = kDefaultEmcyInhibit100us;           // 0x1015, 0 = no inhibit
+  PdoSettings tpdo[kTpdoCount] = {DefaultTpdo(0), DefaultTpdo(1)};  // 0x1800+n, 0x1A00+n
 };
 
 /// What drives the board's axes, for the rules that concern one kind of output stage only.
@@ -48,12 +92,16 @@ Status ValidateSettings(const BoardSettings& s,
                         OutputStage stage = OutputStage::kAny);
 
 /// Serialized size of a BoardSettings record.
-inline constexpr uint32_t kSettingsBytes = 24 + table::kMaxAxes * 64 + 8;
+/// (Records of version 4 and older are kSettingsBytesV4 long: no PDO parameters.)
+inline constexpr uint32_t kPdoRecordBytes = 44;
+inline constexpr uint32_t kSettingsBytesV4 = 24 + table::kMaxAxes * 64 + 8;
+inline constexpr uint32_t kSettingsBytes = kSettingsBytesV4 + kTpdoCount * kPdoRecordBytes;
 
 /// Writes `s` into out[0, kSettingsBytes) (little-endian, versioned).
 void SerializeSettings(const BoardSettings& s, uint8_t* out);
 /// Reads and validates a record; kConfigInvalid for a record of another version or out of range.
-/// A version-1 record (before 0x1015 was stored) gives the default EMCY inhibit time.
+/// A version-1 record (before 0x1015 was stored) gives the default EMCY inhibit time; a record of
+/// version 4 or older (kSettingsBytesV4 long, before the PDOs) gives the default PDOs.
 Status DeserializeSettings(const uint8_t* in, uint32_t size, BoardSettings* s);
 
 }  // namespace volcomp
