@@ -172,8 +172,8 @@ std::vector<std::string> HomeOutsideLattice(const table::TableView& v, const Boa
                   "[axis %c]: the home position %lld steps (%.4f %s), where the board references, "
                   "lies outside the table's %c range %.4f..%.4f %s: the board holds the edge "
                   "value there (build the lattice over the whole travel and the home)",
-                  ax.name, static_cast<long long>(home), home * u, unit, ax.name, first * u,
-                  last * u, unit);
+                  ax.name, static_cast<long long>(home), static_cast<double>(home) * u, unit,
+                  ax.name, static_cast<double>(first) * u, static_cast<double>(last) * u, unit);
     out.push_back(b);
   }
   return out;

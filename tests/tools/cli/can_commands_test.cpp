@@ -314,7 +314,9 @@ TEST_F(CanCommands, ConfigApplySaysWhyTheBoardRefusesAPulseTimingAndUndoesTheEdi
   const JsonValue after = Json(Run({"config", "show", "--json"}));
   EXPECT_FALSE(after.get("settings_pending")->boolean);
   for (const JsonValue& x : after.get("objects")->array) {
-    if (x.get("object")->string == "201D:1") EXPECT_EQ(x.get("value")->integer, 2000000);
+    if (x.get("object")->string == "201D:1") {
+      EXPECT_EQ(x.get("value")->integer, 2000000);
+    }
   }
   ASSERT_TRUE(tools::WriteTextFile(ini, file(200000)).ok());
   const CliResult applied = Run({"config", "apply", ini});
