@@ -71,7 +71,9 @@ for t in "${targets[@]}"; do
   [[ $workers -gt 1 ]] && logs=("$dir"/fuzz-*.log)
   runs=$(cat "${logs[@]}" | sed -n 's/^stat::number_of_executed_units: *//p' | awk '{s += $1} END {print s + 0}')
   cov=$(cat "${logs[@]}" | grep -o 'cov: [0-9]*' | awk '{if ($2 > m) m = $2} END {print m + 0}')
-  cpu=$(awk '{printf "%.1f", $1 + $2}' "$dir/cpu.txt")
+  # The last line: /usr/bin/time writes "Command exited with non-zero status N" before it when
+  # libFuzzer stops on a finding or an interrupt.
+  cpu=$(tail -n 1 "$dir/cpu.txt" | awk '{printf "%.1f", $1 + $2}')
   crashes=$(find "$dir" -maxdepth 1 -name 'crash-*' -o -maxdepth 1 -name 'leak-*' -o -maxdepth 1 -name 'timeout-*' -o -maxdepth 1 -name 'oom-*' | wc -l)
   corpus=$(find "$dir/corpus" -type f | wc -l)
   per_cpu=$(awk -v r="$runs" -v c="$cpu" 'BEGIN { printf "%d", (c > 0 ? r / c : 0) }')
