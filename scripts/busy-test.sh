@@ -3,7 +3,8 @@
 # priority for the whole run, as another user's build would (issue 27 item 7: the tests must hold
 # while two other CPU-bound processes run). Repeats it RUNS times (default 1) and stops at the
 # first failure. One line per run on stdout and in LOG (default build/busy-test.log): start, end,
-# wall seconds, exit status, the 1-minute load average at the end.
+# wall seconds, exit status, the 1-minute load average at the end; the same figures as one JSON
+# object per line in LOG with .jsonl in place of .log (for scripts).
 #
 #   scripts/busy-test.sh [--hogs N] [--runs N] [--log FILE] [-- COMMAND...]
 #
@@ -53,5 +54,8 @@ for ((run = 1; run <= runs; ++run)); do
   load=$(cut -d' ' -f1 /proc/loadavg)
   line="run $run/$runs hogs $hogs: $(date -u -d "@$start" +%FT%TZ) .. $(date -u -d "@$end" +%FT%TZ) wall $((end - start)) s exit $status load $load: ${cmd[*]}"
   echo "$line" | tee -a "$log"
+  printf '{"run": %d, "runs": %d, "hogs": %d, "start": "%s", "end": "%s", "wall_s": %d, "exit": %d, "load_1min": %s, "command": "%s"}\n' \
+    "$run" "$runs" "$hogs" "$(date -u -d "@$start" +%FT%TZ)" "$(date -u -d "@$end" +%FT%TZ)" \
+    "$((end - start))" "$status" "$load" "${cmd[*]//\"/\\\"}" >>"${log%.log}.jsonl"
   [[ $status -eq 0 ]] || exit "$status"
 done

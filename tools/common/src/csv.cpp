@@ -276,7 +276,7 @@ Expected<long long> CsvRow::Integer(const std::string& column) const {
 
 Expected<std::optional<double>> CsvRow::OptionalNumber(const std::string& column) const {
   const auto c = meta_->find(column);
-  if (!c || Trim(fields_[*c]).empty()) return std::optional<double>();
+  if (!c || Trimmed(fields_[*c]).empty()) return std::optional<double>();
   VOLCOMP_TRY_ASSIGN(const double v, Number(*c));
   return std::optional<double>(v);
 }
