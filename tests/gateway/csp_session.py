@@ -137,8 +137,10 @@ class Session:
         else:
             self.frames_checked += 1
 
-    def recv_on(self, bus, want, timeout=1.0):
-        """Next frame on `bus` matching want(msg); other frames on the drive bus are recorded."""
+    def recv_on(self, bus, want, timeout=5.0):
+        """Next frame on `bus` matching want(msg); other frames on the drive bus are recorded.
+        Every caller expects the frame: the timeout only bounds a failure, and is long because a
+        user-mode-linux guest on a loaded host stalls as a whole for seconds (see uml_lib.sh)."""
         end = time.monotonic() + timeout
         while True:
             left = end - time.monotonic()
@@ -303,6 +305,8 @@ def main():
     ap.add_argument("--table", required=True, help="table image to upload")
     ap.add_argument("--grid-csv", required=True, help="write the grid CSV here and exit")
     ap.add_argument("--write-grid-only", action="store_true")
+    ap.add_argument("--timeout-ms", type=int, default=1000,
+                    help="the PC tool's SDO timeout for every command of the session")
     ap.add_argument("--stall-first-attempt-s", type=float, default=0.0,
                     help="stall the master this long during the first 'activation while moving' "
                     "(tests the session's own retry path; the board then rightly accepts)")
@@ -322,7 +326,7 @@ def main():
 def run(s, grid, args):
     s.last_sent = list(HOME)
     tool = [args.volcomp]
-    can_opt = ["--can", "socketcan:" + args.cnc]
+    can_opt = ["--can", "socketcan:" + args.cnc, "--timeout-ms", str(args.timeout_ms)]
 
     def around(center, amp, period):
         # A triangular back-and-forth motion around `center` (amp increments).

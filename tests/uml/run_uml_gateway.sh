@@ -95,7 +95,7 @@ rc=1
   $fw --config board.conf --ready-file ready --stats stats.json > fw.log 2>&1 &
   board=\$!
   for i in \$(seq 100); do [ -s ready ] && break; sleep 0.05; done
-  /usr/bin/python3 $session --volcomp $volcomp --table table.vct --grid-csv grid-check.csv ${VOLCOMP_UML_SESSION_ARGS:-}
+  /usr/bin/python3 $session --volcomp $volcomp --table table.vct --grid-csv grid-check.csv --timeout-ms $uml_sdo_timeout_ms ${VOLCOMP_UML_SESSION_ARGS:-}
   kill -TERM \$board
   wait \$board
   echo "firmware exit code \$?"
@@ -105,7 +105,7 @@ rc=1
 INIT
 uml_init_epilogue "$work"
 } >"$work/init.sh"
-uml_boot 90 "$work"
+uml_boot 240 "$work"
 cp -f "$work/candump.log" "$artifacts/uml-gateway-candump.log" 2>/dev/null || true
 cp -f "$work/stats.json" "$artifacts/uml-gateway-stats.json" 2>/dev/null || true
 if grep -qi drop "$work/candump.err" 2>/dev/null; then

@@ -25,18 +25,18 @@ rc=1
   $sim node --socketcan vcan0 --ready-file $work/ready --duration 50 > $work/node.log 2>&1 &
   node=\$!
   for i in \$(seq 100); do [ -s $work/ready ] && break; sleep 0.05; done
-  $volcomp upload $work/table.vct --can socketcan:vcan0 --quiet
-  $volcomp reference --can socketcan:vcan0 --axes 1,2,3
+  $volcomp upload $work/table.vct --can socketcan:vcan0 --timeout-ms $uml_sdo_timeout_ms --quiet
+  $volcomp reference --can socketcan:vcan0 --timeout-ms $uml_sdo_timeout_ms --axes 1,2,3
   sleep 0.3
-  $volcomp activate --can socketcan:vcan0
-  $volcomp verify $work/table.vct --can socketcan:vcan0 --readback
-  $volcomp status --can socketcan:vcan0
+  $volcomp activate --can socketcan:vcan0 --timeout-ms $uml_sdo_timeout_ms
+  $volcomp verify $work/table.vct --can socketcan:vcan0 --timeout-ms $uml_sdo_timeout_ms --readback
+  $volcomp status --can socketcan:vcan0 --timeout-ms $uml_sdo_timeout_ms
   kill \$node; kill \$dump
 ) > $work/session.log 2>&1 && rc=0
 INIT
 uml_init_epilogue "$work"
 } >"$work/init.sh"
-uml_boot 60 "$work"
+uml_boot 150 "$work"
 cp -f "$work/candump.log" "$artifacts/uml-candump.log" 2>/dev/null || true
 cat "$work/session.log" 2>/dev/null || true
 echo "user-mode-linux run: $uml_ms ms; candump log: $artifacts/uml-candump.log ($(wc -l < "$artifacts/uml-candump.log" 2>/dev/null || echo 0) frames)"

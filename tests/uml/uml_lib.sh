@@ -2,6 +2,13 @@
 # modules, write the common start of the guest's init script, boot the guest, report its result.
 # The guest runs with the host filesystem as root, so the scripts' paths work inside it.
 
+# The PC tool's SDO timeout inside the guest. A user-mode-linux guest is one ordinary host process:
+# on a loaded machine it stalls as a whole, once for 2 s in CI (uml_can_gateway, 2026-11-28: the
+# upload's first SDO read timed out at the default 1000 ms while the session's own cycle loop saw a
+# 2006 ms gap). Those stalls are the emulator's, not the board's, so the sessions give every tool
+# command this much; the board's real timing is measured on the host (gateway latency, cycle rows).
+uml_sdo_timeout_ms=10000
+
 # Sets $uml (the kernel) and $mods (its module tree) or stops with what to install.
 uml_require() {
   uml=$(command -v linux.uml || true)
