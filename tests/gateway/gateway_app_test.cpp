@@ -356,6 +356,34 @@ TEST_F(GatewayAppTest, NmtReachesDrivesAndNode) {
   EXPECT_TRUE(m_.drv_.TakeSent().empty());
 }
 
+// The board's RPDO (0x200 + node-ID, the command word) on the controller bus is the board's, like
+// its SDO requests: it reaches the node (in operational) and not the drives.
+TEST_F(GatewayAppTest, TheBoardsRpdoReachesTheNodeNotTheDrives) {
+  ASSERT_TRUE(m_.Start().ok());
+  CanFrame nmt;
+  nmt.id = 0x000;
+  nmt.dlc = 2;
+  nmt.data[0] = 0x01;
+  m_.app_.OnControllerFrame(nmt);
+  m_.app_.Poll();
+  m_.drv_.TakeSent();
+  CanFrame rpdo;
+  rpdo.id = 0x200 + kNode;
+  rpdo.dlc = 2;
+  rpdo.data[0] = 0x07;  // reference axes 1-3
+  EXPECT_EQ(m_.app_.OnControllerFrame(rpdo), gateway::Route::kLocal);
+  m_.app_.Poll();
+  EXPECT_EQ(m_.app_.app().node().rpdo_received(), 1u);
+  EXPECT_TRUE(m_.drv_.TakeSent().empty());
+  m_.Cycle();
+  EXPECT_TRUE(m_.app_.app().control_tick().all_referenced());
+  // Another node's RPDO goes to the drives as before.
+  rpdo.id = 0x201;
+  rpdo.dlc = 2;
+  EXPECT_EQ(m_.app_.OnControllerFrame(rpdo), gateway::Route::kForward);
+  EXPECT_EQ(m_.drv_.TakeSent().size(), 1u);
+}
+
 TEST_F(GatewayAppTest, DriveFramesWithTheBoardsCobIdsAreDropped) {
   ASSERT_TRUE(m_.Start().ok());
   m_.cnc_.TakeSent();

@@ -44,6 +44,18 @@ TEST(Eds, CheckedInFileMatchesTheObjectDictionary) {
             std::string::npos);
   EXPECT_NE(eds.find("AccessType=rw\nDefaultValue=$NODEID+0x180\nPDOMapping=0"), std::string::npos);
   EXPECT_NE(eds.find("NrOfTXPDO=2\n"), std::string::npos);
+  // The RPDO: its COB-ID follows the node-ID, its static mapping names the command word, the one
+  // rw object an RPDO carries.
+  EXPECT_NE(eds.find("NrOfRXPDO=1\n"), std::string::npos);
+  EXPECT_NE(eds.find("[1400sub1]\nParameterName=COB-ID used by RPDO\nObjectType=0x7\n"
+                     "DataType=0x0007\nAccessType=rw\nDefaultValue=$NODEID+0x200\nPDOMapping=0"),
+            std::string::npos);
+  EXPECT_NE(eds.find("[1600sub1]\nParameterName=Application object 1\nObjectType=0x7\n"
+                     "DataType=0x0007\nAccessType=const\nDefaultValue=0x21270010\nPDOMapping=0"),
+            std::string::npos);
+  EXPECT_NE(eds.find("[2127]\nParameterName=Command word\nObjectType=0x7\nDataType=0x0006\n"
+                     "AccessType=rw\nDefaultValue=0x0000\nPDOMapping=1"),
+            std::string::npos);
 }
 
 std::string CheckedInEds() {

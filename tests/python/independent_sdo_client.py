@@ -9,7 +9,10 @@ from the CiA 301 frame layout and the documented mapping (docs/canopen.md, "PDOs
 TPDO1 (0x180 + node-ID: device state U16, clamped axes U8, rate-limited axes U8, corrections of
 axes 1-2 as I16 steps) and TPDO2 (0x280 + node-ID: axes 3-6) decoded and compared with SDO reads of
 0x2122, 0x2125, 0x2126 and 0x2131 (q8), the event timer changed by SDO and its rate counted, TPDO2
-disabled by bit 31 of its COB-ID and enabled again. Exit code 0 on success.
+disabled by bit 31 of its COB-ID and enabled again. Then the receive PDO (0x200 + node-ID, the
+command word 0x2127, U16, bits acting on their rising edge): ignored in pre-operational;
+deactivate (bit 8) drops the active table; activate (bit 9) with nothing staged is refused with
+EMCY 0xFF10 carrying abort 0x08000024; a one-byte frame gives EMCY 0x8210. Exit code 0 on success.
 
 usage: independent_sdo_client.py CHANNEL IMAGE [--node 16]
   CHANNEL: socket://HOST:PORT (SLCAN over TCP) or a serial/pty path (SLCAN over a tty)
@@ -173,6 +176,46 @@ def check_pdos(c, bus, node):
     bus.send(can.Message(arbitration_id=0x000, data=bytes([0x80, node]), is_extended_id=False))
 
 
+def emcys(frames, node):
+    """The EMCYs among `frames` other than "error reset": (code, manufacturer bytes 3-7)."""
+    out = []
+    for _, cob, data in frames:
+        if cob == 0x80 + node and len(data) == 8:
+            code = struct.unpack_from("<H", data)[0]
+            if code != 0:
+                out.append((code, data[3:]))
+    return out
+
+
+def check_rpdo(c, bus, node):
+    rpdo = 0x200 + node
+    assert c.read(0x1400, 1) == rpdo, "RPDO1 COB-ID"
+    assert c.read(0x1600, 1) == 0x21270010, "RPDO1 mapping: 0x2127:0, 16 bits"
+
+    def send(word, dlc=2):
+        bus.send(can.Message(arbitration_id=rpdo, data=struct.pack("<H", word)[:dlc],
+                             is_extended_id=False))
+        return emcys(collect(bus, 0.3), node)
+
+    active = c.read(0x2104, 0)
+    assert active != 0, "no active table before the RPDO checks"
+    assert not send(0x0100), "an EMCY for an RPDO in pre-operational"
+    assert c.read(0x2104, 0) == active, "an RPDO acted in pre-operational"
+    bus.send(can.Message(arbitration_id=0x000, data=bytes([0x01, node]), is_extended_id=False))
+    time.sleep(0.1)
+    e = send(0x0100)  # deactivate rises
+    assert not e, "deactivation by RPDO refused: %s" % e
+    assert c.read(0x2104, 0) == 0, "the table is still active after the RPDO's deactivate"
+    assert c.read(0x2127, 0) == 0x0100, "0x2127 does not read the word taken"
+    e = send(0x0200)  # activate rises, nothing staged (the activation took it)
+    assert (0xFF10, struct.pack("<I", 0x08000024) + b"\0") in e, \
+        "no EMCY 0xFF10 with 0x08000024 for a refused activation: %s" % e
+    e = send(0x0000, dlc=1)
+    assert [x for x in e if x[0] == 0x8210], "no EMCY 0x8210 for a 1-byte RPDO: %s" % e
+    print("RPDO: deactivate acted, refused activate gave EMCY 0xFF10 0x08000024, short frame 0x8210")
+    bus.send(can.Message(arbitration_id=0x000, data=bytes([0x80, node]), is_extended_id=False))
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("channel")
@@ -217,6 +260,7 @@ def main():
         print("active CRC-32 0x%08X" % active)
         assert active == expected_crc, "active CRC-32 differs"
         check_pdos(c, bus, a.node)
+        check_rpdo(c, bus, a.node)
         print("independent client: OK")
         return 0
     finally:

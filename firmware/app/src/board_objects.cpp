@@ -85,6 +85,7 @@ BoardSettings BoardObjects::WithCommunication(BoardSettings s) const {
   s.heartbeat_ms = comm.heartbeat_ms;
   s.emcy_inhibit_100us = comm.emcy_inhibit_100us;
   for (uint8_t n = 0; n < kTpdoCount; ++n) s.tpdo[n] = comm.tpdo[n];
+  s.rpdo = comm.rpdo;
   return s;
 }
 
@@ -97,6 +98,7 @@ void BoardObjects::UpdateSettingsPending() {
   edited.heartbeat_ms = in_force.heartbeat_ms;
   edited.emcy_inhibit_100us = in_force.emcy_inhibit_100us;
   for (uint8_t n = 0; n < kTpdoCount; ++n) edited.tpdo[n] = in_force.tpdo[n];
+  edited.rpdo = in_force.rpdo;
   uint8_t a_bytes[kSettingsBytes], p_bytes[kSettingsBytes];
   SerializeSettings(in_force, a_bytes);
   SerializeSettings(edited, p_bytes);
@@ -322,6 +324,28 @@ SdoAbort BoardObjects::TableControl(uint8_t command) {
   return SdoAbort::kInvalidValue;
 }
 
+SdoAbort BoardObjects::CommandWord(uint16_t word) {
+  using canopen::kCommandActivate;
+  using canopen::kCommandDeactivate;
+  const uint16_t rising = static_cast<uint16_t>(word & ~command_word_);
+  if ((word & ~canopen::kCommandWordBits) != 0 ||
+      (rising & (kCommandActivate | kCommandDeactivate)) ==
+          (kCommandActivate | kCommandDeactivate)) {
+    return Refuse(SdoAbort::kInvalidValue);
+  }
+  command_word_ = word;
+  if ((rising & canopen::kCommandReferenceMask) != 0) {
+    parts_.policy->RequestReference(static_cast<uint8_t>(rising & canopen::kCommandReferenceMask));
+  }
+  if ((rising & kCommandDeactivate) != 0) {
+    return TableControl(static_cast<uint8_t>(canopen::TableCommand::kDeactivate));
+  }
+  if ((rising & kCommandActivate) != 0) {
+    return TableControl(static_cast<uint8_t>(canopen::TableCommand::kActivate));
+  }
+  return SdoAbort::kNone;
+}
+
 SdoAbort BoardObjects::StoreSettings() {
   // "Save all parameters" includes the communication parameters in force (0x1015, 0x1017, the
   // TPDOs' 0x1800+n / 0x1A00+n): they
@@ -351,6 +375,8 @@ SdoAbort BoardObjects::DoWrite(const ObjectEntry& e, const uint8_t* data, uint32
       return SdoAbort::kNone;
     case ObjectId::kTableControl:
       return TableControl(static_cast<uint8_t>(v));
+    case ObjectId::kCommandWord:
+      return CommandWord(static_cast<uint16_t>(v));
     case ObjectId::kStoreAll:
       if (!policy.writable()) return Refuse(SdoAbort::kCannotStore);
       if (v != canopen::kSaveSignature) return SdoAbort::kCannotStore;

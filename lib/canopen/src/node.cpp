@@ -18,6 +18,33 @@ uint32_t EmcyGapMs(uint16_t inhibit_100us) {
   return inhibit_100us == 0 ? 0u : (inhibit_100us + 9u) / 10u + 1u;
 }
 
+// The stored COB-ID form (board_settings.hpp PdoSettings): the bare base means base + node-ID.
+uint32_t ResolvedCobId(uint32_t stored, uint32_t base, uint8_t node_id) {
+  return (stored & 0x7FFu) == base ? stored + node_id : stored;
+}
+
+// CiA 301's rule for a write of a PDO's COB-ID (:1) given the one in force (`resolved`, whose
+// bit 31 says whether the PDO exists): only bit 31 changes while the PDO exists; 11-bit CAN-IDs
+// only (bits 29..11 clear), none of the restricted ones (0x000-0x07F, 0x101-0x180, 0x581-0x5FF,
+// 0x601-0x67F, 0x6E0-0x7FF) and not the bare pre-defined base (its stored form). The value to
+// store in *stored.
+bool AcceptCobId(uint32_t v, uint32_t resolved, uint32_t base, uint8_t node_id, uint32_t* stored) {
+  const uint32_t id = v & 0x7FFu;
+  const bool restricted = id <= 0x07F || (id >= 0x101 && id <= 0x180) ||
+                          (id >= 0x581 && id <= 0x5FF) || (id >= 0x601 && id <= 0x67F) ||
+                          id >= 0x6E0 || id == base;
+  if ((v & 0x3FFFF800u) != 0 || restricted) return false;
+  const bool valid = (resolved & kPdoCobIdInvalid) == 0;
+  if (valid && (v & ~kPdoCobIdInvalid) != (resolved & ~kPdoCobIdInvalid)) return false;
+  *stored = id == base + node_id ? (v & ~0x7FFu) | base : v;
+  return true;
+}
+
+// The transmission types the node offers (it has no SYNC consumer): event-driven only.
+bool EventDriven(uint32_t type) {
+  return type == kPdoEventDrivenManufacturer || type == kPdoEventDrivenProfile;
+}
+
 }  // namespace
 
 void Node::Start(uint8_t node_id,
@@ -128,8 +155,16 @@ void Node::OnFrame(const CanFrame& f, uint32_t now_ms) {
     }
     return;
   }
-  if (f.id == sdo::kRequestCobBase + node_id_ && state_ != NmtState::kStopped)
+  if (f.id == sdo::kRequestCobBase + node_id_ && state_ != NmtState::kStopped) {
     sdo_.OnFrame(f, now_ms);
+    return;
+  }
+  // RPDO1: only in operational, while it exists; a remote request for it is not served.
+  const uint32_t rpdo = RpdoCobId();
+  if (state_ == NmtState::kOperational && (rpdo & kPdoCobIdInvalid) == 0 && f.id == rpdo &&
+      !f.rtr) {
+    OnRpdo(f);
+  }
 }
 
 void Node::Poll(uint32_t now_ms) {
@@ -219,8 +254,11 @@ void Node::ReportEvent(uint16_t code, uint8_t register_bits, uint32_t detail) {
 }
 
 uint32_t Node::TpdoCobId(uint8_t n) const {
-  const uint32_t stored = comm_.tpdo[n].cob_id;
-  return (stored & 0x7FFu) == TpdoCobBase(n) ? stored + node_id_ : stored;
+  return ResolvedCobId(comm_.tpdo[n].cob_id, TpdoCobBase(n), node_id_);
+}
+
+uint32_t Node::RpdoCobId() const {
+  return ResolvedCobId(comm_.rpdo.cob_id, kRpdoCobBase, node_id_);
 }
 
 void Node::ConfigureTpdo(uint8_t n) {
@@ -240,31 +278,14 @@ bool Node::WriteTpdo(const ObjectEntry& e, uint32_t v, SdoAbort* result) {
   TpdoParameters next = p;
   if (comm) {
     switch (e.sub) {
-      case 1: {
-        // CiA 301: only bit 31 changes while the PDO exists; 11-bit CAN-IDs only (bit 29 clear),
-        // none of the restricted ones (0x000-0x07F, 0x101-0x180, 0x581-0x5FF, 0x601-0x67F,
-        // 0x6E0-0x6FF, 0x701-0x7FF) and not a bare pre-defined base (its stored form).
-        const uint32_t id = v & 0x7FFu;
-        const bool restricted = id <= 0x07F || (id >= 0x101 && id <= 0x180) ||
-                                (id >= 0x581 && id <= 0x5FF) || (id >= 0x601 && id <= 0x67F) ||
-                                id >= 0x6E0 || id == TpdoCobBase(n);
-        if ((v & 0x3FFFF800u) != 0 || restricted) {
+      case 1:
+        if (!AcceptCobId(v, TpdoCobId(n), TpdoCobBase(n), node_id_, &next.cob_id)) {
           *result = SdoAbort::kInvalidValue;
           return true;
         }
-        if (valid && (v & ~kPdoCobIdInvalid) != (TpdoCobId(n) & ~kPdoCobIdInvalid)) {
-          *result = SdoAbort::kInvalidValue;
-          return true;
-        }
-        next.cob_id = id == TpdoCobBase(n) + node_id_ ? (v & ~0x7FFu) | TpdoCobBase(n) : v;
         break;
-      }
       case 2:
-        if (v != kPdoEventDrivenManufacturer && v != kPdoEventDrivenProfile) {
-          *result = SdoAbort::kInvalidValue;  // no SYNC consumer: event-driven types only
-          return true;
-        }
-        if (valid && v != p.transmission_type) {
+        if (!EventDriven(v) || (valid && v != p.transmission_type)) {
           *result = SdoAbort::kInvalidValue;
           return true;
         }
@@ -304,7 +325,51 @@ bool Node::WriteTpdo(const ObjectEntry& e, uint32_t v, SdoAbort* result) {
   return true;
 }
 
+bool Node::WriteRpdo(const ObjectEntry& e, uint32_t v, SdoAbort* result) {
+  if (e.index != 0x1400) return false;
+  ::volcomp::PdoSettings& p = comm_.rpdo;
+  const bool valid = (p.cob_id & kPdoCobIdInvalid) == 0;
+  *result = SdoAbort::kNone;
+  if (e.sub == 1) {
+    uint32_t stored = 0;
+    if (!AcceptCobId(v, RpdoCobId(), kRpdoCobBase, node_id_, &stored)) {
+      *result = SdoAbort::kInvalidValue;
+    } else {
+      p.cob_id = stored;
+    }
+  } else if (e.sub == 2) {
+    if (!EventDriven(v) || (valid && v != p.transmission_type)) {
+      *result = SdoAbort::kInvalidValue;
+    } else {
+      p.transmission_type = static_cast<uint8_t>(v);
+    }
+  } else {
+    *result = SdoAbort::kReadOnly;
+  }
+  return true;
+}
+
+void Node::OnRpdo(const CanFrame& f) {
+  // The static mapping (DefaultRpdo): the command word, 2 bytes. CiA 301: a frame of another
+  // length is not processed (EMCY 0x8210 shorter, 0x8220 longer; byte 3 = its DLC).
+  constexpr uint8_t kMappedBytes = 2;
+  if (f.dlc != kMappedBytes) {
+    ++rpdo_length_errors_;
+    ReportEvent(f.dlc < kMappedBytes ? kEmcyPdoLength : kEmcyPdoLengthExceeded, kErrCommunication,
+                f.dlc);
+    return;
+  }
+  ++rpdo_received_;
+  // The application checks and reports a refusal (EMCY) as it does for an SDO write of the same
+  // object; there is no one to answer.
+  (void)app_->Write(Entry(ObjectId::kCommandWord), f.data, kMappedBytes);
+}
+
 bool Node::ReadCommunication(const ObjectEntry& e, uint32_t* value) const {
+  if (e.index == 0x1400 && (e.sub == 1 || e.sub == 2)) {
+    *value = e.sub == 1 ? RpdoCobId() : comm_.rpdo.transmission_type;
+    return true;
+  }
   if (e.index >= 0x1800 && e.index < 0x1800 + kTpdoCount && e.sub != 0) {
     const uint8_t n = static_cast<uint8_t>(e.index & 0xFFu);
     const TpdoParameters& p = comm_.tpdo[n];
@@ -369,8 +434,8 @@ SdoAbort Node::DoRead(const ObjectEntry& e,
 SdoAbort Node::DoWrite(const ObjectEntry& e, const uint8_t* data, uint32_t size) {
   uint32_t v = 0;
   for (uint32_t i = 0; i < size && i < 4; ++i) v |= uint32_t{data[i]} << (8 * i);
-  SdoAbort tpdo = SdoAbort::kNone;
-  if (WriteTpdo(e, v, &tpdo)) return tpdo;
+  SdoAbort pdo = SdoAbort::kNone;
+  if (WriteTpdo(e, v, &pdo) || WriteRpdo(e, v, &pdo)) return pdo;
   switch (e.id) {
     case ObjectId::kErrorCount:
       if (size != 1 || data[0] != 0) return SdoAbort::kInvalidValue;  // only 0 (clear) allowed

@@ -25,6 +25,8 @@ const ObjectEntry kObjectEntries[] = {
    0,                                                                     \
    false,                                                                 \
    Access::access == Access::kRo && FixedSize(DataType::type) != 0},
+#define VOLCOMP_OD_COMMAND(id, index, sub, type, def, source, name) \
+  {ObjectId::id, index, sub, DataType::type, Access::kRw, def, name, 0, 0, false, true},
 #define VOLCOMP_OD_SETTING(id, index, sub, type, limits, def, field, key, name) \
   {ObjectId::id, index,                                                         \
    sub,          DataType::type,                                                \
@@ -35,6 +37,7 @@ const ObjectEntry kObjectEntries[] = {
 #undef VOLCOMP_OD_OBJECT
 #undef VOLCOMP_OD_ENTRY
 #undef VOLCOMP_OD_VALUE
+#undef VOLCOMP_OD_COMMAND
 #undef VOLCOMP_OD_SETTING
 #undef VOLCOMP_OD_LIMITS
 #undef VOLCOMP_OD_NO_LIMITS

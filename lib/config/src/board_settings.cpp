@@ -9,15 +9,18 @@ constexpr uint32_t kMagic = 0x47464356;  // "VCFG"
 // 2: the EMCY inhibit time in the slot after the heartbeat; 3: each axis's direction hysteresis
 // in its reserved 16-bit slot; 4: each axis's direction switch acceleration in the first of its
 // reserved 32-bit slots (older records: the defaults); 5: the TPDO parameters after the version-4
-// record (kPdoRecordBytes each; the record grows to kSettingsBytes).
-constexpr uint16_t kVersion = 5;
+// record (kPdoRecordBytes each); 6: the RPDO's COB-ID and transmission type after them
+// (kRpdoRecordBytes; the record grows to kSettingsBytes).
+constexpr uint16_t kVersion = 6;
+constexpr uint16_t kVersionWithoutRpdo = 5;
 constexpr uint16_t kVersionWithoutPdo = 4;
 constexpr uint16_t kVersionWithoutSwitch = 3;
 constexpr uint16_t kVersionWithoutHysteresis = 2;
 constexpr uint16_t kVersionWithoutInhibit = 1;
 static_assert(kVersionWithoutInhibit < kVersionWithoutHysteresis &&
                   kVersionWithoutHysteresis < kVersionWithoutSwitch &&
-                  kVersionWithoutSwitch < kVersionWithoutPdo && kVersionWithoutPdo < kVersion,
+                  kVersionWithoutSwitch < kVersionWithoutPdo &&
+                  kVersionWithoutPdo < kVersionWithoutRpdo && kVersionWithoutRpdo < kVersion,
               "versions in order: every one between the first and kVersion is read");
 
 class Writer {
@@ -124,6 +127,8 @@ void SerializeSettings(const BoardSettings& s, uint8_t* out) {
     w.U16(0);
     for (uint32_t m : p.mapping) w.U32(m);
   }
+  w.U32(s.rpdo.cob_id);
+  w.U8(s.rpdo.transmission_type);
 }
 
 Status DeserializeSettings(const uint8_t* in, uint32_t size, BoardSettings* out) {
@@ -132,7 +137,9 @@ Status DeserializeSettings(const uint8_t* in, uint32_t size, BoardSettings* out)
   if (r.U32() != kMagic) return Error::kConfigInvalid;
   const uint16_t version = r.U16();
   if (version < kVersionWithoutInhibit || version > kVersion) return Error::kConfigInvalid;
-  const uint32_t bytes = version == kVersion ? kSettingsBytes : kSettingsBytesV4;
+  const uint32_t bytes = version == kVersion              ? kSettingsBytes
+                         : version == kVersionWithoutRpdo ? kSettingsBytesV5
+                                                          : kSettingsBytesV4;
   if (r.U16() != bytes || size < bytes) return Error::kConfigInvalid;
   BoardSettings s;
   s.node_id = r.U8();
@@ -171,7 +178,7 @@ Status DeserializeSettings(const uint8_t* in, uint32_t size, BoardSettings* out)
   }
   r.U32();
   r.U32();
-  if (version == kVersion) {
+  if (version >= kVersionWithoutRpdo) {
     for (PdoSettings& p : s.tpdo) {
       p.cob_id = r.U32();
       p.transmission_type = r.U8();
@@ -181,6 +188,15 @@ Status DeserializeSettings(const uint8_t* in, uint32_t size, BoardSettings* out)
       r.U16();
       for (uint32_t& m : p.mapping) m = r.U32();
       if (p.mapped > kPdoMaxMapped) return Error::kConfigInvalid;
+    }
+  }
+  if (version == kVersion) {
+    s.rpdo.cob_id = r.U32();
+    s.rpdo.transmission_type = r.U8();
+    // What 0x1400 accepts (node.cpp): an 11-bit CAN-ID, an event-driven type.
+    if ((s.rpdo.cob_id & 0x3FFFF800u) != 0 ||
+        (s.rpdo.transmission_type != 254 && s.rpdo.transmission_type != 255)) {
+      return Error::kConfigInvalid;
     }
   }
   VOLCOMP_TRY(ValidateSettings(s));

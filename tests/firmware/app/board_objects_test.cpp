@@ -1049,5 +1049,175 @@ TEST_F(PdoBench, StoredPdoParametersSurviveResetsAndRestoreDefaultsBringsTheDefa
   EXPECT_EQ(Read(ObjectId::kTpdo2EventTimer), 100u);
 }
 
+// RPDO1 (COB-ID 0x200 + node-ID) carries the command word 0x2127: each bit acts on its rising
+// edge, through the same code and checks as the SDO writes of 0x2120 / 0x2101, and a refusal sends
+// the same EMCY 0xFF10 with the abort code (there is no one to answer). Nothing outside
+// operational; a frame of the wrong length is not processed (EMCY 0x8210 / 0x8220).
+class RpdoBench : public PdoBench {
+ protected:
+  static constexpr uint32_t kRpdo = 0x200 + kNode;
+  // One RPDO frame (`dlc` bytes of `word`, little-endian), then 30 main-loop passes (beyond twice
+  // the EMCY inhibit time: a refusal's EMCY and its "error reset" both leave); the EMCYs the board
+  // sent meanwhile, other than the resets.
+  std::vector<canopen::Emcy> Send(uint16_t word, uint8_t dlc = 2, uint32_t id = kRpdo) {
+    CanFrame f{
+        id, false, false, dlc, {static_cast<uint8_t>(word), static_cast<uint8_t>(word >> 8)}};
+    can_.Inject(f);
+    Step(1500);
+    std::vector<canopen::Emcy> out;
+    for (const CanFrame& r : can_.TakeSent()) {
+      sent_.push_back(r);
+      canopen::Emcy e;
+      if (canopen::DecodeEmcy(r, kNode, &e) && e.code != canopen::kEmcyErrorReset) out.push_back(e);
+    }
+    return out;
+  }
+  static uint32_t Detail(const canopen::Emcy& e) { return LoadLe32(e.data); }
+  void Staged() {
+    io_.SetInput(InputLine::kWriteEnable, true);
+    ASSERT_TRUE(Upload(UniformImage(6, 77)).ok());
+    ASSERT_TRUE(Command(TableCommand::kVerify).ok());
+  }
+  void Operational() {
+    can_.Inject(CanFrame{0x000, false, false, 2, {0x01, kNode}});
+    Step(100);
+    can_.TakeSent();
+  }
+};
+
+TEST_F(RpdoBench, CommandWordActsOnRisingEdgesWithTheSdoWritesChecksAndEmcy) {
+  Boot();
+  Staged();
+  const uint32_t crc = Read(ObjectId::kStagedTableCrc);
+  // Pre-operational: not processed at all.
+  EXPECT_TRUE(Send(canopen::kCommandActivate).empty());
+  EXPECT_EQ(Read(ObjectId::kCommandWord), 0u);
+  EXPECT_EQ(app_.node().rpdo_received(), 0u);
+  Operational();
+  // Not referenced: refused as the SDO write of 0x2101 = 1 is (0x08000022), same EMCY.
+  std::vector<canopen::Emcy> e = Send(canopen::kCommandActivate);
+  ASSERT_EQ(e.size(), 1u);
+  EXPECT_EQ(e[0].code, canopen::kEmcyRefused);
+  EXPECT_EQ(Detail(e[0]), 0x08000022u);
+  EXPECT_EQ(Read(ObjectId::kCommandWord), canopen::kCommandActivate);  // taken: no retry by holding
+  sent_.clear();
+  EXPECT_EQ(canopen_client::AbortOf(Command(TableCommand::kActivate)),
+            canopen::SdoAbort::kDeviceState);
+  Step(1000);  // past the EMCY inhibit time
+  for (const CanFrame& f : can_.TakeSent()) sent_.push_back(f);
+  ASSERT_EQ(CountEmcy(canopen::kEmcyRefused), 1);
+  for (const CanFrame& f : sent_) {
+    canopen::Emcy sdo;
+    if (canopen::DecodeEmcy(f, kNode, &sdo) && sdo.code == canopen::kEmcyRefused) {
+      EXPECT_EQ(sdo.error_register, e[0].error_register);
+      EXPECT_EQ(std::vector<uint8_t>(sdo.data, sdo.data + 5),
+                std::vector<uint8_t>(e[0].data, e[0].data + 5));
+    }
+  }
+  // Held (a master sending the word cyclically): nothing more.
+  for (int i = 0; i < 5; ++i) EXPECT_TRUE(Send(canopen::kCommandActivate).empty());
+  // Reference and activate rising in one word: the reference takes effect at the next tick, so
+  // the activation is refused (not referenced yet); then activate falls.
+  EXPECT_TRUE(Send(0).empty());
+  e = Send(0x0007 | canopen::kCommandActivate);
+  ASSERT_EQ(e.size(), 1u);
+  EXPECT_EQ(Detail(e[0]), 0x08000022u);
+  EXPECT_TRUE(Send(0x0007).empty());
+  Step(200);
+  EXPECT_TRUE(app_.control_tick().all_referenced());
+  Step(10000);  // 200 ms at rest
+  // Activate rises: the staged table becomes active.
+  EXPECT_TRUE(Send(0x0007 | canopen::kCommandActivate).empty());
+  EXPECT_EQ(Read(ObjectId::kActiveTableCrc), crc);
+  Step(20000);
+  EXPECT_EQ(step_io_.drive(0).position(), 6);
+  for (int i = 0; i < 3; ++i) EXPECT_TRUE(Send(0x0007 | canopen::kCommandActivate).empty());
+  EXPECT_EQ(Read(ObjectId::kActiveTableCrc), crc);
+  // Deactivate rises (activate falls): ramps out.
+  EXPECT_TRUE(Send(canopen::kCommandDeactivate).empty());
+  Step(20000);
+  EXPECT_EQ(step_io_.drive(0).position(), 0);
+  EXPECT_EQ(Read(ObjectId::kActiveTableCrc), 0u);
+  // Activate rises again: the activation consumed the staged table, "no data" (0x08000024).
+  e = Send(canopen::kCommandDeactivate | canopen::kCommandActivate);
+  ASSERT_EQ(e.size(), 1u);
+  EXPECT_EQ(Detail(e[0]), 0x08000024u);
+  // Both rising at once, or a bit with no meaning: refused (0x06090030) and not taken.
+  EXPECT_TRUE(Send(0).empty());
+  e = Send(canopen::kCommandDeactivate | canopen::kCommandActivate);
+  ASSERT_EQ(e.size(), 1u);
+  EXPECT_EQ(Detail(e[0]), 0x06090030u);
+  e = Send(0x8000);
+  ASSERT_EQ(e.size(), 1u);
+  EXPECT_EQ(Detail(e[0]), 0x06090030u);
+  EXPECT_EQ(Read(ObjectId::kCommandWord), 0u);
+  // Write access off: refused as the SDO path refuses (0x08000020).
+  io_.SetInput(InputLine::kWriteEnable, false);
+  Step(100);
+  e = Send(canopen::kCommandDeactivate);
+  ASSERT_EQ(e.size(), 1u);
+  EXPECT_EQ(Detail(e[0]), 0x08000020u);
+  // The wrong length: not processed, EMCY 0x8210 (shorter) / 0x8220 (longer), byte 3 the DLC.
+  EXPECT_TRUE(Send(0).empty());
+  const uint32_t received = app_.node().rpdo_received();
+  e = Send(canopen::kCommandActivate, 1);
+  ASSERT_EQ(e.size(), 1u);
+  EXPECT_EQ(e[0].code, canopen::kEmcyPdoLength);
+  EXPECT_EQ(e[0].data[0], 1);
+  e = Send(canopen::kCommandActivate, 3);
+  ASSERT_EQ(e.size(), 1u);
+  EXPECT_EQ(e[0].code, canopen::kEmcyPdoLengthExceeded);
+  EXPECT_EQ(e[0].data[0], 3);
+  EXPECT_EQ(app_.node().rpdo_received(), received);
+  EXPECT_EQ(app_.node().rpdo_length_errors(), 2u);
+  EXPECT_EQ(Read(ObjectId::kCommandWord), 0u);
+  // Stopped: not processed.
+  can_.Inject(CanFrame{0x000, false, false, 2, {0x02, kNode}});
+  Step(100);
+  EXPECT_TRUE(Send(0x0001).empty());
+  EXPECT_EQ(app_.node().rpdo_received(), received);
+}
+
+// 0x1400:1-2 follow the TPDOs' rules; 0x1600 is the static mapping (read-only). Stored by
+// "save", restored by the resets.
+TEST_F(RpdoBench, ParametersFollowTheCia301RulesAndAreStored) {
+  Boot();
+  Operational();
+  EXPECT_EQ(Read(ObjectId::kRpdo1CobId), kRpdo);
+  EXPECT_EQ(Read(ObjectId::kRpdo1Type), 254u);
+  EXPECT_EQ(Read(ObjectId::kRpdo1Mapped), 1u);
+  EXPECT_EQ(Read(ObjectId::kRpdo1Mapping1), 0x21270010u);
+  EXPECT_EQ(Download(0x1600, 1, 0x21200008, 4), Abort(0x1600, 1, 0x06010002));
+  EXPECT_EQ(Download(0x1600, 0, 0, 1), Abort(0x1600, 0, 0x06010002));
+  EXPECT_EQ(Download(0x1400, 0, 2, 1), Abort(0x1400, 0, 0x06010002));
+  EXPECT_EQ(Download(0x1400, 1, 0x301, 4), Abort(0x1400, 1, 0x06090030));  // valid: no new ID
+  EXPECT_EQ(Download(0x1400, 2, 255, 1), Abort(0x1400, 2, 0x06090030));
+  EXPECT_EQ(Download(0x1400, 1, 0x80000000u | kRpdo, 4), Ok(0x1400, 1));
+  EXPECT_TRUE(Send(0x0001).empty());
+  EXPECT_EQ(app_.node().rpdo_received(), 0u);                          // the PDO does not exist
+  EXPECT_EQ(Download(0x1400, 2, 1, 1), Abort(0x1400, 2, 0x06090030));  // SYNC: not offered
+  EXPECT_EQ(Download(0x1400, 1, 0x80000601, 4), Abort(0x1400, 1, 0x06090030));
+  EXPECT_EQ(Download(0x1400, 1, 0x80000301, 4), Ok(0x1400, 1));
+  EXPECT_EQ(Download(0x1400, 2, 255, 1), Ok(0x1400, 2));
+  EXPECT_EQ(Download(0x1400, 1, 0x301, 4), Ok(0x1400, 1));
+  EXPECT_TRUE(Send(0x0001).empty());  // the old CAN-ID: not the RPDO any more
+  EXPECT_EQ(app_.node().rpdo_received(), 0u);
+  EXPECT_TRUE(Send(0x0001, 2, 0x301).empty());
+  EXPECT_EQ(app_.node().rpdo_received(), 1u);
+  EXPECT_EQ(Read(ObjectId::kCommandWord), 1u);
+  // Stored by "save"; a reset communication brings the stored ones back.
+  io_.SetInput(InputLine::kWriteEnable, true);
+  Step(100);
+  EXPECT_EQ(Exchange("2310100173617665"), Frames{"590#6010100100000000"});
+  EXPECT_EQ(Download(0x1400, 1, 0x80000301, 4), Ok(0x1400, 1));  // in force, not stored
+  EXPECT_TRUE(Contains(Nmt(0x82), "710#00"));
+  EXPECT_EQ(Read(ObjectId::kRpdo1CobId), 0x301u);
+  EXPECT_EQ(Read(ObjectId::kRpdo1Type), 255u);
+  EXPECT_EQ(Exchange("231110016C6F6164"), Frames{"590#6011100100000000"});  // "load"
+  EXPECT_TRUE(Contains(Nmt(0x82), "710#00"));
+  EXPECT_EQ(Read(ObjectId::kRpdo1CobId), kRpdo);
+  EXPECT_EQ(Read(ObjectId::kRpdo1Type), 254u);
+}
+
 }  // namespace
 }  // namespace volcomp

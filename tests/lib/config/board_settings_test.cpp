@@ -24,7 +24,7 @@ TEST(SettingsRecord, KeepsTheEmcyInhibitTimeAndReadsVersion1Records) {
   s.emcy_inhibit_100us = 37;
   uint8_t rec[kSettingsBytes];
   SerializeSettings(s, rec);
-  EXPECT_EQ(rec[4], 5);  // version, LE16 at 4
+  EXPECT_EQ(rec[4], 6);  // version, LE16 at 4
   EXPECT_EQ(rec[5], 0);
   EXPECT_EQ(rec[12], 0x23);  // heartbeat LE16 at 12
   EXPECT_EQ(rec[13], 0x01);
@@ -39,7 +39,7 @@ TEST(SettingsRecord, KeepsTheEmcyInhibitTimeAndReadsVersion1Records) {
   ASSERT_TRUE(DeserializeSettings(rec, sizeof rec, &back).ok());
   EXPECT_EQ(back.emcy_inhibit_100us, 100);  // the default, 10 ms
   EXPECT_EQ(back.heartbeat_ms, 0x0123);
-  rec[4] = 6;
+  rec[4] = 7;
   EXPECT_FALSE(DeserializeSettings(rec, sizeof rec, &back).ok());
 }
 
@@ -234,7 +234,7 @@ namespace {
 // loads, with the default PDOs.
 TEST(SettingsRecord, KeepsTheTpdosAndReadsVersion4Records) {
   EXPECT_EQ(kSettingsBytesV4, 416u);
-  EXPECT_EQ(kSettingsBytes, 416u + 2 * 44);
+  EXPECT_EQ(kSettingsBytesV5, 416u + 2 * 44);
   BoardSettings s;
   s.tpdo[1].cob_id = 0x80000391;
   s.tpdo[1].transmission_type = 255;
@@ -245,7 +245,7 @@ TEST(SettingsRecord, KeepsTheTpdosAndReadsVersion4Records) {
   s.tpdo[1].mapping[7] = 0x0A0B0C0D;
   uint8_t rec[kSettingsBytes];
   SerializeSettings(s, rec);
-  EXPECT_EQ(rec[6] | rec[7] << 8, 504);
+  EXPECT_EQ(rec[6] | rec[7] << 8, 512);
   const size_t t1 = 416, t2 = 416 + 44;
   EXPECT_EQ(rec[t1 + 0], 0x80);  // TPDO1's default, stored form 0x180: base + node-ID
   EXPECT_EQ(rec[t1 + 1], 0x01);
@@ -291,11 +291,51 @@ TEST(SettingsRecord, KeepsTheTpdosAndReadsVersion4Records) {
   EXPECT_EQ(old.tpdo[1].mapped, 4);
   EXPECT_EQ(old.tpdo[1].mapping[0], 0x21380310u);  // 0x2138:3, I16
   EXPECT_EQ(old.tpdo[0].mapping[1], 0x21250008u);
-  // A version-5 record cut to the old length is not taken.
-  rec[4] = 5;
+  // A version-6 record cut to the old length is not taken.
+  rec[4] = 6;
   rec[6] = static_cast<uint8_t>(kSettingsBytes & 0xFF);
   rec[7] = static_cast<uint8_t>(kSettingsBytes >> 8);
   EXPECT_FALSE(DeserializeSettings(rec, kSettingsBytesV4, &old).ok());
+}
+
+// Version 6 appends the RPDO's COB-ID (LE32, stored form) and transmission type (U8) and 3
+// reserved bytes to the version-5 record (504 bytes); its mapping is static, not stored. A
+// version-5 record (504 bytes, a board with TPDOs but no RPDO) still loads, with the default RPDO.
+// A COB-ID or type 0x1400 would refuse is not a record this firmware wrote.
+TEST(SettingsRecord, KeepsTheRpdoAndReadsVersion5Records) {
+  EXPECT_EQ(kSettingsBytes, 504u + 8);
+  const BoardSettings defaults;
+  EXPECT_EQ(defaults.rpdo.cob_id, 0x200u);  // stored form: 0x200 + node-ID
+  EXPECT_EQ(defaults.rpdo.transmission_type, 254);
+  ASSERT_EQ(defaults.rpdo.mapped, 1);
+  EXPECT_EQ(defaults.rpdo.mapping[0], 0x21270010u);  // 0x2127:0, U16
+  BoardSettings s;
+  s.rpdo.cob_id = 0x80000321u;
+  s.rpdo.transmission_type = 255;
+  uint8_t rec[kSettingsBytes];
+  SerializeSettings(s, rec);
+  EXPECT_EQ(rec[504], 0x21);
+  EXPECT_EQ(rec[505], 0x03);
+  EXPECT_EQ(rec[507], 0x80);
+  EXPECT_EQ(rec[508], 255);
+  BoardSettings back;
+  ASSERT_TRUE(DeserializeSettings(rec, sizeof rec, &back).ok());
+  EXPECT_EQ(back.rpdo.cob_id, 0x80000321u);
+  EXPECT_EQ(back.rpdo.transmission_type, 255);
+  EXPECT_EQ(back.rpdo.mapping[0], 0x21270010u);
+  rec[508] = 1;  // synchronous: no SYNC consumer
+  EXPECT_FALSE(DeserializeSettings(rec, sizeof rec, &back).ok());
+  rec[508] = 254;
+  rec[506] = 0x01;  // bit 16: not an 11-bit CAN-ID
+  EXPECT_FALSE(DeserializeSettings(rec, sizeof rec, &back).ok());
+  rec[506] = 0;
+  rec[4] = 5;
+  rec[6] = static_cast<uint8_t>(kSettingsBytesV5 & 0xFF);
+  rec[7] = static_cast<uint8_t>(kSettingsBytesV5 >> 8);
+  BoardSettings old;
+  ASSERT_TRUE(DeserializeSettings(rec, kSettingsBytesV5, &old).ok());
+  EXPECT_EQ(old.rpdo.cob_id, 0x200u);
+  EXPECT_EQ(old.rpdo.transmission_type, 254);
 }
 
 }  // namespace

@@ -10,8 +10,12 @@
 //                      acknowledgement: one flush step of the store, programming or a page erase)
 //   main_loop_request  a pass that receives any other request (expedited writes, block initiate
 //                      and end)
-// The whole download runs once per row (each after its scenario mark); the image exits non-zero
-// if a download does not complete, so a row never prices a broken transfer.
+// The whole download runs once per row (each after its scenario mark), first in NMT
+// pre-operational (as during a table upload), then again in operational (main_loop_op_*: the same
+// passes plus the TPDOs, sampled and sent every pass they are due); the image exits non-zero if a
+// download does not complete, so a row never prices a broken transfer. Last, in operational:
+//   main_loop_op_rpdo  a pass that receives RPDO1 (the command word 0x2127): every other one
+//                      raises activate, refused (nothing verified is staged) with its EMCY
 #include <cstdint>
 
 #include "bench_support.hpp"
@@ -35,6 +39,7 @@ class BenchCan final : public hal::CanPort {
     rx_ = f;
     have_rx_ = true;
   }
+  uint32_t other_sent() const { return other_sent_; }
   bool TakeSent(CanFrame* f) {
     if (sent_count_ == 0) return false;
     *f = sent_[0];
@@ -45,6 +50,11 @@ class BenchCan final : public hal::CanPort {
 
  private:
   Status DoSend(const CanFrame& frame) override {
+    // The client reads only the SDO responses; the rest (heartbeat, TPDOs, EMCY) is counted.
+    if (frame.id != 0x580u + canopen::kDefaultNodeId) {
+      ++other_sent_;
+      return Status::Ok();
+    }
     if (sent_count_ == kSent) return Error::kFull;
     sent_[sent_count_++] = frame;
     return Status::Ok();
@@ -61,6 +71,7 @@ class BenchCan final : public hal::CanPort {
   bool have_rx_ = false;
   CanFrame sent_[kSent];
   uint32_t sent_count_ = 0;
+  uint32_t other_sent_ = 0;
 };
 
 // Time advances one frame time (111 us at 1 Mbit/s) per pass.
@@ -103,6 +114,22 @@ extern "C" __attribute__((noinline, section(".text.volcomp_bench_poll_request"))
 volcomp_bench_poll_request() {
   volcomp::target::g_app.Poll();
 }
+extern "C" __attribute__((noinline, section(".text.volcomp_bench_poll_op_segment"))) void
+volcomp_bench_poll_op_segment() {
+  volcomp::target::g_app.Poll();
+}
+extern "C" __attribute__((noinline, section(".text.volcomp_bench_poll_op_pass"))) void
+volcomp_bench_poll_op_pass() {
+  volcomp::target::g_app.Poll();
+}
+extern "C" __attribute__((noinline, section(".text.volcomp_bench_poll_op_request"))) void
+volcomp_bench_poll_op_request() {
+  volcomp::target::g_app.Poll();
+}
+extern "C" __attribute__((noinline, section(".text.volcomp_bench_poll_op_rpdo"))) void
+volcomp_bench_poll_op_rpdo() {
+  volcomp::target::g_app.Poll();
+}
 
 namespace volcomp::target {
 namespace {
@@ -139,12 +166,15 @@ CanFrame ExpeditedWrite(uint16_t index, uint32_t value, uint8_t bytes) {
 }
 
 enum class Pass { kSegment, kNothing, kRequest };
+bool g_operational = false;  // which rows the passes belong to
 
 void RunPass(Pass p) {
   g_clock.Advance(kFrameNs);
-  if (p == Pass::kSegment) volcomp_bench_poll_segment();
-  if (p == Pass::kNothing) volcomp_bench_poll_pass();
-  if (p == Pass::kRequest) volcomp_bench_poll_request();
+  if (p == Pass::kSegment)
+    (g_operational ? volcomp_bench_poll_op_segment : volcomp_bench_poll_segment)();
+  if (p == Pass::kNothing) (g_operational ? volcomp_bench_poll_op_pass : volcomp_bench_poll_pass)();
+  if (p == Pass::kRequest)
+    (g_operational ? volcomp_bench_poll_op_request : volcomp_bench_poll_request)();
 }
 
 // Sends `f` and runs passes until the server answers (at most `limit` passes); returns the answer
@@ -237,9 +267,23 @@ int main() {
       {"main_loop_segment", "volcomp_bench_poll_segment"},
       {"main_loop_pass", "volcomp_bench_poll_pass"},
       {"main_loop_request", "volcomp_bench_poll_request"},
+      {"main_loop_op_segment", "volcomp_bench_poll_op_segment"},
+      {"main_loop_op_pass", "volcomp_bench_poll_op_pass"},
+      {"main_loop_op_request", "volcomp_bench_poll_op_request"},
   };
   int rc = 0;
   for (const auto& row : kRows) {
+    if (!g_operational && row[0][10] == 'o') {  // "main_loop_op_*": NMT start first
+      CanFrame start;
+      start.id = 0x000;
+      start.dlc = 2;
+      start.data[0] = 0x01;
+      start.data[1] = kNode;
+      g_can.Deliver(start);
+      RunPass(Pass::kNothing);
+      g_operational = true;
+      if (g_app.node().state() != canopen::NmtState::kOperational) rc = 1;
+    }
     Scenario(row[0], row[1]);
     if (!Download(size)) {
       semihost::Write("bench: block download did not complete\n");
@@ -247,6 +291,25 @@ int main() {
     }
   }
   if (g_app.tables().staged_bytes() != size) rc = 1;
+  // The RPDO: 200 passes, each receiving the command word; activate rises every other one.
+  Scenario("main_loop_op_rpdo", "volcomp_bench_poll_op_rpdo");
+  const uint32_t refused = g_app.objects().refused_actions();
+  for (uint32_t i = 0; i < 200; ++i) {
+    CanFrame rpdo;
+    rpdo.id = 0x200u + kNode;
+    rpdo.dlc = 2;
+    rpdo.data[1] = static_cast<uint8_t>((i & 1u) == 0 ? canopen::kCommandActivate >> 8 : 0);
+    g_can.Deliver(rpdo);
+    g_clock.Advance(kFrameNs);
+    volcomp_bench_poll_op_rpdo();
+  }
+  if (g_app.node().rpdo_received() != 200 || g_app.objects().refused_actions() != refused + 100) {
+    semihost::Write("bench: the RPDO passes did not act as expected\n");
+    rc = 1;
+  }
+  semihost::Write("bench: frames other than SDO responses sent: ");
+  semihost::WriteUint(g_can.other_sent());
+  semihost::Write("\n");
   semihost::Write(rc == 0 ? "bench: done\n" : "bench: FAILED\n");
   return rc;
 }

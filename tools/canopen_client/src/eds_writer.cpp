@@ -50,10 +50,11 @@ std::string DefaultValue(const ObjectEntry& e, const EdsInfo& info) {
     case DataType::kInteger32:
       return std::to_string(e.default_value);
     default:
-      // CiA 306: the pre-defined connection set's COB-IDs follow the node-ID (a TPDO's default
+      // CiA 306: the pre-defined connection set's COB-IDs follow the node-ID (a PDO's default
       // COB-ID is stored as its bare base, board_settings.hpp PdoSettings).
       if (e.index == 0x1014 || (e.index == 0x1200 && e.sub >= 1) ||
-          (e.index >= 0x1800 && e.index < 0x1A00 && e.sub == 1)) {
+          (((e.index >= 0x1400 && e.index < 0x1600) || (e.index >= 0x1800 && e.index < 0x1A00)) &&
+           e.sub == 1)) {
         return "$NODEID+" + Hex(static_cast<uint32_t>(e.default_value), 3);
       }
       return Hex(static_cast<uint32_t>(e.default_value), 2 * canopen::FixedSize(e.type));
@@ -116,10 +117,11 @@ void WriteEds(std::ostream& out, const EdsInfo& info) {
       << "\nRevisionNumber=" << Hex(static_cast<uint32_t>(revision->default_value), 8)
       << "\nOrderCode=\n";
   for (int rate : {10, 20, 50, 125, 250, 500, 800, 1000}) out << "BaudRate_" << rate << "=1\n";
-  // Granularity 8: the TPDO mappings are writable, whole bytes (CiA 306).
+  // Granularity 8: the TPDO mappings are writable, whole bytes (CiA 306); the RPDO's is static.
   out << "SimpleBootUpMaster=0\nSimpleBootUpSlave=1\nGranularity=8\n"
-         "DynamicChannelsSupported=0\nGroupMessaging=0\nNrOfRXPDO=0\nNrOfTXPDO="
-      << static_cast<int>(::volcomp::kTpdoCount) << "\nLSS_Supported=0\n\n";
+         "DynamicChannelsSupported=0\nGroupMessaging=0\nNrOfRXPDO="
+      << static_cast<int>(::volcomp::kRpdoCount)
+      << "\nNrOfTXPDO=" << static_cast<int>(::volcomp::kTpdoCount) << "\nLSS_Supported=0\n\n";
 
   std::vector<uint16_t> mandatory, optional, manufacturer;
   for (size_t i = 0; i < canopen::kObjectHeaderCount; ++i) {

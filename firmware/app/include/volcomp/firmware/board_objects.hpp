@@ -26,13 +26,14 @@
 
 namespace volcomp::firmware {
 
-/// The node's communication parameters in `s` (0x1015, 0x1017, the TPDOs): what a start puts in
+/// The node's communication parameters in `s` (0x1015, 0x1017, the PDOs): what a start puts in
 /// force and what a reset communication restores.
 inline canopen::CommunicationParameters CommunicationOf(const BoardSettings& s) {
   canopen::CommunicationParameters c;
   c.heartbeat_ms = s.heartbeat_ms;
   c.emcy_inhibit_100us = s.emcy_inhibit_100us;
   for (uint8_t n = 0; n < kTpdoCount; ++n) c.tpdo[n] = s.tpdo[n];
+  c.rpdo = s.rpdo;
   return c;
 }
 
@@ -128,6 +129,8 @@ class BoardObjects : public canopen::ObjectValues {
   uint32_t output_overruns() const { return parts_.control->output_status().overruns; }
   uint32_t max_tick_cost() const { return parts_.control->max_tick_cost_ns(); }
   uint32_t refused_actions() const { return refused_; }
+  /// 0x2127: the last command word taken (canopen::CommandWordBit).
+  uint16_t command_word() const { return command_word_; }
   uint32_t emcy_suppressed() const { return parts_.node->emcy_suppressed(); }
   /// Axes whose per-axis values are live (the others read 0).
   uint8_t axis_count() const { return parts_.control_tick->axis_count(); }
@@ -154,6 +157,8 @@ class BoardObjects : public canopen::ObjectValues {
   // the pending copy.
   canopen::SdoAbort WriteSetting(const canopen::ObjectEntry& e, uint32_t raw);
   canopen::SdoAbort TableControl(uint8_t command);
+  // 0x2127: the rising edges of `word` against the last word taken.
+  canopen::SdoAbort CommandWord(uint16_t word);
   // 0x1010 "save": the pending settings with the communication parameters in force.
   canopen::SdoAbort StoreSettings();
   canopen::SdoAbort Refuse(canopen::SdoAbort abort_code);
@@ -166,6 +171,7 @@ class BoardObjects : public canopen::ObjectValues {
   BoardSettings pending_;
   bool settings_pending_ = false;  // pending_ differs from the settings in force
   uint8_t last_command_ = 0;
+  uint16_t command_word_ = 0;
   uint32_t refused_ = 0;
   canopen::SdoAbort transfer_abort_ = canopen::SdoAbort::kNone;  // of the last broken transfer
   uint32_t now_ms_ = 0;                                          // at the last WatchLimits()

@@ -26,6 +26,23 @@ enum class TableCommand : uint8_t {
 
 constexpr uint32_t Value(TableCommand c) { return static_cast<uint32_t>(c); }
 
+// ---- 0x2127 command word (U16, rw; written by SDO or carried by RPDO1) -------------------------
+
+/// Each bit acts on its rising edge: set in this write and clear in the last one taken (a master
+/// that sends the word cyclically repeats nothing by holding a bit). The edges act in the order
+/// reference, deactivate, activate, each as the SDO write it names, with the same checks; a
+/// refusal is EMCY kEmcyRefused with the abort code (docs/canopen.md, "PDOs").
+enum CommandWordBit : uint16_t {
+  kCommandReferenceAxis1 = 0x0001,  // bits 0-5: reference request of axes 1-6 (0x2120 bit a-1)
+  kCommandDeactivate = 0x0100,      // as 0x2101 = 0 (TableCommand::kDeactivate)
+  kCommandActivate = 0x0200,        // as 0x2101 = 1 (TableCommand::kActivate)
+};
+inline constexpr uint16_t kCommandReferenceMask = 0x003F;
+/// A word with other bits set, or with activate and deactivate rising together, is refused
+/// (0x06090030) and not taken: the next word's edges are against the last one taken.
+inline constexpr uint16_t kCommandWordBits =
+    kCommandReferenceMask | kCommandDeactivate | kCommandActivate;
+
 // ---- 0x2122 device state (U16, read) ---------------------------------------------------------
 
 /// Bits of 0x2122.
@@ -225,6 +242,8 @@ inline constexpr uint16_t kEmcyRefused = 0xFF10;            // a request was ref
 inline constexpr uint16_t kEmcySdoTransferFailed = 0xFF11;  // SDO protocol failure: the abort code
 inline constexpr uint16_t kEmcyTableInvalid = 0x6300;       // staged/stored table invalid: error
 inline constexpr uint16_t kEmcyWriteFailed = 0x5530;        // flash write failed
+inline constexpr uint16_t kEmcyPdoLength = 0x8210;          // CiA 301: RPDO shorter than mapped
+inline constexpr uint16_t kEmcyPdoLengthExceeded = 0x8220;  // CiA 301: RPDO longer than mapped
 inline constexpr uint16_t kEmcyCorrectionLimited = 0xFF20;  // the correction is clamped or rate
                                                             // limited: byte 3 clamped axes,
                                                             // byte 4 rate-limited axes (bit a-1)

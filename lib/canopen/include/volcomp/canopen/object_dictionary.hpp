@@ -51,7 +51,7 @@ struct ObjectEntry {
   int64_t low_limit;  // writes outside [low_limit, high_limit] are refused (when `limited`)
   int64_t high_limit;
   bool limited;
-  bool pdo_mappable;  // may be mapped into a TPDO (a produced ro numeric value; EDS PDOMapping)
+  bool pdo_mappable;  // a produced ro numeric value (TPDO) or a command (RPDO); EDS PDOMapping
 };
 
 struct ObjectHeader {

@@ -68,6 +68,19 @@ constexpr PdoSettings DefaultTpdo(uint8_t n) {
   return p;
 }
 
+/// The board's receive PDO (docs/canopen.md, "PDOs"): RPDO1, COB-ID 0x200 + node-ID (stored
+/// form), event-driven (acted on at receipt), carrying the command word 0x2127 (U16). Its mapping
+/// is static (0x1600 read-only): only the COB-ID and the transmission type are stored.
+inline constexpr uint8_t kRpdoCount = 1;
+constexpr PdoSettings DefaultRpdo() {
+  PdoSettings p;
+  p.cob_id = 0x200;  // + node-ID (stored form)
+  p.transmission_type = 254;
+  p.mapped = 1;
+  p.mapping[0] = 0x2127u << 16 | 16u;  // command word, U16
+  return p;
+}
+
 struct BoardSettings {
   BoardConfig board = DefaultBoardConfig();
   uint8_t node_id = kDefaultNodeId;                                 // 1..127
@@ -75,6 +88,7 @@ struct BoardSettings {
   uint16_t heartbeat_ms = kDefaultHeartbeatMs;                      // 0x1017, 0 = off
   uint16_t emcy_inhibit_100us = kDefaultEmcyInhibit100us;           // 0x1015, 0 = no inhibit
   PdoSettings tpdo[kTpdoCount] = {DefaultTpdo(0), DefaultTpdo(1)};  // 0x1800+n, 0x1A00+n
+  PdoSettings rpdo = DefaultRpdo();  // 0x1400 / 0x1600 (only :1 and :2 may change)
 };
 
 /// What drives the board's axes, for the rules that concern one kind of output stage only.
@@ -92,16 +106,20 @@ Status ValidateSettings(const BoardSettings& s,
                         OutputStage stage = OutputStage::kAny);
 
 /// Serialized size of a BoardSettings record.
-/// (Records of version 4 and older are kSettingsBytesV4 long: no PDO parameters.)
+/// (Records of version 4 and older are kSettingsBytesV4 long: no PDO parameters; version 5,
+/// kSettingsBytesV5: the TPDOs, no RPDO.)
 inline constexpr uint32_t kPdoRecordBytes = 44;
+inline constexpr uint32_t kRpdoRecordBytes = 8;
 inline constexpr uint32_t kSettingsBytesV4 = 24 + table::kMaxAxes * 64 + 8;
-inline constexpr uint32_t kSettingsBytes = kSettingsBytesV4 + kTpdoCount * kPdoRecordBytes;
+inline constexpr uint32_t kSettingsBytesV5 = kSettingsBytesV4 + kTpdoCount * kPdoRecordBytes;
+inline constexpr uint32_t kSettingsBytes = kSettingsBytesV5 + kRpdoRecordBytes;
 
 /// Writes `s` into out[0, kSettingsBytes) (little-endian, versioned).
 void SerializeSettings(const BoardSettings& s, uint8_t* out);
 /// Reads and validates a record; kConfigInvalid for a record of another version or out of range.
 /// A version-1 record (before 0x1015 was stored) gives the default EMCY inhibit time; a record of
-/// version 4 or older (kSettingsBytesV4 long, before the PDOs) gives the default PDOs.
+/// version 4 or older (kSettingsBytesV4 long, before the PDOs) gives the default PDOs, one of
+/// version 5 (kSettingsBytesV5, before the RPDO) the default RPDO.
 Status DeserializeSettings(const uint8_t* in, uint32_t size, BoardSettings* s);
 
 }  // namespace volcomp
