@@ -263,17 +263,22 @@ int main() {
   semihost::Write(" bytes (a table image of ");
   semihost::WriteUint(image);
   semihost::Write(" bytes first)\n");
-  const char* const kRows[][2] = {
-      {"main_loop_segment", "volcomp_bench_poll_segment"},
-      {"main_loop_pass", "volcomp_bench_poll_pass"},
-      {"main_loop_request", "volcomp_bench_poll_request"},
-      {"main_loop_op_segment", "volcomp_bench_poll_op_segment"},
-      {"main_loop_op_pass", "volcomp_bench_poll_op_pass"},
-      {"main_loop_op_request", "volcomp_bench_poll_op_request"},
+  struct Row {
+    const char* name;
+    const char* symbol;
+    bool operational;  // NMT start before the row's download
+  };
+  const Row kRows[] = {
+      {"main_loop_segment", "volcomp_bench_poll_segment", false},
+      {"main_loop_pass", "volcomp_bench_poll_pass", false},
+      {"main_loop_request", "volcomp_bench_poll_request", false},
+      {"main_loop_op_segment", "volcomp_bench_poll_op_segment", true},
+      {"main_loop_op_pass", "volcomp_bench_poll_op_pass", true},
+      {"main_loop_op_request", "volcomp_bench_poll_op_request", true},
   };
   int rc = 0;
   for (const auto& row : kRows) {
-    if (!g_operational && row[0][10] == 'o') {  // "main_loop_op_*": NMT start first
+    if (row.operational && !g_operational) {
       CanFrame start;
       start.id = 0x000;
       start.dlc = 2;
@@ -284,7 +289,7 @@ int main() {
       g_operational = true;
       if (g_app.node().state() != canopen::NmtState::kOperational) rc = 1;
     }
-    Scenario(row[0], row[1]);
+    Scenario(row.name, row.symbol);
     if (!Download(size)) {
       semihost::Write("bench: block download did not complete\n");
       rc = 1;
