@@ -31,6 +31,42 @@ std::pair<const char*, double> CorrectionUnit(const table::AxisInfo& a) {
   return {"um", a.resolution_e9 * 1e-9 * 1000.0};
 }
 
+// The THERMAL section's model in its own units (docs/table-image-format.md, "THERMAL").
+JsonValue ThermalData(const table::TableView& v) {
+  const thermal::ThermalModel m = table::ReadThermal(v.thermal);
+  JsonValue t = JsonValue::Object();
+  t.Set("slew_um_s", double{m.slew_um_s});
+  t.Set("hold_ms", uint64_t{m.hold_ms});
+  JsonValue& channels = t["channels"] = JsonValue::Array();
+  for (uint8_t j = 0; j < thermal::kMaxChannels; ++j) {
+    if (((m.channel_mask >> j) & 1u) == 0) continue;
+    JsonValue c = JsonValue::Object();
+    c.Set("channel", unsigned{j});
+    c.Set("reference_C", m.reference_cC[j] / 100.0);
+    c.Set("calibrated_low_C", m.calibrated_low_cC[j] / 100.0);
+    c.Set("calibrated_high_C", m.calibrated_high_cC[j] / 100.0);
+    channels.Push(std::move(c));
+  }
+  JsonValue& axes = t["axes"] = JsonValue::Array();
+  for (uint8_t a = 0; a < m.axis_count; ++a) {
+    const thermal::AxisModel& x = m.axis[a];
+    JsonValue r = JsonValue::Object();
+    r.Set("axis", std::string(1, v.axes[a].name));
+    r.Set("p0_mm", double{x.p0_mm});
+    r.Set("reach_mm", double{x.reach_mm});
+    JsonValue offset = JsonValue::Array(), slope = JsonValue::Array();
+    for (uint8_t j = 0; j < thermal::kMaxChannels; ++j) {
+      if (((m.channel_mask >> j) & 1u) == 0) continue;
+      offset.Push(JsonValue(double{x.offset_um_per_K[j]}));
+      slope.Push(JsonValue(double{x.slope_um_per_K_m[j]}));
+    }
+    r.Set("offset_um_per_K", std::move(offset));
+    r.Set("slope_um_per_K_m", std::move(slope));
+    axes.Push(std::move(r));
+  }
+  return t;
+}
+
 // Everything `inspect` reports, from the validated view.
 JsonValue InspectData(const std::string& file, const table::TableView& v) {
   JsonValue d = JsonValue::Object();
@@ -98,6 +134,7 @@ JsonValue InspectData(const std::string& file, const table::TableView& v) {
     x.Set("backlash_steps", t.backlash_q8 / 256.0);
     tables.Push(std::move(x));
   }
+  if (v.thermal != nullptr) d["thermal"] = ThermalData(v);
   d.Set("info", v.info ? std::string(v.info, v.info_size) : std::string());
   return d;
 }
@@ -140,6 +177,23 @@ void InspectText(const JsonValue& d, std::ostream& out) {
         << ", backlash " << t.get("backlash_steps")->number << " steps"
         << (period != 0 ? ", wraps every " + std::to_string(period) + " steps" : std::string())
         << "\n";
+  }
+  if (const JsonValue* t = d.get("thermal")) {
+    out << "THERMAL: slew " << t->get("slew_um_s")->number << " um/s, hold "
+        << static_cast<double>(t->get("hold_ms")->integer) / 1000.0 << " s after a channel fault\n";
+    for (const JsonValue& c : t->get("channels")->array) {
+      out << "  channel " << c.get("channel")->integer << ": reference "
+          << c.get("reference_C")->number << " C, calibrated " << c.get("calibrated_low_C")->number
+          << " .. " << c.get("calibrated_high_C")->number << " C\n";
+    }
+    for (const JsonValue& a : t->get("axes")->array) {
+      out << "  " << a.get("axis")->string << ": p0 " << a.get("p0_mm")->number << " mm, reach "
+          << a.get("reach_mm")->number << " mm; per channel offset um/K";
+      for (const JsonValue& k : a.get("offset_um_per_K")->array) out << " " << k.number;
+      out << ", slope um/(K m)";
+      for (const JsonValue& k : a.get("slope_um_per_K_m")->array) out << " " << k.number;
+      out << "\n";
+    }
   }
   const std::string& info = d.get("info")->string;
   if (!info.empty()) {

@@ -5,6 +5,9 @@ namespace volcomp {
 
 Status PreparedTable::Prepare(const table::TableView& image, const BoardConfig& config) {
   VOLCOMP_TRY(CheckImageMatchesBoard(image, config));
+  // Issue 23 item 2 adds the thermal term to the compensation run; until then an image with a
+  // thermal model is refused whole, never applied without it.
+  if (image.thermal != nullptr) return Error::kThermalNotApplied;
   PreparedTable t;
   if (image.grid.present) {
     VOLCOMP_TRY(t.grid.Init(image.grid));

@@ -217,7 +217,51 @@ Status ParseInfo(const uint8_t* body, uint32_t length, TableView* view) {
   return Status::Ok();
 }
 
+// THERMAL refers to the axis count, so it is checked after AXES; its values by the one model
+// validator, ValidateThermalModel().
+Status ParseThermal(const uint8_t* body, uint32_t length, TableView* view) {
+  namespace ts = thermal_section;
+  if (length < ts::kAxisRecordsOffset) return Error::kSectionBadLength;
+  if (body[ts::kVersionOffset] != ts::kVersion) return Error::kThermalBadVersion;
+  if (body[ts::kAxisCountOffset] != view->axis_count) return Error::kThermalBadAxisCount;
+  if (body[ts::kReservedOffset] != 0) return Error::kImageReservedNotZero;
+  if (length != ts::kAxisRecordsOffset + view->axis_count * ts::kAxisRecordSize) {
+    return Error::kSectionBadLength;
+  }
+  VOLCOMP_TRY(thermal::ValidateThermalModel(ReadThermal(body)));
+  view->thermal = body;
+  return Status::Ok();
+}
+
 }  // namespace
+
+thermal::ThermalModel ReadThermal(const uint8_t* body) {
+  namespace ts = thermal_section;
+  static_assert(ts::kChannels == thermal::kMaxChannels, "THERMAL carries every channel");
+  thermal::ThermalModel m;
+  m.axis_count = body[ts::kAxisCountOffset];
+  m.channel_mask = body[ts::kChannelMaskOffset];
+  m.slew_um_s = LoadLeF32(body + ts::kSlewOffset);
+  m.hold_ms = LoadLe32(body + ts::kHoldOffset);
+  for (uint32_t j = 0; j < ts::kChannels; ++j) {
+    m.reference_cC[j] = static_cast<int16_t>(LoadLe16(body + ts::kReferenceOffset + 2 * j));
+    m.calibrated_low_cC[j] =
+        static_cast<int16_t>(LoadLe16(body + ts::kCalibratedLowOffset + 2 * j));
+    m.calibrated_high_cC[j] =
+        static_cast<int16_t>(LoadLe16(body + ts::kCalibratedHighOffset + 2 * j));
+  }
+  for (uint8_t a = 0; a < m.axis_count && a < thermal::kMaxModelAxes; ++a) {
+    const uint8_t* r = body + ts::kAxisRecordsOffset + a * ts::kAxisRecordSize;
+    thermal::AxisModel& x = m.axis[a];
+    x.p0_mm = LoadLeF32(r + ts::kP0Offset);
+    x.reach_mm = LoadLeF32(r + ts::kReachOffset);
+    for (uint32_t j = 0; j < ts::kChannels; ++j) {
+      x.offset_um_per_K[j] = LoadLeF32(r + ts::kOffsetCoefficientsOffset + 4 * j);
+      x.slope_um_per_K_m[j] = LoadLeF32(r + ts::kSlopeCoefficientsOffset + 4 * j);
+    }
+  }
+  return m;
+}
 
 Result<uint32_t> PeekImageSize(const uint8_t* data, size_t available) {
   if (available < kHeaderSize) return Error::kImageTooShort;
@@ -296,12 +340,18 @@ Result<TableView> ParseImage(const uint8_t* data, size_t size) {
         if (view.info != nullptr) return Error::kSectionDuplicate;
         VOLCOMP_TRY(ParseInfo(body, s.length, &view));
         break;
+      case SectionType::kThermal:
+        if (view.thermal != nullptr) return Error::kSectionDuplicate;
+        VOLCOMP_TRY(ParseThermal(body, s.length, &view));
+        break;
       default:
         if ((s.flags & section::kFlagOptional) == 0) return Error::kSectionUnknown;
         break;
     }
   }
-  if (!view.grid.present && view.axis1d_count == 0) return Error::kImageNoCorrection;
+  if (!view.grid.present && view.axis1d_count == 0 && view.thermal == nullptr) {
+    return Error::kImageNoCorrection;
+  }
   return view;
 }
 

@@ -54,6 +54,35 @@ uint8_t* WriteArray(uint8_t* p, const ElementArray& a, uint64_t count) {
   return p;
 }
 
+uint32_t ThermalBodySize(const thermal::ThermalModel& m) {
+  return thermal_section::kAxisRecordsOffset + m.axis_count * thermal_section::kAxisRecordSize;
+}
+
+void WriteThermal(uint8_t* p, const thermal::ThermalModel& m) {
+  namespace ts = thermal_section;
+  p[ts::kVersionOffset] = ts::kVersion;
+  p[ts::kAxisCountOffset] = m.axis_count;
+  p[ts::kChannelMaskOffset] = m.channel_mask;
+  StoreLeF32(p + ts::kSlewOffset, m.slew_um_s);
+  StoreLe32(p + ts::kHoldOffset, m.hold_ms);
+  for (uint32_t j = 0; j < ts::kChannels; ++j) {
+    StoreLe16(p + ts::kReferenceOffset + 2 * j, static_cast<uint16_t>(m.reference_cC[j]));
+    StoreLe16(p + ts::kCalibratedLowOffset + 2 * j, static_cast<uint16_t>(m.calibrated_low_cC[j]));
+    StoreLe16(p + ts::kCalibratedHighOffset + 2 * j,
+              static_cast<uint16_t>(m.calibrated_high_cC[j]));
+  }
+  for (uint8_t a = 0; a < m.axis_count; ++a) {
+    uint8_t* r = p + ts::kAxisRecordsOffset + a * ts::kAxisRecordSize;
+    const thermal::AxisModel& x = m.axis[a];
+    StoreLeF32(r + ts::kP0Offset, x.p0_mm);
+    StoreLeF32(r + ts::kReachOffset, x.reach_mm);
+    for (uint32_t j = 0; j < ts::kChannels; ++j) {
+      StoreLeF32(r + ts::kOffsetCoefficientsOffset + 4 * j, x.offset_um_per_K[j]);
+      StoreLeF32(r + ts::kSlopeCoefficientsOffset + 4 * j, x.slope_um_per_K_m[j]);
+    }
+  }
+}
+
 uint8_t* WriteSectionHeader(uint8_t* p, SectionType type, uint32_t length) {
   StoreLe16(p + section::kTypeOffset, static_cast<uint16_t>(type));
   StoreLe16(p + section::kFlagsOffset, type == SectionType::kInfo ? section::kFlagOptional : 0);
@@ -85,6 +114,10 @@ Result<uint32_t> ImageSize(const ImageSpec& spec) {
     if (spec.info_size > kMaxInfoBytes - 3u) return Error::kWriterBadArgument;
     size += kSectionHeaderSize + Pad4(spec.info_size);
   }
+  if (spec.thermal != nullptr) {
+    if (spec.thermal->axis_count != spec.axis_count) return Error::kWriterBadArgument;
+    size += kSectionHeaderSize + ThermalBodySize(*spec.thermal);
+  }
   if (size > kMaxImageSize) return Error::kImageTooLarge;
   return static_cast<uint32_t>(size);
 }
@@ -98,12 +131,13 @@ Result<uint32_t> WriteImage(const ImageSpec& spec, uint8_t* out, size_t capacity
 
   StoreLe32(out + header::kMagicOffset, kMagic);
   out[header::kVersionMajorOffset] = kVersionMajor;
-  out[header::kVersionMinorOffset] = kVersionMinor;
+  out[header::kVersionMinorOffset] = spec.thermal ? kVersionMinorThermal : kVersionMinor;
   StoreLe16(out + header::kHeaderSizeOffset, kHeaderSize);
   StoreLe32(out + header::kImageSizeOffset, *size);
   StoreLe32(out + header::kTableIdOffset, spec.table_id);
-  const uint16_t sections = static_cast<uint16_t>(1u + (spec.grid != nullptr ? 1u : 0u) +
-                                                  spec.axis1d_count + (spec.info ? 1u : 0u));
+  const uint16_t sections =
+      static_cast<uint16_t>(1u + (spec.grid != nullptr ? 1u : 0u) + spec.axis1d_count +
+                            (spec.info ? 1u : 0u) + (spec.thermal ? 1u : 0u));
   StoreLe16(out + header::kSectionCountOffset, sections);
   uint8_t* p = out + kHeaderSize;
 
@@ -156,6 +190,13 @@ Result<uint32_t> WriteImage(const ImageSpec& spec, uint8_t* out, size_t capacity
     p = WriteSectionHeader(p, SectionType::kInfo, Pad4(spec.info_size));
     __builtin_memcpy(p, spec.info, spec.info_size);
     p += Pad4(spec.info_size);
+  }
+
+  if (spec.thermal != nullptr) {
+    const uint32_t body = ThermalBodySize(*spec.thermal);
+    p = WriteSectionHeader(p, SectionType::kThermal, body);
+    WriteThermal(p, *spec.thermal);
+    p += body;
   }
 
   const uint32_t body_end = *size - kTrailerSize;

@@ -25,7 +25,11 @@ struct TableFixture {
   testing::AlignedBytes img;
   table::TableView view;
 
-  TableFixture(double cx, double cy, double cz, bool x_table = false) {
+  TableFixture(double cx,
+               double cy,
+               double cz,
+               bool x_table = false,
+               const thermal::ThermalModel* thermal = nullptr) {
     values.assign(2 * 2 * 2 * 3, 0);
     for (size_t i = 0; i < values.size(); i += 3) {
       values[i] = static_cast<int32_t>(cx * kQ8);
@@ -51,6 +55,7 @@ struct TableFixture {
       a.reverse.i32 = x_rev.data();
       s.axis1d_count = 1;
     }
+    s.thermal = thermal;
     img = testing::WriteImageBytes(s);
     EXPECT_NE(img.size(), 0u);
     view = *table::ParseImage(img.data(), img.size());
@@ -93,6 +98,22 @@ class CompensatorTest : public ::testing::Test {
   double last_[3] = {};
   double max_rate_ = 0;  // steps per Run() (one compensation run)
 };
+
+TEST_F(CompensatorTest, AnImageWithAThermalModelIsRefusedWhole) {
+  // Until the run applies the thermal term (issue 23 item 2), such an image must not become the
+  // active table without it.
+  thermal::ThermalModel m;
+  m.axis_count = 3;
+  m.channel_mask = 1;
+  m.axis[2].offset_um_per_K[0] = 1.0f;
+  const TableFixture with_model(1, 1, 1, false, &m);
+  ASSERT_NE(with_model.view.thermal, nullptr);
+  const TableFixture plain(1, 2, 3);
+  PreparedTable kept = Prepare(plain);
+  EXPECT_EQ(kept.Prepare(with_model.view, config_).error(), Error::kThermalNotApplied);
+  EXPECT_EQ(kept.crc32, plain.view.crc32);  // unchanged
+  EXPECT_NE(with_model.view.crc32, plain.view.crc32);
+}
 
 TEST_F(CompensatorTest, PassThroughUntilReferenced) {
   TableFixture f(10, -20, 30);

@@ -10,6 +10,7 @@
 #include "file_contents.hpp"
 #include "node_grid_csv.hpp"
 #include "temp_paths.hpp"
+#include "volcomp/image/image_builder.hpp"
 #include "volcomp/tools/json_value.hpp"
 
 namespace volcomp {
@@ -82,6 +83,60 @@ TEST(cli_inspect, BadImageWritesNothing) {
   EXPECT_EQ(r.code, 1);
   EXPECT_NE(r.err.find(dir / "missing.vct"), std::string::npos) << r.err;
   EXPECT_FALSE(std::filesystem::exists(dir / "out"));
+}
+
+TEST(cli_inspect, ShowsTheThermalModelInTextAndJson) {
+  ScratchDir dir("inspect_thermal");
+  image::ImageRequest r;
+  r.table_id = 9;
+  r.axes = {{'X', table::AxisKind::kLinear, 1000000}, {'Z', table::AxisKind::kLinear, 500000}};
+  image::AxisCorrections x;
+  x.axis = 0;
+  x.lattice = {2, 0, 1000};
+  x.forward_steps = {0, 1};
+  r.axis_tables = {x};
+  thermal::ThermalModel m;
+  m.axis_count = 2;
+  m.channel_mask = 0x02;  // channel 1
+  m.slew_um_s = 0.5f;
+  m.hold_ms = 90000;
+  m.reference_cC[1] = 2000;
+  m.calibrated_low_cC[1] = 1800;
+  m.calibrated_high_cC[1] = 3500;
+  m.axis[0].reach_mm = 400;
+  m.axis[0].slope_um_per_K_m[1] = -11.5f;
+  m.axis[1].offset_um_per_K[1] = 2.25f;
+  r.thermal = m;
+  const std::vector<uint8_t> bytes = ValueOf(image::BuildImage(r));
+  WriteText(dir / "t.vct", std::string(bytes.begin(), bytes.end()));
+
+  const auto j = RunCli({"inspect", dir / "t.vct", "--json"});
+  ASSERT_EQ(j.code, 0) << j.err;
+  const tools::JsonValue d = ValueOf(tools::ParseJson(j.out, "stdout"));
+  EXPECT_EQ(d.get("format_version")->string, "1.1");
+  const tools::JsonValue* t = d.get("thermal");
+  ASSERT_NE(t, nullptr);
+  EXPECT_DOUBLE_EQ(t->get("slew_um_s")->number, 0.5);
+  EXPECT_EQ(t->get("hold_ms")->integer, 90000);
+  ASSERT_EQ(t->get("channels")->array.size(), 1u);
+  EXPECT_EQ(t->get("channels")->array[0].get("channel")->integer, 1);
+  EXPECT_DOUBLE_EQ(t->get("channels")->array[0].get("calibrated_high_C")->number, 35.0);
+  const auto& axes = t->get("axes")->array;
+  ASSERT_EQ(axes.size(), 2u);
+  EXPECT_EQ(axes[1].get("axis")->string, "Z");
+  EXPECT_DOUBLE_EQ(axes[1].get("offset_um_per_K")->array[0].number, 2.25);
+  EXPECT_DOUBLE_EQ(axes[0].get("slope_um_per_K_m")->array[0].number, -11.5);
+
+  const auto text = RunCli({"inspect", dir / "t.vct"});
+  ASSERT_EQ(text.code, 0) << text.err;
+  EXPECT_NE(
+      text.out.find("THERMAL: slew 0.5 um/s, hold 90 s after a channel fault\n"
+                    "  channel 1: reference 20 C, calibrated 18 .. 35 C\n"
+                    "  X: p0 0 mm, reach 400 mm; per channel offset um/K 0, slope um/(K m) "
+                    "-11.5\n"
+                    "  Z: p0 0 mm, reach 0 mm; per channel offset um/K 2.25, slope um/(K m) 0\n"),
+      std::string::npos)
+      << text.out;
 }
 
 }  // namespace

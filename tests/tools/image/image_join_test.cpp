@@ -168,5 +168,57 @@ TEST(ImageJoin, PartsThatDoNotBelongTogetherAreRefused) {
   }
 }
 
+// A thermal model with a distinct offset per axis of `axes` (channel 0), in that axis order.
+thermal::ThermalModel ModelFor(const std::vector<AxisDef>& axes) {
+  thermal::ThermalModel m;
+  m.axis_count = static_cast<uint8_t>(axes.size());
+  m.channel_mask = 0x01;
+  m.calibrated_high_cC[0] = 4000;
+  for (size_t a = 0; a < axes.size(); ++a) {
+    m.axis[a].offset_um_per_K[0] = static_cast<float>(axes[a].name - 'W');  // X 1, Y 2, Z 3
+  }
+  return m;
+}
+
+TEST(ImageJoin, TheThermalModelOfEitherPartIsCarriedByAxisName) {
+  {  // From the GRID3 part: as it is.
+    ImageRequest g = GridRequest();
+    g.thermal = ModelFor(g.axes);
+    const LoadedImage grid = Load(g, "g.vct");
+    const LoadedImage axis = Load(AxisRequest(), "a.vct");
+    const JoinedImage joined = ValueOf(JoinImages({"g.vct", &grid}, {"a.vct", &axis}, {}));
+    const LoadedImage c = ValueOf(LoadedImage::FromBytes(joined.bytes, "c.vct"));
+    ASSERT_NE(c.view().thermal, nullptr);
+    const thermal::ThermalModel m = table::ReadThermal(c.view().thermal);
+    EXPECT_EQ(m.axis_count, 3);
+    EXPECT_EQ(m.axis[0].offset_um_per_K[0], 1.0f);
+    EXPECT_EQ(m.axis[2].offset_um_per_K[0], 3.0f);
+  }
+  {  // From the AXIS1D part (axes Z, Y): re-indexed into the joined image's X, Y, Z.
+    ImageRequest a = AxisRequest();
+    a.thermal = ModelFor(a.axes);
+    const LoadedImage grid = Load(GridRequest(), "g.vct");
+    const LoadedImage axis = Load(a, "a.vct");
+    const JoinedImage joined = ValueOf(JoinImages({"g.vct", &grid}, {"a.vct", &axis}, {}));
+    const LoadedImage c = ValueOf(LoadedImage::FromBytes(joined.bytes, "c.vct"));
+    ASSERT_NE(c.view().thermal, nullptr);
+    const thermal::ThermalModel m = table::ReadThermal(c.view().thermal);
+    EXPECT_EQ(m.axis_count, 3);
+    EXPECT_EQ(m.axis[0].offset_um_per_K[0], 0.0f);  // X: not in the part
+    EXPECT_EQ(m.axis[1].offset_um_per_K[0], 2.0f);  // Y
+    EXPECT_EQ(m.axis[2].offset_um_per_K[0], 3.0f);  // Z
+  }
+  {  // Both: one model is kept, so the join refuses to choose.
+    ImageRequest g = GridRequest();
+    g.thermal = ModelFor(g.axes);
+    ImageRequest a = AxisRequest();
+    a.thermal = ModelFor(a.axes);
+    const LoadedImage grid = Load(g, "g.vct");
+    const LoadedImage axis = Load(a, "a.vct");
+    ExpectFailure(JoinImages({"g.vct", &grid}, {"a.vct", &axis}, {}), Error::kInputInvalid,
+                  {"both g.vct and a.vct have a THERMAL section"});
+  }
+}
+
 }  // namespace
 }  // namespace volcomp::image

@@ -225,6 +225,13 @@ Expected<std::vector<uint8_t>> BuildImage(const ImageRequest& request) {
     spec.info = info.data();
     spec.info_size = static_cast<uint32_t>(info.size());
   }
+  if (request.thermal) {
+    if (request.thermal->axis_count != request.axes.size()) {
+      return Invalid("the thermal model has " + std::to_string(request.thermal->axis_count) +
+                     " axes, the image " + std::to_string(request.axes.size()));
+    }
+    spec.thermal = &*request.thermal;
+  }
 
   const Result<uint32_t> size = table::ImageSize(spec);
   if (!size.ok()) return Invalid(ErrorText(size.error()));

@@ -170,6 +170,23 @@ Expected<JoinedImage> JoinImages(const JoinPart& grid_part,
     VOLCOMP_TRY(add(a.axis1d[i], static_cast<uint8_t>(IndexOf(g, name)), as));
   }
 
+  // THERMAL: carried from whichever part has one, its axis records re-indexed by name.
+  if (g.thermal != nullptr && a.thermal != nullptr) {
+    return Invalid("both " + gs + " and " + as + " have a THERMAL section: join keeps one model");
+  }
+  thermal::ThermalModel thermal_model;
+  if (g.thermal != nullptr) thermal_model = table::ReadThermal(g.thermal);
+  if (a.thermal != nullptr) {
+    const thermal::ThermalModel part = table::ReadThermal(a.thermal);
+    thermal_model = part;
+    thermal_model.axis_count = g.axis_count;
+    for (auto& x : thermal_model.axis) x = thermal::AxisModel();
+    for (uint8_t i = 0; i < a.axis_count; ++i) {
+      thermal_model.axis[IndexOf(g, a.axes[i].name)] = part.axis[i];
+    }
+  }
+  if (g.thermal != nullptr || a.thermal != nullptr) spec.thermal = &thermal_model;
+
   JoinedImage out;
   std::string info = "builder=volcomp build image\ngrid_image=" + gs + "\naxis_image=" + as + "\n";
   for (const auto& [k, v] : options.info) info += k + "=" + v + "\n";

@@ -35,6 +35,7 @@ struct PreparedTable {
   uint32_t crc32 = 0;
 
   /// Prepares `image` for `config` (checks it matches the board). Leaves *this unchanged on error.
+  /// kThermalNotApplied for an image with a THERMAL section (the thermal term is not applied yet).
   Status Prepare(const table::TableView& image, const BoardConfig& config);
 
   /// The table's correction per axis (Q24.8 steps, before clamp and limiter): GRID3 at

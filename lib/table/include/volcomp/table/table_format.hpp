@@ -13,9 +13,10 @@ namespace volcomp::table {
 static_assert(__BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__, "volcomp assumes a little-endian CPU");
 
 // ---- Header --------------------------------------------------------------------------------
-inline constexpr uint32_t kMagic = 0x42544356u;  // "VCTB" as bytes 'V','C','T','B'
-inline constexpr uint8_t kVersionMajor = 1;      // incompatible changes bump this
-inline constexpr uint8_t kVersionMinor = 0;      // compatible additions (optional sections)
+inline constexpr uint32_t kMagic = 0x42544356u;     // "VCTB" as bytes 'V','C','T','B'
+inline constexpr uint8_t kVersionMajor = 1;         // incompatible changes bump this
+inline constexpr uint8_t kVersionMinor = 0;         // an image of sections minor 0 knows
+inline constexpr uint8_t kVersionMinorThermal = 1;  // an image with a THERMAL section
 inline constexpr uint32_t kHeaderSize = 24;
 inline constexpr uint32_t kTrailerSize = 4;  // CRC-32
 inline constexpr uint32_t kMaxImageSize = 4u * 1024u * 1024u;
@@ -43,10 +44,11 @@ inline constexpr uint16_t kFlagOptional = 0x0001;
 }  // namespace section
 
 enum class SectionType : uint16_t {
-  kAxes = 1,    // axis configuration: once, mandatory
-  kGrid3 = 2,   // volumetric grid: at most once
-  kAxis1d = 3,  // per-axis table: at most once per axis
-  kInfo = 4,    // UTF-8 "key=value\n" text for people: at most once, optional
+  kAxes = 1,     // axis configuration: once, mandatory
+  kGrid3 = 2,    // volumetric grid: at most once
+  kAxis1d = 3,   // per-axis table: at most once per axis
+  kInfo = 4,     // UTF-8 "key=value\n" text for people: at most once, optional
+  kThermal = 5,  // the thermal model (lib/thermal thermal_model.hpp): at most once, mandatory
 };
 
 enum class ElementType : uint8_t { kInt16 = 1, kInt32 = 2, kFloat32 = 3 };
@@ -118,6 +120,30 @@ inline constexpr uint32_t kMaxNodes = 65535;
 }  // namespace axis1d
 
 inline constexpr uint32_t kMaxInfoBytes = 4096;
+
+// THERMAL body (version 1): the thermal model of thermal::ThermalModel in physical units (um,
+// mm, cC: the coefficients are what a user reads and the builder fits; the board converts them
+// with the AXES resolution). 8 channels (thermal::kMaxChannels), one record per image axis.
+namespace thermal_section {
+inline constexpr uint8_t kVersion = 1;
+inline constexpr uint32_t kVersionOffset = 0;          // u8 kVersion
+inline constexpr uint32_t kAxisCountOffset = 1;        // u8 = the AXES count
+inline constexpr uint32_t kChannelMaskOffset = 2;      // u8 channels the model uses
+inline constexpr uint32_t kReservedOffset = 3;         // u8 0
+inline constexpr uint32_t kSlewOffset = 4;             // f32 um/s
+inline constexpr uint32_t kHoldOffset = 8;             // u32 ms
+inline constexpr uint32_t kReferenceOffset = 12;       // i16[8] cC
+inline constexpr uint32_t kCalibratedLowOffset = 28;   // i16[8] cC
+inline constexpr uint32_t kCalibratedHighOffset = 44;  // i16[8] cC
+inline constexpr uint32_t kAxisRecordsOffset = 60;
+inline constexpr uint32_t kChannels = 8;
+// Axis record: f32 p0_mm, f32 reach_mm, f32[8] offset um/K, f32[8] slope um/(K m).
+inline constexpr uint32_t kP0Offset = 0;
+inline constexpr uint32_t kReachOffset = 4;
+inline constexpr uint32_t kOffsetCoefficientsOffset = 8;
+inline constexpr uint32_t kSlopeCoefficientsOffset = 8 + 4 * kChannels;
+inline constexpr uint32_t kAxisRecordSize = 8 + 8 * kChannels;
+}  // namespace thermal_section
 
 // ---- Value ranges --------------------------------------------------------------------------
 /// Corrections leave the interpolators as Q24.8 steps (int32, 1/256 step).

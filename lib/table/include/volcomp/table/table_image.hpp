@@ -13,6 +13,7 @@
 
 #include "volcomp/base/status.hpp"
 #include "volcomp/table/table_format.hpp"
+#include "volcomp/thermal/thermal_model.hpp"
 
 namespace volcomp::table {
 
@@ -62,6 +63,7 @@ struct TableView {
   Axis1dView axis1d[kMaxAxes];
   const char* info = nullptr;  // INFO text (not NUL-terminated), or null
   uint32_t info_size = 0;
+  const uint8_t* thermal = nullptr;  // THERMAL body (validated), or null: ReadThermal()
 };
 
 /// Validates `size` bytes at `data` as one complete image (image_size must equal `size`).
@@ -71,6 +73,9 @@ Result<TableView> ParseImage(const uint8_t* data, size_t size);
 /// Reads only the image_size field of a header (for storage that holds an image of unknown
 /// length); kImageTooShort / kImageBadMagic / kImageTooLarge when it cannot be a valid header.
 Result<uint32_t> PeekImageSize(const uint8_t* data, size_t available);
+
+/// The thermal model of a THERMAL body ParseImage() has validated (TableView::thermal).
+thermal::ThermalModel ReadThermal(const uint8_t* body);
 
 /// Value of element `index` of an array of `type` with `frac_bits`, in steps (host-side helper
 /// for tools and tests; the interpolators read elements directly).

@@ -51,6 +51,7 @@ struct ImageSpec {
   Axis1dSpec axis1d[kMaxAxes];
   const char* info = nullptr;  // optional INFO text
   uint32_t info_size = 0;
+  const thermal::ThermalModel* thermal = nullptr;  // optional THERMAL (axis_count = axis_count)
 };
 
 /// Bytes the image for `spec` needs; kWriterBadArgument for inconsistent sizes.

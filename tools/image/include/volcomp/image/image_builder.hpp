@@ -16,6 +16,7 @@
 
 #include "volcomp/hosted/expected.hpp"
 #include "volcomp/table/table_format.hpp"
+#include "volcomp/thermal/thermal_model.hpp"
 
 namespace volcomp::image {
 
@@ -66,6 +67,8 @@ struct ImageRequest {
   std::optional<uint8_t> frac_bits;
   /// Free-form text for people (machine, date, source data); written as the INFO section.
   std::map<std::string, std::string> info;
+  /// The thermal model, written as the THERMAL section (its axis_count = axes.size()).
+  std::optional<thermal::ThermalModel> thermal;
 };
 
 /// Builds and validates an image (kInputInvalid naming the problem).
