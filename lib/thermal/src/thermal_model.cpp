@@ -4,7 +4,6 @@
 namespace volcomp::thermal {
 namespace {
 
-bool Finite(float v) { return v == v && v < 3.0e38f && v > -3.0e38f; }
 bool Within(float v, float limit) { return v >= -limit && v <= limit; }  // false for NaN
 float Abs(float v) { return v < 0.0f ? -v : v; }
 
@@ -12,8 +11,8 @@ float Abs(float v) { return v < 0.0f ? -v : v; }
 
 Status ValidateThermalModel(const ThermalModel& m) {
   if (m.axis_count < 1 || m.axis_count > kMaxModelAxes) return Error::kThermalBadAxisCount;
-  const bool ok = Finite(m.slew_um_s) && m.slew_um_s > 0.0f && m.slew_um_s <= kMaxSlew_um_s &&
-                  m.hold_ms <= kMaxHold_ms;
+  // Range checks are false for NaN, so they also refuse values that are not finite.
+  const bool ok = m.slew_um_s > 0.0f && m.slew_um_s <= kMaxSlew_um_s && m.hold_ms <= kMaxHold_ms;
   if (!ok) return Error::kThermalBadModel;
   for (uint8_t j = 0; j < kMaxChannels; ++j) {
     if (m.calibrated_low_cC[j] > m.calibrated_high_cC[j]) return Error::kThermalBadModel;
