@@ -148,9 +148,18 @@ run_lcnc() {
 
 # 0. The native component in a bare rtapi_app: loadrt's refusals, instances, gantry, rotary, inch,
 #    run-time parameters (a few seconds).
-hal_test=0
+# step NAME COMMAND...: runs a part whose failure does not stop the others; its output also goes
+# to $work/steps/NAME.log, and a failed part is named, with its failure lines, at the very end (CI
+# shows the head and the tail of a long log: the verdict must be in the tail).
+failed=()
+mkdir -p "$work/steps"
+step() {
+  local name=$1
+  shift
+  "$@" 2>&1 | tee "$work/steps/$name.log" >&2 || failed+=("$name")
+}
 wait_for_no_linuxcnc 540
-"$here/run_hal_component_test.sh" "$volcomp" "$modules" "$src" "$work/hal" || hal_test=1
+step hal_component "$here/run_hal_component_test.sh" "$volcomp" "$modules" "$src" "$work/hal"
 cp "$work/hal/halrun.log" "$artifacts/" 2>/dev/null || mkdir -p "$artifacts"
 
 # 1. The board behind stepgen and the native component in the position loop, in one run.
@@ -199,9 +208,8 @@ done
 wall12=$(($(date +%s) - start))
 
 # 3, 4. The recipes of docs/linuxcnc.md on LinuxCNC's own sample configurations.
-recipes=0
 wait_for_no_linuxcnc 540
-"$here/run_recipes.sh" "$volcomp" "$modules" "$src" "$work/recipes" "$artifacts" || recipes=1
+step recipes "$here/run_recipes.sh" "$volcomp" "$modules" "$src" "$work/recipes" "$artifacts"
 wall=$(($(date +%s) - start))
 
 mkdir -p "$artifacts"
@@ -209,13 +217,18 @@ cp -r "$work/eval" "$work/rest.csv" "$work/rest.csv.json" "$work/table.vct" "$wo
    "$artifacts/"
 cp -r "$comp/eval" "$artifacts/comp/"
 cp -r "$comp/type0" "$comp/type1" "$comp/volcomp-sim.ini" "$artifacts/comp/"
-status=0
-python3 "$here/check_comp.py" "$comp" "0:1:$comp/type1/x.comp:$work/gost_X.csv:gost_X.ngc" \
-  "1:0:$comp/type0/y.comp:$work/gost_Y.csv:gost_Y.ngc" || status=1
-python3 "$here/check_machine_position.py" "$work" "$volcomp" "$work/table.vct" $step_mm \
-  "$power_on_1" || status=1
+step check_comp python3 "$here/check_comp.py" "$comp" \
+  "0:1:$comp/type1/x.comp:$work/gost_X.csv:gost_X.ngc" "1:0:$comp/type0/y.comp:$work/gost_Y.csv:gost_Y.ngc"
+step check_machine_position python3 "$here/check_machine_position.py" "$work" "$volcomp" \
+  "$work/table.vct" $step_mm "$power_on_1"
 cp "$work/machine_position.json" "$artifacts/" 2>/dev/null || true
-python3 "$here/check_figures.py" "$work" "$wall" || status=1
+step check_figures python3 "$here/check_figures.py" "$work" "$wall"
+cp -r "$work/steps" "$artifacts/"
 echo "LinuxCNC runs 1 and 2: $wall12 s; with the recipes (runs 3 and 4): $wall s; seed $seed" >&2
-[[ $recipes -eq 0 && $hal_test -eq 0 ]] || status=1
-exit $status
+((${#failed[@]} == 0)) && exit 0
+echo "run_linuxcnc_test: FAILED: ${failed[*]} (seed $seed; logs in $artifacts/steps)" >&2
+for name in "${failed[@]}"; do
+  grep -i -A 12 "failed\|without results\|error:" "$work/steps/$name.log" | head -n 40 |
+    sed "s|^|  $name: |" >&2 || true
+done
+exit 1

@@ -105,8 +105,10 @@ mesa_sample() {  # SAMPLE DIR
 }
 
 # VOLCOMP_RECIPES="NAME ...": only those runs (when working on one; the test runs all).
-want() { [[ -z ${VOLCOMP_RECIPES:-} || " $VOLCOMP_RECIPES " == *" $1 "* ]]; }
-status=0
+# fail: the recipe being run failed (named again at the end).
+want() { [[ -z ${VOLCOMP_RECIPES:-} || " $VOLCOMP_RECIPES " == *" $1 "* ]] && current=$1; }
+current="" failed=()
+fail() { [[ " ${failed[*]} " == *" $current "* ]] || failed+=("$current"); }
 if want stepgen; then
 # --- stepgen: corexy (corexykins: joint 0 = X+Y, joint 1 = X-Y; the table is in joint space) ---
 d=$work/stepgen
@@ -120,8 +122,8 @@ edit_ini "$d/machine.ini" volcomp-stepgen.hal "$d/table.vct"
 # on a diagonal of corexy. Three stops around home.
 echo "== LinuxCNC run 3: docs recipe on LinuxCNC's sample sim/axis/corexy (stepgen, inch)" >&2
 run_recipe stepgen "$d" machine.ini env VOLCOMP_RECIPE_FEED=6 \
-  VOLCOMP_RECIPE_POINTS="0.4,0.2,-0.3;0.6,0.1,-0.5;0.3,0.4,-0.2" || status=1
-python3 "$here/check_recipe.py" stepgen "$d" "$volcomp" "$d/table.vct" 0.000125 25.4 || status=1
+  VOLCOMP_RECIPE_POINTS="0.4,0.2,-0.3;0.6,0.1,-0.5;0.3,0.4,-0.2" || fail
+python3 "$here/check_recipe.py" stepgen "$d" "$volcomp" "$d/table.vct" 0.000125 25.4 || fail
 
 fi
 if want servo; then
@@ -136,10 +138,9 @@ edit_ini "$d/machine.ini" volcomp-servo.hal "$d/table.vct"
 echo "== LinuxCNC run 4: docs recipe on LinuxCNC's sample sim/tklinuxcnc/servo_sim (pid + encoder, inch), reloads" >&2
 run_recipe servo "$d" machine.ini env VOLCOMP_RECIPE_FEED=100 \
   VOLCOMP_RECIPE_POINTS="3,2,-1;-2,3,1.5;4,-1,0.5" VOLCOMP_RECIPE_RELOAD=1 \
-  VOLCOMP_RECIPE_TABLE="$d/table.vct" || status=1
+  VOLCOMP_RECIPE_TABLE="$d/table.vct" || fail
 # One encoder count (6000 per inch).
-python3 "$here/check_recipe.py" servo "$d" "$volcomp" "$d/table.vct" 0.000166667 25.4 servo ||
-  status=1
+python3 "$here/check_recipe.py" servo "$d" "$volcomp" "$d/table.vct" 0.000166667 25.4 servo || fail
 
 fi
 # --- Mesa cards: the stand-in, built like any third-party component ---
@@ -159,9 +160,9 @@ build_table "$d/table.vct" X=-260:260,Y=-260:260,Z=-260:260 40
 edit_ini "$d/machine.ini" volcomp-hm2-stepper.hal "$d/table.vct"
 echo "== LinuxCNC run 5: docs recipe on LinuxCNC's sample by_interface/mesa/hm2-stepper (card's stepgens, inch)" >&2
 run_recipe hm2-stepper "$d" machine.ini env VOLCOMP_EXTRA_MODULES="$standin" \
-  VOLCOMP_RECIPE_FEED=120 VOLCOMP_RECIPE_POINTS="2,1,-1;-3,4,2;5,-2,0.5" || status=1
+  VOLCOMP_RECIPE_FEED=120 VOLCOMP_RECIPE_POINTS="2,1,-1;-3,4,2;5,-2,0.5" || fail
 # One step (SCALE 1000 per inch).
-python3 "$here/check_recipe.py" hm2-stepper "$d" "$volcomp" "$d/table.vct" 0.001 25.4 || status=1
+python3 "$here/check_recipe.py" hm2-stepper "$d" "$volcomp" "$d/table.vct" 0.001 25.4 || fail
 
 fi
 if want hm2-servo; then
@@ -172,9 +173,10 @@ build_table "$d/table.vct" X=-80:260,Y=-80:260,Z=-80:80
 edit_ini "$d/machine.ini" volcomp-hm2-servo.hal "$d/table.vct"
 echo "== LinuxCNC run 6: docs recipe on LinuxCNC's sample by_interface/mesa/hm2-servo (pid on the card's pwmgens and encoders, inch)" >&2
 run_recipe hm2-servo "$d" machine.ini env VOLCOMP_EXTRA_MODULES="$standin" \
-  VOLCOMP_RECIPE_FEED=50 VOLCOMP_RECIPE_POINTS="2,1,-1;-1,3,1;4,-2,0.5" || status=1
+  VOLCOMP_RECIPE_FEED=50 VOLCOMP_RECIPE_POINTS="2,1,-1;-1,3,1;4,-2,0.5" || fail
 # One encoder count (81920 per inch); command-deriv unconnected: pid differentiates the command.
-python3 "$here/check_recipe.py" hm2-servo "$d" "$volcomp" "$d/table.vct" 0.0000122070 25.4 pid ||
-  status=1
+python3 "$here/check_recipe.py" hm2-servo "$d" "$volcomp" "$d/table.vct" 0.0000122070 25.4 pid || fail
 fi
-exit $status
+((${#failed[@]} == 0)) && exit 0
+echo "run_recipes: FAILED: ${failed[*]}" >&2
+exit 1

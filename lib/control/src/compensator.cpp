@@ -1,12 +1,17 @@
 // Compensator: table lookup -> clamp -> rate/acceleration limiter -> whole steps.
 #include "volcomp/control/compensator.hpp"
 
+#include <atomic>
+
+#include "volcomp/base/interp_arith.hpp"
+
 namespace volcomp {
 
 Status PreparedTable::Prepare(const table::TableView& image, const BoardConfig& config) {
   VOLCOMP_TRY(CheckImageMatchesBoard(image, config));
-  // Issue 23 item 2 adds the thermal term to the compensation run; until then an image with a
-  // thermal model is refused whole, never applied without it.
+  // The run applies a thermal term (PublishThermal()), but the board has no temperature source
+  // or channel objects yet (docs/thermal.md, "Next"): until it does, an image with a thermal model
+  // is refused whole, never accepted and left without its thermal part.
   if (image.thermal != nullptr) return Error::kThermalNotApplied;
   PreparedTable t;
   if (image.grid.present) {
@@ -70,6 +75,7 @@ void Compensator::Reset(uint8_t axis_count) {
     hysteresis_[a] = 0;
     direction_[a] = 0;
     target_q8_[a] = 0;
+    thermal_[0][a] = thermal_[1][a] = thermal::ThermalTermSteps();
   }
   wrap_mask_ = 0;
   rebase_pending_ = false;
@@ -127,6 +133,17 @@ void Compensator::Rebase(const int32_t* machine_pos_steps) {
       wrap_[a].Init(machine_pos_steps[a], t.origin_steps(), t.period_divider());
     }
   }
+}
+
+void Compensator::PublishThermal(const thermal::ThermalTermSteps* terms, uint8_t count) {
+  const uint8_t next = thermal_slot_ ^ 1u;
+  for (uint8_t a = 0; a < table::kMaxAxes; ++a) {
+    thermal_[next][a] = a < count ? terms[a] : thermal::ThermalTermSteps();
+  }
+  // The slot's words are stored before the index that makes it current (the run that preempts
+  // this sees the whole slot or the old one).
+  std::atomic_signal_fence(std::memory_order_release);
+  thermal_slot_ = next;
 }
 
 bool Compensator::passthrough() const {
@@ -190,9 +207,16 @@ void Compensator::RefreshTargets(const int32_t* machine_pos_steps) {
       const int32_t pos = (wrap_mask_ >> a) & 1u ? wrap_[a].position() : machine_pos_steps[a];
       t += table.axis_table[i].Lookup(pos, direction != 0);
     }
+    // The thermal term at the commanded machine position: one 32x32->64 multiply; within int32 by
+    // the bounds of thermal_term.hpp; the sum with the table's part saturates before the clamp.
+    const thermal::ThermalTermSteps& th = thermal_[thermal_slot_][a];
+    const int32_t from_p0 = static_cast<int32_t>(static_cast<uint32_t>(machine_pos_steps[a]) -
+                                                 static_cast<uint32_t>(th.p0_steps));
+    const int32_t thermal_q8 =
+        th.offset_q8 + static_cast<int32_t>((static_cast<int64_t>(th.slope_q32) * from_p0) >> 24);
+    const int32_t asked = AddSat(t, thermal_q8);
     const int32_t max = max_q8_[a];
-    const int32_t asked = t;
-    t = t > max ? max : t;
+    t = asked > max ? max : asked;
     t = t < -max ? -max : t;
     // Direction switch (selects, not branches): it begins at the refresh that first looks the
     // table up in the new direction if the correction had caught up with its target (within one

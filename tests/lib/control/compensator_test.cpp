@@ -190,6 +190,57 @@ TEST_F(CompensatorTest, ClampHoldsTheConfiguredMaximum) {
   EXPECT_EQ(comp_.target_q8(0), 100 * 256);
 }
 
+// The thermal term (thermal_term.hpp) at the commanded position, added to the table's target
+// before the clamp; the expected values are worked here in double from the terms' definition.
+TEST_F(CompensatorTest, TheThermalTermIsAddedToTheTargetBeforeTheClamp) {
+  TableFixture f(10, -20, 30);
+  comp_.SetTable(Prepare(f), pos_);
+  comp_.SetReferenced(true);
+  comp_.SetEnabled(true);
+  thermal::ThermalTermSteps terms[2];
+  terms[0].offset_q8 = 5 * 256;  // +5 steps at p0
+  terms[0].slope_q32 = 1288490;  // 0.0003 steps per step
+  terms[0].p0_steps = 10000;
+  terms[1].offset_q8 = -640;       // -2.5 steps, no slope
+  comp_.PublishThermal(terms, 2);  // axis 2: none
+  auto thermal_steps = [&](int a, double pos) {
+    const thermal::ThermalTermSteps& t = comp_.thermal_term(static_cast<uint8_t>(a));
+    return t.offset_q8 / kQ8 + t.slope_q32 / 4294967296.0 * (pos - t.p0_steps);
+  };
+  for (const int32_t x : {20000, 0, -70000}) {
+    pos_[0] = x;
+    RunN(20000);
+    const double want0 = 10 + thermal_steps(0, x);
+    EXPECT_NEAR(comp_.target_q8(0) / kQ8, want0, 1 / kQ8) << "X at " << x;
+    EXPECT_EQ(corr_[0], static_cast<int32_t>(std::floor(want0 + 0.5))) << "X at " << x;
+  }
+  EXPECT_EQ(comp_.target_q8(1), -20 * 256 - 640);
+  EXPECT_EQ(corr_[1], -22);  // -22.5 rounds half up
+  EXPECT_EQ(corr_[2], 30);
+  EXPECT_EQ(comp_.clamped_refreshes(0), 0u);
+
+  // A term that takes the sum past the board's maximum is clamped, and counted.
+  terms[0].offset_q8 = 95 * 256;
+  comp_.PublishThermal(terms, 1);  // axis 1's term drops out
+  pos_[0] = 10000;                 // at p0: 10 + 95 steps
+  RunN(20000);
+  EXPECT_EQ(comp_.target_q8(0), 100 * 256);
+  EXPECT_EQ(corr_[0], 100);
+  EXPECT_GT(comp_.clamped_refreshes(0), 0u);
+  EXPECT_EQ(corr_[1], -20);
+
+  // Disengaged: the thermal term goes with the table's (it is read in the table's coordinates).
+  comp_.SetEnabled(false);
+  RunN(30000);
+  EXPECT_EQ(corr_[0], 0);
+  EXPECT_TRUE(comp_.passthrough());
+
+  // Reset() drops the published terms.
+  ASSERT_TRUE(comp_.Configure(config_).ok());
+  EXPECT_EQ(comp_.thermal_term(0).offset_q8, 0);
+  EXPECT_EQ(comp_.thermal_term(0).slope_q32, 0);
+}
+
 TEST_F(CompensatorTest, TableChangeIsSpreadWithinLimits) {
   TableFixture a(-30, 0, 0), b(30, 0, 0);
   comp_.SetTable(Prepare(a), pos_);

@@ -50,6 +50,16 @@ inline int32_t SubSat(int32_t a, int32_t b) {
 #endif
 }
 
+/// a + b saturated to the int32 range (QADD).
+inline int32_t AddSat(int32_t a, int32_t b) {
+#if defined(__ARM_FEATURE_DSP)
+  return __qadd(a, b);
+#else
+  const int64_t s = static_cast<int64_t>(a) + b;
+  return static_cast<int32_t>(s > INT32_MAX ? INT32_MAX : (s < INT32_MIN ? INT32_MIN : s));
+#endif
+}
+
 /// acc + w * v, exactly in 64 bits (SMLAL). GCC 12 knows that the weights are non-negative and
 /// then multiplies them as unsigned (UMULL + MLA + ADDS/ADC); the one-instruction form is written
 /// out for the Cortex-M4 (C reference below, the same value).

@@ -18,6 +18,7 @@
 #include "volcomp/lookup/axis_lookup.hpp"
 #include "volcomp/lookup/grid_lookup.hpp"
 #include "volcomp/table/table_image.hpp"
+#include "volcomp/thermal/thermal_term.hpp"
 
 namespace volcomp {
 
@@ -35,7 +36,8 @@ struct PreparedTable {
   uint32_t crc32 = 0;
 
   /// Prepares `image` for `config` (checks it matches the board). Leaves *this unchanged on error.
-  /// kThermalNotApplied for an image with a THERMAL section (the thermal term is not applied yet).
+  /// kThermalNotApplied for an image with a THERMAL section (the board cannot read temperatures
+  /// yet: docs/thermal.md).
   Status Prepare(const table::TableView& image, const BoardConfig& config);
 
   /// The table's correction per axis (Q24.8 steps, before clamp and limiter): GRID3 at
@@ -132,6 +134,18 @@ class Compensator {
     enabled_ = enabled;
     fault_ = fault;
     UpdateEngaged();
+  }
+
+  /// The thermal terms of axes 0..count-1 (the others zero), added to each axis's table target
+  /// before the clamp from the next refresh of the axis on (thermal/thermal_term.hpp; engaged
+  /// only: the thermal term needs the table's coordinates). Written into the slot the run does not
+  /// read, then that slot made current with one store: call it from a context the run preempts
+  /// (the MCU's main loop) or never runs beside (not from a second core while Run() runs: a
+  /// second publish within one run would rewrite the slot it reads). Zero after Reset().
+  void PublishThermal(const thermal::ThermalTermSteps* terms, uint8_t count);
+  /// The thermal terms of axis `a` the run applies.
+  const thermal::ThermalTermSteps& thermal_term(uint8_t a) const {
+    return thermal_[thermal_slot_][a];
   }
 
   /// One compensation run. `machine_pos_steps`: commanded position per axis in machine
@@ -241,6 +255,10 @@ class Compensator {
   uint8_t phase_ = 0;            // next refresh phase, 0..refresh_runs()-1
   bool rebase_pending_ = false;  // RequestRebase(): the next RefreshTargets() rebases instead
   int32_t target_q8_[table::kMaxAxes] = {};
+  // PublishThermal(): two slots, the run reads thermal_[thermal_slot_] (volatile: one load per
+  // refresh, ordered after the slot's writes by the publisher's signal fence).
+  thermal::ThermalTermSteps thermal_[2][table::kMaxAxes] = {};
+  volatile uint8_t thermal_slot_ = 0;
   int32_t grid_q8_[3] = {};  // the grid part of the refresh
   int32_t max_q8_[table::kMaxAxes] = {};
   uint32_t clamped_refreshes_[table::kMaxAxes] = {};

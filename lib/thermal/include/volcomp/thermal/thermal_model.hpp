@@ -95,6 +95,8 @@ class ThermalCorrection {
   /// The applied terms of axis `a`, um and um/mm.
   float applied_offset_um(uint8_t a) const { return offset_um_[a]; }
   float applied_slope_um_per_mm(uint8_t a) const { return slope_um_mm_[a]; }
+  /// Where the applied slope term of axis `a` is zero, mm (the model's p0 once one was configured).
+  float applied_p0_mm(uint8_t a) const { return p0_mm_[a]; }
   /// The applied correction of axis `a` at `p_mm`, um.
   float CorrectionAt_um(uint8_t a, float p_mm) const {
     return offset_um_[a] + slope_um_mm_[a] * (p_mm - p0_mm_[a]);
