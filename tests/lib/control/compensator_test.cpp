@@ -203,9 +203,9 @@ TEST_F(CompensatorTest, TheThermalTermIsAddedToTheTargetBeforeTheClamp) {
   terms[0].p0_steps = 10000;
   terms[1].offset_q8 = -640;       // -2.5 steps, no slope
   comp_.PublishThermal(terms, 2);  // axis 2: none
+  // From the published terms (not read back from the compensator).
   auto thermal_steps = [&](int a, double pos) {
-    const thermal::ThermalTermSteps& t = comp_.thermal_term(static_cast<uint8_t>(a));
-    return t.offset_q8 / kQ8 + t.slope_q32 / 4294967296.0 * (pos - t.p0_steps);
+    return terms[a].offset_q8 / kQ8 + terms[a].slope_q32 / 4294967296.0 * (pos - terms[a].p0_steps);
   };
   for (const int32_t x : {20000, 0, -70000}) {
     pos_[0] = x;
