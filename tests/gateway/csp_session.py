@@ -359,7 +359,10 @@ def run(s, grid, args):
     if rc != 0:
         s.fail("reference failed")
     print("== activation while moving is refused", flush=True)
-    for attempt in range(3):
+    # A loaded 2-core machine (CI beside a build) can stall the master past the window again and
+    # again: up to 8 attempts, and a run where every one stalled says so rather than "accepted".
+    stalled_attempts = 0
+    for attempt in range(8):
         # Judged after the attempt: refused, the targets must have stayed uncorrected; accepted
         # during a stall of the master, the correction rightly ramps in.
         s.expect_zero = False
@@ -374,6 +377,7 @@ def run(s, grid, args):
             break
         # The master itself stalled for most of the 100 ms "at rest" window (an overloaded
         # machine), so the board rightly saw the axes at rest: undo and try again.
+        stalled_attempts += 1
         print("   (the master stalled %.0f ms: not a test of 'moving'; again)" % (s.max_gap * 1000))
         s.expect_zero = False
         s.while_running(tool + ["deactivate"] + can_opt, path=around(HOME, 150000, 200))
@@ -384,7 +388,10 @@ def run(s, grid, args):
                                    path=around(HOME, 150000, 200))
         if up_rc != 0:
             s.fail("upload for another attempt failed")
-    if rc == 0:
+    if rc == 0 and stalled_attempts == 8:
+        s.fail("activation while moving could not be tested: the master stalled in all 8 attempts "
+               "(a machine too loaded for this test)")
+    elif rc == 0:
         s.fail("activation while moving was not refused")
     print("== at rest: activation, ramp-in, exact correction", flush=True)
     rest = [1800000, 2300000, 900000]

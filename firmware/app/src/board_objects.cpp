@@ -57,6 +57,12 @@ constexpr uint32_t Raw(T v) {
   nullptr, VOLCOMP_OD_AXIS_VALUE(source, 0) VOLCOMP_OD_AXIS_VALUE(source, 1)                   \
   VOLCOMP_OD_AXIS_VALUE(source, 2) VOLCOMP_OD_AXIS_VALUE(source, 3)                             \
   VOLCOMP_OD_AXIS_VALUE(source, 4) VOLCOMP_OD_AXIS_VALUE(source, 5)
+#define VOLCOMP_OD_CHANNEL_VALUE(source, ch) [](const BoardObjects& o) { return Raw(o.source(ch)); },
+#define VOLCOMP_OD_CHANNEL_ARRAY(id, index, type, access, def, source, name)                    \
+  nullptr, VOLCOMP_OD_CHANNEL_VALUE(source, 0) VOLCOMP_OD_CHANNEL_VALUE(source, 1)             \
+  VOLCOMP_OD_CHANNEL_VALUE(source, 2) VOLCOMP_OD_CHANNEL_VALUE(source, 3)                       \
+  VOLCOMP_OD_CHANNEL_VALUE(source, 4) VOLCOMP_OD_CHANNEL_VALUE(source, 5)                       \
+  VOLCOMP_OD_CHANNEL_VALUE(source, 6) VOLCOMP_OD_CHANNEL_VALUE(source, 7)
 constexpr ValueRead kValues[] = {
 #include "volcomp/canopen/od_entries.def"  // NOLINT(build/include)
 };
@@ -66,6 +72,8 @@ constexpr ValueRead kValues[] = {
 #undef VOLCOMP_OD_SETTING
 #undef VOLCOMP_OD_AXIS_VALUE
 #undef VOLCOMP_OD_AXIS_ARRAY
+#undef VOLCOMP_OD_CHANNEL_VALUE
+#undef VOLCOMP_OD_CHANNEL_ARRAY
 // clang-format on
 static_assert(sizeof(kValues) / sizeof(kValues[0]) == static_cast<size_t>(ObjectId::kCount),
               "one value reader per ObjectId");
@@ -124,7 +132,47 @@ uint16_t BoardObjects::device_state() const {
   s.staged_verified = parts_.tables->staged_state() == StagedState::kVerified;
   s.passthrough = t.compensator().passthrough();
   s.settings_pending = settings_pending_;
+  s.thermal_fault = parts_.thermal->fault();
   return canopen::EncodeDeviceState(s);
+}
+
+uint8_t BoardObjects::thermal_status() const {
+  const thermal::ThermalStatus& t = parts_.thermal->correction().status();
+  return static_cast<uint8_t>(
+      (t.active ? canopen::kThermalActive : 0) | (t.holding ? canopen::kThermalHolding : 0) |
+      (t.fading ? canopen::kThermalFading : 0) | (t.slewing ? canopen::kThermalSlewing : 0) |
+      (parts_.thermal->saturated_axes() != 0 ? canopen::kThermalSaturated : 0));
+}
+
+namespace {
+// Rounded to the nearest integer, saturated at int32 (main loop only: float is allowed here).
+int32_t RoundToInt32(float v) {
+  if (!(v > -2147483520.0f)) return INT32_MIN;  // NaN too
+  if (v >= 2147483520.0f) return INT32_MAX;
+  return static_cast<int32_t>(v >= 0.0f ? v + 0.5f : v - 0.5f);
+}
+}  // namespace
+
+// Not inlined into each of the 12 per-axis value readers (flash: docs/mcu-target.md).
+[[gnu::noinline]] int32_t BoardObjects::thermal_offset(uint8_t a) const {
+  return a < axis_count() ? RoundToInt32(parts_.thermal->correction().applied_offset_um(a) * 1e3f)
+                          : 0;
+}
+
+[[gnu::noinline]] int32_t BoardObjects::thermal_slope(uint8_t a) const {
+  // um per mm = 1e6 nm per m.
+  return a < axis_count()
+             ? RoundToInt32(parts_.thermal->correction().applied_slope_um_per_mm(a) * 1e6f)
+             : 0;
+}
+
+SdoAbort BoardObjects::WriteTemperature(uint8_t ch, uint32_t raw) {
+  BoardThermal& t = *parts_.thermal;
+  if (t.channels().config(ch).source != thermal::ChannelSource::kCanObject)
+    return Refuse(SdoAbort::kReadOnly);  // another source feeds the channel, or none
+  return t.Reading(ch, static_cast<int16_t>(raw & 0xFFFFu), parts_.policy->now_ms()).ok()
+             ? SdoAbort::kNone
+             : SdoAbort::kGeneral;
 }
 
 uint32_t BoardObjects::table_status() const {
@@ -377,6 +425,17 @@ SdoAbort BoardObjects::DoWrite(const ObjectEntry& e, const uint8_t* data, uint32
       return TableControl(static_cast<uint8_t>(v));
     case ObjectId::kCommandWord:
       return CommandWord(static_cast<uint16_t>(v));
+    case ObjectId::kTemperature1:
+    case ObjectId::kTemperature2:
+    case ObjectId::kTemperature3:
+    case ObjectId::kTemperature4:
+    case ObjectId::kTemperature5:
+    case ObjectId::kTemperature6:
+    case ObjectId::kTemperature7:
+    case ObjectId::kTemperature8:
+      return WriteTemperature(static_cast<uint8_t>(static_cast<uint16_t>(e.id) -
+                                                   static_cast<uint16_t>(ObjectId::kTemperature1)),
+                              v);
     case ObjectId::kStoreAll:
       if (!policy.writable()) return Refuse(SdoAbort::kCannotStore);
       if (v != canopen::kSaveSignature) return SdoAbort::kCannotStore;

@@ -47,6 +47,7 @@ Status BoardPolicy::Activate(const table::TableView& view) {
     return s;
   }
   owner_.hand_over->Publish();
+  owner_.thermal->SetModel(view);
   has_active_ = true;
   active_id_ = view.table_id;
   active_crc_ = view.crc32;
@@ -55,6 +56,7 @@ Status BoardPolicy::Activate(const table::TableView& view) {
 
 void BoardPolicy::Deactivate() {
   owner_.hand_over->PublishClear();
+  owner_.thermal->ClearModel();
   has_active_ = false;
 }
 

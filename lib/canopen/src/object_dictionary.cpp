@@ -4,6 +4,15 @@
 #include "volcomp/canopen/node_defaults.hpp"
 #include "volcomp/config/board_config.hpp"
 
+// The names serve the EDS file and the host tools' messages. A cross build (the MCU images,
+// VOLCOMP_OD_NAMES=0: lib/CMakeLists.txt) leaves them empty: the node answers by index and
+// sub-index, and their 9 KB of text would crowd the 76 KB application region (docs/mcu-target.md).
+#if !defined(VOLCOMP_OD_NAMES) || VOLCOMP_OD_NAMES
+#define VOLCOMP_OD_NAME(text) text
+#else
+#define VOLCOMP_OD_NAME(text) ""
+#endif
+
 namespace volcomp::canopen {
 
 const ObjectEntry kObjectEntries[] = {
@@ -11,8 +20,9 @@ const ObjectEntry kObjectEntries[] = {
 #define VOLCOMP_OD_NO_LIMITS (0, 0, false)
 #define VOLCOMP_OD_LIMIT_FIELDS(low, high, limited) low, high, limited
 #define VOLCOMP_OD_OBJECT(index, kind, name)
-#define VOLCOMP_OD_ENTRY(id, index, sub, type, access, def, name) \
-  {ObjectId::id, index, sub, DataType::type, Access::access, def, name, 0, 0, false, false},
+#define VOLCOMP_OD_ENTRY(id, index, sub, type, access, def, name)          \
+  {ObjectId::id,          index, sub, DataType::type, Access::access, def, \
+   VOLCOMP_OD_NAME(name), 0,     0,   false,          false},
 #define VOLCOMP_OD_VALUE(id, index, sub, type, access, def, source, name) \
   {ObjectId::id,                                                          \
    index,                                                                 \
@@ -20,18 +30,23 @@ const ObjectEntry kObjectEntries[] = {
    DataType::type,                                                        \
    Access::access,                                                        \
    def,                                                                   \
-   name,                                                                  \
+   VOLCOMP_OD_NAME(name),                                                 \
    0,                                                                     \
    0,                                                                     \
    false,                                                                 \
    Access::access == Access::kRo && FixedSize(DataType::type) != 0},
-#define VOLCOMP_OD_COMMAND(id, index, sub, type, def, source, name) \
-  {ObjectId::id, index, sub, DataType::type, Access::kRw, def, name, 0, 0, false, true},
+#define VOLCOMP_OD_COMMAND(id, index, sub, type, def, source, name)     \
+  {ObjectId::id,          index, sub, DataType::type, Access::kRw, def, \
+   VOLCOMP_OD_NAME(name), 0,     0,   false,          true},
 #define VOLCOMP_OD_SETTING(id, index, sub, type, limits, def, field, key, name) \
-  {ObjectId::id, index,                                                         \
-   sub,          DataType::type,                                                \
-   Access::kRw,  static_cast<int64_t>(def),                                     \
-   name,         VOLCOMP_OD_LIMIT_FIELDS limits,                                \
+  {ObjectId::id,                                                                \
+   index,                                                                       \
+   sub,                                                                         \
+   DataType::type,                                                              \
+   Access::kRw,                                                                 \
+   static_cast<int64_t>(def),                                                   \
+   VOLCOMP_OD_NAME(name),                                                       \
+   VOLCOMP_OD_LIMIT_FIELDS limits,                                              \
    false},
 #include "volcomp/canopen/od_entries.def"
 #undef VOLCOMP_OD_OBJECT
@@ -46,7 +61,7 @@ const ObjectEntry kObjectEntries[] = {
 const size_t kObjectEntryCount = sizeof(kObjectEntries) / sizeof(kObjectEntries[0]);
 
 const ObjectHeader kObjectHeaders[] = {
-#define VOLCOMP_OD_OBJECT(index, kind, name) {index, ObjectKind::kind, name},
+#define VOLCOMP_OD_OBJECT(index, kind, name) {index, ObjectKind::kind, VOLCOMP_OD_NAME(name)},
 #define VOLCOMP_OD_ENTRY(id, index, sub, type, access, def, name)
 #include "volcomp/canopen/od_entries.def"
 #undef VOLCOMP_OD_OBJECT

@@ -10,8 +10,10 @@ constexpr uint32_t kMagic = 0x47464356;  // "VCFG"
 // in its reserved 16-bit slot; 4: each axis's direction switch acceleration in the first of its
 // reserved 32-bit slots (older records: the defaults); 5: the TPDO parameters after the version-4
 // record (kPdoRecordBytes each); 6: the RPDO's COB-ID and transmission type after them
-// (kRpdoRecordBytes; the record grows to kSettingsBytes).
-constexpr uint16_t kVersion = 6;
+// (kRpdoRecordBytes); 7: the temperature channels after them (kChannelRecordBytes each; the
+// record grows to kSettingsBytes).
+constexpr uint16_t kVersion = 7;
+constexpr uint16_t kVersionWithoutChannels = 6;
 constexpr uint16_t kVersionWithoutRpdo = 5;
 constexpr uint16_t kVersionWithoutPdo = 4;
 constexpr uint16_t kVersionWithoutSwitch = 3;
@@ -20,7 +22,9 @@ constexpr uint16_t kVersionWithoutInhibit = 1;
 static_assert(kVersionWithoutInhibit < kVersionWithoutHysteresis &&
                   kVersionWithoutHysteresis < kVersionWithoutSwitch &&
                   kVersionWithoutSwitch < kVersionWithoutPdo &&
-                  kVersionWithoutPdo < kVersionWithoutRpdo && kVersionWithoutRpdo < kVersion,
+                  kVersionWithoutPdo < kVersionWithoutRpdo &&
+                  kVersionWithoutRpdo < kVersionWithoutChannels &&
+                  kVersionWithoutChannels < kVersion,
               "versions in order: every one between the first and kVersion is read");
 
 class Writer {
@@ -35,6 +39,7 @@ class Writer {
     StoreLe32(p_, v);
     p_ += 4;
   }
+  void I16(int16_t v) { U16(static_cast<uint16_t>(v)); }
   void I32(int32_t v) { U32(static_cast<uint32_t>(v)); }
 
  private:
@@ -55,6 +60,7 @@ class Reader {
     p_ += 4;
     return v;
   }
+  int16_t I16() { return static_cast<int16_t>(U16()); }
   int32_t I32() { return static_cast<int32_t>(U32()); }
 
  private:
@@ -72,11 +78,20 @@ Status ValidateSettings(const BoardSettings& s, ConfigFinding* finding, OutputSt
   if (f.rule == ConfigRule::kNone) {
     const Status b = stage == OutputStage::kStepPulses ? ValidateStepOutputConfig(s.board, &f)
                                                        : ValidateBoardConfig(s.board, &f);
-    if (finding != nullptr) *finding = f;
-    return b;
+    if (!b.ok()) {
+      if (finding != nullptr) *finding = f;
+      return b;
+    }
+    for (uint8_t ch = 0; ch < thermal::kMaxChannels; ++ch) {
+      if (!thermal::ValidateChannelConfig(s.temperature[ch]).ok()) {
+        f.rule = ConfigRule::kTemperatureChannel;
+        f.axis = static_cast<uint8_t>(ch + 1);
+        break;
+      }
+    }
   }
   if (finding != nullptr) *finding = f;
-  return Error::kConfigInvalid;
+  return f.rule == ConfigRule::kNone ? Status::Ok() : Status(Error::kConfigInvalid);
 }
 
 void SerializeSettings(const BoardSettings& s, uint8_t* out) {
@@ -129,6 +144,17 @@ void SerializeSettings(const BoardSettings& s, uint8_t* out) {
   }
   w.U32(s.rpdo.cob_id);
   w.U8(s.rpdo.transmission_type);
+  w.U8(0);
+  w.U16(0);
+  for (const thermal::ChannelConfig& c : s.temperature) {
+    w.U8(static_cast<uint8_t>(c.source));
+    w.U8(c.stuck_readings);
+    w.U16(c.timeout_ms);
+    w.I16(c.low_cC);
+    w.I16(c.high_cC);
+    w.U16(c.max_rate_cC_s);
+    w.U16(0);
+  }
 }
 
 Status DeserializeSettings(const uint8_t* in, uint32_t size, BoardSettings* out) {
@@ -137,9 +163,10 @@ Status DeserializeSettings(const uint8_t* in, uint32_t size, BoardSettings* out)
   if (r.U32() != kMagic) return Error::kConfigInvalid;
   const uint16_t version = r.U16();
   if (version < kVersionWithoutInhibit || version > kVersion) return Error::kConfigInvalid;
-  const uint32_t bytes = version == kVersion              ? kSettingsBytes
-                         : version == kVersionWithoutRpdo ? kSettingsBytesV5
-                                                          : kSettingsBytesV4;
+  const uint32_t bytes = version == kVersion                  ? kSettingsBytes
+                         : version == kVersionWithoutChannels ? kSettingsBytesV6
+                         : version == kVersionWithoutRpdo     ? kSettingsBytesV5
+                                                              : kSettingsBytesV4;
   if (r.U16() != bytes || size < bytes) return Error::kConfigInvalid;
   BoardSettings s;
   s.node_id = r.U8();
@@ -190,13 +217,26 @@ Status DeserializeSettings(const uint8_t* in, uint32_t size, BoardSettings* out)
       if (p.mapped > kPdoMaxMapped) return Error::kConfigInvalid;
     }
   }
-  if (version == kVersion) {
+  if (version >= kVersionWithoutChannels) {
     s.rpdo.cob_id = r.U32();
     s.rpdo.transmission_type = r.U8();
     // What 0x1400 accepts (node.cpp): an 11-bit CAN-ID, an event-driven type.
     if ((s.rpdo.cob_id & 0x3FFFF800u) != 0 ||
         (s.rpdo.transmission_type != 254 && s.rpdo.transmission_type != 255)) {
       return Error::kConfigInvalid;
+    }
+  }
+  if (version == kVersion) {
+    r.U8();
+    r.U16();
+    for (thermal::ChannelConfig& c : s.temperature) {
+      c.source = static_cast<thermal::ChannelSource>(r.U8());
+      c.stuck_readings = r.U8();
+      c.timeout_ms = r.U16();
+      c.low_cC = r.I16();
+      c.high_cC = r.I16();
+      c.max_rate_cC_s = r.U16();
+      r.U16();
     }
   }
   VOLCOMP_TRY(ValidateSettings(s));

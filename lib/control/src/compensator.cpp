@@ -9,10 +9,6 @@ namespace volcomp {
 
 Status PreparedTable::Prepare(const table::TableView& image, const BoardConfig& config) {
   VOLCOMP_TRY(CheckImageMatchesBoard(image, config));
-  // The run applies a thermal term (PublishThermal()), but the board has no temperature source
-  // or channel objects yet (docs/thermal.md, "Next"): until it does, an image with a thermal model
-  // is refused whole, never accepted and left without its thermal part.
-  if (image.thermal != nullptr) return Error::kThermalNotApplied;
   PreparedTable t;
   if (image.grid.present) {
     VOLCOMP_TRY(t.grid.Init(image.grid));

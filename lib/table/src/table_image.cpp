@@ -228,7 +228,16 @@ Status ParseThermal(const uint8_t* body, uint32_t length, TableView* view) {
   if (length != ts::kAxisRecordsOffset + view->axis_count * ts::kAxisRecordSize) {
     return Error::kSectionBadLength;
   }
-  VOLCOMP_TRY(thermal::ValidateThermalModel(ReadThermal(body)));
+  const thermal::ThermalModel model = ReadThermal(body);
+  VOLCOMP_TRY(thermal::ValidateThermalModel(model));
+  // Its terms are micrometres of a linear axis: a rotary axis has none.
+  for (uint8_t a = 0; a < view->axis_count; ++a) {
+    if (view->axes[a].kind != AxisKind::kRotary) continue;
+    for (uint8_t j = 0; j < thermal::kMaxChannels; ++j) {
+      if (model.axis[a].offset_um_per_K[j] != 0.0f || model.axis[a].slope_um_per_K_m[j] != 0.0f)
+        return Error::kThermalOnRotaryAxis;
+    }
+  }
   view->thermal = body;
   return Status::Ok();
 }

@@ -21,6 +21,12 @@ Expected<std::unique_ptr<NativeTable>> NativeTable::FromBytes(std::vector<uint8_
   if (!view.ok()) {
     return Fail(view.status().error(), ImageRefusal(source, view.status()));
   }
+  // The component has no temperature channels: a thermal model is refused, never dropped.
+  if (view->thermal != nullptr) {
+    return Fail(Error::kThermalNotApplied,
+                "table \"" + source + "\" refused: " + ErrorText(Error::kThermalNotApplied) + " (" +
+                    ErrorName(Error::kThermalNotApplied) + ")");
+  }
   // PreparedTable::Prepare checks the image against a board's axes: here the image's own.
   BoardConfig c;
   c.axis_count = view->axis_count;

@@ -25,9 +25,10 @@ testing::AlignedBytes SmallImage(uint32_t id) {
 
 class BoardPolicyTest : public ::testing::Test {
  protected:
-  BoardPolicyTest() : policy_({&settings_, &tick_, &hand_over_, &references_}) {
+  BoardPolicyTest() : policy_({&settings_, &tick_, &hand_over_, &references_, &thermal_}) {
     settings_.board.tick_hz = 10000;
     EXPECT_TRUE(tick_.Configure(settings_.board).ok());
+    thermal_.Start(settings_, &tick_.compensator(), 0);
   }
   // `n` ticks without input steps.
   void Idle(int n) {
@@ -42,6 +43,7 @@ class BoardPolicyTest : public ::testing::Test {
   ControlTick tick_;
   TableHandOver hand_over_;
   std::atomic<uint8_t> references_{0};
+  BoardThermal thermal_;
   BoardPolicy policy_;
   uint32_t counters_[table::kMaxAxes] = {};
 };

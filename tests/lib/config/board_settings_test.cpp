@@ -24,7 +24,7 @@ TEST(SettingsRecord, KeepsTheEmcyInhibitTimeAndReadsVersion1Records) {
   s.emcy_inhibit_100us = 37;
   uint8_t rec[kSettingsBytes];
   SerializeSettings(s, rec);
-  EXPECT_EQ(rec[4], 6);  // version, LE16 at 4
+  EXPECT_EQ(rec[4], 7);  // version, LE16 at 4
   EXPECT_EQ(rec[5], 0);
   EXPECT_EQ(rec[12], 0x23);  // heartbeat LE16 at 12
   EXPECT_EQ(rec[13], 0x01);
@@ -39,7 +39,7 @@ TEST(SettingsRecord, KeepsTheEmcyInhibitTimeAndReadsVersion1Records) {
   ASSERT_TRUE(DeserializeSettings(rec, sizeof rec, &back).ok());
   EXPECT_EQ(back.emcy_inhibit_100us, 100);  // the default, 10 ms
   EXPECT_EQ(back.heartbeat_ms, 0x0123);
-  rec[4] = 7;
+  rec[4] = 8;
   EXPECT_FALSE(DeserializeSettings(rec, sizeof rec, &back).ok());
 }
 
@@ -245,7 +245,7 @@ TEST(SettingsRecord, KeepsTheTpdosAndReadsVersion4Records) {
   s.tpdo[1].mapping[7] = 0x0A0B0C0D;
   uint8_t rec[kSettingsBytes];
   SerializeSettings(s, rec);
-  EXPECT_EQ(rec[6] | rec[7] << 8, 512);
+  EXPECT_EQ(rec[6] | rec[7] << 8, 608);
   const size_t t1 = 416, t2 = 416 + 44;
   EXPECT_EQ(rec[t1 + 0], 0x80);  // TPDO1's default, stored form 0x180: base + node-ID
   EXPECT_EQ(rec[t1 + 1], 0x01);
@@ -291,8 +291,8 @@ TEST(SettingsRecord, KeepsTheTpdosAndReadsVersion4Records) {
   EXPECT_EQ(old.tpdo[1].mapped, 4);
   EXPECT_EQ(old.tpdo[1].mapping[0], 0x21380310u);  // 0x2138:3, I16
   EXPECT_EQ(old.tpdo[0].mapping[1], 0x21250008u);
-  // A version-6 record cut to the old length is not taken.
-  rec[4] = 6;
+  // A version-7 record cut to the old length is not taken.
+  rec[4] = 7;
   rec[6] = static_cast<uint8_t>(kSettingsBytes & 0xFF);
   rec[7] = static_cast<uint8_t>(kSettingsBytes >> 8);
   EXPECT_FALSE(DeserializeSettings(rec, kSettingsBytesV4, &old).ok());
@@ -303,7 +303,7 @@ TEST(SettingsRecord, KeepsTheTpdosAndReadsVersion4Records) {
 // version-5 record (504 bytes, a board with TPDOs but no RPDO) still loads, with the default RPDO.
 // A COB-ID or type 0x1400 would refuse is not a record this firmware wrote.
 TEST(SettingsRecord, KeepsTheRpdoAndReadsVersion5Records) {
-  EXPECT_EQ(kSettingsBytes, 504u + 8);
+  EXPECT_EQ(kSettingsBytesV6, 504u + 8);
   const BoardSettings defaults;
   EXPECT_EQ(defaults.rpdo.cob_id, 0x200u);  // stored form: 0x200 + node-ID
   EXPECT_EQ(defaults.rpdo.transmission_type, 254);
@@ -336,6 +336,70 @@ TEST(SettingsRecord, KeepsTheRpdoAndReadsVersion5Records) {
   ASSERT_TRUE(DeserializeSettings(rec, kSettingsBytesV5, &old).ok());
   EXPECT_EQ(old.rpdo.cob_id, 0x200u);
   EXPECT_EQ(old.rpdo.transmission_type, 254);
+}
+
+// Version 7 appends the 8 temperature channels to the version-6 record (512 bytes), 12 bytes
+// each: source U8, stuck readings U8, timeout ms LE16, low and high 0.01 C LE16 (signed), max rate
+// 0.01 K/s LE16, 2 reserved. A version-6 record still loads, every channel unused; a channel the
+// channel rules refuse is not a record this firmware wrote, and ValidateSettings names it.
+TEST(SettingsRecord, KeepsTheTemperatureChannelsAndReadsVersion6Records) {
+  EXPECT_EQ(kSettingsBytes, 512u + 8 * 12);
+  const BoardSettings defaults;
+  for (const thermal::ChannelConfig& c : defaults.temperature)
+    EXPECT_EQ(c.source, thermal::ChannelSource::kNone);
+  BoardSettings s;
+  s.temperature[2].source = thermal::ChannelSource::kCanObject;
+  s.temperature[2].timeout_ms = 0x1234;
+  s.temperature[2].low_cC = -1500;  // 0xFA24
+  s.temperature[2].high_cC = 6000;  // 0x1770
+  s.temperature[2].max_rate_cC_s = 50;
+  s.temperature[7].source = thermal::ChannelSource::kBoardPt1000;
+  s.temperature[7].stuck_readings = 20;
+  uint8_t rec[kSettingsBytes];
+  SerializeSettings(s, rec);
+  const size_t c2 = 512 + 2 * 12, c7 = 512 + 7 * 12;
+  EXPECT_EQ(rec[c2 + 0], 1);
+  EXPECT_EQ(rec[c2 + 1], 0);
+  EXPECT_EQ(rec[c2 + 2], 0x34);
+  EXPECT_EQ(rec[c2 + 3], 0x12);
+  EXPECT_EQ(rec[c2 + 4], 0x24);
+  EXPECT_EQ(rec[c2 + 5], 0xFA);
+  EXPECT_EQ(rec[c2 + 6], 0x70);
+  EXPECT_EQ(rec[c2 + 7], 0x17);
+  EXPECT_EQ(rec[c2 + 8], 50);
+  EXPECT_EQ(rec[c7 + 0], 3);
+  EXPECT_EQ(rec[c7 + 1], 20);
+  EXPECT_EQ(rec[c7 + 2], 1500 & 0xFF);  // the default timeout, 1500 ms
+  BoardSettings back;
+  ASSERT_TRUE(DeserializeSettings(rec, sizeof rec, &back).ok());
+  EXPECT_EQ(back.temperature[2].source, thermal::ChannelSource::kCanObject);
+  EXPECT_EQ(back.temperature[2].timeout_ms, 0x1234);
+  EXPECT_EQ(back.temperature[2].low_cC, -1500);
+  EXPECT_EQ(back.temperature[2].high_cC, 6000);
+  EXPECT_EQ(back.temperature[2].max_rate_cC_s, 50);
+  EXPECT_EQ(back.temperature[7].stuck_readings, 20);
+  EXPECT_EQ(back.temperature[0].source, thermal::ChannelSource::kNone);
+  // low above high: refused, and the rule names the channel.
+  rec[c2 + 4] = 0x71;
+  rec[c2 + 5] = 0x17;
+  EXPECT_FALSE(DeserializeSettings(rec, sizeof rec, &back).ok());
+  s.temperature[2].low_cC = 6001;
+  ConfigFinding f;
+  EXPECT_EQ(ValidateSettings(s, &f).error(), Error::kConfigInvalid);
+  EXPECT_EQ(f.rule, ConfigRule::kTemperatureChannel);
+  EXPECT_EQ(f.axis, 3);  // channel 3 (index 2)
+  rec[c2 + 4] = 0x24;
+  rec[c2 + 5] = 0xFA;
+  rec[c7 + 0] = 6;  // no such source
+  EXPECT_FALSE(DeserializeSettings(rec, sizeof rec, &back).ok());
+  // The same record as version 6 stored it: 512 bytes, no channels.
+  rec[4] = 6;
+  rec[6] = static_cast<uint8_t>(kSettingsBytesV6 & 0xFF);
+  rec[7] = static_cast<uint8_t>(kSettingsBytesV6 >> 8);
+  BoardSettings old;
+  ASSERT_TRUE(DeserializeSettings(rec, kSettingsBytesV6, &old).ok());
+  for (const thermal::ChannelConfig& c : old.temperature)
+    EXPECT_EQ(c.source, thermal::ChannelSource::kNone);
 }
 
 }  // namespace

@@ -99,20 +99,27 @@ class CompensatorTest : public ::testing::Test {
   double max_rate_ = 0;  // steps per Run() (one compensation run)
 };
 
-TEST_F(CompensatorTest, AnImageWithAThermalModelIsRefusedWhole) {
-  // Until the run applies the thermal term (issue 23 item 2), such an image must not become the
-  // active table without it.
+TEST_F(CompensatorTest, APreparedTableLeavesTheThermalModelToItsOwner) {
+  // The THERMAL section is applied by the owner's main loop (PublishThermal()): the prepared
+  // table of an image with a model is the table of the same image without one.
   thermal::ThermalModel m;
   m.axis_count = 3;
   m.channel_mask = 1;
   m.axis[2].offset_um_per_K[0] = 1.0f;
-  const TableFixture with_model(1, 1, 1, false, &m);
+  const TableFixture with_model(1, 2, 3, false, &m);
   ASSERT_NE(with_model.view.thermal, nullptr);
   const TableFixture plain(1, 2, 3);
-  PreparedTable kept = Prepare(plain);
-  EXPECT_EQ(kept.Prepare(with_model.view, config_).error(), Error::kThermalNotApplied);
-  EXPECT_EQ(kept.crc32, plain.view.crc32);  // unchanged
-  EXPECT_NE(with_model.view.crc32, plain.view.crc32);
+  PreparedTable t;
+  ASSERT_TRUE(t.Prepare(with_model.view, config_).ok());
+  const PreparedTable p = Prepare(plain);
+  const int32_t pos[3] = {1000, -2000, 3000};
+  const bool reverse[3] = {};
+  int32_t a[3], b[3];
+  t.TargetsQ8(pos, pos, reverse, 3, a);
+  p.TargetsQ8(pos, pos, reverse, 3, b);
+  for (int i = 0; i < 3; ++i) EXPECT_EQ(a[i], b[i]) << i;
+  EXPECT_EQ(b[0], 1 * 256);  // the fixture's constant corrections, 1, 2, 3 steps
+  EXPECT_EQ(b[2], 3 * 256);
 }
 
 TEST_F(CompensatorTest, PassThroughUntilReferenced) {

@@ -153,6 +153,31 @@ TEST(ThermalSection, LengthAndOccurrenceAreChecked) {
   EXPECT_EQ(table::ImageSize(s).error(), Error::kWriterBadArgument);
 }
 
+// The model's terms are micrometres of a linear axis: a coefficient on a rotary axis makes the
+// image invalid (a rotary axis with all-zero coefficients is fine). The writer checks what it
+// wrote with the parser, so it refuses such an image with the parser's error.
+TEST(ThermalSection, ARotaryAxisHasNoThermalTerm) {
+  const auto write_error = [](const table::ImageSpec& spec) {
+    const Result<uint32_t> size = table::ImageSize(spec);
+    EXPECT_TRUE(size.ok());
+    AlignedBytes out(*size);
+    return table::WriteImage(spec, out.data(), out.size()).error();
+  };
+  thermal::ThermalModel m = TwoAxisModel();
+  table::ImageSpec s;
+  s.table_id = 7;
+  s.axis_count = 2;
+  s.axes[0] = testing::LinearAxis('X');
+  s.axes[1] = testing::LinearAxis('A');
+  s.axes[1].kind = table::AxisKind::kRotary;
+  s.thermal = &m;
+  EXPECT_EQ(write_error(s), Error::kThermalOnRotaryAxis);
+  m.axis[1].offset_um_per_K[2] = 0.0f;
+  EXPECT_EQ(ParseError(testing::WriteImageBytes(s)), Error::kOk);
+  m.axis[1].slope_um_per_K_m[0] = 2.0f;
+  EXPECT_EQ(write_error(s), Error::kThermalOnRotaryAxis);
+}
+
 TEST(ThermalSection, AnImageOfTheModelAloneIsACorrection) {
   const AlignedBytes img = Image(TwoAxisModel(), /*with_axis_table=*/false);
   ASSERT_NE(img.size(), 0u);

@@ -75,6 +75,33 @@ TEST(NativeTable, RefusesABadImageInTheWordsOfInspect) {
             "the data length (kImageSizeMismatch)");
 }
 
+// The component has no temperature channels: an image with a thermal model is refused whole, not
+// loaded without it (the board applies the same image with its thermal part).
+TEST(NativeTable, RefusesAnImageWithAThermalModel) {
+  const volcomp::testing::GridCase g = Grid(3, 10.0);
+  table::GridSpec spec;
+  spec.frac_bits = g.frac_bits;
+  for (int d = 0; d < 3; ++d) spec.dim[d] = g.dim[d];
+  spec.values.type = g.type;
+  spec.values.i16 = g.i16.data();
+  table::ImageSpec img = volcomp::testing::XyzImageSpec(spec, 8);
+  thermal::ThermalModel m;
+  m.axis_count = 3;
+  m.channel_mask = 1;
+  m.axis[0].offset_um_per_K[0] = 2.0f;
+  img.thermal = &m;
+  const auto with_model = volcomp::testing::WriteImageBytes(img);
+  Expected<std::unique_ptr<NativeTable>> t =
+      NativeTable::FromBytes(testing::Bytes(with_model), "warm.vct");
+  ASSERT_FALSE(t.ok());
+  EXPECT_EQ(t.error().code, Error::kThermalNotApplied);
+  EXPECT_NE(t.error().message.find("table \"warm.vct\" refused: "), std::string::npos)
+      << t.error().message;
+  EXPECT_NE(t.error().message.find("(kThermalNotApplied)"), std::string::npos);
+  img.thermal = nullptr;  // the same image without the model loads
+  EXPECT_NE(testing::Load(volcomp::testing::WriteImageBytes(img)), nullptr);
+}
+
 // rtapi_app runs as RTAPI_UID (or the invoking user): a file only its owner may read is refused
 // with that uid, the file's owner and mode. As root, the reading runs in a child process that
 // drops to uid 65534 (nobody), as rtapi_app does.

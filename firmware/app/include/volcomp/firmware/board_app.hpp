@@ -7,7 +7,9 @@
 //            compensator). Static calls only, no allocation, no division; it may preempt Poll(),
 //            never the reverse (on the host both run in one thread). Requests reach it through
 //            atomics and the table hand-over (table_hand_over.hpp).
-//   Poll()   the main loop: slow lines, status outputs, the CANopen node with BoardObjects (the
+//   Poll()   the main loop: slow lines, status outputs, the thermal correction (BoardThermal:
+//            the temperature channels, the active image's thermal model, its terms handed to the
+//            run every kThermalPeriodMs; needs `clock`), the CANopen node with BoardObjects (the
 //            dictionary's values) and BoardPolicy (what the bus may change, the one activation
 //            sequence).
 //   Start()  power-on and every NMT reset node: loads the stored settings (or the defaults) and
@@ -34,6 +36,7 @@
 #include "volcomp/firmware/board_control.hpp"
 #include "volcomp/firmware/board_objects.hpp"
 #include "volcomp/firmware/board_policy.hpp"
+#include "volcomp/firmware/board_thermal.hpp"
 #include "volcomp/firmware/settings_store.hpp"
 #include "volcomp/firmware/table_hand_over.hpp"
 #include "volcomp/firmware/table_store.hpp"
@@ -77,7 +80,7 @@ class BoardApp final : private BoardControl {
 
   explicit BoardApp(const Devices& devices)
       : dev_(devices),
-        policy_({&settings_, &control_tick_, &hand_over_, &pending_reference_}),
+        policy_({&settings_, &control_tick_, &hand_over_, &pending_reference_, &thermal_}),
         objects_(ObjectParts(), AppOptions().identity) {}
 
   /// Starts with the stored settings, or `defaults` when none are stored (or the hardware refuses
@@ -112,6 +115,8 @@ class BoardApp final : private BoardControl {
     dev_.io->Write(hal::OutputLine::kFault, !started_ || !config_status_.ok());
     if (!started_) return s;
     objects_.ResetPendingSettings();
+    thermal_.Start(settings_, &control_tick_.compensator(), NowMs());
+    thermal_reported_ = false;
     uint32_t counters[table::kMaxAxes];
     dev_.tick_io->ReadCounters(counters);
     control_tick_.LatchCounters(counters);
@@ -216,6 +221,7 @@ class BoardApp final : private BoardControl {
   void Poll() {
     if (!started_) return;
     PollLines();
+    PollThermal();
     if (dev_.can != nullptr) PollCan();
   }
 
@@ -236,6 +242,7 @@ class BoardApp final : private BoardControl {
   const TableStore& tables() const { return tables_; }
   const BoardObjects& objects() const { return objects_; }
   const BoardPolicy& policy() const { return policy_; }
+  const BoardThermal& thermal() const { return thermal_; }
   /// The settings in force (the one copy: applied by the last Start()).
   const BoardSettings& settings() const { return settings_; }
   Status stored_table_status() const { return stored_status_; }
@@ -296,8 +303,8 @@ class BoardApp final : private BoardControl {
   }
 
   BoardObjects::Parts ObjectParts() {
-    return {this,     &policy_,         &settings_, &control_tick_,
-            &tables_, &settings_store_, &node_,     Io::kOutputStage};
+    return {this,   &policy_,         &settings_, &control_tick_, &tables_, &settings_store_,
+            &node_, Io::kOutputStage, &thermal_};
   }
 
   uint32_t NowMs() const {
@@ -324,6 +331,7 @@ class BoardApp final : private BoardControl {
       }
     } else if (!fault && was_fault && dev_.can != nullptr) {
       node_.ClearErrors();
+      if (thermal_reported_) RaiseThermalError();  // still standing
     }
     fault_flag_.store(fault, std::memory_order_relaxed);
     if (!fault && refs != 0) pending_reference_.fetch_or(refs, std::memory_order_release);
@@ -333,6 +341,39 @@ class BoardApp final : private BoardControl {
     policy_.SetLines(io.Read(hal::InputLine::kWriteEnable), fault);
     io.Write(hal::OutputLine::kCompensating, control_tick_.compensator().engaged());
     io.Write(hal::OutputLine::kFault, fault || !config_status_.ok());
+  }
+
+  // The thermal period's work; its fault onsets become EMCYs that stand (error register bit 3)
+  // until every channel is valid and every term fits again. The FAULT output is not driven: a
+  // thermal fault holds and fades the thermal correction, it does not stop the machine.
+  void PollThermal() {
+    const ThermalEvents e = thermal_.Poll(NowMs());
+    if (!e.any() || dev_.can == nullptr) return;
+    if (e.channels.faulted != 0) {
+      const uint8_t lowest = static_cast<uint8_t>(__builtin_ctz(e.channels.faulted));
+      uint8_t m[5] = {e.channels.faulted, thermal_.channel_fault_mask(),
+                      static_cast<uint8_t>(thermal_.channels().state(lowest)), 0, 0};
+      node_.RaiseError(canopen::kEmcyTemperatureChannel, canopen::kErrTemperature, m);
+    }
+    if (e.saturated != 0) {
+      uint8_t m[5] = {thermal_.saturated_axes(), 0, 0, 0, 0};
+      node_.RaiseError(canopen::kEmcyThermalSaturated, canopen::kErrTemperature, m);
+    }
+    const bool was_reported = thermal_reported_;
+    thermal_reported_ = thermal_.fault();
+    if (was_reported && !thermal_reported_ && !policy_.fault()) node_.ClearErrors();
+  }
+  // The thermal errors still standing after another error was cleared: raised again (no channel
+  // "just faulted": byte 3 is 0), so the error register and the last EMCY show them.
+  void RaiseThermalError() {
+    if (thermal_.channel_fault_mask() != 0) {
+      uint8_t m[5] = {0, thermal_.channel_fault_mask(), 0, 0, 0};
+      node_.RaiseError(canopen::kEmcyTemperatureChannel, canopen::kErrTemperature, m);
+    }
+    if (thermal_.saturated_axes() != 0) {
+      uint8_t m[5] = {thermal_.saturated_axes(), 0, 0, 0, 0};
+      node_.RaiseError(canopen::kEmcyThermalSaturated, canopen::kErrTemperature, m);
+    }
   }
 
   void PollCan() {
@@ -380,6 +421,8 @@ class BoardApp final : private BoardControl {
   TableStore tables_;
   SettingsStore settings_store_;
   canopen::Node node_;
+  BoardThermal thermal_;
+  bool thermal_reported_ = false;  // a thermal fault is standing in the error register
   BoardPolicy policy_;
   BoardObjects objects_;
   bool started_ = false;

@@ -21,6 +21,7 @@
 #include "volcomp/control/control_tick.hpp"
 #include "volcomp/firmware/board_control.hpp"
 #include "volcomp/firmware/board_policy.hpp"
+#include "volcomp/firmware/board_thermal.hpp"
 #include "volcomp/firmware/settings_store.hpp"
 #include "volcomp/firmware/table_store.hpp"
 
@@ -57,6 +58,7 @@ class BoardObjects : public canopen::ObjectValues {
     SettingsStore* settings_store = nullptr;
     canopen::Node* node = nullptr;
     OutputStage output_stage = OutputStage::kAny;  // the settings rules (0x2123, 0x1010)
+    BoardThermal* thermal = nullptr;               // channels 0x2150-0x2152, 0x2153-0x2155
   };
 
   BoardObjects(const Parts& parts, const IdentityInfo& identity);
@@ -135,6 +137,32 @@ class BoardObjects : public canopen::ObjectValues {
   /// Axes whose per-axis values are live (the others read 0).
   uint8_t axis_count() const { return parts_.control_tick->axis_count(); }
 
+  // ---- Thermal compensation (docs/thermal.md), per channel ch = 0..7 or per axis.
+  /// 0x2150: the accepted temperature, 0.01 C (held through a fault; 0 before the first).
+  int16_t temperature(uint8_t ch) const { return parts_.thermal->channels().value_cC(ch); }
+  /// 0x2151: thermal::ChannelState.
+  uint8_t temperature_state(uint8_t ch) const {
+    return static_cast<uint8_t>(parts_.thermal->channels().state(ch));
+  }
+  /// 0x2152: fault onsets since the start.
+  uint16_t temperature_faults(uint8_t ch) const {
+    return parts_.thermal->channels().fault_count(ch);
+  }
+  /// 0x2153:1 (canopen::ThermalStatusBit): a model in force, holding, fading, slewing, saturated.
+  uint8_t thermal_status() const;
+  /// 0x2153:2: every configured channel in a fault (bit n: channel n+1).
+  uint8_t thermal_fault_channels() const { return parts_.thermal->channel_fault_mask(); }
+  /// 0x2153:3: channels the model uses that are outside its calibrated range (taken at its edge).
+  uint8_t thermal_outside_channels() const {
+    return parts_.thermal->correction().status().outside_mask;
+  }
+  /// 0x2153:4: axes whose thermal terms are saturated (bit a-1).
+  uint8_t thermal_saturated_axes() const { return parts_.thermal->saturated_axes(); }
+  /// 0x2154 / 0x2155: the applied thermal offset (nm, at the model's p0) and slope (nm per m of
+  /// travel), rounded.
+  int32_t thermal_offset(uint8_t a) const;
+  int32_t thermal_slope(uint8_t a) const;
+
  private:
   canopen::SdoAbort DoRead(const canopen::ObjectEntry& e,
                            uint32_t offset,
@@ -157,6 +185,8 @@ class BoardObjects : public canopen::ObjectValues {
   // the pending copy.
   canopen::SdoAbort WriteSetting(const canopen::ObjectEntry& e, uint32_t raw);
   canopen::SdoAbort TableControl(uint8_t command);
+  // 0x2150: a reading of a channel whose source is the CAN object.
+  canopen::SdoAbort WriteTemperature(uint8_t ch, uint32_t raw);
   // 0x2127: the rising edges of `word` against the last word taken.
   canopen::SdoAbort CommandWord(uint16_t word);
   // 0x1010 "save": the pending settings with the communication parameters in force.

@@ -8,8 +8,9 @@
 //                  axis moved within kStillMs (else canopen::SdoAbort::kDeviceState). Activate()
 //                  is the one activation sequence: prepare the parsed image against the settings
 //                  in force (in the hand-over slot the tick does not use), publish it to the tick,
-//                  record it as active (0x2103 / 0x2104). Power-up, BoardApp::ActivateImage() and
-//                  0x2101 = activate all use it.
+//                  hand its thermal model (or none) to the main loop's thermal correction, record
+//                  it as active (0x2103 / 0x2104). Power-up, BoardApp::ActivateImage() and 0x2101
+//                  = activate all use it.
 //   references     reference requests reach the tick unless the e-stop or drive alarm is active.
 //
 // Main loop only (the tick reads what is published through the hand-over and the atomic word).
@@ -23,6 +24,7 @@
 #include "volcomp/canopen/sdo_abort.hpp"
 #include "volcomp/config/board_settings.hpp"
 #include "volcomp/control/control_tick.hpp"
+#include "volcomp/firmware/board_thermal.hpp"
 #include "volcomp/firmware/table_hand_over.hpp"
 #include "volcomp/table/table_image.hpp"
 
@@ -39,6 +41,7 @@ class BoardPolicy {
     const ControlTick* control_tick = nullptr;
     TableHandOver* hand_over = nullptr;
     std::atomic<uint8_t>* reference_requests = nullptr;  // bit a: reference axis a next run
+    BoardThermal* thermal = nullptr;  // the thermal model in force follows the active table
   };
 
   explicit BoardPolicy(const Owner& owner) : owner_(owner) {}
@@ -67,7 +70,8 @@ class BoardPolicy {
   /// The activation sequence (see above). The image bytes must stay valid and unchanged while the
   /// table is active. On error nothing changes.
   [[nodiscard]] Status Activate(const table::TableView& view);
-  /// Drops the active table at the next tick (the correction ramps out).
+  /// Drops the active table at the next tick (the correction ramps out; the thermal correction
+  /// fades out at its slew limit).
   void Deactivate();
   bool table_active() const { return has_active_; }
   uint32_t active_table_id() const { return has_active_ ? active_id_ : 0; }

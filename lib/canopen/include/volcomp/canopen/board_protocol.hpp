@@ -56,13 +56,15 @@ enum DeviceStateBit : uint16_t {
   kStateStagedVerified = 1u << 6,   // the staged table is verified and may be activated
   kStatePassthrough = 1u << 7,      // output = input (no correction applied)
   kStateSettingsPending = 1u << 8,  // configuration edits not yet in force (store + reset)
+  kStateThermalFault = 1u << 9,     // a temperature channel is in a fault, or a thermal term is
+                                    // saturated (0x2151-0x2153 say which)
 };
-inline constexpr int kDeviceStateBitCount = 9;
+inline constexpr int kDeviceStateBitCount = 10;
 
 /// Readable names of the bits, bit 0 first (reports).
 inline constexpr const char* kDeviceStateBitNames[kDeviceStateBitCount] = {
-    "referenced",   "engaged",         "fault",       "writable",        "moving",
-    "table-active", "staged-verified", "passthrough", "settings-pending"};
+    "referenced",   "engaged",         "fault",       "writable",         "moving",
+    "table-active", "staged-verified", "passthrough", "settings-pending", "thermal-fault"};
 
 struct DeviceState {
   bool referenced = false;
@@ -74,6 +76,7 @@ struct DeviceState {
   bool staged_verified = false;
   bool passthrough = false;
   bool settings_pending = false;
+  bool thermal_fault = false;
 };
 
 constexpr uint16_t EncodeDeviceState(const DeviceState& s) {
@@ -87,6 +90,7 @@ constexpr uint16_t EncodeDeviceState(const DeviceState& s) {
   v |= s.staged_verified ? kStateStagedVerified : 0;
   v |= s.passthrough ? kStatePassthrough : 0;
   v |= s.settings_pending ? kStateSettingsPending : 0;
+  v |= s.thermal_fault ? kStateThermalFault : 0;
   return static_cast<uint16_t>(v);
 }
 
@@ -101,6 +105,7 @@ constexpr DeviceState DecodeDeviceState(uint32_t v) {
   s.staged_verified = (v & kStateStagedVerified) != 0;
   s.passthrough = (v & kStatePassthrough) != 0;
   s.settings_pending = (v & kStateSettingsPending) != 0;
+  s.thermal_fault = (v & kStateThermalFault) != 0;
   return s;
 }
 
@@ -230,6 +235,15 @@ constexpr SettingsCheck DecodeSettingsCheck(uint32_t v) {
   return c;
 }
 
+// ---- 0x2153:1 thermal status (U8, read) --------------------------------------------------------
+enum ThermalStatusBit : uint8_t {
+  kThermalActive = 1u << 0,     // a thermal model is in force (the active image has one)
+  kThermalHolding = 1u << 1,    // a channel the model uses is in a fault: the correction is held
+  kThermalFading = 1u << 2,     // the hold time ran out: the correction fades to zero
+  kThermalSlewing = 1u << 3,    // the applied correction lags the model (at its slew limit)
+  kThermalSaturated = 1u << 4,  // a term is saturated at the run's bounds (0x2153:4 which)
+};
+
 // ---- EMCY (COB-ID 0x080 + node-ID) -------------------------------------------------------------
 //
 //   bytes 0-1 the code (LE), byte 2 the error register (0x1001), bytes 3-7 manufacturer data.
@@ -247,6 +261,13 @@ inline constexpr uint16_t kEmcyPdoLengthExceeded = 0x8220;  // CiA 301: RPDO lon
 inline constexpr uint16_t kEmcyCorrectionLimited = 0xFF20;  // the correction is clamped or rate
                                                             // limited: byte 3 clamped axes,
                                                             // byte 4 rate-limited axes (bit a-1)
+/// CiA 301 "temperature": a temperature channel entered a fault (until every channel is valid
+/// again): byte 3 the channels that just faulted, byte 4 every channel in a fault now, byte 5 the
+/// state (thermal::ChannelState) of the lowest channel that just faulted (bit n: channel n+1).
+inline constexpr uint16_t kEmcyTemperatureChannel = 0x4000;
+/// A thermal term does not fit the compensation run's bounds (thermal_term.hpp) and is applied
+/// saturated (until it fits): byte 3 the saturated axes (bit a-1).
+inline constexpr uint16_t kEmcyThermalSaturated = 0xFF21;
 
 /// Which part of the board refused the settings loaded at start or at a node reset
 /// (kEmcyConfigRefused byte 5). The board then runs the factory defaults, except for a bit-rate

@@ -85,24 +85,26 @@ struct BoardConfig {
 /// (they travel in 0x2123): append, never renumber.
 enum class ConfigRule : uint8_t {
   kNone = 0,
-  kTickRate = 1,          // tick_hz within kMinTickHz..kMaxTickHz
-  kPulseClock = 2,        // pulse clock >= 100 x tick rate
-  kAxisCount = 3,         // 1..kMaxAxes axes
-  kAxisName = 4,          // one of XYZABCUVW, each once
-  kResolution = 5,        // units per step not zero
-  kAxisKind = 6,          // linear or rotary
-  kPulseFormat = 7,       // input/output pulse format 0..2
-  kCounterBits = 8,       // input counter 16 or 32 bits
-  kMaxCorrection = 9,     // max correction 0..table::kMaxCorrectionSteps
-  kRateNotZero = 10,      // max input rate and drive max rate not zero
-  kCounterWrap = 11,      // a 16-bit counter does not wrap by half within a tick
-  kDriveKeepsUp = 12,     // max input rate + max correction rate <= drive max rate
-  kLimiter = 13,          // correction rate/accel representable at the tick rate
-  kNodeId = 14,           // node-ID 1..127
-  kBitrate = 15,          // bit rate 10..1000 kbit/s
-  kDirectionSwitch = 16,  // direction switch acceleration >= the correction's
-  kPulseTiming = 17,      // step outputs: pulse width + step space allow the drive max rate
-  kCount = 18,
+  kTickRate = 1,             // tick_hz within kMinTickHz..kMaxTickHz
+  kPulseClock = 2,           // pulse clock >= 100 x tick rate
+  kAxisCount = 3,            // 1..kMaxAxes axes
+  kAxisName = 4,             // one of XYZABCUVW, each once
+  kResolution = 5,           // units per step not zero
+  kAxisKind = 6,             // linear or rotary
+  kPulseFormat = 7,          // input/output pulse format 0..2
+  kCounterBits = 8,          // input counter 16 or 32 bits
+  kMaxCorrection = 9,        // max correction 0..table::kMaxCorrectionSteps
+  kRateNotZero = 10,         // max input rate and drive max rate not zero
+  kCounterWrap = 11,         // a 16-bit counter does not wrap by half within a tick
+  kDriveKeepsUp = 12,        // max input rate + max correction rate <= drive max rate
+  kLimiter = 13,             // correction rate/accel representable at the tick rate
+  kNodeId = 14,              // node-ID 1..127
+  kBitrate = 15,             // bit rate 10..1000 kbit/s
+  kDirectionSwitch = 16,     // direction switch acceleration >= the correction's
+  kPulseTiming = 17,         // step outputs: pulse width + step space allow the drive max rate
+  kTemperatureChannel = 18,  // a temperature channel's source and limits (thermal::
+                             // ValidateChannelConfig); ConfigFinding::axis = the channel, 1..8
+  kCount = 19,
 };
 
 inline constexpr const char* kConfigRuleTexts[] = {
@@ -127,6 +129,8 @@ inline constexpr const char* kConfigRuleTexts[] = {
     "direction switch acceleration (0x2020) must be at least the max correction accel (0x2017)",
     "on a step output, drive pulse width (0x2019) + step space (0x201A) must allow the drive max "
     "rate (0x201D): together at most 1e9 / rate ns",
+    "temperature channel: source 0..5, timeout 100..60000 ms, low below high (and not -327.68 C), "
+    "max rate at least 0.01 K/s, stuck readings 0 (off) or 2..255",
 };
 static_assert(sizeof(kConfigRuleTexts) / sizeof(kConfigRuleTexts[0]) ==
                   static_cast<size_t>(ConfigRule::kCount),
@@ -136,7 +140,8 @@ constexpr const char* ConfigRuleText(ConfigRule r) {
   return r < ConfigRule::kCount ? kConfigRuleTexts[static_cast<int>(r)] : "?";
 }
 
-/// Which rule a configuration breaks first, and on which axis (1-based; 0: not an axis rule).
+/// Which rule a configuration breaks first, and on which axis (1-based; 0: not an axis rule; for
+/// kTemperatureChannel the channel, 1-based).
 struct ConfigFinding {
   ConfigRule rule = ConfigRule::kNone;
   uint8_t axis = 0;

@@ -12,6 +12,7 @@
 
 #include "volcomp/base/status.hpp"
 #include "volcomp/config/board_config.hpp"
+#include "volcomp/thermal/temperature_channels.hpp"
 
 namespace volcomp {
 
@@ -89,6 +90,9 @@ struct BoardSettings {
   uint16_t emcy_inhibit_100us = kDefaultEmcyInhibit100us;           // 0x1015, 0 = no inhibit
   PdoSettings tpdo[kTpdoCount] = {DefaultTpdo(0), DefaultTpdo(1)};  // 0x1800+n, 0x1A00+n
   PdoSettings rpdo = DefaultRpdo();  // 0x1400 / 0x1600 (only :1 and :2 may change)
+  /// The temperature channels' sources and supervision limits (docs/thermal.md): every channel
+  /// unused by default. The thermal model that uses them comes with the table image.
+  thermal::ChannelConfig temperature[thermal::kMaxChannels] = {};
 };
 
 /// What drives the board's axes, for the rules that concern one kind of output stage only.
@@ -99,27 +103,31 @@ enum class OutputStage : uint8_t {
 };
 
 /// Range checks of everything in `s` (the node settings, then ValidateBoardConfig, or
-/// ValidateStepOutputConfig for kStepPulses); kConfigInvalid with the first broken rule and its
-/// axis in *finding (optional; kNone when ok).
+/// ValidateStepOutputConfig for kStepPulses, then the temperature channels); kConfigInvalid with
+/// the first broken rule and its axis (or channel) in *finding (optional; kNone when ok).
 Status ValidateSettings(const BoardSettings& s,
                         ConfigFinding* finding = nullptr,
                         OutputStage stage = OutputStage::kAny);
 
 /// Serialized size of a BoardSettings record.
 /// (Records of version 4 and older are kSettingsBytesV4 long: no PDO parameters; version 5,
-/// kSettingsBytesV5: the TPDOs, no RPDO.)
+/// kSettingsBytesV5: the TPDOs, no RPDO; version 6, kSettingsBytesV6: no temperature channels.)
 inline constexpr uint32_t kPdoRecordBytes = 44;
 inline constexpr uint32_t kRpdoRecordBytes = 8;
+inline constexpr uint32_t kChannelRecordBytes = 12;
 inline constexpr uint32_t kSettingsBytesV4 = 24 + table::kMaxAxes * 64 + 8;
 inline constexpr uint32_t kSettingsBytesV5 = kSettingsBytesV4 + kTpdoCount * kPdoRecordBytes;
-inline constexpr uint32_t kSettingsBytes = kSettingsBytesV5 + kRpdoRecordBytes;
+inline constexpr uint32_t kSettingsBytesV6 = kSettingsBytesV5 + kRpdoRecordBytes;
+inline constexpr uint32_t kSettingsBytes =
+    kSettingsBytesV6 + thermal::kMaxChannels * kChannelRecordBytes;
 
 /// Writes `s` into out[0, kSettingsBytes) (little-endian, versioned).
 void SerializeSettings(const BoardSettings& s, uint8_t* out);
 /// Reads and validates a record; kConfigInvalid for a record of another version or out of range.
 /// A version-1 record (before 0x1015 was stored) gives the default EMCY inhibit time; a record of
 /// version 4 or older (kSettingsBytesV4 long, before the PDOs) gives the default PDOs, one of
-/// version 5 (kSettingsBytesV5, before the RPDO) the default RPDO.
+/// version 5 (kSettingsBytesV5, before the RPDO) the default RPDO, one of version 6
+/// (kSettingsBytesV6, before the temperature channels) every channel unused.
 Status DeserializeSettings(const uint8_t* in, uint32_t size, BoardSettings* s);
 
 }  // namespace volcomp

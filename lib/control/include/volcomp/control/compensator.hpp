@@ -36,8 +36,9 @@ struct PreparedTable {
   uint32_t crc32 = 0;
 
   /// Prepares `image` for `config` (checks it matches the board). Leaves *this unchanged on error.
-  /// kThermalNotApplied for an image with a THERMAL section (the board cannot read temperatures
-  /// yet: docs/thermal.md).
+  /// A THERMAL section is not part of the prepared table: the owner's main loop applies it
+  /// (firmware BoardThermal, PublishThermal()); a consumer without temperature channels refuses
+  /// such an image itself (kThermalNotApplied).
   Status Prepare(const table::TableView& image, const BoardConfig& config);
 
   /// The table's correction per axis (Q24.8 steps, before clamp and limiter): GRID3 at

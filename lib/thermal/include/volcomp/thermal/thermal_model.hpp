@@ -102,6 +102,8 @@ class ThermalCorrection {
     return offset_um_[a] + slope_um_mm_[a] * (p_mm - p0_mm_[a]);
   }
   const ThermalStatus& status() const { return status_; }
+  /// The channels the model in force uses (0 without one).
+  uint8_t model_channels() const { return status_.active ? model_.channel_mask : 0; }
 
  private:
   // The model's offset and slope of every axis at the channels' temperatures.
