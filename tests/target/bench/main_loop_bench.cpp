@@ -16,6 +16,11 @@
 // download does not complete, so a row never prices a broken transfer. Last, in operational:
 //   main_loop_op_rpdo  a pass that receives RPDO1 (the command word 0x2127): every other one
 //                      raises activate, refused (nothing verified is staged) with its EMCY
+// Then, with a thermal model active (all 8 channels written over CAN, every axis with an offset
+// and a slope on every channel, a slew limit low enough that the correction always slews):
+//   main_loop_thermal  a pass in which the thermal period is due (supervision, the model's update,
+//                      the terms in steps, their hand-over) and which receives a temperature
+//                      write (0x2150:n) and sends the TPDOs: the thermal pass at its worst
 #include <cstdint>
 
 #include "bench_support.hpp"
@@ -27,6 +32,7 @@
 #include "volcomp/firmware/board_app.hpp"
 #include "volcomp/firmware/step_dir_io.hpp"
 #include "volcomp/hal/stm32g4/drivers.hpp"
+#include "volcomp/table/table_writer.hpp"
 
 namespace volcomp::target {
 namespace {
@@ -128,6 +134,10 @@ volcomp_bench_poll_op_request() {
 }
 extern "C" __attribute__((noinline, section(".text.volcomp_bench_poll_op_rpdo"))) void
 volcomp_bench_poll_op_rpdo() {
+  volcomp::target::g_app.Poll();
+}
+extern "C" __attribute__((noinline, section(".text.volcomp_bench_poll_thermal"))) void
+volcomp_bench_poll_thermal() {
   volcomp::target::g_app.Poll();
 }
 
@@ -239,6 +249,36 @@ bool Download(uint32_t size) {
   return r.data[0] == 0xA1;
 }
 
+// An image of the board's axes with a thermal model only (AXES + THERMAL): every axis with an
+// offset and a slope on all 8 channels (T_ref 20 C, calibrated 0..60 C), slew 0.05 um/s.
+alignas(8) uint8_t g_thermal_image[1024];
+uint32_t BuildThermalImage(const BoardConfig& cfg) {
+  static thermal::ThermalModel m;
+  m.axis_count = cfg.axis_count;
+  m.channel_mask = 0xFF;
+  m.slew_um_s = 0.05f;
+  for (uint8_t j = 0; j < thermal::kMaxChannels; ++j) {
+    m.reference_cC[j] = 2000;
+    m.calibrated_low_cC[j] = 0;
+    m.calibrated_high_cC[j] = 6000;
+  }
+  table::ImageSpec spec;
+  spec.table_id = 5;
+  spec.axis_count = cfg.axis_count;
+  for (uint8_t a = 0; a < cfg.axis_count; ++a) {
+    spec.axes[a] = {cfg.axis[a].name, cfg.axis[a].kind, cfg.axis[a].resolution_e9};
+    if (cfg.axis[a].kind != table::AxisKind::kLinear) continue;
+    m.axis[a].reach_mm = 500.0f;
+    for (uint8_t j = 0; j < thermal::kMaxChannels; ++j) {
+      m.axis[a].offset_um_per_K[j] = 0.5f + 0.1f * j;
+      m.axis[a].slope_um_per_K_m[j] = -2.0f + 0.5f * j;
+    }
+  }
+  spec.thermal = &m;
+  const Result<uint32_t> n = table::WriteImage(spec, g_thermal_image, sizeof g_thermal_image);
+  return n.ok() ? *n : 0;
+}
+
 }  // namespace
 }  // namespace volcomp::target
 
@@ -254,7 +294,11 @@ int main() {
   const uint32_t image = BuildTickImage(g_image, sizeof g_image);
   for (uint32_t i = image; i < kPayloadBytes; ++i) g_image[i] = static_cast<uint8_t>(i * 7u);
   const uint32_t size = kPayloadBytes;
-  if (image == 0 || !g_app.Start(cfg, options).ok()) {
+  BoardSettings settings;
+  settings.board = cfg;
+  for (thermal::ChannelConfig& c : settings.temperature)
+    c.source = thermal::ChannelSource::kCanObject;
+  if (image == 0 || !g_app.Start(settings, options).ok()) {
     semihost::Write("bench: main-loop board setup failed\n");
     return 1;
   }
@@ -310,6 +354,30 @@ int main() {
   }
   if (g_app.node().rpdo_received() != 200 || g_app.objects().refused_actions() != refused + 100) {
     semihost::Write("bench: the RPDO passes did not act as expected\n");
+    rc = 1;
+  }
+  // The thermal passes: the model active, every channel written once per 800 ms (valid), each pass
+  // a thermal period (100 ms).
+  const uint32_t thermal_image = BuildThermalImage(cfg);
+  if (thermal_image == 0 || !g_app.ActivateImage(g_thermal_image, thermal_image).ok()) {
+    semihost::Write("bench: the thermal image was not activated\n");
+    rc = 1;
+  }
+  Scenario("main_loop_thermal", "volcomp_bench_poll_thermal");
+  for (uint32_t i = 0; i < 100; ++i) {
+    const uint8_t ch = static_cast<uint8_t>(i % thermal::kMaxChannels);
+    CanFrame w = ExpeditedWrite(0x2150, 2300u + i % 7u + ch, 2);
+    w.data[3] = static_cast<uint8_t>(ch + 1);
+    g_can.Deliver(w);
+    g_clock.Advance(firmware::kThermalPeriodMs * 1000000ull);
+    volcomp_bench_poll_thermal();
+    CanFrame r;
+    while (g_can.TakeSent(&r)) {
+    }
+  }
+  const thermal::ThermalStatus& ts = g_app.thermal().correction().status();
+  if (!ts.active || ts.holding || !ts.slewing || g_app.thermal().channel_fault_mask() != 0) {
+    semihost::Write("bench: the thermal passes did not run the model (active, valid, slewing)\n");
     rc = 1;
   }
   semihost::Write("bench: frames other than SDO responses sent: ");
