@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "sdo_failure.hpp"
+#include "volcomp/thermal/temperature_channels.hpp"
 #include "volcomp/tools/hex.hpp"
 
 namespace volcomp::cli {
@@ -23,6 +24,37 @@ Expected<uint32_t> Get(canopen_client::CanSession& s, ObjectId id) {
 Expected<int32_t> GetSigned(canopen_client::CanSession& s, ObjectId id) {
   VOLCOMP_TRY_ASSIGN(const uint32_t v, Get(s, id));
   return static_cast<int32_t>(v);
+}
+
+ObjectId Element(ObjectId first, uint32_t n) {
+  return static_cast<ObjectId>(static_cast<int>(first) + static_cast<int>(n));
+}
+
+// The thermal objects, or none when the firmware has no 0x2153 (an older board).
+Expected<std::optional<ThermalSnapshot>> TakeThermal(canopen_client::CanSession& s, uint32_t axes) {
+  const canopen_client::SdoExpected<uint32_t> status = s.Read(ObjectId::kThermalStatus);
+  if (canopen_client::AbortOf(status) == canopen::SdoAbort::kNoObject) {
+    return std::optional<ThermalSnapshot>();
+  }
+  ThermalSnapshot t;
+  VOLCOMP_TRY_ASSIGN(t.status, Checked(status, "reading the thermal status 0x2153:1"));
+  VOLCOMP_TRY_ASSIGN(t.fault_channels, Get(s, ObjectId::kThermalFaultChannels));
+  VOLCOMP_TRY_ASSIGN(t.outside_channels, Get(s, ObjectId::kThermalOutsideChannels));
+  VOLCOMP_TRY_ASSIGN(t.saturated_axes, Get(s, ObjectId::kThermalSaturatedAxes));
+  for (uint32_t ch = 0; ch < 8; ++ch) {
+    VOLCOMP_TRY_ASSIGN(t.state[ch], Get(s, Element(ObjectId::kTemperatureState1, ch)));
+    if (t.state[ch] == 0) continue;  // unused
+    VOLCOMP_TRY_ASSIGN(const uint32_t raw, Get(s, Element(ObjectId::kTemperature1, ch)));
+    t.temperature_cC[ch] = static_cast<int16_t>(raw & 0xFFFFu);
+    VOLCOMP_TRY_ASSIGN(t.faults[ch], Get(s, Element(ObjectId::kTemperatureFaults1, ch)));
+  }
+  if ((t.status & canopen::kThermalActive) != 0) {
+    for (uint32_t a = 0; a < axes && a < 6; ++a) {
+      VOLCOMP_TRY_ASSIGN(t.offset_nm[a], GetSigned(s, Element(ObjectId::kThermalOffset1, a)));
+      VOLCOMP_TRY_ASSIGN(t.slope_nm_per_m[a], GetSigned(s, Element(ObjectId::kThermalSlope1, a)));
+    }
+  }
+  return std::optional<ThermalSnapshot>(t);
 }
 
 const char* const kCounterNames[] = {
@@ -70,6 +102,7 @@ Expected<Snapshot> TakeSnapshot(canopen_client::CanSession& s) {
     VOLCOMP_TRY_ASSIGN(n.counters[i],
                        Get(s, static_cast<ObjectId>(static_cast<int>(ObjectId::kCanRxFrames) + i)));
   }
+  VOLCOMP_TRY_ASSIGN(n.thermal, TakeThermal(s, axes));
   n.nmt = s.nmt_state();
   return n;
 }
@@ -130,6 +163,43 @@ JsonValue CountersData(const Snapshot& n) {
   return d;
 }
 
+JsonValue ThermalData(const ThermalSnapshot& t, const std::vector<AxisInfo>& axes) {
+  JsonValue d = JsonValue::Object();
+  d.Set("model_in_force", (t.status & canopen::kThermalActive) != 0);
+  d.Set("holding", (t.status & canopen::kThermalHolding) != 0);
+  d.Set("fading", (t.status & canopen::kThermalFading) != 0);
+  d.Set("slewing", (t.status & canopen::kThermalSlewing) != 0);
+  d.Set("saturated", (t.status & canopen::kThermalSaturated) != 0);
+  d.Set("faulted_channel_mask", uint64_t{t.fault_channels});
+  d.Set("outside_range_channel_mask", uint64_t{t.outside_channels});
+  d.Set("saturated_axis_mask", uint64_t{t.saturated_axes});
+  JsonValue channels = JsonValue::Array();
+  for (uint32_t ch = 0; ch < 8; ++ch) {
+    if (t.state[ch] == 0) continue;
+    JsonValue c = JsonValue::Object();
+    c.Set("channel", ch + 1);
+    c.Set("state", thermal::ChannelStateName(static_cast<thermal::ChannelState>(t.state[ch])));
+    c.Set("temperature_C", t.temperature_cC[ch] / 100.0);
+    c.Set("faults", uint64_t{t.faults[ch]});
+    channels.Push(std::move(c));
+  }
+  d.Set("channels", std::move(channels));
+  JsonValue terms = JsonValue::Array();
+  if ((t.status & canopen::kThermalActive) != 0) {
+    for (uint32_t a = 0; a < axes.size() && a < 6; ++a) {
+      if (axes[a].rotary) continue;  // a rotary axis has no thermal term
+      JsonValue x = JsonValue::Object();
+      x.Set("axis", a + 1);
+      x.Set("name", std::string(1, axes[a].name));
+      x.Set("offset_um", t.offset_nm[a] / 1000.0);
+      x.Set("slope_um_per_m", t.slope_nm_per_m[a] / 1000.0);
+      terms.Push(std::move(x));
+    }
+  }
+  d.Set("axes", std::move(terms));
+  return d;
+}
+
 std::string StateText(uint32_t state) {
   std::string s;
   for (int b = 0; b < canopen::kDeviceStateBitCount; ++b) {
@@ -163,6 +233,20 @@ std::string EmcyText(const canopen::Emcy& e) {
                   " (correction limited: clamped axes 0x%02X, rate limited 0x%02X)",
                   e.clamped_axes(), e.rate_limited_axes());
     s += axes;
+  }
+  if (e.code == canopen::kEmcyTemperatureChannel) {
+    char t[128];
+    std::snprintf(t, sizeof t,
+                  " (temperature channel fault: channels 0x%02X just faulted, 0x%02X in a fault, "
+                  "state %s)",
+                  e.data[0], e.data[1],
+                  thermal::ChannelStateName(static_cast<thermal::ChannelState>(e.data[2])));
+    s += t;
+  }
+  if (e.code == canopen::kEmcyThermalSaturated) {
+    char t[64];
+    std::snprintf(t, sizeof t, " (thermal term saturated: axes 0x%02X)", e.data[0]);
+    s += t;
   }
   if (e.code == canopen::kEmcyErrorReset) s += " (errors cleared)";
   return s;

@@ -37,6 +37,17 @@ struct AxisInfo {
   double correction_per_step() const { return units_per_step() * (rotary ? 3600.0 : 1000.0); }
 };
 
+/// The thermal correction as the board shows it (0x2150-0x2155, docs/thermal.md).
+struct ThermalSnapshot {
+  uint32_t status = 0;  // 0x2153:1, canopen::ThermalStatusBit
+  uint32_t fault_channels = 0, outside_channels = 0, saturated_axes = 0;  // 0x2153:2-4
+  uint32_t state[8] = {};          // 0x2151, thermal::ChannelState
+  int32_t temperature_cC[8] = {};  // 0x2150, read for channels that are not unused
+  uint32_t faults[8] = {};         // 0x2152, likewise
+  int32_t offset_nm[6] = {};       // 0x2154, read while a model is in force
+  int32_t slope_nm_per_m[6] = {};  // 0x2155, likewise
+};
+
 /// What the board does now (read every time).
 struct Snapshot {
   std::string device_name, software_version;
@@ -47,7 +58,8 @@ struct Snapshot {
   uint32_t backlog[6] = {};
   uint32_t limit_flags[6] = {}, clamped[6] = {}, rate_limited[6] = {};  // 0x2134-0x2136
   uint32_t counters[kCounterCount] = {};
-  std::optional<uint8_t> nmt;  // from the last heartbeat the session saw
+  std::optional<uint8_t> nmt;              // from the last heartbeat the session saw
+  std::optional<ThermalSnapshot> thermal;  // none on firmware without the thermal objects
 };
 
 /// Reads the snapshot (the device name and version are left empty when they cannot be read).
@@ -65,6 +77,10 @@ bool AtMaxCorrection(const Snapshot& n, const AxisInfo& x, uint32_t a);
 JsonValue AxisData(const Snapshot& n, const AxisInfo& x, uint32_t a, bool referenced);
 /// The counters as an object, by CounterNames().
 JsonValue CountersData(const Snapshot& n);
+/// The thermal correction as `status --json` reports it: flags, the channels that are not unused
+/// (temperature in C, state, faults), and while a model is in force the applied offset (um) and
+/// slope (um/m) of each linear axis.
+JsonValue ThermalData(const ThermalSnapshot& t, const std::vector<AxisInfo>& axes);
 
 /// The device state flags joined with ',' ("referenced,writable"), "-" for none.
 std::string StateText(uint32_t state);

@@ -1,5 +1,6 @@
 // `volcomp status [--json]`: a board's identity, state, tables, per-axis positions and
-// corrections, and counters (board_snapshot.hpp), as one JSON document and its text layout.
+// corrections, the thermal correction and its channels, and counters (board_snapshot.hpp), as one
+// JSON document and its text layout.
 #include <chrono>
 #include <cstdio>
 #include <ostream>
@@ -52,6 +53,7 @@ JsonValue StatusData(uint8_t node, const Snapshot& n, const std::vector<AxisInfo
   for (uint32_t a = 0; a < axes.size(); ++a) {
     list.Push(AxisData(n, axes[a], a, state.referenced));
   }
+  if (n.thermal) d.Set("thermal", ThermalData(*n.thermal, axes));
   d.Set("counters", CountersData(n));
   return d;
 }
@@ -100,6 +102,34 @@ void AxisLine(const JsonValue& x, std::ostream& out) {
   out << line;
 }
 
+// "thermal: model in force, holding; channel 1 25.00 C valid (0 faults), ...; X offset +10.000 µm,
+// slope +0.000 µm/m" (docs/thermal.md), one line.
+void ThermalLine(const JsonValue& t, std::ostream& out) {
+  std::string flags = t.get("model_in_force")->boolean ? "model in force" : "no model";
+  for (const char* f : {"holding", "fading", "slewing", "saturated"}) {
+    if (t.get(f)->boolean) flags += std::string(", ") + f;
+  }
+  out << "thermal: " << flags;
+  const auto& channels = t.get("channels")->array;
+  if (channels.empty()) out << "; no channel configured";
+  for (size_t i = 0; i < channels.size(); ++i) {
+    const JsonValue& c = channels[i];
+    char line[96];
+    std::snprintf(line, sizeof line, "%schannel %d %.2f C %s (%d faults)", i == 0 ? "; " : ", ",
+                  static_cast<int>(c.get("channel")->integer), c.get("temperature_C")->number,
+                  c.get("state")->string.c_str(), static_cast<int>(c.get("faults")->integer));
+    out << line;
+  }
+  for (const JsonValue& x : t.get("axes")->array) {
+    char line[96];
+    std::snprintf(line, sizeof line, "; %s offset %+.3f µm, slope %+.3f µm/m",
+                  x.get("name")->string.c_str(), x.get("offset_um")->number,
+                  x.get("slope_um_per_m")->number);
+    out << line;
+  }
+  out << "\n";
+}
+
 void StatusText(const JsonValue& d, std::ostream& out) {
   const JsonValue* nmt = d.get("nmt_state");
   out << "node " << d.get("node")->integer << ": " << d.get("device_name")->string << " "
@@ -130,6 +160,7 @@ void StatusText(const JsonValue& d, std::ostream& out) {
            "NMT reset node\n";
   }
   for (const JsonValue& x : d.get("axes")->array) AxisLine(x, out);
+  if (const JsonValue* t = d.get("thermal")) ThermalLine(*t, out);
   out << "counters:";
   for (const auto& [name, value] : d.get("counters")->object)
     out << " " << name << "=" << value.integer;

@@ -27,7 +27,8 @@ using tools::JsonValue;
 // A simulated board (node 16, factory settings) behind an SLCAN-TCP server.
 class SimulatedNode {
  public:
-  SimulatedNode() : bus_(1000000), board_(bus_, Options()), ext_(bus_.Attach("external")) {
+  explicit SimulatedNode(const BoardSettings& settings = BoardSettings())
+      : bus_(1000000), board_(bus_, Options(settings)), ext_(bus_.Attach("external")) {
     auto server = can_io::SlcanServer::CreateTcp("127.0.0.1", 0);
     EXPECT_TRUE(server.ok()) << server.error().message;
     if (!server.ok()) return;
@@ -42,8 +43,9 @@ class SimulatedNode {
   std::string spec() const { return server_ ? server_->client_spec() : "slcan-tcp:127.0.0.1:1"; }
 
  private:
-  static sim::SimulatedBoardOptions Options() {
+  static sim::SimulatedBoardOptions Options(const BoardSettings& settings) {
     sim::SimulatedBoardOptions o;
+    o.settings = settings;
     o.write_enable_input = true;
     return o;
   }
@@ -142,6 +144,46 @@ TEST_F(CanCommands, StatusTextIsALayoutOfItsJson) {
   for (const auto& counter : d.get("counters")->object) {
     EXPECT_TRUE(Contains(text.out, " " + counter.first + "=")) << counter.first;
   }
+}
+
+// The thermal correction's channels: one written over CAN (timeout 60 s, so a loaded machine
+// cannot make it stale during the test), one left unused; no model in force.
+TEST(CanCommandsThermal, StatusShowsTheConfiguredChannels) {
+  BoardSettings settings;
+  settings.temperature[0].source = thermal::ChannelSource::kCanObject;
+  settings.temperature[0].timeout_ms = 60000;
+  settings.temperature[2].source = thermal::ChannelSource::kCanObject;
+  settings.temperature[2].timeout_ms = 60000;
+  SimulatedNode node(settings);
+  const auto run = [&node](std::vector<std::string> words) {
+    words.insert(words.end(), {"--can", node.spec()});
+    return RunCli(words);
+  };
+  ASSERT_EQ(run({"sdo", "write", "2150:1", "2345"}).code, 0);
+  const CliResult refused = run({"sdo", "write", "2150:2", "2345"});  // channel 2: unused
+  EXPECT_EQ(refused.code, 1);
+  EXPECT_TRUE(Contains(refused.err, "abort 0x06010002")) << refused.err;
+  const CliResult json = run({"status", "--json"});
+  ASSERT_EQ(json.code, 0) << json.err;
+  const JsonValue d = Json(json);
+  const JsonValue* t = d.get("thermal");
+  ASSERT_NE(t, nullptr) << json.out;
+  EXPECT_FALSE(t->get("model_in_force")->boolean);
+  const auto& channels = t->get("channels")->array;
+  ASSERT_EQ(channels.size(), 2u);
+  EXPECT_EQ(channels[0].get("channel")->integer, 1);
+  EXPECT_EQ(channels[0].get("state")->string, "valid");
+  EXPECT_DOUBLE_EQ(channels[0].get("temperature_C")->number, 23.45);
+  EXPECT_EQ(channels[0].get("faults")->integer, 0);
+  EXPECT_EQ(channels[1].get("channel")->integer, 3);
+  EXPECT_EQ(channels[1].get("state")->string, "waiting");  // configured, never written
+  EXPECT_TRUE(t->get("axes")->array.empty());
+  const CliResult text = run({"status"});
+  ASSERT_EQ(text.code, 0) << text.err;
+  EXPECT_TRUE(Contains(text.out,
+                       "\nthermal: no model; channel 1 23.45 C valid (0 faults), channel 3 0.00 C "
+                       "waiting (0 faults)\n"))
+      << text.out;
 }
 
 TEST_F(CanCommands, UploadThenVerifyVerdictsAndExitCodes) {
