@@ -342,7 +342,9 @@ std::string ConsistencyProblem(const BoardSettings& s) {
 std::string FindingText(const BoardSettings& s, const ConfigFinding& f) {
   if (f.rule == ConfigRule::kNone) return "";
   std::string where;
-  if (f.axis >= 1 && f.axis <= s.board.axis_count && f.axis <= table::kMaxAxes) {
+  if (f.rule == ConfigRule::kTemperatureChannel) {
+    where = "temperature channel " + std::to_string(f.axis) + ": ";  // `axis` is the channel
+  } else if (f.axis >= 1 && f.axis <= s.board.axis_count && f.axis <= table::kMaxAxes) {
     where = std::string("[axis ") + s.board.axis[f.axis - 1].name + "]: ";
   } else if (f.axis != 0) {
     where = "axis " + std::to_string(f.axis) + ": ";

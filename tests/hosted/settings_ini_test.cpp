@@ -165,6 +165,19 @@ TEST(BoardIni, TheFirmwaresConsistencyRulesNameTheAxis) {
       << r;
 }
 
+// A temperature channel's rule names the channel, not an axis of the same number.
+TEST(BoardIni, ATemperatureChannelFindingNamesTheChannel) {
+  BoardSettings s;
+  s.temperature[1].source = thermal::ChannelSource::kCanObject;
+  s.temperature[1].low_cC = 5000;
+  s.temperature[1].high_cC = 4000;
+  ConfigFinding f;
+  ASSERT_FALSE(ValidateSettings(s, &f).ok());
+  const std::string text = hosted::FindingText(s, f);
+  EXPECT_EQ(text, std::string("temperature channel 2: ") +
+                      ConfigRuleText(ConfigRule::kTemperatureChannel));
+}
+
 // Steps per mm (per degree), as datasheets and controllers give the resolution: stored exactly as
 // units per step x 1e9, refused where that is not exact, never beside units_per_step.
 TEST(BoardIni, StepsPerUnitIsTheResolutionTheOtherWayRound) {
