@@ -12,8 +12,9 @@ namespace {
 
 using canopen::ObjectId;
 
-ObjectId AxisObject(ObjectId first, uint32_t axis) {
-  return static_cast<ObjectId>(static_cast<int>(first) + static_cast<int>(axis));
+// Element n (0-based) of an array object whose element 1 is `first` (per axis, per channel).
+ObjectId Element(ObjectId first, uint32_t n) {
+  return static_cast<ObjectId>(static_cast<int>(first) + static_cast<int>(n));
 }
 
 Expected<uint32_t> Get(canopen_client::CanSession& s, ObjectId id) {
@@ -24,10 +25,6 @@ Expected<uint32_t> Get(canopen_client::CanSession& s, ObjectId id) {
 Expected<int32_t> GetSigned(canopen_client::CanSession& s, ObjectId id) {
   VOLCOMP_TRY_ASSIGN(const uint32_t v, Get(s, id));
   return static_cast<int32_t>(v);
-}
-
-ObjectId Element(ObjectId first, uint32_t n) {
-  return static_cast<ObjectId>(static_cast<int>(first) + static_cast<int>(n));
 }
 
 // The thermal objects, or none when the firmware has no 0x2153 (an older board).
@@ -88,7 +85,7 @@ Expected<Snapshot> TakeSnapshot(canopen_client::CanSession& s) {
   VOLCOMP_TRY_ASSIGN(n.axes, Get(s, ObjectId::kAxisCountConfig));
   const uint32_t axes = n.axes > 6 ? 6 : n.axes;
   for (uint32_t a = 0; a < axes; ++a) {
-    const auto id = [a](ObjectId first) { return AxisObject(first, a); };
+    const auto id = [a](ObjectId first) { return Element(first, a); };
     VOLCOMP_TRY_ASSIGN(n.commanded[a], GetSigned(s, id(ObjectId::kCommandedPosition1)));
     VOLCOMP_TRY_ASSIGN(n.machine[a], GetSigned(s, id(ObjectId::kMachinePosition1)));
     VOLCOMP_TRY_ASSIGN(n.correction_q8[a], GetSigned(s, id(ObjectId::kAppliedCorrection1)));
@@ -111,11 +108,11 @@ Expected<std::vector<AxisInfo>> ReadAxes(canopen_client::CanSession& s, uint32_t
   std::vector<AxisInfo> out;
   for (uint32_t a = 0; a < axes && a < 6; ++a) {
     AxisInfo x;
-    VOLCOMP_TRY_ASSIGN(const uint32_t name, Get(s, AxisObject(ObjectId::kAxisName1, a)));
-    VOLCOMP_TRY_ASSIGN(const uint32_t kind, Get(s, AxisObject(ObjectId::kAxisKind1, a)));
-    VOLCOMP_TRY_ASSIGN(x.resolution_e9, Get(s, AxisObject(ObjectId::kAxisResolution1, a)));
+    VOLCOMP_TRY_ASSIGN(const uint32_t name, Get(s, Element(ObjectId::kAxisName1, a)));
+    VOLCOMP_TRY_ASSIGN(const uint32_t kind, Get(s, Element(ObjectId::kAxisKind1, a)));
+    VOLCOMP_TRY_ASSIGN(x.resolution_e9, Get(s, Element(ObjectId::kAxisResolution1, a)));
     VOLCOMP_TRY_ASSIGN(x.max_correction_steps,
-                       GetSigned(s, AxisObject(ObjectId::kAxisMaxCorrection1, a)));
+                       GetSigned(s, Element(ObjectId::kAxisMaxCorrection1, a)));
     x.name = static_cast<char>(name);
     x.rotary = kind == 1;
     out.push_back(x);
