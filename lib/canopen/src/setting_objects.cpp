@@ -29,31 +29,45 @@ constexpr bool IsEnum(const T&) {
 
 constexpr BoardSettings kProbe{};
 
+// One reader and one writer per row, shared by an array's elements (the element's axis or channel
+// is their argument): 29 pairs rather than one per object, which the MCU images would carry.
 // clang-format off
-#define VOLCOMP_OD_BINDING(id, field, axis, channel)                                             \
-  {ObjectId::id, axis, channel, IsEnum(kProbe.field),                                            \
-   [](const BoardSettings& s) { return FieldValue(s.field); },                                   \
-   [](BoardSettings& s, int64_t v) { SetField(s.field, v); }},
+#define VOLCOMP_OD_ACCESSORS(id, field)                                                        \
+  int64_t Get##id(const BoardSettings& s, uint8_t n) { (void)n; return FieldValue(s.field); }  \
+  void Set##id(BoardSettings& s, uint8_t n, int64_t v) { (void)n; SetField(s.field, v); }
 #define VOLCOMP_OD_OBJECT(index, kind, name)
 #define VOLCOMP_OD_ENTRY(id, index, sub, type, access, def, name)
 #define VOLCOMP_OD_SETTING(id, index, sub, type, limits, def, field, key, name)                \
-  VOLCOMP_OD_BINDING(id, field, kBoardSetting, kNoChannel)
+  VOLCOMP_OD_ACCESSORS(id, field)
 #define VOLCOMP_OD_AXIS_SETTING(id, index, type, limits, field, key, name)                     \
-  VOLCOMP_OD_BINDING(id##1, board.axis[0].field, 0, kNoChannel)                                         \
-  VOLCOMP_OD_BINDING(id##2, board.axis[1].field, 1, kNoChannel)                                         \
-  VOLCOMP_OD_BINDING(id##3, board.axis[2].field, 2, kNoChannel)                                         \
-  VOLCOMP_OD_BINDING(id##4, board.axis[3].field, 3, kNoChannel)                                         \
-  VOLCOMP_OD_BINDING(id##5, board.axis[4].field, 4, kNoChannel)                                         \
-  VOLCOMP_OD_BINDING(id##6, board.axis[5].field, 5, kNoChannel)
+  VOLCOMP_OD_ACCESSORS(id, board.axis[n].field)
 #define VOLCOMP_OD_CHANNEL_SETTING(id, index, type, limits, field, key, name)                  \
-  VOLCOMP_OD_BINDING(id##1, temperature[0].field, kBoardSetting, 0)                         \
-  VOLCOMP_OD_BINDING(id##2, temperature[1].field, kBoardSetting, 1)                         \
-  VOLCOMP_OD_BINDING(id##3, temperature[2].field, kBoardSetting, 2)                         \
-  VOLCOMP_OD_BINDING(id##4, temperature[3].field, kBoardSetting, 3)                         \
-  VOLCOMP_OD_BINDING(id##5, temperature[4].field, kBoardSetting, 4)                         \
-  VOLCOMP_OD_BINDING(id##6, temperature[5].field, kBoardSetting, 5)                         \
-  VOLCOMP_OD_BINDING(id##7, temperature[6].field, kBoardSetting, 6)                         \
-  VOLCOMP_OD_BINDING(id##8, temperature[7].field, kBoardSetting, 7)
+  VOLCOMP_OD_ACCESSORS(id, temperature[n].field)
+#include "volcomp/canopen/od_entries.def"  // NOLINT(build/include)
+#undef VOLCOMP_OD_SETTING
+#undef VOLCOMP_OD_AXIS_SETTING
+#undef VOLCOMP_OD_CHANNEL_SETTING
+
+#define VOLCOMP_OD_BINDING(id, accessors, field, axis, channel)                                  \
+  {ObjectId::id, axis, channel, IsEnum(kProbe.field), &Get##accessors, &Set##accessors},
+#define VOLCOMP_OD_SETTING(id, index, sub, type, limits, def, field, key, name)                \
+  VOLCOMP_OD_BINDING(id, id, field, kBoardSetting, kNoChannel)
+#define VOLCOMP_OD_AXIS_SETTING(id, index, type, limits, field, key, name)                     \
+  VOLCOMP_OD_BINDING(id##1, id, board.axis[0].field, 0, kNoChannel)                         \
+  VOLCOMP_OD_BINDING(id##2, id, board.axis[1].field, 1, kNoChannel)                         \
+  VOLCOMP_OD_BINDING(id##3, id, board.axis[2].field, 2, kNoChannel)                         \
+  VOLCOMP_OD_BINDING(id##4, id, board.axis[3].field, 3, kNoChannel)                         \
+  VOLCOMP_OD_BINDING(id##5, id, board.axis[4].field, 4, kNoChannel)                         \
+  VOLCOMP_OD_BINDING(id##6, id, board.axis[5].field, 5, kNoChannel)
+#define VOLCOMP_OD_CHANNEL_SETTING(id, index, type, limits, field, key, name)                  \
+  VOLCOMP_OD_BINDING(id##1, id, temperature[0].field, kBoardSetting, 0)                     \
+  VOLCOMP_OD_BINDING(id##2, id, temperature[1].field, kBoardSetting, 1)                     \
+  VOLCOMP_OD_BINDING(id##3, id, temperature[2].field, kBoardSetting, 2)                     \
+  VOLCOMP_OD_BINDING(id##4, id, temperature[3].field, kBoardSetting, 3)                     \
+  VOLCOMP_OD_BINDING(id##5, id, temperature[4].field, kBoardSetting, 4)                     \
+  VOLCOMP_OD_BINDING(id##6, id, temperature[5].field, kBoardSetting, 5)                     \
+  VOLCOMP_OD_BINDING(id##7, id, temperature[6].field, kBoardSetting, 6)                     \
+  VOLCOMP_OD_BINDING(id##8, id, temperature[7].field, kBoardSetting, 7)
 }  // namespace
 
 // Declared extern in the header: constexpr here so the index below is built at compile time.
@@ -68,6 +82,7 @@ namespace {
 #undef VOLCOMP_OD_AXIS_SETTING
 #undef VOLCOMP_OD_CHANNEL_SETTING
 #undef VOLCOMP_OD_BINDING
+#undef VOLCOMP_OD_ACCESSORS
 // clang-format on
 
 constexpr size_t kCount = sizeof(kSettingObjects) / sizeof(kSettingObjects[0]);

@@ -24,8 +24,17 @@ struct SettingObject {
   uint8_t channel : 7;     // per-channel arrays (0x2158-0x215D): the channel (0-based); else
                            // kNoChannel
   uint8_t enumerated : 1;  // an enum field: an out-of-range write is invalid, not too high or low
-  int64_t (*get)(const BoardSettings& s);
-  void (*set)(BoardSettings& s, int64_t value);
+  // The row's field of element n (the axis or channel; ignored for a board setting).
+  int64_t (*read)(const BoardSettings& s, uint8_t n);
+  void (*write)(BoardSettings& s, uint8_t n, int64_t value);
+
+  /// This object's value in `s`, and setting it.
+  int64_t get(const BoardSettings& s) const { return read(s, element()); }
+  void set(BoardSettings& s, int64_t value) const { write(s, element(), value); }
+  /// The element's axis or channel (0-based), 0 for a board setting.
+  uint8_t element() const {
+    return axis != kBoardSetting ? axis : channel != kNoChannel ? channel : 0;
+  }
 };
 
 /// Every stored configuration object in dictionary order: 0x1015, 0x1017, 0x2000:1-4,
