@@ -188,25 +188,40 @@ IniExpected<int64_t> ReadInteger(
   return x;
 }
 
-IniExpected<int64_t> ReadDecimalE9(
-    const IniDocument& doc, const IniEntry& e, int64_t low, int64_t high, const std::string& of) {
+IniExpected<int64_t> ReadDecimal(const IniDocument& doc,
+                                 const IniEntry& e,
+                                 int decimals,
+                                 int64_t low,
+                                 int64_t high,
+                                 const std::string& of) {
   const std::string& v = e.value;
-  const size_t dot = v.find('.');
-  const std::string whole = v.substr(0, dot);
-  const std::string frac = dot == std::string::npos ? "" : v.substr(dot + 1);
-  if ((whole.empty() && frac.empty()) || frac.size() > 9) {
-    return doc.FailKey(e, "expected a decimal with at most 9 decimals, got '" + v + "'");
+  const bool negative = !v.empty() && v[0] == '-';
+  const std::string digits = negative ? v.substr(1) : v;
+  const size_t dot = digits.find('.');
+  const std::string whole = digits.substr(0, dot);
+  const std::string frac = dot == std::string::npos ? "" : digits.substr(dot + 1);
+  const size_t places = static_cast<size_t>(decimals);
+  if ((whole.empty() && frac.empty()) || frac.size() > places) {
+    return doc.FailKey(e, "expected a decimal with at most " + std::to_string(decimals) +
+                              " decimals, got '" + v + "'");
   }
   int64_t x = 0;
-  for (char c : whole + frac + std::string(9 - frac.size(), '0')) {
+  for (char c : whole + frac + std::string(places - frac.size(), '0')) {
     if (c < '0' || c > '9') return doc.FailKey(e, "expected a decimal, got '" + v + "'");
     x = x * 10 + (c - '0');
     if (x > kDecimalReadLimit) return doc.FailKey(e, v + " is out of range");
   }
+  if (negative) x = -x;
   if (const std::string why = RangeViolation(x, low, high); !why.empty()) {
-    return doc.FailAt(e.line, e.key + " = " + v + ": " + why + " (x 1e-9)" + of);
+    return doc.FailAt(
+        e.line, e.key + " = " + v + ": " + why + " (x 1e-" + std::to_string(decimals) + ")" + of);
   }
   return x;
+}
+
+IniExpected<int64_t> ReadDecimalE9(
+    const IniDocument& doc, const IniEntry& e, int64_t low, int64_t high, const std::string& of) {
+  return ReadDecimal(doc, e, 9, low, high, of);
 }
 
 IniExpected<bool> ReadBool(const IniDocument& doc, const IniEntry& e) {

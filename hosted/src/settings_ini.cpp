@@ -60,33 +60,6 @@ ObjectId AxisId(ObjectId first, uint32_t axis) {
   return static_cast<ObjectId>(static_cast<uint16_t>(first) + axis);
 }
 
-// A decimal with up to 2 decimals, optionally negative, as an exact integer x 100 ("-20.5" ->
-// -2050), within [low, high] of that integer.
-IniExpected<int64_t> ReadCenti(
-    const IniDocument& doc, const IniEntry& e, int64_t low, int64_t high, const std::string& of) {
-  const std::string& v = e.value;
-  const bool negative = !v.empty() && v[0] == '-';
-  const std::string digits = negative ? v.substr(1) : v;
-  const size_t dot = digits.find('.');
-  const std::string whole = digits.substr(0, dot);
-  const std::string frac = dot == std::string::npos ? "" : digits.substr(dot + 1);
-  if ((whole.empty() && frac.empty()) || frac.size() > 2) {
-    return doc.FailKey(e, "expected a decimal with at most 2 decimals, got '" + v + "'");
-  }
-  int64_t x = 0;
-  for (char c : whole + frac + std::string(2 - frac.size(), '0')) {
-    if (c < '0' || c > '9' || x > 1000000000) {
-      return doc.FailKey(e, "expected a decimal, got '" + v + "'");
-    }
-    x = x * 10 + (c - '0');
-  }
-  if (negative) x = -x;
-  if (const std::string why = RangeViolation(x, low, high); !why.empty()) {
-    return doc.FailAt(e.line, e.key + " = " + v + ": " + why + " (x 0.01)" + of);
-  }
-  return x;
-}
-
 // "-20.00" for -2000.
 std::string FormatCenti(int64_t v) {
   char text[32];
@@ -124,7 +97,7 @@ IniExpected<int64_t> ReadValue(const IniDocument& doc,
       return static_cast<int64_t>(i);
     }
     case SettingForm::kCentiDegrees:
-      return ReadCenti(doc, e, r.low, r.high, OfObject(object));
+      return ReadDecimal(doc, e, 2, r.low, r.high, OfObject(object));
     default:
       return ReadInteger(doc, e, r.low, r.high, OfObject(object));
   }

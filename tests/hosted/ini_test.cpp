@@ -69,7 +69,7 @@ TEST(Ini, StructuralMistakesAreNamedWithTheirLine) {
 TEST(Ini, ValuesAreCheckedAndTheRefusalNamesTheKey) {
   const IniExpected<IniDocument> r = IniDocument::Parse(
       "[v]\na = 0x7FF\nb = -5\nc = 12x\nd = 200\ne = 99999999999999\nf = 0.0005\ng = 1.0000000001\n"
-      "h = Yes\ni = maybe\nj = Latest\nk = sometimes\nl =\n",
+      "h = Yes\ni = maybe\nj = Latest\nk = sometimes\nl =\nm = -20.5\n",
       "t.ini");
   ASSERT_TRUE(r.ok());
   const IniDocument& doc = *r;
@@ -90,6 +90,12 @@ TEST(Ini, ValuesAreCheckedAndTheRefusalNamesTheKey) {
             "g: expected a decimal with at most 9 decimals, got '1.0000000001'");
   EXPECT_EQ(ReadDecimalE9(doc, at("f"), 1000000, 0xFFFFFFFF).error().message,
             "f = 0.0005: below the lowest value 1000000 (x 1e-9)");
+  // Two decimals, negative: -20.5 is -2050 hundredths.
+  EXPECT_EQ(*ReadDecimal(doc, at("m"), 2, -32767, 32767), -2050);
+  EXPECT_EQ(ReadDecimal(doc, at("m"), 2, -2000, 9000).error().message,
+            "m = -20.5: below the lowest value -2000 (x 1e-2)");
+  EXPECT_EQ(ReadDecimal(doc, at("f"), 2, -2000, 9000).error().message,
+            "f: expected a decimal with at most 2 decimals, got '0.0005'");
   EXPECT_TRUE(*ReadBool(doc, at("h")));
   EXPECT_EQ(ReadBool(doc, at("i")).error().message, "i: expected true or false, got 'maybe'");
   EXPECT_EQ(*ReadChoice(doc, at("j"), {"sync", "latest"}), 1u);

@@ -102,8 +102,16 @@ IniExpected<int64_t> ReadInteger(const IniDocument& doc,
                                  int64_t low,
                                  int64_t high,
                                  const std::string& of = "");
-/// A decimal with up to 9 decimals as an exact integer x 1e9 ("0.0005" -> 500000), within
-/// [low, high] of that integer.
+/// A decimal (negative with '-') with up to `decimals` decimals (0..9) as an exact integer
+/// x 10^decimals ("-20.5" with 2 -> -2050), within [low, high] of that integer
+/// ("KEY = V: below the lowest value L (x 1e-2)" + of).
+IniExpected<int64_t> ReadDecimal(const IniDocument& doc,
+                                 const IniEntry& e,
+                                 int decimals,
+                                 int64_t low,
+                                 int64_t high,
+                                 const std::string& of = "");
+/// ReadDecimal with 9 decimals: "0.0005" -> 500000.
 IniExpected<int64_t> ReadDecimalE9(const IniDocument& doc,
                                    const IniEntry& e,
                                    int64_t low,
