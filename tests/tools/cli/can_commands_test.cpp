@@ -93,6 +93,8 @@ std::string TableFile(const std::string& name, uint32_t id) {
 
 class CanCommands : public ::testing::Test {
  protected:
+  CanCommands() = default;
+  explicit CanCommands(const BoardSettings& settings) : node_(settings) {}
   CliResult Run(std::vector<std::string> words) {
     words.insert(words.end(), {"--can", node_.spec()});
     return RunCli(words);
@@ -146,24 +148,29 @@ TEST_F(CanCommands, StatusTextIsALayoutOfItsJson) {
   }
 }
 
-// The thermal correction's channels: one written over CAN (timeout 60 s, so a loaded machine
-// cannot make it stale during the test), one left unused; no model in force.
-TEST(CanCommandsThermal, StatusShowsTheConfiguredChannels) {
+// Channels 1 and 3 written over CAN (timeout 60 s, so a loaded machine cannot make them stale
+// during a test), the others unused; no model in force.
+BoardSettings TwoCanChannels() {
   BoardSettings settings;
-  settings.temperature[0].source = thermal::ChannelSource::kCanObject;
-  settings.temperature[0].timeout_ms = 60000;
-  settings.temperature[2].source = thermal::ChannelSource::kCanObject;
-  settings.temperature[2].timeout_ms = 60000;
-  SimulatedNode node(settings);
-  const auto run = [&node](std::vector<std::string> words) {
-    words.insert(words.end(), {"--can", node.spec()});
-    return RunCli(words);
-  };
-  ASSERT_EQ(run({"sdo", "write", "2150:1", "2345"}).code, 0);
-  const CliResult refused = run({"sdo", "write", "2150:2", "2345"});  // channel 2: unused
+  for (int ch : {0, 2}) {
+    settings.temperature[ch].source = thermal::ChannelSource::kCanObject;
+    settings.temperature[ch].timeout_ms = 60000;
+  }
+  return settings;
+}
+
+class CanCommandsThermal : public CanCommands {
+ protected:
+  CanCommandsThermal() : CanCommands(TwoCanChannels()) {}
+};
+
+// The thermal correction's channels: channel 1 written, channel 3 never.
+TEST_F(CanCommandsThermal, StatusShowsTheConfiguredChannels) {
+  ASSERT_EQ(Run({"sdo", "write", "2150:1", "2345"}).code, 0);
+  const CliResult refused = Run({"sdo", "write", "2150:2", "2345"});  // channel 2: unused
   EXPECT_EQ(refused.code, 1);
   EXPECT_TRUE(Contains(refused.err, "abort 0x06010002")) << refused.err;
-  const CliResult json = run({"status", "--json"});
+  const CliResult json = Run({"status", "--json"});
   ASSERT_EQ(json.code, 0) << json.err;
   const JsonValue d = Json(json);
   const JsonValue* t = d.get("thermal");
@@ -178,7 +185,7 @@ TEST(CanCommandsThermal, StatusShowsTheConfiguredChannels) {
   EXPECT_EQ(channels[1].get("channel")->integer, 3);
   EXPECT_EQ(channels[1].get("state")->string, "waiting");  // configured, never written
   EXPECT_TRUE(t->get("axes")->array.empty());
-  const CliResult text = run({"status"});
+  const CliResult text = Run({"status"});
   ASSERT_EQ(text.code, 0) << text.err;
   EXPECT_TRUE(Contains(text.out,
                        "\nthermal: no model; channel 1 23.45 C valid (0 faults), channel 3 0.00 C "
@@ -188,19 +195,9 @@ TEST(CanCommandsThermal, StatusShowsTheConfiguredChannels) {
 
 // `monitor --csv`: a temperature and a state column for each channel in use when it starts (here
 // channels 1 and 3), after the axes' columns, in every row.
-TEST(CanCommandsThermal, MonitorCsvHasTheConfiguredChannels) {
-  BoardSettings settings;
-  settings.temperature[0].source = thermal::ChannelSource::kCanObject;
-  settings.temperature[0].timeout_ms = 60000;
-  settings.temperature[2].source = thermal::ChannelSource::kCanObject;
-  settings.temperature[2].timeout_ms = 60000;
-  SimulatedNode node(settings);
-  const auto run = [&node](std::vector<std::string> words) {
-    words.insert(words.end(), {"--can", node.spec()});
-    return RunCli(words);
-  };
-  ASSERT_EQ(run({"sdo", "write", "2150:1", "-125"}).code, 0);
-  const CliResult r = run({"monitor", "--csv", "--interval-ms", "100", "--duration", "0.35"});
+TEST_F(CanCommandsThermal, MonitorCsvHasTheConfiguredChannels) {
+  ASSERT_EQ(Run({"sdo", "write", "2150:1", "-125"}).code, 0);
+  const CliResult r = Run({"monitor", "--csv", "--interval-ms", "100", "--duration", "0.35"});
   ASSERT_EQ(r.code, 0) << r.err;
   std::vector<std::string> lines;
   for (size_t at = 0; at < r.out.size();) {
