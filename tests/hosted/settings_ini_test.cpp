@@ -241,7 +241,7 @@ TEST(BoardIni, TemperatureSectionsConfigureTheChannels) {
             "m.ini:6: [temperature 3] low_C: expected a decimal with at most 2 decimals, got "
             "'20.005'");
   EXPECT_EQ(Refusal(head + "[temperature 3]\nsource = can\nhigh_C = 400\n"),
-            "m.ini:6: [temperature 3] high_C = 400: above the highest value 32767 (x 0.01) of "
+            "m.ini:6: [temperature 3] high_C = 400: above the highest value 32767 (x 1e-2) of "
             "215B:3 (Temperature high 0.01 C channel 3)");
   EXPECT_EQ(Refusal(head + "[temperature 3]\nsource = can\ntimeout_ms = 50\n"),
             "m.ini:6: [temperature 3] timeout_ms = 50: below the lowest value 100 of 2159:3 "

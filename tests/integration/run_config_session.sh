@@ -36,7 +36,7 @@ sed -e 's/^axes = X Y Z /axes = X Y Z C /' \
 printf '\n[axis C]\nkind = rotary        # a rotary table\nunits_per_step = 0.0001\n' >>machine.ini
 "$volcomp" config apply machine.ini --can "$can" --log apply.log | tee out.txt
 grep -q "2018:1 home_position (axis X) 0 -> -5000" out.txt || fail "change not listed"
-grep -q "read back: all 108 objects as in machine.ini, in force" out.txt || fail "not read back"
+grep -q "read back: all 156 objects as in machine.ini, in force" out.txt || fail "not read back"
 grep -qE 'slcan0 610#2310100173617665 T$' apply.log || fail "no store (1010:1 = \"save\")"
 grep -qE 'slcan0 000#8110 T$' apply.log || fail "no NMT reset node (000#8110) in the log"
 [[ $("$volcomp" sdo read 2018:1 --can "$can") == "-5000 (0xFFFFEC78)" ]] || fail "2018:1"
