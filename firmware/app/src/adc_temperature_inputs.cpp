@@ -4,7 +4,9 @@
 namespace volcomp::firmware {
 
 void AdcTemperatureInputs::AddScan(const uint16_t counts[kAdcSensorInputs]) {
+  if (scans_ < kAdcScansPerReading) ++scans_;
   for (uint8_t i = 0; i < kAdcSensorInputs; ++i) {
+    if (scans_ <= i * kAdcScansPerReading / kAdcSensorInputs) continue;  // not yet joined
     if (averager_[i].Add(counts[i], &mean_[i])) fresh_ = static_cast<uint8_t>(fresh_ | 1u << i);
   }
 }

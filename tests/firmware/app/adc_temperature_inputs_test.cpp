@@ -85,6 +85,8 @@ TEST(AdcTemperatureInputs, OneReadingPerWindowAveragedPerInput) {
   EXPECT_FALSE(in.Take(0, ChannelSource::kBoardNtc, &v));  // the window is not complete
   in.AddScan(b);
   EXPECT_EQ(in.mean_counts(0), 33000u);
+  ASSERT_TRUE(in.Take(0, ChannelSource::kBoardNtc, &v));
+  for (int i = 0; i < 40; ++i) in.AddScan(a);  // the later inputs' first windows (staggered)
   ASSERT_TRUE(in.Take(1, ChannelSource::kBoardPt1000, &v));
   EXPECT_NEAR(v / 100.0, 20.0, 0.05);
   EXPECT_FALSE(in.Take(1, ChannelSource::kBoardPt1000, &v));  // once per window
@@ -94,6 +96,27 @@ TEST(AdcTemperatureInputs, OneReadingPerWindowAveragedPerInput) {
   EXPECT_FALSE(in.Take(3, ChannelSource::kLinuxFile, &v));
   EXPECT_FALSE(in.Take(4, ChannelSource::kBoardNtc, &v));
   EXPECT_FALSE(in.Take(7, ChannelSource::kBoardPt1000, &v));
+}
+
+// The inputs' windows end at least 12 scans (120 ms at 100 scans/s) apart: a thermal period
+// (10 scans) converts at most one reading.
+TEST(AdcTemperatureInputs, WindowsAreStaggered) {
+  AdcTemperatureInputs in;
+  const uint16_t counts[kAdcSensorInputs] = {30000, 30000, 30000, 30000};
+  int last = -100, ended = 0;
+  for (int scan = 1; scan <= 10 * kAdcScansPerReading; ++scan) {
+    in.AddScan(counts);
+    int16_t v;
+    int fresh = 0;
+    for (uint8_t ch = 0; ch < kAdcSensorInputs; ++ch)
+      fresh += in.Take(ch, ChannelSource::kBoardNtc, &v);
+    if (fresh == 0) continue;
+    EXPECT_EQ(fresh, 1) << scan;
+    EXPECT_GE(scan - last, 12) << scan;
+    last = scan;
+    ++ended;
+  }
+  EXPECT_GE(ended, 4 * 9);  // every input a reading every 50 scans
 }
 
 // BoardThermal takes the board's readings every period: channels on ADC inputs become valid with
@@ -127,9 +150,9 @@ class BoardSensorPath : public ::testing::Test {
 
 TEST_F(BoardSensorPath, AdcChannelsBecomeValidAndChannelsWithoutAnInputGoStale) {
   Start();
-  Run(400, &inputs_);  // the first window ends at 500 ms
+  Run(400, &inputs_);  // the first window ends at 500 ms (input 1's at 620 ms)
   EXPECT_EQ(thermal_.channels().state(0), ChannelState::kWaiting);
-  Run(200, &inputs_);
+  Run(300, &inputs_);
   EXPECT_EQ(thermal_.channels().state(0), ChannelState::kValid);
   EXPECT_EQ(thermal_.channels().value_cC(0), 2500);  // R25 of the NTC
   EXPECT_EQ(thermal_.channels().state(1), ChannelState::kValid);

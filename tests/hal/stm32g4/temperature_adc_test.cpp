@@ -21,6 +21,9 @@ constexpr uintptr_t kCcr = 0x50000300u + 0x08;
 constexpr uint32_t kAden = 1u << 0, kJadstart = 1u << 3, kAdvregen = 1u << 28, kDeeppwd = 1u << 29,
                    kAdcaldif = 1u << 30, kAdcal = 1u << 31;
 constexpr uint32_t kAdrdy = 1u << 0, kJeos = 1u << 6;
+// CR bits software can only set (RM0440 §21.7.3 "rs"): ADEN, ADDIS, ADSTART, JADSTART, ADSTP,
+// JADSTP, ADCAL.
+constexpr uint32_t kSetOnly = 0x3Fu | kAdcal;
 
 struct Write {
   uintptr_t address;
@@ -52,8 +55,12 @@ struct FakeBus {
       s->reg[a] &= ~v;
       return;
     }
+    if (a == kCr) {  // set-only bits ignore a 0; the others take the value
+      s->reg[a] = (s->reg[a] & kSetOnly) | v;
+      if ((v & kAden) != 0) s->reg[kIsr] |= kAdrdy;
+      return;
+    }
     s->reg[a] = v;
-    if (a == kCr && (v & kAden) != 0) s->reg[kIsr] |= kAdrdy;
   }
   uint32_t Cycles() const { return s->cycles += 1; }
 };
@@ -111,13 +118,18 @@ TEST(TemperatureAdcDriver, BringUpFollowsTheReferenceManualsOrder) {
       EXPECT_NE(w.value & kAdvregen, 0u);
     }
   }
+  // ADEN is set once, with no other set-only bit (RM0440 §21.4.9); calibration never again.
+  for (size_t i = static_cast<size_t>(enable) + 1; i < s.writes.size(); ++i) {
+    if (s.writes[i].address == kCr) {
+      EXPECT_EQ(s.writes[i].value & (kAden | kAdcal), 0u) << i;
+    }
+  }
   // The clock (CKMODE = HCLK/4) is set before the ADC is powered; the ADC12 bus clock first.
   EXPECT_LT(first(kCcr, 3u << 16, true), regulator);
   EXPECT_EQ(s.reg[kCcr] & (3u << 16), 3u << 16);
   EXPECT_NE(s.reg[0x40021000u + 0x4C] & (1u << 13), 0u);
-  // The four pins in analog mode (MODER = 11): PA4, PA5, PC4, PC5.
-  EXPECT_EQ(s.reg[0x48000000u] & (0xFu << 8), 0xFu << 8);
-  EXPECT_EQ(s.reg[0x48000800u] & (0xFu << 8), 0xFu << 8);
+  // The pins stay as the reset left them (analog): no GPIO register is written.
+  for (const Write& w : s.writes) EXPECT_FALSE(w.address >= 0x48000000u && w.address < 0x48002000u);
   // Configuration as computed, the first scan started.
   EXPECT_EQ(s.reg[kJsqr], TemperatureAdcJsqr());
   EXPECT_EQ(s.reg[kAdc2 + 0x10], kTemperatureAdcCfgr2);

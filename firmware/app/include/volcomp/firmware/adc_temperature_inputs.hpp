@@ -8,6 +8,9 @@
 // there is nothing: those channels go stale). Every input is averaged, whatever its channel's
 // source, over kAdcScansPerReading scans (a boxcar; at 100 scans per second a window of 0.5 s:
 // 25 periods of 50 Hz hum, 30 of 60 Hz, both average out), so a reading per input every 0.5 s.
+// The inputs' windows are staggered by a quarter window (input i joins at scan 12.5 i), so their
+// readings come 120 ms or more apart and a thermal period (100 ms) converts one of them, not four
+// (two after a main-loop stall).
 //
 // The hardware parameters are compile-time constants of the reference board here (namespace
 // sensor_board): one reference resistor per input, the NTC and the platinum sensor they are
@@ -64,6 +67,7 @@ class AdcTemperatureInputs final : public hal::TemperatureInputs {
       thermal::AdcAverager(kAdcScansPerReading), thermal::AdcAverager(kAdcScansPerReading)};
   uint32_t mean_[kAdcSensorInputs] = {};
   uint8_t fresh_ = 0;  // bit i: input i completed a window since its channel's last Take()
+  uint8_t scans_ = 0;  // scans since the start, up to kAdcScansPerReading (the stagger)
 };
 
 }  // namespace volcomp::firmware

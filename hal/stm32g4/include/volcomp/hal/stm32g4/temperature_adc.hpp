@@ -88,12 +88,9 @@ class TemperatureAdc {
   /// Powers ADC2 up, calibrates and enables it, programs the scan and starts the first (about
   /// 25 us of busy waiting: start-up only).
   void Start() {
-    bus_.Write(kRccBase + rcc::kAhb2Enr,
-               bus_.Read(kRccBase + rcc::kAhb2Enr) | rcc::kAdc12En | 0x5u);  // ADC12, GPIOA, C
-    for (const AdcInputPin& p : kTemperatureInputPins) {
-      const uintptr_t moder = gpio::PortBase(p.port) + gpio::kModer;
-      bus_.Write(moder, bus_.Read(moder) | gpio::kModeAnalog << (2u * p.pin));
-    }
+    // The pins: analog mode is their reset state (GPIOx_MODER, RM0440 §9.4.1) and no driver
+    // changes them.
+    bus_.Write(kRccBase + rcc::kAhb2Enr, bus_.Read(kRccBase + rcc::kAhb2Enr) | rcc::kAdc12En);
     const uintptr_t ccr = kAdc12CommonBase + adc::kCommonCcr;
     bus_.Write(ccr, (bus_.Read(ccr) & ~adc::kCcrCkmodeMask) | adc::kCcrCkmodeHclkDiv4);
     Cr(0);  // DEEPPWD off (reset: on)
@@ -139,7 +136,9 @@ class TemperatureAdc {
   void StartScan() {
     Write(adc::kIsr, adc::kIsrJeos);
     started_ = bus_.Cycles();
-    Cr(adc::kCrAdvregen | adc::kCrAden | adc::kCrJadstart);
+    // CR's set-only bits (ADEN, JADSTART, ADCAL, ...) ignore a 0, so only JADSTART is set; the
+    // read-write ADVREGEN stays on, DEEPPWD off.
+    Cr(adc::kCrAdvregen | adc::kCrJadstart);
   }
 
   Bus bus_;
