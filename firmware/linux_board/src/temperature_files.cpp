@@ -98,12 +98,31 @@ TemperatureFiles::TemperatureFiles(const std::array<std::string, thermal::kMaxCh
 
 TemperatureFiles::~TemperatureFiles() { Stop(); }
 
+void* TemperatureFiles::ThreadMain(void* arg) {
+  const Reader* r = static_cast<const Reader*>(arg);
+  r->self->Run(r->channel);
+  return nullptr;
+}
+
 void TemperatureFiles::Start() {
   Stop();
   stopping_ = false;
+  pthread_attr_t attr;
+  pthread_attr_init(&attr);
+  pthread_attr_setstacksize(&attr, 64 * 1024);
   for (uint8_t ch = 0; ch < thermal::kMaxChannels; ++ch) {
-    if (!slot_[ch].path.empty()) threads_.emplace_back([this, ch] { Run(ch); });
+    if (slot_[ch].path.empty()) continue;
+    reader_[ch] = {this, ch};
+    pthread_t t;
+    if (pthread_create(&t, &attr, ThreadMain, &reader_[ch]) == 0) {
+      threads_.push_back(t);
+    } else {
+      std::lock_guard<std::mutex> lock(mutex_);
+      log_.push_back("[sensors] temperature_file." + std::to_string(ch + 1) +
+                     ": cannot start its reader thread (the channel has no readings)");
+    }
   }
+  pthread_attr_destroy(&attr);
 }
 
 void TemperatureFiles::Stop() {
@@ -112,7 +131,7 @@ void TemperatureFiles::Stop() {
     stopping_ = true;
   }
   wake_.notify_all();
-  for (std::thread& t : threads_) t.join();
+  for (pthread_t t : threads_) pthread_join(t, nullptr);
   threads_.clear();
 }
 

@@ -21,15 +21,17 @@
 // 750 ms when its file is read, an I2C sensor waits for its bus), so the event loop never touches
 // the files: it only takes the last result under a mutex (Take(), TakeLog()). A reader sleeps
 // until `period_ms` after the start of its last read; Stop() wakes the sleepers and joins (a read
-// in progress is waited for).
+// in progress is waited for). The readers have 64 KB stacks (what mlockall locks of them, not the
+// default 8 MB) and normal scheduling (they start before the event loop takes SCHED_FIFO).
 #pragma once
+
+#include <pthread.h>
 
 #include <array>
 #include <condition_variable>
 #include <cstdint>
 #include <mutex>
 #include <string>
-#include <thread>
 #include <vector>
 
 #include "volcomp/hal/temperature_inputs.hpp"
@@ -74,6 +76,7 @@ class TemperatureFiles final : public hal::TemperatureInputs {
   };
   bool DoTake(uint8_t channel, thermal::ChannelSource source, int16_t* value_cC) override;
   void Run(uint8_t channel);
+  static void* ThreadMain(void* arg);
 
   uint32_t period_ms_;
   std::mutex mutex_;
@@ -81,7 +84,12 @@ class TemperatureFiles final : public hal::TemperatureInputs {
   bool stopping_ = false;
   std::array<Slot, thermal::kMaxChannels> slot_;
   std::vector<std::string> log_;
-  std::vector<std::thread> threads_;
+  struct Reader {
+    TemperatureFiles* self;
+    uint8_t channel;
+  };
+  std::array<Reader, thermal::kMaxChannels> reader_;
+  std::vector<pthread_t> threads_;
 };
 
 }  // namespace volcomp::linux_board
