@@ -2,8 +2,9 @@
 // freestanding GatewayApp between the controller's bus on FDCAN1 and the drives' bus on FDCAN2.
 //   tick    TIM6 update interrupt at BoardConfig::tick_hz (highest priority): GatewayApp::Tick()
 //           (ControlTick to the corrections, which the CSP output stage hands to the gateway)
-//   main    frames of both buses (forwarded with corrected target / actual positions), then
-//           GatewayApp::Poll() (slow lines, the CANopen node), watchdog refresh
+//   main    frames of both buses (forwarded with corrected target / actual positions), the
+//           temperature inputs' ADC scan (every 10 ms), then GatewayApp::Poll() (slow lines,
+//           thermal, the CANopen node), watchdog refresh
 // No step inputs or outputs: the commanded positions come from the controller's target PDOs.
 // main() only creates the devices: BoardApp::Start applies the configuration in force (stored
 // settings, else the factory defaults below) to TIM6 and to FDCAN1 (the node's bit rate), and does
@@ -13,10 +14,12 @@
 #include <cstdint>
 
 #include "cm4_runtime.hpp"
+#include "volcomp/firmware/adc_temperature_inputs.hpp"
 #include "volcomp/firmware/gateway_app.hpp"
 #include "volcomp/firmware/stm32g4/tick_isr.hpp"
 #include "volcomp/gateway/csp_gateway.hpp"
 #include "volcomp/hal/stm32g4/drivers.hpp"
+#include "volcomp/hal/stm32g4/temperature_adc.hpp"
 
 namespace {
 
@@ -55,11 +58,15 @@ stm32g4::StmFdcan g_controller(stm32g4::FdcanInstance::kFdcan1);
 stm32g4::StmFdcan g_drives(stm32g4::FdcanInstance::kFdcan2);
 stm32g4::CycleClock g_clock;
 stm32g4::StmTickTimer g_tick(/*irq_priority=*/0);
+stm32g4::TemperatureAdc<stm32g4::MmioBus> g_adc;
+volcomp::firmware::AdcTemperatureInputs g_temperatures;
+static_assert(volcomp::firmware::kAdcSensorInputs == volcomp::stm32g4::kTemperatureInputs,
+              "one averager per ADC input");
 
 // The application (the tick's data) in CCM SRAM next to the tick code.
 __attribute__((section(".ccm_bss")))
 volcomp::firmware::GatewayApp g_app({&g_controller, &g_drives, &g_io, &g_tables, &g_settings,
-                                     &g_clock, &g_tick});
+                                     &g_clock, &g_tick, &g_temperatures});
 
 }  // namespace
 
@@ -72,6 +79,7 @@ int main() {
   if (!stm32g4::ConfigureSystemClock().ok()) volcomp_runtime_panic();
   g_clock.Init();
   g_io.Init();
+  g_adc.Start();  // after the cycle counter: it paces the scans
   const volcomp::BoardSettings defaults = BoardDefaults();
   volcomp::firmware::AppOptions options;
   options.table_bank_size = stm32g4::layout::kTableBankBytes;
@@ -83,6 +91,8 @@ int main() {
   stm32g4::Iwdg::Start(100);
   for (;;) {
     g_app.PumpFrames();
+    uint16_t counts[volcomp::firmware::kAdcSensorInputs];
+    if (g_adc.Poll(counts)) g_temperatures.AddScan(counts);
     g_app.Poll();
     stm32g4::Iwdg::Refresh();
   }

@@ -36,11 +36,20 @@ void BoardThermal::SetModel(const table::TableView& image) {
 
 void BoardThermal::ClearModel() { correction_.Clear(); }
 
-ThermalEvents BoardThermal::Poll(uint32_t now_ms) {
+ThermalEvents BoardThermal::Poll(uint32_t now_ms, hal::TemperatureInputs* sensors) {
   ThermalEvents events;
   const uint32_t since = now_ms - last_period_ms_;
   if (since < kThermalPeriodMs) return events;
   last_period_ms_ = since < 2 * kThermalPeriodMs ? last_period_ms_ + kThermalPeriodMs : now_ms;
+  if (sensors != nullptr) {
+    for (uint8_t ch = 0; ch < thermal::kMaxChannels; ++ch) {
+      const thermal::ChannelSource source = channels_.config(ch).source;
+      int16_t value_cC;
+      // A configured channel: Reading() cannot refuse it.
+      if (hal::IsBoardSensor(source) && sensors->Take(ch, source, &value_cC))
+        channels_.Reading(ch, value_cC, now_ms).IgnoreError();
+    }
+  }
   channels_.Supervise(now_ms);
   events.channels = channels_.TakeEvents();
   correction_.Update(channels_);

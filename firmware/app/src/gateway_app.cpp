@@ -30,7 +30,7 @@ GatewayApp::GatewayApp(const GatewayDevices& devices)
       tick_io_(&gateway_),
       node_port_(devices.controller),
       app_(App::Devices{&tick_io_, devices.io, devices.table_flash, devices.settings_flash,
-                        &node_port_, devices.clock, devices.tick_timer}) {}
+                        &node_port_, devices.clock, devices.tick_timer, devices.temperatures}) {}
 
 Status GatewayApp::Start(const BoardSettings& defaults,
                          const gateway::GatewayConfig& gateway,

@@ -50,6 +50,14 @@ IniKey Text(const char* key, std::string* out) {
 
 std::string OnOff(bool v) { return v ? "true" : "false"; }
 
+// "temperature_file.N" for channel ch (N = ch + 1, the sub-index of 0x2150).
+const char* TemperatureFileKey(uint8_t ch) {
+  static const char* const kKeys[thermal::kMaxChannels] = {
+      "temperature_file.1", "temperature_file.2", "temperature_file.3", "temperature_file.4",
+      "temperature_file.5", "temperature_file.6", "temperature_file.7", "temperature_file.8"};
+  return kKeys[ch];
+}
+
 std::string Trim(const std::string& s) {
   size_t b = 0, e = s.size();
   while (b < e && std::isspace(static_cast<unsigned char>(s[b]))) ++b;
@@ -65,13 +73,14 @@ class ConfigParser {
   explicit ConfigParser(const IniDocument& doc) : doc_(doc) {}
 
   IniExpected<LinuxBoardConfig> Parse() {
-    VOLCOMP_TRY(
-        doc_.CheckSections({"board", "axis NAME", "can", "gateway", "gpio", "flash", "process"}));
+    VOLCOMP_TRY(doc_.CheckSections(
+        {"board", "axis NAME", "can", "gateway", "gpio", "flash", "sensors", "process"}));
     VOLCOMP_TRY(Settings());
     VOLCOMP_TRY(Can());
     VOLCOMP_TRY(Gateway());
     VOLCOMP_TRY(Gpio());
     VOLCOMP_TRY(Flash());
+    VOLCOMP_TRY(Sensors());
     VOLCOMP_TRY(Process());
     VOLCOMP_TRY(CheckFlash());
     VOLCOMP_TRY(CheckMapping());
@@ -239,6 +248,23 @@ class ConfigParser {
          Bool(doc_, "sync", &c.flash_sync), Bool(doc_, "write_behind", &c.flash_write_behind)});
   }
 
+  // [sensors]: temperature_file.1 .. temperature_file.8, temperature_period_ms.
+  IniOutcome Sensors() {
+    LinuxBoardConfig& c = config_;
+    std::vector<IniKey> keys = {
+        Number(doc_, "temperature_period_ms", 100, 60000, &c.temperature_period_ms)};
+    for (uint8_t ch = 0; ch < thermal::kMaxChannels; ++ch) {
+      keys.push_back({TemperatureFileKey(ch), [this, &c, ch](const IniEntry& e) -> IniOutcome {
+                        if (e.value.empty() || e.value[0] != '/') {
+                          return doc_.FailKey(
+                              e, "expected an absolute file path, got '" + e.value + "'");
+                        }
+                        c.temperature_files[ch] = e.value;
+                        return IniOutcome::Ok();
+                      }});
+    }
+    return hosted::ReadKeys(doc_, doc_.Find("sensors"), keys);
+  }
   // [process]
   IniOutcome Process() {
     LinuxBoardConfig& c = config_;
@@ -358,6 +384,11 @@ std::string FormatConfig(const LinuxBoardConfig& c) {
   w.Key("sector_bytes", std::to_string(c.sector_bytes));
   w.Key("sync", OnOff(c.flash_sync));
   w.Key("write_behind", OnOff(c.flash_write_behind));
+  w.Section("sensors");
+  for (uint8_t ch = 0; ch < thermal::kMaxChannels; ++ch) {
+    if (!c.temperature_files[ch].empty()) w.Key(TemperatureFileKey(ch), c.temperature_files[ch]);
+  }
+  w.Key("temperature_period_ms", std::to_string(c.temperature_period_ms));
   w.Section("process");
   w.Key("realtime_priority", std::to_string(c.realtime_priority));
   w.Key("lock_memory", OnOff(c.lock_memory));

@@ -61,6 +61,8 @@ Expected<void> LinuxBoard::Open(hal::CanPort* controller, hal::CanPort* drives) 
   io_->Refresh(clock_.NowNs());
   opened = timer_.Open();
   if (!opened.ok()) return opened;
+  temperatures_ =
+      std::make_unique<TemperatureFiles>(config_.temperature_files, config_.temperature_period_ms);
 
   firmware::GatewayDevices dev;
   dev.controller = controller;
@@ -70,6 +72,7 @@ Expected<void> LinuxBoard::Open(hal::CanPort* controller, hal::CanPort* drives) 
   dev.settings_flash = have_settings_ ? &settings_ : nullptr;
   dev.clock = &clock_;
   dev.tick_timer = &timer_;
+  dev.temperatures = temperatures_.get();
   app_ = std::make_unique<firmware::GatewayApp>(dev);
   firmware::AppOptions ao;
   ao.use_enable_input = config_.enable_input;
@@ -83,7 +86,28 @@ Expected<void> LinuxBoard::Open(hal::CanPort* controller, hal::CanPort* drives) 
                 std::string("start failed: ") + s.name() + " (" + ErrorText(s.error()) + ")");
   }
   timer_starts_seen_ = timer_.starts();
+  temperatures_->Start();
+  LogTemperatureSources();
   return Expected<void>::Ok();
+}
+
+// A file for a channel whose source in force is not a Linux file is not read into it; a channel
+// whose source is a Linux file without one goes stale: both said at start and node reset.
+void LinuxBoard::LogTemperatureSources() {
+  const BoardSettings& s = app_->app().settings();
+  for (uint8_t ch = 0; ch < thermal::kMaxChannels; ++ch) {
+    const bool file = !config_.temperature_files[ch].empty();
+    const bool linux_source = s.temperature[ch].source == thermal::ChannelSource::kLinuxFile;
+    const std::string n = std::to_string(ch + 1);
+    if (file && !linux_source) {
+      Log("[sensors] temperature_file." + n + " is set, but temperature channel " + n +
+          "'s source is not a Linux file: the file is not used");
+    } else if (!file && linux_source) {
+      Log("temperature channel " + n +
+          "'s source is a Linux file, but [sensors] temperature_file." + n +
+          " is not set: the channel has no readings (stale)");
+    }
+  }
 }
 
 void LinuxBoard::OnTimer() {
@@ -109,10 +133,13 @@ void LinuxBoard::OnTimer() {
   if (timer_.starts() != timer_starts_seen_) {
     timer_starts_seen_ = timer_.starts();
     Log("node reset: " + DescribeConfigInForce());
+    LogTemperatureSources();
   }
+  for (const std::string& line : temperatures_->TakeLog()) Log(line);
 }
 
 void LinuxBoard::Shutdown() {
+  if (temperatures_ != nullptr) temperatures_->Stop();
   // Outputs inactive: the board is no longer compensating or ready.
   io_->Write(hal::OutputLine::kCompensating, false);
   io_->Write(hal::OutputLine::kReady, false);

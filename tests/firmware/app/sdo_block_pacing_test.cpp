@@ -35,14 +35,17 @@ constexpr uint64_t kFrameNs = 111000;  // 47 + 64 bits at 1 Mbit/s, no stuff bit
 // also runs the first flush step, and a thermal period), a pass with a flush step (main_loop_pass
 // 5053: a page erase). Each figure includes the pass itself, which the test adds again:
 // conservative. Every 100 ms one pass also runs the thermal period with a model on all 8 channels
-// (main_loop_thermal 10110, with a request received and the TPDOs sent), charged on top.
+// (main_loop_thermal_sensors 12425: four of them on the board's ADC inputs, one reading converted;
+// with a request received and the TPDOs sent), charged on top; and every 10 ms the STM32 main
+// loop collects an ADC scan of the temperature inputs (main_loop_adc_scan 524).
 struct Costs {
   uint64_t pass;     // a pass with nothing received
   uint64_t segment;  // one block segment received and delivered
   uint64_t flush;    // one flush step's CPU work, without the flash wait
 };
 constexpr Costs kPreOperational = {1000, 3600, 5100};
-constexpr uint64_t kThermalPassCycles = 10200, kThermalPeriodNs = 100000000;
+constexpr uint64_t kThermalPassCycles = 12500, kThermalPeriodNs = 100000000;
+constexpr uint64_t kAdcScanCycles = 530, kAdcScanPeriodNs = 10000000;
 // In NMT operational the TPDOs are sampled and sent when due (rows main_loop_op_*): the worst
 // segment pass 7879 (a TPDO pass on top of a segment), rounded up; every pass charged the worst
 // TPDO work (op rows' worst minus the pre-operational rows', about 4160: both TPDOs sampled and
@@ -308,8 +311,8 @@ Outcome Download(bool paced, uint32_t window, size_t bytes, const Costs& costs =
   BlockDownloadRun run(&clock, data);
   run.Start();
   // The main loop: drain the FIFO, run the server's timers (and flush steps), send; every 100 ms a
-  // pass also runs the thermal period.
-  uint64_t next_thermal_ns = kThermalPeriodNs;
+  // pass also runs the thermal period, every 10 ms one collects an ADC scan.
+  uint64_t next_thermal_ns = kThermalPeriodNs, next_scan_ns = kAdcScanPeriodNs;
   while (!run.finished() && clock.now() < 60'000'000'000ull) {
     const uint32_t now_ms = static_cast<uint32_t>(clock.now() / 1000000);
     CanFrame f;
@@ -320,6 +323,10 @@ Outcome Download(bool paced, uint32_t window, size_t bytes, const Costs& costs =
     if (clock.now() >= next_thermal_ns) {
       clock.Advance(CpuNs(kThermalPassCycles));
       next_thermal_ns += kThermalPeriodNs;
+    }
+    if (clock.now() >= next_scan_ns) {
+      clock.Advance(CpuNs(kAdcScanCycles));
+      next_scan_ns += kAdcScanPeriodNs;
     }
     if (::testing::Test::HasFatalFailure()) break;
   }

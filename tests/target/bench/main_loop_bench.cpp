@@ -21,6 +21,15 @@
 //   main_loop_thermal  a pass in which the thermal period is due (supervision, the model's update,
 //                      the terms in steps, their hand-over) and which receives a temperature
 //                      write (0x2150:n) and sends the TPDOs: the thermal pass at its worst
+// Last, the board-local sensors (the STM32 image's main loop: TemperatureAdc and
+// AdcTemperatureInputs, docs/thermal.md "Board-local sensors"), after a node reset that makes
+// channels 1-2 NTCs and 3-4 PT1000s on the ADC inputs (5-8 stay CAN objects):
+//   main_loop_adc_scan        main()'s step beside Poll() when a scan is due: the driver collects
+//                             JDR1-4 and starts the next scan (its registers in RAM here), the
+//                             four averagers take the scan; every 50th completes the windows
+//   main_loop_thermal_sensors the thermal pass with the inputs' readings as they come (10 scans
+//                             per period; the windows are staggered, so at most one conversion
+//                             per pass: NTC or PT1000), a temperature write and the TPDOs
 #include <cstdint>
 
 #include "bench_support.hpp"
@@ -29,9 +38,11 @@
 #include "volcomp/canopen/board_protocol.hpp"
 #include "volcomp/canopen/node_defaults.hpp"
 #include "volcomp/canopen/object_dictionary.hpp"
+#include "volcomp/firmware/adc_temperature_inputs.hpp"
 #include "volcomp/firmware/board_app.hpp"
 #include "volcomp/firmware/step_dir_io.hpp"
 #include "volcomp/hal/stm32g4/drivers.hpp"
+#include "volcomp/hal/stm32g4/temperature_adc.hpp"
 #include "volcomp/table/table_writer.hpp"
 
 namespace volcomp::target {
@@ -96,7 +107,29 @@ BenchLines g_lines;  // never homed
 BenchFlash g_flash;
 BenchCan g_can;
 BenchClock g_clock;
-BenchApp g_app({&g_io, &g_lines, &g_flash, nullptr, &g_can, &g_clock, nullptr});
+firmware::AdcTemperatureInputs g_sensors;
+BenchApp g_app({&g_io, &g_lines, &g_flash, nullptr, &g_can, &g_clock, nullptr, &g_sensors});
+
+// The temperature ADC's registers in RAM (ADC2's block from 0x50000100 and what the bring-up
+// touches around it), and a cycle counter the bench sets.
+uint32_t g_adc_regs[64];
+uint32_t g_adc_cycles = 0;
+struct BenchAdcBus {
+  static uint32_t* Word(uintptr_t a) {
+    const uintptr_t i = (a - stm32g4::kAdc2Base) / 4u;
+    return i < 64 ? &g_adc_regs[i] : &g_adc_regs[63];  // RCC, GPIO, CCR: a scratch word
+  }
+  static uint32_t Read(uintptr_t a) { return *static_cast<volatile uint32_t*>(Word(a)); }
+  static void Write(uintptr_t a, uint32_t v) {
+    *static_cast<volatile uint32_t*>(Word(a)) = v;
+    if (a == stm32g4::kAdc2Base + stm32g4::adc::kCr) {  // calibration done, ready at once
+      g_adc_regs[stm32g4::adc::kCr / 4] &= ~stm32g4::adc::kCrAdcal;
+      if ((v & stm32g4::adc::kCrAden) != 0) g_adc_regs[0] |= stm32g4::adc::kIsrAdrdy;
+    }
+  }
+  static uint32_t Cycles() { return g_adc_cycles += 1000; }
+};
+stm32g4::TemperatureAdc<BenchAdcBus> g_adc;
 // The payload: a table image followed by filler, 6000 bytes (more than the store takes between
 // flushes, 1017 bytes, and across 2 KB pages: the download runs flush steps, programming and
 // erases, between its sub-blocks). Staging checks no content before verification.
@@ -138,6 +171,16 @@ volcomp_bench_poll_op_rpdo() {
 }
 extern "C" __attribute__((noinline, section(".text.volcomp_bench_poll_thermal"))) void
 volcomp_bench_poll_thermal() {
+  volcomp::target::g_app.Poll();
+}
+// As in firmware/stm32g4/main.cpp's loop.
+extern "C" __attribute__((noinline, section(".text.volcomp_bench_adc_scan"))) void
+volcomp_bench_adc_scan() {
+  uint16_t counts[volcomp::firmware::kAdcSensorInputs];
+  if (volcomp::target::g_adc.Poll(counts)) volcomp::target::g_sensors.AddScan(counts);
+}
+extern "C" __attribute__((noinline, section(".text.volcomp_bench_sensors_poll"))) void
+volcomp_bench_sensors_poll() {
   volcomp::target::g_app.Poll();
 }
 
@@ -249,6 +292,32 @@ bool Download(uint32_t size) {
   return r.data[0] == 0xA1;
 }
 
+// One thermal pass through `poll`: a temperature write to channel `ch` (0-based) received, a
+// thermal period of the bench's clock passed, the frames sent drained.
+void ThermalPass(uint8_t ch, uint32_t i, void (*poll)()) {
+  CanFrame w = ExpeditedWrite(0x2150, 2300u + i % 7u + ch, 2);
+  w.data[3] = static_cast<uint8_t>(ch + 1);
+  g_can.Deliver(w);
+  g_clock.Advance(firmware::kThermalPeriodMs * 1000000ull);
+  poll();
+  CanFrame r;
+  while (g_can.TakeSent(&r)) {
+  }
+}
+// The model runs on valid channels: active, not holding, slewing.
+bool ThermalModelRunning() {
+  const thermal::ThermalStatus& ts = g_app.thermal().correction().status();
+  return ts.active && !ts.holding && ts.slewing && g_app.thermal().channel_fault_mask() == 0;
+}
+CanFrame NmtStart() {
+  CanFrame start;
+  start.id = 0x000;
+  start.dlc = 2;
+  start.data[0] = 0x01;
+  start.data[1] = kNode;
+  return start;
+}
+
 // An image of the board's axes with a thermal model only (AXES + THERMAL): every axis with an
 // offset and a slope on all 8 channels (T_ref 20 C, calibrated 0..60 C), slew 0.05 um/s.
 alignas(8) uint8_t g_thermal_image[1024];
@@ -323,12 +392,7 @@ int main() {
   int rc = 0;
   for (const auto& row : kRows) {
     if (row.operational && !g_operational) {
-      CanFrame start;
-      start.id = 0x000;
-      start.dlc = 2;
-      start.data[0] = 0x01;
-      start.data[1] = kNode;
-      g_can.Deliver(start);
+      g_can.Deliver(NmtStart());
       RunPass(Pass::kNothing);
       g_operational = true;
       if (g_app.node().state() != canopen::NmtState::kOperational) rc = 1;
@@ -364,20 +428,46 @@ int main() {
     rc = 1;
   }
   Scenario("main_loop_thermal", "volcomp_bench_poll_thermal");
-  for (uint32_t i = 0; i < 100; ++i) {
-    const uint8_t ch = static_cast<uint8_t>(i % thermal::kMaxChannels);
-    CanFrame w = ExpeditedWrite(0x2150, 2300u + i % 7u + ch, 2);
-    w.data[3] = static_cast<uint8_t>(ch + 1);
-    g_can.Deliver(w);
-    g_clock.Advance(firmware::kThermalPeriodMs * 1000000ull);
-    volcomp_bench_poll_thermal();
-    CanFrame r;
-    while (g_can.TakeSent(&r)) {
-    }
-  }
-  const thermal::ThermalStatus& ts = g_app.thermal().correction().status();
-  if (!ts.active || ts.holding || !ts.slewing || g_app.thermal().channel_fault_mask() != 0) {
+  for (uint32_t i = 0; i < 100; ++i)
+    ThermalPass(static_cast<uint8_t>(i % thermal::kMaxChannels), i, volcomp_bench_poll_thermal);
+  if (!ThermalModelRunning()) {
     semihost::Write("bench: the thermal passes did not run the model (active, valid, slewing)\n");
+    rc = 1;
+  }
+  // The board-local sensors: a node reset with channels 1-4 on the ADC inputs, the model again.
+  settings.temperature[0].source = thermal::ChannelSource::kBoardNtc;
+  settings.temperature[1].source = thermal::ChannelSource::kBoardNtc;
+  settings.temperature[2].source = thermal::ChannelSource::kBoardPt1000;
+  settings.temperature[3].source = thermal::ChannelSource::kBoardPt1000;
+  if (!g_app.Start(settings, options).ok() ||
+      !g_app.ActivateImage(g_thermal_image, thermal_image).ok()) {
+    semihost::Write("bench: the sensor board did not start\n");
+    rc = 1;
+  }
+  g_can.Deliver(NmtStart());
+  volcomp_bench_sensors_poll();
+  // Inputs at 24.5 C (NTC: 10.2 kOhm ... ) and 21 C (PT1000 1081.7 Ohm): counts = 65536 R / (R +
+  // 10 k), the ADC's JDR1-4 (JEOS set: every due call collects).
+  g_adc.Start();
+  g_adc_regs[0x80 / 4 + 0] = g_adc_regs[0x80 / 4 + 1] = 33096;  // 10.2 kOhm
+  g_adc_regs[0x80 / 4 + 2] = g_adc_regs[0x80 / 4 + 3] = 6394;   // 1081.7 Ohm
+  Scenario("main_loop_adc_scan", "volcomp_bench_adc_scan");
+  for (uint32_t i = 0; i < 200; ++i) {
+    g_adc_regs[0] |= stm32g4::adc::kIsrJeos;
+    g_adc_cycles += stm32g4::kTemperatureScanPeriodCycles;
+    volcomp_bench_adc_scan();
+  }
+  Scenario("main_loop_thermal_sensors", "volcomp_bench_sensors_poll");
+  for (uint32_t i = 0; i < 100; ++i) {
+    uint16_t counts[firmware::kAdcSensorInputs] = {33096, 33100, 6394, 6398};
+    counts[i % 4] = static_cast<uint16_t>(counts[i % 4] + i % 3);  // noise
+    for (uint32_t k = 0; k < 10; ++k) g_sensors.AddScan(counts);   // 100 ms of scans
+    ThermalPass(static_cast<uint8_t>(4 + i % 4), i, volcomp_bench_sensors_poll);
+  }
+  if (!ThermalModelRunning() ||
+      g_app.thermal().channels().state(0) != thermal::ChannelState::kValid ||
+      g_app.thermal().channels().state(3) != thermal::ChannelState::kValid) {
+    semihost::Write("bench: the sensor passes did not run the model on valid ADC channels\n");
     rc = 1;
   }
   semihost::Write("bench: frames other than SDO responses sent: ");

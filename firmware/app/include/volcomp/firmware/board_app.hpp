@@ -45,6 +45,7 @@
 #include "volcomp/hal/clock.hpp"
 #include "volcomp/hal/flash.hpp"
 #include "volcomp/hal/slow_io.hpp"
+#include "volcomp/hal/temperature_inputs.hpp"
 #include "volcomp/hal/tick_timer.hpp"
 #include "volcomp/table/table_image.hpp"
 
@@ -76,6 +77,9 @@ class BoardApp final : private BoardControl {
     hal::Clock* clock = nullptr;           // required with `can` (timeouts, heartbeat)
     hal::TickTimer* tick_timer = nullptr;  // optional: the timer that calls Tick() (without it
                                            // the caller ticks at settings().board.tick_hz)
+    hal::TemperatureInputs* temperatures = nullptr;  // optional: the board's own temperature
+                                                     // sensors (without them a channel whose
+                                                     // source is one stays waiting, then stale)
   };
 
   explicit BoardApp(const Devices& devices)
@@ -347,7 +351,7 @@ class BoardApp final : private BoardControl {
   // until every channel is valid and every term fits again. The FAULT output is not driven: a
   // thermal fault holds and fades the thermal correction, it does not stop the machine.
   void PollThermal() {
-    const ThermalEvents e = thermal_.Poll(NowMs());
+    const ThermalEvents e = thermal_.Poll(NowMs(), dev_.temperatures);
     if (!e.any() || dev_.can == nullptr) return;
     if (e.channels.faulted != 0) {
       const uint8_t lowest = static_cast<uint8_t>(__builtin_ctz(e.channels.faulted));

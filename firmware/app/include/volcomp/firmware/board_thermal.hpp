@@ -11,8 +11,9 @@
 //                applied correction out at the last model's slew limit. (ParseImage() and
 //                CheckImageMatchesBoard() have checked the section against the axes: no more axes
 //                than the board, no term on a rotary axis.)
-//   Reading()    a channel's reading from its source (the CAN object, a board sensor driver).
-//   Poll()       every main-loop pass; does one period's work when one is due, and returns the
+//   Reading()    a channel's reading from its source (the CAN object's writes).
+//   Poll()       every main-loop pass; does one period's work when one is due (first the new
+//                readings of the board's own sensors, hal::TemperatureInputs), and returns the
 //                events the owner reports (EMCY, status flag).
 //
 // A term that does not fit the run's bounds (thermal_term.hpp) is handed over saturated and
@@ -25,6 +26,7 @@
 #include "volcomp/base/status.hpp"
 #include "volcomp/config/board_settings.hpp"
 #include "volcomp/control/compensator.hpp"
+#include "volcomp/hal/temperature_inputs.hpp"
 #include "volcomp/table/table_image.hpp"
 #include "volcomp/thermal/temperature_channels.hpp"
 #include "volcomp/thermal/thermal_model.hpp"
@@ -64,10 +66,11 @@ class BoardThermal {
   }
 
   /// The main loop's pass at `now_ms`: when kThermalPeriodMs have passed since the last period,
-  /// supervises the channels, updates the model, converts and publishes the terms. A loop that
-  /// falls behind by more than a period does one period's work (the correction then moves more
-  /// slowly than its slew limit, never faster).
-  ThermalEvents Poll(uint32_t now_ms);
+  /// takes the new readings of the channels whose source is a board sensor from `sensors` (none:
+  /// a board without them, such channels go stale), supervises the channels, updates the model,
+  /// converts and publishes the terms. A loop that falls behind by more than a period does one
+  /// period's work (the correction then moves more slowly than its slew limit, never faster).
+  ThermalEvents Poll(uint32_t now_ms, hal::TemperatureInputs* sensors = nullptr);
 
   const thermal::TemperatureChannels& channels() const { return channels_; }
   const thermal::ThermalCorrection& correction() const { return correction_; }

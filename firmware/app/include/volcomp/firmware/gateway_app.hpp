@@ -33,6 +33,7 @@
 #include "volcomp/hal/clock.hpp"
 #include "volcomp/hal/flash.hpp"
 #include "volcomp/hal/slow_io.hpp"
+#include "volcomp/hal/temperature_inputs.hpp"
 #include "volcomp/hal/tick_timer.hpp"
 
 namespace volcomp::firmware {
@@ -46,6 +47,8 @@ struct GatewayDevices {
   hal::Clock* clock = nullptr;           // required
   hal::TickTimer* tick_timer = nullptr;  // optional: the timer that calls Tick() (the board
                                          // application sets its rate: BoardApp::Devices)
+  hal::TemperatureInputs* temperatures = nullptr;  // optional: the board's own temperature
+                                                   // sensors (BoardApp::Devices)
 };
 
 /// Counters of the glue (the gateway's own counters are in gateway().counters()).

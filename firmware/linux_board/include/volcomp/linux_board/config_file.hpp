@@ -2,13 +2,14 @@
 // firmware/linux_board/volcomp-fw-linux.conf). [board] and [axis NAME] are the board's settings,
 // read and written by the one settings codec (hosted/ settings_ini.hpp, the keys of the PC tool's
 // board file) with this board's keys beside them (enable_input, serial_number; invert, target_pdo,
-// actual_pdo); [can], [gateway], [gpio], [flash] and [process] are this board's alone.
+// actual_pdo); [can], [gateway], [gpio], [flash], [sensors] and [process] are this board's alone.
 //
 // Unknown sections and keys are errors (a typo must not silently change the machine); every error
 // names the file and line (ConfigError). The values are the board's factory defaults: settings
 // stored over CAN (0x1010, with a [flash] settings file) override them until restored (0x1011).
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <string>
 
@@ -48,6 +49,11 @@ struct LinuxBoardConfig {
   uint32_t sector_bytes = 4096;
   bool flash_sync = true;
   bool flash_write_behind = true;
+
+  // [sensors]: temperature_files[n] is temperature channel n's file (temperature_file.N, N = n + 1;
+  // empty: none), read every temperature_period_ms (temperature_files.hpp).
+  std::array<std::string, thermal::kMaxChannels> temperature_files;
+  uint32_t temperature_period_ms = 500;
 
   uint32_t realtime_priority = 0;  // SCHED_FIFO priority of the process (0: SCHED_OTHER)
   bool lock_memory = false;        // mlockall: no page faults on the forwarding path

@@ -1,5 +1,6 @@
 // The board of volcomp-fw-linux without its event loop: the devices a configuration names (flash
-// files, GPIO backend and debounced slow lines, the timerfd tick, the monotonic clock) and the
+// files, GPIO backend and debounced slow lines, the timerfd tick, the monotonic clock, the
+// temperature files and their reader threads) and the
 // GatewayApp on them, on CAN ports the caller opens (SocketCAN in the process, mock ports in
 // tests). The board application owns the configuration in force: it sets the tick timer's rate at
 // start and at every NMT reset node; OnTimer() runs the ticks the timer delivered.
@@ -8,8 +9,9 @@
 //   OnTimer()    when fd() of tick_timer() is readable: the due ticks (at most kMaxCatchUpTicks;
 //                the rest are counted as skipped), the slow lines every poll_ms, one main-loop
 //                pass. A (re)start of the tick timer (a node reset) is reported through
-//                Options::log with the configuration in force.
-//   Shutdown()   outputs inactive, file writes flushed.
+//                Options::log with the configuration in force, and so are the temperature
+//                files' failures and recoveries (each once).
+//   Shutdown()   outputs inactive, temperature readers stopped, file writes flushed.
 //
 // Thread-safety: one thread (the event loop).
 #pragma once
@@ -28,6 +30,7 @@
 #include "volcomp/hal/linux/tick_timer.hpp"
 #include "volcomp/hosted/expected.hpp"
 #include "volcomp/linux_board/config_file.hpp"
+#include "volcomp/linux_board/temperature_files.hpp"
 
 namespace volcomp::linux_board {
 
@@ -69,6 +72,7 @@ class LinuxBoard {
   hal::linux_board::FileFlash& tables() { return tables_; }
   hal::linux_board::LinuxSlowIo& io() { return *io_; }
   hal::linux_board::GpioBackend& gpio() { return *gpio_; }
+  TemperatureFiles& temperature_files() { return *temperatures_; }
   const TickCounters& tick_counters() const { return ticks_; }
   /// "tick 1000 Hz (timer period 1000000 ns), bit rate 1000 kbit/s, node 0x10, 3 axes" plus the
   /// refusal of stored settings or the bit-rate mismatch when there is one, and bus_detail().
@@ -76,6 +80,7 @@ class LinuxBoard {
 
  private:
   void Log(const std::string& line) const;
+  void LogTemperatureSources();
 
   LinuxBoardConfig config_;
   Options options_;
@@ -86,6 +91,7 @@ class LinuxBoard {
   bool have_settings_ = false;
   std::unique_ptr<hal::linux_board::GpioBackend> gpio_;
   std::unique_ptr<hal::linux_board::LinuxSlowIo> io_;
+  std::unique_ptr<TemperatureFiles> temperatures_;
   std::unique_ptr<firmware::GatewayApp> app_;
   TickCounters ticks_;
   uint64_t timer_starts_seen_ = 0;

@@ -41,6 +41,10 @@ inline constexpr uintptr_t kTim15Base = kPeriphBase + 0x14000u;
 inline constexpr uintptr_t kRccBase = kPeriphBase + 0x21000u;
 inline constexpr uintptr_t kFlashRegBase = kPeriphBase + 0x22000u;
 inline constexpr uintptr_t kGpioABase = kGpioPortsBase;  // GPIOx = A + 0x400 * x
+// ADC1/ADC2 on AHB2 (not moved by the register window: the cycle bench has no ADC driver).
+inline constexpr uintptr_t kAdc1Base = 0x50000000u;
+inline constexpr uintptr_t kAdc2Base = 0x50000100u;
+inline constexpr uintptr_t kAdc12CommonBase = 0x50000300u;
 
 // ---- RCC (§7.4)
 // -----------------------------------------------------------------------------------
@@ -60,6 +64,8 @@ inline constexpr uint32_t kTim2En = 1u << 0, kTim3En = 1u << 1, kTim4En = 1u << 
 // APB2ENR bits
 inline constexpr uint32_t kSyscfgEn = 1u << 0, kTim1En = 1u << 11, kTim8En = 1u << 13,
                           kTim15En = 1u << 16;
+// AHB2ENR bits: GPIOA..GPIOG are bits 0..6
+inline constexpr uint32_t kAdc12En = 1u << 13;
 // CCIPR: FDCANSEL[25:24] = 10 -> PCLK1
 inline constexpr uint32_t kFdcanSelMask = 3u << 24, kFdcanSelPclk1 = 2u << 24;
 }  // namespace rcc
@@ -156,6 +162,33 @@ inline constexpr uint32_t kRamStdFilter = 0x000, kRamExtFilter = 0x070, kRamRxFi
                           kRamRxFifo1 = 0x188, kRamTxEvent = 0x260, kRamTxBuffer = 0x278,
                           kRamInstanceSize = 0x350, kRamElementBytes = 18 * 4;
 }  // namespace fdcan
+
+// ---- ADC (§21.7 registers of one ADC, §21.8 the common registers of ADC1/ADC2)
+// ------------------------------------------------------------------------------------------------
+namespace adc {
+inline constexpr uint32_t kIsr = 0x00, kCr = 0x08, kCfgr = 0x0C, kCfgr2 = 0x10, kSmpr1 = 0x14,
+                          kSmpr2 = 0x18, kJsqr = 0x4C, kJdr1 = 0x80;  // JDRn = JDR1 + 4 (n - 1)
+inline constexpr uint32_t kCommonCcr = 0x08;                          // from kAdc12CommonBase
+inline constexpr uint32_t kIsrAdrdy = 1u << 0, kIsrJeos = 1u << 6;    // write 1 to clear
+inline constexpr uint32_t kCrAden = 1u << 0, kCrAdstart = 1u << 2, kCrJadstart = 1u << 3,
+                          kCrAdvregen = 1u << 28, kCrDeeppwd = 1u << 29, kCrAdcaldif = 1u << 30,
+                          kCrAdcal = 1u << 31;
+/// CFGR2: JOVSE (oversampling of the injected group), OVSR[4:2] ratio 2^(OVSR + 1), OVSS[8:5]
+/// right shift.
+inline constexpr uint32_t kCfgr2Jovse = 1u << 1;
+inline constexpr uint32_t Ovsr(uint32_t log2_ratio) { return (log2_ratio - 1u) << 2; }
+inline constexpr uint32_t Ovss(uint32_t shift) { return shift << 5; }
+/// JSQR: JL[1:0] = ranks - 1, JEXTEN[8:7] = 00 (software start), JSQn[4:0] at 9 + 6 (n - 1).
+inline constexpr uint32_t JsqrRank(uint32_t rank, uint32_t channel) {
+  return channel << (9u + 6u * (rank - 1u));
+}
+/// SMPR1 (channels 0..9) / SMPR2 (10..18): SMPx[2:0] at 3 x (x mod 10).
+inline constexpr uint32_t SmpShift(uint32_t channel) { return 3u * (channel % 10u); }
+/// SMP code 6: 247.5 ADC clock cycles.
+inline constexpr uint32_t kSmp247 = 6;
+/// CCR CKMODE[17:16] = 11: synchronous clock HCLK / 4.
+inline constexpr uint32_t kCcrCkmodeHclkDiv4 = 3u << 16, kCcrCkmodeMask = 3u << 16;
+}  // namespace adc
 
 // ---- Cortex-M4 system control (ARMv7-M ARM B3.2, Cortex-M4 Generic User Guide §4)
 // ----------------
