@@ -128,12 +128,6 @@ Expected<ThermalAxisFit> FitAxis(const DriftAxis& axis,
     }
   }
   fit.samples = rows.size();
-  if (fit.samples < n) {
-    return Invalid(where + ": " + std::to_string(fit.samples) +
-                   " readings after the first of each "
-                   "point for " +
-                   std::to_string(n) + " unknowns (offset and slope per channel)");
-  }
   // Equilibrate the columns.
   std::vector<double> scale(n, 0.0);
   for (const auto& row : rows) {
@@ -146,6 +140,12 @@ Expected<ThermalAxisFit> FitAxis(const DriftAxis& axis,
                      " does not change during the test: its " + (u % 2 == 0 ? "offset" : "slope") +
                      " cannot be fitted (leave it out with --channels)");
     }
+  }
+  if (fit.samples < n) {
+    return Invalid(where + ": " + std::to_string(fit.samples) +
+                   " readings after the first of each "
+                   "point for " +
+                   std::to_string(n) + " unknowns (offset and slope per channel)");
   }
   std::vector<std::vector<double>> normal(n, std::vector<double>(n, 0.0));
   std::vector<double> rhs(n, 0.0);

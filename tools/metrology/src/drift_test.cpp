@@ -46,12 +46,6 @@ Expected<std::vector<DriftChannel>> ReadChannels(const tools::CsvTable& table) {
                                         "\": a channel name (between T_ and _C) must be one or "
                                         "more letters, digits or '_'"));
     }
-    for (const DriftChannel& other : channels) {
-      if (other.name == ch.name) {
-        return Fail(table.LineFailure(table.header_line(), "column \"" + column + "\": channel \"" +
-                                                               ch.name + "\" is given twice"));
-      }
-    }
     if (channels.size() == kMaxDriftChannels) {
       return Fail(table.LineFailure(table.header_line(),
                                     "column \"" + column + "\": too many temperature channels (" +
