@@ -64,12 +64,6 @@ Outcome ParseReferences(const std::optional<std::string>& text, builders::Therma
   return Outcome::Ok();
 }
 
-JsonValue Numbers(const std::vector<double>& v) {
-  JsonValue a = JsonValue::Array();
-  for (double x : v) a.Push(x);
-  return a;
-}
-
 JsonValue FitJson(const builders::ThermalFit& fit, const thermal::ThermalModel* model) {
   JsonValue channels = JsonValue::Array();
   for (const builders::ThermalFitChannel& c : fit.channels) {
@@ -95,8 +89,8 @@ JsonValue FitJson(const builders::ThermalFit& fit, const thermal::ThermalModel* 
     o.Set("reach_mm", a.reach_mm);
     o.Set("reach_from", a.reach_from_image ? "image" : "points");
     o.Set("samples", uint64_t{a.samples});
-    o.Set("offset_um_per_K", Numbers(a.offset_um_per_K));
-    o.Set("slope_um_per_K_m", Numbers(a.slope_um_per_K_m));
+    o.Set("offset_um_per_K", JsonValue::Numbers(a.offset_um_per_K));
+    o.Set("slope_um_per_K_m", JsonValue::Numbers(a.slope_um_per_K_m));
     o.Set("drift_rms_um", a.drift_rms_um);
     o.Set("residual_rms_um", a.residual_rms_um);
     o.Set("residual_max_um", a.residual_max_um);

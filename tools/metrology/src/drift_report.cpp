@@ -30,12 +30,6 @@ JsonValue ComponentsJson(const std::optional<DriftComponents>& c) {
   return j;
 }
 
-JsonValue Numbers(const std::vector<double>& v) {
-  JsonValue a = JsonValue::Array();
-  for (double x : v) a.Push(x);
-  return a;
-}
-
 std::string Hours(double seconds) { return FormatFixed(seconds / 3600.0, 2) + " h"; }
 
 void WriteComponentsText(std::ostream& out, const JsonValue& axis) {
@@ -141,8 +135,8 @@ JsonValue DriftJson(const DriftEvaluation& ev) {
       q.Set("rate_um_per_h", p.rate_um_per_h);
       q.Set("rate_from_s", p.rate_from_s);
       q.Set("rate_readings", uint64_t{p.rate_readings});
-      q.Set("time_s", Numbers(p.time_s));
-      q.Set("drift_um", Numbers(p.drift_um));
+      q.Set("time_s", JsonValue::Numbers(p.time_s));
+      q.Set("drift_um", JsonValue::Numbers(p.drift_um));
       points.Push(std::move(q));
     }
     o.Set("points", std::move(points));
