@@ -92,5 +92,12 @@ TEST(JsonValue, BuiltDocumentsWriteInOrderWithExactIntegers) {
   EXPECT_FALSE(back->get("list")->array[0].is_int);
 }
 
+TEST(JsonValue, AnArrayOfNumbers) {
+  std::ostringstream out;
+  WriteJson(JsonValue::Numbers({1.5, -2, 0.1}), out, true);
+  EXPECT_EQ(out.str(), "[1.5, -2, 0.1]\n");
+  EXPECT_TRUE(JsonValue::Numbers({}).is_array());
+}
+
 }  // namespace
 }  // namespace volcomp::tools

@@ -258,6 +258,12 @@ JsonValue JsonValue::Array() {
   return v;
 }
 
+JsonValue JsonValue::Numbers(const std::vector<double>& values) {
+  JsonValue a = Array();
+  for (double v : values) a.Push(v);
+  return a;
+}
+
 JsonValue& JsonValue::Set(const std::string& key, JsonValue v) {
   (*this)[key] = std::move(v);
   return *this;

@@ -33,12 +33,6 @@ std::vector<const CentreValues*> Centres(const ErrorMotion& m) {
   return c;
 }
 
-JsonValue Numbers(const std::vector<double>& values) {
-  JsonValue a = JsonValue::Array();
-  for (double v : values) a.Push(v);
-  return a;
-}
-
 }  // namespace
 
 JsonValue RotaryJson(const RotaryEvaluation& ev, const std::optional<ReversalResult>& reversal) {
@@ -74,8 +68,8 @@ JsonValue RotaryJson(const RotaryEvaluation& ev, const std::optional<ReversalRes
     JsonValue about = JsonValue::Object();
     for (const CentreValues* c : Centres(em)) about.Set(CentreName(c->kind), CentreJson(*c));
     o.Set("about", std::move(about));
-    o.Set("angle_deg", Numbers(em.angle_deg));
-    o.Set("synchronous", Numbers(em.synchronous));
+    o.Set("angle_deg", JsonValue::Numbers(em.angle_deg));
+    o.Set("synchronous", JsonValue::Numbers(em.synchronous));
     measurements.Set(m.key, std::move(o));
   }
   j.Set("measurements", std::move(measurements));
@@ -94,8 +88,8 @@ JsonValue RotaryJson(const RotaryEvaluation& ev, const std::optional<ReversalRes
     JsonValue o = JsonValue::Object();
     o.Set("artefact_roundness_lsc_um", reversal->artefact_value);
     o.Set("spindle_synchronous_lsc_um", reversal->spindle_value);
-    o.Set("artefact", Numbers(reversal->artefact));
-    o.Set("spindle", Numbers(reversal->spindle));
+    o.Set("artefact", JsonValue::Numbers(reversal->artefact));
+    o.Set("spindle", JsonValue::Numbers(reversal->spindle));
     j.Set("reversal", std::move(o));
   } else {
     j.Set("reversal", JsonValue());

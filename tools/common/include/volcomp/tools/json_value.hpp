@@ -49,6 +49,8 @@ struct JsonValue {
   JsonValue(const char* s);         // NOLINT
   static JsonValue Object();
   static JsonValue Array();
+  /// An array of the numbers `values`, in order.
+  static JsonValue Numbers(const std::vector<double>& values);
 
   /// Object: sets member `key` (replacing one of that name, else appending); returns *this.
   JsonValue& Set(const std::string& key, JsonValue v);
