@@ -90,6 +90,12 @@ class ThermalPlant {
 Expected<std::unique_ptr<World>> MakeWorld(const ThermalLoopOptions& o, size_t channels) {
   WorldOptions wo;
   VOLCOMP_TRY_ASSIGN(wo.machine.model, LoadMachineModel(o.model_spec));
+  if (o.wear.thermal) {
+    return Fail(Error::kInvalidArgument,
+                "the thermal loop's machine warms by its heat balance: the closed-form warm-up "
+                "(WornMachineProfile::thermal) must be off");
+  }
+  wo.machine.wear = o.wear;
   {
     VOLCOMP_TRY_ASSIGN(const Machine machine, Machine::Create(wo.machine));
     wo.board = BoardSettingsFor(machine);

@@ -1,7 +1,10 @@
 #include "volcomp/sim/thermal_run.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <map>
+#include <utility>
 
 namespace volcomp::sim {
 namespace {
@@ -86,6 +89,18 @@ ThermalRun RunDutyCycle(Machine& machine,
       s.Step(options.step_s, heat, cycle.LoadAt(t + options.step_s).ambient_C);
   }
   return run;
+}
+
+std::array<double, 3> MaxDrift_um(const ThermalRun& run) {
+  std::array<double, 3> out = {0, 0, 0};
+  std::map<std::pair<int, double>, double> first;  // (axis, position) -> first deviation
+  for (const DriftReading& r : run.readings) {
+    const auto [it, inserted] =
+        first.emplace(std::make_pair(r.axis, r.position_mm), r.deviation_um);
+    double& m = out[static_cast<size_t>(r.axis)];
+    m = std::max(m, std::fabs(r.deviation_um - it->second));
+  }
+  return out;
 }
 
 std::string DriftTestCsv(const ThermalRun& run, const std::string& machine_name) {

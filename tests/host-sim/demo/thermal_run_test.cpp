@@ -106,5 +106,17 @@ TEST(ThermalRun, WritesTheDriftTestCsv) {
       << csv;
 }
 
+// The largest drift per axis is against each point's own first reading.
+TEST(ThermalRun, MaxDriftIsPerPointAgainstItsFirstReading) {
+  ThermalRun run;
+  run.readings = {{0, 0, 40, 100, {}},   {0, 0, 360, -50, {}},   {0, 2, 20, 7, {}},
+                  {300, 0, 40, 103, {}}, {300, 0, 360, -58, {}}, {300, 2, 20, 6.5, {}},
+                  {600, 0, 40, 96, {}},  {600, 0, 360, -52, {}}, {600, 2, 20, 7.25, {}}};
+  const std::array<double, 3> m = MaxDrift_um(run);
+  EXPECT_EQ(m[0], 8);  // -58 against -50
+  EXPECT_EQ(m[1], 0);
+  EXPECT_EQ(m[2], 0.5);
+}
+
 }  // namespace
 }  // namespace volcomp::sim

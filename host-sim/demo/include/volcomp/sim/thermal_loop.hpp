@@ -37,6 +37,9 @@ struct ThermalLoopOptions {
   ThermalRunOptions run;       // the heat balance, sensors, check points, check interval
   std::vector<uint8_t> image;  // the table image with its THERMAL section to upload and activate
   std::string model_spec = "s500";
+  /// The machine's other wear (worn_profile.hpp); its closed-form `thermal` must stay off: the
+  /// heat balance is the thermal state here.
+  WornMachineProfile wear;
   uint32_t tick_hz = 2000;
   uint64_t poll_period_ns = 1000000;  // the main loop every 1 ms
   double reading_period_s = 0.1;      // the PLC writes every channel at 10 Hz

@@ -70,6 +70,10 @@ ThermalRun RunDutyCycle(Machine& machine,
                         const ThermalRunOptions& options,
                         const ThermalCorrectionAt& correction = {});
 
+/// Per axis the largest |drift| over the run: a reading's deviation less the same check point's
+/// first reading, um (0 for an axis without readings).
+std::array<double, 3> MaxDrift_um(const ThermalRun& run);
+
 /// The drift test's CSV (docs/thermal.md "The PC tool": `volcomp evaluate thermal` and
 /// `build thermal` read it): a test-conditions preamble, then
 /// `time_s,axis,position_mm,deviation_um,T_<channel>_C...`.
