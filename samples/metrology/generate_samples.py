@@ -164,6 +164,54 @@ def circular(rng):
                 f.write(f"{d},{a:.1f},{r:.3f}\n")
 
 
+def drift_test(rng):
+    """An ISO 230-3 style drift test: 5 h, the spindle running 0-3 h then stopped, points X 50 /
+    300 / 550 mm and Y 50 / 450 mm read every 5 min (30 s apart within a sweep). Temperatures:
+    first-order lags towards 20 °C + rise while running, the ambient drifting; spindle tau 0.6 h,
+    +9 K; bed tau 2.0 h, +4 K; ambient 20.0 + 0.3 K/h·t(h) + 0.2 sin(2π t/4 h). Machine (truth):
+        drift X(p) = +1.5 µm/K · ΔT_spindle + 11.5 µm/(K·m) · ΔT_bed · p/1000
+        drift Y(p) = -0.8 µm/K · ΔT_spindle +  6.0 µm/(K·m) · ΔT_bed · p/1000
+    (ΔT from the temperatures at t = 0, p in mm from the axis's zero); plus a fixed geometric
+    deviation per point, noise 0.1 µm on the readings and 0.01 K on the temperatures. As a
+    correction about p0 (the mean of the points: X 300, Y 250 mm) the expected model is
+        X: offset spindle -1.5, offset bed -3.45 µm/K, slope bed -11.5 µm/(K·m)
+        Y: offset spindle +0.8, offset bed -1.5 µm/K, slope bed -6.0 µm/(K·m)
+    and zero on the ambient channel."""
+    points = [("X", 50.0, 1.2), ("X", 300.0, -0.8), ("X", 550.0, 2.1), ("Y", 50.0, 0.4),
+              ("Y", 450.0, -1.1)]
+    drift_per_K = {"X": (1.5, 11.5e-3), "Y": (-0.8, 6.0e-3)}  # µm/K (spindle), µm/(K mm) (bed)
+
+    def ambient(t_h):
+        return 20.0 + 0.3 * t_h + 0.2 * math.sin(2 * math.pi * t_h / 4.0)
+
+    def lag(t_h, tau, rise):
+        # running 0..3 h: rise*(1 - e^(-t/tau)); then decays from its value at 3 h
+        if t_h <= 3.0:
+            return rise * (1 - math.exp(-t_h / tau))
+        return rise * (1 - math.exp(-3.0 / tau)) * math.exp(-(t_h - 3.0) / tau)
+
+    def temps(t_s):
+        t_h = t_s / 3600.0
+        a = ambient(t_h)
+        return (a + lag(t_h, 2.0, 4.0), a + lag(t_h, 0.6, 9.0), a)
+
+    t0 = temps(0.0)
+    with open(f"{HERE}/thermal_drift.csv", "w") as f:
+        f.write("# synthetic ISO 230-3 drift test (generate_samples.py drift_test: the formula)\n")
+        f.write("# machine: MILL-7\n# axis: XY\n# date: 2026-11-28\n# operator: QA\n")
+        f.write("# instrument: laser interferometer, 3 temperature sensors\n")
+        f.write("time_s,axis,position_mm,deviation_um,T_bed_C,T_spindle_C,T_ambient_C\n")
+        for sweep in range(61):
+            for k, (axis, p, g) in enumerate(points):
+                t = sweep * 300.0 + 30.0 * k
+                bed, spindle, amb = temps(t)
+                d_sp, d_bed = spindle - t0[1], bed - t0[0]
+                a_sp, a_bed = drift_per_K[axis]
+                dev = g + a_sp * d_sp + a_bed * d_bed * p + rng.gauss(0, 0.1)
+                tt = [v + rng.gauss(0, 0.01) for v in (bed, spindle, amb)]
+                f.write(f"{t:.0f},{axis},{p:.1f},{dev:.2f},{tt[0]:.2f},{tt[1]:.2f},{tt[2]:.2f}\n")
+
+
 if __name__ == "__main__":
     rng = random.Random(27843)
     gost_long()
@@ -172,3 +220,4 @@ if __name__ == "__main__":
     spindle(rng)
     reversal(rng)
     circular(random.Random(2304))
+    drift_test(random.Random(23))

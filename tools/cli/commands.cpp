@@ -25,6 +25,7 @@ const std::vector<const Command*>& Commands() {
       &EvaluateDiagonalCommand(),
       &EvaluateRotaryCommand(),
       &EvaluateCircularCommand(),
+      &EvaluateThermalCommand(),
       &ProgramPositioningCommand(),
       &ProgramDiagonalCommand(),
       &ProgramCircularCommand(),
@@ -35,6 +36,7 @@ const std::vector<const Command*>& Commands() {
       &BuildKmtppCommand(),
       &BuildAxisCommand(),
       &BuildImageCommand(),
+      &BuildThermalCommand(),
       &ExportLinuxcncCommand(),
       &ModelEvalCommand(),
   };

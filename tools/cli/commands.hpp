@@ -30,6 +30,7 @@ const Command& EvaluatePositioningCommand();
 const Command& EvaluateDiagonalCommand();
 const Command& EvaluateRotaryCommand();
 const Command& EvaluateCircularCommand();
+const Command& EvaluateThermalCommand();
 const Command& ProgramPositioningCommand();
 const Command& ProgramDiagonalCommand();
 const Command& ProgramCircularCommand();
@@ -40,6 +41,7 @@ const Command& BuildTrackerCommand();
 const Command& BuildKmtppCommand();
 const Command& BuildAxisCommand();
 const Command& BuildImageCommand();
+const Command& BuildThermalCommand();
 const Command& ExportLinuxcncCommand();
 const Command& ModelEvalCommand();
 

@@ -2,9 +2,8 @@
 #include "volcomp/image/image_join.hpp"
 
 #include <cstdio>
-#include <cstring>
 
-#include "element_storage.hpp"
+#include "section_copy.hpp"
 #include "volcomp/table/table_writer.hpp"
 
 namespace volcomp::image {
@@ -12,30 +11,6 @@ namespace {
 
 Unexpected<Failure> Invalid(const std::string& message) {
   return Fail(Error::kInputInvalid, message);
-}
-
-// An element array of the image decoded into typed storage (little-endian in the image), so the
-// writer re-encodes exactly the same values.
-ElementStorage Decode(const uint8_t* p, table::ElementType type, uint64_t count) {
-  ElementStorage e;
-  for (uint64_t i = 0; i < count; ++i) {
-    if (type == table::ElementType::kInt16) {
-      const uint16_t u = static_cast<uint16_t>(p[2 * i] | (p[2 * i + 1] << 8));
-      e.i16.push_back(static_cast<int16_t>(u));
-    } else {
-      const uint32_t u =
-          static_cast<uint32_t>(p[4 * i]) | (static_cast<uint32_t>(p[4 * i + 1]) << 8) |
-          (static_cast<uint32_t>(p[4 * i + 2]) << 16) | (static_cast<uint32_t>(p[4 * i + 3]) << 24);
-      if (type == table::ElementType::kInt32) {
-        e.i32.push_back(static_cast<int32_t>(u));
-      } else {
-        float f;
-        std::memcpy(&f, &u, sizeof f);
-        e.f32.push_back(f);
-      }
-    }
-  }
-  return e;
 }
 
 std::string AxisNames(const table::TableView& v) {
@@ -60,24 +35,6 @@ int IndexOf(const table::TableView& v, char name) {
     if (v.axes[i].name == name) return i;
   }
   return -1;
-}
-
-// The INFO lines of a part, each prefixed.
-std::string PrefixedInfo(const table::TableView& v, const std::string& prefix) {
-  std::string out;
-  if (v.info == nullptr) return out;
-  const std::string text(v.info, v.info_size);
-  std::size_t start = 0;
-  while (start < text.size()) {
-    std::size_t end = text.find('\n', start);
-    if (end == std::string::npos) end = text.size();
-    const std::string line = text.substr(start, end - start);
-    if (!line.empty() && line.find_first_not_of('\0') != std::string::npos) {
-      out += prefix + line.substr(0, line.find('\0')) + "\n";
-    }
-    start = end + 1;
-  }
-  return out;
 }
 
 }  // namespace
@@ -125,21 +82,10 @@ Expected<JoinedImage> JoinImages(const JoinPart& grid_part,
   spec.axis_count = g.axis_count;
   for (uint8_t i = 0; i < g.axis_count; ++i) spec.axes[i] = g.axes[i];
 
-  const uint64_t grid_count =
-      uint64_t{g.grid.dim[0].nodes} * g.grid.dim[1].nodes * g.grid.dim[2].nodes * 3;
-  const ElementStorage grid_values = Decode(g.grid.data, g.grid.type, grid_count);
-  table::GridSpec grid;
-  grid.frac_bits = g.grid.frac_bits;
-  for (int d = 0; d < 3; ++d) {
-    grid.axis[d] = g.grid.axis[d];
-    grid.dim[d] = g.grid.dim[d];
-  }
-  grid.values = grid_values.view(g.grid.type);
-  spec.grid = &grid;
+  SectionCopy copy;
+  CopyGrid(g, &copy, &spec);
 
   // AXIS1D: the GRID3 image's own, then the AXIS1D image's, re-indexed by name.
-  std::vector<ElementStorage> values;
-  values.reserve(2 * (g.axis1d_count + a.axis1d_count));
   std::vector<bool> taken(g.axis_count, false);
   auto add = [&](const table::Axis1dView& t, uint8_t axis, const std::string& source) -> Outcome {
     if (taken[axis]) {
@@ -147,19 +93,7 @@ Expected<JoinedImage> JoinImages(const JoinPart& grid_part,
                      std::string(1, g.axes[axis].name) + " (" + source + ")");
     }
     taken[axis] = true;
-    table::Axis1dSpec& s = spec.axis1d[spec.axis1d_count++];
-    s.axis = axis;
-    s.frac_bits = t.frac_bits;
-    s.dim = t.dim;
-    s.period_steps = t.period_steps;
-    s.backlash_q8 = t.backlash_q8;
-    values.push_back(Decode(t.forward, t.type, t.dim.nodes));
-    s.forward = values.back().view(t.type);
-    s.has_reverse = t.reverse != nullptr;
-    if (s.has_reverse) {
-      values.push_back(Decode(t.reverse, t.type, t.dim.nodes));
-      s.reverse = values.back().view(t.type);
-    }
+    CopyAxis1d(t, axis, &copy, &spec);
     return Outcome::Ok();
   };
   for (uint8_t i = 0; i < g.axis1d_count; ++i) {
@@ -190,32 +124,10 @@ Expected<JoinedImage> JoinImages(const JoinPart& grid_part,
   JoinedImage out;
   std::string info = "builder=volcomp build image\ngrid_image=" + gs + "\naxis_image=" + as + "\n";
   for (const auto& [k, v] : options.info) info += k + "=" + v + "\n";
-  const std::string parts = PrefixedInfo(g, "grid.") + PrefixedInfo(a, "axis.");
-  for (char c : info) {
-    if (c != '\n' && c != '\t' && static_cast<unsigned char>(c) < 0x20) {
-      return Invalid("INFO text contains a control character");
-    }
-  }
-  if (info.size() > table::kMaxInfoBytes - 3) return Invalid("INFO text too long");
-  if (info.size() + parts.size() <= table::kMaxInfoBytes - 3) {
-    info += parts;
-  } else {
-    out.warnings.push_back("the INFO lines of " + gs + " and " + as +
-                           " do not fit the joined image's INFO section: left out");
-  }
-  spec.info = info.data();
-  spec.info_size = static_cast<uint32_t>(info.size());
-
-  const Result<uint32_t> size = table::ImageSize(spec);
-  if (!size.ok()) return Invalid(std::string("image: ") + ErrorText(size.error()));
-  std::vector<uint32_t> aligned((*size + 3) / 4);
-  uint8_t* bytes = reinterpret_cast<uint8_t*>(aligned.data());
-  const Result<uint32_t> written = table::WriteImage(spec, bytes, aligned.size() * 4);
-  if (!written.ok()) {
-    return Invalid(std::string("image: ") + ErrorText(written.error()) + " (" +
-                   ErrorName(written.error()) + ")");
-  }
-  out.bytes.assign(bytes, bytes + *written);
+  std::string info_text;
+  VOLCOMP_TRY(SetInfo(info, PrefixedInfo(g, "grid.") + PrefixedInfo(a, "axis."), gs + " and " + as,
+                      &info_text, &out.warnings, &spec));
+  VOLCOMP_TRY_ASSIGN(out.bytes, WriteSpec(spec));
   return out;
 }
 
