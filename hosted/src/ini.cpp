@@ -46,8 +46,9 @@ std::string IniError::ToString() const {
 std::string IniSection::Title() const { return "[" + name + (arg.empty() ? "" : " " + arg) + "]"; }
 
 const IniEntry* IniSection::Find(const std::string& key) const {
+  const std::string lower = Lower(key);
   for (const IniEntry& e : entries) {
-    if (e.key == key) return &e;
+    if (e.key == lower) return &e;
   }
   return nullptr;
 }
@@ -139,7 +140,7 @@ IniOutcome ReadKeys(const IniDocument& doc,
   for (const IniEntry& e : section->entries) {
     const IniKey* key = nullptr;
     for (const IniKey& k : keys) {
-      if (k.key == e.key) key = &k;
+      if (Lower(k.key) == e.key) key = &k;  // "low_C" is written as it reads; any case matches
     }
     if (key == nullptr) {
       std::string known;

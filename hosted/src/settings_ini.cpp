@@ -14,14 +14,16 @@ using canopen::ObjectEntry;
 using canopen::ObjectId;
 
 // The rows' file keys (their VOLCOMP_OD_KEY), expanded from od_entries.def: one per [board]
-// setting and one per axis array (its axis-1 element). Here rather than in lib/canopen's setting
-// table so the firmware images do not carry the texts.
+// setting, one per axis array (its axis-1 element) and one per channel array (its channel-1
+// element). Here rather than in lib/canopen's setting table so the firmware images do not carry
+// the texts.
 struct KeyRow {
   ObjectId id;
   const char* key;
   SettingForm form;
   const char* unit;
   bool per_axis;
+  bool per_channel;
 };
 // clang-format off
 #define VOLCOMP_OD_KEY(key, form, unit) (key, form, unit)
@@ -29,9 +31,11 @@ struct KeyRow {
 #define VOLCOMP_OD_OBJECT(index, kind, name)
 #define VOLCOMP_OD_ENTRY(id, index, sub, type, access, def, name)
 #define VOLCOMP_OD_SETTING(id, index, sub, type, limits, def, field, key, name)                \
-  {ObjectId::id, VOLCOMP_OD_KEY_FIELDS key, false},
+  {ObjectId::id, VOLCOMP_OD_KEY_FIELDS key, false, false},
 #define VOLCOMP_OD_AXIS_SETTING(id, index, type, limits, field, key, name)                     \
-  {ObjectId::id##1, VOLCOMP_OD_KEY_FIELDS key, true},
+  {ObjectId::id##1, VOLCOMP_OD_KEY_FIELDS key, true, false},
+#define VOLCOMP_OD_CHANNEL_SETTING(id, index, type, limits, field, key, name)                  \
+  {ObjectId::id##1, VOLCOMP_OD_KEY_FIELDS key, false, true},
 const KeyRow kKeyRows[] = {
 #include "volcomp/canopen/od_entries.def"  // NOLINT(build/include)
 };
@@ -39,15 +43,57 @@ const KeyRow kKeyRows[] = {
 #undef VOLCOMP_OD_ENTRY
 #undef VOLCOMP_OD_SETTING
 #undef VOLCOMP_OD_AXIS_SETTING
+#undef VOLCOMP_OD_CHANNEL_SETTING
 #undef VOLCOMP_OD_KEY_FIELDS
 #undef VOLCOMP_OD_KEY
 // clang-format on
 
 const std::vector<std::string> kAxisKinds = {"linear", "rotary"};
 const std::vector<std::string> kPulseFormats = {"step_dir", "cw_ccw", "quadrature"};
+// thermal::ChannelSource in enumerator order.
+const std::vector<std::string> kChannelSources = {"none",   "can",        "ntc",
+                                                  "pt1000", "linux_file", "simulated"};
+static_assert(thermal::kLastChannelSource == 5, "a name per channel source");
+constexpr const char* kTemperatureSection = "temperature";
 
 ObjectId AxisId(ObjectId first, uint32_t axis) {
   return static_cast<ObjectId>(static_cast<uint16_t>(first) + axis);
+}
+
+// A decimal with up to 2 decimals, optionally negative, as an exact integer x 100 ("-20.5" ->
+// -2050), within [low, high] of that integer.
+IniExpected<int64_t> ReadCenti(
+    const IniDocument& doc, const IniEntry& e, int64_t low, int64_t high, const std::string& of) {
+  const std::string& v = e.value;
+  const bool negative = !v.empty() && v[0] == '-';
+  const std::string digits = negative ? v.substr(1) : v;
+  const size_t dot = digits.find('.');
+  const std::string whole = digits.substr(0, dot);
+  const std::string frac = dot == std::string::npos ? "" : digits.substr(dot + 1);
+  if ((whole.empty() && frac.empty()) || frac.size() > 2) {
+    return doc.FailKey(e, "expected a decimal with at most 2 decimals, got '" + v + "'");
+  }
+  int64_t x = 0;
+  for (char c : whole + frac + std::string(2 - frac.size(), '0')) {
+    if (c < '0' || c > '9' || x > 1000000000) {
+      return doc.FailKey(e, "expected a decimal, got '" + v + "'");
+    }
+    x = x * 10 + (c - '0');
+  }
+  if (negative) x = -x;
+  if (const std::string why = RangeViolation(x, low, high); !why.empty()) {
+    return doc.FailAt(e.line, e.key + " = " + v + ": " + why + " (x 0.01)" + of);
+  }
+  return x;
+}
+
+// "-20.00" for -2000.
+std::string FormatCenti(int64_t v) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%s%lld.%02lld", v < 0 ? "-" : "",
+                static_cast<long long>((v < 0 ? -v : v) / 100),
+                static_cast<long long>((v < 0 ? -v : v) % 100));
+  return text;
 }
 
 // " of 2015:1 (Max correction steps axis 1)": whose limit a value broke.
@@ -73,6 +119,12 @@ IniExpected<int64_t> ReadValue(const IniDocument& doc,
       VOLCOMP_TRY_ASSIGN(const size_t i, ReadChoice(doc, e, kPulseFormats));
       return static_cast<int64_t>(i);
     }
+    case SettingForm::kChannelSource: {
+      VOLCOMP_TRY_ASSIGN(const size_t i, ReadChoice(doc, e, kChannelSources));
+      return static_cast<int64_t>(i);
+    }
+    case SettingForm::kCentiDegrees:
+      return ReadCenti(doc, e, r.low, r.high, OfObject(object));
     default:
       return ReadInteger(doc, e, r.low, r.high, OfObject(object));
   }
@@ -164,11 +216,15 @@ const IniSection* AxisSection(const IniDocument& doc, char name) {
   return doc.Find("axis", std::string(1, name));
 }
 
+// A [temperature N] section into s->temperature[N - 1]: N is the channel, 1..8 (the sub-index
+// of its objects); `source` is required (a section says what feeds the channel).
+IniOutcome ReadChannelSection(const IniDocument& doc, const IniSection& sec, BoardSettings* s);
+
 std::vector<SettingKey> MakeKeys() {
   std::vector<SettingKey> keys;
   for (const KeyRow& r : kKeyRows) {
     if (r.form == SettingForm::kAxisName) continue;  // the names are part of `axes`
-    keys.push_back({r.key, r.per_axis, r.id, r.form, r.unit});
+    keys.push_back({r.key, r.per_axis, r.id, r.form, r.unit, r.per_channel});
   }
   return keys;
 }
@@ -183,10 +239,11 @@ const std::vector<SettingKey>& SettingKeys() {
 const SettingKey* SettingKeyOf(ObjectId id) {
   const canopen::SettingObject* s = canopen::FindSetting(id);
   if (s == nullptr) return nullptr;
-  // An array element: its array's key, found by the axis-1 element.
-  const ObjectId first = s->axis == canopen::kBoardSetting
-                             ? id
-                             : static_cast<ObjectId>(static_cast<uint16_t>(id) - s->axis);
+  // An array element: its array's key, found by the axis-1 (channel-1) element.
+  const uint8_t element = s->axis != canopen::kBoardSetting   ? s->axis
+                          : s->channel != canopen::kNoChannel ? s->channel
+                                                              : 0;
+  const ObjectId first = static_cast<ObjectId>(static_cast<uint16_t>(id) - element);
   for (const KeyRow& r : kKeyRows) {
     if (r.id != first) continue;
     for (const SettingKey& k : SettingKeys()) {
@@ -209,6 +266,12 @@ std::string FormatSettingValue(const SettingKey& key, int64_t v) {
       return v >= 0 && v < 2 ? kAxisKinds[static_cast<size_t>(v)] : std::to_string(v);
     case SettingForm::kPulseFormat:
       return v >= 0 && v < 3 ? kPulseFormats[static_cast<size_t>(v)] : std::to_string(v);
+    case SettingForm::kChannelSource:
+      return v >= 0 && static_cast<size_t>(v) < kChannelSources.size()
+                 ? kChannelSources[static_cast<size_t>(v)]
+                 : std::to_string(v);
+    case SettingForm::kCentiDegrees:
+      return FormatCenti(v);
     default:
       return std::to_string(v);
   }
@@ -233,7 +296,7 @@ IniOutcome ReadSettings(const IniDocument& doc, BoardSettings* s, const Settings
   int names_line = 0;
   std::vector<IniKey> board_keys;
   for (const SettingKey& k : SettingKeys()) {
-    if (k.per_axis) continue;
+    if (k.per_axis || k.per_channel) continue;
     if (k.form == SettingForm::kAxisNames) {
       board_keys.push_back({k.key, [&](const IniEntry& e) -> IniOutcome {
                               VOLCOMP_TRY_ASSIGN(names, ReadAxisNames(doc, e));
@@ -306,10 +369,98 @@ IniOutcome ReadSettings(const IniDocument& doc, BoardSettings* s, const Settings
                             "), not both");
     }
   }
+  for (const IniSection& sec : doc.sections()) {
+    if (sec.name != kTemperatureSection) continue;
+    const IniOutcome read = ReadChannelSection(doc, sec, s);
+    if (!read.ok()) {  // the section's title before what the key's reader says (if it does not)
+      IniError e = read.error();
+      if (e.message.find(sec.Title()) == std::string::npos)
+        e.message = sec.Title() + " " + e.message;
+      return Fail(e);
+    }
+  }
   return IniOutcome::Ok();
 }
 
-std::string ConsistencyProblem(const BoardSettings& s) {
+std::string ChannelSectionName(uint8_t ch) {
+  return std::string(kTemperatureSection) + " " + std::to_string(ch + 1);
+}
+
+namespace {
+
+IniOutcome ReadChannelSection(const IniDocument& doc, const IniSection& sec, BoardSettings* s) {
+  const std::string& n = sec.arg;
+  if (n.size() != 1 || n[0] < '1' || n[0] > static_cast<char>('0' + thermal::kMaxChannels)) {
+    return doc.FailAt(sec.line, "is not a channel: N must be 1.." +
+                                    std::to_string(thermal::kMaxChannels) +
+                                    " (the sub-index of 2158-215D)");
+  }
+  const uint8_t ch = static_cast<uint8_t>(n[0] - '1');
+  std::vector<IniKey> keys;
+  for (const SettingKey& k : SettingKeys()) {
+    if (!k.per_channel) continue;
+    const ObjectId id = AxisId(k.id, ch);
+    keys.push_back({k.key, [&doc, s, k, id](const IniEntry& e) -> IniOutcome {
+                      IniEntry named = e;  // refusals name the key as it is written: "low_C"
+                      named.key = k.key;
+                      VOLCOMP_TRY_ASSIGN(const int64_t v,
+                                         ReadValue(doc, named, k, canopen::Entry(id)));
+                      Set(s, id, v);
+                      return IniOutcome::Ok();
+                    }});
+  }
+  if (sec.Find(keys.front().key) == nullptr) {
+    return doc.FailAt(sec.line, "gives no " + keys.front().key + " (" +
+                                    SettingKeyOf(ObjectId::kChannelSource1)->unit + ")");
+  }
+  return ReadKeys(doc, &sec, keys);
+}
+
+// `s` with every temperature channel unused: the axis rules alone.
+BoardSettings WithoutChannels(BoardSettings s) {
+  for (thermal::ChannelConfig& c : s.temperature) c = thermal::ChannelConfig();
+  return s;
+}
+
+// Why thermal::ValidateChannelConfig refuses channel `ch` (0-based), in its keys and values.
+std::string ChannelProblem(const BoardSettings& s, uint8_t ch) {
+  const thermal::ChannelConfig& c = s.temperature[ch];
+  const std::string where = "[" + ChannelSectionName(ch) + "]: ";
+  const auto text = [&](ObjectId first, int64_t v) {
+    const SettingKey& k = *SettingKeyOf(first);
+    return std::string(k.key) + " " + FormatSettingValue(k, v);
+  };
+  std::string why;
+  if (static_cast<uint8_t>(c.source) > thermal::kLastChannelSource) {
+    why = text(ObjectId::kChannelSource1, static_cast<int64_t>(c.source)) + " is not a source (" +
+          SettingKeyOf(ObjectId::kChannelSource1)->unit + ")";
+  } else if (c.timeout_ms < 100 || c.timeout_ms > 60000) {
+    why = text(ObjectId::kChannelTimeout1, c.timeout_ms) + " is outside 100..60000";
+  } else if (c.low_cC == thermal::kNoReading_cC) {
+    why = text(ObjectId::kChannelLow1, c.low_cC) + " is the \"no reading\" value";
+  } else if (c.low_cC >= c.high_cC) {
+    why = text(ObjectId::kChannelLow1, c.low_cC) + " is not below " +
+          text(ObjectId::kChannelHigh1, c.high_cC);
+  } else if (c.max_rate_cC_s < 1) {
+    why = text(ObjectId::kChannelMaxRate1, c.max_rate_cC_s) + " is below 0.01";
+  } else if (c.stuck_readings == 1) {
+    why = text(ObjectId::kChannelStuck1, c.stuck_readings) + " must be 0 (off) or 2..255";
+  } else {
+    return where + ConfigRuleText(ConfigRule::kTemperatureChannel);
+  }
+  return where + why + " (rule " +
+         std::to_string(static_cast<int>(ConfigRule::kTemperatureChannel)) + ")";
+}
+
+}  // namespace
+
+std::string ConsistencyProblem(const BoardSettings& all) {
+  ConfigFinding f;
+  if (ValidateSettings(all, &f).ok()) return "";
+  if (f.rule == ConfigRule::kTemperatureChannel && f.axis >= 1 && f.axis <= thermal::kMaxChannels) {
+    return ChannelProblem(all, static_cast<uint8_t>(f.axis - 1));
+  }
+  const BoardSettings s = WithoutChannels(all);
   if (ValidateSettings(s).ok()) return "";
   for (uint8_t n = 1; n <= s.board.axis_count && n <= table::kMaxAxes; ++n) {
     BoardSettings first = s;
@@ -342,8 +493,11 @@ std::string ConsistencyProblem(const BoardSettings& s) {
 std::string FindingText(const BoardSettings& s, const ConfigFinding& f) {
   if (f.rule == ConfigRule::kNone) return "";
   std::string where;
-  if (f.rule == ConfigRule::kTemperatureChannel) {
-    where = "temperature channel " + std::to_string(f.axis) + ": ";  // `axis` is the channel
+  if (f.rule == ConfigRule::kTemperatureChannel) {  // `axis` is the channel, 1-based
+    if (f.axis >= 1 && f.axis <= thermal::kMaxChannels) {
+      return ChannelProblem(s, static_cast<uint8_t>(f.axis - 1));
+    }
+    where = "temperature channel " + std::to_string(f.axis) + ": ";
   } else if (f.axis >= 1 && f.axis <= s.board.axis_count && f.axis <= table::kMaxAxes) {
     where = std::string("[axis ") + s.board.axis[f.axis - 1].name + "]: ";
   } else if (f.axis != 0) {
@@ -368,9 +522,16 @@ std::string FindingText(const BoardSettings& s, const ConfigFinding& f) {
   return where + ConfigRuleText(f.rule);
 }
 
-IniOutcome CheckSettings(const IniDocument& doc, const BoardSettings& s) {
-  const std::string why = ConsistencyProblem(s);
+IniOutcome CheckSettings(const IniDocument& doc, const BoardSettings& all) {
+  const std::string why = ConsistencyProblem(all);
   if (why.empty()) return IniOutcome::Ok();
+  ConfigFinding f;
+  (void)ValidateSettings(all, &f);
+  if (f.rule == ConfigRule::kTemperatureChannel) {  // at the channel's section (if it has one)
+    const IniSection* sec = doc.Find(kTemperatureSection, std::to_string(f.axis));
+    return doc.FailAt(sec != nullptr ? sec->line : 0, why);
+  }
+  const BoardSettings s = WithoutChannels(all);
   // The [axis] section of the axis the rules stop at (the file as a whole if none).
   int line = 0;
   for (uint8_t n = 1; n <= s.board.axis_count && n <= table::kMaxAxes && line == 0; ++n) {
@@ -386,7 +547,7 @@ IniOutcome CheckSettings(const IniDocument& doc, const BoardSettings& s) {
 
 IniExpected<BoardSettings> ParseSettingsIni(const std::string& text, const std::string& source) {
   VOLCOMP_TRY_ASSIGN(const IniDocument doc, IniDocument::Parse(text, source));
-  VOLCOMP_TRY(doc.CheckSections({"board", "axis NAME"}));
+  VOLCOMP_TRY(doc.CheckSections({"board", "axis NAME", "temperature N"}));
   BoardSettings s;  // the factory settings
   VOLCOMP_TRY(ReadSettings(doc, &s));
   VOLCOMP_TRY(CheckSettings(doc, s));
@@ -395,7 +556,7 @@ IniExpected<BoardSettings> ParseSettingsIni(const std::string& text, const std::
 
 IniExpected<BoardSettings> ReadSettingsIniFile(const std::string& path) {
   VOLCOMP_TRY_ASSIGN(const IniDocument doc, IniDocument::ReadFile(path));
-  VOLCOMP_TRY(doc.CheckSections({"board", "axis NAME"}));
+  VOLCOMP_TRY(doc.CheckSections({"board", "axis NAME", "temperature N"}));
   BoardSettings s;
   VOLCOMP_TRY(ReadSettings(doc, &s));
   VOLCOMP_TRY(CheckSettings(doc, s));
@@ -408,7 +569,7 @@ void WriteSettings(IniWriter& w, const BoardSettings& s, const SettingsIniWriteE
   };
   w.Section("board");
   for (const SettingKey& k : SettingKeys()) {
-    if (k.per_axis) continue;
+    if (k.per_axis || k.per_channel) continue;
     if (k.form == SettingForm::kAxisNames) {
       std::string names;
       for (uint8_t a = 0; a < s.board.axis_count; ++a) {
@@ -441,6 +602,15 @@ void WriteSettings(IniWriter& w, const BoardSettings& s, const SettingsIniWriteE
       w.Key(k.key, FormatSettingValue(k, v), note);
     }
     if (extras.axis) extras.axis(w, a);
+  }
+  for (uint8_t ch = 0; ch < thermal::kMaxChannels; ++ch) {
+    if (s.temperature[ch].source == thermal::ChannelSource::kNone) continue;  // unused
+    w.Section(ChannelSectionName(ch));
+    for (const SettingKey& k : SettingKeys()) {
+      if (!k.per_channel) continue;
+      const ObjectId id = AxisId(k.id, ch);
+      w.Key(k.key, FormatSettingValue(k, canopen::FindSetting(id)->get(s)), comment(id, k));
+    }
   }
 }
 

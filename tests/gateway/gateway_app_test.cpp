@@ -377,9 +377,23 @@ TEST_F(GatewayAppTest, TheBoardsRpdoReachesTheNodeNotTheDrives) {
   EXPECT_TRUE(m_.drv_.TakeSent().empty());
   m_.Cycle();
   EXPECT_TRUE(m_.app_.app().control_tick().all_referenced());
+  // RPDO2 and RPDO3 (the temperatures, 0x300 / 0x400 + node-ID) are the board's too.
+  for (uint32_t base : {0x300u, 0x400u}) {
+    CanFrame t;
+    t.id = base + kNode;
+    t.dlc = 8;
+    for (int k = 0; k < 8; k += 2) t.data[k + 1] = 0x80;  // 0x8000: no reading, each slot
+    EXPECT_EQ(m_.app_.OnControllerFrame(t), gateway::Route::kLocal) << base;
+    m_.app_.Poll();
+    EXPECT_TRUE(m_.drv_.TakeSent().empty()) << base;
+  }
+  EXPECT_EQ(m_.app_.app().node().rpdo_received(), 3u);
   // Another node's RPDO goes to the drives as before.
   rpdo.id = 0x201;
   rpdo.dlc = 2;
+  EXPECT_EQ(m_.app_.OnControllerFrame(rpdo), gateway::Route::kForward);
+  EXPECT_EQ(m_.drv_.TakeSent().size(), 1u);
+  rpdo.id = 0x301;
   EXPECT_EQ(m_.app_.OnControllerFrame(rpdo), gateway::Route::kForward);
   EXPECT_EQ(m_.drv_.TakeSent().size(), 1u);
 }

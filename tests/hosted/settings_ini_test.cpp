@@ -94,8 +94,8 @@ TEST(BoardIni, AHandWrittenFileMeansWhatItSays) {
 }
 
 TEST(BoardIni, EveryStoredObjectHasItsKey) {
-  // 0x1015, 0x1017, 0x2000:1-4 and seventeen per-axis arrays of six.
-  EXPECT_EQ(SettingObjects().size(), 2u + 4u + 17u * 6u);
+  // 0x1015, 0x1017, 0x2000:1-4, seventeen per-axis arrays of six, six per-channel arrays of eight.
+  EXPECT_EQ(SettingObjects().size(), 2u + 4u + 17u * 6u + 6u * 8u);
   for (const SettingObject& o : SettingObjects()) {
     EXPECT_NE(SettingKeyOf(o.id), nullptr) << canopen::Entry(o.id).name;
   }
@@ -165,7 +165,8 @@ TEST(BoardIni, TheFirmwaresConsistencyRulesNameTheAxis) {
       << r;
 }
 
-// A temperature channel's rule names the channel, not an axis of the same number.
+// A temperature channel's rule names the channel by its section, not an axis of the same number,
+// with the keys and values that break it.
 TEST(BoardIni, ATemperatureChannelFindingNamesTheChannel) {
   BoardSettings s;
   s.temperature[1].source = thermal::ChannelSource::kCanObject;
@@ -173,9 +174,90 @@ TEST(BoardIni, ATemperatureChannelFindingNamesTheChannel) {
   s.temperature[1].high_cC = 4000;
   ConfigFinding f;
   ASSERT_FALSE(ValidateSettings(s, &f).ok());
-  const std::string text = hosted::FindingText(s, f);
-  EXPECT_EQ(text, std::string("temperature channel 2: ") +
-                      ConfigRuleText(ConfigRule::kTemperatureChannel));
+  EXPECT_EQ(hosted::FindingText(s, f),
+            "[temperature 2]: low_C 50.00 is not below high_C 40.00 (rule 18)");
+  s.temperature[1].high_cC = 6000;
+  s.temperature[1].stuck_readings = 1;
+  ASSERT_FALSE(ValidateSettings(s, &f).ok());
+  EXPECT_EQ(hosted::FindingText(s, f),
+            "[temperature 2]: stuck_readings 1 must be 0 (off) or 2..255 (rule 18)");
+  // With an axis rule broken too, the axis is named for the axis's rule (the channel does not
+  // make every axis look broken).
+  s.board.axis[0].max_correction_accel_steps_s2 = 0;
+  EXPECT_NE(ConsistencyProblem(s).find("[axis X]: max_rate 2000 and max_accel 0"),
+            std::string::npos)
+      << ConsistencyProblem(s);
+}
+
+// [temperature N]: the channel's source and limits in the file's units (C, K/s), N the
+// sub-index of 0x2158-0x215D; a section names what feeds its channel.
+TEST(BoardIni, TemperatureSectionsConfigureTheChannels) {
+  const std::string head = "[board]\naxes = X\n[axis X]\n";
+  const BoardSettings s = ParseBoardIni(head +
+                                            "[temperature 1]\n"
+                                            "source = can\n"
+                                            "timeout_ms = 5000\n"
+                                            "low_C = -5.5\n"
+                                            "high_C = 60\n"
+                                            "max_rate_K_s = 0.25\n"
+                                            "[temperature 8]\n"
+                                            "source = PT1000\n"
+                                            "stuck_readings = 20\n",
+                                        "m.ini");
+  const thermal::ChannelConfig& c1 = s.temperature[0];
+  EXPECT_EQ(c1.source, thermal::ChannelSource::kCanObject);
+  EXPECT_EQ(c1.timeout_ms, 5000);
+  EXPECT_EQ(c1.low_cC, -550);
+  EXPECT_EQ(c1.high_cC, 6000);
+  EXPECT_EQ(c1.max_rate_cC_s, 25);
+  const thermal::ChannelConfig& c8 = s.temperature[7];
+  EXPECT_EQ(c8.source, thermal::ChannelSource::kBoardPt1000);
+  EXPECT_EQ(c8.stuck_readings, 20);
+  EXPECT_EQ(c8.timeout_ms, 1500);  // left out: the factory value
+  EXPECT_EQ(c8.low_cC, -2000);
+  for (int ch = 1; ch < 7; ++ch) {
+    EXPECT_EQ(s.temperature[ch].source, thermal::ChannelSource::kNone) << ch;
+  }
+  // Written back: the two channels in use, in the file's units, nothing for the unused ones.
+  const std::string text = FormatSettingsIni(s, {});
+  EXPECT_NE(text.find("\n[temperature 1]\nsource = can "), std::string::npos) << text;
+  EXPECT_NE(text.find("\nlow_C = -5.50 "), std::string::npos) << text;
+  EXPECT_NE(text.find("# 215A:1 C, lowest plausible reading"), std::string::npos) << text;
+  EXPECT_NE(text.find("\nmax_rate_K_s = 0.25 "), std::string::npos) << text;
+  EXPECT_NE(text.find("\n[temperature 8]\nsource = pt1000 "), std::string::npos) << text;
+  EXPECT_NE(text.find("# 2158:8 none | can | ntc | pt1000 | linux_file | simulated"),
+            std::string::npos)
+      << text;
+  EXPECT_EQ(text.find("[temperature 2]"), std::string::npos) << text;
+  const BoardSettings back = ParseBoardIni(text, "saved.ini");
+  EXPECT_TRUE(Differences(back, s).empty());
+  EXPECT_EQ(FormatSettingsIni(BoardSettings(), {}).find("[temperature"), std::string::npos);
+
+  // Refusals name the section, the key and the value.
+  EXPECT_EQ(Refusal(head + "[temperature 3]\nsource = thermocouple\n"),
+            "m.ini:5: [temperature 3] source: expected none | can | ntc | pt1000 | linux_file | "
+            "simulated, got 'thermocouple'");
+  EXPECT_EQ(Refusal(head + "[temperature 3]\nsource = can\nlow_C = 20.005\n"),
+            "m.ini:6: [temperature 3] low_C: expected a decimal with at most 2 decimals, got "
+            "'20.005'");
+  EXPECT_EQ(Refusal(head + "[temperature 3]\nsource = can\nhigh_C = 400\n"),
+            "m.ini:6: [temperature 3] high_C = 400: above the highest value 32767 (x 0.01) of "
+            "215B:3 (Temperature high 0.01 C channel 3)");
+  EXPECT_EQ(Refusal(head + "[temperature 3]\nsource = can\ntimeout_ms = 50\n"),
+            "m.ini:6: [temperature 3] timeout_ms = 50: below the lowest value 100 of 2159:3 "
+            "(Temperature timeout ms channel 3)");
+  EXPECT_EQ(Refusal(head + "[temperature 3]\nsource = can\nmax_rate = 1\n")
+                .rfind("m.ini:6: unknown key 'max_rate' in [temperature 3]", 0),
+            0u);
+  EXPECT_EQ(Refusal(head + "[temperature 9]\nsource = can\n"),
+            "m.ini:4: [temperature 9] is not a channel: N must be 1..8 (the sub-index of "
+            "2158-215D)");
+  EXPECT_EQ(Refusal(head + "[temperature 2]\ntimeout_ms = 5000\n"),
+            "m.ini:4: [temperature 2] gives no source (none | can | ntc | pt1000 | linux_file | "
+            "simulated)");
+  // The firmware's rule (0x1010 would refuse it), at the section's line.
+  EXPECT_EQ(Refusal(head + "[temperature 2]\nsource = ntc\nlow_C = 30\nhigh_C = 30\n"),
+            "m.ini:4: [temperature 2]: low_C 30.00 is not below high_C 30.00 (rule 18)");
 }
 
 // Steps per mm (per degree), as datasheets and controllers give the resolution: stored exactly as
@@ -252,12 +334,18 @@ TEST(BoardIni, TheWrittenFileReadsBackAsItself) {
 // once or an [axis NAME] key on every axis, and no two rows of a section share one (the axis
 // names are the one exception: they make up `axes`, with the axis count).
 TEST(SettingsIni, EveryRowHasOneKeyInItsSection) {
-  std::set<std::string> board, axis;
+  std::set<std::string> board, axis, channel;
   for (const SettingKey& k : SettingKeys()) {
-    EXPECT_TRUE((k.per_axis ? axis : board).insert(k.key).second) << k.key << " twice";
+    EXPECT_FALSE(k.per_axis && k.per_channel) << k.key;
+    EXPECT_TRUE((k.per_axis      ? axis
+                 : k.per_channel ? channel
+                                 : board)
+                    .insert(k.key)
+                    .second)
+        << k.key << " twice";
     EXPECT_NE(std::string(k.unit), "") << k.key;
   }
-  size_t axis_elements = 0;
+  size_t axis_elements = 0, channel_elements = 0;
   for (const SettingObject& o : SettingObjects()) {
     const SettingKey* k = SettingKeyOf(o.id);
     ASSERT_NE(k, nullptr) << canopen::Entry(o.id).name;
@@ -267,12 +355,20 @@ TEST(SettingsIni, EveryRowHasOneKeyInItsSection) {
       // The key names the array; the element's sub-index is its axis.
       EXPECT_EQ(canopen::Entry(o.id).sub, o.axis + 1);
       EXPECT_EQ(canopen::Entry(k->id).index, canopen::Entry(o.id).index);
+    } else if (k->per_channel) {
+      ++channel_elements;
+      // The key names the array; the element's sub-index is its [temperature N].
+      EXPECT_EQ(canopen::Entry(o.id).sub, o.channel + 1);
+      EXPECT_EQ(canopen::Entry(k->id).index, canopen::Entry(o.id).index);
     } else if (o.axis == canopen::kBoardSetting) {
       EXPECT_EQ(k->id, o.id) << k->key;
     }
   }
   EXPECT_EQ(axis_elements, axis.size() * table::kMaxAxes);
-  EXPECT_EQ(SettingKeys().size(), board.size() + axis.size());
+  EXPECT_EQ(channel_elements, channel.size() * thermal::kMaxChannels);
+  EXPECT_EQ(channel, (std::set<std::string>{"source", "timeout_ms", "low_C", "high_C",
+                                            "max_rate_K_s", "stuck_readings"}));
+  EXPECT_EQ(SettingKeys().size(), board.size() + axis.size() + channel.size());
   EXPECT_EQ(std::string(SettingKeyOf(canopen::ObjectId::kAxisName4)->key), "axes");
   EXPECT_EQ(SettingKeyOf(canopen::ObjectId::kAxisCountConfig),
             SettingKeyOf(canopen::ObjectId::kAxisName1));

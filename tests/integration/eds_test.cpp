@@ -44,9 +44,19 @@ TEST(Eds, CheckedInFileMatchesTheObjectDictionary) {
             std::string::npos);
   EXPECT_NE(eds.find("AccessType=rw\nDefaultValue=$NODEID+0x180\nPDOMapping=0"), std::string::npos);
   EXPECT_NE(eds.find("NrOfTXPDO=2\n"), std::string::npos);
-  // The RPDO: its COB-ID follows the node-ID, its static mapping names the command word, the one
-  // rw object an RPDO carries.
-  EXPECT_NE(eds.find("NrOfRXPDO=1\n"), std::string::npos);
+  // The RPDOs: their COB-IDs follow the node-ID, their static mappings name the command word
+  // (RPDO1) and the temperatures (RPDO2: 0x2150:1-4, RPDO3: 0x2150:5-8), the rw objects an RPDO
+  // carries.
+  EXPECT_NE(eds.find("NrOfRXPDO=3\n"), std::string::npos);
+  EXPECT_NE(eds.find("[1401sub1]\nParameterName=COB-ID used by RPDO\nObjectType=0x7\n"
+                     "DataType=0x0007\nAccessType=rw\nDefaultValue=$NODEID+0x300\nPDOMapping=0"),
+            std::string::npos);
+  EXPECT_NE(eds.find("[1602sub4]\nParameterName=Application object 4\nObjectType=0x7\n"
+                     "DataType=0x0007\nAccessType=const\nDefaultValue=0x21500810\nPDOMapping=0"),
+            std::string::npos);
+  EXPECT_NE(eds.find("[2150sub8]\nParameterName=Temperature 0.01 C channel 8\nObjectType=0x7\n"
+                     "DataType=0x0003\nAccessType=rw\nDefaultValue=0\nPDOMapping=1"),
+            std::string::npos);
   EXPECT_NE(eds.find("[1400sub1]\nParameterName=COB-ID used by RPDO\nObjectType=0x7\n"
                      "DataType=0x0007\nAccessType=rw\nDefaultValue=$NODEID+0x200\nPDOMapping=0"),
             std::string::npos);

@@ -24,6 +24,7 @@ JsonValue ObjectData(const canopen::SettingObject& o,
   x.Set("name", e.name);
   x.Set("key", KeyName(e));
   x.Set("axis", AxisOf(e, board));
+  if (const uint8_t ch = ChannelOf(e); ch != 0) x.Set("channel", unsigned{ch});
   x.Set("value", o.get(board));
   x.Set("text", ValueText(e, o.get(board)));
   x.Set("in_force", o.get(in_force));
@@ -46,7 +47,14 @@ JsonValue ShowData(uint8_t node,
   for (const canopen::SettingObject& o : canopen::SettingObjects()) {
     const std::string axis = AxisOf(canopen::Entry(o.id), c.settings);
     const bool unused_axis = !axis.empty() && std::isdigit(static_cast<unsigned char>(axis[0]));
-    if (all || !unused_axis) objects.Push(ObjectData(o, c.settings, in_force, factory));
+    // A channel unused in the edited copy and in force (its source none in both).
+    const uint8_t ch = ChannelOf(canopen::Entry(o.id));
+    const bool unused_channel =
+        ch != 0 && c.settings.temperature[ch - 1].source == thermal::ChannelSource::kNone &&
+        in_force.temperature[ch - 1].source == thermal::ChannelSource::kNone;
+    if (all || (!unused_axis && !unused_channel)) {
+      objects.Push(ObjectData(o, c.settings, in_force, factory));
+    }
   }
   d.Set("axis_count", unsigned{c.settings.board.axis_count});
   d.Set("all_axes", all);
@@ -68,17 +76,23 @@ void ShowText(const JsonValue& d, std::ostream& out) {
     const int64_t value = x.get("value")->integer;
     const bool changed = value != x.get("factory")->integer;
     const bool not_in_force = value != x.get("in_force")->integer;
+    const JsonValue* ch = x.get("channel");
+    const std::string where =
+        ch != nullptr ? "T" + std::to_string(ch->integer) : x.get("axis")->string;
     std::snprintf(line, sizeof line, "%-7s %-4s %-19s %-11s %-11s %-11s %s%s%s\n",
-                  x.get("object")->string.c_str(), x.get("axis")->string.c_str(),
-                  x.get("key")->string.c_str(), x.get("text")->string.c_str(),
-                  x.get("in_force_text")->string.c_str(), x.get("factory_text")->string.c_str(),
-                  changed ? "* " : "", not_in_force ? "! " : "", x.get("unit")->string.c_str());
+                  x.get("object")->string.c_str(), where.c_str(), x.get("key")->string.c_str(),
+                  x.get("text")->string.c_str(), x.get("in_force_text")->string.c_str(),
+                  x.get("factory_text")->string.c_str(), changed ? "* " : "",
+                  not_in_force ? "! " : "", x.get("unit")->string.c_str());
     out << line;
   }
   const int64_t axes = d.get("axis_count")->integer;
   if (!d.get("all_axes")->boolean && axes < table::kMaxAxes) {
     out << "(axes " << axes + 1 << ".." << unsigned{table::kMaxAxes}
         << " are not used: --all shows their objects)\n";
+  }
+  if (!d.get("all_axes")->boolean) {
+    out << "(temperature channels without a source are not shown: --all shows their objects)\n";
   }
   for (const JsonValue& x : d.get("switch_accel_bounds")->array) {
     out << "in force, " << SwitchAccelBoundText(x) << "\n";
@@ -105,7 +119,8 @@ const Command& ConfigShowCommand() {
       "",
       Join({CanOptions(),
             {{"--all", nullptr, nullptr, nullptr, nullptr,
-              "also the objects of the axes beyond the axis count"},
+              "also the objects of the axes beyond the axis count and of the temperature channels "
+              "without a source"},
              {"--json", nullptr, nullptr, nullptr, nullptr, "machine-readable output"}}}),
       RunConfigShow,
       "The values are the board's edited copy (what a store saves) beside the configuration in\n"

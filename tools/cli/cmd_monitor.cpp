@@ -1,5 +1,6 @@
 // `volcomp monitor`: follows a board, one line every interval (text, CSV rows in machine units, or
-// JSON lines with the axes as in `status --json`), heartbeat changes and EMCYs as they come. The
+// JSON lines with the axes and the thermal correction as in `status --json`; CSV and JSON carry
+// the temperature channels configured at the start), heartbeat changes and EMCYs as they come. The
 // lines stream on Context::out (heartbeat and EMCY lines on Context::err with --csv and --json);
 // the command reports nothing else.
 #include <algorithm>
@@ -11,6 +12,7 @@
 #include "can_options.hpp"
 #include "commands.hpp"
 #include "sdo_failure.hpp"
+#include "volcomp/thermal/temperature_channels.hpp"
 #include "volcomp/tools/json_value.hpp"
 
 namespace volcomp::cli {
@@ -42,7 +44,21 @@ Expected<MonitorRequest> ParseMonitor(Args& args) {
   return req;
 }
 
-void CsvHeader(const std::vector<AxisInfo>& axes, std::ostream& out) {
+// The temperature channels in use when the monitor starts (0x2151 not unused; none on firmware
+// without the thermal objects), 0-based: each gets its columns for the whole run.
+std::vector<uint32_t> ConfiguredChannels(const Snapshot& n) {
+  std::vector<uint32_t> out;
+  for (uint32_t ch = 0; n.thermal && ch < thermal::kMaxChannels; ++ch) {
+    if (n.thermal->state[ch] != static_cast<uint32_t>(thermal::ChannelState::kUnused)) {
+      out.push_back(ch);
+    }
+  }
+  return out;
+}
+
+void CsvHeader(const std::vector<AxisInfo>& axes,
+               const std::vector<uint32_t>& channels,
+               std::ostream& out) {
   out << "time_s,state";
   for (const AxisInfo& x : axes) {
     const std::string n(1, x.name);
@@ -51,11 +67,17 @@ void CsvHeader(const std::vector<AxisInfo>& axes, std::ostream& out) {
         << "_correction_steps," << n << "_at_max_correction," << n << "_clamped," << n
         << "_rate_limited";
   }
+  for (uint32_t ch : channels) out << ",T" << ch + 1 << "_C,T" << ch + 1 << "_state";
   out << ",output_overruns,refused_actions,sdo_aborts\n" << std::flush;
 }
 
 // One row per interval in machine units; the state flags joined with '+'.
-void CsvRow(double t, const Snapshot& n, const std::vector<AxisInfo>& axes, std::ostream& out) {
+// A channel's cells: its temperature (C, held through a fault) and state (0x2150, 0x2151).
+void CsvRow(double t,
+            const Snapshot& n,
+            const std::vector<AxisInfo>& axes,
+            const std::vector<uint32_t>& channels,
+            std::ostream& out) {
   std::string state = StateText(n.state);
   std::replace(state.begin(), state.end(), ',', '+');
   char cell[128];
@@ -75,6 +97,16 @@ void CsvRow(double t, const Snapshot& n, const std::vector<AxisInfo>& axes, std:
                   (n.limit_flags[a] & canopen::kLimitRateLimited) != 0 ? 1 : 0);
     out << cell;
   }
+  for (uint32_t ch : channels) {
+    if (!n.thermal) {
+      out << ",,";
+      continue;
+    }
+    std::snprintf(
+        cell, sizeof cell, ",%.2f,%s", n.thermal->temperature_cC[ch] / 100.0,
+        thermal::ChannelStateName(static_cast<thermal::ChannelState>(n.thermal->state[ch])));
+    out << cell;
+  }
   out << "," << n.counters[kOutputOverrunCounter] << "," << n.counters[kRefusedActionCounter] << ","
       << n.counters[kSdoAbortCounter] << "\n";
 }
@@ -87,6 +119,7 @@ void JsonLine(double t, const Snapshot& n, const std::vector<AxisInfo>& axes, st
   line.Set("device_state_flags", StateText(n.state));
   JsonValue& list = line["axes"] = JsonValue::Array();
   for (uint32_t a = 0; a < axes.size(); ++a) list.Push(AxisData(n, axes[a], a, referenced));
+  if (n.thermal) line.Set("thermal", ThermalData(*n.thermal, axes));
   line.Set("counters", CountersData(n));
   tools::WriteJson(line, out, /*compact=*/true);
 }
@@ -140,7 +173,12 @@ Expected<Output> RunMonitor(Args& args, Context& ctx) {
       const uint32_t count,
       ReadNumber(s, ObjectId::kAxisCountConfig, canopen::Entry(ObjectId::kAxisCountConfig).name));
   VOLCOMP_TRY_ASSIGN(const std::vector<AxisInfo> axes, ReadAxes(s, count));
-  if (req.format == Format::kCsv) CsvHeader(axes, ctx.out);
+  std::vector<uint32_t> channels;
+  if (req.format == Format::kCsv) {
+    VOLCOMP_TRY_ASSIGN(const Snapshot first, TakeSnapshot(s));
+    channels = ConfiguredChannels(first);
+    CsvHeader(axes, channels, ctx.out);
+  }
   const auto deadline = start + std::chrono::duration_cast<Clock::duration>(
                                     std::chrono::duration<double>(req.duration_s));
   std::optional<uint8_t> last_nmt;
@@ -157,7 +195,7 @@ Expected<Output> RunMonitor(Args& args, Context& ctx) {
     const double t = std::chrono::duration<double>(Clock::now() - start).count();
     switch (req.format) {
       case Format::kCsv:
-        CsvRow(t, n, axes, ctx.out);
+        CsvRow(t, n, axes, channels, ctx.out);
         break;
       case Format::kJson:
         JsonLine(t, n, axes, ctx.out);
@@ -181,10 +219,11 @@ const Command& MonitorCommand() {
              {"--duration", nullptr, "S", "s", "0", "stop after S seconds (0 = until stopped)"},
              {"--csv", nullptr, nullptr, nullptr, nullptr,
               "CSV for logging: a header, then one row per interval in machine units (mm, µm; "
-              "deg, arcsec on rotary axes); heartbeat and EMCY lines on stderr"},
+              "deg, arcsec on rotary axes), with Tn_C and Tn_state for each temperature channel "
+              "in use at the start; heartbeat and EMCY lines on stderr"},
              {"--json", nullptr, nullptr, nullptr, nullptr,
-              "one JSON object per interval and line (the axes as in `status --json`); "
-              "heartbeat and EMCY lines on stderr"}}}),
+              "one JSON object per interval and line (the axes and the thermal correction as in "
+              "`status --json`); heartbeat and EMCY lines on stderr"}}}),
       RunMonitor};
   return kCommand;
 }

@@ -20,6 +20,11 @@ std::string AxisOf(const canopen::ObjectEntry& e, const BoardSettings& s) {
   return a < s.board.axis_count ? std::string(1, s.board.axis[a].name) : std::to_string(e.sub);
 }
 
+uint8_t ChannelOf(const canopen::ObjectEntry& e) {
+  const SettingKey* k = hosted::SettingKeyOf(e.id);
+  return k != nullptr && k->per_channel ? e.sub : 0;
+}
+
 std::string KeyName(const canopen::ObjectEntry& e) {
   if (e.id == ObjectId::kAxisCountConfig) return "axes (count)";
   const SettingKey* k = hosted::SettingKeyOf(e.id);

@@ -11,8 +11,10 @@
 namespace volcomp::cli {
 
 /// The axis a configuration object belongs to ("X", or its number "4" beyond the axis count), ""
-/// for board objects.
+/// for board objects and the temperature channels' objects.
 std::string AxisOf(const canopen::ObjectEntry& e, const BoardSettings& s);
+/// The temperature channel (1..8) of a channel object (0x2158-0x215D), 0 for the others.
+uint8_t ChannelOf(const canopen::ObjectEntry& e);
 /// Its key in the configuration file ("max_correction", "axes (name)", "axes (count)").
 std::string KeyName(const canopen::ObjectEntry& e);
 /// Its value as the file writes it ("linear", "0.001", "-5000").

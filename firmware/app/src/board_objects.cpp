@@ -58,6 +58,8 @@ constexpr uint32_t Raw(T v) {
   VOLCOMP_OD_AXIS_VALUE(source, 2) VOLCOMP_OD_AXIS_VALUE(source, 3)                             \
   VOLCOMP_OD_AXIS_VALUE(source, 4) VOLCOMP_OD_AXIS_VALUE(source, 5)
 #define VOLCOMP_OD_CHANNEL_VALUE(source, ch) [](const BoardObjects& o) { return Raw(o.source(ch)); },
+#define VOLCOMP_OD_CHANNEL_COMMANDS(id, index, type, def, source, name)                         \
+  VOLCOMP_OD_CHANNEL_ARRAY(id, index, type, kRw, def, source, name)
 #define VOLCOMP_OD_CHANNEL_ARRAY(id, index, type, access, def, source, name)                    \
   nullptr, VOLCOMP_OD_CHANNEL_VALUE(source, 0) VOLCOMP_OD_CHANNEL_VALUE(source, 1)             \
   VOLCOMP_OD_CHANNEL_VALUE(source, 2) VOLCOMP_OD_CHANNEL_VALUE(source, 3)                       \
@@ -74,6 +76,7 @@ constexpr ValueRead kValues[] = {
 #undef VOLCOMP_OD_AXIS_ARRAY
 #undef VOLCOMP_OD_CHANNEL_VALUE
 #undef VOLCOMP_OD_CHANNEL_ARRAY
+#undef VOLCOMP_OD_CHANNEL_COMMANDS
 // clang-format on
 static_assert(sizeof(kValues) / sizeof(kValues[0]) == static_cast<size_t>(ObjectId::kCount),
               "one value reader per ObjectId");
@@ -93,7 +96,7 @@ BoardSettings BoardObjects::WithCommunication(BoardSettings s) const {
   s.heartbeat_ms = comm.heartbeat_ms;
   s.emcy_inhibit_100us = comm.emcy_inhibit_100us;
   for (uint8_t n = 0; n < kTpdoCount; ++n) s.tpdo[n] = comm.tpdo[n];
-  s.rpdo = comm.rpdo;
+  for (uint8_t n = 0; n < kRpdoCount; ++n) s.rpdo[n] = comm.rpdo[n];
   return s;
 }
 
@@ -106,7 +109,7 @@ void BoardObjects::UpdateSettingsPending() {
   edited.heartbeat_ms = in_force.heartbeat_ms;
   edited.emcy_inhibit_100us = in_force.emcy_inhibit_100us;
   for (uint8_t n = 0; n < kTpdoCount; ++n) edited.tpdo[n] = in_force.tpdo[n];
-  edited.rpdo = in_force.rpdo;
+  for (uint8_t n = 0; n < kRpdoCount; ++n) edited.rpdo[n] = in_force.rpdo[n];
   uint8_t a_bytes[kSettingsBytes], p_bytes[kSettingsBytes];
   SerializeSettings(in_force, a_bytes);
   SerializeSettings(edited, p_bytes);
@@ -168,8 +171,12 @@ int32_t RoundToInt32(float v) {
 
 SdoAbort BoardObjects::WriteTemperature(uint8_t ch, uint32_t raw) {
   BoardThermal& t = *parts_.thermal;
-  if (t.channels().config(ch).source != thermal::ChannelSource::kCanObject)
-    return Refuse(SdoAbort::kReadOnly);  // another source feeds the channel, or none
+  if (t.channels().config(ch).source != thermal::ChannelSource::kCanObject) {
+    // Another source feeds the channel, or none: a reading is refused; "no reading" (0x8000, what
+    // an RPDO carries for a channel its sender does not feed) is nothing to deliver.
+    if (static_cast<int16_t>(raw & 0xFFFFu) == thermal::kNoReading_cC) return SdoAbort::kNone;
+    return Refuse(SdoAbort::kReadOnly);
+  }
   return t.Reading(ch, static_cast<int16_t>(raw & 0xFFFFu), parts_.policy->now_ms()).ok()
              ? SdoAbort::kNone
              : SdoAbort::kGeneral;

@@ -64,14 +64,14 @@ void GatewayApp::SyncGatewayWithSettings() {
 gateway::Route GatewayApp::OnControllerFrame(const CanFrame& frame) {
   CanFrame out = frame;
   gateway::Route route = gateway::Route::kForward;
-  if (!frame.extended && frame.id == app_.node().rpdo_cob_id()) {
-    route = gateway::Route::kLocal;  // the board's own RPDO (bit 31 set never matches)
+  if (app_.node().IsRpdo(frame)) {
+    route = gateway::Route::kLocal;  // the board's own RPDOs (bit 31 set never matches)
   } else if (gateway_ok_) {
     route = gateway_.FromController(frame, &out);
   } else if (!frame.extended && frame.id == 0x600u + app_.settings().node_id) {
     route = gateway::Route::kLocal;
   }
-  // The node needs NMT commands, its own SDO requests and its RPDO; nothing else reaches it.
+  // The node needs NMT commands, its own SDO requests and its RPDOs; nothing else reaches it.
   if (!frame.extended && !frame.rtr && (frame.id == 0 || route == gateway::Route::kLocal)) {
     if (!node_port_.Push(frame)) ++counters_.node_overruns;
   }

@@ -159,11 +159,10 @@ void Node::OnFrame(const CanFrame& f, uint32_t now_ms) {
     sdo_.OnFrame(f, now_ms);
     return;
   }
-  // RPDO1: only in operational, while it exists; a remote request for it is not served.
-  const uint32_t rpdo = RpdoCobId();
-  if (state_ == NmtState::kOperational && (rpdo & kPdoCobIdInvalid) == 0 && f.id == rpdo &&
-      !f.rtr) {
-    OnRpdo(f);
+  // The RPDOs: only in operational, while they exist; a remote request for one is not served.
+  if (state_ == NmtState::kOperational && !f.rtr) {
+    const uint8_t n = RpdoOf(f);
+    if (n < kRpdoCount) OnRpdo(n, f);
   }
 }
 
@@ -257,8 +256,15 @@ uint32_t Node::TpdoCobId(uint8_t n) const {
   return ResolvedCobId(comm_.tpdo[n].cob_id, TpdoCobBase(n), node_id_);
 }
 
-uint32_t Node::RpdoCobId() const {
-  return ResolvedCobId(comm_.rpdo.cob_id, kRpdoCobBase, node_id_);
+uint32_t Node::RpdoCobId(uint8_t n) const {
+  return ResolvedCobId(comm_.rpdo[n].cob_id, RpdoCobBase(n), node_id_);
+}
+
+uint8_t Node::RpdoOf(const CanFrame& f) const {
+  if (f.extended) return kRpdoCount;
+  uint8_t n = 0;
+  while (n < kRpdoCount && RpdoCobId(n) != f.id) ++n;  // bit 31 set never matches an 11-bit ID
+  return n;
 }
 
 void Node::ConfigureTpdo(uint8_t n) {
@@ -326,13 +332,14 @@ bool Node::WriteTpdo(const ObjectEntry& e, uint32_t v, SdoAbort* result) {
 }
 
 bool Node::WriteRpdo(const ObjectEntry& e, uint32_t v, SdoAbort* result) {
-  if (e.index != 0x1400) return false;
-  ::volcomp::PdoSettings& p = comm_.rpdo;
+  if (e.index < 0x1400 || e.index >= 0x1400 + kRpdoCount) return false;
+  const uint8_t n = static_cast<uint8_t>(e.index & 0xFFu);
+  ::volcomp::PdoSettings& p = comm_.rpdo[n];
   const bool valid = (p.cob_id & kPdoCobIdInvalid) == 0;
   *result = SdoAbort::kNone;
   if (e.sub == 1) {
     uint32_t stored = 0;
-    if (!AcceptCobId(v, RpdoCobId(), kRpdoCobBase, node_id_, &stored)) {
+    if (!AcceptCobId(v, RpdoCobId(n), RpdoCobBase(n), node_id_, &stored)) {
       *result = SdoAbort::kInvalidValue;
     } else {
       p.cob_id = stored;
@@ -349,25 +356,35 @@ bool Node::WriteRpdo(const ObjectEntry& e, uint32_t v, SdoAbort* result) {
   return true;
 }
 
-void Node::OnRpdo(const CanFrame& f) {
-  // The static mapping (DefaultRpdo): the command word, 2 bytes. CiA 301: a frame of another
-  // length is not processed (EMCY 0x8210 shorter, 0x8220 longer; byte 3 = its DLC).
-  constexpr uint8_t kMappedBytes = 2;
-  if (f.dlc != kMappedBytes) {
+void Node::OnRpdo(uint8_t n, const CanFrame& f) {
+  // The static mappings (DefaultRpdo): RPDO1 the command word (2 bytes), RPDO2 / RPDO3 four
+  // temperatures (I16 each, 8 bytes). CiA 301: a frame of another length is not processed (EMCY
+  // 0x8210 shorter, 0x8220 longer; byte 3 = its DLC).
+  const uint8_t mapped_bytes = n == 0 ? 2 : 2 * ::volcomp::kRpdoTemperatureChannels;
+  if (f.dlc != mapped_bytes) {
     ++rpdo_length_errors_;
-    ReportEvent(f.dlc < kMappedBytes ? kEmcyPdoLength : kEmcyPdoLengthExceeded, kErrCommunication,
+    ReportEvent(f.dlc < mapped_bytes ? kEmcyPdoLength : kEmcyPdoLengthExceeded, kErrCommunication,
                 f.dlc);
     return;
   }
   ++rpdo_received_;
-  // The application checks and reports a refusal (EMCY) as it does for an SDO write of the same
-  // object; there is no one to answer.
-  (void)app_->Write(Entry(ObjectId::kCommandWord), f.data, kMappedBytes);
+  // The application checks and reports a refusal (EMCY) of each object as it does for an SDO
+  // write of it; there is no one to answer.
+  if (n == 0) {
+    (void)app_->Write(Entry(ObjectId::kCommandWord), f.data, 2);
+    return;
+  }
+  const uint32_t first = static_cast<uint32_t>(ObjectId::kTemperature1) +
+                         (n - 1u) * ::volcomp::kRpdoTemperatureChannels;
+  for (uint32_t k = 0; k < ::volcomp::kRpdoTemperatureChannels; ++k) {
+    (void)app_->Write(Entry(static_cast<ObjectId>(first + k)), f.data + 2 * k, 2);
+  }
 }
 
 bool Node::ReadCommunication(const ObjectEntry& e, uint32_t* value) const {
-  if (e.index == 0x1400 && (e.sub == 1 || e.sub == 2)) {
-    *value = e.sub == 1 ? RpdoCobId() : comm_.rpdo.transmission_type;
+  if (e.index >= 0x1400 && e.index < 0x1400 + kRpdoCount && (e.sub == 1 || e.sub == 2)) {
+    const uint8_t n = static_cast<uint8_t>(e.index & 0xFFu);
+    *value = e.sub == 1 ? RpdoCobId(n) : comm_.rpdo[n].transmission_type;
     return true;
   }
   if (e.index >= 0x1800 && e.index < 0x1800 + kTpdoCount && e.sub != 0) {

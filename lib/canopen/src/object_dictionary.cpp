@@ -16,38 +16,37 @@
 namespace volcomp::canopen {
 
 const ObjectEntry kObjectEntries[] = {
+// Fields in ObjectEntry's order: default, low, high, name, id, index, type, sub, access, limited,
+// pdo_mappable.
 #define VOLCOMP_OD_LIMITS(low, high) (low, high, true)
 #define VOLCOMP_OD_NO_LIMITS (0, 0, false)
-#define VOLCOMP_OD_LIMIT_FIELDS(low, high, limited) low, high, limited
+#define VOLCOMP_OD_LIMIT_LOW(low, high, limited) low
+#define VOLCOMP_OD_LIMIT_HIGH(low, high, limited) high
+#define VOLCOMP_OD_LIMIT_FLAG(low, high, limited) limited
+#define VOLCOMP_OD_ROW(id, index, sub, type, access, def, name, low, high, limited, mappable) \
+  {def,                                                                                       \
+   low,                                                                                       \
+   high,                                                                                      \
+   VOLCOMP_OD_NAME(name),                                                                     \
+   ObjectId::id,                                                                              \
+   index,                                                                                     \
+   DataType::type,                                                                            \
+   sub,                                                                                       \
+   Access::access,                                                                            \
+   limited,                                                                                   \
+   mappable},
 #define VOLCOMP_OD_OBJECT(index, kind, name)
-#define VOLCOMP_OD_ENTRY(id, index, sub, type, access, def, name)          \
-  {ObjectId::id,          index, sub, DataType::type, Access::access, def, \
-   VOLCOMP_OD_NAME(name), 0,     0,   false,          false},
+#define VOLCOMP_OD_ENTRY(id, index, sub, type, access, def, name) \
+  VOLCOMP_OD_ROW(id, index, sub, type, access, def, name, 0, 0, false, false)
 #define VOLCOMP_OD_VALUE(id, index, sub, type, access, def, source, name) \
-  {ObjectId::id,                                                          \
-   index,                                                                 \
-   sub,                                                                   \
-   DataType::type,                                                        \
-   Access::access,                                                        \
-   def,                                                                   \
-   VOLCOMP_OD_NAME(name),                                                 \
-   0,                                                                     \
-   0,                                                                     \
-   false,                                                                 \
-   Access::access == Access::kRo && FixedSize(DataType::type) != 0},
-#define VOLCOMP_OD_COMMAND(id, index, sub, type, def, source, name)     \
-  {ObjectId::id,          index, sub, DataType::type, Access::kRw, def, \
-   VOLCOMP_OD_NAME(name), 0,     0,   false,          true},
+  VOLCOMP_OD_ROW(id, index, sub, type, access, def, name, 0, 0, false,    \
+                 Access::access == Access::kRo && FixedSize(DataType::type) != 0)
+#define VOLCOMP_OD_COMMAND(id, index, sub, type, def, source, name) \
+  VOLCOMP_OD_ROW(id, index, sub, type, kRw, def, name, 0, 0, false, true)
 #define VOLCOMP_OD_SETTING(id, index, sub, type, limits, def, field, key, name) \
-  {ObjectId::id,                                                                \
-   index,                                                                       \
-   sub,                                                                         \
-   DataType::type,                                                              \
-   Access::kRw,                                                                 \
-   static_cast<int64_t>(def),                                                   \
-   VOLCOMP_OD_NAME(name),                                                       \
-   VOLCOMP_OD_LIMIT_FIELDS limits,                                              \
-   false},
+  VOLCOMP_OD_ROW(id, index, sub, type, kRw, static_cast<int64_t>(def), name,    \
+                 VOLCOMP_OD_LIMIT_LOW limits, VOLCOMP_OD_LIMIT_HIGH limits,     \
+                 VOLCOMP_OD_LIMIT_FLAG limits, false)
 #include "volcomp/canopen/od_entries.def"
 #undef VOLCOMP_OD_OBJECT
 #undef VOLCOMP_OD_ENTRY
@@ -56,7 +55,10 @@ const ObjectEntry kObjectEntries[] = {
 #undef VOLCOMP_OD_SETTING
 #undef VOLCOMP_OD_LIMITS
 #undef VOLCOMP_OD_NO_LIMITS
-#undef VOLCOMP_OD_LIMIT_FIELDS
+#undef VOLCOMP_OD_LIMIT_LOW
+#undef VOLCOMP_OD_LIMIT_HIGH
+#undef VOLCOMP_OD_LIMIT_FLAG
+#undef VOLCOMP_OD_ROW
 };
 const size_t kObjectEntryCount = sizeof(kObjectEntries) / sizeof(kObjectEntries[0]);
 

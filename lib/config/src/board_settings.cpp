@@ -11,8 +11,10 @@ constexpr uint32_t kMagic = 0x47464356;  // "VCFG"
 // reserved 32-bit slots (older records: the defaults); 5: the TPDO parameters after the version-4
 // record (kPdoRecordBytes each); 6: the RPDO's COB-ID and transmission type after them
 // (kRpdoRecordBytes); 7: the temperature channels after them (kChannelRecordBytes each; the
+// record grows to kSettingsBytesV7); 8: RPDO2 and RPDO3 after them (kRpdoRecordBytes each; the
 // record grows to kSettingsBytes).
-constexpr uint16_t kVersion = 7;
+constexpr uint16_t kVersion = 8;
+constexpr uint16_t kVersionWithoutRpdo23 = 7;
 constexpr uint16_t kVersionWithoutChannels = 6;
 constexpr uint16_t kVersionWithoutRpdo = 5;
 constexpr uint16_t kVersionWithoutPdo = 4;
@@ -24,7 +26,8 @@ static_assert(kVersionWithoutInhibit < kVersionWithoutHysteresis &&
                   kVersionWithoutSwitch < kVersionWithoutPdo &&
                   kVersionWithoutPdo < kVersionWithoutRpdo &&
                   kVersionWithoutRpdo < kVersionWithoutChannels &&
-                  kVersionWithoutChannels < kVersion,
+                  kVersionWithoutChannels < kVersionWithoutRpdo23 &&
+                  kVersionWithoutRpdo23 < kVersion,
               "versions in order: every one between the first and kVersion is read");
 
 class Writer {
@@ -66,6 +69,24 @@ class Reader {
  private:
   const uint8_t* p_;
 };
+
+// An RPDO's stored parameters (kRpdoRecordBytes): COB-ID, transmission type, 3 reserved.
+void WriteRpdo(Writer& w, const PdoSettings& p) {
+  w.U32(p.cob_id);
+  w.U8(p.transmission_type);
+  w.U8(0);
+  w.U16(0);
+}
+
+// What 0x1400+n accepts (node.cpp): an 11-bit CAN-ID, an event-driven type.
+bool ReadRpdo(Reader& r, PdoSettings* p) {
+  p->cob_id = r.U32();
+  p->transmission_type = r.U8();
+  r.U8();
+  r.U16();
+  return (p->cob_id & 0x3FFFF800u) == 0 &&
+         (p->transmission_type == 254 || p->transmission_type == 255);
+}
 }  // namespace
 
 Status ValidateSettings(const BoardSettings& s, ConfigFinding* finding, OutputStage stage) {
@@ -142,10 +163,7 @@ void SerializeSettings(const BoardSettings& s, uint8_t* out) {
     w.U16(0);
     for (uint32_t m : p.mapping) w.U32(m);
   }
-  w.U32(s.rpdo.cob_id);
-  w.U8(s.rpdo.transmission_type);
-  w.U8(0);
-  w.U16(0);
+  WriteRpdo(w, s.rpdo[0]);
   for (const thermal::ChannelConfig& c : s.temperature) {
     w.U8(static_cast<uint8_t>(c.source));
     w.U8(c.stuck_readings);
@@ -155,6 +173,7 @@ void SerializeSettings(const BoardSettings& s, uint8_t* out) {
     w.U16(c.max_rate_cC_s);
     w.U16(0);
   }
+  for (uint8_t n = 1; n < kRpdoCount; ++n) WriteRpdo(w, s.rpdo[n]);
 }
 
 Status DeserializeSettings(const uint8_t* in, uint32_t size, BoardSettings* out) {
@@ -164,6 +183,7 @@ Status DeserializeSettings(const uint8_t* in, uint32_t size, BoardSettings* out)
   const uint16_t version = r.U16();
   if (version < kVersionWithoutInhibit || version > kVersion) return Error::kConfigInvalid;
   const uint32_t bytes = version == kVersion                  ? kSettingsBytes
+                         : version == kVersionWithoutRpdo23   ? kSettingsBytesV7
                          : version == kVersionWithoutChannels ? kSettingsBytesV6
                          : version == kVersionWithoutRpdo     ? kSettingsBytesV5
                                                               : kSettingsBytesV4;
@@ -217,18 +237,10 @@ Status DeserializeSettings(const uint8_t* in, uint32_t size, BoardSettings* out)
       if (p.mapped > kPdoMaxMapped) return Error::kConfigInvalid;
     }
   }
-  if (version >= kVersionWithoutChannels) {
-    s.rpdo.cob_id = r.U32();
-    s.rpdo.transmission_type = r.U8();
-    // What 0x1400 accepts (node.cpp): an 11-bit CAN-ID, an event-driven type.
-    if ((s.rpdo.cob_id & 0x3FFFF800u) != 0 ||
-        (s.rpdo.transmission_type != 254 && s.rpdo.transmission_type != 255)) {
-      return Error::kConfigInvalid;
-    }
+  if (version >= kVersionWithoutChannels && !ReadRpdo(r, &s.rpdo[0])) {
+    return Error::kConfigInvalid;
   }
-  if (version == kVersion) {
-    r.U8();
-    r.U16();
+  if (version >= kVersionWithoutRpdo23) {
     for (thermal::ChannelConfig& c : s.temperature) {
       c.source = static_cast<thermal::ChannelSource>(r.U8());
       c.stuck_readings = r.U8();
@@ -237,6 +249,11 @@ Status DeserializeSettings(const uint8_t* in, uint32_t size, BoardSettings* out)
       c.high_cC = r.I16();
       c.max_rate_cC_s = r.U16();
       r.U16();
+    }
+  }
+  if (version == kVersion) {
+    for (uint8_t n = 1; n < kRpdoCount; ++n) {
+      if (!ReadRpdo(r, &s.rpdo[n])) return Error::kConfigInvalid;
     }
   }
   VOLCOMP_TRY(ValidateSettings(s));

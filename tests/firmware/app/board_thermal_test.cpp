@@ -1,5 +1,7 @@
-// The thermal correction on the board end to end (docs/thermal.md): temperature channels written
-// over CAN (0x2150), the active image's THERMAL model applied to the drive outputs, a channel that
+// The thermal correction on the board end to end (docs/thermal.md): the channels configured by
+// their objects (0x2158-0x215D: checked at the write and at the store, in force from the next
+// reset node), temperature channels written over CAN (0x2150 by SDO, RPDO2 / RPDO3), the active
+// image's THERMAL model applied to the drive outputs, a channel that
 // stops updating detected within 2 s (EMCY 0x4000, device-state bit, 0x2151-0x2153) with the
 // correction held, and its recovery. Expected positions come from the model's definition
 // (offset + slope x (p - p0), per K of each channel), not from the board's code.
@@ -22,6 +24,13 @@ using bench::InputLine;
 using bench::kNode;
 using bench::ObjectId;
 using bench::TableCommand;
+
+bool Contains(const std::vector<std::string>& frames, const std::string& frame) {
+  for (const std::string& f : frames) {
+    if (f == frame) return true;
+  }
+  return false;
+}
 
 // The model: X offset 2 um/K on channel 1 (T_ref 20 C); Y slope 50 um/(K m) on channel 2 (T_ref
 // 20 C, p0 0); calibrated 10..40 C; a fast slew (50 um/s) so the test settles in a second.
@@ -217,6 +226,144 @@ TEST_F(ThermalBench, DeactivationFadesTheThermalCorrectionOut) {
   EXPECT_EQ(step_io_.drive(0).position(), 0);
   EXPECT_EQ(static_cast<int32_t>(Read(ObjectId::kThermalOffset1)), 0);
   EXPECT_EQ(Read(ObjectId::kThermalStatus) & canopen::kThermalActive, 0u);
+}
+
+// The channels' configuration objects: each field range-checked at the write (as every setting:
+// 0x06090030 for a source that does not exist, 0x06090032 below a limit), the channel as a whole
+// at the store (0x1010 refuses an inconsistent set with 0x06090030; 0x2123 names the rule and the
+// channel before), in force from the next reset node (until then 0x2122 says settings pending and
+// the channel runs as it started).
+TEST_F(ThermalBench, TheChannelObjectsAreCheckedStoredAndTakenAtResetNode) {
+  Boot();
+  io_.SetInput(InputLine::kWriteEnable, true);
+  Step(100);
+  using canopen::SdoAbort;
+  using canopen_client::AbortOf;
+  EXPECT_EQ(Read(ObjectId::kChannelSource1), 0u);  // factory: unused, 1.5 s, -20..+90 C, 1 K/s
+  EXPECT_EQ(Read(ObjectId::kChannelTimeout1), 1500u);
+  EXPECT_EQ(static_cast<int16_t>(Read(ObjectId::kChannelLow1)), -2000);
+  EXPECT_EQ(Read(ObjectId::kChannelHigh1), 9000u);
+  EXPECT_EQ(Read(ObjectId::kChannelMaxRate1), 100u);
+  EXPECT_EQ(AbortOf(Write(ObjectId::kChannelSource1, 6)), SdoAbort::kInvalidValue);
+  EXPECT_EQ(AbortOf(Write(ObjectId::kChannelTimeout1, 99)), SdoAbort::kValueTooLow);
+  EXPECT_EQ(AbortOf(Write(ObjectId::kChannelTimeout1, 60001)), SdoAbort::kValueTooHigh);
+  EXPECT_EQ(AbortOf(Write(ObjectId::kChannelMaxRate1, 0)), SdoAbort::kValueTooLow);
+  ASSERT_TRUE(Write(ObjectId::kChannelSource1, 1).ok());  // the CAN object
+  ASSERT_TRUE(Write(ObjectId::kChannelTimeout1, 5000).ok());
+  ASSERT_TRUE(Write(ObjectId::kChannelLow1, static_cast<uint16_t>(-500)).ok());  // -5 C
+  EXPECT_EQ(Read(ObjectId::kChannelSource1), 1u);
+  EXPECT_EQ(static_cast<int16_t>(Read(ObjectId::kChannelLow1)), -500);
+  EXPECT_TRUE(canopen::DecodeDeviceState(Read(ObjectId::kDeviceState)).settings_pending);
+  EXPECT_EQ(Read(ObjectId::kTemperatureState1), 0u);  // not in force: still unused
+  EXPECT_EQ(AbortOf(Write(ObjectId::kTemperature1, 2500)), SdoAbort::kReadOnly);
+
+  // Channel 2: each field in range, low above high together: the store refuses the set.
+  ASSERT_TRUE(Write(ObjectId::kChannelSource2, 2).ok());  // NTC
+  ASSERT_TRUE(Write(ObjectId::kChannelLow2, 5000).ok());
+  ASSERT_TRUE(Write(ObjectId::kChannelHigh2, 4000).ok());
+  const canopen::SettingsCheck check = canopen::DecodeSettingsCheck(Read(ObjectId::kSettingsCheck));
+  EXPECT_EQ(check.finding.rule, ConfigRule::kTemperatureChannel);
+  EXPECT_EQ(check.finding.axis, 2);  // the channel
+  EXPECT_EQ(AbortOf(Write(ObjectId::kStoreAll, canopen::kSaveSignature)), SdoAbort::kInvalidValue);
+  ASSERT_TRUE(Write(ObjectId::kChannelSource2, 0).ok());  // unused: its limits are not checked
+  EXPECT_EQ(canopen::DecodeSettingsCheck(Read(ObjectId::kSettingsCheck)).finding.rule,
+            ConfigRule::kNone);
+  ASSERT_TRUE(Write(ObjectId::kStoreAll, canopen::kSaveSignature).ok());
+  EXPECT_EQ(Read(ObjectId::kTemperatureState1), 0u);  // stored, not yet in force
+
+  EXPECT_TRUE(Contains(Nmt(0x81), "710#00"));  // reset node: the stored settings in force
+  EXPECT_FALSE(canopen::DecodeDeviceState(Read(ObjectId::kDeviceState)).settings_pending);
+  EXPECT_EQ(Read(ObjectId::kTemperatureState1), 1u);                              // waiting
+  ASSERT_TRUE(Write(ObjectId::kTemperature1, static_cast<uint16_t>(-400)).ok());  // -4 C
+  EXPECT_EQ(Read(ObjectId::kTemperatureState1), 2u);                              // valid
+  ASSERT_TRUE(Write(ObjectId::kTemperature1, static_cast<uint16_t>(-600)).ok());  // below -5 C
+  EXPECT_EQ(Read(ObjectId::kTemperatureState1), 4u);                              // out of range
+  EXPECT_EQ(static_cast<int16_t>(Read(ObjectId::kTemperature1)), -400);           // held
+  EXPECT_EQ(Read(ObjectId::kTemperatureState2), 0u);
+}
+
+// RPDO2 (0x300 + node-ID) carries channels 1-4, RPDO3 (0x400 + node-ID) channels 5-8, four I16
+// each (CiA 301 pre-defined connection set, valid from the factory, acted on in operational only).
+// Each temperature is a write of 0x2150:n with the SDO write's rules: taken for a channel fed by
+// the CAN object, refused (EMCY 0xFF10, bytes 3-6 0x06010002, counted in 0x2140:9) for a channel
+// with another source or none, except 0x8000 ("no reading"), which such a channel ignores: what a
+// sender puts in the slots of channels it does not feed.
+TEST_F(ThermalBench, Rpdo2And3CarryTheTemperatures) {
+  BoardSettings s;
+  s.board = config_;
+  s.temperature[0].source = thermal::ChannelSource::kCanObject;
+  s.temperature[1].source = thermal::ChannelSource::kCanObject;
+  s.temperature[2].source = thermal::ChannelSource::kBoardPt1000;  // channel 4 unused
+  s.temperature[5].source = thermal::ChannelSource::kCanObject;
+  Boot(s);
+  const auto frame = [](uint32_t id, std::initializer_list<int16_t> t, uint8_t dlc = 8) {
+    CanFrame f{id, false, false, dlc, {}};
+    int k = 0;
+    for (int16_t v : t) {
+      f.data[k++] = static_cast<uint8_t>(v);
+      f.data[k++] = static_cast<uint8_t>(static_cast<uint16_t>(v) >> 8);
+    }
+    return f;
+  };
+  const auto send = [this](const CanFrame& f) {
+    can_.Inject(f);
+    Step(1500);  // 30 ms: past the EMCY inhibit time
+    std::vector<canopen::Emcy> out;
+    for (const CanFrame& r : can_.TakeSent()) {
+      canopen::Emcy e;
+      if (canopen::DecodeEmcy(r, kNode, &e) && e.code != canopen::kEmcyErrorReset) out.push_back(e);
+    }
+    return out;
+  };
+  constexpr int16_t kNone = thermal::kNoReading_cC;
+  EXPECT_EQ(Read(ObjectId::kRpdo2CobId), 0x300u + kNode);
+  EXPECT_EQ(Read(ObjectId::kRpdo3CobId), 0x400u + kNode);
+  EXPECT_EQ(Read(ObjectId::kRpdo2Mapped), 4u);
+  EXPECT_EQ(Read(ObjectId::kRpdo2Mapping1), 0x21500110u);  // 0x2150:1, 16 bits
+  EXPECT_EQ(Read(ObjectId::kRpdo3Mapping4), 0x21500810u);  // 0x2150:8
+
+  // Pre-operational: not processed.
+  EXPECT_TRUE(send(frame(0x300 + kNode, {2345, -150, kNone, kNone})).empty());
+  EXPECT_EQ(Read(ObjectId::kTemperatureState1), 1u);  // waiting
+  Nmt(0x01);
+  const uint32_t refused = app_.objects().refused_actions();
+  EXPECT_TRUE(send(frame(0x300 + kNode, {2345, -150, kNone, kNone})).empty());
+  EXPECT_EQ(Read(ObjectId::kTemperature1), 2345u);
+  EXPECT_EQ(static_cast<int16_t>(Read(ObjectId::kTemperature2)), -150);
+  EXPECT_EQ(Read(ObjectId::kTemperatureState1), 2u);  // valid
+  EXPECT_EQ(Read(ObjectId::kTemperatureState2), 2u);
+  EXPECT_EQ(Read(ObjectId::kTemperatureState3), 1u);  // the PT1000's: untouched
+  EXPECT_EQ(app_.objects().refused_actions(), refused);
+  EXPECT_EQ(app_.node().rpdo_received(), 1u);
+
+  // A temperature for the unused channel 4: refused as its SDO write is; the others are taken.
+  std::vector<canopen::Emcy> e = send(frame(0x300 + kNode, {2350, -140, kNone, 2000}));
+  ASSERT_EQ(e.size(), 1u);
+  EXPECT_EQ(e[0].code, canopen::kEmcyRefused);
+  EXPECT_EQ(LoadLe32(e[0].data), 0x06010002u);
+  EXPECT_EQ(app_.objects().refused_actions(), refused + 1);
+  EXPECT_EQ(Read(ObjectId::kTemperature1), 2350u);
+  EXPECT_EQ(Read(ObjectId::kTemperatureState4), 0u);
+
+  // RPDO3: channel 6 is its second slot.
+  EXPECT_TRUE(send(frame(0x400 + kNode, {kNone, 3000, kNone, kNone})).empty());
+  EXPECT_EQ(Read(ObjectId::kTemperature6), 3000u);
+  EXPECT_EQ(Read(ObjectId::kTemperatureState6), 2u);
+
+  // The wrong length: not processed (CiA 301: EMCY 0x8210 shorter, byte 3 = the DLC).
+  e = send(frame(0x300 + kNode, {2400, -140, kNone}, 6));
+  ASSERT_EQ(e.size(), 1u);
+  EXPECT_EQ(e[0].code, canopen::kEmcyPdoLength);
+  EXPECT_EQ(e[0].data[0], 6);
+  EXPECT_EQ(Read(ObjectId::kTemperature1), 2350u);
+
+  // Disabled (bit 31, CiA 301): frames on its CAN-ID are not processed.
+  io_.SetInput(InputLine::kWriteEnable, true);
+  ASSERT_TRUE(Write(ObjectId::kRpdo2CobId, 0x80000000u | (0x300 + kNode)).ok());
+  const uint32_t received = app_.node().rpdo_received();
+  EXPECT_TRUE(send(frame(0x300 + kNode, {2500, -140, kNone, kNone})).empty());
+  EXPECT_EQ(app_.node().rpdo_received(), received);
+  EXPECT_EQ(Read(ObjectId::kTemperature1), 2350u);
 }
 
 }  // namespace

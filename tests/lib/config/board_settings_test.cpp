@@ -24,7 +24,7 @@ TEST(SettingsRecord, KeepsTheEmcyInhibitTimeAndReadsVersion1Records) {
   s.emcy_inhibit_100us = 37;
   uint8_t rec[kSettingsBytes];
   SerializeSettings(s, rec);
-  EXPECT_EQ(rec[4], 7);  // version, LE16 at 4
+  EXPECT_EQ(rec[4], 8);  // version, LE16 at 4
   EXPECT_EQ(rec[5], 0);
   EXPECT_EQ(rec[12], 0x23);  // heartbeat LE16 at 12
   EXPECT_EQ(rec[13], 0x01);
@@ -39,7 +39,7 @@ TEST(SettingsRecord, KeepsTheEmcyInhibitTimeAndReadsVersion1Records) {
   ASSERT_TRUE(DeserializeSettings(rec, sizeof rec, &back).ok());
   EXPECT_EQ(back.emcy_inhibit_100us, 100);  // the default, 10 ms
   EXPECT_EQ(back.heartbeat_ms, 0x0123);
-  rec[4] = 8;
+  rec[4] = 9;  // a version from the future
   EXPECT_FALSE(DeserializeSettings(rec, sizeof rec, &back).ok());
 }
 
@@ -245,7 +245,7 @@ TEST(SettingsRecord, KeepsTheTpdosAndReadsVersion4Records) {
   s.tpdo[1].mapping[7] = 0x0A0B0C0D;
   uint8_t rec[kSettingsBytes];
   SerializeSettings(s, rec);
-  EXPECT_EQ(rec[6] | rec[7] << 8, 608);
+  EXPECT_EQ(rec[6] | rec[7] << 8, 624);
   const size_t t1 = 416, t2 = 416 + 44;
   EXPECT_EQ(rec[t1 + 0], 0x80);  // TPDO1's default, stored form 0x180: base + node-ID
   EXPECT_EQ(rec[t1 + 1], 0x01);
@@ -291,8 +291,8 @@ TEST(SettingsRecord, KeepsTheTpdosAndReadsVersion4Records) {
   EXPECT_EQ(old.tpdo[1].mapped, 4);
   EXPECT_EQ(old.tpdo[1].mapping[0], 0x21380310u);  // 0x2138:3, I16
   EXPECT_EQ(old.tpdo[0].mapping[1], 0x21250008u);
-  // A version-7 record cut to the old length is not taken.
-  rec[4] = 7;
+  // A version-8 record cut to the old length is not taken.
+  rec[4] = 8;
   rec[6] = static_cast<uint8_t>(kSettingsBytes & 0xFF);
   rec[7] = static_cast<uint8_t>(kSettingsBytes >> 8);
   EXPECT_FALSE(DeserializeSettings(rec, kSettingsBytesV4, &old).ok());
@@ -305,13 +305,13 @@ TEST(SettingsRecord, KeepsTheTpdosAndReadsVersion4Records) {
 TEST(SettingsRecord, KeepsTheRpdoAndReadsVersion5Records) {
   EXPECT_EQ(kSettingsBytesV6, 504u + 8);
   const BoardSettings defaults;
-  EXPECT_EQ(defaults.rpdo.cob_id, 0x200u);  // stored form: 0x200 + node-ID
-  EXPECT_EQ(defaults.rpdo.transmission_type, 254);
-  ASSERT_EQ(defaults.rpdo.mapped, 1);
-  EXPECT_EQ(defaults.rpdo.mapping[0], 0x21270010u);  // 0x2127:0, U16
+  EXPECT_EQ(defaults.rpdo[0].cob_id, 0x200u);  // stored form: 0x200 + node-ID
+  EXPECT_EQ(defaults.rpdo[0].transmission_type, 254);
+  ASSERT_EQ(defaults.rpdo[0].mapped, 1);
+  EXPECT_EQ(defaults.rpdo[0].mapping[0], 0x21270010u);  // 0x2127:0, U16
   BoardSettings s;
-  s.rpdo.cob_id = 0x80000321u;
-  s.rpdo.transmission_type = 255;
+  s.rpdo[0].cob_id = 0x80000321u;
+  s.rpdo[0].transmission_type = 255;
   uint8_t rec[kSettingsBytes];
   SerializeSettings(s, rec);
   EXPECT_EQ(rec[504], 0x21);
@@ -320,9 +320,9 @@ TEST(SettingsRecord, KeepsTheRpdoAndReadsVersion5Records) {
   EXPECT_EQ(rec[508], 255);
   BoardSettings back;
   ASSERT_TRUE(DeserializeSettings(rec, sizeof rec, &back).ok());
-  EXPECT_EQ(back.rpdo.cob_id, 0x80000321u);
-  EXPECT_EQ(back.rpdo.transmission_type, 255);
-  EXPECT_EQ(back.rpdo.mapping[0], 0x21270010u);
+  EXPECT_EQ(back.rpdo[0].cob_id, 0x80000321u);
+  EXPECT_EQ(back.rpdo[0].transmission_type, 255);
+  EXPECT_EQ(back.rpdo[0].mapping[0], 0x21270010u);
   rec[508] = 1;  // synchronous: no SYNC consumer
   EXPECT_FALSE(DeserializeSettings(rec, sizeof rec, &back).ok());
   rec[508] = 254;
@@ -334,8 +334,8 @@ TEST(SettingsRecord, KeepsTheRpdoAndReadsVersion5Records) {
   rec[7] = static_cast<uint8_t>(kSettingsBytesV5 >> 8);
   BoardSettings old;
   ASSERT_TRUE(DeserializeSettings(rec, kSettingsBytesV5, &old).ok());
-  EXPECT_EQ(old.rpdo.cob_id, 0x200u);
-  EXPECT_EQ(old.rpdo.transmission_type, 254);
+  EXPECT_EQ(old.rpdo[0].cob_id, 0x200u);
+  EXPECT_EQ(old.rpdo[0].transmission_type, 254);
 }
 
 // Version 7 appends the 8 temperature channels to the version-6 record (512 bytes), 12 bytes
@@ -343,7 +343,7 @@ TEST(SettingsRecord, KeepsTheRpdoAndReadsVersion5Records) {
 // 0.01 K/s LE16, 2 reserved. A version-6 record still loads, every channel unused; a channel the
 // channel rules refuse is not a record this firmware wrote, and ValidateSettings names it.
 TEST(SettingsRecord, KeepsTheTemperatureChannelsAndReadsVersion6Records) {
-  EXPECT_EQ(kSettingsBytes, 512u + 8 * 12);
+  EXPECT_EQ(kSettingsBytesV7, 512u + 8 * 12);
   const BoardSettings defaults;
   for (const thermal::ChannelConfig& c : defaults.temperature)
     EXPECT_EQ(c.source, thermal::ChannelSource::kNone);
@@ -400,6 +400,53 @@ TEST(SettingsRecord, KeepsTheTemperatureChannelsAndReadsVersion6Records) {
   ASSERT_TRUE(DeserializeSettings(rec, kSettingsBytesV6, &old).ok());
   for (const thermal::ChannelConfig& c : old.temperature)
     EXPECT_EQ(c.source, thermal::ChannelSource::kNone);
+}
+
+// Version 8 appends RPDO2 and RPDO3 (0x1401, 0x1402: the temperatures) to the version-7 record
+// (608 bytes), 8 bytes each as RPDO1's: COB-ID LE32 (stored form), type U8, 3 reserved. Their
+// defaults are CiA 301's pre-defined connection set, 0x300 / 0x400 + node-ID, valid; a version-7
+// record still loads, with those defaults.
+TEST(SettingsRecord, KeepsRpdo2And3AndReadsVersion7Records) {
+  EXPECT_EQ(kSettingsBytes, 608u + 2 * 8);
+  const BoardSettings defaults;
+  EXPECT_EQ(defaults.rpdo[1].cob_id, 0x300u);
+  EXPECT_EQ(defaults.rpdo[2].cob_id, 0x400u);
+  ASSERT_EQ(defaults.rpdo[1].mapped, 4);
+  EXPECT_EQ(defaults.rpdo[1].mapping[0], 0x21500110u);  // 0x2150:1, I16
+  EXPECT_EQ(defaults.rpdo[1].mapping[3], 0x21500410u);  // 0x2150:4
+  ASSERT_EQ(defaults.rpdo[2].mapped, 4);
+  EXPECT_EQ(defaults.rpdo[2].mapping[0], 0x21500510u);  // 0x2150:5
+  EXPECT_EQ(defaults.rpdo[2].mapping[3], 0x21500810u);  // 0x2150:8
+  BoardSettings s;
+  s.rpdo[1].cob_id = 0x80000300u;  // disabled
+  s.rpdo[2].cob_id = 0x455u;
+  s.rpdo[2].transmission_type = 255;
+  uint8_t rec[kSettingsBytes];
+  SerializeSettings(s, rec);
+  EXPECT_EQ(rec[4], 8);
+  EXPECT_EQ(rec[6] | rec[7] << 8, 624);
+  EXPECT_EQ(rec[608], 0x00);
+  EXPECT_EQ(rec[609], 0x03);
+  EXPECT_EQ(rec[611], 0x80);
+  EXPECT_EQ(rec[612], 254);
+  EXPECT_EQ(rec[616], 0x55);
+  EXPECT_EQ(rec[617], 0x04);
+  EXPECT_EQ(rec[620], 255);
+  BoardSettings back;
+  ASSERT_TRUE(DeserializeSettings(rec, sizeof rec, &back).ok());
+  EXPECT_EQ(back.rpdo[1].cob_id, 0x80000300u);
+  EXPECT_EQ(back.rpdo[2].cob_id, 0x455u);
+  EXPECT_EQ(back.rpdo[2].transmission_type, 255);
+  rec[620] = 0;  // not event-driven: not a record this firmware wrote
+  EXPECT_FALSE(DeserializeSettings(rec, sizeof rec, &back).ok());
+  rec[4] = 7;
+  rec[6] = static_cast<uint8_t>(kSettingsBytesV7 & 0xFF);
+  rec[7] = static_cast<uint8_t>(kSettingsBytesV7 >> 8);
+  BoardSettings old;
+  ASSERT_TRUE(DeserializeSettings(rec, kSettingsBytesV7, &old).ok());
+  EXPECT_EQ(old.rpdo[1].cob_id, 0x300u);
+  EXPECT_EQ(old.rpdo[2].cob_id, 0x400u);
+  EXPECT_EQ(old.rpdo[2].transmission_type, 254);
 }
 
 }  // namespace

@@ -186,6 +186,45 @@ TEST(CanCommandsThermal, StatusShowsTheConfiguredChannels) {
       << text.out;
 }
 
+// `monitor --csv`: a temperature and a state column for each channel in use when it starts (here
+// channels 1 and 3), after the axes' columns, in every row.
+TEST(CanCommandsThermal, MonitorCsvHasTheConfiguredChannels) {
+  BoardSettings settings;
+  settings.temperature[0].source = thermal::ChannelSource::kCanObject;
+  settings.temperature[0].timeout_ms = 60000;
+  settings.temperature[2].source = thermal::ChannelSource::kCanObject;
+  settings.temperature[2].timeout_ms = 60000;
+  SimulatedNode node(settings);
+  const auto run = [&node](std::vector<std::string> words) {
+    words.insert(words.end(), {"--can", node.spec()});
+    return RunCli(words);
+  };
+  ASSERT_EQ(run({"sdo", "write", "2150:1", "-125"}).code, 0);
+  const CliResult r = run({"monitor", "--csv", "--interval-ms", "100", "--duration", "0.35"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  std::vector<std::string> lines;
+  for (size_t at = 0; at < r.out.size();) {
+    const size_t end = r.out.find('\n', at);
+    lines.push_back(r.out.substr(at, end - at));
+    at = end == std::string::npos ? r.out.size() : end + 1;
+  }
+  ASSERT_GE(lines.size(), 2u) << r.out;
+  EXPECT_TRUE(Contains(lines[0], "_rate_limited,T1_C,T1_state,T3_C,T3_state,output_overruns,"))
+      << lines[0];
+  for (size_t i = 1; i < lines.size(); ++i) {
+    EXPECT_TRUE(Contains(lines[i], ",-1.25,valid,0.00,waiting,")) << lines[i];
+  }
+}
+
+// Without a channel in use (the factory settings), no temperature columns.
+TEST_F(CanCommands, MonitorCsvWithoutChannelsHasNoTemperatureColumns) {
+  const CliResult r = Run({"monitor", "--csv", "--interval-ms", "100", "--duration", "0.15"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  const std::string header = r.out.substr(0, r.out.find('\n'));
+  EXPECT_TRUE(Contains(header, "Z_rate_limited,output_overruns,refused_actions,sdo_aborts"))
+      << header;
+}
+
 TEST_F(CanCommands, UploadThenVerifyVerdictsAndExitCodes) {
   const std::string a = TableFile("a", 3);
   CliResult r = Run({"verify", a});

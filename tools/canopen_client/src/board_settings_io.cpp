@@ -16,8 +16,12 @@ Expected<BoardSettings> ReadSettings(NodeObjects& node) {
   BoardSettings s;  // the factory settings
   for (const SettingObject& o : SettingObjects()) {
     const canopen::ObjectEntry& e = canopen::Entry(o.id);
+    SdoExpected<uint32_t> read = node.Read(o.id);
+    // Firmware from before the channels' objects (0x2158-0x215D): its channels are unused, as its
+    // settings in force (0x2124) say.
+    if (o.channel != canopen::kNoChannel && AbortOf(read) == canopen::SdoAbort::kNoObject) continue;
     VOLCOMP_TRY_ASSIGN(const uint32_t raw,
-                       Explained(node.Read(o.id), "reading " + ObjectAddress(e) + " " + e.name));
+                       Explained(std::move(read), "reading " + ObjectAddress(e) + " " + e.name));
     o.set(s, canopen::EntryValue(e, raw));
   }
   return s;
@@ -64,6 +68,9 @@ std::string DescribeDifference(const Difference& d, const BoardSettings& names) 
     text += axis < names.board.axis_count
                 ? std::string(" (axis ") + names.board.axis[axis].name + ")"
                 : " (axis " + std::to_string(e.sub) + ", not used)";
+  }
+  if (k->per_channel) {
+    text += " [" + hosted::ChannelSectionName(static_cast<uint8_t>(e.sub - 1)) + "]";
   }
   return text + " " + hosted::FormatSettingValue(*k, d.from) + " -> " +
          hosted::FormatSettingValue(*k, d.to);

@@ -117,7 +117,7 @@ void WriteEds(std::ostream& out, const EdsInfo& info) {
       << "\nRevisionNumber=" << Hex(static_cast<uint32_t>(revision->default_value), 8)
       << "\nOrderCode=\n";
   for (int rate : {10, 20, 50, 125, 250, 500, 800, 1000}) out << "BaudRate_" << rate << "=1\n";
-  // Granularity 8: the TPDO mappings are writable, whole bytes (CiA 306); the RPDO's is static.
+  // Granularity 8: the TPDO mappings are writable, whole bytes (CiA 306); the RPDOs' are static.
   out << "SimpleBootUpMaster=0\nSimpleBootUpSlave=1\nGranularity=8\n"
          "DynamicChannelsSupported=0\nGroupMessaging=0\nNrOfRXPDO="
       << static_cast<int>(::volcomp::kRpdoCount)

@@ -50,6 +50,7 @@ struct IniSection {
 
   /// "[axis X]", "[board]".
   std::string Title() const;
+  /// The entry of `key` (any case: keys are compared in lower case), or null.
   const IniEntry* Find(const std::string& key) const;
 };
 
@@ -86,8 +87,8 @@ struct IniKey {
   std::function<IniOutcome(const IniEntry&)> read;
 };
 
-/// Runs each entry of `section` (null: nothing to do) through its key's reader, in file order;
-/// an unknown key is refused with the known ones (in `keys` order).
+/// Runs each entry of `section` (null: nothing to do) through its key's reader (keys in any case),
+/// in file order; an unknown key is refused with the known ones (in `keys` order).
 IniOutcome ReadKeys(const IniDocument& doc,
                     const IniSection* section,
                     const std::vector<IniKey>& keys);

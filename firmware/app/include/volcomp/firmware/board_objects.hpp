@@ -34,7 +34,7 @@ inline canopen::CommunicationParameters CommunicationOf(const BoardSettings& s) 
   c.heartbeat_ms = s.heartbeat_ms;
   c.emcy_inhibit_100us = s.emcy_inhibit_100us;
   for (uint8_t n = 0; n < kTpdoCount; ++n) c.tpdo[n] = s.tpdo[n];
-  c.rpdo = s.rpdo;
+  for (uint8_t n = 0; n < kRpdoCount; ++n) c.rpdo[n] = s.rpdo[n];
   return c;
 }
 

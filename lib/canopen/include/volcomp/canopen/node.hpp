@@ -1,8 +1,9 @@
 // CiA 301 node over one CAN channel with the pre-defined connection set: NMT slave, heartbeat and
 // EMCY producers (inhibit time 0x1015 in 100 us units), error register and history, the SDO
 // server, the transmit PDOs (0x1800+n / 0x1A00+n, tpdo.hpp; sampled by Poll() in NMT
-// operational) and the receive PDO (0x1400 / 0x1600: its static mapping's command word written to
-// the application as an SDO write is, in NMT operational). The node answers the communication
+// operational) and the receive PDOs (0x1400+n / 0x1600+n: their static mappings' objects, the
+// command word or the temperatures, written to the application as an SDO write is, in NMT
+// operational). The node answers the communication
 // objects itself and passes every other object to the application's ObjectValues; frames out are
 // drained with PopTx(). Single-threaded (main loop). States, objects, EMCY queueing and frame
 // order: docs/canopen.md, "Node".
@@ -44,16 +45,19 @@ struct CommunicationParameters {
   /// 0x1800+n / 0x1A00+n, COB-IDs in stored form (board_settings.hpp PdoSettings: the bare
   /// pre-defined base 0x180 / 0x280 means base + node-ID).
   TpdoParameters tpdo[kTpdoCount] = {::volcomp::DefaultTpdo(0), ::volcomp::DefaultTpdo(1)};
-  /// 0x1400:1-2 (the same stored COB-ID form, base 0x200); the mapping is DefaultRpdo()'s.
-  ::volcomp::PdoSettings rpdo = ::volcomp::DefaultRpdo();
+  /// 0x1400+n:1-2 (the same stored COB-ID form, base RpdoCobBase(n)); the mappings are
+  /// DefaultRpdo(n)'s.
+  ::volcomp::PdoSettings rpdo[kRpdoCount] = {::volcomp::DefaultRpdo(0), ::volcomp::DefaultRpdo(1),
+                                             ::volcomp::DefaultRpdo(2)};
 };
 
 /// The pre-defined CAN-ID base of TPDO n (CiA 301: 0x180, 0x280, 0x380, 0x480 + node-ID).
 constexpr uint32_t TpdoCobBase(uint8_t n) { return 0x180u + 0x100u * n; }
-/// The pre-defined CAN-ID base of RPDO1 (CiA 301: 0x200 + node-ID).
-inline constexpr uint32_t kRpdoCobBase = 0x200;
+/// The pre-defined CAN-ID base of RPDO n (CiA 301: 0x200, 0x300, 0x400 + node-ID).
+constexpr uint32_t RpdoCobBase(uint8_t n) { return 0x200u + 0x100u * n; }
 
 inline constexpr uint8_t kEmcyQueueLength = 8;
+using ::volcomp::kRpdoCount;
 using ::volcomp::kTpdoCount;
 
 /// COB-IDs of the pre-defined connection set (EMCY and heartbeat: + node-ID; SDO:
@@ -125,11 +129,13 @@ class Node : private ObjectValues {
   uint32_t emcy_sent() const { return emcy_sent_; }
   uint32_t emcy_suppressed() const { return emcy_suppressed_; }
   uint32_t malformed() const { return malformed_ + sdo_.malformed(); }
-  /// RPDO frames written to the application (whatever it answered), and those not processed for
-  /// their length (EMCY 0x8210 / 0x8220).
+  /// RPDO frames (of every RPDO) written to the application (whatever it answered), and those not
+  /// processed for their length (EMCY 0x8210 / 0x8220).
   uint32_t rpdo_received() const { return rpdo_received_; }
-  /// The RPDO's COB-ID in force (0x1400:1 with the node-ID resolved; bit 31 set: no RPDO).
-  uint32_t rpdo_cob_id() const { return RpdoCobId(); }
+  /// RPDO n's COB-ID in force (0x1400+n:1 with the node-ID resolved; bit 31 set: no RPDO).
+  uint32_t rpdo_cob_id(uint8_t n = 0) const { return RpdoCobId(n); }
+  /// Whether `f` is on the COB-ID of one of the RPDOs in force (11-bit; a remote frame too).
+  bool IsRpdo(const CanFrame& f) const { return RpdoOf(f) < kRpdoCount; }
   uint32_t rpdo_length_errors() const { return rpdo_length_errors_; }
 
  private:
@@ -148,11 +154,13 @@ class Node : private ObjectValues {
   bool ReadCommunication(const ObjectEntry& e, uint32_t* value) const;
   // 0x1800+n / 0x1A00+n writes (CiA 301 rules); false when `e` is no TPDO object.
   bool WriteTpdo(const ObjectEntry& e, uint32_t value, SdoAbort* result);
-  // 0x1400:1-2 writes (the same rules as a TPDO's :1-2); false when `e` is no RPDO object.
+  // 0x1400+n:1-2 writes (the same rules as a TPDO's :1-2); false when `e` is no RPDO object.
   bool WriteRpdo(const ObjectEntry& e, uint32_t value, SdoAbort* result);
-  uint32_t RpdoCobId() const;
-  // A frame on the RPDO's CAN-ID in operational: the mapped command word to the application.
-  void OnRpdo(const CanFrame& f);
+  uint32_t RpdoCobId(uint8_t n) const;
+  // The RPDO whose COB-ID in force `f` (11-bit) is on, or kRpdoCount.
+  uint8_t RpdoOf(const CanFrame& f) const;
+  // A frame of RPDO n in operational: its mapped objects to the application.
+  void OnRpdo(uint8_t n, const CanFrame& f);
   // TPDO n's parameters in force, its COB-ID resolved with the node-ID, to its engine.
   void ConfigureTpdo(uint8_t n);
   uint32_t TpdoCobId(uint8_t n) const;

@@ -69,16 +69,26 @@ constexpr PdoSettings DefaultTpdo(uint8_t n) {
   return p;
 }
 
-/// The board's receive PDO (docs/canopen.md, "PDOs"): RPDO1, COB-ID 0x200 + node-ID (stored
-/// form), event-driven (acted on at receipt), carrying the command word 0x2127 (U16). Its mapping
-/// is static (0x1600 read-only): only the COB-ID and the transmission type are stored.
-inline constexpr uint8_t kRpdoCount = 1;
-constexpr PdoSettings DefaultRpdo() {
+/// The board's receive PDOs (docs/canopen.md, "PDOs"), event-driven (acted on at receipt), their
+/// mappings static (0x1600+n read-only): only the COB-ID and the transmission type are stored.
+/// RPDO1 (COB-ID 0x200 + node-ID, stored form): the command word 0x2127 (U16). RPDO2 (0x300 +
+/// node-ID) and RPDO3 (0x400 + node-ID): the temperatures 0x2150:1-4 and 0x2150:5-8 (I16 each, a
+/// frame of 8 bytes); a channel the frame should not feed carries 0x8000.
+inline constexpr uint8_t kRpdoCount = 3;
+inline constexpr uint8_t kRpdoTemperatureChannels = 4;  // per RPDO2 / RPDO3 frame
+constexpr PdoSettings DefaultRpdo(uint8_t n) {
   PdoSettings p;
-  p.cob_id = 0x200;  // + node-ID (stored form)
+  p.cob_id = 0x200u + 0x100u * n;  // + node-ID (stored form)
   p.transmission_type = 254;
-  p.mapped = 1;
-  p.mapping[0] = 0x2127u << 16 | 16u;  // command word, U16
+  if (n == 0) {
+    p.mapped = 1;
+    p.mapping[0] = 0x2127u << 16 | 16u;  // command word, U16
+  } else {
+    p.mapped = kRpdoTemperatureChannels;
+    for (uint32_t k = 0; k < kRpdoTemperatureChannels; ++k) {
+      p.mapping[k] = 0x2150u << 16 | (1u + (n - 1u) * kRpdoTemperatureChannels + k) << 8 | 16u;
+    }
+  }
   return p;
 }
 
@@ -89,7 +99,8 @@ struct BoardSettings {
   uint16_t heartbeat_ms = kDefaultHeartbeatMs;                      // 0x1017, 0 = off
   uint16_t emcy_inhibit_100us = kDefaultEmcyInhibit100us;           // 0x1015, 0 = no inhibit
   PdoSettings tpdo[kTpdoCount] = {DefaultTpdo(0), DefaultTpdo(1)};  // 0x1800+n, 0x1A00+n
-  PdoSettings rpdo = DefaultRpdo();  // 0x1400 / 0x1600 (only :1 and :2 may change)
+  PdoSettings rpdo[kRpdoCount] = {DefaultRpdo(0), DefaultRpdo(1),
+                                  DefaultRpdo(2)};  // 0x1400+n (:1, :2) / 0x1600+n
   /// The temperature channels' sources and supervision limits (docs/thermal.md): every channel
   /// unused by default. The thermal model that uses them comes with the table image.
   thermal::ChannelConfig temperature[thermal::kMaxChannels] = {};
@@ -111,23 +122,26 @@ Status ValidateSettings(const BoardSettings& s,
 
 /// Serialized size of a BoardSettings record.
 /// (Records of version 4 and older are kSettingsBytesV4 long: no PDO parameters; version 5,
-/// kSettingsBytesV5: the TPDOs, no RPDO; version 6, kSettingsBytesV6: no temperature channels.)
+/// kSettingsBytesV5: the TPDOs, no RPDO; version 6, kSettingsBytesV6: no temperature channels;
+/// version 7, kSettingsBytesV7: RPDO1 only.)
 inline constexpr uint32_t kPdoRecordBytes = 44;
 inline constexpr uint32_t kRpdoRecordBytes = 8;
 inline constexpr uint32_t kChannelRecordBytes = 12;
 inline constexpr uint32_t kSettingsBytesV4 = 24 + table::kMaxAxes * 64 + 8;
 inline constexpr uint32_t kSettingsBytesV5 = kSettingsBytesV4 + kTpdoCount * kPdoRecordBytes;
 inline constexpr uint32_t kSettingsBytesV6 = kSettingsBytesV5 + kRpdoRecordBytes;
-inline constexpr uint32_t kSettingsBytes =
+inline constexpr uint32_t kSettingsBytesV7 =
     kSettingsBytesV6 + thermal::kMaxChannels * kChannelRecordBytes;
+inline constexpr uint32_t kSettingsBytes = kSettingsBytesV7 + (kRpdoCount - 1) * kRpdoRecordBytes;
 
 /// Writes `s` into out[0, kSettingsBytes) (little-endian, versioned).
 void SerializeSettings(const BoardSettings& s, uint8_t* out);
 /// Reads and validates a record; kConfigInvalid for a record of another version or out of range.
 /// A version-1 record (before 0x1015 was stored) gives the default EMCY inhibit time; a record of
 /// version 4 or older (kSettingsBytesV4 long, before the PDOs) gives the default PDOs, one of
-/// version 5 (kSettingsBytesV5, before the RPDO) the default RPDO, one of version 6
-/// (kSettingsBytesV6, before the temperature channels) every channel unused.
+/// version 5 (kSettingsBytesV5, before the RPDO) the default RPDOs, one of version 6
+/// (kSettingsBytesV6, before the temperature channels) every channel unused, one of version 7
+/// (kSettingsBytesV7, before RPDO2 and RPDO3) their defaults.
 Status DeserializeSettings(const uint8_t* in, uint32_t size, BoardSettings* s);
 
 }  // namespace volcomp
