@@ -130,7 +130,8 @@ void AddGoal(DemoResult& r,
              double value,
              double limit,
              bool at_least,
-             bool asserted = true);
+             bool asserted = true,
+             const std::string& unit = "");
 
 // The thermal step (demo_thermal.cpp): the drift test, the fitted model in table 3's image, the
 // verification cycle with the firmware in the loop without and with it; and its goals.

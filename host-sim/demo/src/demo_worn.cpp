@@ -199,8 +199,10 @@ void AddGoal(DemoResult& r,
              double value,
              double limit,
              bool at_least,
-             bool asserted) {
+             bool asserted,
+             const std::string& unit) {
   Goal g;
+  g.unit = unit;
   g.what = what;
   g.value = value;
   g.limit = limit;

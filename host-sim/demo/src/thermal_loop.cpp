@@ -61,6 +61,16 @@ class ThermalPlant {
 
   const std::vector<int16_t>& readings_cC() const { return readings_cC_; }
 
+  // The PLC is the NMT master: it starts the node (PDOs run in Operational only, CiA 301).
+  void StartNode() {
+    CanFrame f;
+    f.id = 0;
+    f.dlc = 2;
+    f.data[0] = 0x01;  // start remote node
+    f.data[1] = world_->node_id();
+    plc_->Send(f);
+  }
+
  private:
   // RPDO2: channels 1..4 as four int16, little-endian (docs/thermal.md "Configuration").
   void SendReadings() {
@@ -193,6 +203,7 @@ Expected<ThermalLoopResult> RunThermalLoop(const ThermalLoopOptions& o, std::ost
   });
 
   VOLCOMP_TRY(world.Start());
+  plant.StartNode();
   world.cnc().QueueHome(7);
   if (!world.RunUntilCncIdle(300 * kSecond_ns)) {
     return Fail(Error::kNotReady, "homing did not finish within 300 s");
@@ -215,19 +226,25 @@ Expected<ThermalLoopResult> RunThermalLoop(const ThermalLoopOptions& o, std::ost
     const uint64_t due_ns = start_ns + static_cast<uint64_t>(std::llround(check_s * 1e9));
     if (world.now_ns() < due_ns) world.RunFor(due_ns - world.now_ns());
     for (const DriftCheckPoint& p : points) {
-      std::array<int64_t, 3> target;
-      for (int a = 0; a < 3; ++a)
-        target[static_cast<size_t>(a)] = std::llround(p.q_mm[a] / step_mm[a]);
-      world.cnc().QueueLinear(target, o.check_feed_mm_s);
-      if (!world.RunUntilCncIdle(600 * kSecond_ns)) {
-        return Fail(Error::kNotReady, "a move to a check point did not finish within 600 s");
+      double sum_um = 0;
+      for (int k = 0; k < o.approaches; ++k) {
+        for (const double below_mm : {o.approach_mm, 0.0}) {
+          std::array<int64_t, 3> target;
+          for (int a = 0; a < 3; ++a) {
+            target[static_cast<size_t>(a)] = std::llround((p.q_mm[a] - below_mm) / step_mm[a]);
+          }
+          world.cnc().QueueLinear(target, o.check_feed_mm_s);
+          if (!world.RunUntilCncIdle(600 * kSecond_ns)) {
+            return Fail(Error::kNotReady, "a move to a check point did not finish within 600 s");
+          }
+        }
+        world.RunFor(static_cast<uint64_t>(o.settle_s * 1e9));
+        world.CheckAtRest();
+        const model::Vec3 tool = world.machine().ToolPoint_mm(world.AxisPositions_mm());
+        sum_um += 1e3 * (tool[p.axis] - world.CommandedPoint_mm()[p.axis]);
       }
-      world.RunFor(static_cast<uint64_t>(o.settle_s * 1e9));
-      world.CheckAtRest();
-      const model::Vec3 tool = world.machine().ToolPoint_mm(world.AxisPositions_mm());
-      const model::Vec3 cmd = world.CommandedPoint_mm();
-      r.run.readings.push_back({plant.cycle_s(world.now_ns()), p.axis, cmd[p.axis],
-                                1e3 * (tool[p.axis] - cmd[p.axis]), plant.readings_cC()});
+      r.run.readings.push_back({plant.cycle_s(world.now_ns()), p.axis, p.q_mm[p.axis],
+                                sum_um / std::max(1, o.approaches), plant.readings_cC()});
     }
   }
   world.SetClocked(0, nullptr);

@@ -38,7 +38,7 @@ DutyCycle CalibrationDutyCycle() {
   DutyCycle c;
   c.name = "calibration";
   c.start_ambient_C = 19.0;    // a cold machine in the morning shop
-  Add(&c, 60, 0, 0, 20.5);     // standing while the shop's heating comes on (ambient alone)
+  Add(&c, 60, 0, 0, 21.0);     // standing while the shop's heating comes on (ambient alone)
   Add(&c, 90, 0, 5, 20.5);     // X traversing alone
   Add(&c, 150, 0.8, 5, 20.5);  // spindle at 80 % as well
   Add(&c, 120, 0, 0, 19.5);    // everything stopped: cooling while the shop cools

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "volcomp/builders/thermal_fit.hpp"
 #include "volcomp/hosted/expected.hpp"
 #include "volcomp/metrology/circular.hpp"
 #include "volcomp/model/tracker_lattice.hpp"
@@ -19,7 +20,6 @@
 #include "volcomp/sim/measurements.hpp"
 #include "volcomp/sim/table_from_measurements.hpp"
 #include "volcomp/sim/thermal_loop.hpp"
-#include "volcomp/builders/thermal_fit.hpp"
 #include "volcomp/sim/world.hpp"
 #include "volcomp/sim/worn_profile.hpp"
 #include "volcomp/tools/json_value.hpp"
@@ -147,6 +147,7 @@ struct Goal {
   double value = 0;  // measured (% reduction or µm)
   double limit = 0;
   bool at_least = true;  // value must be >= limit (else <=)
+  std::string unit;      // empty: "%" for an at-least goal, "um" otherwise
   bool holds = false;
   // false: printed with its verdict but not a check of the run (not in failures, the exit code):
   // the ISO 230-4 goals, whose residual is within the worn machine's scatter

@@ -1,9 +1,10 @@
 // A duty cycle of hours with the real firmware in the loop (issue 23 item 4, docs/simulator.md
-// "Hours of warm-up"): the heat balance deforms the machine, the three sensors' readings go to the
-// board over CAN as a PLC writes them (0x2150:n, SDO, every `reading_period_s`), the board's main
-// loop supervises the channels and moves the thermal correction of the active image at its slew
-// limit, its compensation run adds that to the drives, and at every check the CNC moves to each
-// check point and the laser reads the deviation of the tool point there along the axis.
+// 7.6): the heat balance deforms the machine, the three sensors' readings go to the board over CAN
+// as a PLC sends them (RPDO2, 0x2150:1-4, every `reading_period_s`; the PLC is the NMT master and
+// starts the node: PDOs run in Operational only), the board's main loop supervises the channels and
+// moves the thermal correction of the active image at its slew limit, its compensation run adds
+// that to the drives, and at every check the CNC moves to each check point and the laser reads the
+// deviation of the tool point there along the axis.
 //
 // How hours fit into minutes: the board runs at a lower control tick (`tick_hz`, 2 kHz by default
 // against the demo's 50 kHz) and main-loop rate (`poll_period_ns`); the thermal correction's
@@ -46,6 +47,11 @@ struct ThermalLoopOptions {
   uint8_t stuck_readings = 10;        // the channels' frozen-source check: 1 s at 10 Hz
   double check_feed_mm_s = 20;        // moves between check points
   double settle_s = 0.3;              // at rest before the laser reads
+  // Each check point is read as the mean of this many approaches, each from approach_mm below on
+  // every axis (one direction, as a drift test repeats its readings: the lost motion is taken up
+  // the same way every time, the settling scatter averages).
+  int approaches = 5;
+  double approach_mm = 5;
   std::vector<SensorFaultInjection> faults;
 };
 
