@@ -138,6 +138,14 @@ Outcome RunWorn(Session& s, DemoResult& r) {
   r.after_label = "tracker";
   VOLCOMP_TRY_ASSIGN(r.after, demo::MeasurePhase(s, r));
   demo::EvaluateWornGoals(s, r, first_check);
+  if (s.world.machine().wear().thermal) {
+    progress.Step(
+        "thermal: a drift test on the heat-balance machine (calibration duty cycle), the model "
+        "fitted (`volcomp build thermal`) into table 3's image; the verification duty cycle with "
+        "the firmware in the loop, without and with it, two sensor faults injected");
+    VOLCOMP_TRY(demo::RunThermal(s, r));
+    demo::EvaluateThermalGoals(r);
+  }
   return Outcome::Ok();
 }
 
@@ -174,7 +182,7 @@ Expected<DemoResult> RunDemo(const DemoOptions& o, std::ostream& log) {
   const bool worn = o.machine == MachineProfile::kWorn;
   DemoResult r;
   r.options = o;
-  demo::Progress progress(log, worn ? 10 : 8);
+  demo::Progress progress(log, worn ? (o.wear.thermal ? 11 : 10) : 8);
 
   WorldOptions wo;
   VOLCOMP_TRY_ASSIGN(wo.machine.model, LoadMachineModel(o.model_spec));

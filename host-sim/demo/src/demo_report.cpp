@@ -196,6 +196,17 @@ Outcome WriteWornData(const DemoResult& r, const std::string& dir) {
     VOLCOMP_TRY(tools::WriteFileBytes(dir + "/table" + std::to_string(i + 1) + ".vct",
                                       r.earlier_tables[i].table.image));
   }
+  if (r.thermal.ran) {
+    // `volcomp evaluate thermal data/drift_test.csv`, `volcomp build thermal data/drift_test.csv
+    // --image table.vct -o table_thermal.vct`; the verification cycle's readings in the same form.
+    const ThermalPhase& t = r.thermal;
+    VOLCOMP_TRY(tools::WriteTextFile(dir + "/data/drift_test.csv", t.drift_csv));
+    VOLCOMP_TRY(tools::WriteTextFile(dir + "/data/verification_table3.csv",
+                                     DriftTestCsv(t.uncompensated.run, r.machine_name)));
+    VOLCOMP_TRY(tools::WriteTextFile(dir + "/data/verification_thermal.csv",
+                                     DriftTestCsv(t.compensated.run, r.machine_name)));
+    VOLCOMP_TRY(tools::WriteFileBytes(dir + "/table_thermal.vct", t.image));
+  }
   return Outcome::Ok();
 }
 

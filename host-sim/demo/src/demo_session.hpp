@@ -124,5 +124,18 @@ Expected<builders::GridSection> MeasureTrackerLattice(Session& s,
                                                       const std::vector<uint8_t>& in_force);
 // The error budget of the last phase and the goals of the worn profile.
 void EvaluateWornGoals(Session& s, DemoResult& r, size_t first_check_of_last_table);
+// A goal with its verdict; a failed asserted one is also a failure of the run.
+void AddGoal(DemoResult& r,
+             const std::string& what,
+             double value,
+             double limit,
+             bool at_least,
+             bool asserted = true,
+             const std::string& unit = "");
+
+// The thermal step (demo_thermal.cpp): the drift test, the fitted model in table 3's image, the
+// verification cycle with the firmware in the loop without and with it; and its goals.
+Outcome RunThermal(Session& s, DemoResult& r);
+void EvaluateThermalGoals(DemoResult& r);
 
 }  // namespace volcomp::sim::demo

@@ -167,7 +167,9 @@ JsonValue Goals(const DemoResult& r) {
     JsonValue o = JsonValue::Object();
     o.Set("name", g.what)
         .Set("value", g.value)
-        .Set("unit", g.at_least ? "%" : "um")
+        .Set("unit", !g.unit.empty() ? g.unit
+                     : g.at_least    ? "%"
+                                     : "um")
         .Set("limit", g.limit)
         .Set("at_least", g.at_least)
         .Set("holds", g.holds)

@@ -194,15 +194,15 @@ Expected<builders::GridSection> MeasureTrackerLattice(Session& s,
   return grid;
 }
 
-namespace {
-
 void AddGoal(DemoResult& r,
              const std::string& what,
              double value,
              double limit,
              bool at_least,
-             bool asserted = true) {
+             bool asserted,
+             const std::string& unit) {
   Goal g;
+  g.unit = unit;
   g.what = what;
   g.value = value;
   g.limit = limit;
@@ -212,6 +212,8 @@ void AddGoal(DemoResult& r,
   r.goals.push_back(g);
   if (!g.holds && asserted) r.failures.push_back("goal: " + what);
 }
+
+namespace {
 
 double Reduction(double before, double after) {
   return before > 0 ? 100.0 * (1.0 - after / before) : 0.0;

@@ -75,7 +75,22 @@ void World::OnStep(int axis, uint64_t t_ns, int dir) {
   ++audit_.input_steps;
 }
 
+void World::SetClocked(uint64_t period_ns, std::function<void(uint64_t now_ns)> fn) {
+  clocked_ = std::move(fn);
+  clocked_period_ns_ = period_ns;
+  next_clocked_ns_ = now_ns_ + period_ns;
+}
+
 void World::StepOnce(uint64_t limit_ns) {
+  StepEvent(limit_ns);
+  if (clocked_ && now_ns_ >= next_clocked_ns_) {
+    next_clocked_ns_ += clocked_period_ns_;
+    if (next_clocked_ns_ <= now_ns_) next_clocked_ns_ = now_ns_ + clocked_period_ns_;
+    clocked_(now_ns_);
+  }
+}
+
+void World::StepEvent(uint64_t limit_ns) {
   uint64_t t = board_->NextEventTime();
   if (const auto b = bus_.NextEventTime(); b && *b < t) {
     if (*b > limit_ns) {

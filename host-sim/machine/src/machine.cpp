@@ -114,9 +114,10 @@ model::Vec3 Machine::DrivePositions_mm(const std::array<int64_t, 3>& drive_steps
 
 model::Vec3 Machine::AxisPositions_mm(const std::array<int64_t, 3>& drive_steps) const {
   model::Vec3 q = DrivePositions_mm(drive_steps);
+  const model::Vec3 d = q;
+  q.x += 1e-6 * deformation_.x_screw_ppm * (d.x - deformation_.x_screw_fixed_end_mm);
   const WornMachineProfile& w = options_.wear;
   if (!w.any()) return q;
-  const model::Vec3 d = q;
   for (int a = 0; a < 3; ++a) {
     const size_t i = static_cast<size_t>(a);
     q[a] += lost_motion_[i].offset_mm() + scatter_mm_[i];
@@ -142,7 +143,7 @@ model::Vec3 Machine::PointOnTool_mm(const model::Vec3& q_mm, const model::Vec3& 
                                   {travel_min_mm(1), travel_max_mm(1)});
   }
   if (w.thermal) t.z += 1e-3 * ThermalGrowth::SpindleZ_um(w, time_s_);
-  return t;
+  return t + 1e-3 * deformation_.tool_um;
 }
 
 bool Machine::HomeSwitchClosed(int axis, int64_t drive_steps) const {

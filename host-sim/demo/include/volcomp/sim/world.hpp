@@ -8,6 +8,7 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <memory>
 
 #include "volcomp/canopen_client/sdo_runner.hpp"
@@ -60,6 +61,10 @@ class World final : private StepSink {
   /// passed first.
   bool RunUntilCncIdle(uint64_t limit_ns);
   void RunFor(uint64_t duration_ns);
+  /// The installation's clocked side (a PLC writing frames, a heat balance): `fn(now_ns)` is called
+  /// after the first event at or past every multiple of `period_ns` from now, whichever call runs
+  /// the world (RunFor, RunUntilCncIdle, a blocking SDO transfer). nullptr: none.
+  void SetClocked(uint64_t period_ns, std::function<void(uint64_t now_ns)> fn);
 
   /// Blocking frame link for canopen_client::RunToCompletion & co.
   const canopen_client::FrameLink& SdoLink() const { return link_; }
@@ -87,6 +92,7 @@ class World final : private StepSink {
   World(const WorldOptions& options, Machine machine);
   void OnStep(int axis, uint64_t t_ns, int dir) override;
   void StepOnce(uint64_t limit_ns);
+  void StepEvent(uint64_t limit_ns);
   void AfterTick(uint64_t t_ns);
 
   WorldOptions options_;
@@ -102,6 +108,9 @@ class World final : private StepSink {
   uint64_t pulse_clock_hz_ = 1000000000;
   std::array<int64_t, 3> output_ = {0, 0, 0};  // pulses expanded from the plans
   StepAudit audit_;
+  std::function<void(uint64_t)> clocked_;
+  uint64_t clocked_period_ns_ = 0;
+  uint64_t next_clocked_ns_ = 0;
 };
 
 /// Board settings for a machine: three linear axes at the machine's step lengths, default

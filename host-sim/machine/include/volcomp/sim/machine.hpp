@@ -15,6 +15,7 @@
 #include "volcomp/model/rigid_body.hpp"
 #include "volcomp/model/vec3.hpp"
 #include "volcomp/sim/error_sources.hpp"
+#include "volcomp/sim/heat_balance.hpp"
 #include "volcomp/sim/random.hpp"
 #include "volcomp/sim/rigid_body_kinematics.hpp"
 #include "volcomp/sim/worn_profile.hpp"
@@ -62,6 +63,13 @@ class Machine {
   /// Seconds since power-up (the last OnDriveTick).
   double time_s() const { return time_s_; }
 
+  /// The heat balance's deformation in force from now on (heat_balance.hpp; none at power-up):
+  /// the X carriage runs ahead by the screw's expansion, the tool point moves by tool_um. It adds
+  /// to the worn profile's closed-form warm-up (WornMachineProfile::thermal), which a run driven
+  /// by a heat balance leaves off.
+  void SetThermalDeformation(const ThermalDeformation& d) { deformation_ = d; }
+  const ThermalDeformation& thermal_deformation() const { return deformation_; }
+
   /// Drive positions (mm) for drive step counts.
   model::Vec3 DrivePositions_mm(const std::array<int64_t, 3>& drive_steps) const;
   /// Axis (carriage) positions (mm) for the drives at `drive_steps` now (the counts of the last
@@ -84,6 +92,7 @@ class Machine {
   // Worn-profile state.
   Random rng_;
   double time_s_ = 0;
+  ThermalDeformation deformation_;
   std::array<int64_t, 3> last_steps_ = {0, 0, 0};
   std::array<bool, 3> moving_ = {false, false, false};
   std::array<uint64_t, 3> last_step_ns_ = {0, 0, 0};
