@@ -185,11 +185,7 @@ Expected<Output> RunBuildThermal(Args& args, Context& ctx) {
   std::optional<image::LoadedImage> input;
   if (image_path) {
     VOLCOMP_TRY_ASSIGN(image::LoadedImage loaded, image::ReadImageFile(*image_path));
-    const table::TableView& v = loaded.view();
-    for (uint8_t i = 0; i < v.axis_count; ++i) {
-      if (v.axes[i].kind != table::AxisKind::kLinear) continue;
-      if (const auto span = image::TableSpan(v, i)) o.travel_mm[v.axes[i].name] = *span;
-    }
+    o.travel_mm = image::LinearAxisSpans(loaded.view());
     input.emplace(std::move(loaded));
   }
   VOLCOMP_TRY_ASSIGN(const builders::ThermalFit fit, builders::FitThermalModel(record, o));

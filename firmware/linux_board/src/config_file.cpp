@@ -73,8 +73,8 @@ class ConfigParser {
   explicit ConfigParser(const IniDocument& doc) : doc_(doc) {}
 
   IniExpected<LinuxBoardConfig> Parse() {
-    VOLCOMP_TRY(doc_.CheckSections(
-        {"board", "axis NAME", "can", "gateway", "gpio", "flash", "sensors", "process"}));
+    VOLCOMP_TRY(doc_.CheckSections({"board", "axis NAME", "temperature N", "can", "gateway", "gpio",
+                                    "flash", "sensors", "process"}));
     VOLCOMP_TRY(Settings());
     VOLCOMP_TRY(Can());
     VOLCOMP_TRY(Gateway());

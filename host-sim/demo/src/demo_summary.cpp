@@ -161,6 +161,128 @@ JsonValue Circular(const DemoResult& r) {
   return c;
 }
 
+JsonValue Xyz(const std::array<double, 3>& v) { return JsonValue::Numbers({v[0], v[1], v[2]}); }
+
+// The worn machine's thermal step (docs/simulator.md 7.6, summary.json "thermal").
+JsonValue Thermal(const ThermalPhase& t) {
+  JsonValue o = JsonValue::Object();
+  o.Set("calibration_h", t.calibration_h)
+      .Set("calibration_readings", uint64_t{t.calibration_readings})
+      .Set("calibration_drift_um", Xyz(t.calibration_drift_um));
+  JsonValue channels = JsonValue::Array();
+  for (const builders::ThermalFitChannel& c : t.fit.channels) {
+    channels.Push(JsonValue::Object()
+                      .Set("name", c.name)
+                      .Set("number", uint64_t{c.number})
+                      .Set("reference_C", c.reference_C)
+                      .Set("min_C", c.min_C)
+                      .Set("max_C", c.max_C));
+  }
+  o.Set("channels", std::move(channels));
+  JsonValue axes = JsonValue::Array();
+  for (const builders::ThermalAxisFit& a : t.fit.axes) {
+    axes.Push(JsonValue::Object()
+                  .Set("axis", std::string(1, a.name))
+                  .Set("p0_mm", a.p0_mm)
+                  .Set("offset_um_per_K", JsonValue::Numbers(a.offset_um_per_K))
+                  .Set("slope_um_per_K_m", JsonValue::Numbers(a.slope_um_per_K_m))
+                  .Set("residual_rms_um", a.residual_rms_um)
+                  .Set("residual_max_um", a.residual_max_um)
+                  .Set("explained", a.explained)
+                  .Set("explained_pct", 100 * a.explained)
+                  .Set("condition", a.condition));
+  }
+  o.Set("fit", std::move(axes));
+  o.Set("image_bytes", uint64_t{t.image.size()});
+  std::array<double, 3> reduction = {0, 0, 0};
+  for (size_t a = 0; a < 3; ++a) {
+    if (t.drift_before_um[a] > 0)
+      reduction[a] = 100 * (1 - t.drift_after_um[a] / t.drift_before_um[a]);
+  }
+  o.Set("verification_h", t.verification_h)
+      .Set("drift_table3_um", Xyz(t.drift_before_um))
+      .Set("drift_thermal_um", Xyz(t.drift_after_um))
+      .Set("reduction_pct", Xyz(reduction))
+      .Set("max_rate_um_s", Xyz({t.compensated.max_rate_um_s[0], t.compensated.max_rate_um_s[1],
+                                 t.compensated.max_rate_um_s[2]}))
+      .Set("slew_limit_um_s", t.slew_limit_um_s);
+  JsonValue faults = JsonValue::Array();
+  for (const FaultOutcome& f : t.compensated.faults) {
+    faults.Push(
+        JsonValue::Object()
+            .Set("channel", int64_t{f.injected.sensor})
+            .Set("kind", f.injected.kind == SensorFault::kOpenCircuit ? "open circuit" : "stuck")
+            .Set("at_s", f.injected.at_s)
+            .Set("for_s", f.injected.for_s)
+            .Set("detected_after_s", f.detected_after_s)
+            .Set("change_while_held_um", f.change_while_held_um));
+  }
+  o.Set("faults", std::move(faults));
+  o.Set("loop", JsonValue::Object()
+                    .Set("tick_hz", uint64_t{t.tick_hz})
+                    .Set("ticks", t.compensated.ticks)
+                    .Set("ticks_table3", t.uncompensated.ticks)
+                    .Set("lost_steps", t.compensated.lost_steps)
+                    .Set("overruns", uint64_t{t.compensated.overruns})
+                    .Set("wall_s_table3", t.uncompensated.wall_s)
+                    .Set("wall_s_thermal", t.compensated.wall_s));
+  o.Set("wall_s", t.wall_s);
+  return o;
+}
+
+const std::string& Str(const JsonValue& v, const std::string& key);
+
+std::string Fmt(const char* format, double v) {
+  char b[160];
+  std::snprintf(b, sizeof b, format, v);
+  return b;
+}
+
+void PrintThermal(const JsonValue& t, std::ostream& out) {
+  out << "\n== thermal: drift test, fit, verification with the firmware in the loop ===\n";
+  char b[300];
+  const auto xyz = [&](const char* key) {
+    const auto& v = At(t, key).array;
+    std::snprintf(b, sizeof b, "X %.1f / Y %.1f / Z %.1f", v[0].number, v[1].number, v[2].number);
+    return std::string(b);
+  };
+  out << Fmt("drift test (calibration duty cycle): %.1f h, largest drift ", Num(t, "calibration_h"))
+      << xyz("calibration_drift_um") << " um\n";
+  for (const JsonValue& a : At(t, "fit").array) {
+    std::string coef;
+    const auto& channels = At(t, "channels").array;
+    for (size_t j = 0; j < channels.size(); ++j) {
+      std::snprintf(b, sizeof b, "  %s %+.2f um/K %+.2f um/(K m)", Str(channels[j], "name").c_str(),
+                    At(a, "offset_um_per_K").array[j].number,
+                    At(a, "slope_um_per_K_m").array[j].number);
+      coef += b;
+    }
+    std::snprintf(b, sizeof b, "fit %s: residual rms %.2f um, max %.2f um;", Str(a, "axis").c_str(),
+                  Num(a, "residual_rms_um"), Num(a, "residual_max_um"));
+    out << b << coef << "\n";
+  }
+  out << Fmt("verification duty cycle: %.1f h; drift with table 3 alone ", Num(t, "verification_h"))
+      << xyz("drift_table3_um") << " um, with the thermal model " << xyz("drift_thermal_um")
+      << " um (" << xyz("reduction_pct") << " % less)\n";
+  out << "fastest change of the correction " << xyz("max_rate_um_s")
+      << Fmt(" um/s (slew limit %.2f um/s)\n", Num(t, "slew_limit_um_s"));
+  for (const JsonValue& f : At(t, "faults").array) {
+    std::snprintf(b, sizeof b,
+                  "sensor fault on channel %.0f (%s, at %.0f s for %.0f s): flagged after %.2f s, "
+                  "the correction moved %.2f um while flagged\n",
+                  Num(f, "channel"), Str(f, "kind").c_str(), Num(f, "at_s"), Num(f, "for_s"),
+                  Num(f, "detected_after_s"), Num(f, "change_while_held_um"));
+    out << b;
+  }
+  const JsonValue& l = At(t, "loop");
+  std::snprintf(b, sizeof b,
+                "firmware in the loop at %.0f Hz: %.0f ticks, %.0f lost steps, %.0f overruns; "
+                "%.1f + %.1f s wall\n",
+                Num(l, "tick_hz"), Num(l, "ticks"), Num(l, "lost_steps"), Num(l, "overruns"),
+                Num(l, "wall_s_table3"), Num(l, "wall_s_thermal"));
+  out << b;
+}
+
 JsonValue Goals(const DemoResult& r) {
   JsonValue goals = JsonValue::Array();
   for (const Goal& g : r.goals) {
@@ -423,6 +545,7 @@ tools::JsonValue SummaryData(const DemoResult& r) {
   if (worn) {
     d.Set("goals", Goals(r));
     d.Set("error_budget", Budget(r));
+    if (r.thermal.ran) d.Set("thermal", Thermal(r.thermal));
   }
   for (auto& [key, value] : Steps(r).object) d.Set(key, std::move(value));
   JsonValue failures = JsonValue::Array();
@@ -439,6 +562,7 @@ void PrintSummaryData(const tools::JsonValue& d, std::ostream& out) {
   if (worn) {
     PrintGoals(d, out);
     PrintBudget(d, out);
+    if (const JsonValue* t = d.get("thermal")) PrintThermal(*t, out);
   }
   PrintSteps(d, out);
   if (At(d, "passed").boolean) {

@@ -27,10 +27,7 @@ Expected<std::vector<uint8_t>> ThermalImage(const std::string& drift_csv,
                      image::LoadedImage::FromBytes(last_image, "table 3"));
   const table::TableView& v = loaded.view();
   builders::ThermalFitOptions o;
-  for (uint8_t i = 0; i < v.axis_count; ++i) {
-    if (v.axes[i].kind != table::AxisKind::kLinear) continue;
-    if (const auto span = image::TableSpan(v, i)) o.travel_mm[v.axes[i].name] = *span;
-  }
+  o.travel_mm = image::LinearAxisSpans(v);
   VOLCOMP_TRY_ASSIGN(t.fit, builders::FitThermalModel(record, o));
   VOLCOMP_TRY_ASSIGN(t.model, builders::ToThermalModel(t.fit, v.axes, v.axis_count));
   image::ThermalImageOptions io;
@@ -60,6 +57,7 @@ Outcome RunThermal(Session& s, DemoResult& r) {
   lo.wear.thermal = false;
   lo.run.check_interval_s = s.o.thermal_check_interval_s;
   lo.tick_hz = s.o.thermal_tick_hz;
+  t.tick_hz = lo.tick_hz;
   lo.run.seed = s.o.seed ^ 0x7468657266ull;
 
   // The drift test: the calibration cycle on the machine, read with the laser at two points per
@@ -72,6 +70,7 @@ Outcome RunThermal(Session& s, DemoResult& r) {
   const ThermalRun drift = RunDutyCycle(machine, calibration, lo.run);
   t.drift_csv = DriftTestCsv(drift, r.machine_name);
   t.calibration_h = calibration.duration_s() / 3600;
+  t.calibration_readings = drift.readings.size();
   t.calibration_drift_um = MaxDrift_um(drift);
   s.progress.Line(Fmt("drift test: %.1f h of the calibration duty cycle, ", t.calibration_h) +
                   std::to_string(drift.readings.size()) + " readings; largest drift " +

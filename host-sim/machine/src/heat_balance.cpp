@@ -73,7 +73,10 @@ ThermalDeformation HeatBalance::Deformation() const {
   ThermalDeformation d;
   d.x_screw_ppm = p_.alpha_per_K * 1e6 * (t_C_[kScrew] - p_.reference_C);
   d.x_screw_fixed_end_mm = p_.screw_fixed_end_mm;
-  d.tool_um.y = a_um * p_.head_y_mm * d_head;
+  // The head's path from the column's guideways to the spindle bore: the casting, and near the
+  // bore the wall the cartridge heats.
+  d.tool_um.y =
+      a_um * p_.head_y_mm * ((1 - p_.bore_wall_share) * d_head + p_.bore_wall_share * d_spindle);
   d.tool_um.z =
       -a_um * (p_.quill_mm * d_spindle + p_.head_mm * d_head) + a_um * p_.column_mm * d_structure;
   return d;

@@ -113,6 +113,25 @@ TEST(ConfigFileTest, FormatParsesBackToTheSameConfiguration) {
   EXPECT_EQ(std::string(ra, ra + sizeof ra), std::string(rb, rb + sizeof rb));
 }
 
+// A channel fed by a sysfs file: its [temperature N] section (the PC tool's board file keys) and
+// the file in [sensors]; both survive the round trip through FormatConfig.
+TEST(ConfigFileTest, ATemperatureChannelFedByAFile) {
+  const std::string text = std::string(kMinimal) +
+                           "[sensors]\ntemperature_file.2 = /sys/class/hwmon/hwmon1/temp1_input\n"
+                           "[temperature 2]\nsource = linux_file\nhigh_C = 60\n";
+  const auto r = ParseConfig(text, "test.conf");
+  ASSERT_TRUE(r.ok()) << r.error().ToString();
+  EXPECT_EQ(r->settings.temperature[1].source, thermal::ChannelSource::kLinuxFile);
+  EXPECT_EQ(r->settings.temperature[1].high_cC, 6000);
+  EXPECT_EQ(r->settings.temperature[0].source, thermal::ChannelSource::kNone);
+  EXPECT_EQ(r->temperature_files[1], "/sys/class/hwmon/hwmon1/temp1_input");
+  const auto back = ParseConfig(FormatConfig(*r), "formatted");
+  ASSERT_TRUE(back.ok()) << back.error().ToString();
+  EXPECT_EQ(back->settings.temperature[1].source, thermal::ChannelSource::kLinuxFile);
+  EXPECT_EQ(back->settings.temperature[1].high_cC, 6000);
+  EXPECT_EQ(Error(std::string(kMinimal) + "[temperature 9]\nsource = can\n").empty(), false);
+}
+
 TEST(ConfigFileTest, MistakesAreNamedWithTheirLine) {
   const std::string base = kMinimal;
   struct Case {

@@ -42,7 +42,9 @@ TEST(ThermalRun, TheLaserReadsTheBodiesDeformation) {
   auto z_um = [&](const std::array<double, 5>& c) {
     return -a * (120 * (c[1] - 20) + 300 * (c[2] - 20)) + a * 250 * (c[4] - 20);
   };
-  auto y_um = [&](const std::array<double, 5>& c) { return a * 150 * (c[2] - 20); };
+  auto y_um = [&](const std::array<double, 5>& c) {
+    return a * 150 * (0.7 * (c[2] - 20) + 0.3 * (c[1] - 20));
+  };
   for (bool high : {false, true}) {
     EXPECT_NEAR(At(run, t, 2, high).deviation_um - At(run, 0, 2, high).deviation_um,
                 z_um(b) - z_um(first), 2e-3);

@@ -80,4 +80,13 @@ std::optional<std::pair<double, double>> TableSpan(const table::TableView& view,
   return span;
 }
 
+std::map<char, std::pair<double, double>> LinearAxisSpans(const table::TableView& view) {
+  std::map<char, std::pair<double, double>> spans;
+  for (uint8_t i = 0; i < view.axis_count; ++i) {
+    if (view.axes[i].kind != table::AxisKind::kLinear) continue;
+    if (const auto span = TableSpan(view, i)) spans[view.axes[i].name] = *span;
+  }
+  return spans;
+}
+
 }  // namespace volcomp::image

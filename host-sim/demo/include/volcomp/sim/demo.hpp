@@ -160,6 +160,7 @@ struct ThermalPhase {
   bool ran = false;
   std::string drift_csv;  // the drift test (calibration cycle): the report's drift_test.csv
   double calibration_h = 0;
+  size_t calibration_readings = 0;
   std::array<double, 3> calibration_drift_um = {0, 0, 0};
   builders::ThermalFit fit;
   thermal::ThermalModel model;
@@ -170,6 +171,7 @@ struct ThermalPhase {
   std::array<double, 3> drift_before_um = {0, 0, 0};
   std::array<double, 3> drift_after_um = {0, 0, 0};
   double slew_limit_um_s = 0;
+  uint32_t tick_hz = 0;  // the board's control tick in the loop
   double wall_s = 0;
 };
 

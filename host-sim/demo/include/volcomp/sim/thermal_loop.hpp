@@ -50,7 +50,7 @@ struct ThermalLoopOptions {
   // Each check point is read as the mean of this many approaches, each from approach_mm below on
   // every axis (one direction, as a drift test repeats its readings: the lost motion is taken up
   // the same way every time, the settling scatter averages).
-  int approaches = 5;
+  int approaches = 10;
   double approach_mm = 5;
   std::vector<SensorFaultInjection> faults;
 };

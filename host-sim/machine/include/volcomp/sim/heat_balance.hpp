@@ -8,7 +8,9 @@
 //   spindle     the spindle's losses (bearings, the spindle cartridge grows the tool toward
 //               motor) at its running fraction  the table (-z) over quill_mm
 //   head        the spindle, by conduction      the head casting: -z over head_mm, +y over
-//                                               head_y_mm (the spindle sits in front of the column)
+//                                               head_y_mm (the spindle sits in front of the
+//                                               column; the bore's wall, bore_wall_share of that
+//                                               path, at the cartridge's temperature)
 //   x_screw     nut and bearing friction,       the X screw: the carriage runs ahead by
 //               proportional to the X speed     alpha * dT * (x - screw_fixed_end_mm)
 //   structure   the head, by conduction; the    column and bed: the head rises (+z) over
@@ -52,6 +54,7 @@ struct HeatBalanceParams {
   double quill_mm = 120;          // spindle cartridge, nose to its fixed bearing
   double head_mm = 300;           // head casting under the spindle's mounting
   double head_y_mm = 150;         // spindle axis in front of the head's fixed face
+  double bore_wall_share = 0.3;   // of head_y_mm: the bore's wall, at the cartridge's rise
   double column_mm = 250;         // column height above the table surface
   double screw_fixed_end_mm = 0;  // X position of the screw's fixed bearing
   double reference_C = 20;        // every body at this temperature: no deformation

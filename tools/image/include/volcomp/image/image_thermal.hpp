@@ -41,4 +41,8 @@ Expected<ThermalImage> WithThermalModel(const LoadedImage& image,
 /// that axis), lowest and highest, mm (degrees for a rotary axis); nullopt when no table covers it.
 std::optional<std::pair<double, double>> TableSpan(const table::TableView& view, uint8_t axis);
 
+/// TableSpan of every linear axis a table covers, by axis name (a thermal fit's reach covers
+/// them: builders::ThermalFitOptions::travel_mm).
+std::map<char, std::pair<double, double>> LinearAxisSpans(const table::TableView& view);
+
 }  // namespace volcomp::image
