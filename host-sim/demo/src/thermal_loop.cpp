@@ -213,7 +213,6 @@ Expected<ThermalLoopResult> RunThermalLoop(const ThermalLoopOptions& o, std::ost
     VOLCOMP_TRY_ASSIGN(const UploadReport up, UploadTable(world, o.image, log));
     world.RunFor(kSecond_ns / 5);  // activation needs 100 ms without input steps
     VOLCOMP_TRY(ActivateTable(world, up.image_crc));
-    r.slew_limit_um_s = world.board().app().thermal().correction().status().active ? 1.0 : 0;
   }
   // The cycle starts with the correction settled on the cold machine.
   world.RunFor(30 * kSecond_ns);

@@ -76,9 +76,9 @@ struct FaultOutcome {
 struct ThermalLoopResult {
   ThermalRun run;  // the deviations the laser read with the board compensating
   std::vector<ThermalTracePoint> trace;
-  // Fastest change of the applied correction anywhere on each axis's check points, um/s.
+  // Fastest change of the applied correction at each axis's check points, sampled every second
+  // (the image's slew limit bounds it), um/s.
   double max_rate_um_s[3] = {0, 0, 0};
-  double slew_limit_um_s = 0;  // the model's
   std::vector<FaultOutcome> faults;
   uint64_t ticks = 0;
   uint64_t lost_steps = 0;  // the step audit at rest (must stay 0)
