@@ -7,7 +7,6 @@
 #include <sstream>
 
 namespace volcomp::hosted {
-namespace {
 
 std::string Trim(const std::string& s) {
   size_t b = 0, e = s.size();
@@ -15,6 +14,8 @@ std::string Trim(const std::string& s) {
   while (e > b && std::isspace(static_cast<unsigned char>(s[e - 1]))) --e;
   return s.substr(b, e - b);
 }
+
+namespace {
 
 std::string Lower(std::string s) {
   for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));

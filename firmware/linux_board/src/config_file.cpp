@@ -22,6 +22,7 @@ using hosted::IniWriter;
 using hosted::ReadBool;
 using hosted::ReadChoice;
 using hosted::ReadInteger;
+using hosted::Trim;
 
 // An integer key within [low, high] into *out.
 template <typename T>
@@ -56,13 +57,6 @@ const char* TemperatureFileKey(uint8_t ch) {
       "temperature_file.1", "temperature_file.2", "temperature_file.3", "temperature_file.4",
       "temperature_file.5", "temperature_file.6", "temperature_file.7", "temperature_file.8"};
   return kKeys[ch];
-}
-
-std::string Trim(const std::string& s) {
-  size_t b = 0, e = s.size();
-  while (b < e && std::isspace(static_cast<unsigned char>(s[b]))) ++b;
-  while (e > b && std::isspace(static_cast<unsigned char>(s[e - 1]))) --e;
-  return s.substr(b, e - b);
 }
 
 // Reads one configuration text. Each step reads a part into config_ and stops at the first

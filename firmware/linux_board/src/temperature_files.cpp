@@ -9,15 +9,12 @@
 #include <chrono>
 #include <cstring>
 
+#include "volcomp/hosted/ini.hpp"
+
 namespace volcomp::linux_board {
 namespace {
 
-std::string Trim(const std::string& s) {
-  size_t b = 0, e = s.size();
-  while (b < e && std::isspace(static_cast<unsigned char>(s[b]))) ++b;
-  while (e > b && std::isspace(static_cast<unsigned char>(s[e - 1]))) --e;
-  return s.substr(b, e - b);
-}
+using hosted::Trim;
 
 // A whole decimal integer (optional '-'), at most 9 digits: millidegrees.
 bool ParseMillidegrees(const std::string& s, int64_t* out) {

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "demo_session.hpp"
 #include "summary_document.hpp"
 #include "volcomp/metrology/circular_report.hpp"
 #include "volcomp/sim/demo.hpp"
@@ -14,6 +15,7 @@
 namespace volcomp::sim {
 namespace {
 
+using demo::Fmt;
 using summary_document::At;
 using summary_document::Num;
 using tools::JsonValue;
@@ -231,12 +233,6 @@ JsonValue Thermal(const ThermalPhase& t) {
 }
 
 const std::string& Str(const JsonValue& v, const std::string& key);
-
-std::string Fmt(const char* format, double v) {
-  char b[160];
-  std::snprintf(b, sizeof b, format, v);
-  return b;
-}
 
 void PrintThermal(const JsonValue& t, std::ostream& out) {
   out << "\n== thermal: drift test, fit, verification with the firmware in the loop ===\n";

@@ -78,13 +78,12 @@ class ThermalPlant {
     f.id = 0x300u + world_->node_id();
     f.dlc = 8;
     for (size_t i = 0; i < 4; ++i) {
-      const int16_t v = i < readings_cC_.size() ? readings_cC_[i] : kNoReadingFrame;
+      const int16_t v = i < readings_cC_.size() ? readings_cC_[i] : thermal::kNoReading_cC;
       f.data[2 * i] = static_cast<uint8_t>(static_cast<uint16_t>(v) & 0xFF);
       f.data[2 * i + 1] = static_cast<uint8_t>(static_cast<uint16_t>(v) >> 8);
     }
     plc_->Send(f);
   }
-  static constexpr int16_t kNoReadingFrame = INT16_MIN;
 
   const ThermalLoopOptions& o_;
   World* world_;
@@ -144,9 +143,9 @@ Expected<ThermalLoopResult> RunThermalLoop(const ThermalLoopOptions& o, std::ost
   const std::vector<DriftCheckPoint> points =
       o.run.points.empty() ? DefaultDriftCheckPoints(world.machine()) : o.run.points;
 
-  uint64_t next_trace_ns = 0;
+  uint64_t next_rate_ns = 0;
   std::vector<double> last_c(points.size(), 0);
-  double last_trace_s = -1;
+  double last_rate_s = -1;
   r.faults.resize(o.faults.size());
   for (size_t i = 0; i < o.faults.size(); ++i) r.faults[i].injected = o.faults[i];
   std::vector<std::vector<double>> held_at(o.faults.size());
@@ -157,7 +156,7 @@ Expected<ThermalLoopResult> RunThermalLoop(const ThermalLoopOptions& o, std::ost
       c[k] = AppliedAt_um(world, points[k].axis, points[k].q_mm);
     return c;
   };
-  // Every reading period: the plant, then the fault watch; every second: the trace.
+  // Every reading period: the plant, then the fault watch; every second: the rate.
   world.SetClocked(period_ns, [&](uint64_t now_ns) {
     plant.Clock(now_ns);
     const double t = plant.cycle_s(now_ns);
@@ -177,29 +176,19 @@ Expected<ThermalLoopResult> RunThermalLoop(const ThermalLoopOptions& o, std::ost
             std::max(out.change_while_held_um, std::fabs(c[k] - held_at[i][k]));
       }
     }
-    if (now_ns < next_trace_ns) return;
-    next_trace_ns = now_ns + kSecond_ns;
-    ThermalTracePoint p;
-    p.time_s = t;
-    for (uint8_t a = 0; a < 3; ++a) {
-      p.offset_um[a] = th.correction().applied_offset_um(a);
-      p.slope_um_per_mm[a] = th.correction().applied_slope_um_per_mm(a);
-    }
-    p.fault_mask = th.channel_fault_mask();
-    p.holding = th.correction().status().holding;
-    p.fading = th.correction().status().fading;
-    r.trace.push_back(p);
+    if (now_ns < next_rate_ns) return;
+    next_rate_ns = now_ns + kSecond_ns;
     // The rate in the world's time: the activation's ramp-in before the cycle counts too.
     const std::vector<double> c = applied();
     const double w = 1e-9 * static_cast<double>(now_ns);
-    if (last_trace_s >= 0) {
+    if (last_rate_s >= 0) {
       for (size_t k = 0; k < points.size(); ++k) {
         double& m = r.max_rate_um_s[points[k].axis];
-        m = std::max(m, std::fabs(c[k] - last_c[k]) / (w - last_trace_s));
+        m = std::max(m, std::fabs(c[k] - last_c[k]) / (w - last_rate_s));
       }
     }
     last_c = c;
-    last_trace_s = w;
+    last_rate_s = w;
   });
 
   VOLCOMP_TRY(world.Start());

@@ -125,6 +125,8 @@ IniExpected<size_t> ReadChoice(const IniDocument& doc,
                                const std::vector<std::string>& names);
 /// Why `v` is outside [low, high] ("above the highest value 127"), or "".
 std::string RangeViolation(int64_t v, int64_t low, int64_t high);
+/// `s` without leading and trailing white space.
+std::string Trim(const std::string& s);
 
 /// An INI text: comments, sections, `key = value` lines (with a comment aligned after them).
 class IniWriter {

@@ -55,16 +55,6 @@ struct ThermalLoopOptions {
   std::vector<SensorFaultInjection> faults;
 };
 
-/// The board's applied thermal correction, sampled every second.
-struct ThermalTracePoint {
-  double time_s = 0;
-  double offset_um[3] = {0, 0, 0};
-  double slope_um_per_mm[3] = {0, 0, 0};
-  uint8_t fault_mask = 0;
-  bool holding = false;
-  bool fading = false;
-};
-
 struct FaultOutcome {
   SensorFaultInjection injected;
   double detected_after_s = -1;  // -1: never flagged while it lasted
@@ -75,7 +65,6 @@ struct FaultOutcome {
 
 struct ThermalLoopResult {
   ThermalRun run;  // the deviations the laser read with the board compensating
-  std::vector<ThermalTracePoint> trace;
   // Fastest change of the applied correction at each axis's check points, sampled every second
   // (the image's slew limit bounds it), um/s.
   double max_rate_um_s[3] = {0, 0, 0};
