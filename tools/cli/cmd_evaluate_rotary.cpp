@@ -1,8 +1,10 @@
 // `volcomp evaluate rotary FILE|-`: ISO 230-7 error motions of a spindle or rotary axis
 // (metrology/rotary_eval.hpp), with an optional Donaldson reversal, as text or JSON, and an HTML
 // report.
+#include <algorithm>
 #include <optional>
 #include <ostream>
+#include <string>
 
 #include "choice_option.hpp"
 #include "commands.hpp"
@@ -20,6 +22,30 @@ namespace {
 
 namespace m = volcomp::metrology;
 
+// --centres MRS,MIC,MCC (any of them, or "all"); PC and LSC are always evaluated.
+Expected<m::CentreSelection> ParseCentres(const std::string& list) {
+  m::CentreSelection c;
+  std::size_t start = 0;
+  while (start < list.size()) {
+    const std::size_t end = std::min(list.find(',', start), list.size());
+    const std::string name = list.substr(start, end - start);
+    if (name == "MRS" || name == "mrs") {
+      c.mrs = true;
+    } else if (name == "MIC" || name == "mic") {
+      c.mic = true;
+    } else if (name == "MCC" || name == "mcc") {
+      c.mcc = true;
+    } else if (name == "all") {
+      c = {true, true, true};
+    } else if (name != "PC" && name != "LSC" && name != "pc" && name != "lsc") {
+      return UsageFailure("--centres: unknown centre \"" + name +
+                          "\" (give PC, LSC, MRS, MIC, MCC or all, comma-separated)");
+    }
+    start = end + 1;
+  }
+  return c;
+}
+
 void EvaluateRotaryText(const JsonValue& data, std::ostream& out) { m::WriteRotaryText(out, data); }
 
 Expected<Output> RunEvaluateRotary(Args& args, Context& ctx) {
@@ -30,7 +56,8 @@ Expected<Output> RunEvaluateRotary(Args& args, Context& ctx) {
   const auto fsd_angle = args.Number("--fsd-angle-deg");
   o.tilt_distance_mm = args.Number("--tilt-distance-mm");
   o.face_radius_mm = args.Number("--face-radius-mm");
-  o.min_zone = args.Flag("--min-zone");
+  const bool min_zone = args.Flag("--min-zone");
+  const std::string centres = args.Value("--centres").value_or("");
   const auto reversal_file = args.Value("--reversal");
   const std::string reversal_channel = args.Value("--reversal-channel").value_or("");
   const std::string procedure = args.Value("--reversal-procedure").value_or("");
@@ -46,6 +73,8 @@ Expected<Output> RunEvaluateRotary(Args& args, Context& ctx) {
     }
     o.fsd_angle_deg = *fsd_angle;
   }
+  VOLCOMP_TRY_ASSIGN(o.centres, ParseCentres(centres));
+  o.centres.mrs = o.centres.mrs || min_zone;
   if (files.size() != 1) return UsageFailure("give exactly one data file (or - for stdin)");
   if (procedure != "P" && procedure != "S") {
     return UsageFailure("--reversal-procedure must be P or S");
@@ -90,8 +119,10 @@ const Command& EvaluateRotaryCommand() {
              {"--tilt-distance-mm", nullptr, "L", "mm", nullptr,
               "distance of the second radial plane (x2_um, y2_um) for tilt"},
              {"--face-radius-mm", nullptr, "R", "mm", nullptr, "radius of the face sensor"},
-             {"--min-zone", nullptr, nullptr, nullptr, nullptr,
-              "also evaluate about the minimum-zone centre"},
+             {"--centres", nullptr, "LIST", nullptr, "PC,LSC",
+              "centres to evaluate about, comma-separated: MRS (minimum zone), MIC (maximum "
+              "inscribed), MCC (minimum circumscribed) or all; PC and LSC always"},
+             {"--min-zone", nullptr, nullptr, nullptr, nullptr, "the same as --centres MRS"},
              {"--reversal", nullptr, "FILE2", nullptr, nullptr,
               "Donaldson reversal: the second (reversed) setup"},
              {"--reversal-channel", nullptr, "COLUMN", nullptr, "x_um",

@@ -17,16 +17,33 @@ TEST(MetrologyCli, EvaluateRotarySamplesIncludingReversal) {
                    "--tilt-distance-mm", "80", "--min-zone", "--json"});
   EXPECT_EQ(r.code, 0) << r.err;
   EXPECT_NE(r.out.find("\"tilt\""), std::string::npos);
-  EXPECT_NE(r.out.find("\"MZ\""), std::string::npos);
+  EXPECT_NE(r.out.find("\"MRS\""), std::string::npos);
   r = RunCli({"evaluate", "rotary", SamplePath("metrology/spindle_error_motion.csv"),
               "--tilt-distance-mm", "80", "--min-zone"});
   EXPECT_EQ(r.code, 0) << r.err;
-  EXPECT_NE(r.out.find("values about PC, LSC, MZ"), std::string::npos) << r.out;
-  EXPECT_NE(r.out.find("; MZ centre offset ("), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("values about PC, LSC, MRS;"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("centre offsets from PC [µm]: LSC ("), std::string::npos) << r.out;
   r = RunCli({"evaluate", "rotary", SamplePath("metrology/reversal_setup1.csv"), "--sensitive",
               "fixed", "--reversal", SamplePath("metrology/reversal_setup2.csv")});
   EXPECT_EQ(r.code, 0) << r.err;
   EXPECT_NE(r.out.find("Donaldson reversal"), std::string::npos) << r.out;
+}
+
+TEST(MetrologyCli, EvaluateRotaryAboutEveryCentre) {
+  auto r = RunCli({"evaluate", "rotary", SamplePath("metrology/spindle_error_motion.csv"),
+                   "--tilt-distance-mm", "80", "--centres", "all"});
+  EXPECT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("values about PC, LSC, MRS, MIC, MCC;"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("; MIC ("), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("; MCC ("), std::string::npos) << r.out;
+  r = RunCli({"evaluate", "rotary", SamplePath("metrology/spindle_error_motion.csv"), "--centres",
+              "MIC,MCC", "--json"});
+  EXPECT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("\"MIC\""), std::string::npos);
+  EXPECT_EQ(r.out.find("\"MRS\""), std::string::npos);
+  r = RunCli({"evaluate", "rotary", "x.csv", "--centres", "MIC,MZC"});
+  EXPECT_EQ(r.code, tools::kExitUsage);
+  EXPECT_NE(r.err.find("unknown centre \"MZC\""), std::string::npos) << r.err;
 }
 
 TEST(MetrologyCli, EvaluateRotaryBadOptionsAndInputs) {

@@ -40,15 +40,19 @@ const char* CentreName(CentreKind kind) {
       return "PC";
     case CentreKind::kLsc:
       return "LSC";
-    case CentreKind::kMz:
-      return "MZ";
+    case CentreKind::kMrs:
+      return "MRS";
+    case CentreKind::kMic:
+      return "MIC";
+    case CentreKind::kMcc:
+      return "MCC";
   }
   return "?";
 }
 
 Expected<ErrorMotion> AnalyseErrorMotion(const std::vector<double>& angle_deg,
                                          const Revolutions& u,
-                                         bool min_zone) {
+                                         const CentreSelection& centres) {
   const std::size_t n = angle_deg.size();
   if (u.empty()) return Fail(Error::kInvalidArgument, "error motion needs at least one revolution");
   if (n < 4) {
@@ -83,9 +87,17 @@ Expected<ErrorMotion> AnalyseErrorMotion(const std::vector<double>& angle_deg,
   em.lsc_mean = lsc.mean;
   em.pc = About(em, CentreKind::kPc, 0.0, 0.0);
   em.lsc = About(em, CentreKind::kLsc, lsc.a, lsc.b);
-  if (min_zone) {
-    VOLCOMP_TRY_ASSIGN(const CentreFit mz, FitMinimumZoneCentre(angle_deg, em.synchronous));
-    em.mz = About(em, CentreKind::kMz, mz.a, mz.b);
+  if (centres.mrs) {
+    VOLCOMP_TRY_ASSIGN(const CentreFit c, FitMinimumZoneCentre(angle_deg, em.synchronous));
+    em.mrs = About(em, CentreKind::kMrs, c.a, c.b);
+  }
+  if (centres.mic) {
+    VOLCOMP_TRY_ASSIGN(const CentreFit c, FitMaximumInscribedCentre(angle_deg, em.synchronous));
+    em.mic = About(em, CentreKind::kMic, c.a, c.b);
+  }
+  if (centres.mcc) {
+    VOLCOMP_TRY_ASSIGN(const CentreFit c, FitMinimumCircumscribedCentre(angle_deg, em.synchronous));
+    em.mcc = About(em, CentreKind::kMcc, c.a, c.b);
   }
   em.fundamental_value = 2.0 * std::hypot(lsc.a, lsc.b);
   em.fundamental_angle_deg = std::atan2(lsc.b, lsc.a) * 180.0 / kPi;
@@ -93,8 +105,18 @@ Expected<ErrorMotion> AnalyseErrorMotion(const std::vector<double>& angle_deg,
 }
 
 const CentreValues& ValuesAbout(const ErrorMotion& em, CentreKind kind) {
-  if (kind == CentreKind::kMz && em.mz) return *em.mz;
+  if (kind == CentreKind::kMrs && em.mrs) return *em.mrs;
+  if (kind == CentreKind::kMic && em.mic) return *em.mic;
+  if (kind == CentreKind::kMcc && em.mcc) return *em.mcc;
   return kind == CentreKind::kPc ? em.pc : em.lsc;
+}
+
+std::vector<const CentreValues*> ComputedCentres(const ErrorMotion& em) {
+  std::vector<const CentreValues*> c = {&em.pc, &em.lsc};
+  for (const auto* o : {&em.mrs, &em.mic, &em.mcc}) {
+    if (*o) c.push_back(&**o);
+  }
+  return c;
 }
 
 }  // namespace volcomp::metrology

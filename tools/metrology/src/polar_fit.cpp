@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 #include <set>
+#include <string>
 
 namespace volcomp::metrology {
 namespace {
@@ -104,16 +105,23 @@ Expected<std::vector<double>> SimplexDualPrices(const std::vector<std::vector<do
           }
         }
       }
-      if (r == m) return Fail(Error::kInvalidArgument, "minimum zone: unbounded linear program");
+      if (r == m) return Fail(Error::kInvalidArgument, "centre fit: unbounded linear program");
       pivot(r, e);
     }
-    return Fail(Error::kInvalidArgument, "minimum zone: simplex did not converge");
+    return Fail(Error::kInvalidArgument, "centre fit: simplex did not converge");
   };
   // Phase 1: maximize −Σ artificials.
   std::vector<double> cost1(cols, 0.0);
   for (std::size_t i = 0; i < m; ++i) cost1[n + i] = -1.0;
   reduced(cost1);
   VOLCOMP_TRY(run(cols));
+  // A positive artificial left at the optimum of phase 1: no w satisfies A·w = b (for the
+  // one-sided centres, all angles lie within a half circle).
+  for (std::size_t i = 0; i < m; ++i) {
+    if (basis[i] >= n && T[i][cols] > 1e-9) {
+      return Fail(Error::kInvalidArgument, "centre fit: infeasible linear program");
+    }
+  }
   // Drive remaining artificials out of the basis (they are at zero level).
   for (std::size_t i = 0; i < m; ++i) {
     if (basis[i] < n) continue;
@@ -136,7 +144,76 @@ Expected<std::vector<double>> SimplexDualPrices(const std::vector<std::vector<do
   return y;
 }
 
+// The one-sided centres on a profile q scaled to O(1) (q_j with angles c_j = cos θ_j,
+// s_j = sin θ_j): stage 1 is min u over (u, a, b) with u + a·c_j + b·s_j ≥ q_j (the MCC); stage
+// 2, among those centres, maximizes the inner bound l ≤ q_j − a·c_j − b·s_j (a tie-break that
+// only matters where stage 1 leaves a segment of centres). Both as dual prices of the simplex
+// above: min bᵀy s.t. Aᵀy ≥ cost has prices y. Returns {u, a, b}.
+Expected<CentreFit> CircumscribedOfScaled(const std::vector<double>& angle_deg,
+                                          const std::vector<double>& q) {
+  const std::size_t n = q.size();
+  std::vector<double> cs(n), sn(n);
+  for (std::size_t j = 0; j < n; ++j) {
+    cs[j] = std::cos(Rad(angle_deg[j]));
+    sn[j] = std::sin(Rad(angle_deg[j]));
+  }
+  std::vector<std::vector<double>> A(3, std::vector<double>(n, 0.0));
+  for (std::size_t j = 0; j < n; ++j) A[0][j] = 1.0, A[1][j] = cs[j], A[2][j] = sn[j];
+  VOLCOMP_TRY_ASSIGN(const std::vector<double> y1, SimplexDualPrices(A, {1.0, 0.0, 0.0}, q));
+  const double u = y1[0] + 1e-12;  // round-off room for stage 2's feasibility
+  // Stage 2: y = (−l, a, b), min −l; lower rows (1, −c_j, −s_j)·y ≥ −q_j, upper rows
+  // (0, c_j, s_j)·y ≥ q_j − u.
+  std::vector<std::vector<double>> A2(3, std::vector<double>(2 * n, 0.0));
+  std::vector<double> cost2(2 * n);
+  for (std::size_t j = 0; j < n; ++j) {
+    A2[0][j] = 1.0, A2[1][j] = -cs[j], A2[2][j] = -sn[j];
+    A2[1][n + j] = cs[j], A2[2][n + j] = sn[j];
+    cost2[j] = -q[j];
+    cost2[n + j] = q[j] - u;
+  }
+  VOLCOMP_TRY_ASSIGN(const std::vector<double> y2, SimplexDualPrices(A2, {1.0, 0.0, 0.0}, cost2));
+  return CentreFit{y1[0], y2[1], y2[2]};
+}
+
+enum class Side { kCircumscribed, kInscribed };
+
+// MCC directly; MIC as the MCC of −p (max_c min_j r_j(p) = −min_c max_j r_j(−p), centre negated).
+Expected<CentreFit> OneSidedCentre(const std::vector<double>& angle_deg,
+                                   const std::vector<double>& p,
+                                   Side side,
+                                   const char* what) {
+  if (angle_deg.size() != p.size() || DistinctAngles(angle_deg) < 4) {
+    return Fail(Error::kInvalidArgument, std::string(what) + " needs at least 4 distinct angles");
+  }
+  VOLCOMP_TRY_ASSIGN(const CentreFit lsc, FitLeastSquaresCentre(angle_deg, p));
+  const double sign = side == Side::kCircumscribed ? 1.0 : -1.0;
+  double scale = 0.0;
+  for (double v : p) scale = std::max(scale, std::fabs(v - lsc.mean));
+  if (!(scale > 0.0)) return lsc;
+  std::vector<double> q(p.size());
+  for (std::size_t j = 0; j < p.size(); ++j) q[j] = sign * (p[j] - lsc.mean) / scale;
+  const auto c = CircumscribedOfScaled(angle_deg, q);
+  if (!c.ok()) {
+    return Fail(Error::kInvalidArgument,
+                std::string(what) +
+                    ": no centre (the angles must not all lie within a half "
+                    "circle: " +
+                    c.error().message + ")");
+  }
+  return CentreFit{lsc.mean + sign * c->mean * scale, sign * c->a * scale, sign * c->b * scale};
+}
+
 }  // namespace
+
+Expected<CentreFit> FitMinimumCircumscribedCentre(const std::vector<double>& angle_deg,
+                                                  const std::vector<double>& p) {
+  return OneSidedCentre(angle_deg, p, Side::kCircumscribed, "minimum circumscribed centre");
+}
+
+Expected<CentreFit> FitMaximumInscribedCentre(const std::vector<double>& angle_deg,
+                                              const std::vector<double>& p) {
+  return OneSidedCentre(angle_deg, p, Side::kInscribed, "maximum inscribed centre");
+}
 
 Expected<CentreFit> FitLeastSquaresCentre(const std::vector<double>& angle_deg,
                                           const std::vector<double>& p) {

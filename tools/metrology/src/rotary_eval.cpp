@@ -90,7 +90,7 @@ Expected<RotaryEvaluation> EvaluateRotary(const RotaryRecord& rec, const RotaryO
     m.profile = std::move(profile);
     m.preferred = preferred;
     m.report_fundamental = fundamental;
-    VOLCOMP_TRY_ASSIGN(m.motion, AnalyseErrorMotion(rec.angle_deg, u, o.min_zone));
+    VOLCOMP_TRY_ASSIGN(m.motion, AnalyseErrorMotion(rec.angle_deg, u, o.centres));
     ev.measurements.push_back(std::move(m));
     return Outcome::Ok();
   };

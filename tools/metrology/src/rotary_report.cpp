@@ -27,12 +27,6 @@ JsonValue CentreJson(const CentreValues& v) {
   return j;
 }
 
-std::vector<const CentreValues*> Centres(const ErrorMotion& m) {
-  std::vector<const CentreValues*> c = {&m.pc, &m.lsc};
-  if (m.mz) c.push_back(&*m.mz);
-  return c;
-}
-
 }  // namespace
 
 JsonValue RotaryJson(const RotaryEvaluation& ev, const std::optional<ReversalResult>& reversal) {
@@ -48,7 +42,13 @@ JsonValue RotaryJson(const RotaryEvaluation& ev, const std::optional<ReversalRes
   if (ev.options.sensitive == SensitiveDirection::kFixed) {
     j.Set("fsd_angle_deg", ev.options.fsd_angle_deg);
   }
-  j.Set("min_zone", ev.options.min_zone);
+  JsonValue centres = JsonValue::Array();
+  centres.Push("PC");
+  centres.Push("LSC");
+  if (ev.options.centres.mrs) centres.Push("MRS");
+  if (ev.options.centres.mic) centres.Push("MIC");
+  if (ev.options.centres.mcc) centres.Push("MCC");
+  j.Set("centres", std::move(centres));
   JsonValue measurements = JsonValue::Object();
   for (const auto& m : ev.measurements) {
     const ErrorMotion& em = m.motion;
@@ -66,7 +66,8 @@ JsonValue RotaryJson(const RotaryEvaluation& ev, const std::optional<ReversalRes
     o.Set("fundamental_angle_deg", em.fundamental_angle_deg);
     o.Set("fundamental_is_axial_value", m.report_fundamental);
     JsonValue about = JsonValue::Object();
-    for (const CentreValues* c : Centres(em)) about.Set(CentreName(c->kind), CentreJson(*c));
+    for (const CentreValues* c : ComputedCentres(em))
+      about.Set(CentreName(c->kind), CentreJson(*c));
     o.Set("about", std::move(about));
     o.Set("angle_deg", JsonValue::Numbers(em.angle_deg));
     o.Set("synchronous", JsonValue::Numbers(em.synchronous));
@@ -101,13 +102,17 @@ JsonValue RotaryJson(const RotaryEvaluation& ev, const std::optional<ReversalRes
 }
 
 void WriteRotaryText(std::ostream& out, const JsonValue& ev) {
-  const bool min_zone = json::At(ev, "min_zone").boolean;
   out << "ISO 230-7 error motion: " << json::Text(ev, "source") << "\n";
   const JsonValue& conditions = json::At(ev, "conditions");
   if (!conditions.object.empty()) out << "conditions: " << ConditionsText(conditions) << "\n";
   out << json::Integer(ev, "revolutions") << " revolution(s) × "
-      << json::Integer(ev, "samples_per_revolution") << " angles; values about PC, LSC"
-      << (min_zone ? ", MZ" : "") << "; * marks the preferred centre of Table 1\n";
+      << json::Integer(ev, "samples_per_revolution") << " angles; values about";
+  const char* sep = " ";
+  for (const JsonValue& c : json::At(ev, "centres").array) {
+    out << sep << c.string;
+    sep = ", ";
+  }
+  out << "; * marks the preferred centre of Table 1\n";
   for (const auto& [key, m] : json::At(ev, "measurements").object) {
     const std::string unit = json::Text(m, "unit") == "um" ? "µm" : "µrad";
     const int d = Decimals(unit);
@@ -130,12 +135,13 @@ void WriteRotaryText(std::ostream& out, const JsonValue& ev) {
     row("total       ", "total");
     row("inner       ", "inner");
     row("outer       ", "outer");
-    const JsonValue& lsc = json::At(about, "LSC");
-    out << "  LSC centre offset (" << FormatFixed(json::Number(lsc, "centre_offset_x"), d) << ", "
-        << FormatFixed(json::Number(lsc, "centre_offset_y"), d) << ") " << unit;
-    if (const JsonValue* mz = about.get("MZ")) {
-      out << "; MZ centre offset (" << FormatFixed(json::Number(*mz, "centre_offset_x"), d) << ", "
-          << FormatFixed(json::Number(*mz, "centre_offset_y"), d) << ")";
+    out << "  centre offsets from PC [" << unit << "]:";
+    sep = " ";
+    for (const auto& [centre, values] : about.object) {
+      if (centre == "PC") continue;
+      out << sep << centre << " (" << FormatFixed(json::Number(values, "centre_offset_x"), d)
+          << ", " << FormatFixed(json::Number(values, "centre_offset_y"), d) << ")";
+      sep = "; ";
     }
     out << "\n";
     out << "  fundamental "
@@ -176,7 +182,7 @@ void AddRotarySections(report::HtmlPage* page,
     page->Heading(2, m.name + " error motion");
     page->Paragraph(m.profile + ".");
     std::vector<std::vector<std::string>> rows;
-    for (const CentreValues* c : Centres(em)) {
+    for (const CentreValues* c : ComputedCentres(em)) {
       rows.push_back(
           {std::string(CentreName(c->kind)) + (c->kind == m.preferred ? " (preferred)" : ""),
            FormatFixed(c->synchronous, d), FormatFixed(em.asynchronous_value, d),
@@ -217,7 +223,9 @@ void AddRotarySections(report::HtmlPage* page,
                         pref.b, lo - em.lsc_mean, hi - em.lsc_mean, "#2ca02c"});
     pc.centres.push_back({"PC", 0.0, 0.0, "#000000"});
     pc.centres.push_back({"LSC", em.lsc.a, em.lsc.b, "#d62728"});
-    if (em.mz) pc.centres.push_back({"MZ", em.mz->a, em.mz->b, "#ff7f0e"});
+    if (em.mrs) pc.centres.push_back({"MRS", em.mrs->a, em.mrs->b, "#ff7f0e"});
+    if (em.mic) pc.centres.push_back({"MIC", em.mic->a, em.mic->b, "#9467bd"});
+    if (em.mcc) pc.centres.push_back({"MCC", em.mcc->a, em.mcc->b, "#8c564b"});
     page->Figure(pc.Render(),
                  "Polar plot about a base circle (r0 arbitrary): total motion "
                  "(dots), synchronous plot, centres and the two circles of the "

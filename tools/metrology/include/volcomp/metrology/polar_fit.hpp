@@ -33,6 +33,21 @@ Expected<CentreFit> FitLeastSquaresCentre(const std::vector<double>& angle_deg,
 Expected<CentreFit> FitMinimumZoneCentre(const std::vector<double>& angle_deg,
                                          const std::vector<double>& p);
 
+/// Minimum circumscribed circle centre (MCC, §3.7.7): minimizes the outer radius
+/// u = max_j (p_j − a·cos θ_j − b·sin θ_j), the smallest circle about the centre that contains the
+/// profile. Where several centres give the same smallest circle (a profile touching it at only
+/// two opposite angles), the one with the largest inner radius, i.e. the smallest value, is taken.
+/// The returned mean is u. Needs at least 4 distinct angles that do not all lie within a half
+/// circle (otherwise the circle can shrink without bound: kInvalidArgument).
+Expected<CentreFit> FitMinimumCircumscribedCentre(const std::vector<double>& angle_deg,
+                                                  const std::vector<double>& p);
+
+/// Maximum inscribed circle centre (MIC, §3.7.6): maximizes the inner radius
+/// l = min_j (p_j − a·cos θ_j − b·sin θ_j), the largest circle about the centre inside the profile;
+/// ties broken by the smallest outer radius. The returned mean is l. Same needs as the MCC.
+Expected<CentreFit> FitMaximumInscribedCentre(const std::vector<double>& angle_deg,
+                                              const std::vector<double>& p);
+
 /// Radial deviations of p about the centre (a, b): p_j − a·cos θ_j − b·sin θ_j.
 std::vector<double> ResidualsAbout(const std::vector<double>& angle_deg,
                                    const std::vector<double>& p,

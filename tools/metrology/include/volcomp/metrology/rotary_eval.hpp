@@ -23,7 +23,7 @@ struct RotaryOptions {
   double fsd_angle_deg = 0.0;              // θ_f for a fixed sensitive direction
   std::optional<double> tilt_distance_mm;  // L between the planes of x/y and x2/y2
   std::optional<double> face_radius_mm;    // R of the face channel
-  bool min_zone = false;                   // also compute the MZ (MRS) centre and values
+  CentreSelection centres;                 // MRS, MIC, MCC besides PC and LSC
 };
 
 struct RotaryMeasurement {

@@ -1,7 +1,7 @@
 // Output of an ISO 230-7 evaluation: JSON (every value about every centre, centres,
 // fundamentals, reversal), the text laid out from that JSON, and HTML with polar plots (total
-// cloud, synchronous plot, PC and LSC/MZ centres with the two-circle zone about the preferred
-// centre).
+// cloud, synchronous plot, PC, LSC and the chosen MRS/MIC/MCC centres with the two-circle zone
+// about the preferred centre).
 #pragma once
 
 #include <optional>
