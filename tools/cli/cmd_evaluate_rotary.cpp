@@ -5,6 +5,7 @@
 #include <optional>
 #include <ostream>
 #include <string>
+#include <utility>
 
 #include "choice_option.hpp"
 #include "commands.hpp"
@@ -46,6 +47,18 @@ Expected<m::CentreSelection> ParseCentres(const std::string& list) {
   return c;
 }
 
+// A number from the `# key: value` preamble, nullopt when absent; not a number: a failure.
+Expected<std::optional<double>> PreambleNumber(const m::TestConditions& c, const char* key) {
+  const auto text = c.Find(key);
+  if (!text) return std::optional<double>();
+  const auto v = tools::ParseDouble(*text);
+  if (!v || !(*v >= 0.0)) {
+    return Fail(Error::kInputInvalid,
+                std::string("preamble \"") + key + ": " + *text + "\" is not a number >= 0");
+  }
+  return std::optional<double>(*v);
+}
+
 void EvaluateRotaryText(const JsonValue& data, std::ostream& out) { m::WriteRotaryText(out, data); }
 
 Expected<Output> RunEvaluateRotary(Args& args, Context& ctx) {
@@ -58,6 +71,13 @@ Expected<Output> RunEvaluateRotary(Args& args, Context& ctx) {
   o.face_radius_mm = args.Number("--face-radius-mm");
   const bool min_zone = args.Flag("--min-zone");
   const std::string centres = args.Value("--centres").value_or("");
+  const std::string axis = args.Value("--axis").value_or("");
+  o.static_test = args.Flag("--static");
+  o.uncertainty.device_calibration_um = args.Number("--instrument-u-um");
+  o.uncertainty.device_range_um = args.Number("--instrument-range-um");
+  const auto setup_u = args.Number("--setup-u-um");
+  o.uncertainty.drift_range_um = args.Number("--drift-range-um");
+  o.uncertainty.literal_f6 = args.Flag("--f6-as-printed");
   const auto reversal_file = args.Value("--reversal");
   const std::string reversal_channel = args.Value("--reversal-channel").value_or("");
   const std::string procedure = args.Value("--reversal-procedure").value_or("");
@@ -74,6 +94,11 @@ Expected<Output> RunEvaluateRotary(Args& args, Context& ctx) {
     o.fsd_angle_deg = *fsd_angle;
   }
   VOLCOMP_TRY_ASSIGN(o.centres, ParseCentres(centres));
+  VOLCOMP_TRY_ASSIGN(o.axis,
+                     ParseChoice<m::RotaryAxisKind>("--axis", axis,
+                                                    {{"spindle", m::RotaryAxisKind::kSpindle},
+                                                     {"table", m::RotaryAxisKind::kTable},
+                                                     {"head", m::RotaryAxisKind::kHead}}));
   o.centres.mrs = o.centres.mrs || min_zone;
   if (files.size() != 1) return UsageFailure("give exactly one data file (or - for stdin)");
   if (procedure != "P" && procedure != "S") {
@@ -88,8 +113,22 @@ Expected<Output> RunEvaluateRotary(Args& args, Context& ctx) {
 
   VOLCOMP_TRY_ASSIGN(const tools::CsvTable table, ReadCsvArgument(files[0], ctx));
   VOLCOMP_TRY_ASSIGN(const m::RotaryRecord rec, m::ReadRotaryCsv(table));
+  const m::TestConditions conditions = m::ConditionsFromPreamble(table);
+  // The uncertainty inputs an option does not give come from the file's preamble.
+  for (auto [value, key] : {std::pair{&o.uncertainty.device_calibration_um, "instrument_u_um"},
+                            std::pair{&o.uncertainty.device_range_um, "instrument_range_um"},
+                            std::pair{&o.uncertainty.drift_range_um, "drift_range_um"}}) {
+    if (*value) continue;
+    VOLCOMP_TRY_ASSIGN(*value, PreambleNumber(conditions, key));
+  }
+  if (setup_u) {
+    o.uncertainty.setup_um = *setup_u;
+  } else {
+    VOLCOMP_TRY_ASSIGN(const auto v, PreambleNumber(conditions, "setup_u_um"));
+    o.uncertainty.setup_um = v.value_or(0.0);
+  }
   VOLCOMP_TRY_ASSIGN(m::RotaryEvaluation ev, m::EvaluateRotary(rec, o));
-  ev.conditions = m::ConditionsFromPreamble(table);
+  ev.conditions = conditions;
   std::optional<m::ReversalResult> reversal;
   if (reversal_file) {
     VOLCOMP_TRY_ASSIGN(const tools::CsvTable table2, ReadCsvArgument(*reversal_file, ctx));
@@ -123,6 +162,22 @@ const Command& EvaluateRotaryCommand() {
               "centres to evaluate about, comma-separated: MRS (minimum zone), MIC (maximum "
               "inscribed), MCC (minimum circumscribed) or all; PC and LSC always"},
              {"--min-zone", nullptr, nullptr, nullptr, nullptr, "the same as --centres MRS"},
+             {"--axis", nullptr, "spindle|table|head", nullptr, "spindle",
+              "what turns: the rule for the number of revolutions (spindle 20; table 4+4 or "
+              "5+5 CW+CCW; head 2+2 or 5+5)"},
+             {"--static", nullptr, nullptr, nullptr, nullptr,
+              "a static test (annex E): stops turned by hand, >= 2 revolutions, >= 8 stops"},
+             {"--instrument-u-um", nullptr, "U", "um", nullptr,
+              "the instrument's calibration U at k = 2 (annex F.1; or preamble instrument_u_um)"},
+             {"--instrument-range-um", nullptr, "R", "um", nullptr,
+              "the maker's error range: U = 0.6 R (F.2; or preamble instrument_range_um)"},
+             {"--setup-u-um", nullptr, "U", "um", "0",
+              "setup contributors at k = 2: artefact roundness, alignment (or preamble "
+              "setup_u_um)"},
+             {"--drift-range-um", nullptr, "E", "um", nullptr,
+              "range E_VE of a drift test: U_EVE = 0.6 E (F.3; or preamble drift_range_um)"},
+             {"--f6-as-printed", nullptr, nullptr, nullptr, nullptr,
+              "single-plot value U by F.6 as printed instead of 1.4 U_single"},
              {"--reversal", nullptr, "FILE2", nullptr, nullptr,
               "Donaldson reversal: the second (reversed) setup"},
              {"--reversal-channel", nullptr, "COLUMN", nullptr, "x_um",

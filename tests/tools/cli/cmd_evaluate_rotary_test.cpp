@@ -1,6 +1,7 @@
 // `volcomp evaluate rotary` run as main() runs it, on the ISO 230-7 samples of samples/metrology/.
 #include <gtest/gtest.h>
 
+#include <fstream>
 #include <string>
 
 #include "cli_runner.hpp"
@@ -64,6 +65,36 @@ TEST(MetrologyCli, EvaluateRotaryBadOptionsAndInputs) {
   EXPECT_NE(r.err.find("<stdin>: a rotating sensitive direction needs column y_um"),
             std::string::npos)
       << r.err;
+}
+
+// The uncertainty inputs from the options or the file's preamble; each value's U in the text and
+// the JSON; a preamble value that is not a number is refused naming it.
+TEST(MetrologyCli, EvaluateRotaryUncertaintyFromOptionsOrPreamble) {
+  const std::string dir = ::testing::TempDir();
+  const std::string file = dir + "/rotary_u.csv";
+  std::string csv = "# instrument_u_um: 0.1\n# drift_range_um: 0.5\nrev,angle_deg,z_um\n";
+  for (int k = 1; k <= 4; ++k) {
+    for (int j = 0; j < 8; ++j) csv += std::to_string(k) + "," + std::to_string(45 * j) + ",0\n";
+  }
+  { std::ofstream(file) << csv; }
+  // U_sync value = 1.4·sqrt(0.1² + 0.3²/4) = 0.252389; single = 1.4·sqrt(0.01 + 0.09) = 0.442719.
+  auto r = RunCli({"evaluate", "rotary", file});
+  EXPECT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("U (k = 2, annex F): synchronous values ±0.2524, "
+                       "total/inner/outer/asynchronous values ±0.4427 µm"),
+            std::string::npos)
+      << r.out;
+  r = RunCli({"evaluate", "rotary", file, "--instrument-u-um", "0.2", "--json"});
+  EXPECT_EQ(r.code, 0) << r.err;
+  // 1.4·sqrt(0.04 + 0.0225) = 0.35
+  EXPECT_NE(r.out.find("\"synchronous_value\": 0.35"), std::string::npos) << r.out;
+  { std::ofstream(file) << "# drift_range_um: a lot\n" + csv; }
+  r = RunCli({"evaluate", "rotary", file});
+  EXPECT_NE(r.code, 0);
+  EXPECT_NE(r.err.find("preamble \"drift_range_um: a lot\" is not a number"), std::string::npos)
+      << r.err;
+  r = RunCli({"evaluate", "rotary", file, "--axis", "lathe"});
+  EXPECT_EQ(r.code, tools::kExitUsage);
 }
 
 }  // namespace

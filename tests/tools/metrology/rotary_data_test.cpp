@@ -67,5 +67,31 @@ TEST(MetrologyRotaryInput, Problems) {
   ExpectFailure(Load("rev,angle_deg,x_um\n"), Error::kInputInvalid, {"r.csv:1:", "no data rows"});
 }
 
+// The direction column: each revolution's sense; a value that is not one, or a change of sense
+// within a revolution, is refused with the line.
+TEST(MetrologyRotaryInput, DirectionOfRotation) {
+  std::string csv = "rev,angle_deg,direction,x_um\n";
+  for (int k = 1; k <= 3; ++k) {
+    for (int j = 0; j < 4; ++j) {
+      csv +=
+          std::to_string(k) + "," + std::to_string(90 * j) + "," + (k == 2 ? "CCW" : "+") + ",0\n";
+    }
+  }
+  const RotaryRecord r = ValueOf(Load(csv));
+  ASSERT_EQ(r.rev_sense.size(), 3u);
+  EXPECT_EQ(r.rev_sense[0], RotationSense::kCw);
+  EXPECT_EQ(r.rev_sense[1], RotationSense::kCcw);
+  EXPECT_EQ(r.rev_sense[2], RotationSense::kCw);
+  const RotaryRecord cw = RevolutionsTurning(r, RotationSense::kCw);
+  EXPECT_EQ(cw.revs, (std::vector<long long>{1, 3}));
+  EXPECT_EQ(cw.channels.at("x_um").size(), 2u);
+  // Line 7 is revolution 2's second row (header on line 1).
+  ExpectFailure(Load(Replace(csv, "2,90,CCW", "2,90,CW")), Error::kInputInvalid,
+                {"r.csv:7", "CW within revolution 2, which began CCW"});
+  ExpectFailure(Load(Replace(csv, "2,90,CCW", "2,90,left")), Error::kInputInvalid,
+                {"r.csv:7", "\"left\" is not CW or CCW"});
+  EXPECT_EQ(ValueOf(Load(Good())).rev_sense[0], RotationSense::kUnstated);
+}
+
 }  // namespace
 }  // namespace volcomp::metrology

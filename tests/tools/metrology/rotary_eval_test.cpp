@@ -203,5 +203,101 @@ TEST(MetrologyRotaryEvaluation, ReversalOfTwoRecordsNeedsTheSameAnglesAndTheChan
                 Error::kInvalidArgument, {"same angles"});
 }
 
+// CW revolutions carry 2·cos 3θ, CCW ones 1·cos 3θ (µm): about LSC the synchronous values are 4
+// and 2 per direction and 3 pooled (the mean, 1.5·cos 3θ); the pooled record's asynchronous
+// value is the largest spread between the two, (2 − 1)·|cos 3θ| = 1; and the note on pooling.
+TEST(MetrologyRotaryEvaluation, ValuesPerDirectionAndPooled) {
+  const int n = 36;
+  Revolutions u = Make(n, 2, [](double t) { return 2.0 * std::cos(3 * t); });
+  const Revolutions ccw = Make(n, 2, [](double t) { return std::cos(3 * t); });
+  u.insert(u.end(), ccw.begin(), ccw.end());
+  RotaryRecord rec = Record(n, 4, {{"z_um", u}});
+  rec.rev_sense = {RotationSense::kCw, RotationSense::kCw, RotationSense::kCcw,
+                   RotationSense::kCcw};
+  const auto ev = ValueOf(EvaluateRotary(rec, RotaryOptions{}));
+  EXPECT_EQ(ev.revolutions_cw, 2);
+  EXPECT_EQ(ev.revolutions_ccw, 2);
+  EXPECT_NEAR(ev.measurements[0].motion.pc.synchronous, 3.0, 1e-9);
+  EXPECT_NEAR(ev.measurements[0].motion.asynchronous_value, 1.0, 1e-9);
+  ASSERT_EQ(ev.by_direction.size(), 2u);
+  EXPECT_EQ(ev.by_direction[0].sense, RotationSense::kCw);
+  EXPECT_EQ(ev.by_direction[0].revolutions, 2);
+  EXPECT_NEAR(ev.by_direction[0].measurements[0].motion.pc.synchronous, 4.0, 1e-9);
+  EXPECT_NEAR(ev.by_direction[1].measurements[0].motion.pc.synchronous, 2.0, 1e-9);
+  EXPECT_NEAR(ev.by_direction[1].measurements[0].motion.asynchronous_value, 0.0, 1e-12);
+  bool noted = false;
+  for (const auto& w : ev.warnings)
+    noted |= w.find("does not say whether CW and CCW") != std::string::npos;
+  EXPECT_TRUE(noted);
+}
+
+bool Warns(const RotaryEvaluation& ev, const std::string& text) {
+  for (const auto& w : ev.warnings) {
+    if (w.find(text) != std::string::npos) return true;
+  }
+  return false;
+}
+
+// The revolution rules of the kind of axis: spindles 20; tables radial 4 + 4, axial 5 + 5;
+// heads radial 2 + 2; static tests 2 revolutions of 8 stops.
+TEST(MetrologyRotaryEvaluation, NumberOfRevolutionsRules) {
+  const auto flat = [](int k) { return Make(8, k, [](double) { return 0.0; }); };
+  RotaryOptions spindle;
+  EXPECT_TRUE(Warns(ValueOf(EvaluateRotary(Record(8, 19, {{"z_um", flat(19)}}), spindle)),
+                    "19 revolution(s): ISO 230-7 asks at least 20"));
+  EXPECT_FALSE(Warns(ValueOf(EvaluateRotary(Record(8, 20, {{"z_um", flat(20)}}), spindle)),
+                     "asks at least 20"));
+  RotaryOptions table;
+  table.axis = RotaryAxisKind::kTable;
+  RotaryRecord rec = Record(8, 7, {{"x_um", flat(7)}, {"y_um", flat(7)}, {"z_um", flat(7)}});
+  rec.rev_sense.assign(7, RotationSense::kCw);
+  for (int k = 3; k < 7; ++k) rec.rev_sense[k] = RotationSense::kCcw;
+  const auto t = ValueOf(EvaluateRotary(rec, table));
+  EXPECT_TRUE(Warns(t,
+                    "3 CW and 4 CCW revolutions: ISO 230-7 asks at least 4 CW + 4 CCW for the "
+                    "radial and tilt error motion of a rotary table (6.3.2, 6.4.2)"));
+  EXPECT_TRUE(Warns(t, "asks at least 5 CW + 5 CCW for the axial error motion of a rotary table"));
+  RotaryOptions head;
+  head.axis = RotaryAxisKind::kHead;
+  const auto h = ValueOf(EvaluateRotary(rec, head));
+  EXPECT_FALSE(Warns(h, "2 CW + 2 CCW"));  // 3 + 4 meets 2 + 2
+  EXPECT_TRUE(Warns(h, "5 CW + 5 CCW for the axial error motion of a swivelling head"));
+  RotaryRecord unstated = Record(8, 8, {{"x_um", flat(8)}, {"y_um", flat(8)}});
+  EXPECT_TRUE(Warns(ValueOf(EvaluateRotary(unstated, table)),
+                    "(8 without a direction; add a direction column)"));
+  RotaryOptions stat;
+  stat.static_test = true;
+  const auto s = ValueOf(
+      EvaluateRotary(Record(6, 1, {{"z_um", Make(6, 1, [](double) { return 0.0; })}}), stat));
+  EXPECT_TRUE(Warns(s, "1 revolution(s): a static test asks at least 2 (ISO 230-7 E.2)"));
+  EXPECT_TRUE(Warns(s, "6 stops per revolution: a static test asks at least 8"));
+  EXPECT_FALSE(Warns(s, "asks at least 20"));
+}
+
+// Annex F on each value: radial in µm as stated, tilt scaled by √2·1000/L into µrad; no
+// instrument, no U and a warning.
+TEST(MetrologyRotaryEvaluation, EachValueCarriesItsUncertainty) {
+  const int n = 16, k = 4;
+  const auto x = Make(n, k, [](double t) { return std::cos(2 * t); });
+  const auto x2 = Make(n, k, [](double t) { return 0.5 * std::cos(2 * t); });
+  RotaryOptions o;
+  o.sensitive = SensitiveDirection::kFixed;
+  o.tilt_distance_mm = 100.0;
+  const RotaryRecord rec = Record(n, k, {{"x_um", x}, {"x2_um", x2}});
+  const auto none = ValueOf(EvaluateRotary(rec, o));
+  EXPECT_FALSE(none.measurements[0].u);
+  EXPECT_TRUE(Warns(none, "no measurement uncertainty"));
+  o.uncertainty.device_calibration_um = 0.1;
+  o.uncertainty.drift_range_um = 0.5;  // U_EVE 0.3
+  const auto ev = ValueOf(EvaluateRotary(rec, o));
+  ASSERT_EQ(ev.measurements.size(), 3u);  // radial, plane 2, tilt
+  ASSERT_TRUE(ev.measurements[0].u);
+  // U_sync value = 1.4·sqrt(0.01 + 0.09/4) = 1.4·0.180278 = 0.252389 µm.
+  EXPECT_NEAR(ev.measurements[0].u->synchronous_value, 0.252389, 1e-6);
+  EXPECT_EQ(ev.measurements[2].key, "tilt");
+  EXPECT_NEAR(ev.measurements[2].u->synchronous_value, 0.252389 * std::sqrt(2.0) * 10.0, 1e-5);
+  EXPECT_FALSE(Warns(ev, "no measurement uncertainty"));
+}
+
 }  // namespace
 }  // namespace volcomp::metrology

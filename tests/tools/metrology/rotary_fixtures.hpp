@@ -34,6 +34,7 @@ inline RotaryRecord Record(int n, int k_revs, const std::map<std::string, Revolu
   r.source = "synthetic";
   r.angle_deg = Angles(n);
   for (int k = 0; k < k_revs; ++k) r.revs.push_back(k + 1);
+  r.rev_sense.assign(k_revs, RotationSense::kUnstated);
   r.channels = channels;
   return r;
 }

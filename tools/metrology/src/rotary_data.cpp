@@ -2,8 +2,10 @@
 #include "volcomp/metrology/rotary_data.hpp"
 
 #include <cmath>
+#include <optional>
 #include <set>
 #include <sstream>
+#include <string>
 
 #include "volcomp/report/format.hpp"
 
@@ -20,11 +22,38 @@ const std::vector<std::string>& RotaryChannelNames() {
   return kNames;
 }
 
+const char* RotationSenseName(RotationSense sense) {
+  switch (sense) {
+    case RotationSense::kCw:
+      return "CW";
+    case RotationSense::kCcw:
+      return "CCW";
+    case RotationSense::kUnstated:
+      break;
+  }
+  return "unstated";
+}
+
+RotaryRecord RevolutionsTurning(const RotaryRecord& record, RotationSense sense) {
+  RotaryRecord r = record;
+  r.revs.clear();
+  r.rev_sense.clear();
+  for (auto& [name, revs] : r.channels) revs.clear();
+  for (std::size_t k = 0; k < record.revs.size(); ++k) {
+    if (record.rev_sense[k] != sense) continue;
+    r.revs.push_back(record.revs[k]);
+    r.rev_sense.push_back(sense);
+    for (auto& [name, revs] : r.channels) revs.push_back(record.channels.at(name)[k]);
+  }
+  return r;
+}
+
 Expected<RotaryRecord> ReadRotaryCsv(const tools::CsvTable& t) {
   RotaryRecord rec;
   rec.source = t.source();
   VOLCOMP_TRY_ASSIGN(const std::size_t rev_col, t.Require("rev"));
   VOLCOMP_TRY_ASSIGN(const std::size_t ang_col, t.Require("angle_deg"));
+  const std::optional<std::size_t> dir_col = t.find("direction");
   std::vector<std::pair<std::string, std::size_t>> chans;
   for (const auto& name : RotaryChannelNames()) {
     if (const auto c = t.find(name)) chans.push_back({name, *c});
@@ -76,6 +105,18 @@ Expected<RotaryRecord> ReadRotaryCsv(const tools::CsvTable& t) {
       return Fail(t.LineFailure(row.line(),
                                 "column \"angle_deg\": " + Num(angle) + " is outside [0, 360)"));
     }
+    RotationSense sense = RotationSense::kUnstated;
+    if (dir_col) {
+      const std::string& d = row.fields()[*dir_col];
+      if (d == "CW" || d == "cw" || d == "+") {
+        sense = RotationSense::kCw;
+      } else if (d == "CCW" || d == "ccw" || d == "-" || d == "−") {
+        sense = RotationSense::kCcw;
+      } else {
+        return Fail(t.LineFailure(
+            row.line(), "column \"direction\": \"" + d + "\" is not CW or CCW (or + / −)"));
+      }
+    }
     if (!in_rev || *rev_v != current_rev) {
       VOLCOMP_TRY(close_rev(row.line()));
       if (finished.count(*rev_v)) {
@@ -88,7 +129,14 @@ Expected<RotaryRecord> ReadRotaryCsv(const tools::CsvTable& t) {
       rev_first_line = row.line();
       current_angles.clear();
       rec.revs.push_back(current_rev);
+      rec.rev_sense.push_back(sense);
       for (const auto& c : chans) rec.channels[c.first].emplace_back();
+    }
+    if (sense != rec.rev_sense.back()) {
+      return Fail(t.LineFailure(row.line(), std::string("column \"direction\": ") +
+                                                RotationSenseName(sense) + " within revolution " +
+                                                std::to_string(current_rev) + ", which began " +
+                                                RotationSenseName(rec.rev_sense.back())));
     }
     if (!current_angles.empty() && angle <= current_angles.back()) {
       return Fail(t.LineFailure(row.line(), "column \"angle_deg\": " + Num(angle) +

@@ -69,21 +69,24 @@ Expected<std::vector<double>> SynchronousChannel(const RotaryRecord& rec,
   return s;
 }
 
-}  // namespace
-
-Expected<RotaryEvaluation> EvaluateRotary(const RotaryRecord& rec, const RotaryOptions& o) {
-  RotaryEvaluation ev;
-  ev.source = rec.source;
-  ev.revolutions = static_cast<int>(rec.revs.size());
-  ev.samples_per_revolution = static_cast<int>(rec.angle_deg.size());
-  ev.options = o;
+// The measurements of `rec` (every revolution in it) into ev->measurements, with warnings.
+Outcome EvaluateMeasurements(const RotaryRecord& rec,
+                             const RotaryOptions& o,
+                             RotaryEvaluation* out) {
+  RotaryEvaluation& ev = *out;
   const bool rsd = o.sensitive == SensitiveDirection::kRotating;
   const double cf = std::cos(Rad(o.fsd_angle_deg)), sf = std::sin(Rad(o.fsd_angle_deg));
   const bool need_x = rsd || std::fabs(cf) > 1e-12;
   const bool need_y = rsd || std::fabs(sf) > 1e-12;
+  // µm terms of the uncertainty into the measurement's unit: 1, or for a tilt from two sensors
+  // `distance_mm` apart √2·1000/distance (µm → µrad).
   auto add = [&](std::string name, std::string key, std::string unit, std::string profile,
-                 CentreKind preferred, bool fundamental, const Revolutions& u) -> Outcome {
+                 CentreKind preferred, bool fundamental, const Revolutions& u,
+                 double u_scale = 1.0) -> Outcome {
     RotaryMeasurement m;
+    if (o.uncertainty.stated()) {
+      VOLCOMP_TRY_ASSIGN(m.u, ErrorMotionU(o.uncertainty, static_cast<int>(u.size()), u_scale));
+    }
     m.name = std::move(name);
     m.key = std::move(key);
     m.unit = std::move(unit);
@@ -155,7 +158,8 @@ Expected<RotaryEvaluation> EvaluateRotary(const RotaryRecord& rec, const RotaryO
                         " mm, combined as the radial profile (A.6; §5.3.3 method 2; formula (5) "
                         "for a fixed direction)",
                     CentreKind::kLsc, false,
-                    radial_profile(need_x ? &dx : nullptr, need_y ? &dy : nullptr)));
+                    radial_profile(need_x ? &dx : nullptr, need_y ? &dy : nullptr),
+                    std::sqrt(2.0) * k));
   }
   if (z) {
     VOLCOMP_TRY(
@@ -173,7 +177,8 @@ Expected<RotaryEvaluation> EvaluateRotary(const RotaryRecord& rec, const RotaryO
     if (!(*o.face_radius_mm > 0.0)) return Refuse(rec, "the face radius must be positive");
     VOLCOMP_TRY(add("tilt from axial and face", "tilt_axial_face", "µrad",
                     "(Δz − face)/R with R = " + Num(*o.face_radius_mm) + " mm (A.5)",
-                    CentreKind::kLsc, false, Difference(*z, *face, 1000.0 / *o.face_radius_mm)));
+                    CentreKind::kLsc, false, Difference(*z, *face, 1000.0 / *o.face_radius_mm),
+                    std::sqrt(2.0) * 1000.0 / *o.face_radius_mm));
   }
   if (ev.measurements.empty()) return Refuse(rec, "no channel to evaluate");
 
@@ -199,6 +204,101 @@ Expected<RotaryEvaluation> EvaluateRotary(const RotaryRecord& rec, const RotaryO
                                                 std::abs(cm), std::arg(cm) * 180.0 / kPi};
   }
 
+  return Outcome::Ok();
+}
+
+std::string Count(int n, const char* what) { return std::to_string(n) + " " + what; }
+
+// The number-of-revolutions rules (digest §5.3): spindles ≥ 20 per speed (5.3.2.2 footnote);
+// tables axial 5 CW + 5 CCW (6.2.2), radial and tilt 4 + 4 (6.3.2, 6.4.2); heads and tilting
+// tables axial 5 + 5 full-travel cycles, radial and tilt 2 + 2; static tests ≥ 2 revolutions and
+// ≥ 8 stops per revolution (E.2).
+void CheckRevolutions(const RotaryRecord& rec, const RotaryOptions& o, RotaryEvaluation* ev) {
+  const int n = ev->revolutions;
+  if (o.static_test) {
+    if (n < 2) {
+      ev->warnings.push_back(Count(n, "revolution(s)") +
+                             ": a static test asks at least 2 (ISO 230-7 E.2)");
+    }
+    if (ev->samples_per_revolution < 8) {
+      ev->warnings.push_back(Count(ev->samples_per_revolution, "stops per revolution") +
+                             ": a static test asks at least 8 (ISO 230-7 E.2)");
+    }
+    return;
+  }
+  if (ev->samples_per_revolution < 8) {
+    ev->warnings.push_back(
+        "fewer than 8 angles per revolution: few angles filter out the "
+        "higher undulations per revolution (ISO 230-7 A.7.5)");
+  }
+  if (o.axis == RotaryAxisKind::kSpindle) {
+    if (n < 20) {
+      ev->warnings.push_back(Count(n, "revolution(s)") +
+                             ": ISO 230-7 asks at least 20 revolutions per speed for a spindle "
+                             "(5.3.2.2, 5.3.4.2 footnotes)");
+    }
+    return;
+  }
+  const bool table = o.axis == RotaryAxisKind::kTable;
+  const bool radial = rec.channels.count("x_um") || rec.channels.count("y_um");
+  const bool axial = rec.channels.count("z_um") || rec.channels.count("face_um");
+  const char* cycles = table ? "revolutions" : "full-travel cycles";
+  auto rule = [&](int each, const char* what, const char* clause) {
+    if (ev->revolutions_cw >= each && ev->revolutions_ccw >= each) return;
+    ev->warnings.push_back(std::to_string(ev->revolutions_cw) + " CW and " +
+                           std::to_string(ev->revolutions_ccw) + " CCW " + cycles +
+                           (ev->revolutions_cw + ev->revolutions_ccw < n
+                                ? " (" +
+                                      Count(n - ev->revolutions_cw - ev->revolutions_ccw,
+                                            "without a direction; add a direction column") +
+                                      ")"
+                                : std::string()) +
+                           ": ISO 230-7 asks at least " + std::to_string(each) + " CW + " +
+                           std::to_string(each) + " CCW for the " + what + " of a " +
+                           (table ? "rotary table" : "swivelling head or tilting table") + " (" +
+                           clause + ")");
+  };
+  if (axial) rule(5, "axial error motion", "6.2.2");
+  if (radial) rule(table ? 4 : 2, "radial and tilt error motion", "6.3.2, 6.4.2");
+}
+
+}  // namespace
+
+const char* RotaryAxisKindName(RotaryAxisKind kind) {
+  switch (kind) {
+    case RotaryAxisKind::kTable:
+      return "table";
+    case RotaryAxisKind::kHead:
+      return "head";
+    case RotaryAxisKind::kSpindle:
+      break;
+  }
+  return "spindle";
+}
+
+Expected<RotaryEvaluation> EvaluateRotary(const RotaryRecord& rec, const RotaryOptions& o) {
+  RotaryEvaluation ev;
+  ev.source = rec.source;
+  ev.revolutions = static_cast<int>(rec.revs.size());
+  ev.samples_per_revolution = static_cast<int>(rec.angle_deg.size());
+  ev.options = o;
+  for (RotationSense s : rec.rev_sense) {
+    ev.revolutions_cw += s == RotationSense::kCw;
+    ev.revolutions_ccw += s == RotationSense::kCcw;
+  }
+  VOLCOMP_TRY(EvaluateMeasurements(rec, o, &ev));
+  if (ev.revolutions_cw > 0 && ev.revolutions_ccw > 0) {
+    for (RotationSense s : {RotationSense::kCw, RotationSense::kCcw}) {
+      RotaryEvaluation one;
+      VOLCOMP_TRY(EvaluateMeasurements(RevolutionsTurning(rec, s), o, &one));
+      ev.by_direction.push_back({s,
+                                 s == RotationSense::kCw ? ev.revolutions_cw : ev.revolutions_ccw,
+                                 std::move(one.measurements)});
+    }
+    ev.warnings.push_back(
+        "revolutions in both senses: values are given per direction and pooled; ISO 230-7 does "
+        "not say whether CW and CCW runs may be pooled");
+  }
   if (!rec.equally_spaced) {
     ev.warnings.push_back(
         "angles are not equally spaced: LSC centres are fitted by least squares; "
@@ -207,10 +307,12 @@ Expected<RotaryEvaluation> EvaluateRotary(const RotaryRecord& rec, const RotaryO
   if (ev.revolutions < 2) {
     ev.warnings.push_back("one revolution only: asynchronous error motion cannot be evaluated");
   }
-  if (ev.samples_per_revolution < 8) {
+  CheckRevolutions(rec, o, &ev);
+  if (!o.uncertainty.stated()) {
     ev.warnings.push_back(
-        "fewer than 8 angles per revolution (ISO 230-7 annex E asks at least 8 "
-        "for a static test)");
+        "no measurement uncertainty: state the instrument (--instrument-u-um from its "
+        "calibration certificate, or --instrument-range-um) and a drift test range "
+        "(--drift-range-um) for U at k = 2 (ISO 230-7 annex F)");
   }
   return ev;
 }

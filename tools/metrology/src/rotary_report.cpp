@@ -2,6 +2,9 @@
 #include "volcomp/metrology/rotary_report.hpp"
 
 #include <algorithm>
+#include <optional>
+#include <string>
+#include <vector>
 
 #include "json_fields.hpp"
 #include "volcomp/metrology/polar_fit.hpp"
@@ -27,6 +30,55 @@ JsonValue CentreJson(const CentreValues& v) {
   return j;
 }
 
+JsonValue UncertaintyJson(const std::optional<ErrorMotionUncertainty>& u) {
+  if (!u) return JsonValue();
+  JsonValue j = JsonValue::Object();
+  j.Set("k", 2);
+  j.Set("synchronous_value", u->synchronous_value);
+  j.Set("single_plot_value", u->single_value);
+  j.Set("single_plot_formula", u->literal_f6 ? "F.6 as printed" : "1.4 U_single");
+  j.Set("device", u->device);
+  j.Set("device_basis", u->device_basis);
+  j.Set("device_from", u->from_calibration ? "calibration (F.1)" : "0.6 x error range (F.2)");
+  j.Set("setup", u->setup);
+  j.Set("drift", u->eve);
+  j.Set("drift_stated", u->drift_stated);
+  j.Set("revolutions", u->revolutions);
+  return j;
+}
+
+// The measurements by key; `detail` adds the centres' coordinates, the plots and the profile.
+JsonValue MeasurementsJson(const std::vector<RotaryMeasurement>& list, bool detail) {
+  JsonValue measurements = JsonValue::Object();
+  for (const auto& m : list) {
+    const ErrorMotion& em = m.motion;
+    JsonValue o = JsonValue::Object();
+    o.Set("name", m.name);
+    o.Set("unit", m.unit == "µm" ? "um" : "urad");
+    o.Set("preferred_centre", CentreName(m.preferred));
+    const CentreValues& pref = ValuesAbout(em, m.preferred);
+    o.Set("synchronous_value", pref.synchronous);
+    o.Set("asynchronous_value", em.asynchronous_value);
+    o.Set("total_value", pref.total);
+    o.Set("uncertainty", UncertaintyJson(m.u));
+    if (detail) {
+      o.Set("profile", m.profile);
+      o.Set("asynchronous_angle_deg", em.asynchronous_angle_deg);
+      o.Set("fundamental_value", em.fundamental_value);
+      o.Set("fundamental_angle_deg", em.fundamental_angle_deg);
+      o.Set("fundamental_is_axial_value", m.report_fundamental);
+      JsonValue about = JsonValue::Object();
+      for (const CentreValues* c : ComputedCentres(em))
+        about.Set(CentreName(c->kind), CentreJson(*c));
+      o.Set("about", std::move(about));
+      o.Set("angle_deg", JsonValue::Numbers(em.angle_deg));
+      o.Set("synchronous", JsonValue::Numbers(em.synchronous));
+    }
+    measurements.Set(m.key, std::move(o));
+  }
+  return measurements;
+}
+
 }  // namespace
 
 JsonValue RotaryJson(const RotaryEvaluation& ev, const std::optional<ReversalResult>& reversal) {
@@ -49,31 +101,20 @@ JsonValue RotaryJson(const RotaryEvaluation& ev, const std::optional<ReversalRes
   if (ev.options.centres.mic) centres.Push("MIC");
   if (ev.options.centres.mcc) centres.Push("MCC");
   j.Set("centres", std::move(centres));
-  JsonValue measurements = JsonValue::Object();
-  for (const auto& m : ev.measurements) {
-    const ErrorMotion& em = m.motion;
+  j.Set("axis_kind", RotaryAxisKindName(ev.options.axis));
+  j.Set("static_test", ev.options.static_test);
+  j.Set("revolutions_cw", ev.revolutions_cw);
+  j.Set("revolutions_ccw", ev.revolutions_ccw);
+  j.Set("measurements", MeasurementsJson(ev.measurements, true));
+  JsonValue by_direction = JsonValue::Array();
+  for (const auto& d : ev.by_direction) {
     JsonValue o = JsonValue::Object();
-    o.Set("name", m.name);
-    o.Set("unit", m.unit == "µm" ? "um" : "urad");
-    o.Set("profile", m.profile);
-    o.Set("preferred_centre", CentreName(m.preferred));
-    const CentreValues& pref = ValuesAbout(em, m.preferred);
-    o.Set("synchronous_value", pref.synchronous);
-    o.Set("asynchronous_value", em.asynchronous_value);
-    o.Set("asynchronous_angle_deg", em.asynchronous_angle_deg);
-    o.Set("total_value", pref.total);
-    o.Set("fundamental_value", em.fundamental_value);
-    o.Set("fundamental_angle_deg", em.fundamental_angle_deg);
-    o.Set("fundamental_is_axial_value", m.report_fundamental);
-    JsonValue about = JsonValue::Object();
-    for (const CentreValues* c : ComputedCentres(em))
-      about.Set(CentreName(c->kind), CentreJson(*c));
-    o.Set("about", std::move(about));
-    o.Set("angle_deg", JsonValue::Numbers(em.angle_deg));
-    o.Set("synchronous", JsonValue::Numbers(em.synchronous));
-    measurements.Set(m.key, std::move(o));
+    o.Set("sense", RotationSenseName(d.sense));
+    o.Set("revolutions", d.revolutions);
+    o.Set("measurements", MeasurementsJson(d.measurements, false));
+    by_direction.Push(std::move(o));
   }
-  j.Set("measurements", std::move(measurements));
+  j.Set("by_direction", std::move(by_direction));
   if (ev.radial_fundamentals) {
     const auto& f = *ev.radial_fundamentals;
     JsonValue o = JsonValue::Object();
@@ -113,6 +154,13 @@ void WriteRotaryText(std::ostream& out, const JsonValue& ev) {
     sep = ", ";
   }
   out << "; * marks the preferred centre of Table 1\n";
+  out << (json::At(ev, "static_test").boolean ? "static test (annex E) of a " : "axis: ")
+      << json::Text(ev, "axis_kind");
+  if (json::Integer(ev, "revolutions_cw") + json::Integer(ev, "revolutions_ccw") > 0) {
+    out << "; " << json::Integer(ev, "revolutions_cw") << " CW, "
+        << json::Integer(ev, "revolutions_ccw") << " CCW revolution(s)";
+  }
+  out << "\n";
   for (const auto& [key, m] : json::At(ev, "measurements").object) {
     const std::string unit = json::Text(m, "unit") == "um" ? "µm" : "µrad";
     const int d = Decimals(unit);
@@ -149,6 +197,40 @@ void WriteRotaryText(std::ostream& out, const JsonValue& ev) {
                                                               : "(once per rev) ")
         << FormatFixed(json::Number(m, "fundamental_value"), d) << " " << unit
         << " peak-to-peak at " << FormatFixed(json::Number(m, "fundamental_angle_deg"), 1) << "°\n";
+    const JsonValue& u = json::At(m, "uncertainty");
+    if (!u.is_null()) {
+      out << "  U (k = 2, annex F): synchronous values ±"
+          << FormatFixed(json::Number(u, "synchronous_value"), d + 1)
+          << ", total/inner/outer/asynchronous values ±"
+          << FormatFixed(json::Number(u, "single_plot_value"), d + 1) << " " << unit << " ("
+          << json::Text(u, "single_plot_formula") << "); device "
+          << FormatFixed(json::Number(u, "device_basis"), d + 1) << " from "
+          << json::Text(u, "device_from") << ", setup "
+          << FormatFixed(json::Number(u, "setup"), d + 1) << ", drift "
+          << (json::At(u, "drift_stated").boolean
+                  ? FormatFixed(json::Number(u, "drift"), d + 1) + " (0.6 × E_VE, F.3)"
+                  : std::string("not stated"))
+          << ", n = " << json::Integer(u, "revolutions") << "\n";
+    }
+  }
+  for (const JsonValue& dir : json::At(ev, "by_direction").array) {
+    out << "\n"
+        << json::Text(dir, "sense") << " only (" << json::Integer(dir, "revolutions")
+        << " revolutions), about the preferred centre:\n";
+    for (const auto& [key, m] : json::At(dir, "measurements").object) {
+      const std::string unit = json::Text(m, "unit") == "um" ? "µm" : "µrad";
+      const int d = Decimals(unit);
+      const JsonValue& u = json::At(m, "uncertainty");
+      auto value = [&](const char* field, const char* u_field) {
+        return FormatFixed(json::Number(m, field), d) +
+               (u.is_null() ? std::string() : " ± " + FormatFixed(json::Number(u, u_field), d));
+      };
+      out << "  " << json::Text(m, "name") << ": synchronous "
+          << value("synchronous_value", "synchronous_value") << ", asynchronous "
+          << value("asynchronous_value", "single_plot_value") << ", total "
+          << value("total_value", "single_plot_value") << " " << unit << " ("
+          << json::Text(m, "preferred_centre") << ")\n";
+    }
   }
   const JsonValue& f = json::At(ev, "radial_fundamentals");
   if (!f.is_null()) {

@@ -2,7 +2,10 @@
 // (radial for a rotating or fixed sensitive direction, tilt, axial, face), each analysed with
 // AnalyseErrorMotion() and reported about its preferred centre of Table 1, and the Donaldson
 // reversal; profiles and clauses in docs/metrology.md. Options the channels cannot serve are
-// failures naming the file.
+// failures naming the file. With a direction column holding both senses, the values are given
+// pooled and per direction (the standard does not say whether CW and CCW runs are pooled); the
+// number of revolutions is checked against the rule for the kind of axis (a warning naming the
+// clause); each value carries its Annex F uncertainty when the instrument is stated.
 #pragma once
 
 #include <optional>
@@ -10,6 +13,7 @@
 #include <vector>
 
 #include "volcomp/metrology/error_motion.hpp"
+#include "volcomp/metrology/error_motion_uncertainty.hpp"
 #include "volcomp/metrology/polar_fit.hpp"
 #include "volcomp/metrology/rotary_data.hpp"
 #include "volcomp/metrology/test_conditions.hpp"
@@ -18,12 +22,19 @@ namespace volcomp::metrology {
 
 enum class SensitiveDirection { kRotating, kFixed };
 
+/// What turns: the number-of-revolutions rules differ (5.3.2.2 footnote; 6.2.2, 6.3.2, 6.4.2).
+enum class RotaryAxisKind { kSpindle, kTable, kHead };
+const char* RotaryAxisKindName(RotaryAxisKind kind);  // "spindle", "table", "head"
+
 struct RotaryOptions {
   SensitiveDirection sensitive = SensitiveDirection::kRotating;
   double fsd_angle_deg = 0.0;              // θ_f for a fixed sensitive direction
   std::optional<double> tilt_distance_mm;  // L between the planes of x/y and x2/y2
   std::optional<double> face_radius_mm;    // R of the face channel
   CentreSelection centres;                 // MRS, MIC, MCC besides PC and LSC
+  RotaryAxisKind axis = RotaryAxisKind::kSpindle;
+  bool static_test = false;                  // annex E: stops turned by hand, readings averaged
+  ErrorMotionUncertaintyInputs uncertainty;  // annex F (none stated: no U, a warning)
 };
 
 struct RotaryMeasurement {
@@ -34,6 +45,14 @@ struct RotaryMeasurement {
   CentreKind preferred = CentreKind::kLsc;  // Table 1
   bool report_fundamental = false;          // axial and face
   ErrorMotion motion;
+  std::optional<ErrorMotionUncertainty> u;  // in `unit`, when the instrument is stated
+};
+
+/// The values of the revolutions turned one way.
+struct RotaryDirectionResult {
+  RotationSense sense = RotationSense::kCw;
+  int revolutions = 0;
+  std::vector<RotaryMeasurement> measurements;
 };
 
 /// Positive and negative fundamentals of z = ΔX + iΔY of the synchronous radial motion:
@@ -51,7 +70,10 @@ struct RotaryEvaluation {
   int revolutions = 0;
   int samples_per_revolution = 0;
   RotaryOptions options;
-  std::vector<RotaryMeasurement> measurements;
+  int revolutions_cw = 0;  // with a direction column
+  int revolutions_ccw = 0;
+  std::vector<RotaryMeasurement> measurements;      // all revolutions (pooled when both senses)
+  std::vector<RotaryDirectionResult> by_direction;  // CW then CCW, when both are present
   std::optional<RadialFundamentals> radial_fundamentals;
   std::vector<std::string> warnings;
 };
