@@ -8,6 +8,7 @@
 #include "file_arguments.hpp"
 #include "metrology_report.hpp"
 #include "option_groups.hpp"
+#include "uncertainty_options.hpp"
 #include "volcomp/metrology/positioning_evaluation.hpp"
 #include "volcomp/metrology/positioning_report.hpp"
 
@@ -28,6 +29,7 @@ Expected<Output> RunEvaluatePositioning(Args& args, Context& ctx) {
   m::PositioningTestOptions o;
   o.axis_length_mm = args.Number("--axis-length-mm");
   o.grouping.allow_few_approaches = args.Flag("--allow-few-runs");
+  o.uncertainty = ReadLengthUncertainty(args);
   const auto files = args.Positionals();
   VOLCOMP_TRY(args.Finish());
   if (files.size() != 1) return UsageFailure("give exactly one data file (or - for stdin)");
@@ -70,6 +72,7 @@ const Command& EvaluatePositioningCommand() {
              {"--axis-length-mm", nullptr, "L", "mm", nullptr,
               "axis travel for the target-count checks (default: the targets' span)"}},
             AllowFewRuns(),
+            LengthUncertaintyOptions(),
             JsonReport()}),
       RunEvaluatePositioning,
       "Input: target_mm|target_deg, direction, run, deviation_um|deviation_mm|measured_mm|\n"

@@ -117,6 +117,33 @@ TEST(MetrologyCli, EvaluatePositioningReadsStandardInput) {
   EXPECT_NE(r.out.find("A       = 18.00"), std::string::npos);
 }
 
+// The GOST example's axis is 1500.41 mm long. With a 0.5 ppm laser, a 2 µm drift test and the
+// material at 23 °C (preamble, decimal comma): instrument 0.6·2·0.5·1.50041 = 0.9004,
+// thermometer 0.6·11.5·1.50041·0.2 = 2.0706, expansion 0.6·1.50041·3·2 = 5.4015, environment
+// 1.2: U = sqrt(0.8107 + 4.2872 + 29.176 + 1.44) = 5.98; U(B) = 1.2.
+TEST(MetrologyCli, EvaluatePositioningShowsEachValueWithItsUncertainty) {
+  const std::string data = "# material temperature C: 23,0\n# drift_range_um: 2\n" +
+                           ReadText(SamplePath("metrology/gost27843_example_long.csv"));
+  auto r = RunCli({"evaluate", "positioning", "-", "--instrument-ppm", "0.5"}, data);
+  EXPECT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("A       = 18.00 ± 5.98"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("B_max   = 4.48 ± 1.20"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("R_max   = 13.49   at"), std::string::npos) << r.out;  // no U for R
+  EXPECT_EQ(r.err.find("no measurement uncertainty"), std::string::npos) << r.err;
+  r = RunCli(
+      {"evaluate", "positioning", "-", "--instrument-ppm", "0.5", "--standard", "iso", "--json"},
+      data);
+  const auto doc = tools::ParseJson(r.out, "stdout");
+  ASSERT_TRUE(doc.ok()) << r.out;
+  const tools::JsonValue& ev = doc->get("evaluations")->array.at(0);
+  EXPECT_NEAR(ev.get("parameters")->get("E")->get("U")->number, 5.976, 0.001);
+  EXPECT_NEAR(ev.get("uncertainty")->get("local_U_um")->number, 1.2, 1e-9);
+  // Without an instrument: the values alone and a warning saying what to state.
+  r = RunCli({"evaluate", "positioning", SamplePath("metrology/gost27843_example_long.csv")});
+  EXPECT_NE(r.out.find("A       = 18.00   max"), std::string::npos) << r.out;
+  EXPECT_NE(r.err.find("no measurement uncertainty: state the instrument"), std::string::npos);
+}
+
 TEST(MetrologyCli, EvaluatePositioningBadOptionsAndInputs) {
   auto r = RunCli({"evaluate", "positioning", "x.csv", "--standard", "nope"});
   EXPECT_EQ(r.code, tools::kExitUsage);

@@ -55,8 +55,9 @@ TEST(MetrologyPositioningEvaluation, WarningsOfEveryStandardOnceAndTheAxisNamesT
   };
   EXPECT_EQ(count("unidirectional values only"), 1);
   EXPECT_EQ(count("§2.7"), 1);
-  EXPECT_EQ(ev.results[0].warnings.size(), 2u);  // GOST: one direction, §2.7
-  EXPECT_EQ(ev.results[1].warnings.size(), 1u);  // ISO: one direction
+  EXPECT_EQ(count("no measurement uncertainty"), 1);
+  EXPECT_EQ(ev.results[0].warnings.size(), 3u);  // GOST: one direction, §2.7, no instrument
+  EXPECT_EQ(ev.results[1].warnings.size(), 2u);  // ISO: one direction, no instrument
 }
 
 TEST(MetrologyPositioningEvaluation, InputProblemsAreFailuresNamingTheLine) {

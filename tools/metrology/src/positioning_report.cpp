@@ -31,22 +31,30 @@ struct Parameter {
   double value = 0.0;
   std::optional<Span> span;
   std::optional<Extreme> at;
+  std::optional<double> u;  // U at k = 2 when the test states its instrument
 };
 
 std::vector<Parameter> Parameters(const PositioningResult& r) {
   std::vector<Parameter> out;
   const bool gost = r.standard == Standard::kGost27843;
+  // Spans over the travel carry U_length; the reversal (B) U_local; repeatability none (it is
+  // the machine's scatter itself).
+  std::optional<double> u_length, u_local;
+  if (r.uncertainty) u_length = r.uncertainty->length_u_um, u_local = r.uncertainty->local_u_um;
+  auto u_of = [&](const std::string& key) {
+    return key == "B" || key == "B_max" || key == "B_mean" ? u_local : std::nullopt;
+  };
   auto span = [&](const char* sym, const char* key, const std::string& meaning,
                   const std::optional<Span>& s) {
-    if (s) out.push_back({sym, key, meaning, s->value, s, std::nullopt});
+    if (s) out.push_back({sym, key, meaning, s->value, s, std::nullopt, u_length});
   };
   auto ext = [&](const char* sym, const char* key, const std::string& meaning,
                  const std::optional<Extreme>& e) {
-    if (e) out.push_back({sym, key, meaning, e->value, std::nullopt, e});
+    if (e) out.push_back({sym, key, meaning, e->value, std::nullopt, e, u_of(key)});
   };
   auto val = [&](const char* sym, const char* key, const std::string& meaning,
                  const std::optional<double>& v) {
-    if (v) out.push_back({sym, key, meaning, *v, std::nullopt, std::nullopt});
+    if (v) out.push_back({sym, key, meaning, *v, std::nullopt, std::nullopt, u_of(key)});
   };
   if (gost) {
     span("A", "A", "accuracy of bidirectional positioning, max(X̄+3S) − min(X̄−3S) (§1.14, (10))",
@@ -123,6 +131,25 @@ JsonValue DirectionJson(const std::optional<DirectionStats>& s) {
 
 JsonValue OptionalJson(const std::optional<double>& v) { return v ? JsonValue(*v) : JsonValue(); }
 
+JsonValue UncertaintyJson(const std::optional<PositioningUncertainty>& u) {
+  if (!u) return JsonValue();
+  JsonValue j = JsonValue::Object();
+  j.Set("k", 2);
+  j.Set("length_mm", u->length_mm);
+  j.Set("length_U_um", u->length_u_um);
+  j.Set("local_U_um", u->local_u_um);
+  JsonValue terms = JsonValue::Array();
+  for (const auto& t : u->terms) {
+    JsonValue o = JsonValue::Object();
+    o.Set("name", t.name);
+    o.Set("U_um", t.u_um);
+    o.Set("basis", t.basis);
+    terms.Push(std::move(o));
+  }
+  j.Set("terms", std::move(terms));
+  return j;
+}
+
 std::string Cell(const JsonValue& v, int decimals) {
   return v.is_null() ? std::string("-") : FormatFixed(v.number, decimals);
 }
@@ -161,6 +188,8 @@ void WritePositioningText(std::ostream& out, const JsonValue& r) {
     const std::size_t width = report::DisplayWidth(symbol);
     out << "  " << symbol << std::string(width < 8 ? 8 - width : 1, ' ') << "= "
         << FormatFixed(json::Number(p, "value"), 2);
+    const JsonValue& u = json::At(p, "U");
+    if (!u.is_null()) out << " ± " << FormatFixed(u.number, 2);
     if (const JsonValue* max = p.get("max")) {
       const JsonValue& min = json::At(p, "min");
       out << "   max " << FormatFixed(json::Number(*max, "value"), 2) << " at "
@@ -171,6 +200,18 @@ void WritePositioningText(std::ostream& out, const JsonValue& r) {
       out << "   at " << DescribeLocation(*at, "target_" + tu, tu);
     }
     out << "\n";
+  }
+  const JsonValue& budget = json::At(r, "uncertainty");
+  if (!budget.is_null()) {
+    out << "  U (k = 2) of E, A, M over " << FormatFixed(json::Number(budget, "length_mm"), 1)
+        << " mm: " << FormatFixed(json::Number(budget, "length_U_um"), 2) << ", of B "
+        << FormatFixed(json::Number(budget, "local_U_um"), 2) << " (simplified budget:";
+    const char* sep = " ";
+    for (const JsonValue& t : json::At(budget, "terms").array) {
+      out << sep << json::Text(t, "name") << " " << FormatFixed(json::Number(t, "U_um"), 2);
+      sep = ", ";
+    }
+    out << ")\n";
   }
   const std::string ks = standard == StandardName(Standard::kGost27843) ? "3S" : "2s";
   out << "  per position:\n";
@@ -212,6 +253,7 @@ JsonValue PositioningJson(const PositioningResult& r) {
     JsonValue o = JsonValue::Object();
     o.Set("symbol", p.symbol);
     o.Set("value", p.value);
+    o.Set("U", OptionalJson(p.u));
     if (p.span) {
       o.Set("max", LocationJson(r, p.span->max));
       o.Set("min", LocationJson(r, p.span->min));
@@ -233,6 +275,7 @@ JsonValue PositioningJson(const PositioningResult& r) {
     o.Set("repeatability_bidirectional", OptionalJson(p.repeatability_bidirectional));
     positions.Push(std::move(o));
   }
+  j.Set("uncertainty", UncertaintyJson(r.uncertainty));
   JsonValue& warnings = j["warnings"] = JsonValue::Array();
   for (const auto& w : r.warnings) warnings.Push(w);
   return j;
@@ -314,9 +357,26 @@ void AddPositioningSection(report::HtmlPage* page, const PositioningResult& r) {
     } else if (p.at) {
       where = DescribeLocation(r, *p.at);
     }
-    rows.push_back({p.symbol, FormatFixed(p.value, 2), where, p.meaning});
+    rows.push_back({p.symbol,
+                    FormatFixed(p.value, 2) + (p.u ? " ± " + FormatFixed(*p.u, 2) : std::string()),
+                    where, p.meaning});
   }
-  page->Table({"parameter", u, "where", "meaning"}, rows);
+  page->Table({"parameter", u + (r.uncertainty ? " (± U, k = 2)" : ""), "where", "meaning"}, rows);
+  if (r.uncertainty) {
+    std::vector<std::vector<std::string>> terms;
+    for (const auto& t : r.uncertainty->terms) {
+      terms.push_back({t.name, FormatFixed(t.u_um, 2), t.basis});
+    }
+    terms.push_back(
+        {"U of E, A, M", FormatFixed(r.uncertainty->length_u_um, 2), "root sum of squares"});
+    terms.push_back({"U of B", FormatFixed(r.uncertainty->local_u_um, 2),
+                     "instrument calibration and environment (length terms cancel)"});
+    page->Paragraph("Measurement uncertainty (k = 2) over the measured length " +
+                    FormatFixed(r.uncertainty->length_mm, 1) +
+                    " mm: a simplified budget after ISO/TR 230-9 (ISO 230-2:2014 Annex A's own "
+                    "equations were not available; docs/metrology.md).");
+    page->Table({"term", "U, µm", "basis"}, terms);
+  }
 
   page->Figure(
       PositioningDeviationChart(r, std::string(StandardName(r.standard)) +

@@ -11,6 +11,7 @@
 
 #include "volcomp/metrology/direction.hpp"
 #include "volcomp/metrology/positioning_data.hpp"
+#include "volcomp/metrology/positioning_uncertainty.hpp"
 
 namespace volcomp::metrology {
 
@@ -85,6 +86,7 @@ struct PositioningResult {
   std::optional<Span> systematic_down;           // E↓ (ISO)
   std::optional<Span> systematic;                // E (ISO)
   std::optional<Span> mean_bidirectional_range;  // M (ISO)
+  std::optional<PositioningUncertainty> uncertainty;  // linear axes with a stated instrument
   std::vector<std::string> warnings;
 };
 

@@ -23,6 +23,10 @@ struct PositioningTestOptions {
   SigmaMethod sigma = SigmaMethod::kFormula;                 // GOST 27843 only
   std::optional<double> axis_length_mm;  // travel for the checks (default: the targets' span)
   GroupingOptions grouping;
+  // Instrument, temperatures, misalignment, drift (positioning_uncertainty.hpp). What is not set
+  // here comes from the file's preamble: instrument_u_um, instrument_ppm, material temperature C,
+  // drift_range_um, expansion_um_per_m_K.
+  PositioningUncertaintyInputs uncertainty;
 };
 
 struct PositioningEvaluation {

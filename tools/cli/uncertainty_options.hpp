@@ -1,0 +1,18 @@
+// The measurement-uncertainty inputs of the linear tests (`evaluate positioning`, `evaluate
+// diagonal`): declared once, read into the budget's inputs (positioning_uncertainty.hpp); what an
+// option leaves unset comes from the readings file's preamble or the budget's stated default.
+#pragma once
+
+#include "option_groups.hpp"
+#include "volcomp/args/args.hpp"
+#include "volcomp/metrology/positioning_uncertainty.hpp"
+
+namespace volcomp::cli {
+
+const Options& LengthUncertaintyOptions();
+
+/// The options of LengthUncertaintyOptions() that were given (negative values are left to the
+/// budget, which refuses them naming the rule).
+metrology::PositioningUncertaintyInputs ReadLengthUncertainty(args::Args& args);
+
+}  // namespace volcomp::cli

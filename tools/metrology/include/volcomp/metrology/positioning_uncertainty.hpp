@@ -1,0 +1,57 @@
+// Measurement uncertainty of a linear positioning test (E, A, M, B of ISO 230-2:2014 and A, B of
+// GOST 27843-88), U at k = 2, by a simplified budget in the manner of ISO/TR 230-9 (root sum of
+// squares of uncorrelated terms; a full error range R of a rectangular distribution gives
+// U = 0.6·R; ISO 230-7 F.1–F.3 apply the same conventions). ISO 230-2:2014 Annex A's own equations
+// were not available (../shared/reference/thermal-rotary-uncertainty.md §3.2): the terms are those
+// of that digest, each with its basis, and the report says the budget is simplified.
+//   instrument        U_cal (certificate, k = 2), and/or 0.6·2·a·L for a stated accuracy ±a ppm
+//   thermometer       0.6·α·L·R_T          (the material temperature's full error range R_T)
+//   expansion coeff.  0.6·L·|T − 20 °C|·R_α (R_α: full plausible range of α)
+//   misalignment      0.6·d²/(2L)          (cosine error of a lateral beam walk-off d over L)
+//   environment       0.6·E_VE             (range of a drift test, ISO 230-3 / TR 230-9 C.9)
+// E, A, M and E↑/E↓/A↑/A↓ span the travel L: U_length = √Σ of all. B and B̄ compare the two
+// approach directions at the same target, where the length terms cancel: U_local =
+// √(U_cal² + U_env²). Repeatability R is the machine's scatter itself (no term). Units: µm, mm.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "volcomp/hosted/expected.hpp"
+
+namespace volcomp::metrology {
+
+struct PositioningUncertaintyInputs {
+  std::optional<double> instrument_u_um;         // calibration U (k = 2), length-independent
+  std::optional<double> instrument_ppm;          // stated accuracy ±ppm of the measured length
+  std::optional<double> material_temperature_C;  // mean material (machine) temperature
+  double thermometer_range_K = 0.2;              // full error range R_T of that thermometer
+  std::optional<double> expansion_um_per_m_K;    // α; not stated: 11.5 (steel), and a note
+  double expansion_range_um_per_m_K = 2.0;       // R_α, the full plausible range of α
+  double misalignment_mm = 0.0;                  // lateral beam walk-off d over the length
+  std::optional<double> drift_range_um;          // E_VE of a drift test
+
+  bool stated() const { return instrument_u_um || instrument_ppm; }
+};
+
+struct UncertaintyTerm {
+  std::string name;   // "instrument", "thermometer", ...
+  double u_um = 0.0;  // U at k = 2
+  std::string basis;  // how it was found, with the inputs
+};
+
+struct PositioningUncertainty {
+  double length_mm = 0.0;
+  std::vector<UncertaintyTerm> terms;  // every term, also those that are zero
+  double length_u_um = 0.0;            // U of E, A, M (and the one-direction spans)
+  double local_u_um = 0.0;             // U of B, B̄
+  std::vector<std::string> notes;      // inputs not stated and what that leaves out
+};
+
+/// kInvalidArgument when no instrument is stated, an input is negative or not finite, or the
+/// length is not positive.
+Expected<PositioningUncertainty> PositioningU(const PositioningUncertaintyInputs& in,
+                                              double length_mm);
+
+}  // namespace volcomp::metrology

@@ -1,0 +1,88 @@
+// Simplified uncertainty budget of a linear positioning test.
+#include "volcomp/metrology/positioning_uncertainty.hpp"
+
+#include <cmath>
+
+#include "volcomp/report/format.hpp"
+
+namespace volcomp::metrology {
+namespace {
+
+constexpr double kSteelExpansion = 11.5;  // µm/(m·K)
+constexpr double kRange = 0.6;  // U (k = 2) of a full range R, rectangular: 2·R/(2√3) ≈ 0.6·R
+
+std::string N(double v) { return report::FormatNumber(v); }
+
+bool Bad(double v) { return !(std::isfinite(v) && v >= 0.0); }
+
+}  // namespace
+
+Expected<PositioningUncertainty> PositioningU(const PositioningUncertaintyInputs& in,
+                                              double length_mm) {
+  if (!in.stated()) {
+    return Fail(Error::kInvalidArgument,
+                "positioning uncertainty needs the instrument: its calibration U or its stated "
+                "accuracy in ppm");
+  }
+  if (Bad(in.instrument_u_um.value_or(0.0)) || Bad(in.instrument_ppm.value_or(0.0)) ||
+      Bad(in.thermometer_range_K) || Bad(in.expansion_um_per_m_K.value_or(0.0)) ||
+      Bad(in.expansion_range_um_per_m_K) || Bad(in.misalignment_mm) ||
+      Bad(in.drift_range_um.value_or(0.0)) ||
+      (in.material_temperature_C && !std::isfinite(*in.material_temperature_C))) {
+    return Fail(Error::kInvalidArgument, "uncertainty inputs must be finite and not negative");
+  }
+  if (!(length_mm > 0.0)) {
+    return Fail(Error::kInvalidArgument, "uncertainty needs a measured length > 0");
+  }
+  PositioningUncertainty u;
+  u.length_mm = length_mm;
+  const double l_m = length_mm / 1000.0;
+  const double cal = in.instrument_u_um.value_or(0.0);
+  const double ppm = in.instrument_ppm ? kRange * 2.0 * *in.instrument_ppm * l_m : 0.0;
+  std::string basis;
+  if (in.instrument_u_um) basis = "calibration U " + N(cal) + " µm";
+  if (in.instrument_ppm) {
+    basis += std::string(basis.empty() ? "" : " and ") + "0.6 × 2 × " + N(*in.instrument_ppm) +
+             " ppm × " + N(l_m) + " m";
+  }
+  u.terms.push_back({"instrument", std::hypot(cal, ppm), basis});
+  const double alpha = in.expansion_um_per_m_K.value_or(kSteelExpansion);
+  if (!in.expansion_um_per_m_K) {
+    u.notes.push_back(
+        "expansion coefficient not stated (--expansion or preamble "
+        "expansion_um_per_m_K): steel's 11.5 µm/(m·K) assumed");
+  }
+  u.terms.push_back(
+      {"thermometer", kRange * alpha * l_m * in.thermometer_range_K,
+       "0.6 × α " + N(alpha) + " µm/(m·K) × L × R_T " + N(in.thermometer_range_K) + " K"});
+  if (in.material_temperature_C) {
+    const double dt = std::fabs(*in.material_temperature_C - 20.0);
+    u.terms.push_back({"expansion coefficient", kRange * l_m * dt * in.expansion_range_um_per_m_K,
+                       "0.6 × L × |" + N(*in.material_temperature_C) + " °C − 20 °C| × R_α " +
+                           N(in.expansion_range_um_per_m_K) + " µm/(m·K)"});
+  } else {
+    u.terms.push_back({"expansion coefficient", 0.0, "not included: no material temperature"});
+    u.notes.push_back(
+        "material temperature not stated (preamble \"material temperature C\" or "
+        "--material-temperature-c): the expansion coefficient's term is not included");
+  }
+  const double cosine_um = in.misalignment_mm * in.misalignment_mm / (2.0 * length_mm) * 1000.0;
+  u.terms.push_back({"misalignment", kRange * cosine_um,
+                     "0.6 × d² / 2L with d = " + N(in.misalignment_mm) + " mm"});
+  const double env = kRange * in.drift_range_um.value_or(0.0);
+  if (in.drift_range_um) {
+    u.terms.push_back({"environment", env, "0.6 × E_VE " + N(*in.drift_range_um) + " µm"});
+  } else {
+    u.terms.push_back({"environment", 0.0, "not included: no drift test"});
+    u.notes.push_back(
+        "no drift test stated (--drift-range-um or preamble drift_range_um): the environmental "
+        "variation term is not included");
+  }
+  double sum = 0.0;
+  for (const auto& t : u.terms) sum += t.u_um * t.u_um;
+  u.length_u_um = std::sqrt(sum);
+  u.local_u_um = std::hypot(cal, env);
+  return u;
+}
+
+}  // namespace volcomp::metrology
