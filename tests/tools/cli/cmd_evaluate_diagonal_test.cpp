@@ -29,6 +29,21 @@ TEST(MetrologyCli, EvaluateDiagonalSample) {
   std::filesystem::remove_all(dir);
 }
 
+// E_d carries the U of the diagonal it comes from: the body diagonals are 1024.695 mm long; with
+// a 0.3 µm calibration U, the material at 20.5 °C and a 1 µm drift test: instrument 0.3,
+// thermometer 0.6·11.5·1.024695·0.2 = 1.41408, expansion 0.6·1.024695·0.5·2 = 0.61482,
+// environment 0.6: U = sqrt(0.09 + 1.99962 + 0.37800 + 0.36) = 1.68; U(B) = sqrt(0.09 + 0.36)
+// = 0.67.
+TEST(MetrologyCli, EvaluateDiagonalWithUncertainty) {
+  const auto r =
+      RunCli({"evaluate", "diagonal", SamplePath("metrology/diagonals.csv"), "--instrument-u-um",
+              "0.3", "--material-temperature-c", "20.5", "--drift-range-um", "1"});
+  EXPECT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("E_d = 19.99 ± 1.68 µm (+X+Y-Z),  B_d = 5.89 ± 0.67 µm"), std::string::npos)
+      << r.out;
+  EXPECT_EQ(r.err.find("no measurement uncertainty"), std::string::npos) << r.err;
+}
+
 TEST(MetrologyCli, EvaluateDiagonalJsonAndBadInput) {
   auto r = RunCli({"evaluate", "diagonal", SamplePath("metrology/diagonals.csv"), "--json"});
   EXPECT_EQ(r.code, 0) << r.err;

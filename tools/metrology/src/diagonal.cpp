@@ -66,7 +66,8 @@ Expected<DiagonalPlan> PlanDiagonal(const Vec3& p1, const Vec3& p2, double incre
 }
 
 Expected<DiagonalEvaluation> EvaluateDiagonals(const tools::CsvTable& table,
-                                               const GroupingOptions& options) {
+                                               const GroupingOptions& options,
+                                               const PositioningUncertaintyInputs& uncertainty) {
   VOLCOMP_TRY_ASSIGN(const std::size_t diag_col, table.Require("diagonal"));
   if (table.first_of({"target_deg"})) {
     return Fail(table.LineFailure(table.header_line(),
@@ -79,6 +80,9 @@ Expected<DiagonalEvaluation> EvaluateDiagonals(const tools::CsvTable& table,
   DiagonalEvaluation ev;
   ev.source = table.source();
   ev.conditions = ConditionsFromPreamble(table);
+  VOLCOMP_TRY_ASSIGN(const PositioningUncertaintyInputs u_inputs,
+                     CompleteFromPreamble(uncertainty, ev.conditions));
+  std::vector<std::string> u_warnings;  // the same for every diagonal: listed once
   std::vector<std::string> order;
   std::map<std::string, PositioningData> per;
   std::map<std::string, DiagonalName> names;
@@ -123,6 +127,8 @@ Expected<DiagonalEvaluation> EvaluateDiagonals(const tools::CsvTable& table,
     d.name = names[key];
     VOLCOMP_TRY_ASSIGN(d.evaluation, EvaluatePositioning(set, eo));
     d.length_mm = set.positions.back().target - set.positions.front().target;
+    VOLCOMP_TRY_ASSIGN(d.evaluation.uncertainty,
+                       LengthUncertainty(u_inputs, d.length_mm, &u_warnings));
     d.E = *d.evaluation.systematic;
     d.B = *d.evaluation.reversal_max;
     for (const auto& w : set.warnings) ev.warnings.push_back("diagonal " + key + ": " + w);
@@ -148,13 +154,23 @@ Expected<DiagonalEvaluation> EvaluateDiagonals(const tools::CsvTable& table,
     auto g = groups.find(gkey);
     if (g == groups.end()) {
       group_order.push_back(gkey);
-      g = groups.emplace(gkey, DiagonalGroupValue{gkey, d.E.value, key, d.B.value, key, 0}).first;
+      g = groups.emplace(gkey, DiagonalGroupValue{gkey, -1.0, key, -1.0, key, 0}).first;
     }
     DiagonalGroupValue& gv = g->second;
-    if (d.E.value > gv.E_d) gv.E_d = d.E.value, gv.E_from = key;
-    if (d.B.value > gv.B_d) gv.B_d = d.B.value, gv.B_from = key;
+    std::optional<double> u_length, u_local;
+    if (d.evaluation.uncertainty) {
+      u_length = d.evaluation.uncertainty->length_u_um;
+      u_local = d.evaluation.uncertainty->local_u_um;
+    }
+    if (d.E.value > gv.E_d) gv.E_d = d.E.value, gv.E_from = key, gv.E_d_U = u_length;
+    if (d.B.value > gv.B_d) gv.B_d = d.B.value, gv.B_from = key, gv.B_d_U = u_local;
     ++gv.diagonals;
     ev.diagonals.push_back(std::move(d));
+  }
+  for (const auto& w : u_warnings) {
+    if (std::find(ev.warnings.begin(), ev.warnings.end(), w) == ev.warnings.end()) {
+      ev.warnings.push_back(w);
+    }
   }
   for (const auto& key : group_order) {
     if (key == "body") {

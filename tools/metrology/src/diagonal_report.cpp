@@ -30,7 +30,20 @@ JsonValue GroupJson(const DiagonalGroupValue& g) {
   j.Set("B_d", g.B_d);
   j.Set("B_d_from", g.B_from);
   j.Set("diagonals", g.diagonals);
+  j.Set("E_d_U", g.E_d_U ? JsonValue(*g.E_d_U) : JsonValue());
+  j.Set("B_d_U", g.B_d_U ? JsonValue(*g.B_d_U) : JsonValue());
   return j;
+}
+
+// "12.34" or "12.34 ± 1.20" from a group's value and its U (null when not stated).
+std::string WithU(const JsonValue& g, const char* value, const char* u) {
+  const JsonValue& uv = json::At(g, u);
+  return FormatFixed(json::Number(g, value), 2) +
+         (uv.is_null() ? std::string() : " ± " + FormatFixed(uv.number, 2));
+}
+
+std::string WithU(double value, const std::optional<double>& u) {
+  return FormatFixed(value, 2) + (u ? " ± " + FormatFixed(*u, 2) : std::string());
 }
 
 std::string Where(const JsonValue& location) {
@@ -59,8 +72,12 @@ JsonValue DiagonalJson(const DiagonalEvaluation& ev) {
     e.Set("value", d.E.value);
     e.Set("max", ExtremeJson(r, d.E.max));
     e.Set("min", ExtremeJson(r, d.E.min));
+    const auto& u = r.uncertainty;
+    e.Set("U", u ? JsonValue(u->length_u_um) : JsonValue());
     o.Set("E", std::move(e));
-    o.Set("B", ExtremeJson(r, d.B));
+    JsonValue b = ExtremeJson(r, d.B);
+    b.Set("U", u ? JsonValue(u->local_u_um) : JsonValue());
+    o.Set("B", std::move(b));
     JsonValue positions = JsonValue::Array();
     for (const auto& p : r.positions) {
       JsonValue q = JsonValue::Object();
@@ -110,15 +127,15 @@ void WriteDiagonalText(std::ostream& out, const JsonValue& ev) {
   const JsonValue& body = json::At(ev, "body");
   if (!body.is_null()) {
     out << "  body diagonals (" << json::Integer(body, "diagonals")
-        << "):  E_d = " << FormatFixed(json::Number(body, "E_d"), 2) << " µm ("
-        << json::Text(body, "E_d_from") << "),  B_d = " << FormatFixed(json::Number(body, "B_d"), 2)
-        << " µm (" << json::Text(body, "B_d_from") << ")\n";
+        << "):  E_d = " << WithU(body, "E_d", "E_d_U") << " µm (" << json::Text(body, "E_d_from")
+        << "),  B_d = " << WithU(body, "B_d", "B_d_U") << " µm (" << json::Text(body, "B_d_from")
+        << ")\n";
   }
   for (const auto& [name, f] : json::At(ev, "faces").object) {
     out << "  face " << name << " (" << json::Integer(f, "diagonals") << "):  E_d(" << name
-        << ") = " << FormatFixed(json::Number(f, "E_d"), 2) << " µm (" << json::Text(f, "E_d_from")
-        << "),  B_d(" << name << ") = " << FormatFixed(json::Number(f, "B_d"), 2) << " µm ("
-        << json::Text(f, "B_d_from") << ")\n";
+        << ") = " << WithU(f, "E_d", "E_d_U") << " µm (" << json::Text(f, "E_d_from") << "),  B_d("
+        << name << ") = " << WithU(f, "B_d", "B_d_U") << " µm (" << json::Text(f, "B_d_from")
+        << ")\n";
   }
 }
 
@@ -131,14 +148,16 @@ void AddDiagonalSections(report::HtmlPage* page, const DiagonalEvaluation& ev) {
   page->Heading(2, "Results");
   std::vector<std::vector<std::string>> rows;
   if (ev.body) {
-    rows.push_back({"E_d (body)", FormatFixed(ev.body->E_d, 2), ev.body->E_from});
-    rows.push_back({"B_d (body)", FormatFixed(ev.body->B_d, 2), ev.body->B_from});
+    rows.push_back({"E_d (body)", WithU(ev.body->E_d, ev.body->E_d_U), ev.body->E_from});
+    rows.push_back({"B_d (body)", WithU(ev.body->B_d, ev.body->B_d_U), ev.body->B_from});
   }
   for (const auto& f : ev.faces) {
-    rows.push_back({"E_d(" + f.name + ")", FormatFixed(f.E_d, 2), f.E_from});
-    rows.push_back({"B_d(" + f.name + ")", FormatFixed(f.B_d, 2), f.B_from});
+    rows.push_back({"E_d(" + f.name + ")", WithU(f.E_d, f.E_d_U), f.E_from});
+    rows.push_back({"B_d(" + f.name + ")", WithU(f.B_d, f.B_d_U), f.B_from});
   }
-  page->Table({"parameter", "µm", "from diagonal"}, rows);
+  const bool with_u =
+      ev.body ? ev.body->E_d_U.has_value() : !ev.faces.empty() && ev.faces[0].E_d_U.has_value();
+  page->Table({"parameter", with_u ? "µm (± U, k = 2)" : "µm", "from diagonal"}, rows);
   rows.clear();
   for (const auto& d : ev.diagonals) {
     rows.push_back({d.name.text, d.name.body ? "body" : "face " + d.name.plane,

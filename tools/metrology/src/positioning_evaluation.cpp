@@ -15,49 +15,21 @@
 namespace volcomp::metrology {
 namespace {
 
-// A preamble number (decimal comma allowed, "20,3"); absent: nullopt; not a number: a failure.
-Expected<std::optional<double>> PreambleNumber(const TestConditions& c, const char* key) {
-  auto text = c.Find(key);
-  if (!text) return std::optional<double>();
-  std::replace(text->begin(), text->end(), ',', '.');
-  const auto v = tools::ParseDouble(*text);
-  if (!v) {
-    return Fail(Error::kInputInvalid,
-                std::string("preamble \"") + key + ": " + *c.Find(key) + "\" is not a number");
-  }
-  return std::optional<double>(*v);
-}
-
-// The options' inputs completed from the preamble, then the budget over the targets' span; no
-// instrument: no uncertainty and a warning that says what to state.
-Expected<std::optional<PositioningUncertainty>> Uncertainty(const PositioningEvaluation& ev,
-                                                            const PositioningSet& set,
-                                                            PositioningUncertaintyInputs in,
-                                                            std::vector<std::string>* warnings) {
-  for (auto [value, key] : {std::pair{&in.instrument_u_um, "instrument_u_um"},
-                            std::pair{&in.instrument_ppm, "instrument_ppm"},
-                            std::pair{&in.material_temperature_C, "material temperature C"},
-                            std::pair{&in.drift_range_um, "drift_range_um"},
-                            std::pair{&in.expansion_um_per_m_K, "expansion_um_per_m_K"}}) {
-    if (*value) continue;
-    VOLCOMP_TRY_ASSIGN(*value, PreambleNumber(ev.conditions, key));
-  }
+// The budget over the targets' span, for linear axes (positioning_uncertainty.hpp).
+Expected<std::optional<PositioningUncertainty>> Uncertainty(
+    const PositioningEvaluation& ev,
+    const PositioningSet& set,
+    const PositioningUncertaintyInputs& given,
+    std::vector<std::string>* warnings) {
+  VOLCOMP_TRY_ASSIGN(const PositioningUncertaintyInputs in,
+                     CompleteFromPreamble(given, ev.conditions));
   if (set.kind != AxisKind::kLinear) {
     warnings->push_back("no measurement uncertainty for a rotary axis (the budget is for lengths)");
     return std::optional<PositioningUncertainty>();
   }
-  if (!in.stated()) {
-    warnings->push_back(
-        "no measurement uncertainty: state the instrument (--instrument-u-um from its "
-        "calibration certificate or --instrument-ppm, or the preamble keys instrument_u_um / "
-        "instrument_ppm) for U at k = 2 of E, A, M and B");
-    return std::optional<PositioningUncertainty>();
-  }
   double lo = set.positions.front().target, hi = lo;
   for (const auto& p : set.positions) lo = std::min(lo, p.target), hi = std::max(hi, p.target);
-  VOLCOMP_TRY_ASSIGN(PositioningUncertainty u, PositioningU(in, hi - lo));
-  for (const auto& n : u.notes) warnings->push_back(n);
-  return std::optional<PositioningUncertainty>(std::move(u));
+  return LengthUncertainty(in, hi - lo, warnings);
 }
 
 }  // namespace

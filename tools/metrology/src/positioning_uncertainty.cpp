@@ -1,7 +1,9 @@
 // Simplified uncertainty budget of a linear positioning test.
 #include "volcomp/metrology/positioning_uncertainty.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include "volcomp/report/format.hpp"
 
@@ -15,7 +17,47 @@ std::string N(double v) { return report::FormatNumber(v); }
 
 bool Bad(double v) { return !(std::isfinite(v) && v >= 0.0); }
 
+// A preamble number (decimal comma allowed, "20,3"); absent: nullopt; not a number: a failure.
+Expected<std::optional<double>> PreambleNumber(const TestConditions& c, const char* key) {
+  auto text = c.Find(key);
+  if (!text) return std::optional<double>();
+  std::replace(text->begin(), text->end(), ',', '.');
+  const auto v = tools::ParseDouble(*text);
+  if (!v) {
+    return Fail(Error::kInputInvalid,
+                std::string("preamble \"") + key + ": " + *c.Find(key) + "\" is not a number");
+  }
+  return std::optional<double>(*v);
+}
+
 }  // namespace
+
+Expected<PositioningUncertaintyInputs> CompleteFromPreamble(PositioningUncertaintyInputs in,
+                                                            const TestConditions& conditions) {
+  for (auto [value, key] : {std::pair{&in.instrument_u_um, "instrument_u_um"},
+                            std::pair{&in.instrument_ppm, "instrument_ppm"},
+                            std::pair{&in.material_temperature_C, "material temperature C"},
+                            std::pair{&in.drift_range_um, "drift_range_um"},
+                            std::pair{&in.expansion_um_per_m_K, "expansion_um_per_m_K"}}) {
+    if (*value) continue;
+    VOLCOMP_TRY_ASSIGN(*value, PreambleNumber(conditions, key));
+  }
+  return in;
+}
+
+Expected<std::optional<PositioningUncertainty>> LengthUncertainty(
+    const PositioningUncertaintyInputs& in, double length_mm, std::vector<std::string>* warnings) {
+  if (!in.stated()) {
+    warnings->push_back(
+        "no measurement uncertainty: state the instrument (--instrument-u-um from its "
+        "calibration certificate or --instrument-ppm, or the preamble keys instrument_u_um / "
+        "instrument_ppm) for U at k = 2");
+    return std::optional<PositioningUncertainty>();
+  }
+  VOLCOMP_TRY_ASSIGN(PositioningUncertainty u, PositioningU(in, length_mm));
+  for (const auto& n : u.notes) warnings->push_back(n);
+  return std::optional<PositioningUncertainty>(std::move(u));
+}
 
 Expected<PositioningUncertainty> PositioningU(const PositioningUncertaintyInputs& in,
                                               double length_mm) {

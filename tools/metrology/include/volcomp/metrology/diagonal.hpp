@@ -85,6 +85,8 @@ struct DiagonalGroupValue {
   double B_d = 0.0;    // max B over the group
   std::string B_from;  // diagonal giving B_d
   int diagonals = 0;
+  std::optional<double> E_d_U;  // U (k = 2) of E_d: that of the diagonal giving it
+  std::optional<double> B_d_U;
 };
 
 struct DiagonalEvaluation {
@@ -103,8 +105,12 @@ struct DiagonalEvaluation {
 /// diagonal name or any of the checks of GroupReadings(). The reading checks of
 /// reading_checks.hpp (implausible magnitude along the diagonal's length, Grubbs outliers) and
 /// the preamble's test conditions go into the result.
-Expected<DiagonalEvaluation> EvaluateDiagonals(const tools::CsvTable& table,
-                                               const GroupingOptions& options);
+/// With an instrument stated in `uncertainty` or the preamble, each diagonal's evaluation carries
+/// its budget over the diagonal's length and E_d/B_d the U of the diagonal they come from.
+Expected<DiagonalEvaluation> EvaluateDiagonals(
+    const tools::CsvTable& table,
+    const GroupingOptions& options,
+    const PositioningUncertaintyInputs& uncertainty = {});
 
 /// The base name of the report of `ev`: "diagonal_" and the file tokens of its diagonals, sorted
 /// ("diagonal_NNN_NPN_PNN_PPN" for the four body diagonals).

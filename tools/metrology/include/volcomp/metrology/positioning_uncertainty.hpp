@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "volcomp/hosted/expected.hpp"
+#include "volcomp/metrology/test_conditions.hpp"
 
 namespace volcomp::metrology {
 
@@ -48,6 +49,17 @@ struct PositioningUncertainty {
   double local_u_um = 0.0;             // U of B, B̄
   std::vector<std::string> notes;      // inputs not stated and what that leaves out
 };
+
+/// `in` with what it leaves unset taken from the readings file's preamble: instrument_u_um,
+/// instrument_ppm, "material temperature C" (decimal comma allowed), drift_range_um,
+/// expansion_um_per_m_K. A preamble value that is not a number: kInputInvalid naming it.
+Expected<PositioningUncertaintyInputs> CompleteFromPreamble(PositioningUncertaintyInputs in,
+                                                            const TestConditions& conditions);
+
+/// The budget of a linear test over `length_mm`, or nullopt with a warning in `warnings` when no
+/// instrument is stated; the budget's notes also go into `warnings`.
+Expected<std::optional<PositioningUncertainty>> LengthUncertainty(
+    const PositioningUncertaintyInputs& in, double length_mm, std::vector<std::string>* warnings);
 
 /// kInvalidArgument when no instrument is stated, an input is negative or not finite, or the
 /// length is not positive.
