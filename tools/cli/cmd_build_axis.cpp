@@ -129,9 +129,7 @@ Expected<Output> RunBuildAxis(Args& args, Context& ctx) {
     if (!axis.ok()) return Fail(Error::kInputInvalid, inputs[i].path + ": " + axis.error().message);
     req.axis_tables.push_back(axis->section);
     req.info.emplace(std::string("source_") + inputs[i].name, inputs[i].path);
-    JsonValue a = AxisData(inputs[i], axis->table, req.axes[i].kind == table::AxisKind::kRotary);
-    a.Set("format", datasets::PositioningFormatName(file.format));
-    axes.Push(std::move(a));
+    axes.Push(AxisData(inputs[i], axis->table, req.axes[i].kind == table::AxisKind::kRotary));
   }
   req.info.emplace("builder", "volcomp build axis");
   req.info.emplace("reverse", reverse);

@@ -26,8 +26,16 @@ Expected<PositioningFile> ReadPositioningText(const std::string& text,
   const bool rtl = options.format == PositioningFormat::kRtl ||
                    (options.format == PositioningFormat::kAuto && LooksLikeRtl(text));
   if (!rtl) {
-    VOLCOMP_TRY_ASSIGN(const tools::CsvTable csv, tools::CsvTable::ReadString(text, source));
-    return PositioningFileFromCsv(csv);
+    Expected<PositioningFile> f = [&]() -> Expected<PositioningFile> {
+      VOLCOMP_TRY_ASSIGN(const tools::CsvTable csv, tools::CsvTable::ReadString(text, source));
+      return PositioningFileFromCsv(csv);
+    }();
+    if (!f.ok() && LooksLikeRtl(text)) {
+      return Fail(f.error().code,
+                  f.error().message +
+                      " (the file looks like a Renishaw .rtl: --format rtl or auto reads it)");
+    }
+    return f;
   }
   VOLCOMP_TRY_ASSIGN(RtlTest test, ParseRtl(text, source, options.rtl));
   PositioningFile f;
