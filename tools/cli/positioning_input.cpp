@@ -16,6 +16,9 @@ const Options& PositioningFormatOptions() {
        "(unidirectional test)"},
       {"--rtl-negate", nullptr, nullptr, nullptr, nullptr,
        ".rtl deviations are nominal − actual (laser set up the other way): flip their sign"},
+      {"--accept-units", nullptr, nullptr, nullptr, nullptr,
+       "accept a µm deviation column whose values are all below 0.1 µm (refused by default as "
+       "mm typed as µm)"},
   };
   return kOptions;
 }
@@ -35,6 +38,7 @@ Expected<datasets::PositioningReadOptions> ParsePositioningReadOptions(Args& arg
                                         {"forward", RtlRuns::kForward},
                                         {"reverse", RtlRuns::kReverse}}));
   o.rtl.negate = args.Flag("--rtl-negate");
+  o.accept_units = args.Flag("--accept-units");
   return o;
 }
 

@@ -50,6 +50,7 @@ Expected<PositioningFile> PositioningFileFromCsv(const CsvTable& csv) {
   f.conditions = metrology::ConditionsFromPreamble(csv);
   if (csv.find("position_mm") || csv.find("position_deg")) {
     VOLCOMP_TRY_ASSIGN(f.means, MeansFromCsv(csv));
+    f.readings_line = csv.header_line();
     return f;
   }
   if (!metrology::HoldsPositioningReadings(csv)) {

@@ -1,6 +1,7 @@
 // One loader for positioning tests: CSV or Renishaw .rtl, recognised by content.
 #include "volcomp/datasets/positioning_file.hpp"
 
+#include "unit_check.hpp"
 #include "volcomp/datasets/positioning_csv.hpp"
 #include "volcomp/metrology/mean_deviations.hpp"
 #include "volcomp/tools/csv.hpp"
@@ -20,9 +21,37 @@ const char* PositioningFormatName(PositioningFormat format) {
   return "auto";
 }
 
-Expected<PositioningFile> ReadPositioningText(const std::string& text,
-                                              const std::string& source,
-                                              const PositioningReadOptions& options) {
+namespace {
+
+// The unit plausibility check of every µm column of a linear axis (unit_check.hpp).
+Outcome CheckUnits(const PositioningFile& f) {
+  if (f.readings && f.readings->kind == metrology::AxisKind::kLinear &&
+      f.readings->column_scale == 1.0) {
+    std::vector<double> values;
+    std::vector<std::size_t> lines;
+    for (const auto& r : f.readings->readings) {
+      values.push_back(r.deviation);
+      lines.push_back(r.line);
+    }
+    const std::string fix = f.format == PositioningFormat::kRtl
+                                ? "an .rtl holds µm, so check the test in the laser software"
+                                : "if they are mm, name the column deviation_mm";
+    VOLCOMP_TRY(
+        CheckMicrometreColumn(f.source, f.readings_line, f.readings->column, values, lines, fix));
+  }
+  if (f.means && !f.means->rotary) {
+    const char* fix = "if they are mm, multiply them by 1000";
+    VOLCOMP_TRY(CheckMicrometreColumn(f.source, f.readings_line, "dev_forward_um",
+                                      f.means->dev_forward, {}, fix));
+    VOLCOMP_TRY(CheckMicrometreColumn(f.source, f.readings_line, "dev_reverse_um",
+                                      f.means->dev_reverse, {}, fix));
+  }
+  return Outcome::Ok();
+}
+
+Expected<PositioningFile> ReadAnyFormat(const std::string& text,
+                                        const std::string& source,
+                                        const PositioningReadOptions& options) {
   const bool rtl = options.format == PositioningFormat::kRtl ||
                    (options.format == PositioningFormat::kAuto && LooksLikeRtl(text));
   if (!rtl) {
@@ -45,6 +74,16 @@ Expected<PositioningFile> ReadPositioningText(const std::string& text,
   f.readings = std::move(test.readings);
   f.readings_line = test.deviations_line;
   f.warnings = std::move(test.warnings);
+  return f;
+}
+
+}  // namespace
+
+Expected<PositioningFile> ReadPositioningText(const std::string& text,
+                                              const std::string& source,
+                                              const PositioningReadOptions& options) {
+  VOLCOMP_TRY_ASSIGN(PositioningFile f, ReadAnyFormat(text, source, options));
+  if (!options.accept_units) VOLCOMP_TRY(CheckUnits(f));
   return f;
 }
 

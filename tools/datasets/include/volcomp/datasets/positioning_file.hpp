@@ -31,6 +31,10 @@ const char* PositioningFormatName(PositioningFormat format);
 struct PositioningReadOptions {
   PositioningFormat format = PositioningFormat::kAuto;
   RtlOptions rtl;  // .rtl only: directions of the runs, sign
+  /// Accept a µm column whose values are all below 0.1 µm (not all zero): without it such a
+  /// column is refused as mm typed as µm (a failure naming the column, the largest value and the
+  /// fix).
+  bool accept_units = false;
 };
 
 /// A positioning test as read: either its raw readings or (CSV only) its mean deviations.
@@ -39,12 +43,13 @@ struct PositioningFile {
   PositioningFormat format = PositioningFormat::kCsv;  // what was read: kCsv or kRtl
   metrology::TestConditions conditions;
   std::optional<metrology::PositioningData> readings;  // raw readings (CSV or .rtl)
-  std::size_t readings_line = 0;  // the line naming the readings as a whole (header, DEVIATIONS::)
+  std::size_t readings_line = 0;  // the line naming the data as a whole (header, DEVIATIONS::)
   std::optional<model::PositioningData> means;  // the CSV layout position_mm, dev_forward_um ...
   std::vector<std::string> warnings;            // the reader's (.rtl: directions, environment)
 };
 
-/// Reads the file at `path` (kIoError when it cannot be read).
+/// Reads the file at `path` (kIoError when it cannot be read), with the unit plausibility check
+/// of every µm deviation column of a linear axis (see PositioningReadOptions::accept_units).
 Expected<PositioningFile> ReadPositioningFile(const std::string& path,
                                               const PositioningReadOptions& options = {});
 /// The same from text already read; `source` names it in messages.
