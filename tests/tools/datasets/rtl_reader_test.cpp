@@ -238,6 +238,9 @@ TEST(datasets_rtl, RefusalsNameTheLine) {
   l[6] = "Flags: 0";
   ExpectRefused(l, 5, "Targets lists 2 targets but Target-count (line 4) says 3");
   l = Small();
+  l[6] = "20.0 abc";
+  ExpectRefused(l, 7, "Targets (line 5): \"abc\" is not a number");
+  l = Small();
   l[6] = "10.0";
   ExpectRefused(l, 7, "target 10.0 mm is listed twice (targets 2 and 3)");
   l = Small();

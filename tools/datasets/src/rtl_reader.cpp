@@ -160,6 +160,7 @@ class Reader {
   };
   std::vector<Text> user_text_;
   std::vector<Text> other_environment_;
+  std::size_t date_time_line_ = 0;
 };
 
 Outcome Reader::Section(const Line& line, const std::string& name) {
@@ -298,6 +299,7 @@ Outcome Reader::EnvironmentEntry(const Line& line,
       if (!Trim(piece).empty()) stamps.push_back(Trim(piece));
     }
     env.date_time = stamps.size() == 2 ? stamps[0] + " to " + stamps[1] : value;
+    date_time_line_ = line.number;
     return Outcome::Ok();
   }
   if (key == "finaldata") return Outcome::Ok();  // meaning unknown
@@ -321,8 +323,8 @@ Outcome Reader::EnvironmentEntry(const Line& line,
 
 Outcome Reader::Entry(const Line& line) {
   if (section_ == "targetdata" && in_targets_) {
-    const std::vector<std::string> w = Words(line.text);
-    if (AllNumbers(w)) return TargetNumbers(line, w);
+    // Numbers continue the list; a line without a key names its word that is not a number.
+    if (line.text.find(':') == std::string::npos) return TargetNumbers(line, Words(line.text));
     in_targets_ = false;
   }
   if (section_ == "deviations" && AllNumbers(Words(line.text))) return DeviationRow(line);
@@ -400,7 +402,7 @@ void Reader::AddEnvironmentConditions() {
   add("humidity %RH", env.humidity_pct);
   add("expansion coefficient ppm/C", env.expansion_ppm_per_c);
   add("environment factor", env.environment_factor);
-  if (!env.date_time.empty()) AddCondition("measured", env.date_time, 0);
+  if (!env.date_time.empty()) AddCondition("measured", env.date_time, date_time_line_);
   for (const Text& t : other_environment_) AddCondition(t.key, t.value, t.line);
 }
 
@@ -558,8 +560,13 @@ Expected<RtlTest> Reader::Read(const std::string& text) {
 }  // namespace
 
 bool LooksLikeRtl(const std::string& text) {
-  for (const Line& line : SplitLines(text)) {
-    if (!line.text.empty()) return SectionName(line.text).has_value();
+  std::size_t start = text.compare(0, 3, "\xEF\xBB\xBF") == 0 ? 3 : 0;
+  while (start < text.size()) {
+    std::size_t end = text.find('\n', start);
+    if (end == std::string::npos) end = text.size();
+    const std::string line = Trim(text.substr(start, end - start));
+    if (!line.empty()) return SectionName(line).has_value();
+    start = end + 1;
   }
   return false;
 }
