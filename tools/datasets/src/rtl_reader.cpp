@@ -105,6 +105,11 @@ bool ToUtf8(std::string* value) {
   return ok;
 }
 
+// A line as quoted in a message: at most 60 characters.
+std::string Quoted(const std::string& text) {
+  return "\"" + (text.size() > 60 ? text.substr(0, 57) + "..." : text) + "\"";
+}
+
 std::string Plural(std::size_t n, const char* word) {
   return std::to_string(n) + " " + word + (n == 1 ? "" : "s");
 }
@@ -241,8 +246,8 @@ Outcome Reader::TargetEntry(const Line& line, const std::string& key, const std:
 Outcome Reader::DeviationRow(const Line& line) {
   const std::vector<std::string> w = Words(line.text);
   if (w.size() != 3 || !AllNumbers(w)) {
-    return At(line.number, "\"" + line.text +
-                               "\" is not a deviation row (run, target and deviation: three "
+    return At(line.number, Quoted(line.text) +
+                               " is not a deviation row (run, target and deviation: three "
                                "numbers)");
   }
   if (!run_count_ || !target_count_) {
@@ -312,8 +317,8 @@ Outcome Reader::EnvironmentEntry(const Line& line,
   const auto start = w.size() >= 2 ? tools::ParseDouble(w[0]) : std::nullopt;
   const auto end = w.size() >= 2 ? tools::ParseDouble(w[1]) : std::nullopt;
   if (!start || !end || w.size() > 3) {
-    return At(line.number, "\"" + line.text +
-                               "\": an environment line holds a start and an end value (and an "
+    return At(line.number, Quoted(line.text) +
+                               ": an environment line holds a start and an end value (and an "
                                "optional flag)");
   }
   if (key.rfind("mattemp", 0) == 0 && *start == -10.0 && *end == -10.0) return Outcome::Ok();
@@ -333,7 +338,7 @@ Outcome Reader::Entry(const Line& line) {
     if (section_ == "deviations") return DeviationRow(line);  // names the bad row
     if (section_ == "header" || section_ == "targetdata" || section_ == "usertext" ||
         section_ == "runs" || section_ == "environment") {
-      return At(line.number, "\"" + line.text + "\" is not a \"Key: value\" line");
+      return At(line.number, Quoted(line.text) + " is not a \"Key: value\" line");
     }
     return Outcome::Ok();  // unknown or EQUIPMENT section
   }
@@ -547,8 +552,8 @@ Expected<RtlTest> Reader::Read(const std::string& text) {
       continue;
     }
     if (section_.empty()) {
-      return At(line.number, "\"" + line.text.substr(0, 60) +
-                                 "\" before the first section: a Renishaw .rtl file starts with "
+      return At(line.number, Quoted(line.text) +
+                                 " before the first section: a Renishaw .rtl file starts with "
                                  "HEADER:: (a section line NAME::)");
     }
     VOLCOMP_TRY(Entry(line));
