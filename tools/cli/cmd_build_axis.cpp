@@ -13,8 +13,8 @@
 #include "choice_option.hpp"
 #include "commands.hpp"
 #include "option_groups.hpp"
+#include "positioning_input.hpp"
 #include "volcomp/builders/axis_section.hpp"
-#include "volcomp/datasets/positioning_csv.hpp"
 #include "volcomp/image/axis_units.hpp"
 #include "volcomp/tools/csv.hpp"
 #include "volcomp/tools/file_io.hpp"
@@ -111,13 +111,16 @@ Expected<Output> RunBuildAxis(Args& args, Context& ctx) {
   VOLCOMP_TRY_ASSIGN(req.axes, ParseAxisResolutions(args, names));
   VOLCOMP_TRY(ParseImageOptions(args, &req));
   VOLCOMP_TRY_ASSIGN(const std::optional<BoardFileCheck> board, ParseBoardFileCheck(args));
+  VOLCOMP_TRY_ASSIGN(const datasets::PositioningReadOptions read,
+                     ParsePositioningReadOptions(args));
   VOLCOMP_TRY(args.Finish());
 
   Output output;
   JsonValue axes = JsonValue::Array();
   for (std::size_t i = 0; i < inputs.size(); ++i) {
-    VOLCOMP_TRY_ASSIGN(const model::PositioningData data,
-                       datasets::LoadPositioningCsv(inputs[i].path));
+    VOLCOMP_TRY_ASSIGN(const datasets::PositioningFile file,
+                       ReadPositioningArgument(inputs[i].path, read, ctx));
+    VOLCOMP_TRY_ASSIGN(const model::PositioningData data, datasets::PositioningMeans(file));
     for (const std::string& w : data.warnings) ctx.err << "warning: " << w << "\n";
     builders::Axis1dOptions o = opt;
     o.spacing = spacing[i];
@@ -152,6 +155,7 @@ const Command& BuildAxisCommand() {
       "AXIS1D image from positioning tests (raw readings or mean deviations)",
       "",
       Join({PositioningFileOptions(),
+            PositioningFormatOptions(),
             {{"--output", "-o", "IMAGE", nullptr, nullptr, "image file to write (required)"}},
             ResolutionOptions(),
             {{"--reverse", nullptr, "tables|backlash|mean", nullptr, "tables",

@@ -8,6 +8,7 @@
 #include "file_arguments.hpp"
 #include "metrology_report.hpp"
 #include "option_groups.hpp"
+#include "positioning_input.hpp"
 #include "uncertainty_options.hpp"
 #include "volcomp/metrology/positioning_evaluation.hpp"
 #include "volcomp/metrology/positioning_report.hpp"
@@ -30,6 +31,8 @@ Expected<Output> RunEvaluatePositioning(Args& args, Context& ctx) {
   o.axis_length_mm = args.Number("--axis-length-mm");
   o.grouping.allow_few_approaches = args.Flag("--allow-few-runs");
   o.uncertainty = ReadLengthUncertainty(args);
+  VOLCOMP_TRY_ASSIGN(const datasets::PositioningReadOptions read,
+                     ParsePositioningReadOptions(args));
   const auto files = args.Positionals();
   VOLCOMP_TRY(args.Finish());
   if (files.size() != 1) return UsageFailure("give exactly one data file (or - for stdin)");
@@ -48,9 +51,23 @@ Expected<Output> RunEvaluatePositioning(Args& args, Context& ctx) {
     return UsageFailure("--axis-length-mm must be positive");
   }
 
-  VOLCOMP_TRY_ASSIGN(const tools::CsvTable table, ReadCsvArgument(files[0], ctx));
-  VOLCOMP_TRY_ASSIGN(const m::PositioningEvaluation ev, m::EvaluatePositioningTest(table, o));
+  VOLCOMP_TRY_ASSIGN(const datasets::PositioningFile file,
+                     ReadPositioningArgument(files[0], read, ctx));
+  if (!file.readings) {
+    return Fail(Error::kInputInvalid,
+                file.source +
+                    ": holds the mean deviations per target (position_mm, dev_forward_um ...); "
+                    "evaluate positioning needs the readings of every run");
+  }
+  VOLCOMP_TRY_ASSIGN(m::PositioningEvaluation ev,
+                     m::EvaluatePositioningReadings(*file.readings, file.conditions, o));
+  // The reader's warnings (.rtl: directions, environment) belong to every evaluation.
+  for (m::PositioningResult& r : ev.results) {
+    r.warnings.insert(r.warnings.begin(), file.warnings.begin(), file.warnings.end());
+  }
+  ev.warnings.insert(ev.warnings.begin(), file.warnings.begin(), file.warnings.end());
   Output output{m::PositioningEvaluationJson(ev), EvaluatePositioningText, ev.warnings};
+  output.data.Set("format", datasets::PositioningFormatName(file.format));
   if (report_dir) {
     VOLCOMP_TRY(WriteMetrologyReport(m::PositioningEvaluationPage(ev), output.data, *report_dir,
                                      m::PositioningReportName(ev), ctx));
@@ -63,7 +80,7 @@ Expected<Output> RunEvaluatePositioning(Args& args, Context& ctx) {
 const Command& EvaluatePositioningCommand() {
   static const Command kCommand{
       "evaluate positioning",
-      "GOST 27843-88 / ISO 230-2 positioning test from CSV",
+      "GOST 27843-88 / ISO 230-2 positioning test from CSV or a Renishaw .rtl",
       "FILE|-",
       Join({{{"--standard", nullptr, "gost27843|iso230-2|both", nullptr, "gost27843",
               "standard(s) to evaluate"},
@@ -72,6 +89,7 @@ const Command& EvaluatePositioningCommand() {
              {"--axis-length-mm", nullptr, "L", "mm", nullptr,
               "axis travel for the target-count checks (default: the targets' span)"}},
             AllowFewRuns(),
+            PositioningFormatOptions(),
             LengthUncertaintyOptions(),
             JsonReport()}),
       RunEvaluatePositioning,
@@ -79,7 +97,9 @@ const Command& EvaluatePositioningCommand() {
       "deviation_arcsec|...; ',' or ';' or TAB separated (decimal comma with ';' or TAB);\n"
       "'# key: value' lines before the header are the test conditions of the report.\n"
       "Non-finite readings are refused; implausible magnitudes and Grubbs outliers (99 %)\n"
-      "are warned about with their line. See docs/metrology.md."};
+      "are warned about with their line. See docs/metrology.md.\n"
+      "A Renishaw .rtl linear data file is read as it is (recognised by content); see\n"
+      "docs/pc-tool.md \"Instrument files\"."};
   return kCommand;
 }
 

@@ -13,7 +13,7 @@
 
 #include "commands.hpp"
 #include "option_groups.hpp"
-#include "volcomp/datasets/positioning_csv.hpp"
+#include "positioning_input.hpp"
 #include "volcomp/exporters/linuxcnc_comp.hpp"
 #include "volcomp/image/axis_units.hpp"
 #include "volcomp/tools/csv.hpp"
@@ -107,6 +107,8 @@ Expected<Output> RunExportLinuxcnc(Args& args, Context& ctx) {
   metrology::GroupingOptions grouping;
   grouping.allow_few_approaches = args.Flag("--allow-few-runs");
   args.Flag("--json");  // the command layer prints the data as JSON
+  VOLCOMP_TRY_ASSIGN(const datasets::PositioningReadOptions read,
+                     ParsePositioningReadOptions(args));
   VOLCOMP_TRY(args.Finish());
 
   std::error_code ec;
@@ -124,8 +126,10 @@ Expected<Output> RunExportLinuxcnc(Args& args, Context& ctx) {
       return UsageFailure("--joints: " + std::string(1, other->second) + " and " +
                           std::string(1, name) + " both on joint " + std::to_string(joint[name]));
     }
+    VOLCOMP_TRY_ASSIGN(const datasets::PositioningFile input,
+                       ReadPositioningArgument(path, read, ctx));
     VOLCOMP_TRY_ASSIGN(const model::PositioningData data,
-                       datasets::LoadPositioningCsv(path, grouping));
+                       datasets::PositioningMeans(input, grouping));
     for (const std::string& w : data.warnings) ctx.err << "warning: " << w << "\n";
     const auto s = spacing.find(name);
     const Expected<exporters::LinuxcncComp> comp =
@@ -141,6 +145,7 @@ Expected<Output> RunExportLinuxcnc(Args& args, Context& ctx) {
     a.Set("axis", std::string(1, name))
         .Set("joint", joint[name])
         .Set("source", path)
+        .Set("format", datasets::PositioningFormatName(input.format))
         .Set("points", uint64_t{comp->rows.size()})
         .Set("from", comp->rows.front().nominal)
         .Set("to", comp->rows.back().nominal)
@@ -196,10 +201,12 @@ const Command& ExportLinuxcncCommand() {
              {"--ini", nullptr, "FILE", nullptr, nullptr,
               "merge the lines into this LinuxCNC INI file's [JOINT_n] sections (old: FILE.bak)"}},
             AllowFewRuns(),
+            PositioningFormatOptions(),
             {{"--json", nullptr, nullptr, nullptr, nullptr, "machine-readable output"}}}),
       RunExportLinuxcnc,
-      "Each FILE is either the raw readings `evaluate positioning` reads (the mean per\n"
-      "target and direction is used) or the mean deviations (position_mm, dev_forward_um\n"
+      "Each FILE is either the raw readings `evaluate positioning` reads (CSV or a Renishaw\n"
+      ".rtl; the mean per target and direction is used) or the mean deviations (position_mm, "
+      "dev_forward_um\n"
       "[, dev_reverse_um]). Writes one file per axis (x.comp, ...), ending at the last\n"
       "tested position, and joints.ini with the INI lines to merge into the machine's\n"
       "[JOINT_n] sections (--ini FILE merges them); see docs/linuxcnc.md."};

@@ -119,9 +119,8 @@ const Options& PositioningFileOptions() {
 const char* PositioningFileNotes() {
   return "Each FILE is either the raw readings `evaluate positioning` reads (target_mm, "
          "direction,\n"
-         "run, deviation_um ...; the mean per target and direction is used) or the mean "
-         "deviations\n"
-         "(position_mm, dev_forward_um [, dev_reverse_um]).";
+         "run, deviation_um ...; or a Renishaw .rtl; the mean per target and direction is used)\n"
+         "or the mean deviations (position_mm, dev_forward_um [, dev_reverse_um]).";
 }
 const Options& AllowFewRuns() {
   static const Options kOptions = {

@@ -13,9 +13,9 @@ const Options& LengthUncertaintyOptions() {
        "mean material temperature (or preamble \"material temperature C\")"},
       {"--thermometer-range-k", nullptr, "R", "K", "0.2",
        "full error range of the material thermometer"},
-      {"--expansion", nullptr, "ALPHA", "um/(m K)", "11.5",
-       "expansion coefficient of the scale or screw (or preamble expansion_um_per_m_K; "
-       "not stated: steel, with a note)"},
+      {"--expansion", nullptr, "ALPHA", "um/(m K)", nullptr,
+       "expansion coefficient of the scale or screw (or preamble expansion_um_per_m_K, or an "
+       ".rtl's own; none: 11.5, steel, with a note)"},
       {"--expansion-range", nullptr, "R", "um/(m K)", "2",
        "full plausible range of the expansion coefficient"},
       {"--misalignment-mm", nullptr, "D", "mm", "0",

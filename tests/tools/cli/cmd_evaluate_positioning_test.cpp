@@ -144,6 +144,22 @@ TEST(MetrologyCli, EvaluatePositioningShowsEachValueWithItsUncertainty) {
   EXPECT_NE(r.err.find("no measurement uncertainty: state the instrument"), std::string::npos);
 }
 
+// An .rtl's environment block feeds the budget: the sample's targets span 400 mm, its
+// expansion coefficient is 11.7 ppm/°C and its material sensor reads 20.203292 °C at the start and
+// 20.321342 °C at the end (mean 20.262317). With a 0.5 ppm laser: instrument 0.6·2·0.5·0.4 =
+// 0.24, thermometer 0.6·11.7·0.4·0.2 = 0.5616, expansion 0.6·0.4·0.262317·2 = 0.125912:
+// U = sqrt(0.0576 + 0.31540 + 0.015854) = 0.62358.
+TEST(MetrologyCli, EvaluatePositioningTakesTheRtlEnvironmentIntoTheBudget) {
+  const auto r = RunCli({"evaluate", "positioning", SamplePath("metrology/renishaw_x.rtl"),
+                         "--standard", "iso", "--instrument-ppm", "0.5", "--json"});
+  EXPECT_EQ(r.code, 0) << r.err;
+  const auto doc = tools::ParseJson(r.out, "stdout");
+  ASSERT_TRUE(doc.ok()) << r.out;
+  const tools::JsonValue& u = *doc->get("evaluations")->array.at(0).get("uncertainty");
+  EXPECT_NEAR(u.get("length_mm")->number, 400.0, 1e-9);
+  EXPECT_NEAR(u.get("length_U_um")->number, 0.62358, 1e-5);
+}
+
 TEST(MetrologyCli, EvaluatePositioningBadOptionsAndInputs) {
   auto r = RunCli({"evaluate", "positioning", "x.csv", "--standard", "nope"});
   EXPECT_EQ(r.code, tools::kExitUsage);

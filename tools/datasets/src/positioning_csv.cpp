@@ -1,9 +1,6 @@
 // Positioning tests from CSV (see positioning_csv.hpp for the layouts).
 #include "volcomp/datasets/positioning_csv.hpp"
 
-#include <exception>
-
-#include "volcomp/metrology/mean_deviations.hpp"
 #include "volcomp/metrology/positioning_csv.hpp"
 
 namespace volcomp::datasets {
@@ -11,28 +8,9 @@ namespace {
 
 using tools::CsvTable;
 
-Unexpected<Failure> TooFewTargets(const CsvTable& csv) {
-  return Fail(
-      csv.LineFailure(csv.header_line(), "a positioning test needs at least 2 target positions"));
-}
-
-}  // namespace
-
-Expected<model::PositioningData> PositioningFromCsv(const CsvTable& csv,
-                                                    const metrology::GroupingOptions& grouping) {
+// The means layout: position_mm, dev_forward_um [, dev_reverse_um] (or the rotary columns).
+Expected<model::PositioningData> MeansFromCsv(const CsvTable& csv) {
   model::PositioningData d;
-  if (!csv.find("position_mm") && !csv.find("position_deg") &&
-      metrology::HoldsPositioningReadings(csv)) {
-    VOLCOMP_TRY_ASSIGN(const metrology::MeanDeviations m,
-                       metrology::MeanDeviationsFromCsv(csv, grouping));
-    d.rotary = m.kind == metrology::AxisKind::kRotary;
-    d.position = m.target;
-    d.dev_forward = m.mean_up;
-    d.dev_reverse = m.mean_down;
-    d.warnings = m.warnings;
-    if (d.position.size() < 2) return TooFewTargets(csv);
-    return d;
-  }
   std::string pos_col = "position_mm", fwd_col = "dev_forward_um", rev_col = "dev_reverse_um";
   if (csv.find("position_deg")) {
     d.rotary = true;
@@ -56,8 +34,41 @@ Expected<model::PositioningData> PositioningFromCsv(const CsvTable& csv,
       d.dev_reverse.push_back(reverse);
     }
   }
-  if (d.position.size() < 2) return TooFewTargets(csv);
+  if (d.position.size() < 2) {
+    return Fail(
+        csv.LineFailure(csv.header_line(), "a positioning test needs at least 2 target positions"));
+  }
   return d;
+}
+
+}  // namespace
+
+Expected<PositioningFile> PositioningFileFromCsv(const CsvTable& csv) {
+  PositioningFile f;
+  f.source = csv.source();
+  f.format = PositioningFormat::kCsv;
+  f.conditions = metrology::ConditionsFromPreamble(csv);
+  if (csv.find("position_mm") || csv.find("position_deg")) {
+    VOLCOMP_TRY_ASSIGN(f.means, MeansFromCsv(csv));
+    f.readings_line = csv.header_line();
+    return f;
+  }
+  if (!metrology::HoldsPositioningReadings(csv)) {
+    return Fail(csv.LineFailure(
+        csv.header_line(),
+        "unrecognised header: expected the raw readings (target_mm or target_deg, direction, run "
+        "and a measurement column such as deviation_um; or the wide layout deviation_um,1+,1-,...)"
+        " or the mean deviations (position_mm, dev_forward_um [, dev_reverse_um])"));
+  }
+  VOLCOMP_TRY_ASSIGN(f.readings, metrology::ReadPositioningCsv(csv));
+  f.readings_line = csv.header_line();
+  return f;
+}
+
+Expected<model::PositioningData> PositioningFromCsv(const CsvTable& csv,
+                                                    const metrology::GroupingOptions& grouping) {
+  VOLCOMP_TRY_ASSIGN(const PositioningFile f, PositioningFileFromCsv(csv));
+  return PositioningMeans(f, grouping);
 }
 
 Expected<model::PositioningData> LoadPositioningCsv(const std::string& path,

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <optional>
 #include <set>
 #include <sstream>
 
@@ -154,7 +155,10 @@ Expected<DiagonalEvaluation> EvaluateDiagonals(const tools::CsvTable& table,
     auto g = groups.find(gkey);
     if (g == groups.end()) {
       group_order.push_back(gkey);
-      g = groups.emplace(gkey, DiagonalGroupValue{gkey, -1.0, key, -1.0, key, 0}).first;
+      g = groups
+              .emplace(gkey, DiagonalGroupValue{gkey, -1.0, key, -1.0, key, 0, std::nullopt,
+                                                std::nullopt})
+              .first;
     }
     DiagonalGroupValue& gv = g->second;
     std::optional<double> u_length, u_local;

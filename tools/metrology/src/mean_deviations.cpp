@@ -2,6 +2,7 @@
 #include "volcomp/metrology/mean_deviations.hpp"
 
 #include <algorithm>
+#include <string>
 
 #include "volcomp/metrology/positioning_csv.hpp"
 #include "volcomp/metrology/positioning_data.hpp"
@@ -13,10 +14,17 @@ namespace volcomp::metrology {
 Expected<MeanDeviations> MeanDeviationsFromCsv(const tools::CsvTable& table,
                                                const GroupingOptions& grouping) {
   VOLCOMP_TRY_ASSIGN(const PositioningData data, ReadPositioningCsv(table));
+  return MeanDeviationsFromReadings(data, grouping, table.header_line());
+}
+
+Expected<MeanDeviations> MeanDeviationsFromReadings(const PositioningData& data,
+                                                    const GroupingOptions& grouping,
+                                                    std::size_t whole_line) {
   VOLCOMP_TRY_ASSIGN(const PositioningSet set, GroupReadings(data, grouping));
   if (!set.has_up) {
-    return Fail(table.LineFailure(
-        table.header_line(), "the readings have no ↑ approaches; the forward table needs them"));
+    return Fail(Error::kInputInvalid,
+                data.source + ":" + std::to_string(whole_line) +
+                    ": the readings have no ↑ approaches; the forward table needs them");
   }
   MeanDeviations m;
   m.kind = set.kind;

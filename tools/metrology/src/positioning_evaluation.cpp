@@ -36,10 +36,16 @@ Expected<std::optional<PositioningUncertainty>> Uncertainty(
 
 Expected<PositioningEvaluation> EvaluatePositioningTest(const tools::CsvTable& table,
                                                         const PositioningTestOptions& options) {
-  PositioningEvaluation ev;
-  ev.source = table.source();
-  ev.conditions = ConditionsFromPreamble(table);
   VOLCOMP_TRY_ASSIGN(const PositioningData data, ReadPositioningCsv(table));
+  return EvaluatePositioningReadings(data, ConditionsFromPreamble(table), options);
+}
+
+Expected<PositioningEvaluation> EvaluatePositioningReadings(const PositioningData& data,
+                                                            const TestConditions& conditions,
+                                                            const PositioningTestOptions& options) {
+  PositioningEvaluation ev;
+  ev.source = data.source;
+  ev.conditions = conditions;
   VOLCOMP_TRY_ASSIGN(const PositioningSet set, GroupReadings(data, options.grouping));
   ev.kind = set.kind;
   ev.positions = set.positions.size();

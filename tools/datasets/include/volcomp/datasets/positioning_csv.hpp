@@ -10,12 +10,17 @@
 
 #include <string>
 
+#include "volcomp/datasets/positioning_file.hpp"
 #include "volcomp/hosted/expected.hpp"
 #include "volcomp/metrology/positioning_data.hpp"
 #include "volcomp/model/positioning.hpp"
 #include "volcomp/tools/csv.hpp"
 
 namespace volcomp::datasets {
+
+/// The file as read (positioning_file.hpp): the readings with the preamble's test conditions, or
+/// the means; a header of neither layout is a failure at the header line.
+Expected<PositioningFile> PositioningFileFromCsv(const tools::CsvTable& csv);
 
 /// Either layout; raw readings are grouped and checked with `grouping` (by default ≥ 5
 /// approaches per target and direction). At least 2 target positions.

@@ -3,6 +3,7 @@
 // readings, with the same checks and warnings, as `volcomp evaluate positioning`.
 #pragma once
 
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -27,5 +28,11 @@ struct MeanDeviations {
 /// (the forward table needs them).
 Expected<MeanDeviations> MeanDeviationsFromCsv(const tools::CsvTable& table,
                                                const GroupingOptions& grouping = GroupingOptions{});
+
+/// The same from readings already read from a file of any format; `whole_line` is the line a
+/// failure about the readings as a whole names (a CSV's header, an instrument file's section).
+Expected<MeanDeviations> MeanDeviationsFromReadings(const PositioningData& data,
+                                                    const GroupingOptions& grouping,
+                                                    std::size_t whole_line);
 
 }  // namespace volcomp::metrology

@@ -40,9 +40,16 @@ struct PositioningEvaluation {
   std::vector<std::string> warnings;       // the warnings of every result, each once
 };
 
-/// Reads, checks and evaluates the positioning readings of `table`.
+/// Reads, checks and evaluates the positioning readings of `table` (its preamble gives the test
+/// conditions).
 Expected<PositioningEvaluation> EvaluatePositioningTest(const tools::CsvTable& table,
                                                         const PositioningTestOptions& options);
+
+/// Checks and evaluates readings already read from a file of any format (CSV, an instrument's
+/// file), with that file's test conditions; the same checks and figures as above.
+Expected<PositioningEvaluation> EvaluatePositioningReadings(const PositioningData& data,
+                                                            const TestConditions& conditions,
+                                                            const PositioningTestOptions& options);
 
 /// The base name of the report of `ev`: "positioning_" and the axis of its test conditions, or
 /// the stem of its file ("positioning_X", "positioning_x_readings").

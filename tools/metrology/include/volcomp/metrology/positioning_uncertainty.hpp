@@ -52,7 +52,8 @@ struct PositioningUncertainty {
 
 /// `in` with what it leaves unset taken from the readings file's preamble: instrument_u_um,
 /// instrument_ppm, "material temperature C" (decimal comma allowed), drift_range_um,
-/// expansion_um_per_m_K. A preamble value that is not a number: kInputInvalid naming it.
+/// expansion_um_per_m_K or "expansion coefficient ppm/C" (the .rtl reader's key). A preamble value
+/// that is not a number: kInputInvalid naming it.
 Expected<PositioningUncertaintyInputs> CompleteFromPreamble(PositioningUncertaintyInputs in,
                                                             const TestConditions& conditions);
 
