@@ -14,6 +14,7 @@
 #include "commands.hpp"
 #include "option_groups.hpp"
 #include "positioning_input.hpp"
+#include "uncertainty_options.hpp"
 #include "volcomp/builders/axis_section.hpp"
 #include "volcomp/image/axis_units.hpp"
 #include "volcomp/tools/csv.hpp"
@@ -67,6 +68,29 @@ JsonValue AxisData(const Input& in, const builders::Axis1dTable& t, bool rotary)
   return x;
 }
 
+// The test's U (k = 2) over its span, and how many measured deviations are smaller: their
+// corrections are within the measurement's uncertainty (linear axes with a stated instrument).
+Expected<JsonValue> BelowUncertainty(const datasets::PositioningFile& file,
+                                     const model::PositioningData& data,
+                                     const metrology::PositioningUncertaintyInputs& given,
+                                     std::vector<std::string>* warnings) {
+  JsonValue j = JsonValue::Object();
+  if (data.rotary || data.position.size() < 2) return j;
+  VOLCOMP_TRY_ASSIGN(const auto in, metrology::CompleteFromPreamble(given, file.conditions));
+  VOLCOMP_TRY_ASSIGN(const auto u, metrology::LengthUncertainty(
+                                       in, data.position.back() - data.position.front(), warnings));
+  if (!u) return j;
+  uint64_t points = 0, below = 0;
+  for (const auto* devs : {&data.dev_forward, &data.dev_reverse}) {
+    for (double d : *devs) {
+      ++points;
+      below += std::fabs(d) < u->length_u_um;
+    }
+  }
+  j.Set("U_um", u->length_u_um).Set("points", points).Set("points_below_U", below);
+  return j;
+}
+
 void BuildAxisText(const JsonValue& d, std::ostream& out) {
   out << "volcomp build axis\n";
   for (const JsonValue& a : d.get("axes")->array) {
@@ -81,6 +105,16 @@ void BuildAxisText(const JsonValue& d, std::ostream& out) {
                   unit, a.get("reverse_table")->boolean ? "reverse table" : "no reverse table",
                   a.get("backlash")->number, unit);
     out << line;
+    const JsonValue& u = *a.get("uncertainty");
+    if (const JsonValue* below = u.get("points_below_U")) {
+      std::snprintf(
+          line, sizeof(line),
+          "    U (k = 2) of the test %.2f %s: %lld of %lld measured deviations are smaller "
+          "(their corrections are within the measurement's uncertainty)\n",
+          u.get("U_um")->number, unit, static_cast<long long>(below->integer),
+          static_cast<long long>(u.get("points")->integer));
+      out << line;
+    }
   }
   out << "  wrote " << d.get("image")->string << " (" << d.get("bytes")->integer << " bytes)\n";
 }
@@ -113,6 +147,7 @@ Expected<Output> RunBuildAxis(Args& args, Context& ctx) {
   VOLCOMP_TRY_ASSIGN(const std::optional<BoardFileCheck> board, ParseBoardFileCheck(args));
   VOLCOMP_TRY_ASSIGN(const datasets::PositioningReadOptions read,
                      ParsePositioningReadOptions(args));
+  const metrology::PositioningUncertaintyInputs uncertainty = ReadLengthUncertainty(args);
   VOLCOMP_TRY(args.Finish());
 
   Output output;
@@ -129,7 +164,15 @@ Expected<Output> RunBuildAxis(Args& args, Context& ctx) {
     if (!axis.ok()) return Fail(Error::kInputInvalid, inputs[i].path + ": " + axis.error().message);
     req.axis_tables.push_back(axis->section);
     req.info.emplace(std::string("source_") + inputs[i].name, inputs[i].path);
-    axes.Push(AxisData(inputs[i], axis->table, req.axes[i].kind == table::AxisKind::kRotary));
+    JsonValue axis_data =
+        AxisData(inputs[i], axis->table, req.axes[i].kind == table::AxisKind::kRotary);
+    std::vector<std::string> u_warnings;
+    VOLCOMP_TRY_ASSIGN(JsonValue below, BelowUncertainty(file, data, uncertainty, &u_warnings));
+    for (const std::string& w : u_warnings) {
+      output.warnings.push_back(std::string(1, inputs[i].name) + ": " + w);
+    }
+    axis_data.Set("uncertainty", std::move(below));
+    axes.Push(std::move(axis_data));
   }
   req.info.emplace("builder", "volcomp build axis");
   req.info.emplace("reverse", reverse);
@@ -165,7 +208,8 @@ const Command& BuildAxisCommand() {
              {"--wrap", nullptr, nullptr, nullptr, nullptr,
               "rotary table spanning exactly 360° wraps around"}},
             ImageOptions(),
-            BoardFileOptions()}),
+            BoardFileOptions(),
+            LengthUncertaintyOptions()}),
       RunBuildAxis,
       PositioningFileNotes()};
   return kCommand;

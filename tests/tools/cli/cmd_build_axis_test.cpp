@@ -104,5 +104,20 @@ TEST(VolcompBuildAxis, FromAPositioningTest) {
   EXPECT_NE(spacing.err.find("--spacing: no input file for axis Y"), std::string::npos);
 }
 
+// The builder says which measured deviations are smaller than the test's U: the sample .rtl's
+// means (odd runs ↑, even ↓, from its DEVIATIONS block) are 0, 2, 4, 3, 1 and −1, 1, 2.5, 2, 0 µm;
+// with a 0.5 ppm laser its U is 0.62 µm (cmd_evaluate_positioning_test.cpp works it by hand), so
+// 2 of 10 are smaller.
+TEST(VolcompBuildAxis, SaysWhichCorrectionsAreWithinTheUncertainty) {
+  const std::string out = TempPath("build_axis_u.vct");
+  const auto r = RunCli({"build", "axis", "--x", SamplePath("metrology/renishaw_x.rtl"), "-o", out,
+                         "--steps-per-unit", "X=1000", "--instrument-ppm", "0.5"});
+  EXPECT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("U (k = 2) of the test 0.62 µm: 2 of 10 measured deviations are smaller"),
+            std::string::npos)
+      << r.out;
+  std::filesystem::remove(out);
+}
+
 }  // namespace
 }  // namespace volcomp
