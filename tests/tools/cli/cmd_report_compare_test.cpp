@@ -47,6 +47,31 @@ TEST(MetrologyCli, ReportCompareOfTheSameResultsShowsNoReduction) {
   std::filesystem::remove_all(dir);
 }
 
+// Values stated with U keep it on the compare page: the diagonals' E_d with the U that
+// cmd_evaluate_diagonal_test.cpp works by hand (1.68 µm) before, none after.
+TEST(MetrologyCli, ReportCompareShowsEachValuesUncertainty) {
+  const std::string dir = FreshTempPath("report_compare_u");
+  ASSERT_EQ(RunCli({"evaluate", "diagonal", SamplePath("metrology/diagonals.csv"), "--report",
+                    dir + "/before", "--instrument-u-um", "0.3", "--material-temperature-c", "20.5",
+                    "--drift-range-um", "1"})
+                .code,
+            0);
+  ASSERT_EQ(RunCli({"evaluate", "diagonal", SamplePath("metrology/diagonals.csv"), "--report",
+                    dir + "/after"})
+                .code,
+            0);
+  auto r = RunCli({"report", "compare", dir + "/before", dir + "/after", "-o", dir + "/cmp"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("E_d    19.99 ± 1.68 ->      19.99"), std::string::npos) << r.out;
+  r = RunCli({"report", "compare", dir + "/before", dir + "/after", "-o", dir + "/cmp", "--json"});
+  const auto doc = tools::ParseJson(r.out, "stdout");
+  ASSERT_TRUE(doc.ok()) << doc.error().message;
+  const auto& v = doc->get("results")->array.at(0).get("tables")->array.at(0).get("values")->array;
+  EXPECT_NEAR(v.at(0).get("before_U")->number, 1.68, 0.005);
+  EXPECT_TRUE(v.at(0).get("after_U")->is_null());
+  std::filesystem::remove_all(dir);
+}
+
 TEST(MetrologyCli, ReportCompareBadArguments) {
   auto r = RunCli({"report", "compare", "a"});
   EXPECT_EQ(r.code, tools::kExitUsage);

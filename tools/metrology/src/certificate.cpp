@@ -91,11 +91,19 @@ JsonValue Verdict(const std::optional<bool>& pass) {
 }  // namespace
 
 const char* const kUncertaintyNotEvaluated = "not evaluated";
+const char* const kUncertaintyWhereStated = "U (k = 2) where the evaluations state it";
 
 int Certificate::Toleranced() const {
   int n = 0;
   for (const auto& f : figures) n += f.tolerance ? 1 : 0;
   return n;
+}
+
+bool Certificate::AnyUncertainty() const {
+  for (const auto& f : figures) {
+    if (f.u_before || f.u_after) return true;
+  }
+  return false;
 }
 
 int Certificate::FailedAfter() const {
@@ -176,6 +184,8 @@ Certificate BuildCertificate(const Comparison& comparison,
           f.unit = tb.unit;
           f.before = Stated(v.before);
           f.after = Stated(v.after);
+          f.u_before = v.u_before;
+          f.u_after = v.u_after;
           const ToleranceEntry* tol = c.info.Tolerance(s.id, scope);
           // An unscoped tolerance is for the linear axes (µm): a rotary axis (arc-seconds) needs
           // its own, FIGURE.AXIS.
@@ -289,11 +299,19 @@ JsonValue CertificateJson(const Certificate& c) {
     o.Set("tolerance_from", f.tolerance_from.empty() ? JsonValue() : JsonValue(f.tolerance_from));
     o.Set("before_result", Verdict(f.before_pass));
     o.Set("after_result", Verdict(f.after_pass));
-    o.Set("uncertainty", JsonValue());
+    if (f.u_before || f.u_after) {
+      JsonValue u = JsonValue::Object();
+      u.Set("k", 2);
+      u.Set("before", Optional(f.u_before));
+      u.Set("after", Optional(f.u_after));
+      o.Set("uncertainty", std::move(u));
+    } else {
+      o.Set("uncertainty", JsonValue());
+    }
     figures.Push(std::move(o));
   }
   j.Set("figures", std::move(figures));
-  j.Set("uncertainty", kUncertaintyNotEvaluated);
+  j.Set("uncertainty", c.AnyUncertainty() ? kUncertaintyWhereStated : kUncertaintyNotEvaluated);
   j.Set("toleranced", c.Toleranced());
   j.Set("failed_after", c.FailedAfter());
   j.Set("verdict",

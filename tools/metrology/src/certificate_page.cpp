@@ -188,7 +188,10 @@ std::string CertificateHtml(const Certificate& c) {
            Cell(Fixed(f.before), "n") + Cell(Fixed(f.after), "n") +
            (f.tolerance ? Cell(report::FormatNumber(*f.tolerance, 6), "n")
                         : std::string("<td class=\"n\">—</td>")) +
-           Verdict(f.before_pass) + Verdict(f.after_pass) + Cell(kUncertaintyNotEvaluated, "k") +
+           Verdict(f.before_pass) + Verdict(f.after_pass) +
+           Cell(f.u_after ? "± " + Fixed(*f.u_after)
+                          : (f.u_before ? "± " + Fixed(*f.u_before) + " (before)" : "not stated"),
+                "k") +
            "</tr>\n";
     }
   }
@@ -207,8 +210,10 @@ std::string CertificateHtml(const Certificate& c) {
   }
   h += ".</p>\n";
   h += "<p class=\"note\">Figures to 0.01 µm (″: arc-seconds, rotary axis); pass: figure ≤ "
-       "tolerance; —: no tolerance agreed. Measurement uncertainty not evaluated (the evaluations "
-       "do not estimate it). ISO 230-2 with 2s, GOST 27843-88 with 3S. Conditions that differ "
+       "tolerance; —: no tolerance agreed. Uncertainty: U at k = 2 of the figure after "
+       "compensation where the evaluation states its instrument (docs/metrology.md); the verdict "
+       "compares the figure itself with the tolerance (no guard band). ISO 230-2 with 2s, "
+       "GOST 27843-88 with 3S. Conditions that differ "
        "read before / after. Annex: the evaluation reports and the before/after page.</p>\n";
   const std::string remarks = i.Field("test", "remarks");
   if (!remarks.empty()) h += "<p class=\"note\">Remarks: " + EscapeXml(remarks) + "</p>\n";

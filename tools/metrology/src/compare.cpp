@@ -38,7 +38,7 @@ std::optional<double> Number(const JsonValue* v) {
 }
 
 ComparedValue Value(const std::string& symbol, const std::string& meaning, double b, double a) {
-  ComparedValue v{symbol, meaning, b, a, std::nullopt};
+  ComparedValue v{symbol, meaning, b, a, std::nullopt, std::nullopt, std::nullopt};
   if (std::fabs(b) > 0.0) v.reduction_pct = 100.0 * (std::fabs(b) - std::fabs(a)) / std::fabs(b);
   return v;
 }
@@ -110,7 +110,10 @@ void ComparePositioning(const JsonValue& b,
       const auto vb = Number(param.get("value"));
       const auto va = other != nullptr ? Number(other->get("value")) : std::nullopt;
       if (!vb || !va) continue;
-      t.values.push_back(Value(Text(param.get("symbol")), Text(param.get("meaning")), *vb, *va));
+      ComparedValue v = Value(Text(param.get("symbol")), Text(param.get("meaning")), *vb, *va);
+      v.u_before = Number(param.get("U"));
+      v.u_after = Number(other->get("U"));
+      t.values.push_back(v);
     }
     r->tables.push_back(t);
     if (r->series.empty()) {
@@ -138,10 +141,13 @@ void AddGroup(const std::string& title,
     const auto vb = Number(gb->get(key));
     const auto va = Number(ga->get(key));
     if (vb && va) {
-      t.values.push_back(Value(key,
-                               Text(gb->get(std::string(key) + "_from")) + " → " +
-                                   Text(ga->get(std::string(key) + "_from")),
-                               *vb, *va));
+      ComparedValue v = Value(key,
+                              Text(gb->get(std::string(key) + "_from")) + " → " +
+                                  Text(ga->get(std::string(key) + "_from")),
+                              *vb, *va);
+      v.u_before = Number(gb->get(std::string(key) + "_U"));
+      v.u_after = Number(ga->get(std::string(key) + "_U"));
+      t.values.push_back(v);
     }
   }
   if (!t.values.empty()) r->tables.push_back(t);
@@ -253,6 +259,15 @@ std::string Reduction(const std::optional<double>& pct) {
 }
 
 std::string Reduction(const ComparedValue& v) { return Reduction(v.reduction_pct); }
+
+// "18.00" or "18.00 ± 5.98" when the evaluation stated U.
+std::string WithU(double value, const std::optional<double>& u) {
+  return report::FormatFixed(value, 2) + (u ? " ± " + report::FormatFixed(*u, 2) : std::string());
+}
+
+std::string WithU(double value, const JsonValue& u) {
+  return WithU(value, u.is_number() ? std::optional<double>(u.number) : std::nullopt);
+}
 
 JsonValue PairsJson(const std::vector<std::pair<std::string, std::string>>& pairs) {
   JsonValue o = JsonValue::Object();
@@ -369,6 +384,8 @@ JsonValue ComparisonJson(const Comparison& c) {
         value.Set("before", v.before);
         value.Set("after", v.after);
         value.Set("reduction_pct", v.reduction_pct ? JsonValue(*v.reduction_pct) : JsonValue());
+        value.Set("before_U", v.u_before ? JsonValue(*v.u_before) : JsonValue());
+        value.Set("after_U", v.u_after ? JsonValue(*v.u_after) : JsonValue());
         values.Push(std::move(value));
       }
       table.Set("values", std::move(values));
@@ -393,12 +410,12 @@ void WriteComparisonText(std::ostream& out, const JsonValue& comparison) {
       out << "  " << title << ", values in " << json::Text(t, "unit") << "\n";
       for (const JsonValue& v : json::At(t, "values").array) {
         const JsonValue& pct = json::At(v, "reduction_pct");
-        char line[160];
+        char line[200];
         std::snprintf(
             line, sizeof line, "    %s %10s -> %10s   %9s",
             report::PadRight(json::Text(v, "symbol"), 6).c_str(),
-            report::FormatFixed(json::Number(v, "before"), 2).c_str(),
-            report::FormatFixed(json::Number(v, "after"), 2).c_str(),
+            WithU(json::Number(v, "before"), json::At(v, "before_U")).c_str(),
+            WithU(json::Number(v, "after"), json::At(v, "after_U")).c_str(),
             Reduction(pct.is_null() ? std::nullopt : std::optional<double>(pct.number)).c_str());
         out << line;
         if (title == "each diagonal") out << "   " << json::Text(v, "meaning");
@@ -458,7 +475,7 @@ void AddComparisonSections(report::HtmlPage* page, const Comparison& c) {
       page->Heading(3, t.title);
       std::vector<std::vector<std::string>> rows;
       for (const ComparedValue& v : t.values) {
-        rows.push_back({v.symbol, report::FormatFixed(v.before, 2), report::FormatFixed(v.after, 2),
+        rows.push_back({v.symbol, WithU(v.before, v.u_before), WithU(v.after, v.u_after),
                         Reduction(v), v.meaning});
       }
       page->Table({"parameter", "before, " + t.unit, "after, " + t.unit, "reduction", "meaning"},

@@ -51,6 +51,7 @@ struct CertificateFigure {
   std::optional<double> tolerance;
   std::string tolerance_from;  // "info.ini:12"
   std::optional<bool> before_pass, after_pass;
+  std::optional<double> u_before, u_after;  // U (k = 2) where the evaluations state it
 };
 
 struct CertificateTest {
@@ -72,10 +73,12 @@ struct Certificate {
   std::vector<std::string> warnings;  // from the comparison, and tolerances that match no figure
   int Toleranced() const;             // figures with a tolerance
   int FailedAfter() const;            // ... whose after figure exceeds it
+  bool AnyUncertainty() const;        // some figure carries a U
 };
 
 /// The uncertainty column's text, and why.
 extern const char* const kUncertaintyNotEvaluated;
+extern const char* const kUncertaintyWhereStated;
 
 /// The certificate of `comparison`.
 Certificate BuildCertificate(const Comparison& comparison,

@@ -31,6 +31,8 @@ struct ComparedValue {
   double before = 0.0;
   double after = 0.0;
   std::optional<double> reduction_pct;  // nullopt when before is 0
+  std::optional<double> u_before;       // U (k = 2) where the evaluation states it
+  std::optional<double> u_after;
 };
 
 struct ComparedTable {
