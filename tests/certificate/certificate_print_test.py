@@ -173,7 +173,9 @@ def main():
             for axis, _ in AXES:
                 run([volcomp, "evaluate", "positioning", "%s_%s.csv" % (axis, when), "--standard",
                      "both", "--report", when], work)
-            run([volcomp, "evaluate", "diagonal", "diag_%s.csv" % when, "--report", when], work)
+            # The diagonals state their instrument: their figures carry U (the page's column).
+            run([volcomp, "evaluate", "diagonal", "diag_%s.csv" % when, "--report", when,
+                 "--instrument-u-um", "0.5"], work)
             run([volcomp, "evaluate", "circular", circular, "--report", when], work)
         run([volcomp, "build", "model", "--model",
              os.path.join(src, "samples", "model", "s500.conf"), "--resolution-nm",
@@ -189,6 +191,8 @@ def main():
         with open(os.path.join(work, "cert", "certificate.json"), encoding="utf-8") as f:
             check(json.load(f) == doc, "cert/certificate.json is what --json printed")
         figures = doc["figures"]
+        check(any((f.get("uncertainty") or {}).get("after") is not None for f in figures),
+              "the diagonals' figures carry their U")
         check(len(figures) == 3 * 8 + 2 + 4,
               "30 figures (ISO 230-2 and GOST 27843 of X, Y, Z; ISO 230-6; ISO 230-4): %d" %
               len(figures))
@@ -249,8 +253,15 @@ def main():
         for f in figures:
             standard = f["standard"].split(":")[0].replace("GOST 27843-88", "GOST 27843")
             label = "%s %s" % (standard, f["symbol"])
+            u = f.get("uncertainty") or {}
+            if u.get("after") is not None:
+                u_cell = "± %.2f" % u["after"]
+            elif u.get("before") is not None:
+                u_cell = "± %.2f (before)" % u["before"]
+            else:
+                u_cell = "not stated"
             want = ["%.2f" % f["before"], "%.2f" % f["after"], cell(f["_tol"]),
-                    f["_before"] or "—", f["_after"] or "—", "not evaluated"]
+                    f["_before"] or "—", f["_after"] or "—", u_cell]
             pattern = re.compile(r"(^|\s)" + re.escape(label) + r"\s.*?" +
                                  r"\s+".join(re.escape(x) for x in want))
             match = next((i for i, l in enumerate(rows) if pattern.search(l)), None)
