@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "commands.hpp"
+#include "export_axes.hpp"
 #include "option_groups.hpp"
 #include "positioning_input.hpp"
 #include "volcomp/exporters/linuxcnc_comp.hpp"
@@ -38,19 +39,6 @@ Expected<std::map<char, int>> ParseJoints(const std::optional<std::string>& text
     joint[name] = static_cast<int>(*v);
   }
   return joint;
-}
-
-// --spacing X=S,...: the point spacing of an axis (absent: the test's own).
-Expected<std::map<char, double>> ParseSpacing(const std::optional<std::string>& text) {
-  std::map<char, double> spacing;
-  if (!text) return spacing;
-  VOLCOMP_TRY_ASSIGN(const auto assignments, image::ParseAxisAssignments(*text, "--spacing"));
-  for (const auto& [name, value] : assignments) {
-    const auto v = tools::ParseDouble(value);
-    if (!v || !(*v > 0)) return UsageFailure("--spacing: " + std::string(1, name) + " must be > 0");
-    spacing[name] = *v;
-  }
-  return spacing;
 }
 
 Expected<std::string> AbsolutePath(const std::string& path) {
@@ -89,12 +77,7 @@ std::string JointsIniFile(const std::string& ini) {
 }
 
 Expected<Output> RunExportLinuxcnc(Args& args, Context& ctx) {
-  std::vector<std::pair<char, std::string>> inputs;
-  for (int i = 0; kAxes[i] != '\0'; ++i) {
-    const std::string opt = std::string("--") + static_cast<char>(kAxes[i] - 'A' + 'a');
-    if (auto p = args.Value(opt)) inputs.emplace_back(kAxes[i], *p);
-  }
-  if (inputs.empty()) return UsageFailure("give at least one axis file, e.g. --x x.csv");
+  VOLCOMP_TRY_ASSIGN(const std::vector<AxisInput> inputs, PositioningInputs(args));
   const std::string out_dir = args.Required("-o", "--output");
   const long long type = args.Integer("--type").value_or(1);
   VOLCOMP_TRY(args.status());
@@ -102,7 +85,7 @@ Expected<Output> RunExportLinuxcnc(Args& args, Context& ctx) {
     return UsageFailure("--type must be 0 or 1 (LinuxCNC COMP_FILE_TYPE)");
   }
   VOLCOMP_TRY_ASSIGN(auto joint, ParseJoints(args.Value("--joints")));
-  VOLCOMP_TRY_ASSIGN(auto spacing, ParseSpacing(args.Value("--spacing")));
+  VOLCOMP_TRY_ASSIGN(auto spacing, ParseAxisNumbers(args.Value("--spacing"), "--spacing", true));
   const std::optional<std::string> merge_ini = args.Value("--ini");
   metrology::GroupingOptions grouping;
   grouping.allow_few_approaches = args.Flag("--allow-few-runs");
@@ -126,11 +109,9 @@ Expected<Output> RunExportLinuxcnc(Args& args, Context& ctx) {
       return UsageFailure("--joints: " + std::string(1, other->second) + " and " +
                           std::string(1, name) + " both on joint " + std::to_string(joint[name]));
     }
-    VOLCOMP_TRY_ASSIGN(const datasets::PositioningFile input,
-                       ReadPositioningArgument(path, read, ctx));
+    datasets::PositioningFormat format = datasets::PositioningFormat::kCsv;
     VOLCOMP_TRY_ASSIGN(const model::PositioningData data,
-                       datasets::PositioningMeans(input, grouping));
-    for (const std::string& w : data.warnings) ctx.err << "warning: " << w << "\n";
+                       LoadAxisTest(path, read, grouping, ctx, &format));
     const auto s = spacing.find(name);
     const Expected<exporters::LinuxcncComp> comp =
         exporters::BuildLinuxcncComp(data, comp_type, s != spacing.end() ? s->second : 0.0);
@@ -145,7 +126,7 @@ Expected<Output> RunExportLinuxcnc(Args& args, Context& ctx) {
     a.Set("axis", std::string(1, name))
         .Set("joint", joint[name])
         .Set("source", path)
-        .Set("format", datasets::PositioningFormatName(input.format))
+        .Set("format", datasets::PositioningFormatName(format))
         .Set("points", uint64_t{comp->rows.size()})
         .Set("from", comp->rows.front().nominal)
         .Set("to", comp->rows.back().nominal)

@@ -38,6 +38,9 @@ const std::vector<const Command*>& Commands() {
       &BuildImageCommand(),
       &BuildThermalCommand(),
       &ExportLinuxcncCommand(),
+      &ExportSiemensCommand(),
+      &ExportHeidenhainCommand(),
+      &ExportFanucCommand(),
       &ModelEvalCommand(),
   };
   return kCommands;

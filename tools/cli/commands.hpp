@@ -43,6 +43,9 @@ const Command& BuildAxisCommand();
 const Command& BuildImageCommand();
 const Command& BuildThermalCommand();
 const Command& ExportLinuxcncCommand();
+const Command& ExportSiemensCommand();
+const Command& ExportHeidenhainCommand();
+const Command& ExportFanucCommand();
 const Command& ModelEvalCommand();
 
 }  // namespace volcomp::cli

@@ -1,0 +1,159 @@
+// The export commands' shared inputs (see export_axes.hpp).
+#include "export_axes.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <ostream>
+
+#include "positioning_input.hpp"
+#include "volcomp/datasets/positioning_csv.hpp"
+#include "volcomp/image/axis_units.hpp"
+#include "volcomp/tools/csv.hpp"
+
+namespace volcomp::cli {
+namespace {
+
+constexpr const char* kAxes = "XYZABCUVW";
+
+}  // namespace
+
+Expected<std::vector<AxisInput>> PositioningInputs(Args& args) {
+  std::vector<AxisInput> inputs;
+  for (int i = 0; kAxes[i] != '\0'; ++i) {
+    const std::string opt = std::string("--") + static_cast<char>(kAxes[i] - 'A' + 'a');
+    if (auto p = args.Value(opt)) inputs.push_back({kAxes[i], *p});
+  }
+  if (inputs.empty()) return UsageFailure("give at least one axis file, e.g. --x x.csv");
+  return inputs;
+}
+
+Expected<std::map<char, double>> ParseAxisNumbers(const std::optional<std::string>& text,
+                                                  const std::string& option,
+                                                  bool positive) {
+  std::map<char, double> numbers;
+  if (!text) return numbers;
+  VOLCOMP_TRY_ASSIGN(const auto assignments, image::ParseAxisAssignments(*text, option));
+  for (const auto& [name, value] : assignments) {
+    const auto v = tools::ParseDouble(value);
+    if (!v || !std::isfinite(*v) || (positive && !(*v > 0))) {
+      return UsageFailure(option + ": " + std::string(1, name) +
+                          (positive ? " must be > 0" : " must be a number"));
+    }
+    numbers[name] = *v;
+  }
+  return numbers;
+}
+
+Expected<model::PositioningData> LoadAxisTest(const std::string& path,
+                                              const datasets::PositioningReadOptions& read,
+                                              const metrology::GroupingOptions& grouping,
+                                              Context& ctx,
+                                              datasets::PositioningFormat* format) {
+  VOLCOMP_TRY_ASSIGN(const datasets::PositioningFile input,
+                     ReadPositioningArgument(path, read, ctx));
+  if (format != nullptr) *format = input.format;
+  VOLCOMP_TRY_ASSIGN(model::PositioningData data, datasets::PositioningMeans(input, grouping));
+  for (const std::string& w : data.warnings) ctx.err << "warning: " << w << "\n";
+  return data;
+}
+
+Options ControllerTableOptions(const char* spacing_help, const char* reference_help) {
+  return {{"--spacing", nullptr, "X=S,...", "mm (deg for A, B, C)", nullptr, spacing_help},
+          {"--reference", nullptr, "X=P,...", "mm (deg for A, B, C)", nullptr, reference_help},
+          {"--negate", nullptr, nullptr, nullptr, nullptr,
+           "flip the sign of every value, for a control that proves to take the other sign"}};
+}
+
+Expected<ControllerTableArgs> ReadControllerTableArgs(Args& args) {
+  ControllerTableArgs a;
+  VOLCOMP_TRY_ASSIGN(a.spacing, ParseAxisNumbers(args.Value("--spacing"), "--spacing", true));
+  VOLCOMP_TRY_ASSIGN(a.reference,
+                     ParseAxisNumbers(args.Value("--reference"), "--reference", false));
+  a.negate = args.Flag("--negate");
+  VOLCOMP_TRY_ASSIGN(a.read, ParsePositioningReadOptions(args));
+  a.grouping.allow_few_approaches = args.Flag("--allow-few-runs");
+  return a;
+}
+
+Expected<AxisErrorTable> LoadAxisErrorTable(const AxisInput& input,
+                                            const ControllerTableArgs& options,
+                                            Context& ctx,
+                                            bool reference_at_first) {
+  VOLCOMP_TRY_ASSIGN(const model::PositioningData data,
+                     LoadAxisTest(input.path, options.read, options.grouping, ctx));
+  exporters::ErrorTableOptions o;
+  o.negate = options.negate;
+  if (const auto s = options.spacing.find(input.axis); s != options.spacing.end()) {
+    o.spacing = s->second;
+  }
+  if (const auto r = options.reference.find(input.axis); r != options.reference.end()) {
+    o.zero_at = r->second;
+  } else if (reference_at_first) {
+    o.zero_at = data.position.front();
+  }
+  const Expected<exporters::ErrorTable> t = exporters::BuildErrorTable(data, o);
+  if (!t.ok()) return Fail(Error::kInputInvalid, input.path + ": " + t.error().message);
+  return AxisErrorTable{input, *t};
+}
+
+JsonValue ErrorTableJson(const AxisErrorTable& axis) {
+  const exporters::ErrorTable& t = axis.table;
+  double largest = 0;
+  for (const double e : t.forward_um) largest = std::fmax(largest, std::fabs(e));
+  for (const double e : t.reverse_um) largest = std::fmax(largest, std::fabs(e));
+  JsonValue j = JsonValue::Object();
+  j.Set("axis", std::string(1, axis.input.axis))
+      .Set("source", axis.input.path)
+      .Set("rotary", t.rotary)
+      .Set("points", uint64_t{t.position.size()})
+      .Set("from", t.position.front())
+      .Set("to", t.position.back())
+      .Set("spacing", t.spacing)
+      .Set("tested_to", t.tested_to)
+      .Set("uncovered", t.uncovered)
+      .Set("bidirectional", !t.reverse_um.empty())
+      .Set("negated", t.negated)
+      .Set("largest_error", largest);
+  if (t.zero_at) j.Set("reference", *t.zero_at);
+  return j;
+}
+
+std::string ErrorTableText(const JsonValue& a) {
+  const bool rotary = a.get("rotary")->boolean;
+  const char* unit = rotary ? "deg" : "mm";
+  char s[400];
+  std::snprintf(s, sizeof s, "  axis %s: %lld points from %g to %g %s",
+                a.get("axis")->string.c_str(), static_cast<long long>(a.get("points")->integer),
+                a.get("from")->number, a.get("to")->number, unit);
+  std::string line = s;
+  if (a.get("spacing")->number > 0) {
+    std::snprintf(s, sizeof s, " every %g %s", a.get("spacing")->number, unit);
+    line += s;
+  }
+  line += a.get("bidirectional")->boolean ? ", both directions" : ", one direction";
+  std::snprintf(s, sizeof s, ", largest error %.2f %s", a.get("largest_error")->number,
+                rotary ? "arcsec" : "um");
+  line += s;
+  if (const JsonValue* r = a.get("reference")) {
+    std::snprintf(s, sizeof s, ", zero at %g %s", r->number, unit);
+    line += s;
+  } else {
+    line += ", not zeroed";
+  }
+  if (a.get("negated")->boolean) line += ", NEGATED";
+  return line + " (" + a.get("source")->string + ")\n";
+}
+
+std::string UncoveredWarning(const AxisErrorTable& axis) {
+  const exporters::ErrorTable& t = axis.table;
+  if (!(t.uncovered > 0)) return "";
+  char s[300];
+  std::snprintf(s, sizeof s,
+                "%s: the table ends at %g, the test at %g %s: the last %g %s tested are not in "
+                "it (a --spacing that divides the travel covers it all)",
+                axis.input.path.c_str(), t.position.back(), t.tested_to, t.rotary ? "deg" : "mm",
+                t.uncovered, t.rotary ? "deg" : "mm");
+  return s;
+}
+
+}  // namespace volcomp::cli
