@@ -38,7 +38,9 @@ const std::vector<const Command*>& Commands() {
       &BuildImageCommand(),
       &BuildThermalCommand(),
       &ExportLinuxcncCommand(),
+      &ExportIsgCommand(),
       &ModelEvalCommand(),
+      &ModelExportCommand(),
   };
   return kCommands;
 }

@@ -43,6 +43,8 @@ const Command& BuildAxisCommand();
 const Command& BuildImageCommand();
 const Command& BuildThermalCommand();
 const Command& ExportLinuxcncCommand();
+const Command& ExportIsgCommand();
 const Command& ModelEvalCommand();
+const Command& ModelExportCommand();
 
 }  // namespace volcomp::cli
