@@ -158,8 +158,8 @@ Expected<ModelFromIso230> ModelFromIso230Set(const Iso230Set& set) {
     position.erase(std::unique(position.begin(), position.end()), position.end());
     if (position.size() < 2) {
       return Fail(Error::kInputInvalid,
-                  set.source + ": no table of a component error of " + kLinearAxes[axis] + " (E" +
-                      kLinearAxes[axis] + kLinearAxes[axis] + ", EY" + kLinearAxes[axis] +
+                  set.source + ": no table of a component error of " + kLinearAxes[axis] + " (EX" +
+                      kLinearAxes[axis] + ", EY" + kLinearAxes[axis] + ", EZ" + kLinearAxes[axis] +
                       ", ... with at least 2 rows): the model needs the axis's range");
     }
     std::vector<model::AxisErrorSample> rows(position.size());
