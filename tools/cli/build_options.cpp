@@ -42,7 +42,8 @@ Expected<model::Model> ParseModelOptions(Args& args,
   model::Model m;
   source->spec = spec;
   if (spec == "s500") {
-    if (format) return UsageFailure("--format applies to a model file, not the built-in s500");
+    if (format)
+      return UsageFailure("a model file format was given, but --model s500 is the built-in model");
     m = datasets::S500Model();
     source->format = "builtin";
   } else {

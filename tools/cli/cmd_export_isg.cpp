@@ -13,33 +13,13 @@
 
 #include "commands.hpp"
 #include "option_groups.hpp"
+#include "positioning_inputs.hpp"
 #include "volcomp/datasets/positioning_csv.hpp"
 #include "volcomp/exporters/isg_lsec.hpp"
-#include "volcomp/image/axis_units.hpp"
-#include "volcomp/tools/csv.hpp"
 #include "volcomp/tools/file_io.hpp"
 
 namespace volcomp::cli {
 namespace {
-
-constexpr const char* kAxes = "XYZABCUVW";
-
-// --axis-numbers X=N,...: each axis's logical number (default: its place in XYZABCUVW, from 1).
-Expected<std::map<char, int>> ParseAxisNumbers(const std::optional<std::string>& text) {
-  std::map<char, int> number;
-  for (int i = 0; kAxes[i] != '\0'; ++i) number[kAxes[i]] = i + 1;
-  if (!text) return number;
-  VOLCOMP_TRY_ASSIGN(const auto assignments, image::ParseAxisAssignments(*text, "--axis-numbers"));
-  for (const auto& [name, value] : assignments) {
-    const auto v = tools::ParseInteger(value);
-    if (!v || *v < 1 || *v > 65535) {
-      return UsageFailure("--axis-numbers: " + std::string(1, name) + "=" + value +
-                          ": a logical axis number is 1..65535");
-    }
-    number[name] = static_cast<int>(*v);
-  }
-  return number;
-}
 
 std::vector<std::string> FileHeader(char axis,
                                     const std::string& source,
@@ -72,19 +52,16 @@ void ExportIsgText(const JsonValue& d, std::ostream& out) {
 }
 
 Expected<Output> RunExportIsg(Args& args, Context& ctx) {
-  std::vector<std::pair<char, std::string>> inputs;
-  for (int i = 0; kAxes[i] != '\0'; ++i) {
-    const std::string opt = std::string("--") + static_cast<char>(kAxes[i] - 'A' + 'a');
-    if (auto p = args.Value(opt)) inputs.emplace_back(kAxes[i], *p);
-  }
-  if (inputs.empty()) return UsageFailure("give at least one axis file, e.g. --x x.csv");
+  VOLCOMP_TRY_ASSIGN(const auto inputs, PositioningFiles(args));
   const std::string out_dir = args.Required("-o", "--output");
   const long long max_points =
       args.Integer("--max-points")
           .value_or(static_cast<long long>(exporters::kIsgLsecDefaultMaxPoints));
   VOLCOMP_TRY(args.status());
   if (max_points < 2) return UsageFailure("--max-points must be at least 2");
-  VOLCOMP_TRY_ASSIGN(auto numbers, ParseAxisNumbers(args.Value("--axis-numbers")));
+  VOLCOMP_TRY_ASSIGN(auto numbers,
+                     ParseAxisNumberMap(args.Value("--axis-numbers"), "--axis-numbers",
+                                        "logical axis number", 1, 1, 65535));
   const bool negate = args.Flag("--negate");
   metrology::GroupingOptions grouping;
   grouping.allow_few_approaches = args.Flag("--allow-few-runs");
@@ -160,11 +137,7 @@ const Command& ExportIsgCommand() {
             AllowFewRuns(),
             {{"--json", nullptr, nullptr, nullptr, nullptr, "machine-readable output"}}}),
       RunExportIsg,
-      "Each FILE is either the raw readings `evaluate positioning` reads (the mean per\n"
-      "target and direction is used) or the mean deviations (position_mm, dev_forward_um\n"
-      "[, dev_reverse_um]). One list per axis: every tested position a setpoint, the mean\n"
-      "deviations (actual - setpoint) in 0.1 um as .pos and .neg; see docs/pc-tool.md\n"
-      "\"Component-error sets: Etalon and ISG-CSV\"."};
+      PositioningFileNotes()};
   return kCommand;
 }
 

@@ -13,6 +13,7 @@
 
 #include "commands.hpp"
 #include "option_groups.hpp"
+#include "positioning_inputs.hpp"
 #include "volcomp/datasets/positioning_csv.hpp"
 #include "volcomp/exporters/linuxcnc_comp.hpp"
 #include "volcomp/image/axis_units.hpp"
@@ -21,24 +22,6 @@
 
 namespace volcomp::cli {
 namespace {
-
-constexpr const char* kAxes = "XYZABCUVW";
-
-// --joints X=N,...: the joint of each axis (default: its place in XYZABCUVW).
-Expected<std::map<char, int>> ParseJoints(const std::optional<std::string>& text) {
-  std::map<char, int> joint;
-  for (int i = 0; kAxes[i] != '\0'; ++i) joint[kAxes[i]] = i;
-  if (!text) return joint;
-  VOLCOMP_TRY_ASSIGN(const auto assignments, image::ParseAxisAssignments(*text, "--joints"));
-  for (const auto& [name, value] : assignments) {
-    const auto v = tools::ParseDouble(value);
-    if (!v || *v < 0 || *v > 15 || *v != static_cast<int>(*v)) {
-      return UsageFailure("--joints: joint of " + std::string(1, name) + " must be 0..15");
-    }
-    joint[name] = static_cast<int>(*v);
-  }
-  return joint;
-}
 
 // --spacing X=S,...: the point spacing of an axis (absent: the test's own).
 Expected<std::map<char, double>> ParseSpacing(const std::optional<std::string>& text) {
@@ -89,19 +72,15 @@ std::string JointsIniFile(const std::string& ini) {
 }
 
 Expected<Output> RunExportLinuxcnc(Args& args, Context& ctx) {
-  std::vector<std::pair<char, std::string>> inputs;
-  for (int i = 0; kAxes[i] != '\0'; ++i) {
-    const std::string opt = std::string("--") + static_cast<char>(kAxes[i] - 'A' + 'a');
-    if (auto p = args.Value(opt)) inputs.emplace_back(kAxes[i], *p);
-  }
-  if (inputs.empty()) return UsageFailure("give at least one axis file, e.g. --x x.csv");
+  VOLCOMP_TRY_ASSIGN(const auto inputs, PositioningFiles(args));
   const std::string out_dir = args.Required("-o", "--output");
   const long long type = args.Integer("--type").value_or(1);
   VOLCOMP_TRY(args.status());
   if (type != 0 && type != 1) {
     return UsageFailure("--type must be 0 or 1 (LinuxCNC COMP_FILE_TYPE)");
   }
-  VOLCOMP_TRY_ASSIGN(auto joint, ParseJoints(args.Value("--joints")));
+  VOLCOMP_TRY_ASSIGN(auto joint,
+                     ParseAxisNumberMap(args.Value("--joints"), "--joints", "joint", 0, 0, 15));
   VOLCOMP_TRY_ASSIGN(auto spacing, ParseSpacing(args.Value("--spacing")));
   const std::optional<std::string> merge_ini = args.Value("--ini");
   metrology::GroupingOptions grouping;

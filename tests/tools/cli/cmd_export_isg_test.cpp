@@ -8,6 +8,7 @@
 #include <string>
 
 #include "cli_runner.hpp"
+#include "comment_lines.hpp"
 #include "expected_value.hpp"
 #include "temp_paths.hpp"
 #include "volcomp/tools/file_io.hpp"
@@ -19,6 +20,7 @@ namespace {
 using testing::RunCli;
 using testing::TempPath;
 using testing::ValueOf;
+using testing::WithoutCommentLines;
 
 // dev = +10.2 µm moving up, −6 µm moving down, at 0, 50, 100 mm; five runs each.
 std::string RawReadings() {
@@ -30,19 +32,6 @@ std::string RawReadings() {
     for (const char* t : {"100", "50", "0"}) f << t << ",down," << run << ",-6\n";
   }
   return csv;
-}
-
-// The list's lines without the `#` comments.
-std::string Body(const std::string& text) {
-  std::string out;
-  std::size_t from = 0;
-  while (from < text.size()) {
-    std::size_t end = text.find('\n', from);
-    if (end == std::string::npos) end = text.size();
-    if (text[from] != '#') out += text.substr(from, end - from) + "\n";
-    from = end + 1;
-  }
-  return out;
 }
 
 std::string Collapsed(const std::string& text) {  // one space between the fields
@@ -63,7 +52,7 @@ TEST(VolcompExportIsg, ListOfRawReadings) {
   const std::string text = ValueOf(tools::ReadTextFile(file));
   // Written by hand: positions 0, 50, 100 mm = 0, 500000, 1000000 × 0.1 µm; +10.2 µm = 102,
   // −6 µm = −60 (× 0.1 µm), actual − setpoint as measured.
-  EXPECT_EQ(Collapsed(Body(text)),
+  EXPECT_EQ(Collapsed(WithoutCommentLines(text, "#")),
             "kopf.achs_nr 2\nkopf.log_achs_name Y\nkw.ssfk.unit 1\nkw.ssfk.interval 0\n"
             "kw.ssfk.kw_startpos 0\nkw.ssfk.kw_nr_max 3\nkw.ssfk.bilateral 1\n"
             "kw.ssfk.table[0].setpoint 0\nkw.ssfk.table[1].setpoint 500000\n"
@@ -91,7 +80,7 @@ TEST(VolcompExportIsg, OneDirectionAndNegate) {
   const std::string text =
       ValueOf(tools::ReadTextFile((std::filesystem::path(dir) / "achskw_x.lis").string()));
   // −(1.5 µm) = −15, −(−2.34 µm) = +23.4 → 23 (× 0.1 µm); .neg repeats .pos, bilateral 0.
-  EXPECT_EQ(Collapsed(Body(text)),
+  EXPECT_EQ(Collapsed(WithoutCommentLines(text, "#")),
             "kopf.achs_nr 1\nkopf.log_achs_name X\nkw.ssfk.unit 1\nkw.ssfk.interval 0\n"
             "kw.ssfk.kw_startpos -200000\nkw.ssfk.kw_nr_max 3\nkw.ssfk.bilateral 0\n"
             "kw.ssfk.table[0].setpoint -200000\nkw.ssfk.table[1].setpoint 0\n"
@@ -114,7 +103,8 @@ TEST(VolcompExportIsg, Refusals) {
   r = RunCli(
       {"export", "isg", "--x", csv, "-o", TempPath("export_isg_r"), "--axis-numbers", "X=0"});
   EXPECT_EQ(r.code, tools::kExitUsage);
-  EXPECT_NE(r.err.find("--axis-numbers: X=0: a logical axis number is 1..65535"), std::string::npos)
+  EXPECT_NE(r.err.find("--axis-numbers: logical axis number of X must be 1..65535"),
+            std::string::npos)
       << r.err;
   r = RunCli({"export", "isg", "-o", TempPath("export_isg_r")});
   EXPECT_EQ(r.code, tools::kExitUsage);

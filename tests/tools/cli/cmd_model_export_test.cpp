@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "cli_runner.hpp"
+#include "comment_lines.hpp"
 #include "expected_value.hpp"
 #include "sample_path.hpp"
 #include "temp_paths.hpp"
@@ -24,6 +25,7 @@ using testing::RunCli;
 using testing::SamplePath;
 using testing::TempPath;
 using testing::ValueOf;
+using testing::WithoutCommentLines;
 
 // Written precision: 1e-12 mm = 1e-9 µm, 1e-12 rad = 1e-6 µrad; arguments 1e-6 mm.
 void ExpectSameModel(const model::Model& a, const model::Model& b) {
@@ -44,19 +46,6 @@ void ExpectSameModel(const model::Model& a, const model::Model& b) {
   EXPECT_NEAR(a.squareness.a0z_urad, b.squareness.a0z_urad, 1e-6);
 }
 
-// The text without its `//` comment lines (the header names the source, which differs).
-std::string WithoutComments(const std::string& text) {
-  std::string out;
-  std::size_t from = 0;
-  while (from < text.size()) {
-    std::size_t end = text.find('\n', from);
-    if (end == std::string::npos) end = text.size();
-    if (text.compare(from, 2, "//") != 0) out += text.substr(from, end - from) + "\n";
-    from = end + 1;
-  }
-  return out;
-}
-
 TEST(VolcompModelExport, RoundTripsThroughBothFormats) {
   const model::Model s500 = datasets::S500Model();
   for (const char* format : {"etalon", "isg"}) {
@@ -72,8 +61,8 @@ TEST(VolcompModelExport, RoundTripsThroughBothFormats) {
     const std::string again = TempPath(std::string("model_export_again.") + format);
     ASSERT_EQ(RunCli({"model", "export", "--model", file, "--format", format, "-o", again}).code,
               0);
-    EXPECT_EQ(WithoutComments(ValueOf(tools::ReadTextFile(file))),
-              WithoutComments(ValueOf(tools::ReadTextFile(again))));
+    EXPECT_EQ(WithoutCommentLines(ValueOf(tools::ReadTextFile(file)), "//"),
+              WithoutCommentLines(ValueOf(tools::ReadTextFile(again)), "//"));
   }
   // The hand-written samples: Etalon → ISG-CSV → the same model as the ISG sample.
   const std::string isg = TempPath("model_export_small.isg");

@@ -108,7 +108,9 @@ Outcome CheckIso230Set(const Iso230Set& set) {
                                               Number(p.arguments[i - 1]));
       }
     }
-    if (!component && !position) continue;  // ISG's own (positions, vectors): no limit here
+    // Outside the model (ISG's positions and vectors, rotary axes): refused when not zero by
+    // ModelFromIso230Set; no unit check here, their sizes are not those of the model's errors.
+    if (kind == Iso230Kind::kOther) continue;
     const bool angle = IsIso230Angle(p.name);
     const double limit = angle ? kIso230MaxAngle_rad : kIso230MaxLinear_mm;
     for (double v : p.values) {

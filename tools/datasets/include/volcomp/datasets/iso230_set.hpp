@@ -63,8 +63,9 @@ Iso230Kind ClassifyIso230Name(const std::string& name);
 bool IsIso230Angle(const std::string& name);
 
 /// Checks a parsed set: each name known (kUnknown refused), no name twice (both lines named),
-/// every value within the plausibility limits above (value, limit and the likely unit named),
-/// a component error tabulated against its own axis, a position error a single value.
+/// a component error tabulated against its own axis with increasing arguments, a position error
+/// a single value, every value of the model's 21 parameters within the plausibility limits above
+/// (value, limit and the likely unit named).
 Outcome CheckIso230Set(const Iso230Set& set);
 
 struct ModelFromIso230 {
@@ -88,8 +89,9 @@ struct Iso230FromModel {
 };
 
 /// The set of a model, in file units: the errors the model applies (angles × angle_scale; the
-/// functions of a workpiece-carrying axis negated when workpiece_errors = carriage), so that
-/// reading the set back gives the same errors with the default chain.
+/// functions of a workpiece-carrying axis negated when workpiece_errors = carriage). Read back, it
+/// gives the same tables and squareness; the chain, tool offset and formulation are not carried
+/// (`notes` names those that differ from the defaults).
 Iso230FromModel Iso230SetFromModel(const model::Model& m);
 
 }  // namespace volcomp::datasets
