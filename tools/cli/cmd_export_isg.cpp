@@ -71,6 +71,15 @@ Expected<Output> RunExportIsg(Args& args, Context& ctx) {
   std::error_code ec;
   std::filesystem::create_directories(out_dir, ec);
   if (ec) return Fail(Error::kIoError, out_dir + ": cannot create the directory: " + ec.message());
+  std::map<int, char> axis_of_number;
+  for (const auto& input : inputs) {
+    const auto [other, added] = axis_of_number.emplace(numbers[input.first], input.first);
+    if (!added) {
+      return UsageFailure("--axis-numbers: " + std::string(1, other->second) + " and " +
+                          std::string(1, input.first) + " both have the logical axis number " +
+                          std::to_string(numbers[input.first]));
+    }
+  }
   JsonValue axes = JsonValue::Array();
   for (const auto& [name, path] : inputs) {
     VOLCOMP_TRY_ASSIGN(const model::PositioningData data,

@@ -106,6 +106,12 @@ TEST(VolcompExportIsg, Refusals) {
   EXPECT_NE(r.err.find("--axis-numbers: logical axis number of X must be 1..65535"),
             std::string::npos)
       << r.err;
+  r = RunCli({"export", "isg", "--x", csv, "--y", csv, "-o", TempPath("export_isg_r"),
+              "--axis-numbers", "Y=1"});
+  EXPECT_EQ(r.code, tools::kExitUsage);
+  EXPECT_NE(r.err.find("--axis-numbers: X and Y both have the logical axis number 1"),
+            std::string::npos)
+      << r.err;
   r = RunCli({"export", "isg", "-o", TempPath("export_isg_r")});
   EXPECT_EQ(r.code, tools::kExitUsage);
 }
