@@ -3,10 +3,11 @@
 
 #include <cmath>
 #include <sstream>
+#include <utility>
 #include <vector>
 
 #include "choice_option.hpp"
-#include "volcomp/datasets/model_config.hpp"
+#include "volcomp/datasets/model_file.hpp"
 #include "volcomp/datasets/s500.hpp"
 #include "volcomp/image/axis_units.hpp"
 #include "volcomp/tools/csv.hpp"
@@ -19,14 +20,38 @@ int XyzIndex(char name) { return name == 'X' ? 0 : name == 'Y' ? 1 : name == 'Z'
 
 }  // namespace
 
-Expected<model::Model> ParseModelOptions(Args& args) {
+Expected<std::optional<datasets::ModelFileFormat>> ParseModelFormat(Args& args,
+                                                                    const std::string& option) {
+  const auto word = args.Value(option);
+  VOLCOMP_TRY(args.status());
+  if (!word) return std::optional<datasets::ModelFileFormat>();
+  using datasets::ModelFileFormat;
+  VOLCOMP_TRY_ASSIGN(const ModelFileFormat f,
+                     ParseChoice<ModelFileFormat>(option, *word,
+                                                  {{"conf", ModelFileFormat::kConfig},
+                                                   {"etalon", ModelFileFormat::kEtalon},
+                                                   {"isg", ModelFileFormat::kIsgCsv}}));
+  return std::optional<ModelFileFormat>(f);
+}
+
+Expected<model::Model> ParseModelOptions(Args& args,
+                                         std::optional<datasets::ModelFileFormat> format,
+                                         ModelSource* source) {
   const std::string spec = args.Required("--model");
   VOLCOMP_TRY(args.status());
   model::Model m;
+  source->spec = spec;
   if (spec == "s500") {
+    if (format)
+      return UsageFailure("a model file format was given, but --model s500 is the built-in model");
     m = datasets::S500Model();
+    source->format = "builtin";
   } else {
-    VOLCOMP_TRY_ASSIGN(m, datasets::LoadModelConfig(spec));
+    VOLCOMP_TRY_ASSIGN(datasets::LoadedModel loaded, datasets::LoadModelFile(spec, format));
+    m = std::move(loaded.model);
+    source->format = datasets::ModelFileFormatName(loaded.format);
+    source->detected = loaded.format_detected;
+    source->warnings = std::move(loaded.warnings);
   }
   if (args.Flag("--no-squareness")) m.squareness = model::Squareness{};
   if (auto f = args.Value("--formulation")) {
@@ -67,6 +92,17 @@ Expected<model::Model> ParseModelOptions(Args& args) {
     return UsageFailure(valid.error().message);
   }
   return m;
+}
+
+JsonValue ModelSourceJson(const ModelSource& source) {
+  JsonValue warnings = JsonValue::Array();
+  for (const std::string& w : source.warnings) warnings.Push(w);
+  JsonValue j = JsonValue::Object();
+  j.Set("spec", source.spec)
+      .Set("format", source.format)
+      .Set("detected", source.detected)
+      .Set("warnings", std::move(warnings));
+  return j;
 }
 
 Expected<std::array<double, 3>> ParseXyzNumbers(const std::string& text,

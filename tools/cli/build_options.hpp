@@ -12,15 +12,37 @@
 #include "command.hpp"
 #include "volcomp/builders/grid.hpp"
 #include "volcomp/builders/grid_source.hpp"
+#include "volcomp/datasets/model_file.hpp"
 #include "volcomp/image/image_builder.hpp"
 #include "volcomp/model/rigid_body.hpp"
 
 namespace volcomp::cli {
 
-/// `--model s500|FILE.conf` plus the overrides --order first|exact, --formulation
-/// physical|dissertation, --dissertation-case plus|minus, --angle-scale K, --tool-offset-mm X,Y,Z,
-/// --no-squareness. A model file that cannot be read fails as datasets::LoadModelConfig does.
-Expected<model::Model> ParseModelOptions(Args& args);
+/// Where the model came from: the file's format and what its reading warned about (the ISO 230-1
+/// mapping names parameters taken as 0 or ignored; datasets/iso230_set.hpp).
+struct ModelSource {
+  std::string spec;      // --model's value
+  std::string format;    // "builtin", "conf", "etalon" or "isg"
+  bool detected = true;  // the format was recognised by content (false: --format)
+  std::vector<std::string> warnings;
+};
+
+/// `--format conf|etalon|isg` of the commands that declare ModelFormatOptions() (`model export`:
+/// `--model-format`); nullopt when absent (recognised by content).
+Expected<std::optional<datasets::ModelFileFormat>> ParseModelFormat(
+    Args& args, const std::string& option = "--format");
+
+/// `--model s500|FILE` (a model config, an Etalon exchange file or ISG-CSV, recognised by content
+/// unless `format` names it; datasets/model_file.hpp) plus the overrides --order first|exact,
+/// --formulation physical|dissertation, --dissertation-case plus|minus, --angle-scale K,
+/// --tool-offset-mm X,Y,Z, --no-squareness. A model file that cannot be read fails as its reader
+/// does. `source` gets the format and the reader's warnings: the caller prints them.
+Expected<model::Model> ParseModelOptions(Args& args,
+                                         std::optional<datasets::ModelFileFormat> format,
+                                         ModelSource* source);
+
+/// The --json object of a ModelSource: spec, format, detected, warnings.
+JsonValue ModelSourceJson(const ModelSource& source);
 
 /// Parses "X=a,Y=b,Z=c" (any subset when `all_required` is false; missing = NaN), or one number
 /// for all three axes.

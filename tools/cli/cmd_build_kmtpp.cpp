@@ -59,8 +59,10 @@ Expected<model::KmtppOptions> ParseKmtppOptions(Args& args) {
   return opt;
 }
 
-Expected<Output> RunBuildKmtpp(Args& args, Context&) {
-  VOLCOMP_TRY_ASSIGN(const model::Model m, ParseModelOptions(args));
+Expected<Output> RunBuildKmtpp(Args& args, Context& ctx) {
+  ModelSource model_source;
+  VOLCOMP_TRY_ASSIGN(const model::Model m, ParseModelOptions(args, std::nullopt, &model_source));
+  for (const std::string& w : model_source.warnings) ctx.err << "warning: " << w << "\n";
   VOLCOMP_TRY_ASSIGN(const model::TrackerData data, CalibrationLines(args));
   model::TrackerOptions topt;
   const std::string cosines = args.Value("--cosines").value_or("signed");

@@ -25,22 +25,6 @@ namespace {
 
 constexpr const char* kAxes = "XYZABCUVW";
 
-// --joints X=N,...: the joint of each axis (default: its place in XYZABCUVW).
-Expected<std::map<char, int>> ParseJoints(const std::optional<std::string>& text) {
-  std::map<char, int> joint;
-  for (int i = 0; kAxes[i] != '\0'; ++i) joint[kAxes[i]] = i;
-  if (!text) return joint;
-  VOLCOMP_TRY_ASSIGN(const auto assignments, image::ParseAxisAssignments(*text, "--joints"));
-  for (const auto& [name, value] : assignments) {
-    const auto v = tools::ParseDouble(value);
-    if (!v || *v < 0 || *v > 15 || *v != static_cast<int>(*v)) {
-      return UsageFailure("--joints: joint of " + std::string(1, name) + " must be 0..15");
-    }
-    joint[name] = static_cast<int>(*v);
-  }
-  return joint;
-}
-
 Expected<std::string> AbsolutePath(const std::string& path) {
   std::error_code ec;
   const std::filesystem::path p = std::filesystem::absolute(path, ec);
@@ -84,7 +68,8 @@ Expected<Output> RunExportLinuxcnc(Args& args, Context& ctx) {
   if (type != 0 && type != 1) {
     return UsageFailure("--type must be 0 or 1 (LinuxCNC COMP_FILE_TYPE)");
   }
-  VOLCOMP_TRY_ASSIGN(auto joint, ParseJoints(args.Value("--joints")));
+  VOLCOMP_TRY_ASSIGN(auto joint,
+                     ParseAxisNumberMap(args.Value("--joints"), "--joints", "joint", 0, 0, 15));
   VOLCOMP_TRY_ASSIGN(auto spacing, ParseAxisNumbers(args.Value("--spacing"), "--spacing", true));
   const std::optional<std::string> merge_ini = args.Value("--ini");
   metrology::GroupingOptions grouping;

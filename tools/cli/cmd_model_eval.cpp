@@ -47,7 +47,9 @@ Expected<std::string> EvalLine(const model::Model& m,
 }
 
 Expected<Output> RunModelEval(Args& args, Context& ctx) {
-  VOLCOMP_TRY_ASSIGN(const model::Model m, ParseModelOptions(args));
+  VOLCOMP_TRY_ASSIGN(const auto format, ParseModelFormat(args));
+  ModelSource source;
+  VOLCOMP_TRY_ASSIGN(const model::Model m, ParseModelOptions(args, format, &source));
   const bool inverse = args.Flag("--inverse");
   const auto out_path = args.Value("-o", "--output");
   const auto pos = args.Positionals();
@@ -58,6 +60,7 @@ Expected<Output> RunModelEval(Args& args, Context& ctx) {
                                                     : tools::CsvTable::ReadFile(pos[0]));
   for (const char* c : {"x_mm", "y_mm", "z_mm"}) VOLCOMP_TRY(csv.Require(c));
 
+  for (const std::string& w : source.warnings) ctx.err << "warning: " << w << "\n";
   std::ofstream file;
   if (out_path) {
     file.open(*out_path);
@@ -84,6 +87,7 @@ const Command& ModelEvalCommand() {
       "model eval", "forward error (or --inverse command) of a model at points, CSV in/out",
       "[POINTS.csv|-]",
       Join({ModelOptions(),
+            ModelFormatOptions(),
             {{"--inverse", nullptr, nullptr, nullptr, nullptr,
               "the command that lands on each point instead of the error"},
              {"--output", "-o", "FILE", nullptr, nullptr, "CSV to write (default: stdout)"}}}),

@@ -41,7 +41,9 @@ const std::vector<const Command*>& Commands() {
       &ExportSiemensCommand(),
       &ExportHeidenhainCommand(),
       &ExportFanucCommand(),
+      &ExportIsgCommand(),
       &ModelEvalCommand(),
+      &ModelExportCommand(),
   };
   return kCommands;
 }

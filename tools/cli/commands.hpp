@@ -46,6 +46,8 @@ const Command& ExportLinuxcncCommand();
 const Command& ExportSiemensCommand();
 const Command& ExportHeidenhainCommand();
 const Command& ExportFanucCommand();
+const Command& ExportIsgCommand();
 const Command& ModelEvalCommand();
+const Command& ModelExportCommand();
 
 }  // namespace volcomp::cli

@@ -44,6 +44,27 @@ Expected<std::map<char, double>> ParseAxisNumbers(const std::optional<std::strin
   return numbers;
 }
 
+Expected<std::map<char, int>> ParseAxisNumberMap(const std::optional<std::string>& text,
+                                                 const std::string& option,
+                                                 const std::string& what,
+                                                 int first,
+                                                 int min,
+                                                 int max) {
+  std::map<char, int> number;
+  for (int i = 0; kAxes[i] != '\0'; ++i) number[kAxes[i]] = first + i;
+  if (!text) return number;
+  VOLCOMP_TRY_ASSIGN(const auto assignments, image::ParseAxisAssignments(*text, option));
+  for (const auto& [name, value] : assignments) {
+    const auto v = tools::ParseInteger(value);
+    if (!v || *v < min || *v > max) {
+      return UsageFailure(option + ": " + what + " of " + std::string(1, name) + " must be " +
+                          std::to_string(min) + ".." + std::to_string(max));
+    }
+    number[name] = static_cast<int>(*v);
+  }
+  return number;
+}
+
 Expected<model::PositioningData> LoadAxisTest(const std::string& path,
                                               const datasets::PositioningReadOptions& read,
                                               const metrology::GroupingOptions& grouping,

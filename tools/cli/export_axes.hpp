@@ -26,6 +26,16 @@ struct AxisInput {
 /// The files of --x ... --w, in XYZABCUVW order; kUsage when there is none.
 Expected<std::vector<AxisInput>> PositioningInputs(Args& args);
 
+/// `option`'s "X=N,..." (absent: nullopt text): each axis's whole number in [min, max]; an axis
+/// not named keeps `first` + its place in XYZABCUVW. Usage failure "OPTION: WHAT of X must be
+/// MIN..MAX" otherwise (e.g. --joints, --axis-numbers).
+Expected<std::map<char, int>> ParseAxisNumberMap(const std::optional<std::string>& text,
+                                                 const std::string& option,
+                                                 const std::string& what,
+                                                 int first,
+                                                 int min,
+                                                 int max);
+
 /// "X=1.5,Y=2" of `option` as numbers per axis (absent text: none); kUsage naming the option
 /// and axis for a value that is not a number, or not > 0 when `positive`.
 Expected<std::map<char, double>> ParseAxisNumbers(const std::optional<std::string>& text,

@@ -78,8 +78,9 @@ const Options& GridOptions() {
 }
 const Options& ModelOptions() {
   static const Options kOptions = {
-      {"--model", nullptr, "s500|FILE.conf", nullptr, nullptr,
-       "the error model (required): the built-in S500 or a model config"},
+      {"--model", nullptr, "s500|FILE", nullptr, nullptr,
+       "the error model (required): the built-in S500, a model config, an Etalon exchange "
+       "file or ISG-CSV (ISO 230-1 parameters)"},
       {"--order", nullptr, "first|exact", nullptr, nullptr,
        "rotation order (default: the model's; exact for the physical formulation)"},
       {"--formulation", nullptr, "physical|dissertation", nullptr, nullptr,
@@ -91,6 +92,14 @@ const Options& ModelOptions() {
       {"--tool-offset-mm", nullptr, "X,Y,Z", "mm", nullptr,
        "tool point relative to the measuring point (default: the model's)"},
       {"--no-squareness", nullptr, nullptr, nullptr, nullptr, "drop the squareness errors"},
+  };
+  return kOptions;
+}
+const Options& ModelFormatOptions() {
+  static const Options kOptions = {
+      {"--format", nullptr, "conf|etalon|isg", nullptr, nullptr,
+       "the --model file's format: model config, Etalon exchange format or ISG-CSV (default: "
+       "recognised by content)"},
   };
   return kOptions;
 }

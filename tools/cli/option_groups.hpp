@@ -21,6 +21,8 @@ const Options& GridOptions();
 /// `--board FILE`, `--bank-bytes N`, `--allow-clamp` of the builds (board_fit.hpp).
 const Options& BoardFileOptions();
 const Options& ModelOptions();
+/// --format conf|etalon|isg: the model file's format when its content should not decide.
+const Options& ModelFormatOptions();
 const Options& JsonReport();
 const Options& PositioningFileOptions();
 const char* PositioningFileNotes();

@@ -179,7 +179,7 @@ TEST(VolcompBuildModel, AModelFileThatCannotBeReadIsAFailure) {
       RunCli({"build", "model", "--model", "/nonexistent.conf", "-o",
               TempPath("build_model_x.vctb"), "--resolution-nm", "X=1000,Y=1000,Z=1000"});
   EXPECT_EQ(r.code, tools::kExitFailed);
-  EXPECT_EQ(r.err, "volcomp build model: error: /nonexistent.conf: cannot open the model config\n");
+  EXPECT_EQ(r.err, "volcomp build model: error: /nonexistent.conf: cannot open the model file\n");
 }
 
 }  // namespace

@@ -57,7 +57,7 @@ TEST(VolcompModelEval, BadInputIsNamed) {
   EXPECT_EQ(r.err, "volcomp model eval: error: " + points + ":1: missing column \"z_mm\"\n");
   r = RunCli({"model", "eval", "--model", "/nonexistent.conf", points});
   EXPECT_EQ(r.code, tools::kExitFailed);
-  EXPECT_EQ(r.err, "volcomp model eval: error: /nonexistent.conf: cannot open the model config\n");
+  EXPECT_EQ(r.err, "volcomp model eval: error: /nonexistent.conf: cannot open the model file\n");
   r = RunCli({"model", "eval", "--model", "s500", points, points});
   EXPECT_EQ(r.code, tools::kExitUsage);
   EXPECT_NE(r.err.find("expected one points file (or - for stdin)"), std::string::npos);

@@ -95,7 +95,10 @@ TEST(MetrologyDiagonalEvaluation, KnownEAndB) {
   EXPECT_NEAR(ev.faces[0].E_d, 6.0, 1e-9);
   EXPECT_NEAR(ev.faces[0].B_d, 6.0, 1e-9);
   EXPECT_EQ(ev.faces[0].B_from, "+X-Y Z0");
-  EXPECT_TRUE(ev.warnings.empty()) << ev.warnings.front();
+  // The only warning: no instrument stated, so no uncertainty (listed once, not per diagonal).
+  ASSERT_EQ(ev.warnings.size(), 1u);
+  EXPECT_NE(ev.warnings[0].find("no measurement uncertainty"), std::string::npos);
+  EXPECT_FALSE(ev.body->E_d_U);
 }
 
 TEST(MetrologyDiagonalEvaluation, WarnsAboutMissingAndRepeatedBodyDiagonals) {
