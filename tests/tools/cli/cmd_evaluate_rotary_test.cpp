@@ -1,7 +1,9 @@
 // `volcomp evaluate rotary` run as main() runs it, on the ISO 230-7 samples of samples/metrology/.
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <string>
 
 #include "cli_runner.hpp"
@@ -84,6 +86,13 @@ TEST(MetrologyCli, EvaluateRotaryUncertaintyFromOptionsOrPreamble) {
                        "total/inner/outer/asynchronous values ±0.4427 µm"),
             std::string::npos)
       << r.out;
+  r = RunCli({"evaluate", "rotary", file, "--report", dir + "/rotary_u_report"});
+  EXPECT_EQ(r.code, 0) << r.err;
+  std::ifstream html(dir + "/rotary_u_report/rotary_rotary_u.html");
+  const std::string page((std::istreambuf_iterator<char>(html)), {});
+  EXPECT_NE(page.find("Uncertainty (annex F, k = 2): synchronous values ± 0.2524"),
+            std::string::npos);
+  std::filesystem::remove_all(dir + "/rotary_u_report");
   r = RunCli({"evaluate", "rotary", file, "--instrument-u-um", "0.2", "--json"});
   EXPECT_EQ(r.code, 0) << r.err;
   // 1.4·sqrt(0.04 + 0.0225) = 0.35

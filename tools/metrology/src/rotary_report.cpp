@@ -250,6 +250,27 @@ void WriteRotaryText(std::ostream& out, const JsonValue& ev) {
   }
 }
 
+namespace {
+
+// The annex F paragraph of one measurement, or what is missing for it.
+std::string UncertaintyText(const RotaryMeasurement& m) {
+  if (!m.u) return "Uncertainty: not stated (no instrument given; docs/metrology.md).";
+  const int d = Decimals(m.unit) + 1;
+  const ErrorMotionUncertainty& u = *m.u;
+  return "Uncertainty (annex F, k = 2): synchronous values ± " +
+         FormatFixed(u.synchronous_value, d) + ", total, inner, outer and asynchronous values ± " +
+         FormatFixed(u.single_value, d) + " " + m.unit + " (" +
+         (u.literal_f6 ? "F.6 as printed" : "1.4 U_single") + "). Contributors: device " +
+         FormatFixed(u.device_basis, d) +
+         (u.from_calibration ? " (calibration, F.1)" : " (0.6 × error range, F.2)") + ", setup " +
+         FormatFixed(u.setup, d) + ", drift " +
+         (u.drift_stated ? FormatFixed(u.eve, d) + " (0.6 × E_VE, F.3)"
+                         : std::string("not stated")) +
+         ", n = " + std::to_string(u.revolutions) + " revolutions.";
+}
+
+}  // namespace
+
 void AddRotarySections(report::HtmlPage* page,
                        const RotaryEvaluation& ev,
                        const std::optional<ReversalResult>& reversal) {
@@ -277,6 +298,7 @@ void AddRotarySections(report::HtmlPage* page,
     page->Paragraph(std::string(m.report_fundamental ? "Fundamental axial value (§3.8.5): "
                                                      : "Once-per-revolution fundamental: ") +
                     FormatFixed(em.fundamental_value, d) + " " + m.unit + " peak-to-peak.");
+    page->Paragraph(UncertaintyText(m));
     report::PolarChart pc;
     pc.title = m.name + " (" + m.unit + ")";
     pc.units = m.unit;
@@ -312,6 +334,24 @@ void AddRotarySections(report::HtmlPage* page,
                  "Polar plot about a base circle (r0 arbitrary): total motion "
                  "(dots), synchronous plot, centres and the two circles of the "
                  "synchronous value about the preferred centre.");
+  }
+  for (const auto& dir : ev.by_direction) {
+    page->Heading(2, std::string(RotationSenseName(dir.sense)) + " only (" +
+                         std::to_string(dir.revolutions) + " revolutions)");
+    std::vector<std::vector<std::string>> rows;
+    for (const auto& m : dir.measurements) {
+      const int d = Decimals(m.unit);
+      const CentreValues& pref = ValuesAbout(m.motion, m.preferred);
+      auto with_u = [&](double v, bool synchronous) {
+        if (!m.u) return FormatFixed(v, d);
+        return FormatFixed(v, d) + " ± " +
+               FormatFixed(synchronous ? m.u->synchronous_value : m.u->single_value, d);
+      };
+      rows.push_back({m.name + " (" + CentreName(m.preferred) + ")", with_u(pref.synchronous, true),
+                      with_u(m.motion.asynchronous_value, false), with_u(pref.total, false),
+                      m.unit});
+    }
+    page->Table({"measurement", "synchronous", "asynchronous", "total", "unit"}, rows);
   }
   if (ev.radial_fundamentals) {
     const auto& f = *ev.radial_fundamentals;
