@@ -23,8 +23,6 @@
 namespace volcomp::cli {
 namespace {
 
-constexpr const char* kAxes = "XYZABCUVW";
-
 Expected<std::string> AbsolutePath(const std::string& path) {
   std::error_code ec;
   const std::filesystem::path p = std::filesystem::absolute(path, ec);

@@ -217,7 +217,8 @@ void WriteRotaryText(std::ostream& out, const JsonValue& ev) {
     out << "\n"
         << json::Text(dir, "sense") << " only (" << json::Integer(dir, "revolutions")
         << " revolutions), about the preferred centre:\n";
-    for (const auto& [key, m] : json::At(dir, "measurements").object) {
+    for (const auto& entry : json::At(dir, "measurements").object) {
+      const JsonValue& m = entry.second;  // (a lambda below uses it: no structured binding)
       const std::string unit = json::Text(m, "unit") == "um" ? "µm" : "µrad";
       const int d = Decimals(unit);
       const JsonValue& u = json::At(m, "uncertainty");
