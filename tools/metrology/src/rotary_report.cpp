@@ -196,7 +196,12 @@ void WriteRotaryText(std::ostream& out, const JsonValue& ev) {
         << (json::At(m, "fundamental_is_axial_value").boolean ? "axial value (§3.8.5) "
                                                               : "(once per rev) ")
         << FormatFixed(json::Number(m, "fundamental_value"), d) << " " << unit
-        << " peak-to-peak at " << FormatFixed(json::Number(m, "fundamental_angle_deg"), 1) << "°\n";
+        << " peak-to-peak at " << FormatFixed(json::Number(m, "fundamental_angle_deg"), 1) << "°"
+        << (json::At(m, "fundamental_is_axial_value").boolean
+                ? ""
+                : " (centring, not an error motion value: ISO 230-7 ignores the fundamental for "
+                  "radial and tilt, §3.8.5)")
+        << "\n";
     const JsonValue& u = json::At(m, "uncertainty");
     if (!u.is_null()) {
       out << "  U (k = 2, annex F): synchronous values ±"
@@ -296,9 +301,15 @@ void AddRotarySections(report::HtmlPage* page,
     page->Table({"centre", "synchronous", "asynchronous", "total", "inner", "outer",
                  "centre offset " + m.unit},
                 rows);
-    page->Paragraph(std::string(m.report_fundamental ? "Fundamental axial value (§3.8.5): "
-                                                     : "Once-per-revolution fundamental: ") +
-                    FormatFixed(em.fundamental_value, d) + " " + m.unit + " peak-to-peak.");
+    page->Paragraph(
+        m.report_fundamental
+            ? "Fundamental axial value (§3.8.5): " + FormatFixed(em.fundamental_value, d) + " " +
+                  m.unit + " peak-to-peak."
+            : "Once-per-revolution fundamental: " + FormatFixed(em.fundamental_value, d) + " " +
+                  m.unit +
+                  " peak-to-peak: centring, not an error motion value (ISO 230-7 "
+                  "ignores the fundamental for radial and tilt, §3.8.5; the LSC "
+                  "centre removes it).");
     page->Paragraph(UncertaintyText(m));
     report::PolarChart pc;
     pc.title = m.name + " (" + m.unit + ")";
