@@ -47,18 +47,6 @@ Expected<m::CentreSelection> ParseCentres(const std::string& list) {
   return c;
 }
 
-// A number from the `# key: value` preamble, nullopt when absent; not a number: a failure.
-Expected<std::optional<double>> PreambleNumber(const m::TestConditions& c, const char* key) {
-  const auto text = c.Find(key);
-  if (!text) return std::optional<double>();
-  const auto v = tools::ParseDouble(*text);
-  if (!v || !(*v >= 0.0)) {
-    return Fail(Error::kInputInvalid,
-                std::string("preamble \"") + key + ": " + *text + "\" is not a number >= 0");
-  }
-  return std::optional<double>(*v);
-}
-
 void EvaluateRotaryText(const JsonValue& data, std::ostream& out) { m::WriteRotaryText(out, data); }
 
 Expected<Output> RunEvaluateRotary(Args& args, Context& ctx) {
@@ -119,12 +107,12 @@ Expected<Output> RunEvaluateRotary(Args& args, Context& ctx) {
                             std::pair{&o.uncertainty.device_range_um, "instrument_range_um"},
                             std::pair{&o.uncertainty.drift_range_um, "drift_range_um"}}) {
     if (*value) continue;
-    VOLCOMP_TRY_ASSIGN(*value, PreambleNumber(conditions, key));
+    VOLCOMP_TRY_ASSIGN(*value, conditions.Number(key));
   }
   if (setup_u) {
     o.uncertainty.setup_um = *setup_u;
   } else {
-    VOLCOMP_TRY_ASSIGN(const auto v, PreambleNumber(conditions, "setup_u_um"));
+    VOLCOMP_TRY_ASSIGN(const auto v, conditions.Number("setup_u_um"));
     o.uncertainty.setup_um = v.value_or(0.0);
   }
   VOLCOMP_TRY_ASSIGN(m::RotaryEvaluation ev, m::EvaluateRotary(rec, o));

@@ -18,33 +18,6 @@ std::string N(double v) { return report::FormatNumber(v); }
 
 bool Bad(double v) { return !(std::isfinite(v) && v >= 0.0); }
 
-// "20.2 at start, 20.3 at end" (the .rtl reader's reading of a sensor): the mean of the two.
-std::optional<double> StartEndMean(const std::string& text) {
-  const std::size_t a = text.find(" at start, "), b = text.rfind(" at end");
-  if (a == std::string::npos || b == std::string::npos || b + 7 != text.size() || b < a) {
-    return std::nullopt;
-  }
-  const auto start = tools::ParseDouble(text.substr(0, a));
-  const auto end = tools::ParseDouble(text.substr(a + 11, b - a - 11));
-  if (!start || !end) return std::nullopt;
-  return (*start + *end) / 2.0;
-}
-
-// A preamble number (decimal comma allowed, "20,3"; an .rtl's start/end pair: their mean);
-// absent: nullopt; not a number: a failure.
-Expected<std::optional<double>> PreambleNumber(const TestConditions& c, const char* key) {
-  auto text = c.Find(key);
-  if (!text) return std::optional<double>();
-  if (const auto mean = StartEndMean(*text)) return std::optional<double>(*mean);
-  std::replace(text->begin(), text->end(), ',', '.');
-  const auto v = tools::ParseDouble(*text);
-  if (!v) {
-    return Fail(Error::kInputInvalid,
-                std::string("preamble \"") + key + ": " + *c.Find(key) + "\" is not a number");
-  }
-  return std::optional<double>(*v);
-}
-
 }  // namespace
 
 Expected<PositioningUncertaintyInputs> CompleteFromPreamble(PositioningUncertaintyInputs in,
@@ -57,7 +30,7 @@ Expected<PositioningUncertaintyInputs> CompleteFromPreamble(PositioningUncertain
                             // as a Renishaw .rtl's environment block gives it (ppm/°C)
                             std::pair{&in.expansion_um_per_m_K, "expansion coefficient ppm/C"}}) {
     if (*value) continue;
-    VOLCOMP_TRY_ASSIGN(*value, PreambleNumber(conditions, key));
+    VOLCOMP_TRY_ASSIGN(*value, conditions.Number(key));
   }
   return in;
 }

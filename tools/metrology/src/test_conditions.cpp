@@ -1,7 +1,10 @@
 // Test conditions from the readings file's preamble.
 #include "volcomp/metrology/test_conditions.hpp"
 
+#include <algorithm>
 #include <cctype>
+#include <optional>
+#include <string>
 
 namespace volcomp::metrology {
 namespace {
@@ -25,6 +28,35 @@ const std::vector<std::string>& ConditionKeys() {
                                                  "air temperature C",
                                                  "material temperature C"};
   return kKeys;
+}
+
+namespace {
+
+// "20.2 at start, 20.3 at end" (the .rtl reader's reading of a sensor): the mean of the two.
+std::optional<double> StartEndMean(const std::string& text) {
+  const std::size_t a = text.find(" at start, "), b = text.rfind(" at end");
+  if (a == std::string::npos || b == std::string::npos || b + 7 != text.size() || b < a) {
+    return std::nullopt;
+  }
+  const auto start = tools::ParseDouble(text.substr(0, a));
+  const auto end = tools::ParseDouble(text.substr(a + 11, b - a - 11));
+  if (!start || !end) return std::nullopt;
+  return (*start + *end) / 2.0;
+}
+
+}  // namespace
+
+Expected<std::optional<double>> TestConditions::Number(const std::string& key) const {
+  auto text = Find(key);
+  if (!text) return std::optional<double>();
+  if (const auto mean = StartEndMean(*text)) return std::optional<double>(*mean);
+  std::replace(text->begin(), text->end(), ',', '.');
+  const auto v = tools::ParseDouble(*text);
+  if (!v) {
+    return Fail(Error::kInputInvalid,
+                "preamble \"" + key + ": " + *Find(key) + "\" is not a number");
+  }
+  return std::optional<double>(*v);
 }
 
 std::optional<std::string> TestConditions::Find(const std::string& key) const {

@@ -12,6 +12,7 @@
 #include <utility>
 #include <vector>
 
+#include "volcomp/hosted/expected.hpp"
 #include "volcomp/report/html_page.hpp"
 #include "volcomp/tools/csv.hpp"
 #include "volcomp/tools/json_value.hpp"
@@ -26,6 +27,10 @@ struct TestConditions {
 
   /// Value of `key` (case-insensitive, '_' = ' '), or nullopt.
   std::optional<std::string> Find(const std::string& key) const;
+  /// Find() as a number: decimal comma allowed ("20,3"), a reading of the .rtl reader ("20.2 at
+  /// start, 20.3 at end") gives the mean of the two; absent: nullopt; not a number: kInputInvalid
+  /// naming the key and its text.
+  Expected<std::optional<double>> Number(const std::string& key) const;
   bool empty() const { return entries.empty(); }
 };
 
