@@ -18,9 +18,13 @@ namespace {
 using testing::RunCli;
 using testing::TempPath;
 
-// dev = +10 um moving up, -6 um moving down, at 0, 50, 100 mm; two runs each.
+// dev = +10 um moving up, -6 um moving down, at 0, 50, 100 mm; two runs each. One file per test:
+// ctest runs the tests of this file as parallel processes, and a shared file could be read while
+// another test rewrites it.
 std::string RawReadings() {
-  const std::string csv = TempPath("export_linuxcnc_raw.csv");
+  const std::string csv =
+      TempPath(std::string("export_linuxcnc_raw_") +
+               ::testing::UnitTest::GetInstance()->current_test_info()->name() + ".csv");
   std::ofstream(csv) << "target_mm,direction,run,deviation_um\n"
                         "0,up,1,10\n50,up,1,10\n100,up,1,10\n100,down,1,-6\n50,down,1,-6\n"
                         "0,down,1,-6\n0,up,2,10\n50,up,2,10\n100,up,2,10\n100,down,2,-6\n"
