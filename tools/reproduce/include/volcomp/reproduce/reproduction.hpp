@@ -62,20 +62,24 @@ struct NotReproducible {
   std::string reason;
 };
 
-/// Every seed's tables, in the seed's printed order.
-Expected<std::vector<Table>> Gost27843Tables();
-Expected<std::vector<Table>> Iso2306Tables();
-Expected<std::vector<Table>> Iso2307Tables();
-Expected<std::vector<Table>> DissertationTables();
+/// One seed's reproduction: its tables in printed order and the printed tables left out.
+struct SeedReproduction {
+  std::vector<Table> tables;
+  std::vector<NotReproducible> not_reproduced;
+};
 
-/// The printed tables of every seed that are not reproduced, with the reason.
-std::vector<NotReproducible> NotReproducibleTables();
+/// Each seed's producer (one source file or a few per seed).
+Expected<SeedReproduction> ReproduceGost27843();
+Expected<SeedReproduction> ReproduceIso2306();
+Expected<SeedReproduction> ReproduceIso2307();
+Expected<SeedReproduction> ReproduceDissertation();
 
 /// The seed ids in order: gost27843, iso230-6, iso230-7, dissertation.
 const std::vector<std::string>& SeedIds();
 
-/// The tables of one seed (or all, seed empty), optionally only table `id` (empty: all).
-/// Unknown seed or table id: Error::kInvalidArgument naming it and listing the known ones.
-Expected<std::vector<Table>> Tables(const std::string& seed, const std::string& id);
+/// All seeds (seed empty) or one, optionally only table `table_id` (empty: all its tables; the
+/// not-reproduced list is then filtered the same way). Unknown seed or table id:
+/// Error::kInvalidArgument naming it and listing the known ones.
+Expected<SeedReproduction> Reproduce(const std::string& seed, const std::string& table_id);
 
 }  // namespace volcomp::reproduce
