@@ -69,25 +69,32 @@ JsonValue AxisData(const Input& in, const builders::Axis1dTable& t, bool rotary)
 }
 
 // The test's U (k = 2) over its span, and how many measured deviations are smaller: their
-// corrections are within the measurement's uncertainty (linear axes with a stated instrument).
+// corrections are within the measurement's uncertainty (with a stated instrument or angle
+// reference). Key U_um (linear) or U_arcsec (rotary).
+const char* BelowUncertaintyKey(bool rotary) { return rotary ? "U_arcsec" : "U_um"; }
+
 Expected<JsonValue> BelowUncertainty(const datasets::PositioningFile& file,
                                      const model::PositioningData& data,
                                      const metrology::PositioningUncertaintyInputs& given,
                                      std::vector<std::string>* warnings) {
   JsonValue j = JsonValue::Object();
-  if (data.rotary || data.position.size() < 2) return j;
+  if (data.position.size() < 2) return j;
   VOLCOMP_TRY_ASSIGN(const auto in, metrology::CompleteFromPreamble(given, file.conditions));
-  VOLCOMP_TRY_ASSIGN(const auto u, metrology::LengthUncertainty(
-                                       in, data.position.back() - data.position.front(), warnings));
+  VOLCOMP_TRY_ASSIGN(
+      const auto u,
+      metrology::AxisUncertainty(
+          in, data.rotary ? metrology::AxisKind::kRotary : metrology::AxisKind::kLinear,
+          data.position.back() - data.position.front(), warnings));
   if (!u) return j;
   uint64_t points = 0, below = 0;
   for (const auto* devs : {&data.dev_forward, &data.dev_reverse}) {
     for (double d : *devs) {
       ++points;
-      below += std::fabs(d) < u->length_u_um;
+      below += std::fabs(d) < u->span_u;
     }
   }
-  j.Set("U_um", u->length_u_um).Set("points", points).Set("points_below_U", below);
+  j.Set(BelowUncertaintyKey(data.rotary), u->span_u).Set("points", points);
+  j.Set("points_below_U", below);
   return j;
 }
 
@@ -111,8 +118,8 @@ void BuildAxisText(const JsonValue& d, std::ostream& out) {
           line, sizeof(line),
           "    U (k = 2) of the test %.2f %s: %lld of %lld measured deviations are smaller "
           "(their corrections are within the measurement's uncertainty)\n",
-          u.get("U_um")->number, unit, static_cast<long long>(below->integer),
-          static_cast<long long>(u.get("points")->integer));
+          u.get(BelowUncertaintyKey(a.get("position_unit")->string == "deg"))->number, unit,
+          static_cast<long long>(below->integer), static_cast<long long>(u.get("points")->integer));
       out << line;
     }
   }
@@ -147,7 +154,7 @@ Expected<Output> RunBuildAxis(Args& args, Context& ctx) {
   VOLCOMP_TRY_ASSIGN(const std::optional<BoardFileCheck> board, ParseBoardFileCheck(args));
   VOLCOMP_TRY_ASSIGN(const datasets::PositioningReadOptions read,
                      ParsePositioningReadOptions(args));
-  const metrology::PositioningUncertaintyInputs uncertainty = ReadLengthUncertainty(args);
+  const metrology::PositioningUncertaintyInputs uncertainty = ReadPositioningUncertainty(args);
   VOLCOMP_TRY(args.Finish());
 
   Output output;
@@ -209,7 +216,8 @@ const Command& BuildAxisCommand() {
               "rotary table spanning exactly 360° wraps around"}},
             ImageOptions(),
             BoardFileOptions(),
-            LengthUncertaintyOptions()}),
+            LengthUncertaintyOptions(),
+            AngleUncertaintyOptions()}),
       RunBuildAxis,
       PositioningFileNotes()};
   return kCommand;

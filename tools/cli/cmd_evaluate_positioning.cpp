@@ -30,7 +30,7 @@ Expected<Output> RunEvaluatePositioning(Args& args, Context& ctx) {
   m::PositioningTestOptions o;
   o.axis_length_mm = args.Number("--axis-length-mm");
   o.grouping.allow_few_approaches = args.Flag("--allow-few-runs");
-  o.uncertainty = ReadLengthUncertainty(args);
+  o.uncertainty = ReadPositioningUncertainty(args);
   VOLCOMP_TRY_ASSIGN(const datasets::PositioningReadOptions read,
                      ParsePositioningReadOptions(args));
   const auto files = args.Positionals();
@@ -91,6 +91,7 @@ const Command& EvaluatePositioningCommand() {
             AllowFewRuns(),
             PositioningFormatOptions(),
             LengthUncertaintyOptions(),
+            AngleUncertaintyOptions(),
             JsonReport()}),
       RunEvaluatePositioning,
       "Input: target_mm|target_deg, direction, run, deviation_um|deviation_mm|measured_mm|\n"

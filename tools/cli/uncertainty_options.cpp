@@ -1,4 +1,4 @@
-// Uncertainty options of the linear tests.
+// Uncertainty options of the positioning and diagonal tests.
 #include "uncertainty_options.hpp"
 
 namespace volcomp::cli {
@@ -26,6 +26,20 @@ const Options& LengthUncertaintyOptions() {
   return kOptions;
 }
 
+const Options& AngleUncertaintyOptions() {
+  static const Options kOptions = {
+      {"--instrument-u-arcsec", nullptr, "U", "arcsec", nullptr,
+       "rotary axis: the angle reference's calibration U at k = 2 (or preamble "
+       "instrument_u_arcsec)"},
+      {"--instrument-accuracy-arcsec", nullptr, "A", "arcsec", nullptr,
+       "rotary axis: the angle reference's stated accuracy ±A (or preamble "
+       "instrument_accuracy_arcsec)"},
+      {"--drift-range-arcsec", nullptr, "E", "arcsec", nullptr,
+       "rotary axis: range E_VE of a drift test of the angle (or preamble drift_range_arcsec)"},
+  };
+  return kOptions;
+}
+
 metrology::PositioningUncertaintyInputs ReadLengthUncertainty(args::Args& args) {
   metrology::PositioningUncertaintyInputs in;
   in.instrument_u_um = args.Number("--instrument-u-um");
@@ -36,6 +50,14 @@ metrology::PositioningUncertaintyInputs ReadLengthUncertainty(args::Args& args) 
   if (const auto v = args.Number("--expansion-range")) in.expansion_range_um_per_m_K = *v;
   if (const auto v = args.Number("--misalignment-mm")) in.misalignment_mm = *v;
   in.drift_range_um = args.Number("--drift-range-um");
+  return in;
+}
+
+metrology::PositioningUncertaintyInputs ReadPositioningUncertainty(args::Args& args) {
+  metrology::PositioningUncertaintyInputs in = ReadLengthUncertainty(args);
+  in.instrument_u_arcsec = args.Number("--instrument-u-arcsec");
+  in.instrument_accuracy_arcsec = args.Number("--instrument-accuracy-arcsec");
+  in.drift_range_arcsec = args.Number("--drift-range-arcsec");
   return in;
 }
 

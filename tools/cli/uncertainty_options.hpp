@@ -1,6 +1,7 @@
-// The measurement-uncertainty inputs of the linear tests (`evaluate positioning`, `evaluate
-// diagonal`): declared once, read into the budget's inputs (positioning_uncertainty.hpp); what an
-// option leaves unset comes from the readings file's preamble or the budget's stated default.
+// The measurement-uncertainty inputs of the positioning tests (`evaluate positioning`, `evaluate
+// diagonal`, `build axis`; angles for a rotary axis): declared once, read into the budget's inputs
+// (positioning_uncertainty.hpp); what an option leaves unset comes from the readings file's
+// preamble or the budget's stated default.
 #pragma once
 
 #include "option_groups.hpp"
@@ -14,5 +15,11 @@ const Options& LengthUncertaintyOptions();
 /// The options of LengthUncertaintyOptions() that were given (negative values are left to the
 /// budget, which refuses them naming the rule).
 metrology::PositioningUncertaintyInputs ReadLengthUncertainty(args::Args& args);
+
+/// A rotary axis's angle reference and drift (`evaluate positioning`, `build axis`).
+const Options& AngleUncertaintyOptions();
+
+/// ReadLengthUncertainty and the options of AngleUncertaintyOptions() that were given.
+metrology::PositioningUncertaintyInputs ReadPositioningUncertainty(args::Args& args);
 
 }  // namespace volcomp::cli

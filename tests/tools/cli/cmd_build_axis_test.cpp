@@ -119,5 +119,22 @@ TEST(VolcompBuildAxis, SaysWhichCorrectionsAreWithinTheUncertainty) {
   std::filesystem::remove(out);
 }
 
+// The same for a rotary table against an angle reference (±1″ stated, 1.5″ drift test: U 1.5″,
+// worked in cmd_evaluate_positioning_test.cpp). The sample's per-target means (the GOST table of
+// `evaluate positioning`) below 1.5″ in magnitude: ↑ 0.23, −0.82, −0.34, −0.92 and ↓ 0.90: 5 of 24.
+TEST(VolcompBuildAxis, SaysWhichRotaryCorrectionsAreWithinTheUncertainty) {
+  const std::string out = TempPath("build_axis_u_rotary.vct");
+  const auto r =
+      RunCli({"build", "axis", "--c", SamplePath("metrology/rotary_table_positioning.csv"), "-o",
+              out, "--steps-per-unit", "C=1000", "--instrument-accuracy-arcsec", "1",
+              "--drift-range-arcsec", "1.5"});
+  EXPECT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("U (k = 2) of the test 1.50 arcsec: 5 of 24 measured deviations are "
+                       "smaller"),
+            std::string::npos)
+      << r.out;
+  std::filesystem::remove(out);
+}
+
 }  // namespace
 }  // namespace volcomp

@@ -160,6 +160,32 @@ TEST(MetrologyCli, EvaluatePositioningTakesTheRtlEnvironmentIntoTheBudget) {
   EXPECT_NEAR(u.get("length_U_um")->number, 0.62358, 1e-5);
 }
 
+// A rotary table against an angle reference stated ±1″ (preamble) with a 1.5″ drift test:
+// instrument 0.6·2·1 = 1.2″, environment 0.6·1.5 = 0.9″, U = √(1.44 + 0.81) = 1.5″ for E, A, M
+// and B alike; the targets span 0–330 deg.
+TEST(MetrologyCli, EvaluatePositioningGivesARotaryAxisItsAngularUncertainty) {
+  const std::string data = "# instrument_accuracy_arcsec: 1\n" +
+                           ReadText(SamplePath("metrology/rotary_table_positioning.csv"));
+  auto r = RunCli({"evaluate", "positioning", "-", "--drift-range-arcsec", "1.5"}, data);
+  EXPECT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("A       = 23.42 ± 1.50"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("B_max   = 3.84 ± 1.50"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("over 330.0 deg: 1.50, of B 1.50"), std::string::npos) << r.out;
+  r = RunCli({"evaluate", "positioning", "-", "--drift-range-arcsec", "1.5", "--json"}, data);
+  const auto doc = tools::ParseJson(r.out, "stdout");
+  ASSERT_TRUE(doc.ok()) << r.out;
+  const tools::JsonValue& u = *doc->get("evaluations")->array.at(0).get("uncertainty");
+  EXPECT_NEAR(u.get("span_deg")->number, 330.0, 1e-9);
+  EXPECT_NEAR(u.get("span_U_arcsec")->number, 1.5, 1e-12);
+  EXPECT_NEAR(u.get("local_U_arcsec")->number, 1.5, 1e-12);
+  // A length input on a rotary axis is named, not silently used.
+  r = RunCli({"evaluate", "positioning", SamplePath("metrology/rotary_table_positioning.csv"),
+              "--instrument-u-um", "0.3"});
+  EXPECT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.err.find("do not apply to a rotary axis"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("state the angle reference"), std::string::npos) << r.err;
+}
+
 TEST(MetrologyCli, EvaluatePositioningBadOptionsAndInputs) {
   auto r = RunCli({"evaluate", "positioning", "x.csv", "--standard", "nope"});
   EXPECT_EQ(r.code, tools::kExitUsage);

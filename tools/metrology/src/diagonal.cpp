@@ -163,8 +163,8 @@ Expected<DiagonalEvaluation> EvaluateDiagonals(const tools::CsvTable& table,
     DiagonalGroupValue& gv = g->second;
     std::optional<double> u_length, u_local;
     if (d.evaluation.uncertainty) {
-      u_length = d.evaluation.uncertainty->length_u_um;
-      u_local = d.evaluation.uncertainty->local_u_um;
+      u_length = d.evaluation.uncertainty->span_u;
+      u_local = d.evaluation.uncertainty->local_u;
     }
     if (d.E.value > gv.E_d) gv.E_d = d.E.value, gv.E_from = key, gv.E_d_U = u_length;
     if (d.B.value > gv.B_d) gv.B_d = d.B.value, gv.B_from = key, gv.B_d_U = u_local;

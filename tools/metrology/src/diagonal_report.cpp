@@ -73,10 +73,10 @@ JsonValue DiagonalJson(const DiagonalEvaluation& ev) {
     e.Set("max", ExtremeJson(r, d.E.max));
     e.Set("min", ExtremeJson(r, d.E.min));
     const auto& u = r.uncertainty;
-    e.Set("U", u ? JsonValue(u->length_u_um) : JsonValue());
+    e.Set("U", u ? JsonValue(u->span_u) : JsonValue());
     o.Set("E", std::move(e));
     JsonValue b = ExtremeJson(r, d.B);
-    b.Set("U", u ? JsonValue(u->local_u_um) : JsonValue());
+    b.Set("U", u ? JsonValue(u->local_u) : JsonValue());
     o.Set("B", std::move(b));
     JsonValue positions = JsonValue::Array();
     for (const auto& p : r.positions) {

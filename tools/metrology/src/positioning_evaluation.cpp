@@ -15,7 +15,7 @@
 namespace volcomp::metrology {
 namespace {
 
-// The budget over the targets' span, for linear axes (positioning_uncertainty.hpp).
+// The budget over the targets' span (positioning_uncertainty.hpp): lengths or angles.
 Expected<std::optional<PositioningUncertainty>> Uncertainty(
     const PositioningEvaluation& ev,
     const PositioningSet& set,
@@ -23,13 +23,9 @@ Expected<std::optional<PositioningUncertainty>> Uncertainty(
     std::vector<std::string>* warnings) {
   VOLCOMP_TRY_ASSIGN(const PositioningUncertaintyInputs in,
                      CompleteFromPreamble(given, ev.conditions));
-  if (set.kind != AxisKind::kLinear) {
-    warnings->push_back("no measurement uncertainty for a rotary axis (the budget is for lengths)");
-    return std::optional<PositioningUncertainty>();
-  }
   double lo = set.positions.front().target, hi = lo;
   for (const auto& p : set.positions) lo = std::min(lo, p.target), hi = std::max(hi, p.target);
-  return LengthUncertainty(in, hi - lo, warnings);
+  return AxisUncertainty(in, set.kind, hi - lo, warnings);
 }
 
 }  // namespace

@@ -40,7 +40,7 @@ std::vector<Parameter> Parameters(const PositioningResult& r) {
   // Spans over the travel carry U_length; the reversal (B) U_local; repeatability none (it is
   // the machine's scatter itself).
   std::optional<double> u_length, u_local;
-  if (r.uncertainty) u_length = r.uncertainty->length_u_um, u_local = r.uncertainty->local_u_um;
+  if (r.uncertainty) u_length = r.uncertainty->span_u, u_local = r.uncertainty->local_u;
   auto u_of = [&](const std::string& key) {
     return key == "B" || key == "B_max" || key == "B_mean" ? u_local : std::nullopt;
   };
@@ -134,15 +134,16 @@ JsonValue OptionalJson(const std::optional<double>& v) { return v ? JsonValue(*v
 JsonValue UncertaintyJson(const std::optional<PositioningUncertainty>& u) {
   if (!u) return JsonValue();
   JsonValue j = JsonValue::Object();
+  const UncertaintyJsonKeys keys = UncertaintyKeys(u->kind);
   j.Set("k", 2);
-  j.Set("length_mm", u->length_mm);
-  j.Set("length_U_um", u->length_u_um);
-  j.Set("local_U_um", u->local_u_um);
+  j.Set(keys.span, u->span);
+  j.Set(keys.span_u, u->span_u);
+  j.Set(keys.local_u, u->local_u);
   JsonValue terms = JsonValue::Array();
   for (const auto& t : u->terms) {
     JsonValue o = JsonValue::Object();
     o.Set("name", t.name);
-    o.Set("U_um", t.u_um);
+    o.Set(keys.term_u, t.u);
     o.Set("basis", t.basis);
     terms.Push(std::move(o));
   }
@@ -203,12 +204,13 @@ void WritePositioningText(std::ostream& out, const JsonValue& r) {
   }
   const JsonValue& budget = json::At(r, "uncertainty");
   if (!budget.is_null()) {
-    out << "  U (k = 2) of E, A, M over " << FormatFixed(json::Number(budget, "length_mm"), 1)
-        << " mm: " << FormatFixed(json::Number(budget, "length_U_um"), 2) << ", of B "
-        << FormatFixed(json::Number(budget, "local_U_um"), 2) << " (simplified budget:";
+    const UncertaintyJsonKeys keys = UncertaintyKeys(kind);
+    out << "  U (k = 2) of E, A, M over " << FormatFixed(json::Number(budget, keys.span), 1) << " "
+        << tu << ": " << FormatFixed(json::Number(budget, keys.span_u), 2) << ", of B "
+        << FormatFixed(json::Number(budget, keys.local_u), 2) << " (simplified budget:";
     const char* sep = " ";
     for (const JsonValue& t : json::At(budget, "terms").array) {
-      out << sep << json::Text(t, "name") << " " << FormatFixed(json::Number(t, "U_um"), 2);
+      out << sep << json::Text(t, "name") << " " << FormatFixed(json::Number(t, keys.term_u), 2);
       sep = ", ";
     }
     out << ")\n";
@@ -362,20 +364,20 @@ void AddPositioningSection(report::HtmlPage* page, const PositioningResult& r) {
                     where, p.meaning});
   }
   page->Table({"parameter", u + (r.uncertainty ? " (± U, k = 2)" : ""), "where", "meaning"}, rows);
-  if (r.uncertainty) {
+  if (const auto& budget = r.uncertainty) {
+    const bool rotary = budget->kind == AxisKind::kRotary;
     std::vector<std::vector<std::string>> terms;
-    for (const auto& t : r.uncertainty->terms) {
-      terms.push_back({t.name, FormatFixed(t.u_um, 2), t.basis});
-    }
-    terms.push_back(
-        {"U of E, A, M", FormatFixed(r.uncertainty->length_u_um, 2), "root sum of squares"});
-    terms.push_back({"U of B", FormatFixed(r.uncertainty->local_u_um, 2),
-                     "instrument calibration and environment (length terms cancel)"});
-    page->Paragraph("Measurement uncertainty (k = 2) over the measured length " +
-                    FormatFixed(r.uncertainty->length_mm, 1) +
-                    " mm: a simplified budget after ISO/TR 230-9 (ISO 230-2:2014 Annex A's own "
+    for (const auto& t : budget->terms) terms.push_back({t.name, FormatFixed(t.u, 2), t.basis});
+    terms.push_back({"U of E, A, M", FormatFixed(budget->span_u, 2), "root sum of squares"});
+    terms.push_back({"U of B", FormatFixed(budget->local_u, 2),
+                     rotary ? "as E, A, M (no term cancels between the directions)"
+                            : "instrument calibration and environment (length terms cancel)"});
+    page->Paragraph(std::string("Measurement uncertainty (k = 2) over the measured ") +
+                    (rotary ? "angle " : "length ") + FormatFixed(budget->span, 1) +
+                    (rotary ? " deg" : " mm") +
+                    ": a simplified budget after ISO/TR 230-9 (ISO 230-2:2014 Annex A's own "
                     "equations were not available; docs/metrology.md).");
-    page->Table({"term", "U, µm", "basis"}, terms);
+    page->Table({"term", std::string("U, ") + DeviationUnit(budget->kind), "basis"}, terms);
   }
 
   page->Figure(

@@ -28,11 +28,19 @@ Expected<PositioningUncertaintyInputs> CompleteFromPreamble(PositioningUncertain
                             std::pair{&in.drift_range_um, "drift_range_um"},
                             std::pair{&in.expansion_um_per_m_K, "expansion_um_per_m_K"},
                             // as a Renishaw .rtl's environment block gives it (ppm/°C)
-                            std::pair{&in.expansion_um_per_m_K, "expansion coefficient ppm/C"}}) {
+                            std::pair{&in.expansion_um_per_m_K, "expansion coefficient ppm/C"},
+                            std::pair{&in.instrument_u_arcsec, "instrument_u_arcsec"},
+                            std::pair{&in.instrument_accuracy_arcsec, "instrument_accuracy_arcsec"},
+                            std::pair{&in.drift_range_arcsec, "drift_range_arcsec"}}) {
     if (*value) continue;
     VOLCOMP_TRY_ASSIGN(*value, conditions.Number(key));
   }
   return in;
+}
+
+UncertaintyJsonKeys UncertaintyKeys(AxisKind kind) {
+  if (kind == AxisKind::kRotary) return {"span_deg", "span_U_arcsec", "local_U_arcsec", "U_arcsec"};
+  return {"length_mm", "length_U_um", "local_U_um", "U_um"};
 }
 
 Expected<std::optional<PositioningUncertainty>> LengthUncertainty(
@@ -67,7 +75,7 @@ Expected<PositioningUncertainty> PositioningU(const PositioningUncertaintyInputs
     return Fail(Error::kInvalidArgument, "uncertainty needs a measured length > 0");
   }
   PositioningUncertainty u;
-  u.length_mm = length_mm;
+  u.span = length_mm;
   const double l_m = length_mm / 1000.0;
   const double cal = in.instrument_u_um.value_or(0.0);
   const double ppm = in.instrument_ppm ? kRange * 2.0 * *in.instrument_ppm * l_m : 0.0;
@@ -111,10 +119,89 @@ Expected<PositioningUncertainty> PositioningU(const PositioningUncertaintyInputs
         "variation term is not included");
   }
   double sum = 0.0;
-  for (const auto& t : u.terms) sum += t.u_um * t.u_um;
-  u.length_u_um = std::sqrt(sum);
-  u.local_u_um = std::hypot(cal, env);
+  for (const auto& t : u.terms) sum += t.u * t.u;
+  u.span_u = std::sqrt(sum);
+  u.local_u = std::hypot(cal, env);
   return u;
+}
+
+Expected<std::optional<PositioningUncertainty>> AngleUncertainty(
+    const PositioningUncertaintyInputs& in, double span_deg, std::vector<std::string>* warnings) {
+  if (!in.angular_stated()) {
+    warnings->push_back(
+        "no measurement uncertainty: state the angle reference (--instrument-u-arcsec from its "
+        "calibration certificate or --instrument-accuracy-arcsec, or the preamble keys "
+        "instrument_u_arcsec / instrument_accuracy_arcsec) for U at k = 2");
+    return std::optional<PositioningUncertainty>();
+  }
+  VOLCOMP_TRY_ASSIGN(PositioningUncertainty u, AngularPositioningU(in, span_deg));
+  for (const auto& n : u.notes) warnings->push_back(n);
+  return std::optional<PositioningUncertainty>(std::move(u));
+}
+
+Expected<PositioningUncertainty> AngularPositioningU(const PositioningUncertaintyInputs& in,
+                                                     double span_deg) {
+  if (!in.angular_stated()) {
+    return Fail(Error::kInvalidArgument,
+                "rotary positioning uncertainty needs the angle reference: its calibration U or "
+                "its stated accuracy in arc-seconds");
+  }
+  if (Bad(in.instrument_u_arcsec.value_or(0.0)) ||
+      Bad(in.instrument_accuracy_arcsec.value_or(0.0)) ||
+      Bad(in.drift_range_arcsec.value_or(0.0)) || Bad(span_deg)) {
+    return Fail(Error::kInvalidArgument, "uncertainty inputs must be finite and not negative");
+  }
+  PositioningUncertainty u;
+  u.kind = AxisKind::kRotary;
+  u.span = span_deg;
+  const double cal = in.instrument_u_arcsec.value_or(0.0);
+  const double acc =
+      in.instrument_accuracy_arcsec ? kRange * 2.0 * *in.instrument_accuracy_arcsec : 0.0;
+  std::string basis;
+  if (in.instrument_u_arcsec) basis = "calibration U " + N(cal) + "″";
+  if (in.instrument_accuracy_arcsec) {
+    basis += std::string(basis.empty() ? "" : " and ") + "0.6 × 2 × " +
+             N(*in.instrument_accuracy_arcsec) + "″";
+  }
+  const double device = std::hypot(cal, acc);
+  u.terms.push_back({"instrument", device, basis});
+  for (const char* name : {"thermometer", "expansion coefficient", "misalignment"}) {
+    u.terms.push_back({name, 0.0, "none for an angle: a uniform expansion does not change it"});
+  }
+  const double env = kRange * in.drift_range_arcsec.value_or(0.0);
+  if (in.drift_range_arcsec) {
+    u.terms.push_back({"environment", env, "0.6 × E_VE " + N(*in.drift_range_arcsec) + "″"});
+  } else {
+    u.terms.push_back({"environment", 0.0, "not included: no drift test"});
+    u.notes.push_back(
+        "no drift test stated (--drift-range-arcsec or preamble drift_range_arcsec): the "
+        "environmental variation term is not included");
+  }
+  u.span_u = std::hypot(device, env);
+  u.local_u = u.span_u;
+  return u;
+}
+
+Expected<std::optional<PositioningUncertainty>> AxisUncertainty(
+    const PositioningUncertaintyInputs& in,
+    AxisKind kind,
+    double span,
+    std::vector<std::string>* warnings) {
+  if (kind == AxisKind::kRotary) {
+    if (in.any_length_input()) {
+      warnings->push_back(
+          "length uncertainty inputs (instrument µm/ppm, material temperature, misalignment, "
+          "drift µm) do not apply to a rotary axis: use --instrument-u-arcsec, "
+          "--instrument-accuracy-arcsec, --drift-range-arcsec");
+    }
+    return AngleUncertainty(in, span, warnings);
+  }
+  if (in.any_angle_input()) {
+    warnings->push_back(
+        "angle uncertainty inputs (instrument ″, drift ″) do not apply to a linear axis: use "
+        "--instrument-u-um or --instrument-ppm and --drift-range-um");
+  }
+  return LengthUncertainty(in, span, warnings);
 }
 
 }  // namespace volcomp::metrology

@@ -12,6 +12,15 @@
 // E, A, M and E↑/E↓/A↑/A↓ span the travel L: U_length = √Σ of all. B and B̄ compare the two
 // approach directions at the same target, where the length terms cancel: U_local =
 // √(U_cal² + U_env²). Repeatability R is the machine's scatter itself (no term). Units: µm, mm.
+//
+// A rotary axis (angles in ″, targets in deg) measured against an angle reference (an XR20-type
+// rotary calibrator, a polygon and autocollimator, an indexing table): the same conventions with
+// the terms that exist for an angle:
+//   instrument        U_cal (″, k = 2), and/or 0.6·2·a for a stated accuracy ±a″ (full range 2a)
+//   environment       0.6·E_VE            (range of a drift test of the angle reading, ″)
+// A uniform expansion of the machine or the reference does not change an angle, so the
+// thermometer, expansion-coefficient and cosine terms do not arise (listed as 0 with that basis);
+// E, A, M and B all carry U = √(U_cal² + U_env²) (nothing cancels between directions).
 #pragma once
 
 #include <optional>
@@ -19,6 +28,7 @@
 #include <vector>
 
 #include "volcomp/hosted/expected.hpp"
+#include "volcomp/metrology/direction.hpp"
 #include "volcomp/metrology/test_conditions.hpp"
 
 namespace volcomp::metrology {
@@ -32,26 +42,47 @@ struct PositioningUncertaintyInputs {
   double expansion_range_um_per_m_K = 2.0;       // R_α, the full plausible range of α
   double misalignment_mm = 0.0;                  // lateral beam walk-off d over the length
   std::optional<double> drift_range_um;          // E_VE of a drift test
+  // Rotary axes (angles):
+  std::optional<double> instrument_u_arcsec;         // calibration U (k = 2) of the reference
+  std::optional<double> instrument_accuracy_arcsec;  // its stated accuracy ±a″
+  std::optional<double> drift_range_arcsec;          // E_VE of a drift test of the angle
 
   bool stated() const { return instrument_u_um || instrument_ppm; }
+  bool angular_stated() const { return instrument_u_arcsec || instrument_accuracy_arcsec; }
+  bool any_length_input() const {
+    return stated() || material_temperature_C || drift_range_um || misalignment_mm != 0.0;
+  }
+  bool any_angle_input() const { return angular_stated() || drift_range_arcsec; }
 };
 
 struct UncertaintyTerm {
   std::string name;   // "instrument", "thermometer", ...
-  double u_um = 0.0;  // U at k = 2
+  double u = 0.0;     // U at k = 2, in the budget's unit (µm linear, ″ rotary)
   std::string basis;  // how it was found, with the inputs
 };
 
 struct PositioningUncertainty {
-  double length_mm = 0.0;
+  AxisKind kind = AxisKind::kLinear;   // the unit of every U: µm (linear) or ″ (rotary)
+  double span = 0.0;                   // the targets' span: mm (linear) or deg (rotary)
   std::vector<UncertaintyTerm> terms;  // every term, also those that are zero
-  double length_u_um = 0.0;            // U of E, A, M (and the one-direction spans)
-  double local_u_um = 0.0;             // U of B, B̄
+  double span_u = 0.0;                 // U of E, A, M (and the one-direction spans)
+  double local_u = 0.0;                // U of B, B̄
   std::vector<std::string> notes;      // inputs not stated and what that leaves out
 };
 
+/// The JSON keys of a budget, units in the names: length_mm / length_U_um / local_U_um / U_um
+/// for a linear axis, span_deg / span_U_arcsec / local_U_arcsec / U_arcsec for a rotary one.
+struct UncertaintyJsonKeys {
+  const char* span;
+  const char* span_u;
+  const char* local_u;
+  const char* term_u;
+};
+UncertaintyJsonKeys UncertaintyKeys(AxisKind kind);
+
 /// `in` with what it leaves unset taken from the readings file's preamble: instrument_u_um,
 /// instrument_ppm, "material temperature C" (decimal comma allowed), drift_range_um,
+/// instrument_u_arcsec, instrument_accuracy_arcsec, drift_range_arcsec,
 /// expansion_um_per_m_K or "expansion coefficient ppm/C" (the .rtl reader's key). A preamble value
 /// that is not a number: kInputInvalid naming it.
 Expected<PositioningUncertaintyInputs> CompleteFromPreamble(PositioningUncertaintyInputs in,
@@ -66,5 +97,23 @@ Expected<std::optional<PositioningUncertainty>> LengthUncertainty(
 /// length is not positive.
 Expected<PositioningUncertainty> PositioningU(const PositioningUncertaintyInputs& in,
                                               double length_mm);
+
+/// The budget of a rotary axis's test over `span_deg` (≥ 0: a full-circle test may return to its
+/// start), or nullopt with a warning when no angle reference is stated. Length inputs given for
+/// a rotary axis are named in a warning (they do not apply).
+Expected<std::optional<PositioningUncertainty>> AngleUncertainty(
+    const PositioningUncertaintyInputs& in, double span_deg, std::vector<std::string>* warnings);
+
+/// kInvalidArgument when no angle reference is stated or an input is negative or not finite.
+Expected<PositioningUncertainty> AngularPositioningU(const PositioningUncertaintyInputs& in,
+                                                     double span_deg);
+
+/// The budget for the axis kind (LengthUncertainty or AngleUncertainty); inputs of the other
+/// kind are named in a warning.
+Expected<std::optional<PositioningUncertainty>> AxisUncertainty(
+    const PositioningUncertaintyInputs& in,
+    AxisKind kind,
+    double span,
+    std::vector<std::string>* warnings);
 
 }  // namespace volcomp::metrology
