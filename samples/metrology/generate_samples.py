@@ -144,7 +144,9 @@ def circular(rng):
                 "radius - 100 mm\n")
         f.write("# machine: MILL-7\n# axis: XY\n# date: 2026-11-27\n# operator: QA\n")
         f.write("# instrument: ballbar 100 mm\n# air temperature C: 20.3\n"
-                "# material temperature C: 20.1\n# feed mm per min: 1000\n")
+                "# material temperature C: 20.1\n# feed mm per min: 1000\n"
+                "# instrument_u_um: 0.5\n# calibrator_u_um: 1\n# nominal_radius_mm: 100\n"
+                "# drift_range_um: 0.4\n# expansion_um_per_m_K: 11.5\n")
         f.write("direction,angle_deg,deviation_um\n")
         for d in ("cw", "ccw"):
             s = 1.0 if d == "ccw" else -1.0  # the sense of travel

@@ -6,6 +6,7 @@
 #include "file_arguments.hpp"
 #include "metrology_report.hpp"
 #include "option_groups.hpp"
+#include "uncertainty_options.hpp"
 #include "volcomp/metrology/circular.hpp"
 #include "volcomp/metrology/circular_report.hpp"
 #include "volcomp/metrology/report_files.hpp"
@@ -25,6 +26,7 @@ Expected<Output> RunEvaluateCircular(Args& args, Context& ctx) {
   const auto report_dir = args.Value("--report");
   const auto svg = args.Value("--svg");
   const auto radius = args.Number("--radius");
+  const m::CircularUncertaintyInputs uncertainty = ReadCircularUncertainty(args);
   const auto files = args.Positionals();
   VOLCOMP_TRY(args.Finish());
   if (files.size() != 1) return UsageFailure("give exactly one data file (or - for stdin)");
@@ -34,6 +36,11 @@ Expected<Output> RunEvaluateCircular(Args& args, Context& ctx) {
   VOLCOMP_TRY_ASSIGN(ev.data, m::ReadCircularCsv(table, radius.value_or(0.0)));
   VOLCOMP_TRY_ASSIGN(ev.result, m::EvaluateCircular(ev.data));
   ev.conditions = m::ConditionsFromPreamble(table);
+  VOLCOMP_TRY_ASSIGN(const auto u_in, m::CompleteFromPreamble(uncertainty, ev.conditions));
+  VOLCOMP_TRY_ASSIGN(const auto preamble_radius, ev.conditions.Number("nominal_radius_mm"));
+  const double u_radius =
+      ev.data.nominal_radius_mm > 0.0 ? ev.data.nominal_radius_mm : preamble_radius.value_or(0.0);
+  VOLCOMP_TRY_ASSIGN(ev.uncertainty, m::CircularU(u_in, u_radius, &ev.result.warnings));
   Output output{m::CircularJson(ev), EvaluateCircularText, ev.result.warnings};
   if (svg) VOLCOMP_TRY(WriteTextArgument(m::CircularPolarSvg(ev), *svg, ctx));
   if (report_dir) {
@@ -54,6 +61,7 @@ const Command& EvaluateCircularCommand() {
               "nominal radius: the file gives measured radii in a radius_mm column"},
              {"--svg", nullptr, "FILE", nullptr, nullptr,
               "write the polar plot (both directions, deviation magnified) as SVG"}},
+            CircularUncertaintyOptions(),
             JsonReport()}),
       RunEvaluateCircular,
       "Input: columns direction (cw|ccw), angle_deg (counter-clockwise from the plane's first\n"

@@ -53,6 +53,22 @@ metrology::PositioningUncertaintyInputs ReadLengthUncertainty(args::Args& args) 
   return in;
 }
 
+const Options& CircularUncertaintyOptions() {
+  static const Options kOptions =
+      Join({LengthUncertaintyOptions(),
+            {{"--calibrator-u-um", nullptr, "U", "um", nullptr,
+              "circular test: U at k = 2 of the calibrator's length, enters F only (or preamble "
+              "calibrator_u_um); --instrument-u-um is then the U of one radial reading"}}});
+  return kOptions;
+}
+
+metrology::CircularUncertaintyInputs ReadCircularUncertainty(args::Args& args) {
+  metrology::CircularUncertaintyInputs in;
+  in.reading = ReadLengthUncertainty(args);
+  in.calibrator_u_um = args.Number("--calibrator-u-um");
+  return in;
+}
+
 metrology::PositioningUncertaintyInputs ReadPositioningUncertainty(args::Args& args) {
   metrology::PositioningUncertaintyInputs in = ReadLengthUncertainty(args);
   in.instrument_u_arcsec = args.Number("--instrument-u-arcsec");

@@ -6,6 +6,7 @@
 
 #include "option_groups.hpp"
 #include "volcomp/args/args.hpp"
+#include "volcomp/metrology/circular_uncertainty.hpp"
 #include "volcomp/metrology/positioning_uncertainty.hpp"
 
 namespace volcomp::cli {
@@ -18,6 +19,11 @@ metrology::PositioningUncertaintyInputs ReadLengthUncertainty(args::Args& args);
 
 /// A rotary axis's angle reference and drift (`evaluate positioning`, `build axis`).
 const Options& AngleUncertaintyOptions();
+
+/// A circular test's reading, calibrator, temperature and drift (`evaluate circular`): the length
+/// options (the budget refuses --instrument-ppm and --misalignment-mm) and --calibrator-u-um.
+const Options& CircularUncertaintyOptions();
+metrology::CircularUncertaintyInputs ReadCircularUncertainty(args::Args& args);
 
 /// ReadLengthUncertainty and the options of AngleUncertaintyOptions() that were given.
 metrology::PositioningUncertaintyInputs ReadPositioningUncertainty(args::Args& args);

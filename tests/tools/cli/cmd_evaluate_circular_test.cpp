@@ -6,6 +6,7 @@
 #include <cmath>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "cli_runner.hpp"
 #include "expected_value.hpp"
@@ -134,6 +135,41 @@ TEST(EvaluateCircularCli, RadiiWithTheNominalRadius) {
                        "radius with --radius"),
             std::string::npos)
       << r.err;
+}
+
+// The budget by hand (reading U 0.5 µm, drift 1 µm, calibrator U 1 µm, material 21 °C, steel,
+// R = 100 mm from the preamble): G, G(b), H: √(0.5² + 0.6²) = √0.61 = 0.78102; F: instrument
+// √(0.25 + 1) = 1.11803, thermometer 0.6·11.5·0.1·0.2 = 0.138, expansion 0.6·0.1·1·2 = 0.12,
+// environment 0.6: √(1.25 + 0.019044 + 0.0144 + 0.36) = √1.643444 = 1.28197.
+TEST(EvaluateCircularCli, EachFigureWithItsUncertainty) {
+  const std::string csv = "# nominal_radius_mm: 100\n# calibrator_u_um: 1\n" + HandCaseCsv();
+  const std::vector<std::string> args = {
+      "evaluate", "circular",         "-", "--instrument-u-um",
+      "0.5",      "--drift-range-um", "1", "--material-temperature-c",
+      "21"};
+  auto r = RunCli(args, csv);
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("bidirectional G(b)    10.50 ± 0.78 µm"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("max 12.00 ± 1.28 µm, min -5.00 ± 1.28 µm"), std::string::npos) << r.out;
+  auto json_args = args;
+  json_args.push_back("--json");
+  r = RunCli(json_args, csv);
+  const tools::JsonValue j = ValueOf(tools::ParseJson(r.out, "stdout"));
+  const tools::JsonValue& u = *j.get("uncertainty");
+  EXPECT_NEAR(u.get("shape_U_um")->number, std::sqrt(0.61), 1e-12);
+  EXPECT_NEAR(u.get("F_U_um")->number, std::sqrt(1.643444), 1e-12);
+  EXPECT_NEAR(u.get("F")->get("length_mm")->number, 100.0, 0.0);
+  // No radius: F without U, said; no reading U: no budget, said; a ppm accuracy: refused.
+  r = RunCli({"evaluate", "circular", "-", "--instrument-u-um", "0.5"}, HandCaseCsv());
+  EXPECT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.err.find("F has no U: the nominal radius is not known"), std::string::npos);
+  EXPECT_NE(r.out.find("max 12.00 µm, min -5.00 µm"), std::string::npos) << r.out;
+  r = RunCli({"evaluate", "circular", "-"}, HandCaseCsv());
+  EXPECT_NE(r.err.find("no measurement uncertainty: state the U (k = 2) of one radial reading"),
+            std::string::npos);
+  r = RunCli({"evaluate", "circular", "-", "--instrument-ppm", "1"}, HandCaseCsv());
+  EXPECT_EQ(r.code, tools::kExitFailed);
+  EXPECT_NE(r.err.find("a ppm accuracy or a beam misalignment does not apply"), std::string::npos);
 }
 
 TEST(EvaluateCircularCli, Refusals) {

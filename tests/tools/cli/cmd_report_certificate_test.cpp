@@ -97,7 +97,12 @@ TEST(ReportCertificate, FiguresTolerancesAndVerdicts) {
   EXPECT_EQ(doc.get("verdict")->string, "fail");
   EXPECT_EQ(doc.get("toleranced")->integer, 2);
   EXPECT_EQ(doc.get("failed_after")->integer, 1);
-  EXPECT_EQ(doc.get("uncertainty")->string, "not evaluated");
+  // The circular sample states its ballbar (preamble): G and H carry the shape's U,
+  // √(0.5² + (0.6·0.4)²) = 0.5546 µm (docs/metrology.md, circular test); the diagonals none.
+  EXPECT_EQ(doc.get("uncertainty")->string, "U (k = 2) where the evaluations state it");
+  const tools::JsonValue* h_u = Figure(doc, "iso230-4.H")->get("uncertainty");
+  ASSERT_TRUE(h_u != nullptr && !h_u->is_null());
+  EXPECT_NEAR(h_u->get("after")->number, std::hypot(0.5, 0.24), 1e-9);
   // Fields not given are null, never invented; the table was not given either.
   EXPECT_EQ(doc.get("fields")->get("machine")->get("serial")->string, "SN-1");
   EXPECT_TRUE(doc.get("fields")->get("customer")->get("name")->is_null());

@@ -88,9 +88,10 @@ TEST(MetrologyCompare, WhatCannotBeReadOrPairedIsAFailure) {
 
 // A circular test result: figures scaled by `k`, readings of a 4 µm ellipse (also scaled) at
 // 8 angles per direction about a centre offset (3, −2) µm.
-std::string Circular(double k) {
+std::string Circular(double k, const std::string& uncertainty = "null") {
   std::ostringstream s;
   s << "{\"command\": \"evaluate circular\", \"source\": \"c.csv\", \"conditions\": {},"
+    << " \"uncertainty\": " << uncertainty << ","
     << " \"G_cw_um\": " << 8 * k << ", \"G_ccw_um\": " << 7 * k << ", \"G_b_um\": " << 10 * k
     << ", \"H_um\": " << 4 * k << ", \"F_max_um\": " << 12 * k << ", \"F_min_um\": " << -5 * k
     << ", \"centre_offset_um\": {\"x\": 3, \"y\": -2}, \"mean_radius_deviation_um\": 1,"
@@ -107,6 +108,26 @@ std::string Circular(double k) {
   }
   s << "}}";
   return s.str();
+}
+
+// Each figure keeps its U: G and H the shape's, F the radial one; none where a test has none.
+TEST(MetrologyCompare, CircularFiguresKeepTheirUncertainty) {
+  const std::string dir = FreshTempPath("compare_test_circular_u");
+  std::filesystem::create_directories(dir);
+  WriteText(dir + "/before.json", Circular(1.0, R"({"shape_U_um": 0.8, "F_U_um": 1.3})"));
+  WriteText(dir + "/after.json", Circular(0.25));
+  const Comparison c = ValueOf(CompareResults(ValueOf(LoadResults(dir + "/before.json")),
+                                              ValueOf(LoadResults(dir + "/after.json"))));
+  ASSERT_EQ(c.results.size(), 1u);
+  int checked = 0;
+  for (const ComparedValue& v : c.results[0].tables.at(0).values) {
+    ASSERT_TRUE(v.u_before.has_value()) << v.symbol;
+    EXPECT_EQ(*v.u_before, v.symbol.rfind("F_", 0) == 0 ? 1.3 : 0.8) << v.symbol;
+    EXPECT_FALSE(v.u_after.has_value()) << v.symbol;
+    ++checked;
+  }
+  EXPECT_EQ(checked, 6);
+  std::filesystem::remove_all(dir);
 }
 
 TEST(MetrologyCompare, CircularTestsBeforeAndAfter) {

@@ -2,10 +2,13 @@
 #include "volcomp/metrology/circular_report.hpp"
 
 #include <algorithm>
+#include <optional>
+#include <string>
 #include <utility>
 
 #include "json_fields.hpp"
 #include "volcomp/metrology/polar_fit.hpp"
+#include "volcomp/metrology/positioning_report.hpp"
 #include "volcomp/report/format.hpp"
 #include "volcomp/report/polar_chart.hpp"
 
@@ -17,9 +20,17 @@ using tools::JsonValue;
 
 JsonValue NumberOrNull(bool present, double v) { return present ? JsonValue(v) : JsonValue(); }
 
-std::string Um(const JsonValue& ev, const std::string& key) {
+// A figure "12.34 µm", with " ± U" when the document carries the figure's U (key `u_key` of
+// its uncertainty object).
+std::string Um(const JsonValue& ev, const std::string& key, const char* u_key = nullptr) {
   const JsonValue& v = json::At(ev, key);
-  return v.is_null() ? "-" : FormatFixed(v.number, 2) + " µm";
+  if (v.is_null()) return "-";
+  std::string text = FormatFixed(v.number, 2);
+  const JsonValue* u = ev.get("uncertainty");
+  if (u_key && u && !u->is_null() && !json::At(*u, u_key).is_null()) {
+    text += " ± " + FormatFixed(json::Number(*u, u_key), 2);
+  }
+  return text + " µm";
 }
 
 report::PolarTrace Trace(const CircularPath& p,
@@ -109,6 +120,22 @@ JsonValue CircularJson(const CircularEvaluation& ev) {
   JsonValue warnings = JsonValue::Array();
   for (const auto& w : ev.result.warnings) warnings.Push(w);
   j.Set("warnings", std::move(warnings));
+  JsonValue u;
+  if (const auto& cu = ev.uncertainty) {
+    u = JsonValue::Object();
+    u.Set("k", 2);
+    u.Set("shape_U_um", cu->shape_u_um);
+    JsonValue terms = JsonValue::Array();
+    for (const auto& t : cu->shape_terms) {
+      JsonValue o = JsonValue::Object();
+      o.Set("name", t.name).Set("U_um", t.u).Set("basis", t.basis);
+      terms.Push(std::move(o));
+    }
+    u.Set("shape_terms", std::move(terms));
+    u.Set("F_U_um", cu->radial ? JsonValue(cu->radial->span_u) : JsonValue());
+    u.Set("F", UncertaintyJson(cu->radial));
+  }
+  j.Set("uncertainty", std::move(u));
   return j;
 }
 
@@ -122,19 +149,31 @@ void WriteCircularText(std::ostream& out, const JsonValue& ev) {
   if (!radius.is_null())
     out << " on a nominal radius of " << FormatFixed(radius.number, 3) << " mm";
   out << "\n";
-  out << "  circular deviation G  CW " << Um(ev, "G_cw_um") << ", CCW " << Um(ev, "G_ccw_um")
-      << " (each about its own least-squares centre)\n";
-  out << "  bidirectional G(b)    " << Um(ev, "G_b_um") << " (one least-squares centre)\n";
-  out << "  circular hysteresis H " << Um(ev, "H_um");
+  out << "  circular deviation G  CW " << Um(ev, "G_cw_um", "shape_U_um") << ", CCW "
+      << Um(ev, "G_ccw_um", "shape_U_um") << " (each about its own least-squares centre)\n";
+  out << "  bidirectional G(b)    " << Um(ev, "G_b_um", "shape_U_um")
+      << " (one least-squares centre)\n";
+  out << "  circular hysteresis H " << Um(ev, "H_um", "shape_U_um");
   const JsonValue& h_angle = json::At(ev, "H_angle_deg");
   if (!h_angle.is_null()) out << " at " << FormatFixed(h_angle.number, 1) << "°";
   out << "\n";
-  out << "  radial deviation F    max " << Um(ev, "F_max_um") << ", min " << Um(ev, "F_min_um")
-      << " (nominal centre and radius)\n";
+  out << "  radial deviation F    max " << Um(ev, "F_max_um", "F_U_um") << ", min "
+      << Um(ev, "F_min_um", "F_U_um") << " (nominal centre and radius)\n";
   const JsonValue& offset = json::At(ev, "centre_offset_um");
   out << "  centre offset         (" << FormatFixed(json::Number(offset, "x"), 2) << ", "
       << FormatFixed(json::Number(offset, "y"), 2) << ") µm; mean radius deviation "
       << FormatFixed(json::Number(ev, "mean_radius_deviation_um"), 2) << " µm\n";
+  const JsonValue* u = ev.get("uncertainty");
+  if (u && !u->is_null()) {
+    out << "  U (k = 2) of G, G(b), H " << FormatFixed(json::Number(*u, "shape_U_um"), 2) << " µm ("
+        << UncertaintyTermsText(json::At(*u, "shape_terms"), "U_um") << "; simplified budget)";
+    if (const JsonValue& f = json::At(*u, "F"); !f.is_null()) {
+      out << "; of F " << FormatFixed(json::Number(f, "length_U_um"), 2)
+          << " µm over R = " << FormatFixed(json::Number(f, "length_mm"), 1) << " mm ("
+          << UncertaintyTermsText(json::At(f, "terms"), "U_um") << ")";
+    }
+    out << "\n";
+  }
 }
 
 std::string CircularPolarSvg(const CircularEvaluation& ev) { return Chart(ev).Render(); }
@@ -146,17 +185,42 @@ report::HtmlPage CircularPage(const CircularEvaluation& ev) {
   page.Paragraph("Source: " + ev.data.source + "; " + std::to_string(r.points_cw) + " CW and " +
                  std::to_string(r.points_ccw) + " CCW readings.");
   AddConditionsSection(&page, ev.conditions);
-  auto um = [](bool present, double v) { return present ? FormatFixed(v, 2) : std::string("-"); };
+  const auto& cu = ev.uncertainty;
+  const std::optional<double> shape_u = cu ? std::optional<double>(cu->shape_u_um) : std::nullopt;
+  const std::optional<double> f_u =
+      cu && cu->radial ? std::optional<double>(cu->radial->span_u) : std::nullopt;
+  auto um = [](bool present, double v, const std::optional<double>& u) {
+    if (!present) return std::string("-");
+    return FormatFixed(v, 2) + (u ? " ± " + FormatFixed(*u, 2) : std::string());
+  };
   page.Table(
-      {"figure", "value µm", "about"},
-      {{"G (CW)", um(r.has_cw, r.G_cw_um), "least-squares centre of the CW path"},
-       {"G (CCW)", um(r.has_ccw, r.G_ccw_um), "least-squares centre of the CCW path"},
-       {"G(b)", um(both, r.G_b_um), "least-squares centre of both paths"},
-       {"H", um(both, r.H_um), "least-squares centre of both paths"},
-       {"F max", FormatFixed(r.F_max_um, 2), "nominal centre and radius"},
-       {"F min", FormatFixed(r.F_min_um, 2), "nominal centre and radius"},
+      {"figure", cu ? "value µm (± U, k = 2)" : "value µm", "about"},
+      {{"G (CW)", um(r.has_cw, r.G_cw_um, shape_u), "least-squares centre of the CW path"},
+       {"G (CCW)", um(r.has_ccw, r.G_ccw_um, shape_u), "least-squares centre of the CCW path"},
+       {"G(b)", um(both, r.G_b_um, shape_u), "least-squares centre of both paths"},
+       {"H", um(both, r.H_um, shape_u), "least-squares centre of both paths"},
+       {"F max", um(true, r.F_max_um, f_u), "nominal centre and radius"},
+       {"F min", um(true, r.F_min_um, f_u), "nominal centre and radius"},
        {"centre offset x", FormatFixed(r.centre_offset_x_um, 2), "from the nominal centre"},
        {"centre offset y", FormatFixed(r.centre_offset_y_um, 2), "from the nominal centre"}});
+  if (cu) {
+    std::vector<std::vector<std::string>> rows;
+    for (const auto& t : cu->shape_terms) {
+      rows.push_back({"G, G(b), H", t.name, FormatFixed(t.u, 2), t.basis});
+    }
+    rows.push_back({"G, G(b), H", "U", FormatFixed(cu->shape_u_um, 2), "root sum of squares"});
+    if (cu->radial) {
+      for (const auto& t : cu->radial->terms) {
+        rows.push_back({"F", t.name, FormatFixed(t.u, 2), t.basis});
+      }
+      rows.push_back({"F", "U", FormatFixed(cu->radial->span_u, 2), "root sum of squares"});
+    }
+    page.Paragraph(
+        "Measurement uncertainty (k = 2): a simplified budget after ISO/TR 230-9 (ISO 230-4's "
+        "own annex was not available; docs/metrology.md). Errors common to every reading "
+        "cancel in G, G(b) and H; F against the nominal radius carries them all.");
+    page.Table({"figures", "term", "U, µm", "basis"}, rows);
+  }
   page.Figure(
       CircularPolarSvg(ev),
       "Both paths about their common least-squares centre, the deviation magnified "

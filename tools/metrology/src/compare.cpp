@@ -237,10 +237,20 @@ void CompareCircular(const JsonValue& b, const JsonValue& a, ComparedResult* r) 
       {"H", "circular hysteresis"},
       {"F_max", "largest radial deviation from the nominal circle"},
       {"F_min", "smallest radial deviation from the nominal circle"}};
+  // Each figure's U (evaluate circular's `uncertainty`: shape_U_um for G and H, F_U_um for F).
+  auto u_of = [](const JsonValue& result, const std::string& key) -> std::optional<double> {
+    const JsonValue* u = result.get("uncertainty");
+    if (u == nullptr || u->is_null()) return std::nullopt;
+    return Number(u->get(key.rfind("F_", 0) == 0 ? "F_U_um" : "shape_U_um"));
+  };
   for (const auto& [key, symbol] : figures) {
     const auto vb = Number(b.get(key));
     const auto va = Number(a.get(key));
-    if (vb && va) t.values.push_back(Value(symbol, meaning.at(symbol), *vb, *va));
+    if (!vb || !va) continue;
+    ComparedValue v = Value(symbol, meaning.at(symbol), *vb, *va);
+    v.u_before = u_of(b, key);
+    v.u_after = u_of(a, key);
+    t.values.push_back(v);
   }
   r->tables.push_back(t);
   ComparedPolar polar;

@@ -131,6 +131,25 @@ JsonValue DirectionJson(const std::optional<DirectionStats>& s) {
 
 JsonValue OptionalJson(const std::optional<double>& v) { return v ? JsonValue(*v) : JsonValue(); }
 
+std::string Cell(const JsonValue& v, int decimals) {
+  return v.is_null() ? std::string("-") : FormatFixed(v.number, decimals);
+}
+
+std::string Opt(const std::optional<double>& v, int decimals) {
+  return v ? FormatFixed(*v, decimals) : std::string("-");
+}
+
+}  // namespace
+
+std::string UncertaintyTermsText(const JsonValue& terms, const char* u_key) {
+  std::string text;
+  for (const JsonValue& t : terms.array) {
+    if (!text.empty()) text += ", ";
+    text += json::Text(t, "name") + " " + FormatFixed(json::Number(t, u_key), 2);
+  }
+  return text;
+}
+
 JsonValue UncertaintyJson(const std::optional<PositioningUncertainty>& u) {
   if (!u) return JsonValue();
   JsonValue j = JsonValue::Object();
@@ -150,16 +169,6 @@ JsonValue UncertaintyJson(const std::optional<PositioningUncertainty>& u) {
   j.Set("terms", std::move(terms));
   return j;
 }
-
-std::string Cell(const JsonValue& v, int decimals) {
-  return v.is_null() ? std::string("-") : FormatFixed(v.number, decimals);
-}
-
-std::string Opt(const std::optional<double>& v, int decimals) {
-  return v ? FormatFixed(*v, decimals) : std::string("-");
-}
-
-}  // namespace
 
 std::string DescribeLocation(const PositioningResult& r, const Extreme& e) {
   std::string s = "j=" + std::to_string(e.position + 1);
@@ -208,12 +217,7 @@ void WritePositioningText(std::ostream& out, const JsonValue& r) {
     out << "  U (k = 2) of E, A, M over " << FormatFixed(json::Number(budget, keys.span), 1) << " "
         << tu << ": " << FormatFixed(json::Number(budget, keys.span_u), 2) << ", of B "
         << FormatFixed(json::Number(budget, keys.local_u), 2) << " (simplified budget:";
-    const char* sep = " ";
-    for (const JsonValue& t : json::At(budget, "terms").array) {
-      out << sep << json::Text(t, "name") << " " << FormatFixed(json::Number(t, keys.term_u), 2);
-      sep = ", ";
-    }
-    out << ")\n";
+    out << " " << UncertaintyTermsText(json::At(budget, "terms"), keys.term_u) << ")\n";
   }
   const std::string ks = standard == StandardName(Standard::kGost27843) ? "3S" : "2s";
   out << "  per position:\n";

@@ -4,10 +4,12 @@
 // as SVG and in an HTML page.
 #pragma once
 
+#include <optional>
 #include <ostream>
 #include <string>
 
 #include "volcomp/metrology/circular.hpp"
+#include "volcomp/metrology/circular_uncertainty.hpp"
 #include "volcomp/metrology/test_conditions.hpp"
 #include "volcomp/report/html_page.hpp"
 #include "volcomp/tools/json_value.hpp"
@@ -18,6 +20,7 @@ struct CircularEvaluation {
   CircularData data;
   CircularResult result;
   TestConditions conditions;
+  std::optional<CircularUncertainty> uncertainty;  // with the reading's U stated
 };
 
 /// The figures of one test: points_cw, points_ccw, G_cw_um, G_ccw_um, G_b_um, H_um, H_angle_deg
@@ -26,7 +29,9 @@ struct CircularEvaluation {
 /// --ballbar, the demo's summary).
 tools::JsonValue CircularFiguresJson(const CircularResult& r);
 /// CircularFiguresJson()'s keys, the context (source, conditions, radius, warnings) and the
-/// readings (paths {cw, ccw} {angle_deg, deviation_um}).
+/// readings (paths {cw, ccw} {angle_deg, deviation_um}), and `uncertainty` (null, or k,
+/// shape_U_um for G, G(b), H with shape_terms[] {name, U_um, basis}, F_U_um and the radial
+/// budget `F` over the nominal radius, both null when the radius is not known).
 tools::JsonValue CircularJson(const CircularEvaluation& ev);
 /// The figures as text, from CircularJson()'s document.
 void WriteCircularText(std::ostream& out, const tools::JsonValue& ev);

@@ -4,6 +4,7 @@
 // position, reversal B_j and repeatability R_j per position).
 #pragma once
 
+#include <optional>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -17,6 +18,11 @@ namespace volcomp::metrology {
 
 /// One JSON object with the standard, the per-position values and every overall parameter.
 tools::JsonValue PositioningJson(const PositioningResult& result);
+/// A budget as JSON: k, the span and its U, the local U and terms[] (keys naming their unit,
+/// UncertaintyKeys()); null for none.
+tools::JsonValue UncertaintyJson(const std::optional<PositioningUncertainty>& u);
+/// A budget's terms[] as text: "instrument 0.60, thermometer 1.38, ..." (U in key `u_key`).
+std::string UncertaintyTermsText(const tools::JsonValue& terms, const char* u_key);
 
 /// The parameter list of the standard with locations, then the per-position table, from
 /// PositioningJson()'s object.
