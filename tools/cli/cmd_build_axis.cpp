@@ -154,7 +154,8 @@ Expected<Output> RunBuildAxis(Args& args, Context& ctx) {
   VOLCOMP_TRY_ASSIGN(const std::optional<BoardFileCheck> board, ParseBoardFileCheck(args));
   VOLCOMP_TRY_ASSIGN(const datasets::PositioningReadOptions read,
                      ParsePositioningReadOptions(args));
-  const metrology::PositioningUncertaintyInputs uncertainty = ReadPositioningUncertainty(args);
+  VOLCOMP_TRY_ASSIGN(const metrology::PositioningUncertaintyInputs uncertainty,
+                     ReadPositioningUncertainty(args, ctx));
   VOLCOMP_TRY(args.Finish());
 
   Output output;

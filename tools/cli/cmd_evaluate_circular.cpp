@@ -26,7 +26,8 @@ Expected<Output> RunEvaluateCircular(Args& args, Context& ctx) {
   const auto report_dir = args.Value("--report");
   const auto svg = args.Value("--svg");
   const auto radius = args.Number("--radius");
-  const m::CircularUncertaintyInputs uncertainty = ReadCircularUncertainty(args);
+  VOLCOMP_TRY_ASSIGN(const m::CircularUncertaintyInputs uncertainty,
+                     ReadCircularUncertainty(args, ctx));
   const auto files = args.Positionals();
   VOLCOMP_TRY(args.Finish());
   if (files.size() != 1) return UsageFailure("give exactly one data file (or - for stdin)");

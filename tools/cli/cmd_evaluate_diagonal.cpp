@@ -24,7 +24,8 @@ Expected<Output> RunEvaluateDiagonal(Args& args, Context& ctx) {
   const auto report_dir = args.Value("--report");
   m::GroupingOptions grouping;
   grouping.allow_few_approaches = args.Flag("--allow-few-runs");
-  const m::PositioningUncertaintyInputs uncertainty = ReadLengthUncertainty(args);
+  VOLCOMP_TRY_ASSIGN(const m::PositioningUncertaintyInputs uncertainty,
+                     ReadLengthUncertainty(args, ctx));
   const auto files = args.Positionals();
   VOLCOMP_TRY(args.Finish());
   if (files.size() != 1) return UsageFailure("give exactly one data file (or - for stdin)");

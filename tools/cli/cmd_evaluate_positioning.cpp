@@ -30,7 +30,7 @@ Expected<Output> RunEvaluatePositioning(Args& args, Context& ctx) {
   m::PositioningTestOptions o;
   o.axis_length_mm = args.Number("--axis-length-mm");
   o.grouping.allow_few_approaches = args.Flag("--allow-few-runs");
-  o.uncertainty = ReadPositioningUncertainty(args);
+  VOLCOMP_TRY_ASSIGN(o.uncertainty, ReadPositioningUncertainty(args, ctx));
   VOLCOMP_TRY_ASSIGN(const datasets::PositioningReadOptions read,
                      ParsePositioningReadOptions(args));
   const auto files = args.Positionals();

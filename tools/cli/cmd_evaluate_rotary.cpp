@@ -12,6 +12,7 @@
 #include "file_arguments.hpp"
 #include "metrology_report.hpp"
 #include "option_groups.hpp"
+#include "uncertainty_options.hpp"
 #include "volcomp/metrology/report_files.hpp"
 #include "volcomp/metrology/rotary_data.hpp"
 #include "volcomp/metrology/rotary_eval.hpp"
@@ -65,6 +66,8 @@ Expected<Output> RunEvaluateRotary(Args& args, Context& ctx) {
   o.uncertainty.device_range_um = args.Number("--instrument-range-um");
   const auto setup_u = args.Number("--setup-u-um");
   o.uncertainty.drift_range_um = args.Number("--drift-range-um");
+  std::string drift_source;  // E_VE's file: said in the options' help, the value is in the budget
+  VOLCOMP_TRY(ReadDriftTest(args, ctx, &o.uncertainty.drift_range_um, &drift_source));
   o.uncertainty.literal_f6 = args.Flag("--f6-as-printed");
   const auto reversal_file = args.Value("--reversal");
   const std::string reversal_channel = args.Value("--reversal-channel").value_or("");
@@ -164,6 +167,7 @@ const Command& EvaluateRotaryCommand() {
               "setup_u_um)"},
              {"--drift-range-um", nullptr, "E", "um", nullptr,
               "range E_VE of a drift test: U_EVE = 0.6 E (F.3; or preamble drift_range_um)"},
+             DriftTestOption(),
              {"--f6-as-printed", nullptr, nullptr, nullptr, nullptr,
               "single-plot value U by F.6 as printed instead of 1.4 U_single"},
              {"--reversal", nullptr, "FILE2", nullptr, nullptr,

@@ -1,6 +1,12 @@
 // Uncertainty options of the positioning and diagonal tests.
 #include "uncertainty_options.hpp"
 
+#include <string>
+
+#include "file_arguments.hpp"
+#include "volcomp/metrology/drift_test.hpp"
+#include "volcomp/report/format.hpp"
+
 namespace volcomp::cli {
 
 const Options& LengthUncertaintyOptions() {
@@ -22,8 +28,37 @@ const Options& LengthUncertaintyOptions() {
        "lateral beam walk-off over the measured length (cosine error)"},
       {"--drift-range-um", nullptr, "E", "um", nullptr,
        "range E_VE of a drift test (or preamble drift_range_um)"},
+      DriftTestOption(),
   };
   return kOptions;
+}
+
+args::OptionSpec DriftTestOption() {
+  return {"--drift-test",
+          nullptr,
+          "FILE",
+          nullptr,
+          nullptr,
+          "E_VE from a drift-test file (evaluate thermal's layout): its largest range of one "
+          "point's readings; not with --drift-range-um"};
+}
+
+Expected<void> ReadDriftTest(args::Args& args,
+                             Context& ctx,
+                             std::optional<double>* range_um,
+                             std::string* source) {
+  const auto path = args.Value("--drift-test");
+  if (!path) return {};
+  if (*range_um) return UsageFailure("give --drift-range-um or --drift-test, not both");
+  VOLCOMP_TRY_ASSIGN(const tools::CsvTable table, ReadCsvArgument(*path, ctx));
+  VOLCOMP_TRY_ASSIGN(const metrology::DriftRecord record, metrology::ReadDriftCsv(table));
+  const auto e = metrology::LargestDriftRange(metrology::EvaluateDrift(record));
+  if (!e) return Fail(Error::kInputInvalid, *path + ": no point is read twice");
+  *range_um = e->range_um;
+  *source = "drift test " + *path + ": " + std::string(1, e->axis) + " at " +
+            report::FormatNumber(e->position_mm) + " mm over " +
+            report::FormatNumber(e->duration_s / 3600.0) + " h";
+  return {};
 }
 
 const Options& AngleUncertaintyOptions() {
@@ -40,7 +75,8 @@ const Options& AngleUncertaintyOptions() {
   return kOptions;
 }
 
-metrology::PositioningUncertaintyInputs ReadLengthUncertainty(args::Args& args) {
+Expected<metrology::PositioningUncertaintyInputs> ReadLengthUncertainty(args::Args& args,
+                                                                        Context& ctx) {
   metrology::PositioningUncertaintyInputs in;
   in.instrument_u_um = args.Number("--instrument-u-um");
   in.instrument_ppm = args.Number("--instrument-ppm");
@@ -50,6 +86,7 @@ metrology::PositioningUncertaintyInputs ReadLengthUncertainty(args::Args& args) 
   if (const auto v = args.Number("--expansion-range")) in.expansion_range_um_per_m_K = *v;
   if (const auto v = args.Number("--misalignment-mm")) in.misalignment_mm = *v;
   in.drift_range_um = args.Number("--drift-range-um");
+  VOLCOMP_TRY(ReadDriftTest(args, ctx, &in.drift_range_um, &in.drift_source));
   return in;
 }
 
@@ -62,15 +99,17 @@ const Options& CircularUncertaintyOptions() {
   return kOptions;
 }
 
-metrology::CircularUncertaintyInputs ReadCircularUncertainty(args::Args& args) {
+Expected<metrology::CircularUncertaintyInputs> ReadCircularUncertainty(args::Args& args,
+                                                                       Context& ctx) {
   metrology::CircularUncertaintyInputs in;
-  in.reading = ReadLengthUncertainty(args);
+  VOLCOMP_TRY_ASSIGN(in.reading, ReadLengthUncertainty(args, ctx));
   in.calibrator_u_um = args.Number("--calibrator-u-um");
   return in;
 }
 
-metrology::PositioningUncertaintyInputs ReadPositioningUncertainty(args::Args& args) {
-  metrology::PositioningUncertaintyInputs in = ReadLengthUncertainty(args);
+Expected<metrology::PositioningUncertaintyInputs> ReadPositioningUncertainty(args::Args& args,
+                                                                             Context& ctx) {
+  VOLCOMP_TRY_ASSIGN(metrology::PositioningUncertaintyInputs in, ReadLengthUncertainty(args, ctx));
   in.instrument_u_arcsec = args.Number("--instrument-u-arcsec");
   in.instrument_accuracy_arcsec = args.Number("--instrument-accuracy-arcsec");
   in.drift_range_arcsec = args.Number("--drift-range-arcsec");

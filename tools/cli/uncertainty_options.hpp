@@ -4,6 +4,10 @@
 // preamble or the budget's stated default.
 #pragma once
 
+#include <optional>
+#include <string>
+
+#include "command.hpp"
 #include "option_groups.hpp"
 #include "volcomp/args/args.hpp"
 #include "volcomp/metrology/circular_uncertainty.hpp"
@@ -15,7 +19,18 @@ const Options& LengthUncertaintyOptions();
 
 /// The options of LengthUncertaintyOptions() that were given (negative values are left to the
 /// budget, which refuses them naming the rule).
-metrology::PositioningUncertaintyInputs ReadLengthUncertainty(args::Args& args);
+Expected<metrology::PositioningUncertaintyInputs> ReadLengthUncertainty(args::Args& args,
+                                                                        Context& ctx);
+
+/// `--drift-test FILE` (declared in LengthUncertaintyOptions(); other commands add it):
+/// E_VE = the drift test's largest point range (metrology LargestDriftRange) into `range_um`,
+/// and where it comes from into `source`. Given with a value already in `range_um` (from
+/// --drift-range-um): a usage failure; a bad file: its failure naming file and line.
+args::OptionSpec DriftTestOption();
+Expected<void> ReadDriftTest(args::Args& args,
+                             Context& ctx,
+                             std::optional<double>* range_um,
+                             std::string* source);
 
 /// A rotary axis's angle reference and drift (`evaluate positioning`, `build axis`).
 const Options& AngleUncertaintyOptions();
@@ -23,9 +38,11 @@ const Options& AngleUncertaintyOptions();
 /// A circular test's reading, calibrator, temperature and drift (`evaluate circular`): the length
 /// options (the budget refuses --instrument-ppm and --misalignment-mm) and --calibrator-u-um.
 const Options& CircularUncertaintyOptions();
-metrology::CircularUncertaintyInputs ReadCircularUncertainty(args::Args& args);
+Expected<metrology::CircularUncertaintyInputs> ReadCircularUncertainty(args::Args& args,
+                                                                       Context& ctx);
 
 /// ReadLengthUncertainty and the options of AngleUncertaintyOptions() that were given.
-metrology::PositioningUncertaintyInputs ReadPositioningUncertainty(args::Args& args);
+Expected<metrology::PositioningUncertaintyInputs> ReadPositioningUncertainty(args::Args& args,
+                                                                             Context& ctx);
 
 }  // namespace volcomp::cli

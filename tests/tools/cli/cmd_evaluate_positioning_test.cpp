@@ -3,7 +3,11 @@
 // their exit code and message.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
+#include <map>
+#include <sstream>
 #include <string>
 #include <utility>
 
@@ -184,6 +188,67 @@ TEST(MetrologyCli, EvaluatePositioningGivesARotaryAxisItsAngularUncertainty) {
   EXPECT_EQ(r.code, 0) << r.err;
   EXPECT_NE(r.err.find("do not apply to a rotary axis"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("state the angle reference"), std::string::npos) << r.err;
+}
+
+// The largest range of one point's readings in a drift-test file, read here line by line (no
+// code shared with the drift-test reader): columns time_s, axis, position_mm, deviation_um.
+double LargestPointRange(const std::string& path) {
+  std::map<std::string, std::pair<double, double>> span;  // "axis@position" → (min, max)
+  std::istringstream lines(ReadText(path));
+  std::string line;
+  bool header = true;
+  while (std::getline(lines, line)) {
+    if (line.empty() || line[0] == '#') continue;
+    if (header) {
+      header = false;
+      continue;
+    }
+    std::istringstream cells(line);
+    std::string time, axis, position, deviation;
+    std::getline(cells, time, ',');
+    std::getline(cells, axis, ',');
+    std::getline(cells, position, ',');
+    std::getline(cells, deviation, ',');
+    const double v = std::stod(deviation);
+    auto [it, fresh] = span.emplace(axis + "@" + position, std::make_pair(v, v));
+    it->second.first = std::min(it->second.first, v);
+    it->second.second = std::max(it->second.second, v);
+  }
+  double largest = 0.0;
+  for (const auto& [point, mm] : span) largest = std::max(largest, mm.second - mm.first);
+  return largest;
+}
+
+// `--drift-test FILE` gives E_VE: the largest range of one point's readings; with a 0.5 ppm laser
+// on the GOST example's 1500.41 mm (material temperature not stated): instrument 0.9004,
+// thermometer 2.0706, environment 0.6·E_VE.
+TEST(MetrologyCli, EvaluatePositioningTakesEveFromADriftTest) {
+  const std::string drift = SamplePath("metrology/thermal_drift.csv");
+  const double e_ve = LargestPointRange(drift);
+  ASSERT_GT(e_ve, 1.0);
+  auto r =
+      RunCli({"evaluate", "positioning", SamplePath("metrology/gost27843_example_long.csv"),
+              "--standard", "iso", "--instrument-ppm", "0.5", "--drift-test", drift, "--json"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto doc = tools::ParseJson(r.out, "stdout");
+  ASSERT_TRUE(doc.ok()) << r.out;
+  const tools::JsonValue& u = *doc->get("evaluations")->array.at(0).get("uncertainty");
+  const double instrument = 0.6 * 2 * 0.5 * 1.50041, thermometer = 0.6 * 11.5 * 1.50041 * 0.2;
+  EXPECT_NEAR(u.get("local_U_um")->number, 0.6 * e_ve, 1e-9);  // no calibration U stated
+  EXPECT_NEAR(u.get("length_U_um")->number,
+              std::sqrt(instrument * instrument + thermometer * thermometer + 0.36 * e_ve * e_ve),
+              1e-3);
+  EXPECT_NE(u.get("terms")->array.back().get("basis")->string.find("drift test " + drift + ": X"),
+            std::string::npos);
+  r = RunCli({"evaluate", "positioning", SamplePath("metrology/gost27843_example_long.csv"),
+              "--instrument-ppm", "0.5", "--drift-test", drift, "--drift-range-um", "1"});
+  EXPECT_EQ(r.code, tools::kExitUsage);
+  EXPECT_NE(r.err.find("give --drift-range-um or --drift-test, not both"), std::string::npos);
+  r = RunCli({"evaluate", "positioning", SamplePath("metrology/gost27843_example_long.csv"),
+              "--instrument-ppm", "0.5", "--drift-test",
+              SamplePath("metrology/gost27843_example_long.csv")});
+  EXPECT_EQ(r.code, tools::kExitFailed);
+  EXPECT_NE(r.err.find("gost27843_example_long.csv"), std::string::npos) << r.err;
 }
 
 TEST(MetrologyCli, EvaluatePositioningBadOptionsAndInputs) {

@@ -282,4 +282,16 @@ DriftEvaluation EvaluateDrift(const DriftRecord& record) {
   return ev;
 }
 
+std::optional<EnvironmentalVariation> LargestDriftRange(const DriftEvaluation& ev) {
+  std::optional<EnvironmentalVariation> out;
+  for (const auto& axis : ev.axes) {
+    for (const auto& p : axis.points) {
+      if (p.time_s.size() < 2 || (out && p.range_um <= out->range_um)) continue;
+      out = EnvironmentalVariation{p.range_um, axis.name, p.position_mm,
+                                   p.time_s.back() - p.time_s.front()};
+    }
+  }
+  return out;
+}
+
 }  // namespace volcomp::metrology

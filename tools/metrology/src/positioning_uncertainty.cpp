@@ -111,7 +111,9 @@ Expected<PositioningUncertainty> PositioningU(const PositioningUncertaintyInputs
                      "0.6 × d² / 2L with d = " + N(in.misalignment_mm) + " mm"});
   const double env = kRange * in.drift_range_um.value_or(0.0);
   if (in.drift_range_um) {
-    u.terms.push_back({"environment", env, "0.6 × E_VE " + N(*in.drift_range_um) + " µm"});
+    u.terms.push_back({"environment", env,
+                       "0.6 × E_VE " + N(*in.drift_range_um) + " µm" +
+                           (in.drift_source.empty() ? "" : " (" + in.drift_source + ")")});
   } else {
     u.terms.push_back({"environment", 0.0, "not included: no drift test"});
     u.notes.push_back(

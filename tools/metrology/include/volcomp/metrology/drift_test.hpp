@@ -134,6 +134,20 @@ struct DriftEvaluation {
 /// Evaluates a record ReadDriftCsv() returned (never fails on one).
 DriftEvaluation EvaluateDrift(const DriftRecord& record);
 
+/// The environmental variation error E_VE a measurement-uncertainty budget takes from a drift
+/// test (positioning_uncertainty.hpp, error_motion_uncertainty.hpp): the largest range of one
+/// point's readings (ISO/TR 230-9's E_VE: the range of a fixed position's readings over the
+/// test's duration with the machine at rest; a warm-up test of ISO 230-3 gives a larger,
+/// conservative figure), and which point it is.
+struct EnvironmentalVariation {
+  double range_um = 0;
+  char axis = 'X';
+  double position_mm = 0;
+  double duration_s = 0;  // of that point's readings
+};
+/// nullopt when no point has two readings (ReadDriftCsv() refuses such a file).
+std::optional<EnvironmentalVariation> LargestDriftRange(const DriftEvaluation& ev);
+
 /// Least-squares slope of y over x (0 when x does not vary); the helper of the rate and the
 /// components, public for the tests.
 double LeastSquaresSlope(const std::vector<double>& x, const std::vector<double>& y);

@@ -42,6 +42,7 @@ struct PositioningUncertaintyInputs {
   double expansion_range_um_per_m_K = 2.0;       // R_α, the full plausible range of α
   double misalignment_mm = 0.0;                  // lateral beam walk-off d over the length
   std::optional<double> drift_range_um;          // E_VE of a drift test
+  std::string drift_source;                      // where E_VE comes from, for the basis ("" none)
   // Rotary axes (angles):
   std::optional<double> instrument_u_arcsec;         // calibration U (k = 2) of the reference
   std::optional<double> instrument_accuracy_arcsec;  // its stated accuracy ±a″
