@@ -18,6 +18,23 @@ std::string N(double v) { return report::FormatNumber(v); }
 
 bool Bad(double v) { return !(std::isfinite(v) && v >= 0.0); }
 
+// The budget when its instrument is stated, its notes into `warnings`; otherwise nullopt and a
+// warning saying what to state.
+template <typename Budget>
+Expected<std::optional<PositioningUncertainty>> IfStated(bool stated,
+                                                         const char* what_to_state,
+                                                         Budget budget,
+                                                         std::vector<std::string>* warnings) {
+  if (!stated) {
+    warnings->push_back(std::string("no measurement uncertainty: ") + what_to_state +
+                        " for U at k = 2");
+    return std::optional<PositioningUncertainty>();
+  }
+  VOLCOMP_TRY_ASSIGN(PositioningUncertainty u, budget());
+  for (const auto& n : u.notes) warnings->push_back(n);
+  return std::optional<PositioningUncertainty>(std::move(u));
+}
+
 }  // namespace
 
 Expected<PositioningUncertaintyInputs> CompleteFromPreamble(PositioningUncertaintyInputs in,
@@ -45,16 +62,11 @@ UncertaintyJsonKeys UncertaintyKeys(AxisKind kind) {
 
 Expected<std::optional<PositioningUncertainty>> LengthUncertainty(
     const PositioningUncertaintyInputs& in, double length_mm, std::vector<std::string>* warnings) {
-  if (!in.stated()) {
-    warnings->push_back(
-        "no measurement uncertainty: state the instrument (--instrument-u-um from its "
-        "calibration certificate or --instrument-ppm, or the preamble keys instrument_u_um / "
-        "instrument_ppm) for U at k = 2");
-    return std::optional<PositioningUncertainty>();
-  }
-  VOLCOMP_TRY_ASSIGN(PositioningUncertainty u, PositioningU(in, length_mm));
-  for (const auto& n : u.notes) warnings->push_back(n);
-  return std::optional<PositioningUncertainty>(std::move(u));
+  return IfStated(
+      in.stated(),
+      "state the instrument (--instrument-u-um from its calibration certificate or "
+      "--instrument-ppm, or the preamble keys instrument_u_um / instrument_ppm)",
+      [&] { return PositioningU(in, length_mm); }, warnings);
 }
 
 Expected<PositioningUncertainty> PositioningU(const PositioningUncertaintyInputs& in,
@@ -129,16 +141,12 @@ Expected<PositioningUncertainty> PositioningU(const PositioningUncertaintyInputs
 
 Expected<std::optional<PositioningUncertainty>> AngleUncertainty(
     const PositioningUncertaintyInputs& in, double span_deg, std::vector<std::string>* warnings) {
-  if (!in.angular_stated()) {
-    warnings->push_back(
-        "no measurement uncertainty: state the angle reference (--instrument-u-arcsec from its "
-        "calibration certificate or --instrument-accuracy-arcsec, or the preamble keys "
-        "instrument_u_arcsec / instrument_accuracy_arcsec) for U at k = 2");
-    return std::optional<PositioningUncertainty>();
-  }
-  VOLCOMP_TRY_ASSIGN(PositioningUncertainty u, AngularPositioningU(in, span_deg));
-  for (const auto& n : u.notes) warnings->push_back(n);
-  return std::optional<PositioningUncertainty>(std::move(u));
+  return IfStated(
+      in.angular_stated(),
+      "state the angle reference (--instrument-u-arcsec from its calibration "
+      "certificate or --instrument-accuracy-arcsec, or the preamble keys "
+      "instrument_u_arcsec / instrument_accuracy_arcsec)",
+      [&] { return AngularPositioningU(in, span_deg); }, warnings);
 }
 
 Expected<PositioningUncertainty> AngularPositioningU(const PositioningUncertaintyInputs& in,
