@@ -86,7 +86,7 @@ JsonValue ReproductionJson(const std::vector<std::string>& seeds,
       .Set("tables", std::move(tables))
       .Set("not_reproduced", std::move(left_out))
       .Set("summary", CountsJson(r::Count(all)));
-  j.Set("differences_only", differences_only);
+  j.Set("mismatches_only", differences_only);
   return j;
 }
 
@@ -151,7 +151,7 @@ void TableText(const JsonValue& t, std::ostream& out) {
 }
 
 void ReproduceText(const JsonValue& data, std::ostream& out) {
-  if (data.get("differences_only")->boolean) {
+  if (data.get("mismatches_only")->boolean) {
     out << "(only the values that differ from the print beyond tolerance are listed)\n\n";
   }
   for (const JsonValue& t : data.get("tables")->array) TableText(t, out);

@@ -101,11 +101,14 @@ Expected<SeedReproduction> Reproduce(const std::string& seed, const std::string&
       // Not a selection error: kInvalidArgument stays reserved for unknown ids.
       return Fail(Error::kInputInvalid, std::string("seed ") + s.id + ": " + one.error().message);
     }
+    // The seed id is the producer's, whatever its entries say (`volcomp reproduce` groups by it).
     for (Table& table : one->tables) {
+      table.seed = s.id;
       known_tables.push_back(std::string(s.id) + ":" + table.id);
       if (table_id.empty() || table.id == table_id) result.tables.push_back(std::move(table));
     }
     for (NotReproducible& left : one->not_reproduced) {
+      left.seed = s.id;
       known_tables.push_back(std::string(s.id) + ":" + left.id);
       if (table_id.empty() || left.id == table_id) {
         result.not_reproduced.push_back(std::move(left));
