@@ -31,6 +31,7 @@ const std::vector<const Command*>& Commands() {
       &ProgramCircularCommand(),
       &ReportCompareCommand(),
       &ReportCertificateCommand(),
+      &ReproduceCommand(),
       &BuildModelCommand(),
       &BuildTrackerCommand(),
       &BuildKmtppCommand(),

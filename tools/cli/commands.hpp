@@ -36,6 +36,7 @@ const Command& ProgramDiagonalCommand();
 const Command& ProgramCircularCommand();
 const Command& ReportCompareCommand();
 const Command& ReportCertificateCommand();
+const Command& ReproduceCommand();
 const Command& BuildModelCommand();
 const Command& BuildTrackerCommand();
 const Command& BuildKmtppCommand();

@@ -12,9 +12,11 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <vector>
 
 #include "test_support.hpp"
 #include "volcomp/metrology/positioning_csv.hpp"
+#include "volcomp/reproduce/gost27843_printed.hpp"
 
 namespace volcomp::metrology {
 namespace {
@@ -38,33 +40,50 @@ PositioningResult Evaluate(const std::string& relative, SigmaMethod sigma = Sigm
 
 const char* const kFixture = "tests/tools/metrology/data/gost27843_example_reconstructed.csv";
 
-// Printed per-position table. Corrected entries (the printed value is inconsistent with its own
-// readings or with the other printed columns) carry the corrected value here and are listed in
-// kErrata.
+// Printed per-position table: the printed values as typed once in the reproduce library
+// (volcomp/reproduce/gost27843_printed.hpp). Entries that are inconsistent with their own readings
+// or with the other printed columns are replaced by the corrected value below (the reasons are in
+// ErrataInThePrintedTableAreExplainedByTheReadings and docs/metrology.md).
 struct Printed {
   double target, mean_up, mean_down, s_up, s_down, upper_up, lower_up, upper_down, lower_down, b, r;
 };
-const Printed kTable[11] = {
-    {0.00, -1.92, 2.12, 0.746, 0.832, 0.32, -4.16, 4.61, -0.37, -4.04, 8.77},
-    {150.71, 0.92, 5.40, 0.698, 0.495, 3.01, -1.17, 6.89, 3.92, -4.48, 8.06},
-    {300.85, -4.18, -1.34, 1.339, 0.760, -0.17 /* printed 0,17 */, -8.19, 0.94, -3.62, -2.84, 9.13},
-    {450.33, 1.46, 2.64, 0.879, 0.619, 4.10, -1.18, 4.50, 0.78, -1.18, 5.68},
-    {601.11, -7.32, -8.52, 0.876, 0.661, -4.69, -9.95, -6.54, -10.50, 1.20, 5.81},
-    {750.31, -3.80, -4.60, 1.054, 1.296 /* printed 1,996 */, -0.64, -6.96, -0.71, -8.49, 0.80,
-     7.85},
-    {901.55, -4.86, -4.72, 1.226, 1.028, -1.18, -8.54, -1.64, -7.80, -0.14,
-     7.36 /* printed 6,90 */},
-    {1050.02, -3.74, -4.24, 1.488, 1.345, 0.72, -8.20, -0.20, -8.27, 0.50, 8.99},
-    {1201.90, -5.68, -4.20, 1.813, 1.632, -0.24, -11.12, 0.70, -9.10, -1.48, 11.82},
-    {1351.56, -4.84, -3.46, 1.973, 1.649, 1.08, -10.76, 1.49 /* printed 1,54 */, -8.41, -1.38,
-     12.25 /* printed 12,26 */},
-    {1500.41, -5.32, -1.54, 1.851, 1.385 /* printed 1,884 */, 0.23, -10.87, 2.61, -5.69,
-     -3.78 /* printed -3,79 */, 13.49},
+
+struct Correction {
+  int j;  // position, 1-based
+  double Printed::*field;
+  double printed;    // as printed, to check the correction applies to what is printed
+  double corrected;  // consistent with the readings and the other printed columns
 };
+const Correction kCorrections[] = {
+    {3, &Printed::upper_up, 0.17, -0.17},  // minus sign lost
+    {6, &Printed::s_down, 1.996, 1.296},    {7, &Printed::r, 6.90, 7.36},
+    {10, &Printed::upper_down, 1.54, 1.49}, {10, &Printed::r, 12.26, 12.25},
+    {11, &Printed::s_down, 1.884, 1.385},   {11, &Printed::b, -3.79, -3.78},
+};
+
+std::vector<Printed> PrintedTable() {
+  using reproduce::gost27843::PrintedValue;
+  std::vector<Printed> table;
+  for (const auto& p : reproduce::gost27843::PrintedTable()) {
+    table.push_back({p.target_mm, PrintedValue(p.up.mean), PrintedValue(p.down.mean),
+                     PrintedValue(p.up.s), PrintedValue(p.down.s), PrintedValue(p.up.upper),
+                     PrintedValue(p.up.lower), PrintedValue(p.down.upper),
+                     PrintedValue(p.down.lower), PrintedValue(p.reversal),
+                     PrintedValue(p.repeatability)});
+  }
+  for (const Correction& c : kCorrections) {
+    double& value = table.at(static_cast<std::size_t>(c.j - 1)).*c.field;
+    EXPECT_DOUBLE_EQ(value, c.printed) << "position " << c.j;
+    value = c.corrected;
+  }
+  return table;
+}
 
 TEST(MetrologyGost27843Example, PerPositionMeansAndDeviationsMatchThePrintedTable) {
   const PositioningResult r = Evaluate(kFixture);
   ASSERT_EQ(r.positions.size(), 11u);
+  const std::vector<Printed> kTable = PrintedTable();
+  ASSERT_EQ(kTable.size(), 11u);
   for (std::size_t j = 0; j < 11; ++j) {
     SCOPED_TRACE("position " + std::to_string(j + 1));
     const PositionStats& p = r.positions[j];

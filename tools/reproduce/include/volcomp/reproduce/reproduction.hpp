@@ -6,7 +6,7 @@
 // a reproduction failure; an unexplained difference beyond the tolerance is a mismatch.
 //
 // Seeds (ids as `--seed` takes them):
-//   gost27843     GOST 27843-88 (ISO 230-2) worked example, seed 002
+//   gost27843     GOST 27843-88 (ISO 230-2) worked example, seed 000
 //   iso230-6      ISO 230-6 diagonal displacement example, seed 003
 //   iso230-7      GOST R ISO 230-7-2021 worked figures, seed 004
 //   dissertation  Pimushkin 2023 (seed 001): Tables 2.x, 3.7–3.15, 4.1–4.10, Appendices Б/В/Г
@@ -44,6 +44,9 @@ enum class CellVerdict {
 
 CellVerdict Judge(const Cell& cell);
 
+/// "reproduced", "misprint" or "mismatch" (the JSON and text of `volcomp reproduce`).
+const char* VerdictName(CellVerdict verdict);
+
 /// One printed table (or a worked example's set of intermediate values).
 struct Table {
   std::string seed;    // one of the seed ids above
@@ -68,6 +71,16 @@ struct SeedReproduction {
   std::vector<NotReproducible> not_reproduced;
 };
 
+/// What a reproduction amounts to: its cells by verdict and its tables.
+struct Counts {
+  int reproduced = 0;
+  int misprints = 0;
+  int mismatches = 0;
+  int tables = 0;            // tables recomputed
+  int not_reproducible = 0;  // printed tables listed as not reproducible
+};
+Counts Count(const SeedReproduction& reproduction);
+
 /// Each seed's producer (one source file or a few per seed).
 Expected<SeedReproduction> ReproduceGost27843();
 Expected<SeedReproduction> ReproduceIso2306();
@@ -79,7 +92,8 @@ const std::vector<std::string>& SeedIds();
 
 /// All seeds (seed empty) or one, optionally only table `table_id` (empty: all its tables; the
 /// not-reproduced list is then filtered the same way). Unknown seed or table id:
-/// Error::kInvalidArgument naming it and listing the known ones.
+/// Error::kInvalidArgument naming it and listing the known ones. A producer's failure is
+/// kInputInvalid, "seed ID: " and its message.
 Expected<SeedReproduction> Reproduce(const std::string& seed, const std::string& table_id);
 
 }  // namespace volcomp::reproduce
