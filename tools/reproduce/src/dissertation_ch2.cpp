@@ -1,0 +1,11 @@
+// TODO
+#include "dissertation_tables.hpp"
+
+namespace volcomp::reproduce::dissertation {
+
+Expected<void> AddChapter2(SeedReproduction& out) {
+  (void)out;
+  return {};
+}
+
+}  // namespace volcomp::reproduce::dissertation
