@@ -60,7 +60,8 @@ TEST(reproduce_dissertation, TableIdsAreUniqueAndPrintedNumbering) {
   std::set<std::string> ids;
   for (const Table& t : Dissertation().tables) EXPECT_TRUE(ids.insert(t.id).second) << t.id;
   for (const char* id :
-       {"3.5", "3.6", "3.7", "3.8", "3.9", "3.10", "3.11", "3.12", "3.13", "3.14", "3.15", "А"})
+       {"3.5",  "3.6", "3.7", "3.8", "3.9", "3.10", "3.11", "3.12", "3.13", "3.14", "3.15", "А",
+        "§4.3", "4.1", "4.2", "4.3", "4.4", "4.5",  "4.6",  "4.7",  "4.8",  "4.9",  "4.10"})
     EXPECT_EQ(ids.count(id), 1u) << id;
 }
 
@@ -92,6 +93,66 @@ TEST(reproduce_dissertation, Chapter3ErrataAreFlaggedMisprints) {
   }
 }
 
+// Chapter 4 digest (dissertation-ch4.md) §5 errata and its recomputed values (§2).
+TEST(reproduce_dissertation, Chapter4ErrataAreFlaggedMisprints) {
+  struct Expect {
+    const char* table;
+    const char* row;
+    const char* column;
+    double correct;
+    double tolerance;
+  };
+  const Expect errata[] = {
+      {"§4.3", "step 1", "S_x", 75.042131, 1e-5},     // item 8: shows the step-2 S
+      {"4.1", "l = 0.1", "q_x", 49.820, 5e-4},        // item 13: rows swapped
+      {"4.1", "l = 0.015", "q_z", 49.906, 5e-4},      // item 13
+      {"4.2", "K = 1.5", "q_y", 49.813, 5e-4},        // item 13: repeats the swapped row
+      {"4.4", "l = 0.015", "m", 175, 0},              // item 15: stop rule violated
+      {"4.4", "l = 0.015", "q_tr_z", 107.451, 5e-4},  // item 15
+      {"4.9", "110/170/185", "q_z", 185.887, 5e-4},   // item 19 (reading A)
+      {"4.9", "130/140/106", "q_x", 129.545, 5e-4},   // item 19
+  };
+  for (const Expect& e : errata) {
+    SCOPED_TRACE(std::string(e.table) + " " + e.row + " " + e.column);
+    const Cell* c = FindCell(e.table, e.row, e.column);
+    ASSERT_NE(c, nullptr);
+    EXPECT_EQ(c->column, e.column);
+    EXPECT_EQ(Judge(*c), CellVerdict::kMisprint);
+    EXPECT_NEAR(c->computed, e.correct, e.tolerance);
+  }
+  // Rows the digest reproduces (§2.11) stay reproduced, e.g. Table 4.9 at 50/50/50 (m = 20).
+  for (const char* column : {"m", "q_x", "q_y", "q_z"}) {
+    const Cell* c = FindCell("4.9", "50/50/50", column);
+    ASSERT_NE(c, nullptr) << column;
+    EXPECT_EQ(Judge(*c), CellVerdict::kReproduced) << column;
+  }
+}
+
+TEST(reproduce_dissertation, Table4_10SumsAreThePrintedColumns) {
+  // 0.342 + 0.436 + 0.289 + 0.132 + 0.377 + 0.240 + 0.282 = 2.098 (hand sum of lines 2800-2806);
+  // 1 − 0.679/2.098 = 67.64 %, 1 − 0.208/2.098 = 90.09 %.
+  const Cell* c = FindCell("4.10", "ΣΔ", "Δ_n");
+  ASSERT_NE(c, nullptr);
+  EXPECT_NEAR(c->computed, 2.098, 1e-9);
+  c = FindCell("4.10", "improvement", "КМТПП");
+  ASSERT_NE(c, nullptr);
+  EXPECT_NEAR(c->computed, 90.086, 1e-3);
+}
+
+TEST(reproduce_dissertation, FineTablesCoverEveryPrintedRow) {
+  // Tables 4.5-4.7: 101 rows (0-200 mm by 2) × 6 columns each; the first X row is Table 3.2's.
+  for (const char* id : {"4.5", "4.6", "4.7"}) {
+    const Table* t = FindTable(id);
+    ASSERT_NE(t, nullptr) << id;
+    EXPECT_EQ(t->cells.size(), 606u) << id;
+  }
+  const Cell* c = FindCell("4.5", "n = 1 (2 mm", "δ_xx");
+  ASSERT_NE(c, nullptr);
+  EXPECT_EQ(c->printed, -0.116667);  // seed line 2448
+  // Hand interpolation: −0.466667 + (3.033333 + 0.466667)/10 = −0.116667.
+  EXPECT_NEAR(c->computed, -0.116667, 1e-6);
+}
+
 TEST(reproduce_dissertation, Chapter3PrintedValuesAreTheSeeds) {
   // Spot checks typed from the seed (lines 1798, 1902, 3031): the printed side is the document's.
   const Cell* c = FindCell("3.7", "3/5/5", "δ");
@@ -115,7 +176,7 @@ TEST(reproduce_dissertation, NotReproducedListNamesItsReasons) {
     EXPECT_GT(n.reason.size(), 20u) << n.id;
     ids.insert(n.id);
   }
-  for (const char* id : {"3.2", "3.3", "3.4"}) EXPECT_EQ(ids.count(id), 1u) << id;
+  for (const char* id : {"3.2", "3.3", "3.4", "4.8", "4.10"}) EXPECT_EQ(ids.count(id), 1u) << id;
 }
 
 }  // namespace
