@@ -56,12 +56,33 @@ TEST(reproduce_dissertation, EveryCellReproducedOrAKnownMisprint) {
   EXPECT_GT(cells, 300);
 }
 
+TEST(reproduce_dissertation, TablesPerChapter) {
+  // Chapter 2: 2.2-2.13 less the specification 2.1 = 12; chapter 3: 3.5-3.15 = 11 (+ Appendix А);
+  // chapter 4: §4.3 and 4.1-4.10 = 11; Appendices Б, В, Г.
+  int per_chapter[5] = {0, 0, 0, 0, 0};
+  for (const Table& t : Dissertation().tables) {
+    const char c = t.id[0];
+    if (c == '2') ++per_chapter[0];
+    if (c == '3') ++per_chapter[1];
+    if (c == '4' || t.id == "§4.3") ++per_chapter[2];
+    if (t.id == "А") ++per_chapter[3];
+    if (t.id == "Б" || t.id == "В" || t.id == "Г") ++per_chapter[4];
+  }
+  EXPECT_EQ(per_chapter[0], 12);
+  EXPECT_EQ(per_chapter[1], 11);
+  EXPECT_EQ(per_chapter[2], 11);
+  EXPECT_EQ(per_chapter[3], 1);
+  EXPECT_EQ(per_chapter[4], 3);
+}
+
 TEST(reproduce_dissertation, TableIdsAreUniqueAndPrintedNumbering) {
   std::set<std::string> ids;
   for (const Table& t : Dissertation().tables) EXPECT_TRUE(ids.insert(t.id).second) << t.id;
   for (const char* id :
-       {"3.5",  "3.6", "3.7", "3.8", "3.9", "3.10", "3.11", "3.12", "3.13", "3.14", "3.15", "А",
-        "§4.3", "4.1", "4.2", "4.3", "4.4", "4.5",  "4.6",  "4.7",  "4.8",  "4.9",  "4.10"})
+       {"3.5",  "3.6",  "3.7",  "3.8",  "3.9", "3.10", "3.11", "3.12", "3.13", "3.14",
+        "3.15", "А",    "2.2",  "2.3",  "2.4", "2.5",  "2.6",  "2.7",  "2.8",  "2.9",
+        "2.10", "2.11", "2.12", "2.13", "Б",   "В",    "Г",    "§4.3", "4.1",  "4.2",
+        "4.3",  "4.4",  "4.5",  "4.6",  "4.7", "4.8",  "4.9",  "4.10"})
     EXPECT_EQ(ids.count(id), 1u) << id;
 }
 
@@ -153,6 +174,64 @@ TEST(reproduce_dissertation, FineTablesCoverEveryPrintedRow) {
   EXPECT_NEAR(c->computed, -0.116667, 1e-6);
 }
 
+// Chapter 1-2 digest (dissertation-ch1-2.md) §5.1 errata.
+TEST(reproduce_dissertation, Chapter2AndAppendixErrataAreFlaggedMisprints) {
+  struct Expect {
+    const char* table;
+    const char* row;
+    const char* column;
+    double correct;
+    double tolerance;
+  };
+  const Expect errata[] = {
+      // E1: cosines whose readings give a negative value, printed non-negative (a sample of 32).
+      {"2.6", "x_d = 15", "COS_xy", -0.0009609, 1e-7},
+      {"2.7", "y_d = 225", "COS_yz", -0.0004066, 1e-7},
+      {"2.8", "z_d = 150", "COS_zy", -0.0000155, 1e-7},
+      {"2.10", "x_d = 315", "COS_xz", -0.0002232, 1e-7},
+      {"2.11", "y_d = 285", "COS_yz", -0.0000330, 1e-7},
+      {"2.12", "z_d = 270", "COS_zy", -0.0000713, 1e-7},
+      {"2.9", "ΣΔ", "Δ_dg", 1.636, 1e-9},                 // E3: the printed values add up to 1.636
+      {"2.9", "improvement", "1 − ΣΔ_dg", 59.70, 0.005},  // E3
+      {"В", "G", "G[2][2]", 0.99999975, 1e-7},            // E2: stray 9
+  };
+  for (const Expect& e : errata) {
+    SCOPED_TRACE(std::string(e.table) + " " + e.row + " " + e.column);
+    const Cell* c = FindCell(e.table, e.row, e.column);
+    ASSERT_NE(c, nullptr);
+    EXPECT_EQ(Judge(*c), CellVerdict::kMisprint);
+    EXPECT_NEAR(c->computed, e.correct, e.tolerance);
+  }
+  // E1 names 32 cells; every other cosine of the six tables is reproduced.
+  int dropped = 0;
+  for (const char* id : {"2.6", "2.7", "2.8", "2.10", "2.11", "2.12"}) {
+    const Table* t = FindTable(id);
+    ASSERT_NE(t, nullptr) << id;
+    for (const Cell& c : t->cells) dropped += Judge(c) == CellVerdict::kMisprint ? 1 : 0;
+  }
+  EXPECT_EQ(dropped, 32);
+  // The 48 mm tables keep their signs (E1): Table 2.2 row 8, COS_xy printed −0.0005513.
+  const Cell* c = FindCell("2.2", "x_d = 8", "COS_xy");
+  ASSERT_NE(c, nullptr);
+  EXPECT_EQ(c->printed, -0.0005513);
+  EXPECT_EQ(Judge(*c), CellVerdict::kReproduced);
+}
+
+TEST(reproduce_dissertation, AppendicesGiveThePrintedCommands) {
+  // Appendices Б, В, Г print q = (129.902, 139.929, 105.949), (129.768, 139.921, 105.927),
+  // (129.844, 139.89, 105.891) (seed lines 3128, 3176, 3236).
+  const struct {
+    const char* table;
+    double x;
+  } commands[] = {{"Б", 129.902}, {"В", 129.768}, {"Г", 129.844}};
+  for (const auto& q : commands) {
+    const Cell* c = FindCell(q.table, "q (command)", "q_x");
+    ASSERT_NE(c, nullptr) << q.table;
+    EXPECT_EQ(c->printed, q.x);
+    EXPECT_EQ(Judge(*c), CellVerdict::kReproduced) << q.table;
+  }
+}
+
 TEST(reproduce_dissertation, Chapter3PrintedValuesAreTheSeeds) {
   // Spot checks typed from the seed (lines 1798, 1902, 3031): the printed side is the document's.
   const Cell* c = FindCell("3.7", "3/5/5", "δ");
@@ -176,7 +255,8 @@ TEST(reproduce_dissertation, NotReproducedListNamesItsReasons) {
     EXPECT_GT(n.reason.size(), 20u) << n.id;
     ids.insert(n.id);
   }
-  for (const char* id : {"3.2", "3.3", "3.4", "4.8", "4.10"}) EXPECT_EQ(ids.count(id), 1u) << id;
+  for (const char* id : {"3.2", "3.3", "3.4", "4.8", "4.10", "2.1"})
+    EXPECT_EQ(ids.count(id), 1u) << id;
 }
 
 }  // namespace
