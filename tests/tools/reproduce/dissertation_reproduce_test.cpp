@@ -38,6 +38,24 @@ const Cell* FindCell(const std::string& table,
   return nullptr;
 }
 
+/// A misprint the digests record: the cell, and the value the digest recomputes.
+struct Expect {
+  const char* table;
+  const char* row;     // prefix of the cell's row
+  const char* column;  // prefix of the cell's column
+  double correct;
+  double tolerance;
+};
+
+void ExpectMisprint(const Expect& e) {
+  SCOPED_TRACE(std::string(e.table) + " " + e.row + " " + e.column);
+  const Cell* c = FindCell(e.table, e.row, e.column);
+  ASSERT_NE(c, nullptr);
+  EXPECT_EQ(Judge(*c), CellVerdict::kMisprint);
+  EXPECT_FALSE(c->misprint.empty());
+  EXPECT_NEAR(c->computed, e.correct, e.tolerance);
+}
+
 TEST(reproduce_dissertation, EveryCellReproducedOrAKnownMisprint) {
   int cells = 0;
   for (const Table& t : Dissertation().tables) {
@@ -88,13 +106,6 @@ TEST(reproduce_dissertation, TableIdsAreUniqueAndPrintedNumbering) {
 
 // Chapter 3 digest (dissertation-ch3.md) §D4 errata, each beyond its cell's tolerance.
 TEST(reproduce_dissertation, Chapter3ErrataAreFlaggedMisprints) {
-  struct Expect {
-    const char* table;
-    const char* row;
-    const char* column;
-    double correct;  // the digest's recomputed value
-    double tolerance;
-  };
   const Expect errata[] = {
       {"3.12", "3/5/5", "δ−", 65.463946, 1e-6},        // D4.14: copy of δ+
       {"3.13", "10/20/14", "δ−/δ", 2.319, 5e-4},       // D4.14: copy of the δ+ % cell
@@ -104,25 +115,11 @@ TEST(reproduce_dissertation, Chapter3ErrataAreFlaggedMisprints) {
       {"3.7", "3/5/5", "δ−/δ", 22e-6, 0.5e-6},         // D4.12: printed "20/δ"·10^-6
       {"3.15", "k = 5", "|E″|", 67.1, 0.05},           // D4.15: 1'17" should be 1'07"
   };
-  for (const Expect& e : errata) {
-    SCOPED_TRACE(std::string(e.table) + " " + e.row + " " + e.column);
-    const Cell* c = FindCell(e.table, e.row, e.column);
-    ASSERT_NE(c, nullptr);
-    EXPECT_EQ(Judge(*c), CellVerdict::kMisprint);
-    EXPECT_FALSE(c->misprint.empty());
-    EXPECT_NEAR(c->computed, e.correct, e.tolerance);
-  }
+  for (const Expect& e : errata) ExpectMisprint(e);
 }
 
 // Chapter 4 digest (dissertation-ch4.md) §5 errata and its recomputed values (§2).
 TEST(reproduce_dissertation, Chapter4ErrataAreFlaggedMisprints) {
-  struct Expect {
-    const char* table;
-    const char* row;
-    const char* column;
-    double correct;
-    double tolerance;
-  };
   const Expect errata[] = {
       {"§4.3", "step 1", "S_x", 75.042131, 1e-5},     // item 8: shows the step-2 S
       {"4.1", "l = 0.1", "q_x", 49.820, 5e-4},        // item 13: rows swapped
@@ -133,14 +130,7 @@ TEST(reproduce_dissertation, Chapter4ErrataAreFlaggedMisprints) {
       {"4.9", "110/170/185", "q_z", 185.887, 5e-4},   // item 19 (reading A)
       {"4.9", "130/140/106", "q_x", 129.545, 5e-4},   // item 19
   };
-  for (const Expect& e : errata) {
-    SCOPED_TRACE(std::string(e.table) + " " + e.row + " " + e.column);
-    const Cell* c = FindCell(e.table, e.row, e.column);
-    ASSERT_NE(c, nullptr);
-    EXPECT_EQ(c->column, e.column);
-    EXPECT_EQ(Judge(*c), CellVerdict::kMisprint);
-    EXPECT_NEAR(c->computed, e.correct, e.tolerance);
-  }
+  for (const Expect& e : errata) ExpectMisprint(e);
   // Rows the digest reproduces (§2.11) stay reproduced, e.g. Table 4.9 at 50/50/50 (m = 20).
   for (const char* column : {"m", "q_x", "q_y", "q_z"}) {
     const Cell* c = FindCell("4.9", "50/50/50", column);
@@ -176,13 +166,6 @@ TEST(reproduce_dissertation, FineTablesCoverEveryPrintedRow) {
 
 // Chapter 1-2 digest (dissertation-ch1-2.md) §5.1 errata.
 TEST(reproduce_dissertation, Chapter2AndAppendixErrataAreFlaggedMisprints) {
-  struct Expect {
-    const char* table;
-    const char* row;
-    const char* column;
-    double correct;
-    double tolerance;
-  };
   const Expect errata[] = {
       // E1: cosines whose readings give a negative value, printed non-negative (a sample of 32).
       {"2.6", "x_d = 15", "COS_xy", -0.0009609, 1e-7},
@@ -195,13 +178,7 @@ TEST(reproduce_dissertation, Chapter2AndAppendixErrataAreFlaggedMisprints) {
       {"2.9", "improvement", "1 − ΣΔ_dg", 59.70, 0.005},  // E3
       {"В", "G", "G[2][2]", 0.99999975, 1e-7},            // E2: stray 9
   };
-  for (const Expect& e : errata) {
-    SCOPED_TRACE(std::string(e.table) + " " + e.row + " " + e.column);
-    const Cell* c = FindCell(e.table, e.row, e.column);
-    ASSERT_NE(c, nullptr);
-    EXPECT_EQ(Judge(*c), CellVerdict::kMisprint);
-    EXPECT_NEAR(c->computed, e.correct, e.tolerance);
-  }
+  for (const Expect& e : errata) ExpectMisprint(e);
   // E1 names 32 cells; every other cosine of the six tables is reproduced.
   int dropped = 0;
   for (const char* id : {"2.6", "2.7", "2.8", "2.10", "2.11", "2.12"}) {

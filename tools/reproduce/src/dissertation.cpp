@@ -49,6 +49,45 @@ std::string SourceLine(int line, const std::string& what) {
   return "seed 001, line " + std::to_string(line) + " (" + what + ")";
 }
 
+Table NewTable(const std::string& id, const std::string& title, const std::string& source) {
+  Table t;
+  t.seed = kSeed;
+  t.id = id;
+  t.title = title;
+  t.source = source;
+  return t;
+}
+
+double Component(const model::Vec3& v, int i) { return i == 0 ? v.x : (i == 1 ? v.y : v.z); }
+
+model::Vec3 RoundedToMicrometre(const model::Vec3& v_mm) {
+  return {std::round(v_mm.x * 1e3) / 1e3, std::round(v_mm.y * 1e3) / 1e3,
+          std::round(v_mm.z * 1e3) / 1e3};
+}
+
+void AddVector(Table& table,
+               const std::string& row,
+               const std::string& column,
+               const std::string& unit,
+               const char* const (&printed)[3],
+               const model::Vec3& computed,
+               const std::string& misprint,
+               double tolerance) {
+  static const char* const kSuffix[3] = {"_x", "_y", "_z"};
+  for (int i = 0; i < 3; ++i) {
+    Cell c = MakeCell(row, column + kSuffix[i], unit, printed[i], Component(computed, i), misprint);
+    if (tolerance > 0.0) c.tolerance = tolerance;
+    table.cells.push_back(std::move(c));
+  }
+}
+
+void AddNotReproduced(SeedReproduction& out,
+                      const std::string& id,
+                      const std::string& title,
+                      const std::string& reason) {
+  out.not_reproduced.push_back({kSeed, id, title, reason});
+}
+
 }  // namespace dissertation
 
 Expected<SeedReproduction> ReproduceDissertation() {

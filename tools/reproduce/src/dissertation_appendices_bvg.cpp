@@ -3,6 +3,7 @@
 // cube data, with their intermediate values. Computed by tools/model TrackerModel with the
 // printed (unsigned) cosines, which is what the author's software used (ch. 1-2 digest E1), on
 // the Tables 2.10-2.12 compiled into tools/datasets.
+#include <array>
 #include <cmath>
 #include <string>
 #include <utility>
@@ -21,23 +22,6 @@ using model::Vec3;
 const char* const kAxis[3] = {"x", "y", "z"};
 const Vec3 kTarget = {130, 140, 106};
 
-double Component(const Vec3& v, int i) { return i == 0 ? v.x : (i == 1 ? v.y : v.z); }
-
-void AddVector(Table& t,
-               const std::string& row,
-               const std::string& column,
-               const char* const (&p)[3],
-               const Vec3& computed,
-               double tolerance = 0.0,
-               const char* const (&misprint)[3] = {"", "", ""}) {
-  for (int i = 0; i < 3; ++i) {
-    Cell c =
-        MakeCell(row, column + "_" + kAxis[i], "mm", p[i], Component(computed, i), misprint[i]);
-    if (tolerance > 0) c.tolerance = tolerance;
-    t.cells.push_back(std::move(c));
-  }
-}
-
 void AddMatrix(Table& t, const char* const (&p)[9], const Mat3& g, const char* misprint22 = "") {
   for (int i = 0; i < 9; ++i) {
     Cell c = MakeCell("G", "G[" + std::to_string(i / 3) + "][" + std::to_string(i % 3) + "]", "",
@@ -45,6 +29,14 @@ void AddMatrix(Table& t, const char* const (&p)[9], const Mat3& g, const char* m
     c.tolerance = 1e-7;
     t.cells.push_back(std::move(c));
   }
+}
+
+/// The target's cell n = trunc(r/u), printed 8, 9, 7 by both sheets.
+void AddCell(Table& t, const std::array<int, 3>& n) {
+  const char* const kPrinted[3] = {"8", "9", "7"};
+  for (int i = 0; i < 3; ++i)
+    t.cells.push_back(MakeCell("cell", std::string("n_") + kAxis[i], "", kPrinted[i],
+                               n[static_cast<std::size_t>(i)]));
 }
 
 /// The two X-line nodes read into A (rows of Table 2.10; the sheet shows the workbook's 9
@@ -60,15 +52,6 @@ void AddNodes(Table& t, const model::TrackerData& data, int first, const char* c
       t.cells.push_back(std::move(c));
     }
   }
-}
-
-Table NewTable(const char* id, const char* title, const std::string& source) {
-  Table t;
-  t.seed = kSeed;
-  t.id = id;
-  t.title = title;
-  t.source = source;
-  return t;
 }
 
 const char* const kInputsNote =
@@ -101,9 +84,9 @@ Expected<void> AddAppendicesBVG(SeedReproduction& out) {
     Table t = NewTable("Б", "Appendix Б: tangential static method at (130, 140, 106), 315 mm cube",
                        SourceLine(3090, "Appendix Б; A 3100, r01 3114, G 3126, q 3128"));
     AddNodes(t, data, 1, kNodes15);
-    AddVector(t, "r01", "r01", kR01Static, s.r01_mm, 5e-8);
+    AddVector(t, "r01", "r01", "mm", kR01Static, s.r01_mm, "", 5e-8);
     AddMatrix(t, kGStatic, s.g);
-    AddVector(t, "q (command)", "q", {"129.902", "139.929", "105.949"}, s.command_mm);
+    AddVector(t, "q (command)", "q", "mm", {"129.902", "139.929", "105.949"}, s.command_mm);
     t.notes = {kInputsNote,
                "Inputs: q1T = 15 mm and the interval 15-30 mm of every axis (as the sheet "
                "chooses them), the printed unsigned cosines of Tables 2.10-2.12."};
@@ -112,14 +95,12 @@ Expected<void> AddAppendicesBVG(SeedReproduction& out) {
   {
     Table t = NewTable("В", "Appendix В: tangential interval method at (130, 140, 106)",
                        SourceLine(3130, "Appendix В; n 3140, A 3148, r01 3162, G 3174, q 3176"));
-    for (int i = 0; i < 3; ++i)
-      t.cells.push_back(MakeCell("cell", std::string("n_") + kAxis[i], "",
-                                 i == 0 ? "8" : (i == 1 ? "9" : "7"),
-                                 iv.n[static_cast<std::size_t>(i)]));
+    AddCell(t, iv.n);
     AddNodes(t, data, 8,
              {"120.024503377", "0.060629453", "0.030831463", "135.044047267", "0.067136045",
               "0.033143278"});
-    AddVector(t, "r01", "r01", {"0.024516059", "0.008644461", "0.012361005"}, iv.r01_mm, 1e-6);
+    AddVector(t, "r01", "r01", "mm", {"0.024516059", "0.008644461", "0.012361005"}, iv.r01_mm, "",
+              1e-6);
     // As Appendix В prints it: Г's matrix but for G22.
     const char* const kGInterval[9] = {"0.999999894", "0.000961343", "0.000693666",
                                        "0.000433208", "0.999999496", "0.000136283",
@@ -127,7 +108,7 @@ Expected<void> AddAppendicesBVG(SeedReproduction& out) {
     AddMatrix(t, kGInterval, iv.g,
               "stray 9: 0.99999975 (Appendix Г; sqrt(1 − 0.000693666² − 0.000136283²) = "
               "0.9999997501, digest E2)");
-    AddVector(t, "q (command)", "q", {"129.768", "139.921", "105.927"}, iv.command_mm);
+    AddVector(t, "q (command)", "q", "mm", {"129.768", "139.921", "105.927"}, iv.command_mm);
     t.notes = {kInputsNote,
                "r01 is back-extrapolated from the nodes 120 and 135 mm to 0 (q1T = 120): the "
                "7-decimal rounding of the readings grows eightfold, so r01 is compared to "
@@ -138,20 +119,17 @@ Expected<void> AddAppendicesBVG(SeedReproduction& out) {
     Table t =
         NewTable("Г", "Appendix Г: tangential quasi-differential method at (130, 140, 106)",
                  SourceLine(3178, "Appendix Г; n 3184, A 3196, r01 3210, ΔR 3228, γ 3234, q 3236"));
-    for (int i = 0; i < 3; ++i)
-      t.cells.push_back(MakeCell("cell", std::string("n_") + kAxis[i], "",
-                                 i == 0 ? "8" : (i == 1 ? "9" : "7"),
-                                 qd.n[static_cast<std::size_t>(i)]));
+    AddCell(t, qd.n);
     AddNodes(t, data, 1, kNodes15);
-    AddVector(t, "r01", "r01", kR01Static, m.origin_mm(), 5e-8);
-    AddVector(t, "R", "R", {"120.150625141", "135.105955968", "105.106431456"}, qd.r_mm, 5e-6);
-    const Vec3 r0 = {std::round(qd.r_mm.x * 1e3) / 1e3, std::round(qd.r_mm.y * 1e3) / 1e3,
-                     std::round(qd.r_mm.z * 1e3) / 1e3};
-    AddVector(t, "R0 (R rounded)", "R0", {"120.151", "135.106", "105.106"}, r0);
-    AddVector(t, "ΔR = r − R0", "ΔR", {"9.849", "4.894", "0.894"}, kTarget - r0);
+    AddVector(t, "r01", "r01", "mm", kR01Static, m.origin_mm(), "", 5e-8);
+    AddVector(t, "R", "R", "mm", {"120.150625141", "135.105955968", "105.106431456"}, qd.r_mm, "",
+              5e-6);
+    const Vec3 r0 = RoundedToMicrometre(qd.r_mm);
+    AddVector(t, "R0 (R rounded)", "R0", "mm", {"120.151", "135.106", "105.106"}, r0);
+    AddVector(t, "ΔR = r − R0", "ΔR", "mm", {"9.849", "4.894", "0.894"}, kTarget - r0);
     AddMatrix(t, kGCell, qd.g);
-    AddVector(t, "γ = G⁻¹·ΔR", "γ", {"9.844", "4.89", "0.891"}, qd.gamma_mm);
-    AddVector(t, "q (command)", "q", {"129.844", "139.89", "105.891"}, qd.command_mm);
+    AddVector(t, "γ = G⁻¹·ΔR", "γ", "mm", {"9.844", "4.89", "0.891"}, qd.gamma_mm);
+    AddVector(t, "q (command)", "q", "mm", {"129.844", "139.89", "105.891"}, qd.command_mm);
     t.notes = {kInputsNote,
                "R is compared to ±5·10^-6 mm: the sheet sums 8 + 9 + 7 intervals of unit vectors "
                "the workbook holds with more digits than Tables 2.10-2.12 (digest §1.6: R within "

@@ -23,8 +23,6 @@ using model::Vec3;
 
 const char* const kAxisName = "xyz";
 
-double Component(const Vec3& v, int i) { return i == 0 ? v.x : (i == 1 ? v.y : v.z); }
-
 // Digest E1: the cosines printed non-negative whose tracker readings give a negative value,
 // {table, node mm, direction}.
 struct DroppedSign {
@@ -295,18 +293,18 @@ Expected<void> AddChapter2(SeedReproduction& out) {
   VOLCOMP_TRY(AddTrackerTable(out, t315, 2, "2.12",
                               "Table 2.12: direction cosines of axis Oz, 315 mm cube", 1202));
   AddResults(out, kResults[2]);
-  const auto skip = [&out](const char* id, const char* title, const char* reason) {
-    out.not_reproduced.push_back({kSeed, id, title, reason});
-  };
-  skip("2.1", "Table 2.1: technical data of the STAN S500 machining centre",
-       "machine specification (travels, speeds, power): nothing to recompute (seed line 850)");
-  skip("2.5/2.9/2.13", "Tables 2.5, 2.9, 2.13: Δ_n, Δ_s, Δ_ik, Δ_dg at the control points",
-       "tracker measurements after commanding the corrected targets; the chapter's own additive "
-       "model predicts other residuals (e.g. 315 mm run, static: 1.712 predicted vs 1.579 "
-       "reported), so they are the author's experimental claims (digest §3.6, E6); the column "
-       "sums and improvements are reproduced");
-  skip("2.2-2.12 (readings)", "Tables 2.2-2.4, 2.6-2.8, 2.10-2.12: the tracker readings",
-       "measured inputs; the cosines computed from them are reproduced");
+  AddNotReproduced(
+      out, "2.1", "Table 2.1: technical data of the STAN S500 machining centre",
+      "machine specification (travels, speeds, power): nothing to recompute (seed line 850)");
+  AddNotReproduced(
+      out, "2.5/2.9/2.13", "Tables 2.5, 2.9, 2.13: Δ_n, Δ_s, Δ_ik, Δ_dg at the control points",
+      "tracker measurements after commanding the corrected targets; the chapter's own additive "
+      "model predicts other residuals (e.g. 315 mm run, static: 1.712 predicted vs 1.579 "
+      "reported), so they are the author's experimental claims (digest §3.6, E6); the column "
+      "sums and improvements are reproduced");
+  AddNotReproduced(out, "2.2-2.12 (readings)",
+                   "Tables 2.2-2.4, 2.6-2.8, 2.10-2.12: the tracker readings",
+                   "measured inputs; the cosines computed from them are reproduced");
   return {};
 }
 

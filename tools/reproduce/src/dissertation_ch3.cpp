@@ -382,24 +382,26 @@ Expected<void> AddChapter3(SeedReproduction& out) {
                 1875, datasets::S500MaxErrors(), kMaxRows);
   AddPointTable(out, "3.15", "Table 3.15: volumetric error of the STAN S500 at the point M_min",
                 1891, datasets::S500MinErrors(), kMinRows);
-  const auto skip = [&out](const char* id, const char* title, const char* reason) {
-    out.not_reproduced.push_back({kSeed, id, title, reason});
-  };
-  skip("3.1", "Table 3.1: the 21 parametric errors of a three-axis machining centre",
-       "names, symbols and instruments only: no numbers (seed line 1273)");
-  skip("3.2", "Table 3.2: parametric errors of axis O_x",
-       "measured input data (Renishaw XL-80), compiled into tools/datasets as printed; nothing to "
-       "recompute (seed line 1662)");
-  skip("3.3", "Table 3.3: parametric errors of axis O_y",
-       "measured input data, compiled into tools/datasets; the row index printed \"24\" at 270 mm "
-       "is row 27 (digest D4.8), rows 22-28 of the angular columns mirror rows 21-15 (D4.9) "
-       "(seed line 1687)");
-  skip("3.4", "Table 3.4: parametric errors of axis O_z",
-       "measured input data, compiled into tools/datasets; ε_zz = ε_zy − 0.015 µm/mm in every row "
-       "(digest D4.10) (seed line 1721)");
-  skip("Fig. 3.41", "Figure 3.41: |ОП| over the working space, largest error 420 µm",
-       "figure only, and the 420 µm comes from the method of refs. [53, 66], not described; the "
-       "chapter's model gives at most 117.35 µm even at M_max (digest D4.19)");
+  AddNotReproduced(out, "3.1",
+                   "Table 3.1: the 21 parametric errors of a three-axis machining centre",
+                   "names, symbols and instruments only: no numbers (seed line 1273)");
+  AddNotReproduced(
+      out, "3.2", "Table 3.2: parametric errors of axis O_x",
+      "measured input data (Renishaw XL-80), compiled into tools/datasets as printed; nothing to "
+      "recompute (seed line 1662)");
+  AddNotReproduced(
+      out, "3.3", "Table 3.3: parametric errors of axis O_y",
+      "measured input data, compiled into tools/datasets; the row index printed \"24\" at 270 mm "
+      "is row 27 (digest D4.8), rows 22-28 of the angular columns mirror rows 21-15 (D4.9) "
+      "(seed line 1687)");
+  AddNotReproduced(
+      out, "3.4", "Table 3.4: parametric errors of axis O_z",
+      "measured input data, compiled into tools/datasets; ε_zz = ε_zy − 0.015 µm/mm in every row "
+      "(digest D4.10) (seed line 1721)");
+  AddNotReproduced(
+      out, "Fig. 3.41", "Figure 3.41: |ОП| over the working space, largest error 420 µm",
+      "figure only, and the 420 µm comes from the method of refs. [53, 66], not described; the "
+      "chapter's model gives at most 117.35 µm even at M_max (digest D4.19)");
   return {};
 }
 

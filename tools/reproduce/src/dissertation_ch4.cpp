@@ -59,29 +59,6 @@ Expected<Tables> FineTables() {
   return fine;
 }
 
-double Component(const Vec3& v, int i) { return i == 0 ? v.x : (i == 1 ? v.y : v.z); }
-
-void AddVector(Table& table,
-               const std::string& row,
-               const std::string& column,
-               const std::string& unit,
-               const char* const (&printed)[3],
-               const Vec3& computed,
-               const char* misprint = "") {
-  for (int i = 0; i < 3; ++i)
-    table.cells.push_back(
-        MakeCell(row, column + "_" + kAxis[i], unit, printed[i], Component(computed, i), misprint));
-}
-
-Table NewTable(const char* id, const char* title, const std::string& source) {
-  Table t;
-  t.seed = kSeed;
-  t.id = id;
-  t.title = title;
-  t.source = source;
-  return t;
-}
-
 // ---- §4.3 listing -----------------------------------------------------------------------------
 
 Expected<void> AddListing(SeedReproduction& out,
@@ -160,8 +137,7 @@ Expected<void> AddListing(SeedReproduction& out,
   }
   AddVector(t, "final", "R", "mm", {"56.275495189", "56.286114115", "56.284664996"}, r.reached_mm);
   const Vec3 target = {50, 50, 50};
-  const Vec3 r0 = {std::round(r.reached_mm.x * 1e3) / 1e3, std::round(r.reached_mm.y * 1e3) / 1e3,
-                   std::round(r.reached_mm.z * 1e3) / 1e3};
+  const Vec3 r0 = RoundedToMicrometre(r.reached_mm);
   AddVector(t, "final", "ΔR = q_d − R0", "mm", {"-6.275", "-6.286", "-6.285"}, target - r0);
   const char* const g[9] = {"0.99999984",   "0.000352542", "0.00054679",
                             "0.000564886",  "0.999999887", "0.00001231",
@@ -451,18 +427,17 @@ Expected<void> AddChapter4(SeedReproduction& out) {
   VOLCOMP_TRY(AddTable4_8(out, fine, cal));
   VOLCOMP_TRY(AddTable4_9(out, fine, cal));
   AddTable4_10(out);
-  const auto skip = [&out](const char* id, const char* title, const char* reason) {
-    out.not_reproduced.push_back({kSeed, id, title, reason});
-  };
-  skip("4.8", "Table 4.8: the q_tr column (tracker-measured drive positions)",
-       "measurements of the machine, not outputs of the algorithm; row l = 1 needs table rows "
-       "beyond 200 mm and row l = 0.5 is the computed command minus exactly (0.2, 0.2, 0.1) mm, "
-       "unexplained (digest item 16); the m column is reproduced");
-  skip("4.10", "Table 4.10: Δ_n, Δ_dg, Δ_kd at the seven control points",
-       "tracker measurements (Δ_n, Δ_dg copied from Table 2.13, another run than Δ_kd; digest "
-       "items 17-18); the sums and improvements are reproduced");
-  skip("Fig. 4.1-4.3", "Figures 4.1-4.3 (σ_a against l and K)",
-       "captions only, no data points in the text (digest item 26)");
+  AddNotReproduced(
+      out, "4.8", "Table 4.8: the q_tr column (tracker-measured drive positions)",
+      "measurements of the machine, not outputs of the algorithm; row l = 1 needs table rows "
+      "beyond 200 mm and row l = 0.5 is the computed command minus exactly (0.2, 0.2, 0.1) mm, "
+      "unexplained (digest item 16); the m column is reproduced");
+  AddNotReproduced(
+      out, "4.10", "Table 4.10: Δ_n, Δ_dg, Δ_kd at the seven control points",
+      "tracker measurements (Δ_n, Δ_dg copied from Table 2.13, another run than Δ_kd; digest "
+      "items 17-18); the sums and improvements are reproduced");
+  AddNotReproduced(out, "Fig. 4.1-4.3", "Figures 4.1-4.3 (σ_a against l and K)",
+                   "captions only, no data points in the text (digest item 26)");
   return {};
 }
 

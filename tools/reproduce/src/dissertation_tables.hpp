@@ -8,6 +8,7 @@
 #include <string>
 
 #include "volcomp/hosted/expected.hpp"
+#include "volcomp/model/vec3.hpp"
 #include "volcomp/reproduce/reproduction.hpp"
 
 namespace volcomp::reproduce::dissertation {
@@ -34,6 +35,32 @@ Cell MakeCell(std::string row,
 
 /// "seed 001, line N (what)".
 std::string SourceLine(int line, const std::string& what);
+
+/// An empty table of this seed.
+Table NewTable(const std::string& id, const std::string& title, const std::string& source);
+
+/// Component i (0 = x, 1 = y, 2 = z) of v.
+double Component(const model::Vec3& v, int i);
+
+/// v rounded to 0.001 mm, as the Mathcad sheets display R before subtracting it (R0).
+model::Vec3 RoundedToMicrometre(const model::Vec3& v_mm);
+
+/// Three cells "<column>_x", "_y", "_z" of one printed vector; `tolerance` > 0 replaces the
+/// half-unit one (the table's notes say why).
+void AddVector(Table& table,
+               const std::string& row,
+               const std::string& column,
+               const std::string& unit,
+               const char* const (&printed)[3],
+               const model::Vec3& computed,
+               const std::string& misprint = "",
+               double tolerance = 0.0);
+
+/// A printed item the tool cannot reproduce, and why.
+void AddNotReproduced(SeedReproduction& out,
+                      const std::string& id,
+                      const std::string& title,
+                      const std::string& reason);
 
 /// Producers: append the chapter's tables and its printed-but-not-reproducible items.
 Expected<void> AddChapter2(SeedReproduction& out);
