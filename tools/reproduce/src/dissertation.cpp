@@ -1,5 +1,6 @@
 // ReproduceDissertation: the dissertation's (seed 001) printed tables in printed order, chapter by
-// chapter (dissertation_ch2.cpp, _ch3.cpp, _ch4.cpp, _appendices.cpp), and the shared helpers.
+// chapter (dissertation_ch2.cpp, _ch3.cpp, _ch4.cpp, _appendix_a.cpp, _appendices_bvg.cpp), and the
+// shared helpers.
 #include <cmath>
 #include <cstdlib>
 #include <cstring>

@@ -181,7 +181,8 @@ struct RunRow {
   const char* label;
   const char* m;
   const char* q[3];
-  const char* misprint;
+  const char* misprint;  // "" or why the printed q is wrong
+  bool m_wrong = false;  // the printed m is wrong too, for the same reason
 };
 
 const char* const kSwapped =
@@ -204,8 +205,7 @@ Expected<void> AddRuns(SeedReproduction& out,
   for (const RunRow& r : rows) {
     VOLCOMP_TRY_ASSIGN(const KmtppResult res,
                        Kmtpp(tables, cal, KmtppDissertationOptions(r.gain, r.step), target));
-    t.cells.push_back(
-        MakeCell(r.label, "m", "", r.m, res.steps, r.misprint == kSwapped ? "" : r.misprint));
+    t.cells.push_back(MakeCell(r.label, "m", "", r.m, res.steps, r.m_wrong ? r.misprint : ""));
     AddVector(t, r.label, column, "mm", r.q, res.command_mm, r.misprint);
   }
   t.notes = std::move(notes);
@@ -416,7 +416,8 @@ Expected<void> AddChapter4(SeedReproduction& out) {
         "152",
         {"129.132", "139.957", "107.263"},
         "m = 152 violates the stop rule (140·0.985^152 = 14.1 > 10); the rule gives m = 175 and "
-        "q = (129.160, 139.865, 107.451) (digest item 15)"}},
+        "q = (129.160, 139.865, 107.451) (digest item 15)",
+        true}},
       "q_tr", {kOptions, "q_tr: computed commands as in Table 4.3 (digest item 14)."}));
   AddFineTable(out, "4.5", "Table 4.5: parametric errors of axis Ox at 2 mm spacing", 2444, 0,
                kTable4_5, fine[0]);
