@@ -42,6 +42,10 @@ const std::vector<const Command*>& Commands() {
       &ExportHeidenhainCommand(),
       &ExportFanucCommand(),
       &ExportIsgCommand(),
+      &ExportKlipperCommand(),
+      &ExportMarlinCommand(),
+      &ExportReprapCommand(),
+      &ExportGrblhalCommand(),
       &ModelEvalCommand(),
       &ModelExportCommand(),
   };

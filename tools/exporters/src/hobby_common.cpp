@@ -94,6 +94,18 @@ Expected<void> RequireBacklashAxis(const AxisBacklash& b,
   return {};
 }
 
+Expected<std::string> BacklashWords(const std::vector<AxisBacklash>& backlash,
+                                    const std::string& axes,
+                                    const std::string& controller) {
+  std::string words;
+  for (const AxisBacklash& b : backlash) {
+    VOLCOMP_TRY(RequireBacklashAxis(b, axes, false, controller));
+    VOLCOMP_TRY(RequireLostMotion(b, controller));
+    words += std::string(" ") + b.axis + FixedDecimals(BacklashInFileUnits(b), 4);
+  }
+  return words;
+}
+
 std::string SkewWords(const SkewValues& v, const char* letters, double scale, int decimals) {
   std::string words;
   const std::optional<double>* values[] = {&v.xy, &v.xz, &v.yz};

@@ -36,12 +36,7 @@ Expected<MarlinGcode> BuildMarlinGcode(const HobbySquareness& squareness,
                                                " is outside SKEW_FACTOR_MIN..MAX = -1..1");
     }
   }
-  std::string m425 = "M425 F1";
-  for (const AxisBacklash& b : backlash) {
-    VOLCOMP_TRY(RequireBacklashAxis(b, "XYZ", false, "Marlin's M425"));
-    VOLCOMP_TRY(RequireLostMotion(b, "Marlin's M425"));
-    m425 += std::string(" ") + b.axis + FixedDecimals(BacklashInFileUnits(b), 4);
-  }
+  VOLCOMP_TRY_ASSIGN(const std::string m425, BacklashWords(backlash, "XYZ", "Marlin's M425"));
 
   std::string& t = m.text;
   t = "; Marlin skew and backlash correction\n";
@@ -55,7 +50,7 @@ Expected<MarlinGcode> BuildMarlinGcode(const HobbySquareness& squareness,
   if (!backlash.empty()) t += kBacklash + std::string("; M425 needs BACKLASH_GCODE.\n");
   t += "G21 ; millimetres: M852 and M425 read their values as lengths (G20 would scale them)\n";
   if (squareness.any()) t += "M852" + SkewWords(m.factors, "IJK", 1.0, 9) + "\n";
-  if (!backlash.empty()) t += m425 + "\n";
+  if (!backlash.empty()) t += "M425 F1" + m425 + "\n";
   t += "M500 ; store the settings (EEPROM_SETTINGS)\n";
   return m;
 }

@@ -32,12 +32,8 @@ Expected<ReprapGcode> BuildReprapGcode(const HobbySquareness& squareness,
   }
   ReprapGcode r;
   r.tangents = ReprapTangents(squareness, negate);
-  std::string m425 = "M425";
-  for (const AxisBacklash& b : backlash) {
-    VOLCOMP_TRY(RequireBacklashAxis(b, "XYZUVWABC", false, "RepRapFirmware's M425"));
-    VOLCOMP_TRY(RequireLostMotion(b, "RepRapFirmware's M425"));
-    m425 += std::string(" ") + b.axis + FixedDecimals(BacklashInFileUnits(b), 4);
-  }
+  VOLCOMP_TRY_ASSIGN(const std::string m425,
+                     BacklashWords(backlash, "XYZUVWABC", "RepRapFirmware's M425"));
 
   std::string& t = r.text;
   t = "; RepRapFirmware axis compensation and backlash (for config.g)\n";
@@ -56,7 +52,7 @@ Expected<ReprapGcode> BuildReprapGcode(const HobbySquareness& squareness,
     words.yz = r.tangents.xz;
     t += "M556 S" + FixedDecimals(length_mm, 3) + SkewWords(words, "XYZ", length_mm, 7) + "\n";
   }
-  if (!backlash.empty()) t += m425 + "\n";
+  if (!backlash.empty()) t += "M425" + m425 + "\n";
   return r;
 }
 

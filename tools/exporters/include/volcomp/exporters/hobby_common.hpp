@@ -110,6 +110,12 @@ Expected<void> RequireBacklashAxis(const AxisBacklash& b,
 /// b in the file's unit: mm (deg on a rotary axis).
 double BacklashInFileUnits(const AxisBacklash& b);
 
+/// " X<b> Y<b> ..." of a G-code backlash command (M425), mm with 4 decimals, each axis checked
+/// with RequireBacklashAxis(`axes`, linear only) and RequireLostMotion for `controller`.
+Expected<std::string> BacklashWords(const std::vector<AxisBacklash>& backlash,
+                                    const std::string& axes,
+                                    const std::string& controller);
+
 /// " I<xy> J<xz> K<yz>" of the planes given: `letters` name the words of xy, xz, yz (e.g. "IJK"),
 /// each value times `scale` with `decimals` decimals.
 std::string SkewWords(const SkewValues& v, const char* letters, double scale, int decimals);
