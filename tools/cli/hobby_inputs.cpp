@@ -104,10 +104,11 @@ Expected<exporters::HobbySquareness> LoadSquareness(const HobbyArgs& a, Context&
   for (int i = 0; i < 3; ++i) {
     const auto& p = *PlaneOf(s, i);
     if (p && !(std::fabs(p->urad) <= kMaxSquarenessUrad)) {
-      char text[200];
-      std::snprintf(text, sizeof text, "%s = %.1f urad (%s) is beyond the plausible +-%.0f urad",
-                    kPlanes[i].name, p->urad, p->source.c_str(), kMaxSquarenessUrad);
-      return Fail(Error::kInputInvalid, text);
+      return Fail(Error::kInputInvalid, std::string(kPlanes[i].name) + " = " +
+                                            exporters::FixedDecimals(p->urad, 1) + " urad (" +
+                                            p->source + ") is beyond the plausible +-" +
+                                            exporters::FixedDecimals(kMaxSquarenessUrad, 0) +
+                                            " urad (0.1 rad): the value must be in urad");
     }
   }
   return s;
@@ -194,27 +195,26 @@ void HobbyInputsText(const JsonValue& d, const char* value_key, std::ostream& ou
   char line[400];
   if (const JsonValue* planes = d.get("squareness")) {
     for (const JsonValue& p : planes->array) {
-      std::snprintf(line, sizeof line, "  %s: %s = %.1f urad -> %s %.9f (%s)\n",
+      std::snprintf(line, sizeof line, "  %s: %s = %.1f urad -> %s %.9f",
                     p.get("plane")->string.c_str(), p.get("name")->string.c_str(),
-                    p.get("urad")->number, value_key, p.get(value_key)->number,
-                    p.get("source")->string.c_str());
-      out << line;
+                    p.get("urad")->number, value_key, p.get(value_key)->number);
+      out << line << " (" << p.get("source")->string << ")\n";
     }
   }
   if (const JsonValue* axes = d.get("backlash")) {
     for (const JsonValue& b : axes->array) {
       const bool rotary = b.get("rotary")->boolean;
       const char* u = rotary ? "arcsec" : "um";
-      std::snprintf(
-          line, sizeof line,
-          "  backlash %s: %.2f %s = %.5f %s (mean reversal %+.2f %s, largest |B_j| "
-          "%.2f %s, a constant leaves up to %.2f %s; %lld targets%s) (%s)\n",
-          b.get("axis")->string.c_str(), b.get("backlash_um")->number, u, b.get("value")->number,
-          b.get("unit")->string.c_str(), b.get("reversal_mean_um")->number, u,
-          b.get("reversal_max_um")->number, u, b.get("spread_um")->number, u,
-          static_cast<long long>(b.get("targets")->integer),
-          b.get("test_negated")->boolean ? ", test negated" : "", b.get("source")->string.c_str());
-      out << line;
+      std::snprintf(line, sizeof line,
+                    "  backlash %s: %.2f %s = %.5f %s (mean reversal %+.2f %s, largest |B_j| "
+                    "%.2f %s, a constant leaves up to %.2f %s; %lld targets%s)",
+                    b.get("axis")->string.c_str(), b.get("backlash_um")->number, u,
+                    b.get("value")->number, b.get("unit")->string.c_str(),
+                    b.get("reversal_mean_um")->number, u, b.get("reversal_max_um")->number, u,
+                    b.get("spread_um")->number, u,
+                    static_cast<long long>(b.get("targets")->integer),
+                    b.get("test_negated")->boolean ? ", test negated" : "");
+      out << line << " (" << b.get("source")->string << ")\n";
     }
   }
 }

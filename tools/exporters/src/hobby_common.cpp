@@ -16,12 +16,6 @@ std::optional<double> Signed(bool given, double value, bool negate) {
   return negate ? -value : value;
 }
 
-std::string Number(double v, const char* format) {
-  char s[64];
-  std::snprintf(s, sizeof s, format, v);
-  return s;
-}
-
 }  // namespace
 
 SkewValues KlipperMarlinFactors(const HobbySquareness& s, bool negate) {
@@ -71,8 +65,9 @@ Expected<void> RequireLostMotion(const AxisBacklash& b, const std::string& contr
   const char* unit = b.rotary ? "arcsec" : "um";
   return Fail(Error::kInvalidArgument,
               b.source + ": " + std::string(1, b.axis) + " backlash " +
-                  Number(b.lost_motion_um, "%.3f") + " " + unit +
-                  " (mean reversal B = " + Number(b.reversal_mean_um, "%+.3f") + " " + unit +
+                  FixedDecimals(b.lost_motion_um, 3) + " " + unit +
+                  " (mean reversal B = " + (b.reversal_mean_um >= 0 ? "+" : "") +
+                  FixedDecimals(b.reversal_mean_um, 3) + " " + unit +
                   ": the reverse deviations lie below the forward ones): " + controller +
                   " takes a backlash >= 0 (the distance added when the axis reverses). If the "
                   "instrument counted the other way, negate the test (--negate-tests)");
@@ -131,10 +126,12 @@ double BacklashInFileUnits(const AxisBacklash& b) {
 }
 
 std::string FixedDecimals(double value, int decimals) {
-  char s[64];
-  std::snprintf(s, sizeof s, "%.*f", decimals, value);
-  std::string text = s;
-  if (text[0] == '-' && text.find_first_not_of("-0.") == std::string::npos) text.erase(0, 1);
+  // As long as the number needs (a large value is never cut short).
+  std::string text(static_cast<std::size_t>(std::snprintf(nullptr, 0, "%.*f", decimals, value)),
+                   '\0');
+  std::snprintf(text.data(), text.size() + 1, "%.*f", decimals, value);
+  if (!text.empty() && text[0] == '-' && text.find_first_not_of("-0.") == std::string::npos)
+    text.erase(0, 1);
   return text;
 }
 

@@ -16,7 +16,7 @@
 // Sign: factor = tan(90° − angle between the axes) (hobby_common.hpp): xy = −tan C0Y, xz = tan B0Z,
 // yz = −tan A0Z / cos B0Z. Confirmed from Klipper's code and docs; not checked on a machine, so
 // the file says to print a square after loading and --negate flips every factor.
-// Limits: Klipper checks no range for the factors; a plane's squareness beyond ±0.01 rad is
+// Limits: Klipper checks no range for the factors; a plane's squareness beyond ±0.1 rad is
 // refused by the callers as implausible. The profile name must be one word (it is a G-code
 // parameter value); L > 0. Values: factors 9 decimals, lengths 6 decimals (mm).
 #pragma once
