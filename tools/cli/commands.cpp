@@ -43,6 +43,10 @@ const std::vector<const Command*>& Commands() {
       &ExportHeidenhainCommand(),
       &ExportFanucCommand(),
       &ExportIsgCommand(),
+      &ExportKlipperCommand(),
+      &ExportMarlinCommand(),
+      &ExportReprapCommand(),
+      &ExportGrblhalCommand(),
       &ModelEvalCommand(),
       &ModelExportCommand(),
   };

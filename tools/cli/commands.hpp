@@ -48,6 +48,10 @@ const Command& ExportSiemensCommand();
 const Command& ExportHeidenhainCommand();
 const Command& ExportFanucCommand();
 const Command& ExportIsgCommand();
+const Command& ExportKlipperCommand();
+const Command& ExportMarlinCommand();
+const Command& ExportReprapCommand();
+const Command& ExportGrblhalCommand();
 const Command& ModelEvalCommand();
 const Command& ModelExportCommand();
 
