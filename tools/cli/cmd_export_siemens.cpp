@@ -1,6 +1,7 @@
 // `volcomp export siemens`: a SINUMERIK compensation program from positioning tests
 // (exporters/siemens_comp.hpp): LEC ($AA_ENC_COMP, %_N_AX_EEC_INI) or, for direction-dependent
-// tables, CEC ($AN_CEC with $AN_CEC_DIRECTION 1 / −1), with the machine data to set as comments.
+// tables, CEC ($AN_CEC with $AN_CEC_DIRECTION 1 / −1), and cross-axis CEC tables from straightness
+// tests (--cross), with the machine data to set as comments.
 #include <cctype>
 #include <map>
 #include <optional>
@@ -12,7 +13,9 @@
 #include "export_axes.hpp"
 #include "positioning_input.hpp"
 #include "volcomp/exporters/siemens_comp.hpp"
+#include "volcomp/exporters/straightness.hpp"
 #include "volcomp/image/axis_units.hpp"
+#include "volcomp/report/format.hpp"
 #include "volcomp/tools/file_io.hpp"
 
 namespace volcomp::cli {
@@ -26,6 +29,9 @@ void SiemensText(const JsonValue& d, std::ostream& out) {
   }
   for (const JsonValue& t : d.get("tables")->array) {
     out << "  " << t.get("machine_axis")->string;
+    if (t.get("output_axis")->string != t.get("machine_axis")->string) {
+      out << " -> " << t.get("output_axis")->string;
+    }
     if (t.get("cec_table")->integer >= 0) {
       const long long dir = t.get("direction")->integer;
       out << ": CEC table " << t.get("cec_table")->integer
@@ -62,8 +68,46 @@ Expected<std::map<char, std::string>> MachineAxisNames(const std::optional<std::
   return names;
 }
 
+// One `--cross IN:OUT=FILE`: a straightness test of the output axis over the input axis.
+struct CrossInput {
+  AxisInput input;  // the input axis and the file
+  char output = 'Y';
+};
+
+Expected<std::vector<CrossInput>> CrossInputs(const std::vector<std::string>& specs) {
+  std::vector<CrossInput> out;
+  for (const std::string& s : specs) {
+    const auto linear = [](char c) { return c == 'X' || c == 'Y' || c == 'Z'; };
+    const bool shape = s.size() > 4 && s[1] == ':' && s[3] == '=';
+    const char in = shape ? static_cast<char>(std::toupper(static_cast<unsigned char>(s[0]))) : 0;
+    const char o = shape ? static_cast<char>(std::toupper(static_cast<unsigned char>(s[2]))) : 0;
+    if (!shape || !linear(in) || !linear(o) || in == o) {
+      return UsageFailure("--cross " + s +
+                          ": INPUT:OUTPUT=FILE with two different linear axes, e.g. "
+                          "X:Y=straightness_x_in_y.csv");
+    }
+    for (const CrossInput& c : out) {
+      if (c.input.axis == in && c.output == o) {
+        return UsageFailure("--cross " + s + ": " + std::string(1, in) + ":" + std::string(1, o) +
+                            " is given twice");
+      }
+    }
+    out.push_back({{in, s.substr(4)}, o});
+  }
+  return out;
+}
+
+Expected<exporters::StraightnessLine> ParseLine(const std::string& text) {
+  if (text == "lsq") return exporters::StraightnessLine::kLeastSquares;
+  if (text == "ends") return exporters::StraightnessLine::kEndPoints;
+  if (text == "none") return exporters::StraightnessLine::kNone;
+  return UsageFailure("--straightness-line " + text + ": lsq, ends or none");
+}
+
 Expected<Output> RunExportSiemens(Args& args, Context& ctx) {
-  VOLCOMP_TRY_ASSIGN(const std::vector<AxisInput> inputs, PositioningInputs(args));
+  const Expected<std::vector<AxisInput>> pitch_inputs = PositioningInputs(args);
+  const std::vector<std::string> cross_specs = args.Values("--cross");
+  const std::string line_text = args.Value("--straightness-line").value_or("lsq");
   const std::string out_file = args.Required("-o", "--output");
   const std::string mode = args.Value("--mode").value_or("auto");
   const long long encoder = args.Integer("--encoder").value_or(0);
@@ -82,7 +126,19 @@ Expected<Output> RunExportSiemens(Args& args, Context& ctx) {
                         ": 0 (first measuring system) or 1 (second)");
   }
   if (max_points < 2) return UsageFailure("--max-points must be at least 2");
+  if (!pitch_inputs.ok() && cross_specs.empty()) return Fail(pitch_inputs.error());
+  const std::vector<AxisInput> inputs =
+      pitch_inputs.ok() ? *pitch_inputs : std::vector<AxisInput>();
+  VOLCOMP_TRY_ASSIGN(const std::vector<CrossInput> cross, CrossInputs(cross_specs));
+  VOLCOMP_TRY_ASSIGN(const exporters::StraightnessLine line, ParseLine(line_text));
+  if (!cross.empty() && mode == "lec") {
+    return UsageFailure("--cross writes CEC tables: not with --mode lec");
+  }
 
+  auto machine_name = [&](char axis) {
+    const auto n = names.find(axis);
+    return n != names.end() ? n->second : std::string(1, axis) + "1";
+  };
   Output output;
   std::vector<exporters::SiemensAxis> axes;
   JsonValue axes_json = JsonValue::Array();
@@ -91,15 +147,36 @@ Expected<Output> RunExportSiemens(Args& args, Context& ctx) {
     VOLCOMP_TRY_ASSIGN(const AxisErrorTable t, LoadAxisErrorTable(in, table_args, ctx));
     const std::string warning = UncoveredWarning(t);
     if (!warning.empty()) output.warnings.push_back(warning);
-    const auto n = names.find(in.axis);
-    const std::string machine_axis = n != names.end() ? n->second : std::string(1, in.axis) + "1";
+    const std::string machine_axis = machine_name(in.axis);
     bidirectional = bidirectional || !t.table.reverse_um.empty();
-    axes.push_back({machine_axis, in.path, t.table});
+    axes.push_back({machine_axis, in.path, t.table, "", ""});
     axes_json.Push(ErrorTableJson(t).Set("machine_axis", machine_axis));
   }
+  JsonValue cross_json = JsonValue::Array();
+  for (const CrossInput& c : cross) {
+    VOLCOMP_TRY_ASSIGN(AxisErrorTable t, LoadAxisErrorTable(c.input, table_args, ctx));
+    const auto ref = exporters::RemoveReferenceLine(&t.table, line);
+    if (!ref.ok()) return Fail(Error::kInputInvalid, c.input.path + ": " + ref.error().message);
+    const std::string what =
+        std::string("straightness E_") + c.output + c.input.axis + ": the error of " + c.output +
+        " over " + c.input.axis + ", about the " +
+        (line == exporters::StraightnessLine::kLeastSquares ? "least-squares line"
+         : line == exporters::StraightnessLine::kEndPoints  ? "end-point line"
+                                                            : "readings as they are (no line)") +
+        " (slope removed " + report::FormatNumber(ref->slope_um_per_m) +
+        " um/m; squareness is separate)";
+    axes.push_back(
+        {machine_name(c.input.axis), c.input.path, t.table, machine_name(c.output), what});
+    cross_json.Push(ErrorTableJson(t)
+                        .Set("input_axis", machine_name(c.input.axis))
+                        .Set("output_axis", machine_name(c.output))
+                        .Set("line", line_text)
+                        .Set("slope_removed_um_per_m", ref->slope_um_per_m));
+  }
   exporters::SiemensOptions o;
-  o.mode = mode == "cec" || (mode == "auto" && bidirectional) ? exporters::SiemensMode::kCec
-                                                              : exporters::SiemensMode::kLec;
+  o.mode = mode == "cec" || (mode == "auto" && (bidirectional || !cross.empty()))
+               ? exporters::SiemensMode::kCec
+               : exporters::SiemensMode::kLec;
   o.encoder = static_cast<int>(encoder);
   o.max_points = static_cast<std::size_t>(max_points);
   const Expected<exporters::SiemensProgram> p = exporters::BuildSiemensProgram(axes, o);
@@ -109,6 +186,7 @@ Expected<Output> RunExportSiemens(Args& args, Context& ctx) {
   for (const exporters::SiemensTableInfo& t : p->tables) {
     JsonValue j = JsonValue::Object();
     j.Set("machine_axis", t.machine_axis)
+        .Set("output_axis", t.output_axis)
         .Set("cec_table", t.cec_table)
         .Set("direction", t.direction)
         .Set("points", uint64_t{t.points})
@@ -130,6 +208,7 @@ Expected<Output> RunExportSiemens(Args& args, Context& ctx) {
       .Set("encoder", encoder)
       .Set("max_points", max_points)
       .Set("axes", std::move(axes_json))
+      .Set("cross", std::move(cross_json))
       .Set("tables", std::move(tables))
       .Set("notes", std::move(notes));
   output.text = SiemensText;
@@ -152,6 +231,13 @@ const Command& ExportSiemensCommand() {
              {"--names", nullptr, "X=NAME,...", nullptr, nullptr,
               "machine axis name of an axis in the program (default: X1, Y1, Z1, A1, ...)"},
              {"--encoder", nullptr, "0|1", nullptr, "0", "LEC: the measuring system compensated"},
+             {"--cross", nullptr, "IN:OUT=FILE", nullptr, nullptr,
+              "a cross-axis CEC table from a straightness test: FILE's deviations are OUT's "
+              "error (actual - nominal, um) at IN's targets, e.g. X:Y=str_xy.csv (repeatable)",
+              true},
+             {"--straightness-line", nullptr, "lsq|ends|none", nullptr, "lsq",
+              "the reference line removed from a --cross test (ISO 230-1: least squares or end "
+              "points; the axes' squareness is compensated separately)"},
              {"--max-points", nullptr, "N", nullptr, "200",
               "points per table the machine takes (MD38000 for LEC, MD18342 for CEC; 200 is the "
               "808D's LEC and the 828D's CEC limit)"}},

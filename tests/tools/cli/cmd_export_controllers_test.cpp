@@ -13,6 +13,7 @@
 #include "cli_runner.hpp"
 #include "sample_path.hpp"
 #include "temp_paths.hpp"
+#include "volcomp/tools/json_value.hpp"
 
 namespace volcomp {
 namespace {
@@ -99,6 +100,57 @@ TEST(VolcompExportSiemens, LecOfATwoDirectionTestIsTheirMeanAndSaysSo) {
   EXPECT_NE(text.find("$AA_ENC_COMP[0,0,X1]=-0.0010\n"), std::string::npos) << text;
   EXPECT_NE(text.find("$AA_ENC_COMP[0,4,X1]=-0.0035\n"), std::string::npos) << text;
   EXPECT_NE(r.err.find("mean reversal (2.40 um)"), std::string::npos) << r.err;
+}
+
+// A cross-axis table from straightness_x_in_y.csv (its comment gives the readings as line + bow):
+// the least-squares line of 2, 5.5, 7, 6.5, 4 over 0..200 mm is 4 + 0.01 x (the bow's own line is
+// flat at its mean 2), leaving −2, 1, 2, 1, −2 µm; the end-point line 2 + 0.01 x leaves the bow
+// 0, 3, 4, 3, 0. Both remove 10 µm/m. Input X1, output Y1, one table for both directions.
+TEST(VolcompExportSiemens, CrossAxisStraightnessTable) {
+  ScratchDir dir("export_siemens_cross");
+  const std::string out = dir / "cec.mpf";
+  auto r = RunCli({"export", "siemens", "--cross",
+                   "X:Y=" + testing::SamplePath("metrology/straightness_x_in_y.csv"), "-o", out,
+                   "--json"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  std::string text = ReadFile(out);
+  EXPECT_NE(text.find("$AN_CEC_INPUT_AXIS[0]=(X1)\n$AN_CEC_OUTPUT_AXIS[0]=(Y1)\n"
+                      "$AN_CEC_STEP[0]=50.0000\n$AN_CEC_MIN[0]=0.0000\n$AN_CEC_MAX[0]=200.0000\n"
+                      "$AN_CEC_DIRECTION[0]=0\n$AN_CEC_IS_MODULO[0]=0\n$AN_CEC[0,0]=-0.0020\n"
+                      "$AN_CEC[0,1]=0.0010\n$AN_CEC[0,2]=0.0020\n$AN_CEC[0,3]=0.0010\n"
+                      "$AN_CEC[0,4]=-0.0020\nM17\n"),
+            std::string::npos)
+      << text;
+  EXPECT_NE(text.find("; straightness E_YX"), std::string::npos) << text;
+  const auto doc = tools::ParseJson(r.out, "stdout");
+  ASSERT_TRUE(doc.ok()) << r.out;
+  EXPECT_EQ(doc->get("mode")->string, "CEC");
+  EXPECT_NEAR(doc->get("cross")->array.at(0).get("slope_removed_um_per_m")->number, 10.0, 1e-9);
+  r = RunCli({"export", "siemens", "--cross",
+              "X:Y=" + testing::SamplePath("metrology/straightness_x_in_y.csv"),
+              "--straightness-line", "ends", "--names", "X=AX1,Y=AX2", "-o", out});
+  ASSERT_EQ(r.code, 0) << r.err;
+  text = ReadFile(out);
+  EXPECT_NE(text.find("$AN_CEC_OUTPUT_AXIS[0]=(AX2)\n"), std::string::npos) << text;
+  EXPECT_NE(text.find("$AN_CEC[0,0]=0.0000\n$AN_CEC[0,1]=0.0030\n$AN_CEC[0,2]=0.0040\n"
+                      "$AN_CEC[0,3]=0.0030\n$AN_CEC[0,4]=0.0000\n"),
+            std::string::npos)
+      << text;
+  EXPECT_NE(
+      r.out.find("X1 -> Y1") == std::string::npos ? r.out.find("AX1 -> AX2") : std::string::npos,
+      std::string::npos)
+      << r.out;
+  ExpectRefused({"export", "siemens", "--cross",
+                 "X:X=" + testing::SamplePath("metrology/straightness_x_in_y.csv"), "-o", out},
+                "two different linear axes");
+  ExpectRefused({"export", "siemens", "--cross",
+                 "X:Y=" + testing::SamplePath("metrology/straightness_x_in_y.csv"), "--mode", "lec",
+                 "-o", out},
+                "--cross writes CEC tables");
+  ExpectRefused({"export", "siemens", "--cross",
+                 "X:Y=" + testing::SamplePath("metrology/straightness_x_in_y.csv"),
+                 "--straightness-line", "best", "-o", out},
+                "--straightness-line best: lsq, ends or none");
 }
 
 TEST(VolcompExportSiemens, Refusals) {

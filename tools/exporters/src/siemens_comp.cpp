@@ -93,6 +93,11 @@ Expected<SiemensProgram> BuildSiemensProgram(const std::vector<SiemensAxis>& axe
   int next_table = 0;
   for (const SiemensAxis& a : axes) {
     const std::string& ax = a.machine_axis;
+    const std::string& out = a.output_axis.empty() ? ax : a.output_axis;
+    if (lec && out != ax) {
+      return Fail(Error::kInvalidArgument,
+                  ax + " -> " + out + ": a cross-axis table is a CEC table (--mode cec)");
+    }
     auto spacing = RequireEqualSpacing(a.table, what);
     if (!spacing.ok()) return Fail(Error::kInvalidArgument, ax + ": " + spacing.error().message);
     const Expected<void> count =
@@ -115,10 +120,12 @@ Expected<SiemensProgram> BuildSiemensProgram(const std::vector<SiemensAxis>& axe
       p.notes.push_back(msg);
       head += "; " + std::string(msg) + "\n";
     }
-    head += "; " + ax + ": from " + a.source + ", " + range + "\n" + SignLines(a);
+    head += "; " + (out == ax ? ax : ax + " -> " + out) + ": from " + a.source + ", " + range +
+            "\n" + (a.what.empty() ? "" : "; " + a.what + "\n") + SignLines(a);
     for (const Column& c : columns) {
       SiemensTableInfo info;
       info.machine_axis = ax;
+      info.output_axis = out;
       info.rotary = t.rotary;
       info.cec_table = lec ? -1 : next_table;
       info.direction = c.direction;
@@ -144,13 +151,13 @@ Expected<SiemensProgram> BuildSiemensProgram(const std::vector<SiemensAxis>& axe
       } else {
         const std::string k = std::to_string(next_table);
         md += ";   MD18342 $MN_MM_CEC_MAX_POINTS[" + k + "] >= " + std::to_string(n) + " (table " +
-              k + ": " + ax +
+              k + ": " + (out == ax ? ax : ax + " -> " + out) +
               (c.direction > 0   ? ", positive traverse"
                : c.direction < 0 ? ", negative traverse"
                                  : ", both directions") +
               ")\n";
         body += "$AN_CEC_INPUT_AXIS[" + k + "]=(" + ax + ")\n$AN_CEC_OUTPUT_AXIS[" + k + "]=(" +
-                ax + ")\n$AN_CEC_STEP[" + k + "]=" + Mm(*spacing) + "\n$AN_CEC_MIN[" + k +
+                out + ")\n$AN_CEC_STEP[" + k + "]=" + Mm(*spacing) + "\n$AN_CEC_MIN[" + k +
                 "]=" + Mm(t.position.front()) + "\n$AN_CEC_MAX[" + k +
                 "]=" + Mm(t.position.back()) + "\n$AN_CEC_DIRECTION[" + k +
                 "]=" + std::to_string(c.direction) + "\n$AN_CEC_IS_MODULO[" + k + "]=0\n";

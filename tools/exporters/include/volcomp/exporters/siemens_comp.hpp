@@ -1,8 +1,10 @@
 // SINUMERIK 840D sl / 828D / 808D compensation programs from error tables (error_table.hpp):
 //   LEC (leadscrew / measuring-system error compensation): %_N_AX_EEC_INI, one table per axis,
 //     $AA_ENC_COMP[encoder, point, axis] and its _STEP/_MIN/_MAX/_IS_MODULO, for one direction;
-//   CEC (sag / angularity compensation, here used for direction-dependent pitch): $AN_CEC tables
-//     with $AN_CEC_DIRECTION 1 (positive traverse) and −1 (negative), input axis = output axis.
+//   CEC (sag / angularity compensation): $AN_CEC tables with $AN_CEC_DIRECTION 1 (positive
+//     traverse) and −1 (negative), input axis = output axis for direction-dependent pitch, or a
+//     cross-axis table (input X, output Y: the straightness E_YX of straightness.hpp), the
+//     output axis compensated as a function of the input axis's position.
 // Sign (K3 function manual, 6FC5397-1BP40-3BA1, pp. 238/242 and 249): the value is the measured
 // error, actual − nominal: "a positive compensation value causes the machine axis to move in the
 // negative direction". Unit mm (deg on a rotary axis), 4 decimals (0.1 µm). Limits: equally
@@ -30,6 +32,8 @@ struct SiemensAxis {
   std::string machine_axis;  // the machine axis name in the program, e.g. "X1" or "AX1"
   std::string source;        // the test file, named in the program's header
   ErrorTable table;
+  std::string output_axis;  // CEC: the axis compensated; empty: machine_axis (pitch)
+  std::string what;         // one line on what the table is, e.g. "straightness E_YX ..."
 };
 
 struct SiemensOptions {
@@ -40,9 +44,10 @@ struct SiemensOptions {
 
 struct SiemensTableInfo {  // one table written, for the command's report
   std::string machine_axis;
-  bool rotary = false;  // values in deg, positions in deg
-  int cec_table = -1;   // CEC: the table index; −1 for LEC
-  int direction = 0;    // CEC: 1, −1, or 0 for both directions; LEC: 0
+  std::string output_axis;  // = machine_axis except for a cross-axis table
+  bool rotary = false;      // values in deg, positions in deg
+  int cec_table = -1;       // CEC: the table index; −1 for LEC
+  int direction = 0;        // CEC: 1, −1, or 0 for both directions; LEC: 0
   std::size_t points = 0;
   double min = 0, max = 0, step = 0;  // mm (deg)
   double largest_value = 0;           // the largest |value| in the table, mm (deg)
@@ -55,7 +60,7 @@ struct SiemensProgram {
 };
 
 /// kInvalidArgument naming the axis, the value, the limit and the fix: unequal spacing, more
-/// points than `max_points`, an encoder other than 0/1.
+/// points than `max_points`, an encoder other than 0/1, a cross-axis table in LEC mode.
 /// LEC with a two-direction test writes the mean of both directions (a note says so and gives
 /// the mean reversal); CEC with a one-direction test writes one table for both directions.
 Expected<SiemensProgram> BuildSiemensProgram(const std::vector<SiemensAxis>& axes,
