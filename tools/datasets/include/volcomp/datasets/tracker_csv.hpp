@@ -11,7 +11,9 @@
 // shape.
 #pragma once
 
+#include <cstddef>
 #include <string>
+#include <vector>
 
 #include "volcomp/hosted/expected.hpp"
 #include "volcomp/model/tracker.hpp"
@@ -22,6 +24,21 @@ namespace volcomp::datasets {
 
 Expected<model::TrackerData> TrackerDataFromCsv(const tools::CsvTable& csv);
 Expected<model::TrackerData> LoadTrackerCsv(const std::string& path);
+
+/// One lattice reading: the commanded node, the tracker's reading (mm) and the source line.
+struct TrackerLatticeReading {
+  model::Vec3 command_mm;
+  model::Vec3 reading_mm;
+  std::size_t line = 0;
+};
+
+/// The lattice of `readings` (any order; every node of an equally spaced lattice exactly once,
+/// ≥ 2 nodes per axis). Failures are "source:line: ..." (kInputInvalid), `file_line` for
+/// the file as a whole (0: "source: ...").
+Expected<model::TrackerLatticeData> TrackerLatticeFromReadings(
+    const std::string& source,
+    std::size_t file_line,
+    const std::vector<TrackerLatticeReading>& readings);
 
 Expected<model::TrackerLatticeData> TrackerLatticeFromCsv(const tools::CsvTable& csv);
 Expected<model::TrackerLatticeData> LoadTrackerLatticeCsv(const std::string& path);
