@@ -31,11 +31,13 @@ Expected<datasets::LatticeFileOptions> LatticeFileOptions(Args& args) {
                                                  {"csv", LatticeFormat::kCsv},
                                                  {"sa-ascii", LatticeFormat::kSaAscii},
                                                  {"sa-xml", LatticeFormat::kSaXml}}));
-  VOLCOMP_TRY_ASSIGN(o.sa_unit, ParseChoice<datasets::SaUnit>(
-                                    "--sa-units", args.Value("--sa-units").value_or("mm"),
-                                    {{"mm", datasets::SaUnit::kMillimetre},
-                                     {"in", datasets::SaUnit::kInch},
-                                     {"m", datasets::SaUnit::kMetre}}));
+  if (const auto unit = args.Value("--sa-units")) {
+    VOLCOMP_TRY_ASSIGN(o.sa_unit,
+                       ParseChoice<datasets::SaUnit>("--sa-units", *unit,
+                                                     {{"mm", datasets::SaUnit::kMillimetre},
+                                                      {"in", datasets::SaUnit::kInch},
+                                                      {"m", datasets::SaUnit::kMetre}}));
+  }
   o.nominals_path = args.Value("--nominals");
   const auto name_fields = args.Integer("--sa-name-fields");
   VOLCOMP_TRY(args.status());
@@ -159,8 +161,8 @@ const Command& BuildTrackerCommand() {
               "commanded nodes for an SA ASCII lattice, paired BY NAME with its measured points "
               "(SA ASCII, or CSV name,x_cmd_mm,y_cmd_mm,z_cmd_mm); a name in one file only is "
               "refused"},
-             {"--sa-units", nullptr, "mm|in|m", nullptr, "mm",
-              "the unit of the SA working frame (SA files)"},
+             {"--sa-units", nullptr, "mm|in|m", nullptr, nullptr,
+              "the unit of the SA working frame (SA files only; default mm)"},
              {"--sa-name-fields", nullptr, "N", nullptr, nullptr,
               "name parts (1..3) before x y z in SA ASCII lines (default: the non-numbers)"},
              {"--through", nullptr, "IMAGE", nullptr, nullptr,

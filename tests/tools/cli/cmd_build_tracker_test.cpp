@@ -207,10 +207,13 @@ TEST(VolcompBuildTracker, SpatialAnalyzerLattice) {
   EXPECT_EQ(r.err, UsageMessage(SamplePath("model/tracker_lattice_sa.txt") +
                                 " is an SA ASCII export, which holds only the measured points: "
                                 "give --nominals FILE with the commanded point of every name"));
-  // Forced as CSV, the XML is refused by the CSV reader.
+  // Forced as CSV, the XML is refused by the CSV reader, with the format it looks like.
   r = RunCli({"build", "tracker", "--lattice", SamplePath("model/tracker_lattice_sa.xml"),
               "--format", "csv", "-o", ascii_out, "--resolution-nm", "X=100,Y=100,Z=100"});
   EXPECT_EQ(r.code, tools::kExitFailed);
+  EXPECT_NE(r.err.find("(read as csv; the file looks like sa-xml: --format auto)"),
+            std::string::npos)
+      << r.err;
   // A name given twice in the measured points.
   const std::string twice = TempPath("build_tracker_sa_twice.txt");
   std::ofstream(twice) << "// SA\nP01 0 0 0\nP02 100 0 0\nP01 0 0 0\n";

@@ -252,6 +252,13 @@ TEST(datasets_sa_points, LatticePairingAndPlausibilityRefusals) {
                 ": the nominal points span only 0.5 mm (less than 1 mm along every axis): is "
                 "the frame in metres or inches (--sa-units m|in)?");
   // Options that do not fit the format.
+  LatticeFileOptions csv_in_inches;
+  csv_in_inches.sa_unit = SaUnit::kInch;
+  const std::string csv = Written("sa_lattice.csv", "x_cmd_mm,y_cmd_mm,z_cmd_mm,x_mm,y_mm,z_mm\n");
+  r = LoadTrackerLatticeFile(csv, csv_in_inches);
+  ASSERT_FALSE(r.ok());
+  EXPECT_EQ(r.error().message,
+            csv + " is read as csv (in mm by its column names): --sa-units is for SA files");
   LatticeFileOptions no_nominals;
   r = LoadTrackerLatticeFile(measured, no_nominals);
   ASSERT_FALSE(r.ok());

@@ -14,6 +14,10 @@
 namespace volcomp::datasets {
 namespace {
 
+SaUnit Unit(const LatticeFileOptions& options) {
+  return options.sa_unit.value_or(SaUnit::kMillimetre);
+}
+
 LatticeFormat Recognised(const std::string& text) {
   if (LooksLikeSaXml(text)) return LatticeFormat::kSaXml;
   if (LooksLikeSaAscii(text)) return LatticeFormat::kSaAscii;
@@ -31,7 +35,7 @@ Expected<std::vector<SaPoint>> Nominals(const std::string& path,
                                         const LatticeFileOptions& options) {
   VOLCOMP_TRY_ASSIGN(const std::string text, tools::ReadTextFile(path));
   if (LooksLikeSaAscii(text)) {
-    return SaPointsFromAscii(text, path, options.sa_unit, options.sa_name_fields);
+    return SaPointsFromAscii(text, path, Unit(options), options.sa_name_fields);
   }
   VOLCOMP_TRY_ASSIGN(const tools::CsvTable csv, tools::CsvTable::ReadString(text, path));
   std::vector<SaPoint> points;
@@ -107,6 +111,53 @@ Outcome CheckPlausible(const std::string& path, const std::vector<TrackerLattice
   return Outcome::Ok();
 }
 
+// The lattice of `text` read as `format` (not kAuto).
+Expected<LoadedLattice> ReadLattice(const std::string& path,
+                                    const std::string& text,
+                                    LatticeFormat format,
+                                    const LatticeFileOptions& options) {
+  LoadedLattice out;
+  out.format = format;
+  const std::string name = LatticeFormatName(out.format);
+  if (out.format != LatticeFormat::kSaAscii && options.nominals_path) {
+    return Fail(Error::kUsage,
+                path + " is read as " + name +
+                    ", which carries its own commanded nodes: --nominals pairs an SA ASCII export "
+                    "only");
+  }
+  if (out.format == LatticeFormat::kCsv) {
+    if (options.sa_name_fields || options.sa_unit) {
+      return Fail(Error::kUsage, path + " is read as csv (in mm by its column names): " +
+                                     (options.sa_unit ? "--sa-units" : "--sa-name-fields") +
+                                     " is for SA files");
+    }
+    VOLCOMP_TRY_ASSIGN(const tools::CsvTable csv, tools::CsvTable::ReadString(text, path));
+    VOLCOMP_TRY_ASSIGN(out.data, TrackerLatticeFromCsv(csv));
+    return out;
+  }
+  std::vector<TrackerLatticeReading> readings;
+  if (out.format == LatticeFormat::kSaXml) {
+    VOLCOMP_TRY_ASSIGN(const std::vector<SaPointPair> pairs,
+                       SaPairsFromXml(text, path, Unit(options)));
+    for (const SaPointPair& p : pairs) readings.push_back({p.nominal_mm, p.actual_mm, p.line});
+  } else {
+    if (!options.nominals_path) {
+      return Fail(Error::kUsage,
+                  path +
+                      " is an SA ASCII export, which holds only the measured points: give "
+                      "--nominals FILE with the commanded point of every name");
+    }
+    VOLCOMP_TRY_ASSIGN(const std::vector<SaPoint> measured,
+                       SaPointsFromAscii(text, path, Unit(options), options.sa_name_fields));
+    VOLCOMP_TRY_ASSIGN(const std::vector<SaPoint> nominals,
+                       Nominals(*options.nominals_path, options));
+    VOLCOMP_TRY_ASSIGN(readings, PairedByName(path, measured, *options.nominals_path, nominals));
+  }
+  VOLCOMP_TRY(CheckPlausible(path, readings));
+  VOLCOMP_TRY_ASSIGN(out.data, TrackerLatticeFromReadings(path, 0, readings));
+  return out;
+}
+
 }  // namespace
 
 const char* LatticeFormatName(LatticeFormat format) {
@@ -126,43 +177,14 @@ const char* LatticeFormatName(LatticeFormat format) {
 Expected<LoadedLattice> LoadTrackerLatticeFile(const std::string& path,
                                                const LatticeFileOptions& options) {
   VOLCOMP_TRY_ASSIGN(const std::string text, tools::ReadTextFile(path));
-  LoadedLattice out;
-  out.format = options.format == LatticeFormat::kAuto ? Recognised(text) : options.format;
-  const std::string name = LatticeFormatName(out.format);
-  if (out.format != LatticeFormat::kSaAscii && options.nominals_path) {
-    return Fail(Error::kUsage,
-                path + " is read as " + name +
-                    ", which carries its own commanded nodes: --nominals pairs an SA ASCII export "
-                    "only");
+  const LatticeFormat recognised = Recognised(text);
+  const LatticeFormat format = options.format == LatticeFormat::kAuto ? recognised : options.format;
+  Expected<LoadedLattice> out = ReadLattice(path, text, format, options);
+  if (!out.ok() && out.error().code == Error::kInputInvalid && format != recognised) {
+    return Fail(Error::kInputInvalid, out.error().message + " (read as " +
+                                          LatticeFormatName(format) + "; the file looks like " +
+                                          LatticeFormatName(recognised) + ": --format auto)");
   }
-  if (out.format == LatticeFormat::kCsv) {
-    if (options.sa_name_fields) {
-      return Fail(Error::kUsage, path + " is read as csv: --sa-name-fields is for SA ASCII");
-    }
-    VOLCOMP_TRY_ASSIGN(const tools::CsvTable csv, tools::CsvTable::ReadString(text, path));
-    VOLCOMP_TRY_ASSIGN(out.data, TrackerLatticeFromCsv(csv));
-    return out;
-  }
-  std::vector<TrackerLatticeReading> readings;
-  if (out.format == LatticeFormat::kSaXml) {
-    VOLCOMP_TRY_ASSIGN(const std::vector<SaPointPair> pairs,
-                       SaPairsFromXml(text, path, options.sa_unit));
-    for (const SaPointPair& p : pairs) readings.push_back({p.nominal_mm, p.actual_mm, p.line});
-  } else {
-    if (!options.nominals_path) {
-      return Fail(Error::kUsage,
-                  path +
-                      " is an SA ASCII export, which holds only the measured points: give "
-                      "--nominals FILE with the commanded point of every name");
-    }
-    VOLCOMP_TRY_ASSIGN(const std::vector<SaPoint> measured,
-                       SaPointsFromAscii(text, path, options.sa_unit, options.sa_name_fields));
-    VOLCOMP_TRY_ASSIGN(const std::vector<SaPoint> nominals,
-                       Nominals(*options.nominals_path, options));
-    VOLCOMP_TRY_ASSIGN(readings, PairedByName(path, measured, *options.nominals_path, nominals));
-  }
-  VOLCOMP_TRY(CheckPlausible(path, readings));
-  VOLCOMP_TRY_ASSIGN(out.data, TrackerLatticeFromReadings(path, 0, readings));
   return out;
 }
 

@@ -35,7 +35,7 @@ enum class LatticeFormat { kAuto, kCsv, kSaAscii, kSaXml };
 struct LatticeFileOptions {
   LatticeFormat format = LatticeFormat::kAuto;
   std::optional<std::string> nominals_path;  // SA ASCII only (required there, refused elsewhere)
-  SaUnit sa_unit = SaUnit::kMillimetre;
+  std::optional<SaUnit> sa_unit;             // SA files only (default mm; refused with a CSV)
   std::optional<int> sa_name_fields;  // name parts of the ASCII lines (default: the non-numbers)
 };
 
