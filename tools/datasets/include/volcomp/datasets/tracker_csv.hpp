@@ -5,7 +5,8 @@
 //   (printed direction cosines). Each line moves only its own axis from 0 in equal steps.
 // Lattice (`volcomp build tracker --lattice FILE`): x_cmd_mm, y_cmd_mm, z_cmd_mm, x_mm, y_mm,
 //   z_mm, every node of an equally spaced lattice exactly once (≥ 2 nodes per axis), any order;
-//   other columns ignored.
+//   other columns ignored. The command also reads SpatialAnalyzer exports there
+//   (tracker_lattice_file.hpp); TrackerLatticeFromReadings is the lattice check both share.
 // Lengths in mm. Failures name the file and line (kInputInvalid; kIoError when the file cannot
 // be read); data returned pass model::ValidateTrackerData / TrackerLattice::Create's checks of
 // shape.
