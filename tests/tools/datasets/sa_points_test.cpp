@@ -148,6 +148,9 @@ TEST(datasets_sa_points, XmlRefusals) {
             "p.xml:1: point \"P1\" is not closed");
   EXPECT_EQ(XmlError("<POINTS>\n<POINT NAME=\"P1\""), "p.xml:2: a tag is not closed");
   EXPECT_EQ(XmlError("<POINTS></POINTS>"), "p.xml: no POINT elements");
+  EXPECT_EQ(XmlError("<POINTS>\n" + actual + "\n</POINTS>"), "p.xml:2: an ACTUAL outside a POINT");
+  EXPECT_EQ(XmlError("<POINT NAME=\"P1\">" + nominal + actual + "\n" + nominal + "</POINT>"),
+            "p.xml:2: point \"P1\" has a second NOMINAL (one nominal/actual pair per POINT)");
 }
 
 TEST(datasets_sa_points, ContentRecognition) {

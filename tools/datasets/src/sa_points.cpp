@@ -259,8 +259,16 @@ Expected<std::vector<SaPointPair>> SaPairsFromXml(const std::string& text,
       open = SaPointPair{name->second, {}, {}, tag_line};
       has_nominal = has_actual = false;
       VOLCOMP_TRY(names.Add(open->name, tag_line));
-    } else if ((tag.name == "NOMINAL" || tag.name == "ACTUAL") && !tag.closing && open) {
+    } else if ((tag.name == "NOMINAL" || tag.name == "ACTUAL") && !tag.closing) {
       const bool nominal = tag.name == "NOMINAL";
+      if (!open)
+        return Fail(At(source, tag_line,
+                       (nominal ? "a NOMINAL" : "an ACTUAL") + std::string(" outside a POINT")));
+      if (nominal ? has_nominal : has_actual) {
+        return Fail(At(source, tag_line,
+                       "point \"" + open->name + "\" has a second " + tag.name +
+                           " (one nominal/actual pair per POINT)"));
+      }
       VOLCOMP_TRY_ASSIGN((nominal ? open->nominal_mm : open->actual_mm),
                          XyzOf(tag, source, tag_line, open->name, MillimetresPer(unit)));
       (nominal ? has_nominal : has_actual) = true;

@@ -23,7 +23,8 @@
 //
 // Refused (kInputInvalid, "source:line: ..."): a line without three numbers, or without a name;
 // a name given twice (naming both lines); a non-finite number; a POINT without NAME, NOMINAL or
-// ACTUAL, or with one of X, Y, Z missing or not a number; a POINT inside a POINT; an unclosed tag;
+// ACTUAL, or with one of X, Y, Z missing or not a number; a second NOMINAL or ACTUAL in a POINT,
+// or one outside a POINT; a POINT inside a POINT; an unclosed tag;
 // a file with no points.
 #pragma once
 
