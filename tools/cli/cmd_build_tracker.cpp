@@ -13,6 +13,7 @@
 #include "volcomp/builders/image_grid.hpp"
 #include "volcomp/datasets/s500.hpp"
 #include "volcomp/datasets/tracker_csv.hpp"
+#include "volcomp/datasets/tracker_lattice_file.hpp"
 #include "volcomp/image/image_reader.hpp"
 
 namespace volcomp::cli {
@@ -20,12 +21,44 @@ namespace {
 
 constexpr const char* kBuilder = "volcomp build tracker";
 
+// --format, --nominals, --sa-units, --sa-name-fields: how the lattice file is read.
+Expected<datasets::LatticeFileOptions> LatticeFileOptions(Args& args) {
+  datasets::LatticeFileOptions o;
+  using datasets::LatticeFormat;
+  VOLCOMP_TRY_ASSIGN(o.format,
+                     ParseChoice<LatticeFormat>("--format", args.Value("--format").value_or("auto"),
+                                                {{"auto", LatticeFormat::kAuto},
+                                                 {"csv", LatticeFormat::kCsv},
+                                                 {"sa-ascii", LatticeFormat::kSaAscii},
+                                                 {"sa-xml", LatticeFormat::kSaXml}}));
+  if (const auto unit = args.Value("--sa-units")) {
+    VOLCOMP_TRY_ASSIGN(o.sa_unit,
+                       ParseChoice<datasets::SaUnit>("--sa-units", *unit,
+                                                     {{"mm", datasets::SaUnit::kMillimetre},
+                                                      {"in", datasets::SaUnit::kInch},
+                                                      {"m", datasets::SaUnit::kMetre}}));
+  }
+  o.nominals_path = args.Value("--nominals");
+  const auto name_fields = args.Integer("--sa-name-fields");
+  VOLCOMP_TRY(args.status());
+  if (name_fields) {
+    if (*name_fields < 1 || *name_fields > 3) {
+      return UsageFailure("--sa-name-fields " + std::to_string(*name_fields) +
+                          ": a point name has 1 to 3 parts (Collection Group Target)");
+    }
+    o.sa_name_fields = static_cast<int>(*name_fields);
+  }
+  return o;
+}
+
 // --lattice FILE [--through IMAGE]: the lattice's exact inverse (composed with the GRID3 of the
 // table that was in force while it was measured).
 Expected<Output> RunBuildTrackerLattice(Args& args, const std::string& path) {
   const auto through = args.Value("--through");
-  VOLCOMP_TRY_ASSIGN(model::TrackerLatticeData data, datasets::LoadTrackerLatticeCsv(path));
-  auto lattice = model::TrackerLattice::Create(std::move(data));
+  VOLCOMP_TRY_ASSIGN(const datasets::LatticeFileOptions options, LatticeFileOptions(args));
+  VOLCOMP_TRY_ASSIGN(datasets::LoadedLattice loaded,
+                     datasets::LoadTrackerLatticeFile(path, options));
+  auto lattice = model::TrackerLattice::Create(std::move(loaded.data));
   if (!lattice.ok()) return Fail(Error::kInputInvalid, path + ": " + lattice.error().message);
   builders::GridSource source;
   if (through) {
@@ -36,6 +69,8 @@ Expected<Output> RunBuildTrackerLattice(Args& args, const std::string& path) {
   } else {
     source = builders::TrackerLatticeGridSource(*lattice);
   }
+  source.info.emplace("lattice_format", datasets::LatticeFormatName(loaded.format));
+  if (options.nominals_path) source.info.emplace("nominals", *options.nominals_path);
   VOLCOMP_TRY_ASSIGN(const GridCommand command, ParseGridCommand(args, source));
   VOLCOMP_TRY(args.Finish());
   return RunGridBuild(command, source, kBuilder);
@@ -118,7 +153,18 @@ const Command& BuildTrackerCommand() {
              {"--builtin", nullptr, "s500-315|s500-240", nullptr, nullptr,
               "the dissertation's tracker lines"},
              {"--lattice", nullptr, "FILE", nullptr, nullptr,
-              "tracker readings at every lattice node (x_cmd_mm..z_cmd_mm, x_mm..z_mm)"},
+              "tracker readings at every lattice node: CSV (x_cmd_mm..z_cmd_mm, x_mm..z_mm) or a "
+              "SpatialAnalyzer export (XML NOMINAL/ACTUAL pairs, or ASCII with --nominals)"},
+             {"--format", nullptr, "auto|csv|sa-ascii|sa-xml", nullptr, "auto",
+              "the lattice file's format (auto: recognised by content)"},
+             {"--nominals", nullptr, "FILE", nullptr, nullptr,
+              "commanded nodes for an SA ASCII lattice, paired BY NAME with its measured points "
+              "(SA ASCII, or CSV name,x_cmd_mm,y_cmd_mm,z_cmd_mm); a name in one file only is "
+              "refused"},
+             {"--sa-units", nullptr, "mm|in|m", nullptr, nullptr,
+              "the unit of the SA working frame (SA files only; default mm)"},
+             {"--sa-name-fields", nullptr, "N", nullptr, nullptr,
+              "name parts (1..3) before x y z in SA ASCII lines (default: the non-numbers)"},
              {"--through", nullptr, "IMAGE", nullptr, nullptr,
               "the table in force while the lattice was measured (composed with it)"},
              {"--method", nullptr, "static|interval|quasi-differential", nullptr,

@@ -1,7 +1,6 @@
 // Tracker lines and lattices from CSV (see tracker_csv.hpp for the formats).
 #include "volcomp/datasets/tracker_csv.hpp"
 
-#include <array>
 #include <cmath>
 #include <set>
 #include <unordered_map>
@@ -16,20 +15,28 @@ using model::GridAxes;
 using model::GridAxis;
 using tools::CsvTable;
 
-// Equally spaced node values of one lattice axis, from the set of values the file gives.
-Expected<GridAxis> AxisOf(const CsvTable& csv, const std::set<double>& values, char axis) {
+// "source:line: message" (line 0: "source: message").
+Failure At(const std::string& source, std::size_t line, const std::string& message) {
+  return Failure{Error::kInputInvalid,
+                 source + (line ? ":" + std::to_string(line) : std::string()) + ": " + message};
+}
+
+// Equally spaced node values of one lattice axis, from the set of values the readings give.
+Expected<GridAxis> AxisOf(const std::string& source,
+                          std::size_t line,
+                          const std::set<double>& values,
+                          char axis) {
   const std::string name(1, axis);
   if (values.size() < 2) {
-    return Fail(
-        csv.LineFailure(csv.header_line(), "the lattice needs at least 2 nodes along " + name));
+    return Fail(At(source, line, "the lattice needs at least 2 nodes along " + name));
   }
   const std::vector<double> v(values.begin(), values.end());
   const double h = (v.back() - v.front()) / static_cast<double>(v.size() - 1);
   for (std::size_t i = 0; i < v.size(); ++i) {
     if (std::fabs(v[i] - (v.front() + h * static_cast<double>(i))) > 1e-6) {
-      return Fail(csv.LineFailure(
-          csv.header_line(),
-          "the " + name + " nodes are not equally spaced (" + std::to_string(v[i]) + " mm)"));
+      return Fail(
+          At(source, line,
+             "the " + name + " nodes are not equally spaced (" + std::to_string(v[i]) + " mm)"));
     }
   }
   return GridAxis{v.front(), h, static_cast<uint32_t>(v.size())};
@@ -111,6 +118,49 @@ Expected<model::TrackerData> LoadTrackerCsv(const std::string& path) {
   return TrackerDataFromCsv(csv);
 }
 
+Expected<model::TrackerLatticeData> TrackerLatticeFromReadings(
+    const std::string& source,
+    std::size_t file_line,
+    const std::vector<TrackerLatticeReading>& readings) {
+  std::set<double> values[3];
+  for (const TrackerLatticeReading& r : readings) {
+    for (int a = 0; a < 3; ++a) values[a].insert(r.command_mm[a]);
+  }
+  model::TrackerLatticeData d;
+  d.name = source;
+  for (int a = 0; a < 3; ++a) {
+    VOLCOMP_TRY_ASSIGN(d.lattice[static_cast<std::size_t>(a)],
+                       AxisOf(source, file_line, values[a], "XYZ"[a]));
+  }
+  const GridAxes& g = d.lattice;
+  const std::size_t total = static_cast<std::size_t>(g[0].nodes) * g[1].nodes * g[2].nodes;
+  // Each node once, checked reading by reading before the lattice is allocated (n readings may
+  // describe a lattice of up to n³ nodes).
+  std::vector<std::size_t> node_of(readings.size());
+  std::unordered_map<std::size_t, std::size_t> line_of;
+  for (std::size_t row = 0; row < readings.size(); ++row) {
+    const model::Vec3& c = readings[row].command_mm;
+    const std::size_t i = NodeIndex(g[0], c.x), j = NodeIndex(g[1], c.y), k = NodeIndex(g[2], c.z);
+    node_of[row] = (k * g[1].nodes + j) * g[0].nodes + i;
+    const auto first = line_of.emplace(node_of[row], readings[row].line);
+    if (!first.second) {
+      return Fail(
+          At(source, readings[row].line,
+             "node given twice (first on line " + std::to_string(first.first->second) + ")"));
+    }
+  }
+  if (readings.size() != total) {
+    return Fail(At(source, file_line,
+                   std::to_string(readings.size()) + " nodes for a " + std::to_string(g[0].nodes) +
+                       "x" + std::to_string(g[1].nodes) + "x" + std::to_string(g[2].nodes) +
+                       " lattice (" + std::to_string(total) + " needed)"));
+  }
+  d.position_mm.assign(total, model::Vec3{});
+  for (std::size_t row = 0; row < readings.size(); ++row)
+    d.position_mm[node_of[row]] = readings[row].reading_mm;
+  return d;
+}
+
 Expected<model::TrackerLatticeData> TrackerLatticeFromCsv(const CsvTable& csv) {
   static const char* kCmd[3] = {"x_cmd_mm", "y_cmd_mm", "z_cmd_mm"};
   static const char* kPos[3] = {"x_mm", "y_mm", "z_mm"};
@@ -118,52 +168,15 @@ Expected<model::TrackerLatticeData> TrackerLatticeFromCsv(const CsvTable& csv) {
     VOLCOMP_TRY(csv.Require(kCmd[a]));
     VOLCOMP_TRY(csv.Require(kPos[a]));
   }
-  std::set<double> values[3];
-  std::vector<std::array<double, 3>> commands;
+  std::vector<TrackerLatticeReading> readings;
   for (const tools::CsvRow& r : csv.rows()) {
     tools::CsvFields f(r);
-    commands.push_back({f.Number(kCmd[0]), f.Number(kCmd[1]), f.Number(kCmd[2])});
-    VOLCOMP_TRY(f.status());
-    for (int a = 0; a < 3; ++a) values[a].insert(commands.back()[static_cast<std::size_t>(a)]);
-  }
-  model::TrackerLatticeData d;
-  d.name = csv.source();
-  for (int a = 0; a < 3; ++a) {
-    VOLCOMP_TRY_ASSIGN(d.lattice[static_cast<std::size_t>(a)], AxisOf(csv, values[a], "XYZ"[a]));
-  }
-  const GridAxes& g = d.lattice;
-  const std::size_t total = static_cast<std::size_t>(g[0].nodes) * g[1].nodes * g[2].nodes;
-  // Each node once, read row by row before the lattice is allocated (a file of n rows may
-  // describe a lattice of up to n³ nodes).
-  std::vector<std::size_t> node_of(csv.rows().size());
-  std::vector<model::Vec3> reading(csv.rows().size());
-  std::unordered_map<std::size_t, std::size_t> line_of;
-  for (std::size_t row = 0; row < csv.rows().size(); ++row) {
-    const tools::CsvRow& r = csv.rows()[row];
-    const std::array<double, 3>& c = commands[row];
-    const std::size_t i = NodeIndex(g[0], c[0]), j = NodeIndex(g[1], c[1]),
-                      k = NodeIndex(g[2], c[2]);
-    node_of[row] = (k * g[1].nodes + j) * g[0].nodes + i;
-    const auto first = line_of.emplace(node_of[row], r.line());
-    if (!first.second) {
-      return Fail(csv.LineFailure(r.line(), "node given twice (first on line " +
-                                                std::to_string(first.first->second) + ")"));
-    }
-    tools::CsvFields f(r);
-    reading[row] = {f.Number(kPos[0]), f.Number(kPos[1]), f.Number(kPos[2])};
+    readings.push_back({{f.Number(kCmd[0]), f.Number(kCmd[1]), f.Number(kCmd[2])},
+                        {f.Number(kPos[0]), f.Number(kPos[1]), f.Number(kPos[2])},
+                        r.line()});
     VOLCOMP_TRY(f.status());
   }
-  if (csv.rows().size() != total) {
-    return Fail(csv.LineFailure(
-        csv.header_line(), std::to_string(csv.rows().size()) + " nodes for a " +
-                               std::to_string(g[0].nodes) + "x" + std::to_string(g[1].nodes) + "x" +
-                               std::to_string(g[2].nodes) + " lattice (" + std::to_string(total) +
-                               " needed)"));
-  }
-  d.position_mm.assign(total, model::Vec3{});
-  for (std::size_t row = 0; row < csv.rows().size(); ++row)
-    d.position_mm[node_of[row]] = reading[row];
-  return d;
+  return TrackerLatticeFromReadings(csv.source(), csv.header_line(), readings);
 }
 
 Expected<model::TrackerLatticeData> LoadTrackerLatticeCsv(const std::string& path) {
