@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include "volcomp/metrology/inch.hpp"
+
 namespace volcomp::metrology {
 namespace {
 
@@ -28,9 +30,9 @@ constexpr MeasurementColumn kMeasurementColumns[] = {
     {"deviation_um", AxisKind::kLinear, 1.0, false, false},
     {"deviation_mm", AxisKind::kLinear, 1000.0, false, false},
     {"measured_mm", AxisKind::kLinear, 1000.0, true, false},
-    {"deviation_in", AxisKind::kLinear, 25400.0, false, true},
-    {"deviation_uin", AxisKind::kLinear, 0.0254, false, true},
-    {"measured_in", AxisKind::kLinear, 25400.0, true, true},
+    {"deviation_in", AxisKind::kLinear, kMmPerInch * 1000.0, false, true},
+    {"deviation_uin", AxisKind::kLinear, kMmPerInch / 1000.0, false, true},
+    {"measured_in", AxisKind::kLinear, kMmPerInch * 1000.0, true, true},
     {"deviation_arcsec", AxisKind::kRotary, 1.0, false, false},
     {"deviation_deg", AxisKind::kRotary, 3600.0, false, false},
     {"measured_deg", AxisKind::kRotary, 3600.0, true, false},
@@ -45,7 +47,7 @@ struct TargetColumn {
 
 constexpr TargetColumn kTargetColumns[] = {
     {"target_mm", AxisKind::kLinear, 1.0},
-    {"target_in", AxisKind::kLinear, 25.4},
+    {"target_in", AxisKind::kLinear, kMmPerInch},
     {"target_deg", AxisKind::kRotary, 1.0},
 };
 
