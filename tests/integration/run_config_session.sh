@@ -92,7 +92,7 @@ set +e
 set -e
 [[ $code == 1 ]] || { cat out.txt err.txt; fail "resolution change with a table active: exit $code"; }
 grep -q "while table id 7 (CRC-32 0x[0-9A-F]*) is active" err.txt || { cat err.txt; fail "no table named"; }
-grep -q "axis 1 X: units per step 0.001 -> 0.0025 mm; home position -5000 steps = -5.0000 mm -> -5000 steps = -12.5000 mm" \
+grep -q "axis 1 X: resolution 1000 steps/mm (1000 nm/step) -> 400 steps/mm (2500 nm/step); home position -5000 steps = -5.0000 mm -> -5000 steps = -12.5000 mm" \
   err.txt || { cat err.txt; fail "no home position in mm"; }
 grep -q -- "--force; nothing written" err.txt || fail "no --force hint"
 ! grep -qE ' 610#2[0-9A-F]' coarse.log || fail "frames written for a refused change"
@@ -103,6 +103,7 @@ import json
 r = json.load(open("coarse.json"))
 x = r["resolution_changes"][0]
 assert (x["name"], x["units_per_step_before"], x["units_per_step"]) == ("X", 0.001, 0.0025), x
+assert (x["steps_per_unit_before"], x["steps_per_unit"]) == (1000, 400), x  # 1/0.001, 1/0.0025
 assert abs(x["home_position_before"] + 5) < 1e-9 and abs(x["home_position"] + 12.5) < 1e-9, x
 assert r["outcome"] == "in force", r["outcome"]
 PY

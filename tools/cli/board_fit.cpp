@@ -9,6 +9,7 @@
 #include "volcomp/canopen/board_protocol.hpp"
 #include "volcomp/canopen_client/board_settings_io.hpp"
 #include "volcomp/hosted/settings_ini.hpp"
+#include "volcomp/image/axis_units.hpp"
 #include "volcomp/image/image_reader.hpp"
 #include "volcomp/image/table_demands.hpp"
 
@@ -77,9 +78,12 @@ std::vector<FitProblem> CheckTableFits(const table::TableView& v, const BoardIns
                                 " (0x2010/0x2011:" + std::to_string(a + 1) + ")"});
     }
     if (t.resolution_e9 != b.resolution_e9) {
-      out.push_back({false, axis + ": the table was built for " + std::to_string(t.resolution_e9) +
-                                " e-9 units per step, the board " + "runs " +
-                                std::to_string(b.resolution_e9) +
+      // The table's kind decides the unit (a kind mismatch is said above).
+      const bool rotary = t.kind == table::AxisKind::kRotary;
+      out.push_back({false, axis + ": the table was built for " +
+                                image::ResolutionText(t.resolution_e9, rotary) +
+                                ", the board runs " +
+                                image::ResolutionText(b.resolution_e9, rotary) +
                                 " (0x2012:" + std::to_string(a + 1) + ")"});
     }
   }

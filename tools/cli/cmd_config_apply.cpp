@@ -19,6 +19,7 @@
 #include "volcomp/canopen_client/board_settings_io.hpp"
 #include "volcomp/canopen_client/table_staging.hpp"
 #include "volcomp/hosted/settings_ini.hpp"
+#include "volcomp/image/axis_units.hpp"
 #include "volcomp/tools/hex.hpp"
 
 namespace volcomp::cli {
@@ -45,13 +46,18 @@ JsonValue ResolutionChanges(const BoardSettings& before, const BoardSettings& wa
     const AxisConfig& a = before.board.axis[i];
     const AxisConfig& b = wanted.board.axis[i];
     if (a.resolution_e9 == b.resolution_e9) continue;
-    const char* unit = b.kind == table::AxisKind::kRotary ? "deg" : "mm";
+    const bool rotary = b.kind == table::AxisKind::kRotary;
+    const char* unit = rotary ? "deg" : "mm";
     JsonValue x = JsonValue::Object();
     x.Set("axis", unsigned{i} + 1u);
     x.Set("name", std::string(1, b.name));
     x.Set("unit", unit);
     x.Set("units_per_step_before", a.resolution_e9 * 1e-9);
     x.Set("units_per_step", b.resolution_e9 * 1e-9);
+    x.Set("steps_per_unit_before", 1e9 / a.resolution_e9);  // 0x2012 is never 0 (1e-9 .. 4.29)
+    x.Set("steps_per_unit", 1e9 / b.resolution_e9);
+    x.Set("resolution_before", image::ResolutionText(a.resolution_e9, rotary));
+    x.Set("resolution", image::ResolutionText(b.resolution_e9, rotary));
     x.Set("home_position_steps_before", int64_t{a.home_position_steps});
     x.Set("home_position_steps", int64_t{b.home_position_steps});
     x.Set("home_position_before", a.home_position_steps * (a.resolution_e9 * 1e-9));
@@ -65,11 +71,11 @@ std::string ResolutionChangeText(const JsonValue& x) {
   char line[320];
   const std::string& unit = x.get("unit")->string;
   std::snprintf(line, sizeof line,
-                "axis %d %s: units per step %.9g -> %.9g %s; home position %lld steps = %.4f %s "
+                "axis %d %s: resolution %s -> %s; home position %lld steps = %.4f %s "
                 "-> %lld steps = %.4f %s",
                 static_cast<int>(x.get("axis")->integer), x.get("name")->string.c_str(),
-                x.get("units_per_step_before")->number, x.get("units_per_step")->number,
-                unit.c_str(), static_cast<long long>(x.get("home_position_steps_before")->integer),
+                x.get("resolution_before")->string.c_str(), x.get("resolution")->string.c_str(),
+                static_cast<long long>(x.get("home_position_steps_before")->integer),
                 x.get("home_position_before")->number, unit.c_str(),
                 static_cast<long long>(x.get("home_position_steps")->integer),
                 x.get("home_position")->number, unit.c_str());

@@ -9,6 +9,7 @@
 #include "config_view.hpp"
 #include "volcomp/canopen/setting_objects.hpp"
 #include "volcomp/hosted/settings_ini.hpp"
+#include "volcomp/image/axis_units.hpp"
 
 namespace volcomp::cli {
 namespace {
@@ -32,6 +33,14 @@ JsonValue ObjectData(const canopen::SettingObject& o,
   x.Set("unit", UnitOf(e));
   x.Set("in_force_text", ValueText(e, o.get(in_force)));
   x.Set("factory_text", ValueText(e, o.get(factory)));
+  const hosted::SettingKey* k = hosted::SettingKeyOf(e.id);
+  const uint32_t a = e.sub - 1u;
+  if (k != nullptr && k->form == hosted::SettingForm::kUnitsPerStep && a < table::kMaxAxes &&
+      o.get(board) > 0) {  // the value as the drive's datasheet gives it
+    const bool rotary = board.board.axis[a].kind == table::AxisKind::kRotary;
+    x.Set("steps_per_unit", 1e9 / static_cast<double>(o.get(board)));
+    x.Set("resolution", image::ResolutionText(static_cast<uint32_t>(o.get(board)), rotary));
+  }
   return x;
 }
 
@@ -67,7 +76,7 @@ void ShowText(const JsonValue& d, std::ostream& out) {
       << (d.get("settings_pending")->boolean ? PendingNote()
                                              : "settings in force (no edit or store pending)")
       << "\n";
-  char line[256];
+  char line[384];
   std::snprintf(line, sizeof line, "%-7s %-4s %-19s %-11s %-11s %-11s %s\n", "object", "axis",
                 "key", "value", "in force", "factory",
                 "unit (* = not the factory value, ! = not in force)");
@@ -79,11 +88,14 @@ void ShowText(const JsonValue& d, std::ostream& out) {
     const JsonValue* ch = x.get("channel");
     const std::string where =
         ch != nullptr ? "T" + std::to_string(ch->integer) : x.get("axis")->string;
-    std::snprintf(line, sizeof line, "%-7s %-4s %-19s %-11s %-11s %-11s %s%s%s\n",
-                  x.get("object")->string.c_str(), where.c_str(), x.get("key")->string.c_str(),
-                  x.get("text")->string.c_str(), x.get("in_force_text")->string.c_str(),
-                  x.get("factory_text")->string.c_str(), changed ? "* " : "",
-                  not_in_force ? "! " : "", x.get("unit")->string.c_str());
+    const JsonValue* resolution = x.get("resolution");
+    std::snprintf(
+        line, sizeof line, "%-7s %-4s %-19s %-11s %-11s %-11s %s%s%s%s%s%s\n",
+        x.get("object")->string.c_str(), where.c_str(), x.get("key")->string.c_str(),
+        x.get("text")->string.c_str(), x.get("in_force_text")->string.c_str(),
+        x.get("factory_text")->string.c_str(), changed ? "* " : "", not_in_force ? "! " : "",
+        x.get("unit")->string.c_str(), resolution != nullptr ? " (value: " : "",
+        resolution != nullptr ? resolution->string.c_str() : "", resolution != nullptr ? ")" : "");
     out << line;
   }
   const int64_t axes = d.get("axis_count")->integer;

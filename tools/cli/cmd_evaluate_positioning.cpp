@@ -94,8 +94,10 @@ const Command& EvaluatePositioningCommand() {
             AngleUncertaintyOptions(),
             JsonReport()}),
       RunEvaluatePositioning,
-      "Input: target_mm|target_deg, direction, run, deviation_um|deviation_mm|measured_mm|\n"
-      "deviation_arcsec|...; ',' or ';' or TAB separated (decimal comma with ';' or TAB);\n"
+      "Input: target_mm|target_in|target_deg, direction, run, deviation_um|deviation_mm|\n"
+      "measured_mm|deviation_in|deviation_uin|measured_in|deviation_arcsec|...; inch columns\n"
+      "are converted (results in mm and µm); ',' or ';' or TAB separated (decimal comma with\n"
+      "';' or TAB);\n"
       "'# key: value' lines before the header are the test conditions of the report.\n"
       "Non-finite readings are refused; implausible magnitudes and Grubbs outliers (99 %)\n"
       "are warned about with their line. See docs/metrology.md.\n"

@@ -117,7 +117,24 @@ struct ProgramOutputOptions {
   std::string out;
   std::optional<std::string> targets_csv;
   bool force = false;
+  std::string units;  // --units: of the program written; the options stay in mm
 };
+
+// --units mm|in: G21 or G20, the program's coordinates and feed in mm or inches.
+Expected<bool> ProgramInInches(const std::string& units) {
+  return ParseChoice<bool>("--units", units, {{"mm", false}, {"in", true}});
+}
+
+// The --units option of the program commands.
+OptionSpec UnitsOption() {
+  return {"--units",
+          nullptr,
+          "mm|in",
+          nullptr,
+          "mm",
+          "program in mm (G21) or inches (G20: coordinates and feed /25.4); the options stay in "
+          "mm and mm/min"};
+}
 
 ProgramOutputOptions ReadProgramOutput(Args& args) {
   ProgramOutputOptions o;
@@ -126,6 +143,7 @@ ProgramOutputOptions ReadProgramOutput(Args& args) {
   o.out = args.Value("--output", "-o").value_or("-");
   o.targets_csv = args.Value("--targets-csv");
   o.force = args.Flag("--force");
+  o.units = args.Value("--units").value_or("mm");
   return o;
 }
 
@@ -137,6 +155,7 @@ Outcome CheckProgramOutput(const ProgramOutputOptions& o, m::GcodeOptions* g) {
   if (!(g->feed > 0.0) || g->dwell_s < 0.0) {
     return UsageFailure("--feed must be positive, --dwell-s ≥ 0");
   }
+  VOLCOMP_TRY_ASSIGN(g->inch, ProgramInInches(o.units));
   if (!o.targets_csv) return Outcome::Ok();
   if (*o.targets_csv == o.out) return UsageFailure("--targets-csv and -o name the same file");
   return m::RefuseToOverwriteReadings(*o.targets_csv, o.force);
@@ -193,6 +212,9 @@ Expected<Output> RunProgramPositioning(Args& args, Context& ctx) {
                          "--cycle", cycle,
                          {{"linear", m::Cycle::kLinear}, {"pilgrim", m::Cycle::kPseudoPilgrim}}));
   VOLCOMP_TRY(CheckProgramOutput(files, &g));
+  if (g.inch && plan.rotary) {
+    return UsageFailure("--units in is for a linear axis: a rotary axis program is in degrees");
+  }
   VOLCOMP_TRY_ASSIGN(const std::vector<double> targets, AsUsage(m::PlanGostTargets(plan)));
   VOLCOMP_TRY_ASSIGN(const std::vector<m::CycleMove> moves,
                      AsUsage(m::BuildCycle(targets, cycle_kind, runs, overrun.value_or(0.0))));
@@ -346,7 +368,9 @@ Expected<Output> RunProgramCircular(Args& args, Context& ctx) {
   const auto run = args.Number("--run-in-deg");
   o.pause = args.Flag("--pause");
   const std::string out = args.Value("--output", "-o").value_or("-");
+  const std::string units = args.Value("--units").value_or("mm");
   VOLCOMP_TRY(args.Finish());
+  VOLCOMP_TRY_ASSIGN(o.inch, ProgramInInches(units));
   VOLCOMP_TRY_ASSIGN(o.plane, ParseChoice<m::CircularPlane>("--plane", plane,
                                                             {{"XY", m::CircularPlane::kXY},
                                                              {"XZ", m::CircularPlane::kZX},
@@ -394,7 +418,8 @@ const Command& ProgramPositioningCommand() {
              {"--overrun", nullptr, "O", "mm (deg with --rotary)", "5",
               "travel beyond the end targets for the reversal"},
              {"--axis", nullptr, "NAME", nullptr, nullptr,
-              "axis word of the G-code and of the template (default: X, C with --rotary)"}},
+              "axis word of the G-code and of the template (default: X, C with --rotary)"},
+             UnitsOption()},
             TemplateOutput()}),
       RunProgramPositioning,
       "The readings template names the axis in its preamble; `evaluate positioning` names the\n"
@@ -415,7 +440,8 @@ const Command& ProgramDiagonalCommand() {
               "target spacing along the diagonal (required)"},
              {"--name", nullptr, "+X+Y-Z", nullptr, nullptr,
               "diagonal name; checked against P1→P2 (default: derived from P1→P2)"},
-             {"--overrun-mm", nullptr, "O", "mm", "5", "travel beyond the end targets"}},
+             {"--overrun-mm", nullptr, "O", "mm", "5", "travel beyond the end targets"},
+             UnitsOption()},
             TemplateOutput()}),
       RunProgramDiagonal,
       "A diagonal is named by its start corner (ISO 230-6): P1 at the low end of X and Y and\n"
@@ -440,6 +466,7 @@ const Command& ProgramCircularCommand() {
         "run-in and run-out arc before and after each measured 360°, (0, 180]"},
        {"--pause", nullptr, nullptr, nullptr, nullptr,
         "M0 at the start point (fit the ballbar, then cycle start)"},
+       UnitsOption(),
        {"--output", "-o", "FILE", nullptr, "-", "G-code program to write (- = stdout)"}},
       RunProgramCircular,
       "The circle is run counter-clockwise (G3), then clockwise (G2): run-in arc, measured 360°,\n"

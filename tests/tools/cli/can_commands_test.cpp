@@ -313,6 +313,8 @@ TEST_F(CanCommands, SdoReadsWritesAndTheBoardsReasons) {
 
 TEST_F(CanCommands, ConfigShowTextIsALayoutOfItsJson) {
   ASSERT_EQ(Run({"sdo", "write", "2015:1", "800"}).code, 0);  // edited, not in force
+  // 2.5 µm per step (0x2012 holds pm per step): 1 / 0.0025 mm = 400 steps per mm.
+  ASSERT_EQ(Run({"sdo", "write", "2012:2", "2500000"}).code, 0);
   const CliResult json = Run({"config", "show", "--json"});
   ASSERT_EQ(json.code, 0) << json.err;
   const JsonValue d = Json(json);
@@ -323,6 +325,10 @@ TEST_F(CanCommands, ConfigShowTextIsALayoutOfItsJson) {
   int rows = 0;
   for (const JsonValue& x : d.get("objects")->array) {
     ++rows;
+    if (x.get("object")->string == "2012:2") {
+      EXPECT_EQ(x.get("steps_per_unit")->number, 400.0);
+      EXPECT_EQ(x.get("resolution")->string, "400 steps/mm (2500 nm/step)");
+    }
     if (x.get("object")->string != "2015:1") continue;
     EXPECT_EQ(x.get("value")->integer, 800);
     EXPECT_EQ(x.get("in_force")->integer, 1000);
@@ -333,6 +339,8 @@ TEST_F(CanCommands, ConfigShowTextIsALayoutOfItsJson) {
                        "\n2015:1  X    max_correction      800         1000        "
                        "1000        * ! steps"))
       << text.out;
+  EXPECT_TRUE(Contains(text.out, " (value: 400 steps/mm (2500 nm/step))\n")) << text.out;
+  EXPECT_TRUE(Contains(text.out, " (value: 1000 steps/mm (1000 nm/step))\n")) << text.out;
   EXPECT_TRUE(Contains(text.out, "(axes 4..6 are not used: --all shows their objects)"))
       << text.out;
 }

@@ -106,9 +106,10 @@ TEST(VolcompBuildImage, PartsThatDoNotBelongTogetherAreRefused) {
     Parts p("X=500");
     const auto r = RunCli({"build", "image", "--grid", p.grid, "--axis", p.axis, "-o", p.joined});
     EXPECT_EQ(r.code, tools::kExitFailed);
-    EXPECT_NE(r.err.find("the images do not belong together: axis X is 1000 nm/step in " + p.grid +
-                         " but 500 nm/step in " + p.axis),
-              std::string::npos)
+    EXPECT_NE(
+        r.err.find("the images do not belong together: axis X is 1000 steps/mm (1000 nm/step) in " +
+                   p.grid + " but 2000 steps/mm (500 nm/step) in " + p.axis),
+        std::string::npos)
         << r.err;
     EXPECT_FALSE(std::filesystem::exists(p.joined));
   }

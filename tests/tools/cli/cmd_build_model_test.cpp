@@ -163,8 +163,9 @@ TEST(VolcompBuildModel, BoardFileChecksTheImageBeforeItIsWritten) {
                   .ok());
   const auto other = RunCli(Appended(build, {"--allow-clamp"}));
   EXPECT_EQ(other.code, 1);
-  EXPECT_NE(other.err.find("axis 1 (X): the table was built for 1000000 e-9 units per step, the "
-                           "board runs 500000 (0x2012:1)"),
+  // 1000 nm/step is 1/0.001 mm = 1000 steps/mm; 0.0005 mm = 500 nm/step is 2000 steps/mm.
+  EXPECT_NE(other.err.find("axis 1 (X): the table was built for 1000 steps/mm (1000 nm/step), the "
+                           "board runs 2000 steps/mm (500 nm/step) (0x2012:1)"),
             std::string::npos)
       << other.err;
   const auto usage =

@@ -121,6 +121,39 @@ TEST(MetrologyCli, EvaluatePositioningReadsStandardInput) {
   EXPECT_NE(r.out.find("A       = 18.00"), std::string::npos);
 }
 
+// An inch file and its mm twin typed by hand (targets x 25.4 mm, µin x 0.0254 µm): the same
+// results in mm and µm, and the inch file's report says how it was read.
+TEST(MetrologyCli, EvaluatePositioningOfAnInchFileMatchesItsMillimetreTwin) {
+  std::string inch = "target_in,direction,run,deviation_uin\n";
+  std::string mm = "target_mm,direction,run,deviation_um\n";
+  const char* const in_targets[] = {"0", "4", "8"};
+  const char* const mm_targets[] = {"0", "101.6", "203.2"};
+  const char* const uin[] = {"100", "-50", "250", "0", "-125"};
+  const char* const um[] = {"2.54", "-1.27", "6.35", "0", "-3.175"};
+  for (int run = 0; run < 5; ++run) {
+    for (int t = 0; t < 3; ++t) {
+      for (const char* dir : {"up", "down"}) {
+        const int k = (run + t + (dir[0] == 'u' ? 0 : 2)) % 5;
+        const std::string tail = std::string(",") + dir + "," + std::to_string(run + 1) + ",";
+        inch += in_targets[t] + tail + uin[k] + "\n";
+        mm += mm_targets[t] + tail + um[k] + "\n";
+      }
+    }
+  }
+  const auto a = RunCli({"evaluate", "positioning", "-", "--standard", "both"}, inch);
+  const auto b = RunCli({"evaluate", "positioning", "-", "--standard", "both"}, mm);
+  ASSERT_EQ(a.code, 0) << a.err;
+  ASSERT_EQ(b.code, 0) << b.err;
+  const std::string units = "units: read in inches, results in mm/µm\n";
+  const std::size_t at = a.out.find(units);
+  ASSERT_NE(at, std::string::npos) << a.out;
+  EXPECT_EQ(b.out.find("units:"), std::string::npos) << b.out;
+  EXPECT_EQ(std::string(a.out).erase(at, units.size()), b.out);
+  EXPECT_NE(b.out.find("203.200"), std::string::npos) << b.out;
+  const auto j = RunCli({"evaluate", "positioning", "-", "--json"}, inch);
+  EXPECT_NE(j.out.find("\"input_units\": \"in\""), std::string::npos) << j.out;
+}
+
 // The GOST example's axis is 1500.41 mm long. With a 0.5 ppm laser, a 2 µm drift test and the
 // material at 23 °C (preamble, decimal comma): instrument 0.6·2·0.5·1.50041 = 0.9004,
 // thermometer 0.6·11.5·1.50041·0.2 = 2.0706, expansion 0.6·1.50041·3·2 = 5.4015, environment

@@ -31,6 +31,32 @@ TEST(MetrologyCli, ProgramsAreGcode) {
   EXPECT_NE(r.err.find("warning: increment adjusted from 90 to "), std::string::npos) << r.err;
 }
 
+// --units in: G20, the options still in mm (25.4 mm radius = 1 in, 254 mm/min = 10 in/min).
+TEST(MetrologyCli, ProgramsInInches) {
+  auto r = RunCli({"program", "circular", "--radius", "25.4", "--feed", "254", "--units", "in"});
+  EXPECT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("G20 G90 G94 G17 G64\n"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("\nF10.000\nG3 X1.00000 Y0.00000 I0.00000 J1.00000"), std::string::npos)
+      << r.out;
+  r = RunCli({"program", "positioning", "--start", "25.4", "--end", "279.4", "--pitch", "25.4",
+              "--count", "2", "--feed", "254", "--units", "in"});
+  EXPECT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("G20 G90 G94\n"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("\nF10.000\n"), std::string::npos) << r.out;
+  r = RunCli({"program", "diagonal", "--p1", "0,0,0", "--p2", "76.2,101.6,0", "--increment-mm",
+              "127", "--units", "in"});
+  EXPECT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("G1 X3.00000 Y4.00000 Z0.00000 (P2 up run 1)"), std::string::npos) << r.out;
+  r = RunCli({"program", "circular", "--radius", "10", "--units", "inch"});
+  EXPECT_EQ(r.code, tools::kExitUsage);
+  EXPECT_NE(r.err.find("--units must be mm or in"), std::string::npos) << r.err;
+  r = RunCli({"program", "positioning", "--rotary", "--pitch", "10", "--units", "in"});
+  EXPECT_EQ(r.code, tools::kExitUsage);
+  EXPECT_NE(r.err.find("--units in is for a linear axis: a rotary axis program is in degrees"),
+            std::string::npos)
+      << r.err;
+}
+
 TEST(MetrologyCli, ProgramBadOptions) {
   auto r = RunCli({"program", "positioning", "--end", "100", "--pitch", "50", "--count", "11"});
   EXPECT_EQ(r.code, tools::kExitUsage);

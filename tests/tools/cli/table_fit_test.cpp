@@ -98,7 +98,11 @@ TEST(TableFit, AnotherResolutionOrFewerAxesIsAMismatchNotALimit) {
   ASSERT_EQ(p.size(), 1u);
   EXPECT_FALSE(p[0].limit);
   EXPECT_NE(p[0].message.find("axis 2 (Y)"), std::string::npos) << p[0].message;
-  EXPECT_NE(p[0].message.find("500000"), std::string::npos) << p[0].message;
+  // 1 µm per step is 1000 steps/mm; 0.5 µm per step (500000 pm) is 2000 steps/mm.
+  EXPECT_NE(p[0].message.find("the table was built for 1000 steps/mm (1000 nm/step), the board "
+                              "runs 2000 steps/mm (500 nm/step) (0x2012:2)"),
+            std::string::npos)
+      << p[0].message;
   b = Board(1000, 2000, 1000);
   b.axes.pop_back();
   p = cli::CheckTableFits(*view, b);

@@ -53,5 +53,15 @@ TEST(image_axis_units, StepSizes) {
               "between 1 and 2^32-1");
 }
 
+// Hand-worked: 400 steps/mm is 1/400 mm = 2.5 µm = 2500 nm per step (0x2012 = 2500000); 1000
+// steps per degree is 0.001° = 1000 µ° per step; 3 steps/mm is 333333.333 nm (0x2012 rounds
+// 1/3 mm to 333333333 pm, which is 3.000000003 steps/mm, shown to 9 digits as 3).
+TEST(image_axis_units, ResolutionAsTheShopSaysIt) {
+  EXPECT_EQ(ResolutionText(2500000, false), "400 steps/mm (2500 nm/step)");
+  EXPECT_EQ(ResolutionText(1000000, true), "1000 steps/deg (1000 µ°/step)");
+  EXPECT_EQ(ResolutionText(333333333, false), "3 steps/mm (333333.333 nm/step)");
+  EXPECT_EQ(ResolutionText(0, false), "0 nm/step");
+}
+
 }  // namespace
 }  // namespace volcomp::image

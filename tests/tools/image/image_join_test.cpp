@@ -132,9 +132,10 @@ TEST(ImageJoin, PartsThatDoNotBelongTogetherAreRefused) {
     ImageRequest a = AxisRequest();
     a.axes[0].resolution_e9 = 1000000;
     const LoadedImage other = Load(a, "a.vct");
-    ExpectFailure(JoinImages({"g.vct", &grid}, {"a.vct", &other}, {}), Error::kInputInvalid,
-                  {"the images do not belong together: axis Z is 500 nm/step in g.vct but "
-                   "1000 nm/step in a.vct"});
+    ExpectFailure(
+        JoinImages({"g.vct", &grid}, {"a.vct", &other}, {}), Error::kInputInvalid,
+        {"the images do not belong together: axis Z is 2000 steps/mm (500 nm/step) in g.vct "
+         "but 1000 steps/mm (1000 nm/step) in a.vct"});
   }
   {  // An axis the grid image does not have.
     ImageRequest a = AxisRequest();
@@ -147,8 +148,10 @@ TEST(ImageJoin, PartsThatDoNotBelongTogetherAreRefused) {
     ImageRequest a = AxisRequest();
     a.axes[1].kind = table::AxisKind::kRotary;
     const LoadedImage other = Load(a, "a.vct");
-    ExpectFailure(JoinImages({"g.vct", &grid}, {"a.vct", &other}, {}), Error::kInputInvalid,
-                  {"axis Y is 1000 nm/step in g.vct but 1000 µdeg/step (rotary) in a.vct"});
+    ExpectFailure(
+        JoinImages({"g.vct", &grid}, {"a.vct", &other}, {}), Error::kInputInvalid,
+        {"axis Y is 1000 steps/mm (1000 nm/step) in g.vct but 1000 steps/deg (1000 µ°/step) "
+         "in a.vct"});
   }
   // The parts the wrong way round.
   ExpectFailure(JoinImages({"a.vct", &axis}, {"g.vct", &grid}, {}), Error::kInputInvalid,

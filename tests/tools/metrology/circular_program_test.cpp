@@ -255,6 +255,25 @@ TEST(CircularProgram, PauseAtTheStartPoint) {
   EXPECT_LT(m0, text.find("G3 "));
 }
 
+// Hand-checked: R = 25.4 mm = 1 in about the origin, run-in 90°: the CCW run-in starts at -90°,
+// (0, -1) in, and ends at 0°, (1, 0) in, with the centre 1 in along +Y of its start (J1);
+// 254 mm/min is 10 in/min.
+TEST(CircularProgram, InInches) {
+  CircularProgramOptions o;
+  o.radius_mm = 25.4;
+  o.feed_mm_min = 254;
+  o.inch = true;
+  const std::string text = ValueOf(EmitCircularProgram(o));
+  EXPECT_NE(text.find("\nG20 G90 G94 G17 G64\n"), std::string::npos) << text;
+  EXPECT_EQ(text.find("G21"), std::string::npos) << text;
+  EXPECT_NE(text.find("G0 X0.00000 Y-1.00000 Z0.00000 (start of the CCW run-in)\n"),
+            std::string::npos)
+      << text;
+  EXPECT_NE(text.find("\nF10.000\nG3 X1.00000 Y0.00000 I0.00000 J1.00000 (CCW run-in 90 deg)\n"),
+            std::string::npos)
+      << text;
+}
+
 TEST(CircularProgram, ImpossiblePlansAreRefused) {
   CircularProgramOptions o;
   testing::ExpectFailure(EmitCircularProgram(o), Error::kInvalidArgument, {"radius"});

@@ -61,6 +61,47 @@ TEST(MetrologyPositioningInput, HeaderProblems) {
                 {"p.csv:1:", "no data rows"});
 }
 
+// Inch columns against their hand-converted mm twins (1 in = 25.4 mm = 25400 µm, 1 µin =
+// 0.0254 µm): the same targets in mm and deviations in µm.
+void ExpectTwins(const std::string& inch, const std::string& mm) {
+  const auto table_in = testing::ValueOf(tools::CsvTable::ReadString(inch, "in.csv"));
+  const auto table_mm = testing::ValueOf(tools::CsvTable::ReadString(mm, "mm.csv"));
+  const PositioningData a = testing::ValueOf(ReadPositioningCsv(table_in));
+  const PositioningData b = testing::ValueOf(ReadPositioningCsv(table_mm));
+  EXPECT_TRUE(a.read_in_inches);
+  EXPECT_FALSE(b.read_in_inches);
+  ASSERT_EQ(a.readings.size(), b.readings.size());
+  for (std::size_t i = 0; i < a.readings.size(); ++i) {
+    EXPECT_NEAR(a.readings[i].target, b.readings[i].target, 1e-12) << i;
+    EXPECT_NEAR(a.readings[i].deviation, b.readings[i].deviation, 1e-9) << i;
+    EXPECT_EQ(a.readings[i].direction, b.readings[i].direction) << i;
+  }
+}
+
+TEST(MetrologyPositioningInput, InchColumnsAreReadAsMillimetres) {
+  ExpectTwins("target_in,direction,run,deviation_uin\n0,up,1,100\n1,up,1,-50\n2,down,1,250\n",
+              "target_mm,direction,run,deviation_um\n0,up,1,2.54\n25.4,up,1,-1.27\n"
+              "50.8,down,1,6.35\n");
+  ExpectTwins("target_in,direction,run,deviation_in\n0,up,1,0.0001\n1,up,1,-0.0002\n",
+              "target_mm,direction,run,deviation_um\n0,up,1,2.54\n25.4,up,1,-5.08\n");
+  // measured_in against inch or mm targets: 1.0002 in at 1 in (25.4 mm) is +0.0002 in = 5.08 µm.
+  ExpectTwins("target_in,direction,run,measured_in\n1,up,1,1.0002\n2,up,1,1.9999\n",
+              "target_mm,direction,run,deviation_um\n25.4,up,1,5.08\n50.8,up,1,-2.54\n");
+  ExpectTwins("target_mm,direction,run,measured_in\n25.4,up,1,1.0002\n",
+              "target_mm,direction,run,deviation_um\n25.4,up,1,5.08\n");
+  ExpectTwins("deviation_in,1+,1-,2+\ntarget_in,0,0,1\n1,0.0001,-0.0002,0\n",
+              "deviation_um,1+,1-,2+\ntarget_mm,0,0,25.4\n1,2.54,-5.08,0\n");
+}
+
+TEST(MetrologyPositioningInput, InchColumnProblems) {
+  ExpectFailure(LoadPositioning("target_mm,target_in,direction,run,deviation_um\n0,0,up,1,1\n"),
+                Error::kInputInvalid, {"p.csv:1:", "both \"target_mm\" and \"target_in\""});
+  ExpectFailure(LoadPositioning("target_in,direction,run,deviation_arcsec\n0,up,1,1\n"),
+                Error::kInputInvalid, {"p.csv:1:", "does not fit \"target_in\""});
+  ExpectFailure(LoadPositioning("deviation_arcsec,1+\ntarget_in,0\n1,1\n"), Error::kInputInvalid,
+                {"p.csv:2:", "expected the row \"target_deg\""});
+}
+
 const char* const kWide =
     "deviation_um,1+,1-,2+,2-\n"
     "target_mm,0,0,150,150\n"

@@ -150,6 +150,25 @@ TEST(MetrologyTestProgram, GcodeMarksEveryMeasuredStop) {
   EXPECT_EQ(g.substr(g.size() - 3), "M2\n");
 }
 
+// Hand-checked: a 3-4-5 diagonal from (1, 2, 0) in = (25.4, 50.8, 0) mm; the stop 127 mm = 5 in
+// along it is (1 + 3, 2 + 4, 0) in; the overrun 25.4 mm before the start is (0.4, 1.2, 0) in;
+// 254 mm/min is 10 in/min.
+TEST(MetrologyTestProgram, GcodeInInches) {
+  const auto moves = ValueOf(BuildCycle({0.0, 127.0}, Cycle::kLinear, 1, 25.4));
+  GcodeOptions o;
+  o.axes = {"X", "Y", "Z"};
+  o.origin = {25.4, 50.8, 0.0};
+  o.direction = {0.6, 0.8, 0.0};
+  o.feed = 254;
+  o.inch = true;
+  const std::string g = ValueOf(EmitGcode(moves, o));
+  EXPECT_NE(g.find("G20 G90 G94\n"), std::string::npos) << g;
+  EXPECT_EQ(g.find("G21"), std::string::npos) << g;
+  EXPECT_NE(g.find("G0 X0.40000 Y1.20000 Z0.00000\nF10.000\n"), std::string::npos) << g;
+  EXPECT_NE(g.find("G1 X1.00000 Y2.00000 Z0.00000 (P1 up run 1)"), std::string::npos) << g;
+  EXPECT_NE(g.find("G1 X4.00000 Y6.00000 Z0.00000 (P2 up run 1)"), std::string::npos) << g;
+}
+
 TEST(MetrologyTestProgram, GcodeAlongADiagonal) {
   const auto moves = ValueOf(BuildCycle({0.0, 5.0}, Cycle::kLinear, 1, 1.0));
   GcodeOptions o;

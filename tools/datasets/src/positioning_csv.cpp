@@ -56,7 +56,8 @@ Expected<PositioningFile> PositioningFileFromCsv(const CsvTable& csv) {
   if (!metrology::HoldsPositioningReadings(csv)) {
     return Fail(csv.LineFailure(
         csv.header_line(),
-        "unrecognised header: expected the raw readings (target_mm or target_deg, direction, run "
+        "unrecognised header: expected the raw readings (target_mm, target_in or target_deg, "
+        "direction, run "
         "and a measurement column such as deviation_um; or the wide layout deviation_um,1+,1-,...)"
         " or the mean deviations (position_mm, dev_forward_um [, dev_reverse_um])"));
   }

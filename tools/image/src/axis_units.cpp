@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cstdio>
 
 #include "volcomp/tools/csv.hpp"
 
@@ -25,6 +26,19 @@ Expected<char> CheckName(char c, const std::string& option) {
 }  // namespace
 
 bool IsRotaryName(char name) { return name == 'A' || name == 'B' || name == 'C'; }
+
+std::string ResolutionText(uint32_t resolution_e9, bool rotary) {
+  // steps per unit = 1e9 / resolution_e9; nm (µ°) per step = pm (ndeg) per step / 1000.
+  const char* per_step = rotary ? "µ°/step" : "nm/step";
+  char text[96];
+  if (resolution_e9 == 0) {
+    std::snprintf(text, sizeof text, "0 %s", per_step);
+  } else {
+    std::snprintf(text, sizeof text, "%.9g steps/%s (%.9g %s)", 1e9 / resolution_e9,
+                  rotary ? "deg" : "mm", resolution_e9 / 1000.0, per_step);
+  }
+  return text;
+}
 
 std::string ColumnName(char axis) {
   return std::string(1, static_cast<char>(std::tolower(static_cast<unsigned char>(axis))));

@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "section_copy.hpp"
+#include "volcomp/image/axis_units.hpp"
 #include "volcomp/table/table_writer.hpp"
 
 namespace volcomp::image {
@@ -20,13 +21,7 @@ std::string AxisNames(const table::TableView& v) {
 }
 
 std::string UnitsPerStep(const table::AxisInfo& a) {
-  const bool rotary = a.kind == table::AxisKind::kRotary;
-  // resolution_e9: pm/step (linear) or ndeg/step (rotary); shown as nm/step or µdeg/step as the
-  // --resolution-nm option takes them.
-  const double v = a.resolution_e9 / 1000.0;
-  char text[64];
-  std::snprintf(text, sizeof text, "%.6g %s", v, rotary ? "µdeg/step (rotary)" : "nm/step");
-  return text;
+  return ResolutionText(a.resolution_e9, a.kind == table::AxisKind::kRotary);
 }
 
 // The index of the axis named `name` in `v`, or -1.

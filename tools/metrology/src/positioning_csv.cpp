@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include "volcomp/metrology/inch.hpp"
+
 namespace volcomp::metrology {
 namespace {
 
@@ -20,16 +22,48 @@ struct MeasurementColumn {
   AxisKind kind;
   double scale;   // value·scale = deviation (µm or arc-seconds)
   bool absolute;  // value is the measured position, not the deviation
+  bool inch;      // in inches or micro-inches (converted: the results are in mm and µm)
 };
 
+// 1 in = 25.4 mm exactly (international inch, 1959): 1 in = 25400 µm, 1 µin = 0.0254 µm.
 constexpr MeasurementColumn kMeasurementColumns[] = {
-    {"deviation_um", AxisKind::kLinear, 1.0, false},
-    {"deviation_mm", AxisKind::kLinear, 1000.0, false},
-    {"measured_mm", AxisKind::kLinear, 1000.0, true},
-    {"deviation_arcsec", AxisKind::kRotary, 1.0, false},
-    {"deviation_deg", AxisKind::kRotary, 3600.0, false},
-    {"measured_deg", AxisKind::kRotary, 3600.0, true},
+    {"deviation_um", AxisKind::kLinear, 1.0, false, false},
+    {"deviation_mm", AxisKind::kLinear, 1000.0, false, false},
+    {"measured_mm", AxisKind::kLinear, 1000.0, true, false},
+    {"deviation_in", AxisKind::kLinear, kMmPerInch * 1000.0, false, true},
+    {"deviation_uin", AxisKind::kLinear, kMmPerInch / 1000.0, false, true},
+    {"measured_in", AxisKind::kLinear, kMmPerInch * 1000.0, true, true},
+    {"deviation_arcsec", AxisKind::kRotary, 1.0, false, false},
+    {"deviation_deg", AxisKind::kRotary, 3600.0, false, false},
+    {"measured_deg", AxisKind::kRotary, 3600.0, true, false},
 };
+
+// A target column and what one of its units is in mm (degrees on a rotary axis).
+struct TargetColumn {
+  const char* name;
+  AxisKind kind;
+  double scale;
+};
+
+constexpr TargetColumn kTargetColumns[] = {
+    {"target_mm", AxisKind::kLinear, 1.0},
+    {"target_in", AxisKind::kLinear, kMmPerInch},
+    {"target_deg", AxisKind::kRotary, 1.0},
+};
+
+const TargetColumn* FindTarget(const std::string& name) {
+  for (const auto& c : kTargetColumns) {
+    if (name == c.name) return &c;
+  }
+  return nullptr;
+}
+
+bool HasTargetColumn(const CsvTable& t) {
+  for (const auto& c : kTargetColumns) {
+    if (t.find(c.name)) return true;
+  }
+  return false;
+}
 
 const MeasurementColumn* FindMeasurement(const std::string& name) {
   for (const auto& m : kMeasurementColumns) {
@@ -46,7 +80,9 @@ std::string MeasurementNames() {
 
 Expected<double> ToDeviation(
     const CsvTable& t, const CsvRow& row, const MeasurementColumn& m, double value, double target) {
-  double diff = m.absolute ? value - target : value;
+  // An absolute column's unit in the target's unit (mm or degrees): measured_in 25400 µm = 25.4 mm.
+  const double unit = m.absolute ? m.scale / (m.kind == AxisKind::kLinear ? 1000.0 : 3600.0) : 1.0;
+  double diff = m.absolute ? value - target / unit : value;  // in the column's unit
   if (m.absolute && m.kind == AxisKind::kRotary) {
     diff = std::remainder(diff, 360.0);  // into [-180, 180]
     if (diff == -180.0) diff = 180.0;
@@ -79,14 +115,18 @@ Expected<int> ParseRun(const CsvTable& t,
 Expected<PositioningData> ReadLong(const CsvTable& t) {
   PositioningData d;
   d.source = t.source();
-  const bool lin = t.find("target_mm").has_value();
-  const bool rot = t.find("target_deg").has_value();
-  if (lin && rot) {
-    return Fail(
-        t.LineFailure(t.header_line(), "both \"target_mm\" and \"target_deg\" columns; give one"));
+  const TargetColumn* target = nullptr;
+  for (const auto& name : t.header()) {
+    const TargetColumn* c = FindTarget(name);
+    if (c == nullptr) continue;
+    if (target != nullptr) {
+      return Fail(t.LineFailure(t.header_line(), "both \"" + std::string(target->name) +
+                                                     "\" and \"" + name + "\" columns; give one"));
+    }
+    target = c;
   }
-  const std::string target_col = lin ? "target_mm" : "target_deg";
-  d.kind = lin ? AxisKind::kLinear : AxisKind::kRotary;
+  const std::string target_col = target->name;  // the caller checked there is one
+  d.kind = target->kind;
   VOLCOMP_TRY(t.Require("direction"));
   VOLCOMP_TRY(t.Require("run"));
   const MeasurementColumn* meas = nullptr;
@@ -113,7 +153,8 @@ Expected<PositioningData> ReadLong(const CsvTable& t) {
   for (const CsvRow& row : t.rows()) {
     PositioningReading r;
     r.line = row.line();
-    VOLCOMP_TRY_ASSIGN(r.target, row.Number(target_col));
+    VOLCOMP_TRY_ASSIGN(const double target_value, row.Number(target_col));
+    r.target = target_value * target->scale;
     VOLCOMP_TRY_ASSIGN(const std::string direction, row.Text("direction"));
     const auto dir = ParseDirection(direction);
     if (!dir) {
@@ -132,6 +173,7 @@ Expected<PositioningData> ReadLong(const CsvTable& t) {
   }
   d.column = meas->name;
   d.column_scale = meas->scale;
+  d.read_in_inches = meas->inch || target->scale != 1.0;
   return d;
 }
 
@@ -170,17 +212,19 @@ Expected<PositioningData> ReadWide(const CsvTable& t, const MeasurementColumn& m
   // Every row has as many fields as the header (the reader checks), so fields()[c] is safe.
   const CsvRow& target_row = t.rows().front();
   const std::vector<std::string>& target_fields = target_row.fields();
-  const std::string target_label = meas.kind == AxisKind::kLinear ? "target_mm" : "target_deg";
-  if (target_fields[0] != target_label) {
-    return Fail(t.LineFailure(target_row.line(), "expected the row \"" + target_label +
-                                                     "\" with the target positions, found \"" +
+  const TargetColumn* target = FindTarget(target_fields[0]);
+  if (target == nullptr || target->kind != meas.kind) {
+    const std::string labels =
+        meas.kind == AxisKind::kLinear ? "\"target_mm\" or \"target_in\"" : "\"target_deg\"";
+    return Fail(t.LineFailure(target_row.line(), "expected the row " + labels +
+                                                     " with the target positions, found \"" +
                                                      target_fields[0] + "\""));
   }
   std::vector<double> targets;
   std::map<long long, std::pair<double, std::size_t>> target_of_j;  // j -> (target, column)
   for (std::size_t c = 1; c < header.size(); ++c) {
     VOLCOMP_TRY_ASSIGN(const double p, target_row.Number(c));
-    targets.push_back(p);
+    targets.push_back(p * target->scale);
     const long long j = cols[c - 1].first;
     const auto it = target_of_j.find(j);
     if (it != target_of_j.end() && it->second.first != p) {
@@ -212,6 +256,7 @@ Expected<PositioningData> ReadWide(const CsvTable& t, const MeasurementColumn& m
   }
   d.column = meas.name;
   d.column_scale = meas.scale;
+  d.read_in_inches = meas.inch || target->scale != 1.0;
   return d;
 }
 
@@ -222,7 +267,7 @@ bool HoldsPositioningReadings(const CsvTable& table) {
   if (FindMeasurement(header.front()) && header.size() > 1 && ParseWideColumn(header[1])) {
     return true;
   }
-  return table.find("target_mm").has_value() || table.find("target_deg").has_value();
+  return HasTargetColumn(table);
 }
 
 Expected<PositioningData> ReadPositioningCsv(const CsvTable& table) {
@@ -230,10 +275,11 @@ Expected<PositioningData> ReadPositioningCsv(const CsvTable& table) {
   if (const MeasurementColumn* m = FindMeasurement(header.front())) {
     if (header.size() > 1 && ParseWideColumn(header[1])) return ReadWide(table, *m);
   }
-  if (!table.find("target_mm") && !table.find("target_deg")) {
+  if (!HasTargetColumn(table)) {
     return Fail(table.LineFailure(
         table.header_line(),
-        "unrecognised header: expected the long layout (target_mm or target_deg, direction, run "
+        "unrecognised header: expected the long layout (target_mm, target_in or target_deg, "
+        "direction, run "
         "and a measurement column) or the wide layout (first cell a measurement column such as "
         "deviation_um, then columns like 1+,1-,2+,...)"));
   }

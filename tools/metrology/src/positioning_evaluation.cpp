@@ -41,6 +41,7 @@ Expected<PositioningEvaluation> EvaluatePositioningReadings(const PositioningDat
                                                             const PositioningTestOptions& options) {
   PositioningEvaluation ev;
   ev.source = data.source;
+  ev.read_in_inches = data.read_in_inches;
   ev.conditions = conditions;
   VOLCOMP_TRY_ASSIGN(const PositioningSet set, GroupReadings(data, options.grouping));
   ev.kind = set.kind;

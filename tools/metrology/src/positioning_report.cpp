@@ -468,6 +468,7 @@ JsonValue PositioningEvaluationJson(const PositioningEvaluation& ev) {
   j.Set("conditions", ConditionsJson(ev.conditions));
   j.Set("positions", static_cast<int64_t>(ev.positions));
   j.Set("axis_kind", ev.kind == AxisKind::kLinear ? "linear" : "rotary");
+  j.Set("input_units", ev.read_in_inches ? "in" : ev.kind == AxisKind::kLinear ? "mm" : "deg");
   JsonValue directions = JsonValue::Array();
   if (ev.has_up) directions.Push(DirectionName(Direction::kUp));
   if (ev.has_down) directions.Push(DirectionName(Direction::kDown));
@@ -487,7 +488,9 @@ void WritePositioningEvaluationText(std::ostream& out, const JsonValue& ev) {
     directions += DirectionSymbol(d.string == "up" ? Direction::kUp : Direction::kDown);
   }
   out << json::Text(ev, "axis_kind") << " axis, " << json::Integer(ev, "positions")
-      << " target positions, directions: " << directions << "\n\n";
+      << " target positions, directions: " << directions << "\n";
+  if (json::Text(ev, "input_units") == "in") out << "units: read in inches, results in mm/µm\n";
+  out << "\n";
   for (const JsonValue& r : json::At(ev, "evaluations").array) {
     WritePositioningText(out, r);
     out << "\n";

@@ -33,6 +33,12 @@ Expected<std::vector<AxisDef>> MakeAxisDefs(const std::vector<char>& names,
                                             const std::string& resolution_nm,
                                             const std::string& steps_per_unit);
 
+/// A step size as the shop says it, steps per unit first: "400 steps/mm (2500 nm/step)", on a
+/// rotary axis "1000 steps/deg (1000 µ°/step)". `resolution_e9` is units (mm or degrees) per step
+/// x 1e9 as object 0x2012 and the image store it (pm or nano-degrees per step); both figures are
+/// printed to 9 significant digits; 0 (no resolution) gives "0 nm/step" / "0 µ°/step".
+std::string ResolutionText(uint32_t resolution_e9, bool rotary);
+
 /// Lower-case column prefix of an axis ("x" for 'X').
 std::string ColumnName(char axis);
 

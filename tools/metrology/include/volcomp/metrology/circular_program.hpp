@@ -28,6 +28,8 @@ struct CircularProgramOptions {
   double start_angle_deg = 0.0;                    // where each measured 360° begins and ends
   double run_deg = 90.0;                           // run-in and run-out arc, (0, 180]
   bool pause = false;  // M0 at the start point (fit the ballbar, then cycle start)
+  bool inch = false;   // G20: coordinates / 25.4 with 5 decimals (0.254 µm), feed / 25.4 in/min
+                       // (3 decimals); the options above stay in mm and mm/min
 };
 
 /// "XY", "XZ" (= "ZX") or "YZ"; the plane's G-code word is G17, G18, G19.

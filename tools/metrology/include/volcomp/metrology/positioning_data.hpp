@@ -32,6 +32,7 @@ struct PositioningData {
   std::vector<PositioningReading> readings;
   std::string column = "deviation_um";  // the measurement column as named in the file
   double column_scale = 1.0;            // one unit of that column in µm or arc-seconds
+  bool read_in_inches = false;  // a target or measurement column in inches (or µin): converted
 };
 
 /// The approaches to one target position in one direction, ordered by run.

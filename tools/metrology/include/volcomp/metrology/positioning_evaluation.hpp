@@ -30,7 +30,8 @@ struct PositioningTestOptions {
 };
 
 struct PositioningEvaluation {
-  std::string source;  // the table's source (file name or "<stdin>")
+  std::string source;           // the table's source (file name or "<stdin>")
+  bool read_in_inches = false;  // the file's targets or readings were in inches (results: mm, µm)
   TestConditions conditions;
   AxisKind kind = AxisKind::kLinear;
   std::size_t positions = 0;               // target positions

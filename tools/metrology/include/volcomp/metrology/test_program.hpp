@@ -65,12 +65,14 @@ struct GcodeOptions {
   double feed = 1000.0;                // mm/min (or deg/min)
   double dwell_s = 2.0;                // pause at each measured stop
   int decimals = 3;
+  bool inch = false;  // G20: coordinates / 25.4 with decimals + 2 digits (0.00001 in = 0.254 µm),
+                      // feed / 25.4 in in/min (3 decimals); positions, origin, feed stay in mm
 };
 
-/// A simple program: G21 G90 G94, a G0 to the first stop, G1 moves with F, G4 P<seconds> dwells
-/// at the measured stops with a comment naming target, direction and run, and M2 at the end.
-/// Axis coordinates are origin + position·direction (a failure unless axes, origin and direction
-/// have one entry per axis).
+/// A simple program: G21 (G20 with `inch`) G90 G94, a G0 to the first stop, G1 moves with F, G4
+/// P<seconds> dwells at the measured stops with a comment naming target, direction and run, and M2
+/// at the end. Axis coordinates are origin + position·direction (a failure unless axes, origin and
+/// direction have one entry per axis).
 Expected<std::string> EmitGcode(const std::vector<CycleMove>& moves, const GcodeOptions& options);
 
 }  // namespace volcomp::metrology

@@ -1,0 +1,9 @@
+// The inch, for inch data files and inch (G20) programs.
+#pragma once
+
+namespace volcomp::metrology {
+
+/// 1 in = 25.4 mm exactly (the international inch of 1959; NIST SP 811 B.8).
+inline constexpr double kMmPerInch = 25.4;
+
+}  // namespace volcomp::metrology
