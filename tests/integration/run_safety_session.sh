@@ -119,7 +119,7 @@ for section in $sections; do
         --resolution-nm X=2000,Y=1000,Z=1000 >/dev/null
       run 1 "$o" "$volcomp" upload "$work/x2.vct" --can "$can" --quiet
       grep -q "not yet in force" "$o" || fail "no warning about settings not in force"
-      grep -q "the board runs 1000000 (0x2012:1)" "$o" ||
+      grep -q "the board runs 1000 steps/mm (1000 nm/step) (0x2012:1)" "$o" ||
         fail "the refusal does not name the resolution in force"
       unlock
       "$volcomp" sdo write 2101:0 3 --can "$can" >/dev/null  # clear: then nothing is staged

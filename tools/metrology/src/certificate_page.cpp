@@ -61,10 +61,26 @@ std::string Condition(const std::vector<std::pair<std::string, std::string>>& li
 }
 
 // The conditions the table has no column for, as "key: value; ..." (the geometry lines the
-// diagonal templates carry and the program name stay in the JSON).
+// diagonal templates carry, the program name and the uncertainty budget's inputs, which the
+// uncertainty column stands for, stay in the JSON).
 std::string OtherConditions(const std::vector<std::pair<std::string, std::string>>& list) {
-  static const char* const kShown[] = {
-      "axis", "date", "instrument", "air temperature C", "material temperature C", "program"};
+  static const char* const kShown[] = {"axis",
+                                       "date",
+                                       "instrument",
+                                       "air temperature C",
+                                       "material temperature C",
+                                       "program",
+                                       "instrument_u_um",
+                                       "instrument_ppm",
+                                       "instrument_range_um",
+                                       "instrument_u_arcsec",
+                                       "instrument_accuracy_arcsec",
+                                       "setup_u_um",
+                                       "calibrator_u_um",
+                                       "drift_range_um",
+                                       "drift_range_arcsec",
+                                       "expansion_um_per_m_K",
+                                       "nominal_radius_mm"};
   std::string out;
   for (const auto& [k, v] : list) {
     if (std::find(std::begin(kShown), std::end(kShown), k) != std::end(kShown)) continue;
