@@ -43,11 +43,8 @@ Expected<std::optional<CircularUncertainty>> CircularU(const CircularUncertainty
   }
   CircularUncertainty u;
   const double env = 0.6 * drift;  // U (k = 2) of a full range, rectangular
-  u.shape_terms = {
-      {"reading", reading, "calibration U " + report::FormatNumber(reading) + " µm"},
-      {"environment", env,
-       "0.6 × E_VE " + report::FormatNumber(drift) + " µm" +
-           (in.reading.drift_source.empty() ? "" : " (" + in.reading.drift_source + ")")}};
+  u.shape_terms = {{"reading", reading, "calibration U " + report::FormatNumber(reading) + " µm"},
+                   {"environment", env, EnvironmentBasis(drift, in.reading.drift_source)}};
   u.shape_u_um = std::hypot(reading, env);
   if (!in.reading.drift_range_um) {
     warnings->push_back(

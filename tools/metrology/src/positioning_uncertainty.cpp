@@ -55,6 +55,10 @@ Expected<PositioningUncertaintyInputs> CompleteFromPreamble(PositioningUncertain
   return in;
 }
 
+std::string EnvironmentBasis(double drift_range_um, const std::string& source) {
+  return "0.6 × E_VE " + N(drift_range_um) + " µm" + (source.empty() ? "" : " (" + source + ")");
+}
+
 UncertaintyJsonKeys UncertaintyKeys(AxisKind kind) {
   if (kind == AxisKind::kRotary) return {"span_deg", "span_U_arcsec", "local_U_arcsec", "U_arcsec"};
   return {"length_mm", "length_U_um", "local_U_um", "U_um"};
@@ -123,9 +127,7 @@ Expected<PositioningUncertainty> PositioningU(const PositioningUncertaintyInputs
                      "0.6 × d² / 2L with d = " + N(in.misalignment_mm) + " mm"});
   const double env = kRange * in.drift_range_um.value_or(0.0);
   if (in.drift_range_um) {
-    u.terms.push_back({"environment", env,
-                       "0.6 × E_VE " + N(*in.drift_range_um) + " µm" +
-                           (in.drift_source.empty() ? "" : " (" + in.drift_source + ")")});
+    u.terms.push_back({"environment", env, EnvironmentBasis(*in.drift_range_um, in.drift_source)});
   } else {
     u.terms.push_back({"environment", 0.0, "not included: no drift test"});
     u.notes.push_back(

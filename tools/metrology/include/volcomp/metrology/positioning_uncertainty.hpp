@@ -81,6 +81,9 @@ struct UncertaintyJsonKeys {
 };
 UncertaintyJsonKeys UncertaintyKeys(AxisKind kind);
 
+/// The environment term's basis: "0.6 × E_VE 2 µm", with " (source)" when E_VE came from a file.
+std::string EnvironmentBasis(double drift_range_um, const std::string& source);
+
 /// `in` with what it leaves unset taken from the readings file's preamble: instrument_u_um,
 /// instrument_ppm, "material temperature C" (decimal comma allowed), drift_range_um,
 /// instrument_u_arcsec, instrument_accuracy_arcsec, drift_range_arcsec,
