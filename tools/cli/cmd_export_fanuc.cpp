@@ -3,6 +3,7 @@
 // on the control's screens (the punch-file block syntax of pitch data is not confirmed).
 #include <algorithm>
 #include <cstdlib>
+#include <optional>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -16,15 +17,19 @@
 namespace volcomp::cli {
 namespace {
 
+// The JSON's keys of lengths end in the machine's unit: "p3624_mm" or "p3624_in".
+std::string Key(const char* name, const std::string& unit) { return name + ("_" + unit); }
+
 void FanucText(const JsonValue& d, std::ostream& out) {
+  const std::string& u = d.get("unit")->string;
   out << "volcomp export fanuc: entry sheet (not a punch file), wrote " << d.get("output")->string
-      << "\n  1 count = " << d.get("count_mm")->number << " mm (detection unit "
-      << d.get("detection_unit_mm")->number << " mm x magnification "
+      << "\n  1 count = " << d.get(Key("count", u))->number << " " << u << " (detection unit "
+      << d.get(Key("detection_unit", u))->number << " " << u << " x magnification "
       << d.get("magnification")->integer << ")\n";
   for (const JsonValue& a : d.get("axes")->array) {
     out << ErrorTableText(a) << "    3620 = " << a.get("p3620")->integer
         << ", 3621 = " << a.get("p3621")->integer << ", 3622 = " << a.get("p3622")->integer
-        << ", 3624 = " << a.get("p3624_mm")->number << " mm, largest increment "
+        << ", 3624 = " << a.get(Key("p3624", u))->number << " " << u << ", largest increment "
         << a.get("largest_increment")->integer << " counts";
     if (const JsonValue* p = a.get("p3626")) {
       out << ", 3626 = " << p->integer << ", 3627 = " << a.get("p3627")->integer;
@@ -33,7 +38,8 @@ void FanucText(const JsonValue& d, std::ostream& out) {
   }
 }
 
-// One row per point: number, from (mm), to (mm), increment, total (counts): kPointColumns.
+// One row per point: number, from, to (machine units), increment, total (counts): the
+// "point_columns".
 JsonValue PointsJson(const std::vector<exporters::FanucPoint>& points) {
   JsonValue rows = JsonValue::Array();
   for (const exporters::FanucPoint& p : points) {
@@ -47,12 +53,16 @@ Expected<Output> RunExportFanuc(Args& args, Context& ctx) {
   VOLCOMP_TRY_ASSIGN(const std::vector<AxisInput> inputs, PositioningInputs(args));
   const std::string out_file = args.Required("-o", "--output");
   exporters::FanucOptions o;
-  o.detection_unit_mm = args.Number("--detection-unit").value_or(0.001);
+  const std::optional<double> detection_unit = args.Number("--detection-unit");
   const long long magnification = args.Integer("--magnification").value_or(1);
   VOLCOMP_TRY_ASSIGN(const ControllerTableArgs table_args, ReadControllerTableArgs(args));
   args.Flag("--json");
   VOLCOMP_TRY(args.Finish());
-  if (!(o.detection_unit_mm > 0)) return UsageFailure("--detection-unit must be > 0 mm");
+  o.unit = table_args.unit;
+  const bool inch = o.unit == exporters::LengthUnit::kInch;
+  const std::string u = exporters::UnitName(o.unit, false);
+  o.detection_unit = detection_unit.value_or(inch ? 0.0001 : 0.001);
+  if (!(o.detection_unit > 0)) return UsageFailure("--detection-unit must be > 0 " + u);
   if (magnification < 1 || magnification > 1000000) {
     return UsageFailure("--magnification " + std::to_string(magnification) + ": at least 1");
   }
@@ -85,7 +95,7 @@ Expected<Output> RunExportFanuc(Args& args, Context& ctx) {
         .Set("p3621", s.most_negative)
         .Set("p3622", s.most_positive)
         .Set("p3623", o.magnification)
-        .Set("p3624_mm", s.interval_mm)
+        .Set(Key("p3624", u), s.interval)
         .Set("largest_increment", largest)
         .Set("forward", PointsJson(s.forward));
     if (s.bidirectional) {
@@ -98,14 +108,15 @@ Expected<Output> RunExportFanuc(Args& args, Context& ctx) {
   }
   output.data = JsonValue::Object();
   output.data.Set("output", out_file)
-      .Set("detection_unit_mm", o.detection_unit_mm)
+      .Set("unit", u)
+      .Set(Key("detection_unit", u), o.detection_unit)
       .Set("magnification", o.magnification)
-      .Set("count_mm", o.detection_unit_mm * o.magnification)
+      .Set(Key("count", u), o.detection_unit * o.magnification)
       .Set("last_point", sheet->last_point)
       .Set("point_columns", JsonValue::Array()
                                 .Push("number")
-                                .Push("from_mm")
-                                .Push("to_mm")
+                                .Push(Key("from", u))
+                                .Push(Key("to", u))
                                 .Push("increment")
                                 .Push("total"))
       .Set("axes", std::move(axes_json));
@@ -122,7 +133,8 @@ const Command& ExportFanucCommand() {
       "",
       Join({PositioningFileOptions(),
             {{"--output", "-o", "FILE", nullptr, nullptr, "the entry sheet to write (required)"},
-             {"--detection-unit", nullptr, "U", "mm", "0.001", "the axis's detection unit"},
+             {"--detection-unit", nullptr, "U", "mm or in (--units)", nullptr,
+              "the axis's detection unit (default: 0.001 mm; 0.0001 in on an inch machine)"},
              {"--magnification", nullptr, "N", nullptr, "1",
               "parameter 3623: one count is the detection unit times N"}},
             ControllerTableOptions(

@@ -30,12 +30,18 @@ void HeidenhainText(const JsonValue& d, std::ostream& out) {
       << ": the sign rule (error, actual - nominal, unconfirmed on a machine) and sources\n";
 }
 
+// Why `--units in` is refused (the tables are metric on every TNC).
+constexpr const char* kMetricOnly =
+    "a TNC's .COM compensation tables are in mm on an inch machine too: the TNC's machine "
+    "configuration is metric, inch is a display and program unit";
+
 Expected<Output> RunExportHeidenhain(Args& args, Context& ctx) {
   VOLCOMP_TRY_ASSIGN(const std::vector<AxisInput> inputs, PositioningInputs(args));
   const std::string out_dir = args.Required("-o", "--output");
   const std::string control = args.Value("--control").value_or("tnc6xx");
   const std::string cma = args.Value("--cma").value_or("CONFIG.CMA");
-  VOLCOMP_TRY_ASSIGN(const ControllerTableArgs table_args, ReadControllerTableArgs(args));
+  VOLCOMP_TRY_ASSIGN(const ControllerTableArgs table_args,
+                     ReadControllerTableArgs(args, kMetricOnly));
   args.Flag("--json");
   VOLCOMP_TRY(args.Finish());
   if (control != "tnc6xx" && control != "tnc4xx") {
@@ -103,7 +109,7 @@ const Command& ExportHeidenhainCommand() {
              {"--cma", nullptr, "NAME", nullptr, "CONFIG.CMA", "file name of the .CMA table"}},
             ControllerTableOptions(
                 "resample the test to this equal spacing (default: the test's own positions)",
-                "position where the table is 0 (default: not zeroed)"),
+                "position where the table is 0 (default: not zeroed)", kMetricOnly),
             AllowFewRuns(),
             PositioningFormatOptions(),
             {{"--json", nullptr, nullptr, nullptr, nullptr, "machine-readable output"}}}),

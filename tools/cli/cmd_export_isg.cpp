@@ -52,6 +52,11 @@ void ExportIsgText(const JsonValue& d, std::ostream& out) {
   }
 }
 
+// Why `--units in` is refused: kw.ssfk.unit (P-COMP-00017) knows encoder increments and 0.1 µm.
+constexpr const char* kMetricOnly =
+    "an ISG LSEC list is in 0.1 um (kw.ssfk.unit, P-COMP-00017: encoder increments or metric; "
+    "there is no inch)";
+
 Expected<Output> RunExportIsg(Args& args, Context& ctx) {
   VOLCOMP_TRY_ASSIGN(const std::vector<AxisInput> inputs, PositioningInputs(args));
   const std::string out_dir = args.Required("-o", "--output");
@@ -60,6 +65,7 @@ Expected<Output> RunExportIsg(Args& args, Context& ctx) {
           .value_or(static_cast<long long>(exporters::kIsgLsecDefaultMaxPoints));
   VOLCOMP_TRY(args.status());
   if (max_points < 2) return UsageFailure("--max-points must be at least 2");
+  VOLCOMP_TRY(ParseMachineUnits(args, kMetricOnly));
   VOLCOMP_TRY_ASSIGN(auto numbers,
                      ParseAxisNumberMap(args.Value("--axis-numbers"), "--axis-numbers",
                                         "logical axis number", 1, 1, 65535));
@@ -143,7 +149,8 @@ const Command& ExportIsgCommand() {
              {"--negate", nullptr, nullptr, nullptr, nullptr,
               "write actual - setpoint negated (for a controller that proves the other way)"},
              {"--max-points", nullptr, "N", nullptr, "1500",
-              "the controller's kw.ssfk.max_points (P-COMP-00059): kw_nr_max must be smaller"}},
+              "the controller's kw.ssfk.max_points (P-COMP-00059): kw_nr_max must be smaller"},
+             MachineUnitsOption(kMetricOnly)},
             AllowFewRuns(),
             PositioningFormatOptions(),
             {{"--json", nullptr, nullptr, nullptr, nullptr, "machine-readable output"}}}),

@@ -31,10 +31,14 @@ Expected<std::string> AbsolutePath(const std::string& path) {
 }
 
 void ExportText(const JsonValue& d, std::ostream& out) {
-  out << "volcomp export linuxcnc (COMP_FILE_TYPE " << d.get("type")->integer << ")\n";
+  out << "volcomp export linuxcnc (COMP_FILE_TYPE " << d.get("type")->integer << ", machine units "
+      << d.get("linear_units")->string
+      << ": [TRAJ] LINEAR_UNITS = " << (d.get("linear_units")->string == "in" ? "inch" : "mm")
+      << ")\n";
   for (const JsonValue& a : d.get("axes")->array) {
     out << "  axis " << a.get("axis")->string << ": " << a.get("points")->integer << " points from "
-        << a.get("from")->number << " to " << a.get("to")->number << ", "
+        << a.get("from")->number << " to " << a.get("to")->number << " " << a.get("unit")->string
+        << ", "
         << (a.get("bidirectional")->boolean ? "bidirectional" : "one direction (reverse = forward)")
         << ", wrote " << a.get("file")->string << "\n";
   }
@@ -50,12 +54,15 @@ void ExportText(const JsonValue& d, std::ostream& out) {
 }
 
 // joints.ini: the lines, under a comment saying how they go in (LinuxCNC INI comments: #).
-std::string JointsIniFile(const std::string& ini) {
+std::string JointsIniFile(const std::string& ini, exporters::LengthUnit unit) {
   return "# volcomp export linuxcnc: merge these lines into the sections of the same name in the\n"
          "# machine's INI file, do not append them: LinuxCNC reads the first [JOINT_n] section of\n"
          "# a name only and ignores a second one without a message. `volcomp export linuxcnc ...\n"
-         "# --ini machine.ini` merges them.\n" +
-         ini;
+         "# --ini machine.ini` merges them.\n"
+         "# The files are in " +
+         std::string(unit == exporters::LengthUnit::kInch ? "inches" : "mm") +
+         " (deg on a rotary joint): the machine's [TRAJ] LINEAR_UNITS must be " +
+         (unit == exporters::LengthUnit::kInch ? "inch" : "mm") + ".\n" + ini;
 }
 
 Expected<Output> RunExportLinuxcnc(Args& args, Context& ctx) {
@@ -70,12 +77,29 @@ Expected<Output> RunExportLinuxcnc(Args& args, Context& ctx) {
                      ParseAxisNumberMap(args.Value("--joints"), "--joints", "joint", 0, 0, 15));
   VOLCOMP_TRY_ASSIGN(auto spacing, ParseAxisNumbers(args.Value("--spacing"), "--spacing", true));
   const std::optional<std::string> merge_ini = args.Value("--ini");
+  VOLCOMP_TRY_ASSIGN(const exporters::LengthUnit unit, ParseMachineUnits(args));
   metrology::GroupingOptions grouping;
   grouping.allow_few_approaches = args.Flag("--allow-few-runs");
   args.Flag("--json");  // the command layer prints the data as JSON
   VOLCOMP_TRY_ASSIGN(const datasets::PositioningReadOptions read,
                      ParsePositioningReadOptions(args));
   VOLCOMP_TRY(args.Finish());
+  const char* unit_name = exporters::UnitName(unit, false);
+  // The INI's machine unit must be the files': read it before anything is written.
+  std::optional<std::string> ini_before;
+  if (merge_ini) {
+    VOLCOMP_TRY_ASSIGN(ini_before, tools::ReadTextFile(*merge_ini));
+    const auto in_ini = exporters::LinuxcncLinearUnits(*ini_before, *merge_ini);
+    if (!in_ini.ok()) return Fail(Error::kInputInvalid, in_ini.error().message);
+    if (*in_ini && **in_ini != unit) {
+      const char* ini_unit = exporters::UnitName(**in_ini, false);
+      return Fail(Error::kInputInvalid,
+                  *merge_ini + ": [TRAJ] LINEAR_UNITS is " +
+                      (**in_ini == exporters::LengthUnit::kInch ? "inch" : "mm") +
+                      ", the tables would be in " + unit_name + " (--units " + unit_name +
+                      "): give --units " + ini_unit + " (nothing was written)");
+    }
+  }
 
   std::error_code ec;
   std::filesystem::create_directories(out_dir, ec);
@@ -97,7 +121,7 @@ Expected<Output> RunExportLinuxcnc(Args& args, Context& ctx) {
                        LoadAxisTest(path, read, grouping, ctx, &format));
     const auto s = spacing.find(name);
     const Expected<exporters::LinuxcncComp> comp =
-        exporters::BuildLinuxcncComp(data, comp_type, s != spacing.end() ? s->second : 0.0);
+        exporters::BuildLinuxcncComp(data, comp_type, s != spacing.end() ? s->second : 0.0, unit);
     if (!comp.ok()) return Fail(Error::kInputInvalid, path + ": " + comp.error().message);
     const std::string file = std::string(1, static_cast<char>(name - 'A' + 'a')) + ".comp";
     const std::string full = (std::filesystem::path(out_dir) / file).string();
@@ -110,6 +134,7 @@ Expected<Output> RunExportLinuxcnc(Args& args, Context& ctx) {
         .Set("joint", joint[name])
         .Set("source", path)
         .Set("format", datasets::PositioningFormatName(format))
+        .Set("unit", exporters::UnitName(unit, data.rotary))
         .Set("points", uint64_t{comp->rows.size()})
         .Set("from", comp->rows.front().nominal)
         .Set("to", comp->rows.back().nominal)
@@ -119,10 +144,10 @@ Expected<Output> RunExportLinuxcnc(Args& args, Context& ctx) {
     axes.Push(std::move(a));
   }
   const std::string ini_path = (std::filesystem::path(out_dir) / "joints.ini").string();
-  VOLCOMP_TRY(tools::WriteTextFile(ini_path, JointsIniFile(ini)));
+  VOLCOMP_TRY(tools::WriteTextFile(ini_path, JointsIniFile(ini, unit)));
   output.data = JsonValue::Object();
   if (merge_ini) {
-    VOLCOMP_TRY_ASSIGN(const std::string before, tools::ReadTextFile(*merge_ini));
+    const std::string& before = *ini_before;
     const exporters::LinuxcncIniMerge merged =
         exporters::MergeLinuxcncJointIni(before, joint_comps, *merge_ini);
     const std::string backup = *merge_ini + ".bak";
@@ -138,6 +163,7 @@ Expected<Output> RunExportLinuxcnc(Args& args, Context& ctx) {
         .Set("merge_warnings", std::move(warnings));
   }
   output.data.Set("type", type)
+      .Set("linear_units", unit_name)
       .Set("output", out_dir)
       .Set("axes", std::move(axes))
       .Set("ini_file", ini_path)
@@ -160,10 +186,12 @@ const Command& ExportLinuxcncCommand() {
               "COMP_FILE_TYPE: 1 the file holds the trims, 0 the positions reached"},
              {"--joints", nullptr, "X=N,...", nullptr, nullptr,
               "joint 0..15 of an axis in its [JOINT_n] lines (default: X=0 ... W=8)"},
-             {"--spacing", nullptr, "X=S,...", "mm (deg for A, B, C)", nullptr,
+             MachineUnitsOption(),
+             {"--spacing", nullptr, "X=S,...", "mm or in (deg for A, B, C)", nullptr,
               "point spacing per axis (default: the test's, or its smallest gap)"},
              {"--ini", nullptr, "FILE", nullptr, nullptr,
-              "merge the lines into this LinuxCNC INI file's [JOINT_n] sections (old: FILE.bak)"}},
+              "merge the lines into this LinuxCNC INI file's [JOINT_n] sections (old: FILE.bak); "
+              "its [TRAJ] LINEAR_UNITS must be --units"}},
             AllowFewRuns(),
             PositioningFormatOptions(),
             {{"--json", nullptr, nullptr, nullptr, nullptr, "machine-readable output"}}}),

@@ -43,7 +43,7 @@ void SiemensText(const JsonValue& d, std::ostream& out) {
     }
     out << ", " << t.get("points")->integer << " points, " << t.get("min")->number << " to "
         << t.get("max")->number << " step " << t.get("step")->number << ", largest value "
-        << t.get("largest_value")->number << (t.get("rotary")->boolean ? " deg" : " mm") << "\n";
+        << t.get("largest_value")->number << " " << t.get("unit")->string << "\n";
   }
   out << "points per table at most " << d.get("max_points")->integer
       << " (--max-points: the machine's "
@@ -179,6 +179,7 @@ Expected<Output> RunExportSiemens(Args& args, Context& ctx) {
                : exporters::SiemensMode::kLec;
   o.encoder = static_cast<int>(encoder);
   o.max_points = static_cast<std::size_t>(max_points);
+  o.unit = table_args.unit;
   const Expected<exporters::SiemensProgram> p = exporters::BuildSiemensProgram(axes, o);
   if (!p.ok()) return Fail(Error::kInputInvalid, p.error().message);
   VOLCOMP_TRY(tools::WriteTextFile(out_file, p->text));
@@ -194,6 +195,7 @@ Expected<Output> RunExportSiemens(Args& args, Context& ctx) {
         .Set("max", t.max)
         .Set("step", t.step)
         .Set("rotary", t.rotary)
+        .Set("unit", exporters::UnitName(o.unit, t.rotary))
         .Set("largest_value", t.largest_value);
     tables.Push(std::move(j));
   }
@@ -252,7 +254,8 @@ const Command& ExportSiemensCommand() {
       RunExportSiemens,
       "Each FILE is either the raw readings `evaluate positioning` reads (the mean per\n"
       "target and direction is used) or the mean deviations (position_mm, dev_forward_um\n"
-      "[, dev_reverse_um]). Values: the measured error, actual - nominal, in mm (deg), as the\n"
+      "[, dev_reverse_um]). Values: the measured error, actual - nominal, in mm (deg; inches\n"
+      "on an inch machine), as the\n"
       "SINUMERIK K3 manual defines them (--negate flips them). See docs/pc-tool.md,\n"
       "\"Controller tables\"."};
   return kCommand;

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <ostream>
 
+#include "choice_option.hpp"
 #include "positioning_input.hpp"
 #include "volcomp/datasets/positioning_csv.hpp"
 #include "volcomp/image/axis_units.hpp"
@@ -78,15 +79,45 @@ Expected<model::PositioningData> LoadAxisTest(const std::string& path,
   return data;
 }
 
-Options ControllerTableOptions(const char* spacing_help, const char* reference_help) {
-  return {{"--spacing", nullptr, "X=S,...", "mm (deg for A, B, C)", nullptr, spacing_help},
-          {"--reference", nullptr, "X=P,...", "mm (deg for A, B, C)", nullptr, reference_help},
+args::OptionSpec MachineUnitsOption(const char* metric_only) {
+  if (metric_only != nullptr) {
+    return {"--units", nullptr,
+            "mm",      nullptr,
+            "mm",      "mm only: this controller's tables are in mm whatever the machine's unit"};
+  }
+  return {"--units",
+          nullptr,
+          "mm|in",
+          nullptr,
+          "mm",
+          "the machine's length unit: of the table written and of the positions given "
+          "(--spacing, --reference); a rotary axis is in deg with either"};
+}
+
+Expected<exporters::LengthUnit> ParseMachineUnits(Args& args, const char* metric_only) {
+  const std::string word = args.Value("--units").value_or("mm");
+  if (metric_only != nullptr) {
+    return ParseChoice<exporters::LengthUnit>("--units", word, {{"mm", exporters::LengthUnit::kMm}},
+                                              metric_only);
+  }
+  return ParseChoice<exporters::LengthUnit>(
+      "--units", word, {{"mm", exporters::LengthUnit::kMm}, {"in", exporters::LengthUnit::kInch}});
+}
+
+Options ControllerTableOptions(const char* spacing_help,
+                               const char* reference_help,
+                               const char* metric_only) {
+  const char* unit = metric_only != nullptr ? "mm (deg for A, B, C)" : "mm or in (deg for A, B, C)";
+  return {MachineUnitsOption(metric_only),
+          {"--spacing", nullptr, "X=S,...", unit, nullptr, spacing_help},
+          {"--reference", nullptr, "X=P,...", unit, nullptr, reference_help},
           {"--negate", nullptr, nullptr, nullptr, nullptr,
            "flip the sign of every value, for a control that proves to take the other sign"}};
 }
 
-Expected<ControllerTableArgs> ReadControllerTableArgs(Args& args) {
+Expected<ControllerTableArgs> ReadControllerTableArgs(Args& args, const char* metric_only) {
   ControllerTableArgs a;
+  VOLCOMP_TRY_ASSIGN(a.unit, ParseMachineUnits(args, metric_only));
   VOLCOMP_TRY_ASSIGN(a.spacing, ParseAxisNumbers(args.Value("--spacing"), "--spacing", true));
   VOLCOMP_TRY_ASSIGN(a.reference,
                      ParseAxisNumbers(args.Value("--reference"), "--reference", false));
@@ -103,6 +134,7 @@ Expected<AxisErrorTable> LoadAxisErrorTable(const AxisInput& input,
   VOLCOMP_TRY_ASSIGN(const model::PositioningData data,
                      LoadAxisTest(input.path, options.read, options.grouping, ctx));
   exporters::ErrorTableOptions o;
+  o.unit = options.unit;
   o.negate = options.negate;
   if (const auto s = options.spacing.find(input.axis); s != options.spacing.end()) {
     o.spacing = s->second;
@@ -126,6 +158,7 @@ JsonValue ErrorTableJson(const AxisErrorTable& axis) {
   j.Set("axis", std::string(1, axis.input.axis))
       .Set("source", axis.input.path)
       .Set("rotary", t.rotary)
+      .Set("unit", exporters::UnitName(t.unit, t.rotary))
       .Set("points", uint64_t{t.position.size()})
       .Set("from", t.position.front())
       .Set("to", t.position.back())
@@ -135,13 +168,17 @@ JsonValue ErrorTableJson(const AxisErrorTable& axis) {
       .Set("bidirectional", !t.reverse_um.empty())
       .Set("negated", t.negated)
       .Set("largest_error", largest);
+  if (t.unit == exporters::LengthUnit::kInch && !t.rotary) {
+    // 1 µin = 0.0254 µm; to 1e-6 µin, so that 5.08 µm reads 200 µin.
+    j.Set("largest_error_uin", std::round(largest / (exporters::kMmPerInch * 1e-3) * 1e6) / 1e6);
+  }
   if (t.zero_at) j.Set("reference", *t.zero_at);
   return j;
 }
 
 std::string ErrorTableText(const JsonValue& a) {
   const bool rotary = a.get("rotary")->boolean;
-  const char* unit = rotary ? "deg" : "mm";
+  const char* unit = a.get("unit")->string.c_str();
   char s[400];
   std::snprintf(s, sizeof s, "  axis %s: %lld points from %g to %g %s",
                 a.get("axis")->string.c_str(), static_cast<long long>(a.get("points")->integer),
@@ -155,6 +192,10 @@ std::string ErrorTableText(const JsonValue& a) {
   std::snprintf(s, sizeof s, ", largest error %.2f %s", a.get("largest_error")->number,
                 rotary ? "arcsec" : "um");
   line += s;
+  if (const JsonValue* uin = a.get("largest_error_uin")) {
+    std::snprintf(s, sizeof s, " (%.0f uin)", uin->number);
+    line += s;
+  }
   if (const JsonValue* r = a.get("reference")) {
     std::snprintf(s, sizeof s, ", zero at %g %s", r->number, unit);
     line += s;
@@ -172,8 +213,9 @@ std::string UncoveredWarning(const AxisErrorTable& axis) {
   std::snprintf(s, sizeof s,
                 "%s: the table ends at %g, the test at %g %s: the last %g %s tested are not in "
                 "it (a --spacing that divides the travel covers it all)",
-                axis.input.path.c_str(), t.position.back(), t.tested_to, t.rotary ? "deg" : "mm",
-                t.uncovered, t.rotary ? "deg" : "mm");
+                axis.input.path.c_str(), t.position.back(), t.tested_to,
+                exporters::UnitName(t.unit, t.rotary), t.uncovered,
+                exporters::UnitName(t.unit, t.rotary));
   return s;
 }
 

@@ -51,19 +51,31 @@ Expected<model::PositioningData> LoadAxisTest(const std::string& path,
                                               Context& ctx,
                                               datasets::PositioningFormat* format = nullptr);
 
-/// --spacing, --reference and --negate of the controller tables, with `reference_help`.
-Options ControllerTableOptions(const char* spacing_help, const char* reference_help);
+/// --units mm|in: the machine's length unit (the unit of --spacing, --reference and the table
+/// written), as an option list's entry and as its value (usage failure for another word).
+/// `metric_only` (the controller and why its tables are in mm whatever the machine's unit):
+/// only mm is taken, and the failure for `in` says why.
+args::OptionSpec MachineUnitsOption(const char* metric_only = nullptr);
+Expected<exporters::LengthUnit> ParseMachineUnits(Args& args, const char* metric_only = nullptr);
+
+/// --units, --spacing, --reference and --negate of the controller tables.
+Options ControllerTableOptions(const char* spacing_help,
+                               const char* reference_help,
+                               const char* metric_only = nullptr);
 
 struct ControllerTableArgs {
-  std::map<char, double> spacing;    // mm (deg); absent: the test's own positions
-  std::map<char, double> reference;  // mm (deg); absent: none (or the command's default)
+  exporters::LengthUnit unit = exporters::LengthUnit::kMm;  // --units
+  std::map<char, double> spacing;    // machine units (deg); absent: the test's own positions
+  std::map<char, double> reference;  // machine units (deg); absent: none (or the default)
   bool negate = false;
   metrology::GroupingOptions grouping;
   datasets::PositioningReadOptions read;  // --format, --rtl-runs, --rtl-negate, --accept-units
 };
 
-/// Reads the options of ControllerTableOptions, AllowFewRuns and PositioningFormatOptions.
-Expected<ControllerTableArgs> ReadControllerTableArgs(Args& args);
+/// Reads the options of ControllerTableOptions (with the same `metric_only`), AllowFewRuns and
+/// PositioningFormatOptions.
+Expected<ControllerTableArgs> ReadControllerTableArgs(Args& args,
+                                                      const char* metric_only = nullptr);
 
 struct AxisErrorTable {
   AxisInput input;

@@ -2,14 +2,12 @@
 #include "native/instance_config.hpp"
 
 #include <cctype>
+#include <optional>
+
+#include "volcomp/hosted/linuxcnc_units.hpp"
 
 namespace volcomp::linuxcnc {
 namespace {
-
-std::string Lower(std::string s) {
-  for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return s;
-}
 
 // HAL names: printable, no spaces, up to 47 characters (HAL_NAME_LEN); the longest name an
 // instance makes is its parameter "<name>.axis.x.max-correction-accel" (or the
@@ -51,12 +49,8 @@ Expected<std::vector<std::string>> InstanceNames(int count, const std::vector<st
 }
 
 Expected<double> ParseLinearUnits(const std::string& text) {
-  const std::string t = Lower(text);
-  if (t.empty() || t == "mm" || t == "metric" || t == "millimeter" || t == "millimeters" ||
-      t == "millimetre" || t == "millimetres") {
-    return 1.0;
-  }
-  if (t == "inch" || t == "in" || t == "inches" || t == "imperial") return 25.4;
+  if (text.empty()) return 1.0;
+  if (const std::optional<double> mm = hosted::LinuxcncMmPerLinearUnit(text)) return *mm;
   return Fail(
       Error::kInvalidArgument,
       "units=" + text + ": not a linear unit LinuxCNC uses (mm or inch, as [TRAJ]LINEAR_UNITS)");

@@ -22,8 +22,8 @@ inline constexpr int kMaxChannels = 9;
 /// Refuses both at once, more than kMaxInstances, and names HAL would not take.
 Expected<std::vector<std::string>> InstanceNames(int count, const std::vector<std::string>& names);
 
-/// Millimetres per machine unit for a linear units word: "mm" / "metric" / "millimeter" (1),
-/// "inch" / "in" / "imperial" (25.4), any case; empty means mm.
+/// Millimetres per machine unit for a linear units value (hosted/linuxcnc_units.hpp: mm, inch
+/// and their other spellings, any case, or units per mm); empty means mm.
 Expected<double> ParseLinearUnits(const std::string& text);
 
 /// Joint channels of an instance and the table axis of each.

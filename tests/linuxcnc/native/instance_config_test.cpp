@@ -28,9 +28,9 @@ TEST(InstanceConfig, NamesInstancesAsHalcompileDoes) {
 }
 
 TEST(InstanceConfig, ReadsLinuxcncLinearUnits) {
-  for (const char* mm : {"", "mm", "MM", "metric", "millimeter"})
+  for (const char* mm : {"", "mm", "MM", "metric", "millimeter", "1.0"})
     EXPECT_EQ(*ParseLinearUnits(mm), 1.0) << mm;
-  for (const char* in : {"inch", "in", "Inch", "imperial"})
+  for (const char* in : {"inch", "in", "Inch", "imperial", "0.03937"})
     EXPECT_EQ(*ParseLinearUnits(in), 25.4) << in;
   const auto bad = ParseLinearUnits("cm");
   ASSERT_FALSE(bad.ok());

@@ -76,6 +76,15 @@ TEST(VolcompExportSiemens, CecPerDirectionMatchesTheHandWrittenProgram) {
       {"\"mode\": \"CEC\"", "\"cec_table\": 1", "\"direction\": -1", "\"largest_value\": 0.005"});
 }
 
+// An inch machine (x_bidir_inch.csv, worked by hand in docs/pc-tool.md "Inch machines"): the
+// program in inches, 6 decimals, and says the basic system must be inch.
+TEST(VolcompExportSiemens, InchMachineMatchesTheHandWrittenProgram) {
+  ExpectFileAsWrittenByHand("siemens", "x_bidir_inch.csv",
+                            {"--units", "in", "--mode", "lec", "--reference", "X=0"},
+                            "siemens_lec_x_inch.mpf.expected",
+                            {"\"unit\": \"in\"", "\"step\": 2,", "\"largest_error_uin\": 200,"});
+}
+
 TEST(VolcompExportSiemens, NegateFlipsEveryValue) {
   ScratchDir dir("export_siemens_negate");
   const std::string in = Data("x_forward.csv"), out = dir / "x.mpf";
@@ -218,6 +227,34 @@ TEST(VolcompExportHeidenhain, LegacyTncRefusesASpacingThatIsNotAPowerOfTwo) {
 TEST(VolcompExportFanuc, EntrySheetMatchesTheHandWorkedOne) {
   ExpectFileAsWrittenByHand("fanuc", "x_bidir.csv", {"--reference", "X=100"},
                             "fanuc_x.txt.expected", {"\"p3620\": 1", "\"p3627\": 3"});
+}
+
+// An inch machine: detection unit 0.0001 in (IS-B), 3624 in inches, the reference at 4 in.
+TEST(VolcompExportFanuc, InchMachineMatchesTheHandWorkedSheet) {
+  ExpectFileAsWrittenByHand("fanuc", "x_bidir_inch.csv", {"--units", "in", "--reference", "X=4"},
+                            "fanuc_x_inch.txt.expected",
+                            {"\"unit\": \"in\"", "\"p3624_in\": 2,", "\"count_in\": 0.0001,",
+                             "\"detection_unit_in\": 0.0001,", "\"from_in\"", "\"p3627\": 1"});
+}
+
+// HEIDENHAIN's and ISG's tables are metric whatever the machine: --units in is refused with why.
+TEST(VolcompExportMetricOnly, InchIsRefusedWithTheReason) {
+  ScratchDir dir("export_metric_only");
+  const std::string in = Data("x_bidir_inch.csv");
+  auto r = RunCli({"export", "heidenhain", "--x", in, "--units", "in", "-o", dir / "h"});
+  EXPECT_EQ(r.code, tools::kExitUsage);
+  EXPECT_NE(r.err.find("--units must be mm (a TNC's .COM compensation tables are in mm on an "
+                       "inch machine too"),
+            std::string::npos)
+      << r.err;
+  r = RunCli({"export", "isg", "--x", in, "--units", "in", "-o", dir / "i"});
+  EXPECT_EQ(r.code, tools::kExitUsage);
+  EXPECT_NE(r.err.find("--units must be mm (an ISG LSEC list is in 0.1 um"), std::string::npos)
+      << r.err;
+  // The inch file itself is read into mm for them: 2 in = 50.8 mm, 120 uin = 3.048 um.
+  r = RunCli({"export", "heidenhain", "--x", in, "-o", dir / "h", "--json"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("\"spacing\": 50.8"), std::string::npos) << r.out;
 }
 
 TEST(VolcompExportFanuc, NegateFlipsTheIncrements) {

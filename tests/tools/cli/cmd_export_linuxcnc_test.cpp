@@ -43,8 +43,9 @@ TEST(VolcompExportLinuxcnc, FromRawReadings) {
               "--allow-few-runs"});
   ASSERT_EQ(r.code, 0) << r.err;
   const std::string comp = (std::filesystem::path(dir) / "z.comp").string();
-  EXPECT_EQ(r.out.rfind("volcomp export linuxcnc (COMP_FILE_TYPE 1)\n"
-                        "  axis Z: 3 points from 0 to 100, bidirectional, wrote " +
+  EXPECT_EQ(r.out.rfind("volcomp export linuxcnc (COMP_FILE_TYPE 1, machine units mm: [TRAJ] "
+                        "LINEAR_UNITS = mm)\n"
+                        "  axis Z: 3 points from 0 to 100 mm, bidirectional, wrote " +
                             comp +
                             "\n\nINI lines to merge into the [JOINT_n] sections the machine's "
                             "INI file has (also in ",
@@ -100,6 +101,63 @@ TEST(VolcompExportLinuxcnc, MergesIntoAnIniFile) {
   EXPECT_NE(twice.err.find("--joints: X and Z both on joint 0"), std::string::npos) << twice.err;
 }
 
+// An inch machine: readings in inches and microinches (+400 uin up, -240 uin down at 0, 2, 4 in),
+// the files in inches ([TRAJ] LINEAR_UNITS = inch): a constant deviation is undone exactly, so the
+// trims are -0.000400 and +0.000240 in at the nominals 0, 2, 4 in.
+TEST(VolcompExportLinuxcnc, InchMachine) {
+  const std::string csv = TempPath("export_linuxcnc_inch.csv");
+  std::ofstream(csv) << "target_in,direction,run,deviation_uin\n"
+                        "0,up,1,400\n2,up,1,400\n4,up,1,400\n4,down,1,-240\n2,down,1,-240\n"
+                        "0,down,1,-240\n0,up,2,400\n2,up,2,400\n4,up,2,400\n4,down,2,-240\n"
+                        "2,down,2,-240\n0,down,2,-240\n";
+  const std::string dir = TempPath("export_linuxcnc_inch");
+  const std::string ini = TempPath("export_linuxcnc_inch_machine.ini");
+  const std::string before = "[TRAJ]\nLINEAR_UNITS = inch\n[JOINT_0]\nHOME = 0\n";
+  std::ofstream(ini) << before;
+  std::filesystem::remove_all(dir);
+  // The INI says inch, the default --units is mm: refused before anything is written.
+  auto r = RunCli({"export", "linuxcnc", "--x", csv, "-o", dir, "--allow-few-runs", "--ini", ini});
+  EXPECT_EQ(r.code, tools::kExitFailed);
+  EXPECT_NE(r.err.find(ini + ": [TRAJ] LINEAR_UNITS is inch, the tables would be in mm (--units "
+                             "mm): give --units in (nothing was written)"),
+            std::string::npos)
+      << r.err;
+  EXPECT_FALSE(std::filesystem::exists(dir));
+  std::stringstream unchanged;
+  unchanged << std::ifstream(ini).rdbuf();
+  EXPECT_EQ(unchanged.str(), before);
+
+  r = RunCli({"export", "linuxcnc", "--x", csv, "-o", dir, "--allow-few-runs", "--ini", ini,
+              "--units", "in", "--json"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("\"linear_units\": \"in\""), std::string::npos) << r.out;
+  std::ifstream f(std::filesystem::path(dir) / "x.comp");
+  double n, fwd, rev;
+  int rows = 0;
+  while (f >> n >> fwd >> rev) {
+    EXPECT_NEAR(n, 2.0 * rows, 1e-12);
+    EXPECT_NEAR(fwd, -0.000400, 1e-12);
+    EXPECT_NEAR(rev, 0.000240, 1e-12);
+    ++rows;
+  }
+  EXPECT_EQ(rows, 3);
+  std::stringstream joints;
+  joints << std::ifstream(std::filesystem::path(dir) / "joints.ini").rdbuf();
+  EXPECT_NE(joints.str().find("[TRAJ] LINEAR_UNITS must be inch"), std::string::npos);
+
+  // A spacing in inches: 1 in gives 5 rows, 0 .. 4 in.
+  r = RunCli({"export", "linuxcnc", "--x", csv, "-o", dir, "--allow-few-runs", "--units", "in",
+              "--spacing", "X=1", "--json"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("\"points\": 5"), std::string::npos) << r.out;
+
+  // An INI whose LINEAR_UNITS volcomp cannot write: refused naming the line.
+  std::ofstream(ini) << "[TRAJ]\nLINEAR_UNITS = 0.5\n";
+  r = RunCli({"export", "linuxcnc", "--x", csv, "-o", dir, "--allow-few-runs", "--ini", ini});
+  EXPECT_EQ(r.code, tools::kExitFailed);
+  EXPECT_NE(r.err.find(ini + ":2: [TRAJ] LINEAR_UNITS = 0.5"), std::string::npos) << r.err;
+}
+
 TEST(VolcompExportLinuxcnc, OptionsAreChecked) {
   const std::string csv = RawReadings();
   const std::string dir = TempPath("export_linuxcnc_lcnc_opts");
@@ -116,6 +174,8 @@ TEST(VolcompExportLinuxcnc, OptionsAreChecked) {
   usage({"export", "linuxcnc", "--z", csv, "-o", dir, "--spacing", "Z=0"},
         "--spacing: Z must be > 0");
   usage({"export", "linuxcnc", "-o", dir}, "give at least one axis file, e.g. --x x.csv");
+  usage({"export", "linuxcnc", "--z", csv, "-o", dir, "--units", "inch"},
+        "--units must be mm or in");
   // Too many points for LinuxCNC: refused naming the file.
   const auto r = RunCli(
       {"export", "linuxcnc", "--z", csv, "-o", dir, "--spacing", "Z=0.1", "--allow-few-runs"});

@@ -31,6 +31,34 @@ TEST(ErrorTable, ResamplesLinearlyToAnEqualGrid) {
   EXPECT_EQ(t->uncovered, 0.0);
 }
 
+// An inch machine: the positions in inches (101.6 mm = 4 in exactly), a spacing and a reference
+// in inches, the errors still µm; ToMachineUnits gives inches (25.4 µm = 0.001 in).
+TEST(ErrorTable, InchMachinePositionsAndValues) {
+  model::PositioningData d;
+  d.position = {0, 50.8, 101.6};
+  d.dev_forward = {0, 2.54, 10.16};
+  ErrorTableOptions o;
+  o.unit = LengthUnit::kInch;
+  o.spacing = 1;
+  o.zero_at = 2;
+  const auto t = BuildErrorTable(d, o);
+  ASSERT_TRUE(t.ok()) << t.error().message;
+  EXPECT_EQ(t->unit, LengthUnit::kInch);
+  ASSERT_EQ(t->position.size(), 5u);
+  EXPECT_EQ(t->position[4], 4.0);
+  EXPECT_EQ(t->tested_to, 4.0);
+  // At 1 in (halfway to 2 in): 1.27 µm, less the 2.54 µm at the reference.
+  EXPECT_NEAR(t->forward_um[1], 1.27 - 2.54, 1e-12);
+  EXPECT_NEAR(t->forward_um[4], 10.16 - 2.54, 1e-12);
+  EXPECT_NEAR(ToMachineUnits(25.4, false, LengthUnit::kInch), 0.001, 1e-15);
+  EXPECT_NEAR(ToMachineUnits(3600, true, LengthUnit::kInch), 1.0, 1e-15);  // deg either way
+  o.zero_at = 5;
+  const auto outside = BuildErrorTable(d, o);
+  ASSERT_FALSE(outside.ok());
+  EXPECT_EQ(outside.error().message,
+            "reference position 5 in is outside the tested travel 0 to 4 in");
+}
+
 TEST(ErrorTable, AGridShortOfTheTravelSaysHowMuch) {
   ErrorTableOptions o;
   o.spacing = 30;  // 0, 30, 60, 90: 10 mm of the 100 tested are past the last node

@@ -76,6 +76,51 @@ TEST(LinuxcncComp, OneDirectionGivesEqualReverseTrims) {
   for (const LinuxcncCompRow& r : c.rows) EXPECT_EQ(r.forward, r.reverse);
 }
 
+// An inch machine's file: nominals and trims in inches, the same trims as the mm file / 25.4.
+TEST(LinuxcncComp, InchRowsAreTheMmRowsIn25Point4) {
+  const PositioningData d = Linear(12.0, -0.08, -5.0, true);
+  const LinuxcncComp mm = ValueOf(BuildLinuxcncComp(d, LinuxcncCompType::kTrims, 0));
+  const LinuxcncComp in =
+      ValueOf(BuildLinuxcncComp(d, LinuxcncCompType::kTrims, 0, LengthUnit::kInch));
+  EXPECT_EQ(in.unit, LengthUnit::kInch);
+  ASSERT_EQ(in.rows.size(), mm.rows.size());
+  for (size_t i = 0; i < in.rows.size(); ++i) {
+    EXPECT_NEAR(in.rows[i].nominal * 25.4, mm.rows[i].nominal, 1e-7);
+    EXPECT_NEAR(in.rows[i].forward * 25.4, mm.rows[i].forward, 1e-12);
+    EXPECT_NEAR(in.rows[i].reverse * 25.4, mm.rows[i].reverse, 1e-12);
+  }
+  // A spacing in inches: 2 in = 50.8 mm over the 200 mm tested: 0, 2, 4, 6 in and the last
+  // tested position, 200 mm = 7.874016 in.
+  const LinuxcncComp spaced =
+      ValueOf(BuildLinuxcncComp(d, LinuxcncCompType::kTrims, 2.0, LengthUnit::kInch));
+  ASSERT_EQ(spaced.rows.size(), 5u);
+  EXPECT_DOUBLE_EQ(spaced.rows[3].nominal, 6.0);
+  EXPECT_NEAR(spaced.rows[4].nominal, 200 / 25.4, 1e-9);
+}
+
+// [TRAJ] LINEAR_UNITS as LinuxCNC reads it (the words of its INI documentation and the sample
+// configurations: mm, metric, inch, in, imperial; or units per mm).
+TEST(LinuxcncComp, LinearUnitsOfAnIniFile) {
+  const auto unit = [](const std::string& ini) {
+    return ValueOf(LinuxcncLinearUnits(ini, "m.ini"));
+  };
+  EXPECT_EQ(unit("[TRAJ]\nLINEAR_UNITS = inch\n"), LengthUnit::kInch);
+  EXPECT_EQ(unit("[TRAJ]\nLINEAR_UNITS =          in  # comment\n"), LengthUnit::kInch);
+  EXPECT_EQ(unit("[TRAJ]\nLINEAR_UNITS = imperial\n"), LengthUnit::kInch);
+  EXPECT_EQ(unit("[TRAJ]\nLINEAR_UNITS = 0.03937\n"), LengthUnit::kInch);
+  EXPECT_EQ(unit("[TRAJ]\nLINEAR_UNITS = mm\n"), LengthUnit::kMm);
+  EXPECT_EQ(unit("[TRAJ]\nLINEAR_UNITS = metric\n"), LengthUnit::kMm);
+  EXPECT_EQ(unit("[TRAJ]\nLINEAR_UNITS =\t1.0\n"), LengthUnit::kMm);
+  // Another section's key, or none: not said.
+  EXPECT_FALSE(unit("[DISPLAY]\nLINEAR_UNITS = inch\n[TRAJ]\nCOORDINATES = X\n").has_value());
+  // The first [TRAJ] section counts.
+  EXPECT_EQ(unit("[TRAJ]\nLINEAR_UNITS = mm\n[TRAJ]\nLINEAR_UNITS = inch\n"), LengthUnit::kMm);
+  const auto odd = LinuxcncLinearUnits("[EMC]\n[TRAJ]\nLINEAR_UNITS = furlong\n", "m.ini");
+  ASSERT_FALSE(odd.ok());
+  EXPECT_EQ(odd.error().message.rfind("m.ini:3: [TRAJ] LINEAR_UNITS = furlong", 0), 0u)
+      << odd.error().message;
+}
+
 TEST(LinuxcncComp, JointIniLines) {
   EXPECT_EQ(LinuxcncJointIni(4, "/comp/z.comp", LinuxcncCompType::kPositions),
             "[JOINT_4]\nCOMP_FILE = /comp/z.comp\nCOMP_FILE_TYPE = 0\n");
@@ -103,7 +148,7 @@ TEST(LinuxcncComp, MoreThanLinuxcncLoadsIsRefused) {
   EXPECT_EQ(refused.error().code, Error::kInvalidArgument);
   EXPECT_EQ(refused.error().message,
             "401 compensation points, LinuxCNC loads at most 256: use a spacing of at least "
-            "0.784314");
+            "0.784314 mm");
   EXPECT_EQ(
       ValueOf(BuildLinuxcncComp(Linear(1.0, 0.0, 0, false), LinuxcncCompType::kTrims, 200.0 / 255))
           .rows.size(),

@@ -39,6 +39,23 @@ TEST(Straightness, LeastSquaresLineOfBothDirections) {
   ExpectValues(t.reverse_um, {-3, 0, 1, 0, -3});
 }
 
+// The same test on an inch machine (positions 0, 2, ... 8 in): the slope is still 10 µm per metre
+// (0.01 µm/mm × 25.4 mm/in = 0.254 µm per inch of travel); one direction, so the residuals are
+// the bow less its mean 2 µm.
+TEST(Straightness, InchPositionsGiveTheSlopePerMetre) {
+  ErrorTable t;
+  t.unit = LengthUnit::kInch;
+  const double bow[] = {0, 3, 4, 3, 0};
+  for (int i = 0; i < 5; ++i) {
+    t.position.push_back(2.0 * i);
+    t.forward_um.push_back(2 + 0.254 * t.position[i] + bow[i]);
+  }
+  const auto ref = RemoveReferenceLine(&t, StraightnessLine::kLeastSquares);
+  ASSERT_TRUE(ref.ok());
+  EXPECT_NEAR(ref->slope_um_per_m, 10.0, 1e-9);
+  ExpectValues(t.forward_um, {-2, 1, 2, 1, -2});
+}
+
 TEST(Straightness, ZeroedAgainAtTheReference) {
   ErrorTable t = Bowed();
   t.zero_at = 100.0;

@@ -159,6 +159,11 @@ std::string JsonWriter::Escape(const std::string& s) {
 std::string JsonWriter::FormatDouble(double d) {
   if (!std::isfinite(d)) return "null";
   char buf[32];
+  // A whole number below 1e15 in full (200, not the shortest round trip "2e+02").
+  if (std::fabs(d) < 1e15 && std::trunc(d) == d) {
+    std::snprintf(buf, sizeof buf, "%.0f", d);
+    return buf;
+  }
   for (int prec = 1; prec <= 17; ++prec) {
     std::snprintf(buf, sizeof buf, "%.*g", prec, d);
     if (std::strtod(buf, nullptr) == d) break;

@@ -19,19 +19,35 @@ double Tolerance(double x) { return 1e-9 * std::fmax(1.0, std::fabs(x)); }
 
 }  // namespace
 
-double ToMachineUnits(double error_um, bool rotary) {
-  return rotary ? error_um / 3600.0 : error_um / 1000.0;
+const char* UnitName(LengthUnit unit, bool rotary) {
+  return rotary ? "deg" : unit == LengthUnit::kInch ? "in" : "mm";
+}
+
+double MmPerUnit(LengthUnit unit) { return unit == LengthUnit::kInch ? kMmPerInch : 1.0; }
+
+double FromMm(double position_mm, LengthUnit unit) {
+  if (unit == LengthUnit::kMm) return position_mm;
+  return std::round(position_mm / kMmPerInch * 1e9) / 1e9;
+}
+
+double ToMachineUnits(double error_um, bool rotary, LengthUnit unit) {
+  return rotary ? error_um / 3600.0 : error_um / (1000.0 * MmPerUnit(unit));
 }
 
 Expected<ErrorTable> BuildErrorTable(const model::PositioningData& data,
                                      const ErrorTableOptions& options) {
-  const std::vector<double>& p = data.position;
+  // The test's positions (mm, deg) in the machine's unit.
+  std::vector<double> p = data.position;
   if (p.size() < 2) return Fail(Error::kInvalidArgument, "fewer than 2 test positions");
+  if (!data.rotary) {
+    for (double& x : p) x = FromMm(x, options.unit);
+  }
   const double hi = p.back();
-  const char* unit = data.rotary ? "deg" : "mm";
+  const char* unit = UnitName(options.unit, data.rotary);
   char msg[256];
   ErrorTable t;
   t.rotary = data.rotary;
+  t.unit = options.unit;
   t.tested_to = hi;
   t.zero_at = options.zero_at;
   t.negated = options.negate;
@@ -87,7 +103,7 @@ Expected<double> RequireEqualSpacing(const ErrorTable& table, const std::string&
   std::size_t i = 2;
   while (i < p.size() && std::fabs((p[i] - p[i - 1]) - (p[1] - p[0])) <= Tolerance(p[i])) ++i;
   if (i >= p.size()) return p[1] - p[0];
-  const char* unit = table.rotary ? "deg" : "mm";
+  const char* unit = UnitName(table.unit, table.rotary);
   char msg[320];
   std::snprintf(msg, sizeof msg,
                 "the test positions are not equally spaced (%.6g %s from %.6g to %.6g, %.6g %s "
@@ -108,7 +124,7 @@ Expected<void> RequirePointLimit(const ErrorTable& table,
   std::snprintf(msg, sizeof msg,
                 "%zu points, %s takes at most %zu: use a --spacing of at least %.6g %s", n,
                 controller.c_str(), limit, span / static_cast<double>(limit - 1),
-                table.rotary ? "deg" : "mm");
+                UnitName(table.unit, table.rotary));
   return Fail(Error::kInvalidArgument, msg);
 }
 

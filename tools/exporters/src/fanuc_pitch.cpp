@@ -26,11 +26,11 @@ std::vector<FanucPoint> Points(const ErrorTable& t,
                                const std::vector<double>& error_um,
                                int first,
                                std::size_t r,
-                               double count_mm) {
+                               double count) {
   std::vector<FanucPoint> points;
   std::vector<long> total;
   for (const double e : error_um)
-    total.push_back(std::lround(-ToMachineUnits(e, false) / count_mm));
+    total.push_back(std::lround(-ToMachineUnits(e, false, t.unit) / count));
   for (std::size_t i = (r == 0 ? 0 : 1); i < t.position.size(); ++i) {
     FanucPoint p;
     p.number = first + static_cast<int>(points.size());
@@ -42,6 +42,9 @@ std::vector<FanucPoint> Points(const ErrorTable& t,
   }
   return points;
 }
+
+// Decimals of a position on the sheet: 0.1 µm in mm, 0.00001 in (0.25 µm) in inches.
+int Decimals(LengthUnit unit) { return unit == LengthUnit::kInch ? 5 : 4; }
 
 // The point furthest outside −128..127 of either direction, refused with the magnification that
 // fits it.
@@ -62,10 +65,11 @@ Expected<void> CheckIncrements(char axis, const FanucAxisSheet& s, const FanucOp
   const int needed = static_cast<int>(std::ceil(o.magnification * worst_ratio));
   char msg[320];
   std::snprintf(msg, sizeof msg,
-                "%c: point %d (%.4f to %.4f mm) needs an increment of %d counts, FANUC takes "
+                "%c: point %d (%.*f to %.*f %s) needs an increment of %d counts, FANUC takes "
                 "%d..%d per point: give --magnification %d or more, or a smaller --spacing",
-                axis, worst->number, worst->from, worst->to, worst->increment, kFanucMinIncrement,
-                kFanucMaxIncrement, needed);
+                axis, worst->number, Decimals(o.unit), worst->from, Decimals(o.unit), worst->to,
+                UnitName(o.unit, false), worst->increment, kFanucMinIncrement, kFanucMaxIncrement,
+                needed);
   return Fail(Error::kInvalidArgument, msg);
 }
 
@@ -79,10 +83,11 @@ std::string Line(const char* format, ...) {
   return s;
 }
 
-std::string PointRows(const std::vector<FanucPoint>& points) {
-  std::string s = "  POINT  INTERVAL (mm)                  INCREMENT  TOTAL\n";
+std::string PointRows(const std::vector<FanucPoint>& points, LengthUnit unit) {
+  std::string s =
+      Line("  POINT  INTERVAL (%s)                  INCREMENT  TOTAL\n", UnitName(unit, false));
   for (const FanucPoint& p : points) {
-    const std::string interval = Line("%.4f .. %.4f", p.from, p.to);
+    const std::string interval = Line("%.*f .. %.*f", Decimals(unit), p.from, Decimals(unit), p.to);
     s += Line("  %-6d %-30s %+-10d %+d\n", p.number, interval.c_str(), p.increment, p.total);
   }
   return s;
@@ -92,21 +97,32 @@ std::string PointRows(const std::vector<FanucPoint>& points) {
 
 Expected<FanucSheet> BuildFanucSheet(const std::vector<FanucAxis>& axes,
                                      const FanucOptions& options) {
-  if (!(options.detection_unit_mm > 0) || options.magnification < 1) {
+  const char* unit = UnitName(options.unit, false);
+  const int dp = Decimals(options.unit);
+  if (!(options.detection_unit > 0) || options.magnification < 1) {
     return Fail(Error::kInvalidArgument,
-                Line("detection unit %.6g mm and magnification %d: the unit must be > 0 and the "
+                Line("detection unit %.6g %s and magnification %d: the unit must be > 0 and the "
                      "magnification (3623) at least 1",
-                     options.detection_unit_mm, options.magnification));
+                     options.detection_unit, unit, options.magnification));
   }
-  const double count_mm = options.detection_unit_mm * options.magnification;
+  const double count = options.detection_unit * options.magnification;
   FanucSheet sheet;
   sheet.text = kHeader;
   sheet.text +=
-      Line("Units: 1 count = detection unit %.6g mm x magnification (3623) %d = %.6g mm.\n",
-           options.detection_unit_mm, options.magnification, count_mm);
+      Line("Units: 1 count = detection unit %.6g %s x magnification (3623) %d = %.6g %s.\n",
+           options.detection_unit, unit, options.magnification, count, unit);
+  if (options.unit == LengthUnit::kInch) {
+    sheet.text +=
+        "An inch machine: positions, 3624 and the detection unit in inches (the increment\n"
+        "system's inch unit, IS-B 0.0001 in).\n";
+  }
   int next = 0;
   for (const FanucAxis& a : axes) {
     const ErrorTable& t = a.table;
+    if (!t.rotary && t.unit != options.unit) {
+      return Fail(Error::kInvalidArgument, Line("%c: a table in %s on a sheet in %s", a.axis,
+                                                UnitName(t.unit, false), unit));
+    }
     if (t.rotary) {
       return Fail(Error::kInvalidArgument,
                   Line("%c: a rotary axis: FANUC's 3625 and the zero sum per revolution are not "
@@ -126,27 +142,28 @@ Expected<FanucSheet> BuildFanucSheet(const std::vector<FanucAxis>& axes,
     if (r == t.position.size()) {
       std::size_t above = 1;
       while (above + 1 < t.position.size() && t.position[above] < *t.zero_at) ++above;
-      return Fail(Error::kInvalidArgument,
-                  Line("%c: reference position %.4f mm is not a compensation point (the nearest "
-                       "are %.4f and %.4f mm, every %.4f mm from %.4f): give --reference %c= one "
-                       "of the points",
-                       a.axis, *t.zero_at, t.position[above - 1], t.position[above], *spacing,
-                       t.position.front(), a.axis));
+      return Fail(
+          Error::kInvalidArgument,
+          Line("%c: reference position %.*f %s is not a compensation point (the "
+               "nearest are %.*f and %.*f %s, every %.*f %s from %.*f): give --reference "
+               "%c= one of the points",
+               a.axis, dp, *t.zero_at, unit, dp, t.position[above - 1], dp, t.position[above], unit,
+               dp, *spacing, unit, dp, t.position.front(), a.axis));
     }
     FanucAxisSheet s;
     s.axis = a.axis;
-    s.interval_mm = *spacing;
+    s.interval = *spacing;
     s.most_negative = next;
-    s.forward = Points(t, t.forward_um, next, r, count_mm);
+    s.forward = Points(t, t.forward_um, next, r, count);
     s.reference_point = next + static_cast<int>(r) - (r == 0 ? 0 : 1);
     s.most_positive = s.forward.back().number;
     next = s.most_positive + 1;
     if (!t.reverse_um.empty()) {
       s.bidirectional = true;
       s.negative_block = next;
-      s.reverse = Points(t, t.reverse_um, next, r, count_mm);
+      s.reverse = Points(t, t.reverse_um, next, r, count);
       s.reference_opposite =
-          static_cast<int>(std::lround(-ToMachineUnits(t.reverse_um[r], false) / count_mm));
+          static_cast<int>(std::lround(-ToMachineUnits(t.reverse_um[r], false, t.unit) / count));
       next = s.reverse.back().number + 1;
     }
     VOLCOMP_TRY(CheckIncrements(a.axis, s, options));
@@ -159,13 +176,13 @@ Expected<FanucSheet> BuildFanucSheet(const std::vector<FanucAxis>& axes,
     const char c = a.axis;
     sheet.text += Line("\nAXIS %c (from %s)\n", c, a.source.c_str());
     if (t.negated) sheet.text += "  NEGATED (--negate): the values are (actual - nominal)\n";
-    sheet.text += Line("  3620 %c = %-8d reference point number (position %.4f mm)\n", c,
-                       s.reference_point, *t.zero_at);
+    sheet.text += Line("  3620 %c = %-8d reference point number (position %.*f %s)\n", c,
+                       s.reference_point, dp, *t.zero_at, unit);
     sheet.text += Line("  3621 %c = %-8d most negative point number\n", c, s.most_negative);
     sheet.text += Line("  3622 %c = %-8d most positive point number\n", c, s.most_positive);
     sheet.text += Line("  3623 %c = %-8d magnification\n", c, options.magnification);
-    sheet.text += Line("  3624 %c = %.4f mm (%ld detection units) point interval\n", c, *spacing,
-                       std::lround(*spacing / options.detection_unit_mm));
+    sheet.text += Line("  3624 %c = %.*f %s (%ld detection units) point interval\n", c, dp,
+                       *spacing, unit, std::lround(*spacing / options.detection_unit));
     if (s.bidirectional) {
       sheet.text += Line("  3605#0 = 1       bidirectional pitch error compensation (16i/18i)\n");
       sheet.text += Line("  3626 %c = %-8d most negative point number, negative-direction travel\n",
@@ -177,12 +194,12 @@ Expected<FanucSheet> BuildFanucSheet(const std::vector<FanucAxis>& axes,
     }
     sheet.text +=
         Line("  positive-direction travel%s:\n", s.bidirectional ? "" : " (both directions)");
-    sheet.text += PointRows(s.forward);
+    sheet.text += PointRows(s.forward, options.unit);
     if (s.bidirectional) {
       sheet.text +=
           "  negative-direction travel (same intervals; the direction in which FANUC\n"
           "  reads these increments is not confirmed):\n" +
-          PointRows(s.reverse);
+          PointRows(s.reverse, options.unit);
     }
     sheet.axes.push_back(s);
   }

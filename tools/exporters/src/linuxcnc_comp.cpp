@@ -3,28 +3,34 @@
 
 #include <cmath>
 #include <cstdio>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "volcomp/builders/axis1d.hpp"
+#include "volcomp/hosted/linuxcnc_units.hpp"
 
 namespace volcomp::exporters {
 
 Expected<LinuxcncComp> BuildLinuxcncComp(const model::PositioningData& data,
                                          LinuxcncCompType type,
-                                         double spacing) {
+                                         double spacing,
+                                         LengthUnit unit) {
+  // The test and the builder are in mm (deg); the file in the machine's unit.
+  const double mm_per_unit = data.rotary ? 1.0 : MmPerUnit(unit);
   builders::Axis1dOptions o;
   o.reverse = builders::ReverseMode::kTables;
-  o.spacing = spacing;
+  o.spacing = spacing * mm_per_unit;
   VOLCOMP_TRY_ASSIGN(const builders::Axis1dTable t, builders::BuildAxis1d(data, o));
   if (t.forward.size() > kLinuxcncMaxCompEntries) {
     const double span = t.spacing * static_cast<double>(t.forward.size() - 1);
     char msg[256];
     std::snprintf(msg, sizeof msg,
                   "%zu compensation points, LinuxCNC loads at most %zu: use a spacing of at "
-                  "least %.6g",
+                  "least %.6g %s",
                   t.forward.size(), kLinuxcncMaxCompEntries,
-                  span / static_cast<double>(kLinuxcncMaxCompEntries - 1));
+                  span / static_cast<double>(kLinuxcncMaxCompEntries - 1) / mm_per_unit,
+                  UnitName(unit, data.rotary));
     return Fail(Error::kInvalidArgument, msg);
   }
   std::vector<double> nominal, forward = t.forward, reverse = t.reverse;
@@ -43,16 +49,16 @@ Expected<LinuxcncComp> BuildLinuxcncComp(const model::PositioningData& data,
     forward.back() = e.forward.back();
     if (!reverse.empty()) reverse.back() = e.reverse.back();
   }
-  // Corrections are in µm (arcsec); the file is in machine units, mm (deg).
-  const double unit = data.rotary ? 1.0 / 3600.0 : 1.0 / 1000.0;
+  // Corrections are in µm (arcsec); the file is in machine units, mm or in (deg).
   LinuxcncComp c;
   c.type = type;
+  c.unit = unit;
   c.max_residual = t.max_residual;
   for (std::size_t i = 0; i < nominal.size(); ++i) {
     LinuxcncCompRow r;
-    r.nominal = nominal[i];
-    const double fwd = forward[i] * unit;
-    const double rev = (reverse.empty() ? forward[i] : reverse[i]) * unit;
+    r.nominal = data.rotary ? nominal[i] : FromMm(nominal[i], unit);
+    const double fwd = ToMachineUnits(forward[i], data.rotary, unit);
+    const double rev = ToMachineUnits(reverse.empty() ? forward[i] : reverse[i], data.rotary, unit);
     if (type == LinuxcncCompType::kTrims) {
       r.forward = fwd;
       r.reverse = rev;
@@ -112,6 +118,32 @@ std::vector<std::string> Lines(const std::string& text) {
 }
 
 }  // namespace
+
+Expected<std::optional<LengthUnit>> LinuxcncLinearUnits(const std::string& ini,
+                                                        const std::string& source) {
+  const std::vector<std::string> lines = Lines(ini);
+  bool in_traj = false, seen_traj = false;
+  for (std::size_t i = 0; i < lines.size(); ++i) {
+    const std::string t = Trim(lines[i]);
+    if (!t.empty() && t[0] == '[') {
+      if (in_traj) break;  // LinuxCNC reads the first [TRAJ] section only
+      in_traj = !seen_traj && t == "[TRAJ]";
+      seen_traj = seen_traj || in_traj;
+      continue;
+    }
+    if (!in_traj || KeyOf(lines[i]) != "LINEAR_UNITS") continue;
+    std::string v = Trim(t.substr(t.find('=') + 1));
+    v = v.substr(0, v.find_first_of(" \t#;"));
+    if (const std::optional<double> mm = hosted::LinuxcncMmPerLinearUnit(v)) {
+      return std::optional<LengthUnit>(*mm == 1.0 ? LengthUnit::kMm : LengthUnit::kInch);
+    }
+    return Fail(Error::kInvalidArgument,
+                source + ":" + std::to_string(i + 1) + ": [TRAJ] LINEAR_UNITS = " + v +
+                    ": volcomp writes mm or inch tables (mm, metric, 1.0; inch, in, imperial, "
+                    "0.03937)");
+  }
+  return std::optional<LengthUnit>();
+}
 
 LinuxcncIniMerge MergeLinuxcncJointIni(const std::string& ini,
                                        const std::vector<LinuxcncJointComp>& joints,

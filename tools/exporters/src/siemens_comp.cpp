@@ -7,12 +7,15 @@
 namespace volcomp::exporters {
 namespace {
 
-// "%.4f" without a "-0.0000".
-std::string Mm(double v) {
-  double r = std::round(v * 1e4) / 1e4;
+// A position or value in the table's unit: 4 decimals in mm or deg (0.1 µm), 6 in inches
+// (0.000001 in = 0.0254 µm), without a "-0.0000".
+std::string InUnit(double v, const ErrorTable& t) {
+  const bool inch = t.unit == LengthUnit::kInch && !t.rotary;
+  const double scale = inch ? 1e6 : 1e4;
+  double r = std::round(v * scale) / scale;
   if (r == 0) r = 0;
   char s[48];
-  std::snprintf(s, sizeof s, "%.4f", r);
+  std::snprintf(s, sizeof s, inch ? "%.6f" : "%.4f", r);
   return s;
 }
 
@@ -33,12 +36,12 @@ std::vector<Column> Columns(const ErrorTable& t, SiemensMode mode) {
     c.push_back({0, {}});
   }
   for (std::size_t i = 0; i < t.position.size(); ++i) {
-    const double f = ToMachineUnits(t.forward_um[i], t.rotary);
+    const double f = ToMachineUnits(t.forward_um[i], t.rotary, t.unit);
     if (!two) {
       c[0].value.push_back(f);
       continue;
     }
-    const double r = ToMachineUnits(t.reverse_um[i], t.rotary);
+    const double r = ToMachineUnits(t.reverse_um[i], t.rotary, t.unit);
     if (c.size() == 2) {
       c[0].value.push_back(f);
       c[1].value.push_back(r);
@@ -53,7 +56,7 @@ std::string SignLines(const SiemensAxis& a) {
   std::string s;
   const ErrorTable& t = a.table;
   if (t.zero_at) {
-    s += "; " + a.machine_axis + ": zeroed at " + Mm(*t.zero_at) +
+    s += "; " + a.machine_axis + ": zeroed at " + InUnit(*t.zero_at, t) +
          " (the reference point: K3 asks for 0 there)\n";
   } else {
     s += "; " + a.machine_axis +
@@ -65,10 +68,22 @@ std::string SignLines(const SiemensAxis& a) {
   return s;
 }
 
-const char* kSign =
-    "; values: the measured error, actual - nominal, in mm (deg on a rotary axis), which the\n"
-    ";   control subtracts: \"a positive compensation value causes the machine axis to move in\n"
-    ";   the negative direction\" (SINUMERIK K3 function manual, 6FC5397-1BP40-3BA1)\n";
+std::string SignAndUnit(LengthUnit unit) {
+  const bool inch = unit == LengthUnit::kInch;
+  std::string s = std::string("; values: the measured error, actual - nominal, in ") +
+                  (inch ? "inches" : "mm") +
+                  " (deg on a rotary axis), which the\n"
+                  ";   control subtracts: \"a positive compensation value causes the machine axis "
+                  "to move in\n"
+                  ";   the negative direction\" (SINUMERIK K3 function manual, "
+                  "6FC5397-1BP40-3BA1)\n";
+  if (inch) {
+    s += "; an inch machine: the basic system is inch (MD10240 $MN_SCALING_SYSTEM_IS_METRIC = 0);\n"
+         ";   the tables are in the basic system's unit [inferred: K3's examples are in mm], so\n"
+         ";   check one value on the control\n";
+  }
+  return s;
+}
 
 }  // namespace
 
@@ -88,12 +103,16 @@ Expected<SiemensProgram> BuildSiemensProgram(const std::vector<SiemensAxis>& axe
              : "%_N_NC_CEC_INI\n; volcomp export siemens: CEC tables ($AN_CEC), direction-"
                "dependent pitch error, SINUMERIK 840D sl / 828D\n; the program name is the "
                "customary one for CEC tables, not confirmed by volcomp's sources\n";
-  head += kSign;
+  head += SignAndUnit(options.unit);
   const std::string enc = std::to_string(options.encoder);
   int next_table = 0;
   for (const SiemensAxis& a : axes) {
     const std::string& ax = a.machine_axis;
     const std::string& out = a.output_axis.empty() ? ax : a.output_axis;
+    if (!a.table.rotary && a.table.unit != options.unit) {
+      return Fail(Error::kInvalidArgument, ax + ": a table in " + UnitName(a.table.unit, false) +
+                                               " in a program in " + UnitName(options.unit, false));
+    }
     if (lec && out != ax) {
       return Fail(Error::kInvalidArgument,
                   ax + " -> " + out + ": a cross-axis table is a CEC table (--mode cec)");
@@ -107,8 +126,9 @@ Expected<SiemensProgram> BuildSiemensProgram(const std::vector<SiemensAxis>& axe
     const ErrorTable& t = a.table;
     const std::size_t n = t.position.size();
     const std::vector<Column> columns = Columns(t, options.mode);
-    const std::string range = std::to_string(n) + " points, " + Mm(t.position.front()) + " to " +
-                              Mm(t.position.back()) + " step " + Mm(*spacing);
+    const std::string range = std::to_string(n) + " points, " + InUnit(t.position.front(), t) +
+                              " to " + InUnit(t.position.back(), t) + " step " +
+                              InUnit(*spacing, t) + " " + UnitName(t.unit, t.rotary);
     if (lec && !t.reverse_um.empty()) {
       double reversal = 0;
       for (std::size_t i = 0; i < n; ++i) reversal += t.forward_um[i] - t.reverse_um[i];
@@ -142,12 +162,12 @@ Expected<SiemensProgram> BuildSiemensProgram(const std::vector<SiemensAxis>& axe
               "] = 0 while loading, 1 afterwards\n";
         for (std::size_t i = 0; i < n; ++i) {
           body += "$AA_ENC_COMP[" + enc + "," + std::to_string(i) + "," + ax +
-                  "]=" + Mm(c.value[i]) + "\n";
+                  "]=" + InUnit(c.value[i], t) + "\n";
         }
         const std::string idx = "[" + enc + "," + ax + "]=";
-        body += "$AA_ENC_COMP_STEP" + idx + Mm(*spacing) + "\n$AA_ENC_COMP_MIN" + idx +
-                Mm(t.position.front()) + "\n$AA_ENC_COMP_MAX" + idx + Mm(t.position.back()) +
-                "\n$AA_ENC_COMP_IS_MODULO" + idx + "0\n";
+        body += "$AA_ENC_COMP_STEP" + idx + InUnit(*spacing, t) + "\n$AA_ENC_COMP_MIN" + idx +
+                InUnit(t.position.front(), t) + "\n$AA_ENC_COMP_MAX" + idx +
+                InUnit(t.position.back(), t) + "\n$AA_ENC_COMP_IS_MODULO" + idx + "0\n";
       } else {
         const std::string k = std::to_string(next_table);
         md += ";   MD18342 $MN_MM_CEC_MAX_POINTS[" + k + "] >= " + std::to_string(n) + " (table " +
@@ -157,12 +177,12 @@ Expected<SiemensProgram> BuildSiemensProgram(const std::vector<SiemensAxis>& axe
                                  : ", both directions") +
               ")\n";
         body += "$AN_CEC_INPUT_AXIS[" + k + "]=(" + ax + ")\n$AN_CEC_OUTPUT_AXIS[" + k + "]=(" +
-                out + ")\n$AN_CEC_STEP[" + k + "]=" + Mm(*spacing) + "\n$AN_CEC_MIN[" + k +
-                "]=" + Mm(t.position.front()) + "\n$AN_CEC_MAX[" + k +
-                "]=" + Mm(t.position.back()) + "\n$AN_CEC_DIRECTION[" + k +
+                out + ")\n$AN_CEC_STEP[" + k + "]=" + InUnit(*spacing, t) + "\n$AN_CEC_MIN[" + k +
+                "]=" + InUnit(t.position.front(), t) + "\n$AN_CEC_MAX[" + k +
+                "]=" + InUnit(t.position.back(), t) + "\n$AN_CEC_DIRECTION[" + k +
                 "]=" + std::to_string(c.direction) + "\n$AN_CEC_IS_MODULO[" + k + "]=0\n";
         for (std::size_t i = 0; i < n; ++i) {
-          body += "$AN_CEC[" + k + "," + std::to_string(i) + "]=" + Mm(c.value[i]) + "\n";
+          body += "$AN_CEC[" + k + "," + std::to_string(i) + "]=" + InUnit(c.value[i], t) + "\n";
         }
         ++next_table;
       }

@@ -37,7 +37,7 @@ Expected<StraightnessReference> RemoveReferenceLine(ErrorTable* table, Straightn
   }
   const std::size_t n = t.position.size();
   if (n < 2) return Fail(Error::kInvalidArgument, "a straightness table needs 2 or more positions");
-  StraightnessReference ref;  // slope in µm per mm until the end
+  StraightnessReference ref;  // slope in µm per machine unit until the end
   const std::vector<double> y = Pooled(t);
   if (line == StraightnessLine::kEndPoints) {
     ref.slope_um_per_m = (y.back() - y.front()) / (t.position.back() - t.position.front());
@@ -65,7 +65,7 @@ Expected<StraightnessReference> RemoveReferenceLine(ErrorTable* table, Straightn
     for (double& v : t.forward_um) v -= z;
     for (double& v : t.reverse_um) v -= z;
   }
-  ref.slope_um_per_m *= 1000.0;  // µm/mm → µm/m
+  ref.slope_um_per_m *= 1000.0 / MmPerUnit(t.unit);  // µm per machine unit → µm/m
   return ref;
 }
 

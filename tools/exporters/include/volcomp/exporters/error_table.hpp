@@ -4,7 +4,8 @@
 // to an equally spaced grid (linear interpolation between the test positions), optionally
 // shifted so the forward error is 0 at a reference position and negated (--negate). This is
 // volcomp's one internal convention; each writer states and applies its controller's own sign
-// and unit on top of it. Units: positions mm (deg on a rotary axis), errors µm (arcsec).
+// and unit on top of it. Units: errors µm (arcsec); positions in the machine's unit (LengthUnit:
+// mm, or inches for an inch machine; deg on a rotary axis in both).
 #pragma once
 
 #include <cstddef>
@@ -13,27 +14,47 @@
 #include <vector>
 
 #include "volcomp/hosted/expected.hpp"
+#include "volcomp/metrology/inch.hpp"
 #include "volcomp/model/positioning.hpp"
 
 namespace volcomp::exporters {
 
+/// The machine's length unit, the unit a controller's table holds positions and values in on a
+/// linear axis (LinuxCNC: [TRAJ] LINEAR_UNITS; SINUMERIK: the basic system, MD10240; FANUC: the
+/// increment system). A rotary axis is in degrees with either.
+enum class LengthUnit { kMm, kInch };
+
+using metrology::kMmPerInch;
+
+/// "mm", "in", or "deg" on a rotary axis.
+const char* UnitName(LengthUnit unit, bool rotary);
+
+/// Millimetres in one machine unit of a linear axis: 1 or 25.4.
+double MmPerUnit(LengthUnit unit);
+
+/// A position of a linear axis in mm in the machine's unit (inches rounded to 1e-9 in, so that
+/// 203.2 mm is 8 in, not 7.999999999999997).
+double FromMm(double position_mm, LengthUnit unit);
+
 struct ErrorTableOptions {
-  double spacing = 0;             // > 0: resample to this grid from the first test position,
-                                  // mm (deg); 0: the test's own positions
-  std::optional<double> zero_at;  // mm (deg): subtract the forward error there from both
-                                  // directions (a reference point the controller zeroes)
-  bool negate = false;            // flip the sign of every error (after zeroing)
+  LengthUnit unit = LengthUnit::kMm;  // of the positions below and of the table
+  double spacing = 0;                 // > 0: resample to this grid from the first test position,
+                                      // machine units (deg); 0: the test's own positions
+  std::optional<double> zero_at;      // machine units (deg): subtract the forward error there from
+                                      // both directions (a reference point the controller zeroes)
+  bool negate = false;                // flip the sign of every error (after zeroing)
 };
 
 struct ErrorTable {
   bool rotary = false;
-  std::vector<double> position;    // mm (deg), increasing
-  std::vector<double> forward_um;  // error moving positive, µm (arcsec)
-  std::vector<double> reverse_um;  // moving negative; empty when one direction was measured
-  double spacing = 0;              // the common gap, mm (deg); 0 when the gaps differ
-  double tested_to = 0;            // the last test position, mm (deg)
-  double uncovered = 0;            // tested travel past the last grid node, mm (deg), ≥ 0
-  std::optional<double> zero_at;   // as given
+  LengthUnit unit = LengthUnit::kMm;  // of every position below (a rotary axis: deg)
+  std::vector<double> position;       // machine units (deg), increasing
+  std::vector<double> forward_um;     // error moving positive, µm (arcsec)
+  std::vector<double> reverse_um;     // moving negative; empty when one direction was measured
+  double spacing = 0;                 // the common gap, machine units; 0 when the gaps differ
+  double tested_to = 0;               // the last test position, machine units
+  double uncovered = 0;               // tested travel past the last grid node, ≥ 0
+  std::optional<double> zero_at;      // as given
   bool negated = false;
 };
 
@@ -42,8 +63,9 @@ struct ErrorTable {
 Expected<ErrorTable> BuildErrorTable(const model::PositioningData& data,
                                      const ErrorTableOptions& options);
 
-/// µm → mm, or arcsec → deg on a rotary axis: the unit of every table written.
-double ToMachineUnits(double error_um, bool rotary);
+/// µm → mm (inches with LengthUnit::kInch), or arcsec → deg on a rotary axis: the unit of every
+/// table written.
+double ToMachineUnits(double error_um, bool rotary, LengthUnit unit = LengthUnit::kMm);
 
 /// The table's common spacing, or kInvalidArgument for a table whose gaps differ, naming the
 /// first two different gaps, `controller` (which needs equal spacing) and the fix (--spacing).

@@ -9,6 +9,8 @@
 // Points: the grid node x_i (equally spaced, the reference position one of them) ends the interval
 // (x_{i−1}, x_i] whose point number is 3620 + (i − r), r the reference's node; the value of a
 // point is output while moving through its interval (a staircase; 0i parameter manual).
+// Units: the machine's (FanucOptions::unit): on an inch machine positions, 3624 and the detection
+// unit are in inches (3624's unit is the machine unit, its least step the increment system's).
 // Values: corrections (C) = −(actual − nominal), in counts of detection unit × 3623, the running
 // sum (0 at the reference) rounded to whole counts and differenced per point, so rounding does
 // not accumulate. Sign: Fanuc enters the compensation amount (0i parameter manual plots it as the
@@ -34,8 +36,10 @@ inline constexpr int kFanucMaxIncrement = 127;
 inline constexpr int kFanucMaxPointNumber = 1023;
 
 struct FanucOptions {
-  double detection_unit_mm = 0.001;  // the axis's detection unit (IS-B: 0.001 mm)
-  int magnification = 1;             // parameter 3623, ≥ 1
+  LengthUnit unit = LengthUnit::kMm;  // the machine's: of every table, 3624 and the sheet
+  double detection_unit = 0.001;      // the axis's detection unit in `unit` (IS-B: 0.001 mm,
+                                      // 0.0001 in)
+  int magnification = 1;              // parameter 3623, ≥ 1
 };
 
 struct FanucAxis {
@@ -46,7 +50,7 @@ struct FanucAxis {
 
 struct FanucPoint {
   int number = 0;
-  double from = 0, to = 0;  // the interval, mm
+  double from = 0, to = 0;  // the interval, machine units
   int increment = 0;        // counts
   int total = 0;            // the running sum: the correction at `to`, counts
 };
@@ -56,7 +60,7 @@ struct FanucAxisSheet {
   int reference_point = 0;  // 3620
   int most_negative = 0;    // 3621
   int most_positive = 0;    // 3622
-  double interval_mm = 0;   // 3624
+  double interval = 0;      // 3624, machine units
   std::vector<FanucPoint> forward;
   bool bidirectional = false;
   int negative_block = 0;      // 3626

@@ -1,5 +1,6 @@
 // LinuxCNC joint compensation files ([JOINT_n] COMP_FILE, COMP_FILE_TYPE) from positioning tests:
-// one "nominal forward reverse" line per node in machine units, nominals increasing, at most
+// one "nominal forward reverse" line per node in machine units ([TRAJ] LINEAR_UNITS: mm or inch;
+// deg on a rotary joint), nominals increasing, at most
 // kLinuxcncMaxCompEntries lines. COMP_FILE_TYPE 1 holds the trims (added to the command), type 0
 // the positions reached (trim = nominal − forward). The trims are the 1-D corrections of
 // builders::BuildAxis1d (ReverseMode::kTables), the correction an AXIS1D table applies; without
@@ -9,9 +10,11 @@
 #pragma once
 
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "volcomp/exporters/error_table.hpp"
 #include "volcomp/hosted/expected.hpp"
 #include "volcomp/model/positioning.hpp"
 
@@ -23,24 +26,34 @@ inline constexpr std::size_t kLinuxcncMaxCompEntries = 256;
 enum class LinuxcncCompType { kPositions = 0, kTrims = 1 };
 
 struct LinuxcncCompRow {
-  double nominal = 0;  // mm (deg)
+  double nominal = 0;  // machine units: mm or in (deg)
   double forward = 0;  // type 1: trim added moving up; type 0: position reached moving up
   double reverse = 0;
 };
 
 struct LinuxcncComp {
   LinuxcncCompType type = LinuxcncCompType::kTrims;
+  LengthUnit unit = LengthUnit::kMm;  // of every row on a linear joint
   std::vector<LinuxcncCompRow> rows;
   double max_residual = 0;  // of the inversion, µm (arcsec)
 };
 
-/// Rows on the lattice of BuildAxis1d (`spacing`, 0: the test's), the last one at the last tested
-/// position rather than past it (LinuxCNC's nominals need not be equally spaced).
+/// Rows on the lattice of BuildAxis1d (`spacing` in `unit`, deg on a rotary axis; 0: the test's),
+/// the last one at the last tested position rather than past it (LinuxCNC's nominals need not be
+/// equally spaced); the rows in `unit` (6 decimals in the file: 1 nm, or 0.000001 in = 25 nm).
 /// kInvalidArgument naming the problem: BuildAxis1d's, or more rows than LinuxCNC loads (the
 /// message names the count, the limit and a spacing that fits).
 Expected<LinuxcncComp> BuildLinuxcncComp(const model::PositioningData& data,
                                          LinuxcncCompType type,
-                                         double spacing);
+                                         double spacing,
+                                         LengthUnit unit = LengthUnit::kMm);
+
+/// The machine's linear unit as LinuxCNC reads it from an INI file's text: the first [TRAJ]
+/// section's LINEAR_UNITS, a word (mm, metric; in, inch, imperial) or machine units per mm (1.0;
+/// 1/25.4). nullopt when there is none; kInvalidArgument naming `source`, the line and the value
+/// for any other value.
+Expected<std::optional<LengthUnit>> LinuxcncLinearUnits(const std::string& ini,
+                                                        const std::string& source);
 
 /// The file text: one "nominal forward reverse" line per row, 6 decimals, nothing else (LinuxCNC
 /// stops reading at the first line that is not three numbers, so a file carries no comments).

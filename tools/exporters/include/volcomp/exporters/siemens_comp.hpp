@@ -7,7 +7,9 @@
 //     output axis compensated as a function of the input axis's position.
 // Sign (K3 function manual, 6FC5397-1BP40-3BA1, pp. 238/242 and 249): the value is the measured
 // error, actual − nominal: "a positive compensation value causes the machine axis to move in the
-// negative direction". Unit mm (deg on a rotary axis), 4 decimals (0.1 µm). Limits: equally
+// negative direction". Unit mm (deg on a rotary axis), 4 decimals (0.1 µm); on an inch machine
+// (basic system inch, MD10240 = 0) inches, 6 decimals — the basic system's unit [inferred: K3's
+// tables show mm only]. Limits: equally
 // spaced points, at most MD38000 $MA_MM_ENC_COMP_MAX_POINTS (LEC) / MD18342 $MN_MM_CEC_MAX_POINTS
 // (CEC) points per table — the machine's value, `max_points` (200: the 808D's LEC and the 828D's
 // CEC tables). The machine data to set are written as comments at the top of the program.
@@ -40,6 +42,7 @@ struct SiemensOptions {
   SiemensMode mode = SiemensMode::kLec;
   int encoder = 0;  // LEC: 0 the first measuring system, 1 the second
   std::size_t max_points = kSiemensDefaultMaxPoints;
+  LengthUnit unit = LengthUnit::kMm;  // the basic system; every linear table's ErrorTable::unit
 };
 
 struct SiemensTableInfo {  // one table written, for the command's report
@@ -49,8 +52,8 @@ struct SiemensTableInfo {  // one table written, for the command's report
   int cec_table = -1;       // CEC: the table index; −1 for LEC
   int direction = 0;        // CEC: 1, −1, or 0 for both directions; LEC: 0
   std::size_t points = 0;
-  double min = 0, max = 0, step = 0;  // mm (deg)
-  double largest_value = 0;           // the largest |value| in the table, mm (deg)
+  double min = 0, max = 0, step = 0;  // machine units (deg)
+  double largest_value = 0;           // the largest |value| in the table, machine units (deg)
 };
 
 struct SiemensProgram {
