@@ -22,7 +22,10 @@ using testing::RunCli;
 using testing::ScratchDir;
 using testing::SourcePath;
 
+// A file of tests/tools/exporters/data, or of the repository when the name has a folder
+// ("samples/metrology/x_bidir_inch.csv", which docs/pc-tool.md also runs).
 std::string Data(const std::string& name) {
+  if (name.find('/') != std::string::npos) return SourcePath(name);
   return SourcePath("tests/tools/exporters/data/" + name);
 }
 
@@ -76,10 +79,10 @@ TEST(VolcompExportSiemens, CecPerDirectionMatchesTheHandWrittenProgram) {
       {"\"mode\": \"CEC\"", "\"cec_table\": 1", "\"direction\": -1", "\"largest_value\": 0.005"});
 }
 
-// An inch machine (x_bidir_inch.csv, worked by hand in docs/pc-tool.md "Inch machines"): the
+// An inch machine (samples/metrology/x_bidir_inch.csv, worked by hand in docs/pc-tool.md "Inch machines"): the
 // program in inches, 6 decimals, and says the basic system must be inch.
 TEST(VolcompExportSiemens, InchMachineMatchesTheHandWrittenProgram) {
-  ExpectFileAsWrittenByHand("siemens", "x_bidir_inch.csv",
+  ExpectFileAsWrittenByHand("siemens", "samples/metrology/x_bidir_inch.csv",
                             {"--units", "in", "--mode", "lec", "--reference", "X=0"},
                             "siemens_lec_x_inch.mpf.expected",
                             {"\"unit\": \"in\"", "\"step\": 2,", "\"largest_error_uin\": 200,"});
@@ -231,7 +234,7 @@ TEST(VolcompExportFanuc, EntrySheetMatchesTheHandWorkedOne) {
 
 // An inch machine: detection unit 0.0001 in (IS-B), 3624 in inches, the reference at 4 in.
 TEST(VolcompExportFanuc, InchMachineMatchesTheHandWorkedSheet) {
-  ExpectFileAsWrittenByHand("fanuc", "x_bidir_inch.csv", {"--units", "in", "--reference", "X=4"},
+  ExpectFileAsWrittenByHand("fanuc", "samples/metrology/x_bidir_inch.csv", {"--units", "in", "--reference", "X=4"},
                             "fanuc_x_inch.txt.expected",
                             {"\"unit\": \"in\"", "\"p3624_in\": 2,", "\"count_in\": 0.0001,",
                              "\"detection_unit_in\": 0.0001,", "\"from_in\"", "\"p3627\": 1"});
@@ -240,7 +243,7 @@ TEST(VolcompExportFanuc, InchMachineMatchesTheHandWorkedSheet) {
 // HEIDENHAIN's and ISG's tables are metric whatever the machine: --units in is refused with why.
 TEST(VolcompExportMetricOnly, InchIsRefusedWithTheReason) {
   ScratchDir dir("export_metric_only");
-  const std::string in = Data("x_bidir_inch.csv");
+  const std::string in = Data("samples/metrology/x_bidir_inch.csv");
   auto r = RunCli({"export", "heidenhain", "--x", in, "--units", "in", "-o", dir / "h"});
   EXPECT_EQ(r.code, tools::kExitUsage);
   EXPECT_NE(r.err.find("--units must be mm (a TNC's .COM compensation tables are in mm on an "
