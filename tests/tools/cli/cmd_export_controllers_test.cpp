@@ -79,8 +79,8 @@ TEST(VolcompExportSiemens, CecPerDirectionMatchesTheHandWrittenProgram) {
       {"\"mode\": \"CEC\"", "\"cec_table\": 1", "\"direction\": -1", "\"largest_value\": 0.005"});
 }
 
-// An inch machine (samples/metrology/x_bidir_inch.csv, worked by hand in docs/pc-tool.md "Inch machines"): the
-// program in inches, 6 decimals, and says the basic system must be inch.
+// An inch machine (samples/metrology/x_bidir_inch.csv, worked by hand in docs/pc-tool.md "Inch
+// machines"): the program in inches, 6 decimals, and says the basic system must be inch.
 TEST(VolcompExportSiemens, InchMachineMatchesTheHandWrittenProgram) {
   ExpectFileAsWrittenByHand("siemens", "samples/metrology/x_bidir_inch.csv",
                             {"--units", "in", "--mode", "lec", "--reference", "X=0"},
@@ -234,8 +234,8 @@ TEST(VolcompExportFanuc, EntrySheetMatchesTheHandWorkedOne) {
 
 // An inch machine: detection unit 0.0001 in (IS-B), 3624 in inches, the reference at 4 in.
 TEST(VolcompExportFanuc, InchMachineMatchesTheHandWorkedSheet) {
-  ExpectFileAsWrittenByHand("fanuc", "samples/metrology/x_bidir_inch.csv", {"--units", "in", "--reference", "X=4"},
-                            "fanuc_x_inch.txt.expected",
+  ExpectFileAsWrittenByHand("fanuc", "samples/metrology/x_bidir_inch.csv",
+                            {"--units", "in", "--reference", "X=4"}, "fanuc_x_inch.txt.expected",
                             {"\"unit\": \"in\"", "\"p3624_in\": 2,", "\"count_in\": 0.0001,",
                              "\"detection_unit_in\": 0.0001,", "\"from_in\"", "\"p3627\": 1"});
 }
