@@ -159,6 +159,7 @@ TEST(EvaluateCircularCli, EachFigureWithItsUncertainty) {
   EXPECT_NEAR(u.get("shape_U_um")->number, std::sqrt(0.61), 1e-12);
   EXPECT_NEAR(u.get("F_U_um")->number, std::sqrt(1.643444), 1e-12);
   EXPECT_NEAR(u.get("F")->get("length_mm")->number, 100.0, 0.0);
+  EXPECT_EQ(u.get("F")->get("local_U_um"), nullptr);  // F stands for one length only
   // No radius: F without U, said; no reading U: no budget, said; a ppm accuracy: refused.
   r = RunCli({"evaluate", "circular", "-", "--instrument-u-um", "0.5"}, HandCaseCsv());
   EXPECT_EQ(r.code, 0) << r.err;

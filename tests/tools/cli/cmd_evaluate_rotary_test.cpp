@@ -32,6 +32,24 @@ TEST(MetrologyCli, EvaluateRotarySamplesIncludingReversal) {
   EXPECT_NE(r.out.find("Donaldson reversal"), std::string::npos) << r.out;
 }
 
+// E_VE from a drift-test file: the budget names the file in the text, the JSON and the report
+// (the sample warm-up test's largest point range, 37.54 µm: U_EVE = 0.6 × 37.54 = 22.52 µm).
+TEST(MetrologyCli, EvaluateRotaryNamesItsDriftTest) {
+  const std::string drift = SamplePath("metrology/thermal_drift.csv");
+  auto r = RunCli({"evaluate", "rotary", SamplePath("metrology/spindle_error_motion.csv"),
+                   "--tilt-distance-mm", "80", "--instrument-u-um", "0.1", "--drift-test", drift,
+                   "--json"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("\"drift_source\": \"drift test " + drift + ": "), std::string::npos)
+      << r.out;
+  EXPECT_NE(r.out.find("\"drift\": 22.52"), std::string::npos) << r.out;
+  r = RunCli({"evaluate", "rotary", SamplePath("metrology/spindle_error_motion.csv"),
+              "--tilt-distance-mm", "80", "--instrument-u-um", "0.1", "--drift-test", drift});
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("(0.6 × E_VE, F.3; drift test " + drift + ": "), std::string::npos)
+      << r.out;
+}
+
 TEST(MetrologyCli, EvaluateRotaryAboutEveryCentre) {
   auto r = RunCli({"evaluate", "rotary", SamplePath("metrology/spindle_error_motion.csv"),
                    "--tilt-distance-mm", "80", "--centres", "all"});

@@ -7,11 +7,12 @@
 
 #include "volcomp/metrology/inch.hpp"
 #include "volcomp/report/format.hpp"
+#include "volcomp/tools/math_constants.hpp"
 
 namespace volcomp::metrology {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+using tools::kPi;
 constexpr int kDecimals = 4;
 
 // The plane's two axes (indices into X, Y, Z) in the order that makes G3 counter-clockwise, its

@@ -133,7 +133,7 @@ JsonValue CircularJson(const CircularEvaluation& ev) {
     }
     u.Set("shape_terms", std::move(terms));
     u.Set("F_U_um", cu->radial ? JsonValue(cu->radial->span_u) : JsonValue());
-    u.Set("F", UncertaintyJson(cu->radial));
+    u.Set("F", UncertaintyJson(cu->radial, /*with_local=*/false));  // F: one length, R
   }
   j.Set("uncertainty", std::move(u));
   return j;

@@ -5,11 +5,12 @@
 #include <cmath>
 
 #include "volcomp/metrology/polar_fit.hpp"
+#include "volcomp/tools/math_constants.hpp"
 
 namespace volcomp::metrology {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+using tools::kPi;
 
 CentreValues About(const ErrorMotion& em, CentreKind kind, double a, double b) {
   CentreValues v;

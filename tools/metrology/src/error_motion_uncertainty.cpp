@@ -39,6 +39,7 @@ Expected<ErrorMotionUncertainty> ErrorMotionU(const ErrorMotionUncertaintyInputs
   u.setup = scale * in.setup_um;
   u.device = std::hypot(u.device_basis, u.setup);
   u.drift_stated = in.drift_range_um.has_value();
+  u.drift_source = in.drift_source;
   u.eve = u.drift_stated ? scale * 0.6 * *in.drift_range_um : 0.0;
   u.revolutions = revolutions;
   const double n = static_cast<double>(revolutions);

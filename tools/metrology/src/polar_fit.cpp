@@ -1,5 +1,6 @@
 // LSC and minimum-zone centres of polar profiles.
 #include "volcomp/metrology/polar_fit.hpp"
+#include "volcomp/tools/math_constants.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -10,7 +11,7 @@
 namespace volcomp::metrology {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+using tools::kPi;
 
 double Rad(double deg) { return deg * kPi / 180.0; }
 

@@ -150,14 +150,14 @@ std::string UncertaintyTermsText(const JsonValue& terms, const char* u_key) {
   return text;
 }
 
-JsonValue UncertaintyJson(const std::optional<PositioningUncertainty>& u) {
+JsonValue UncertaintyJson(const std::optional<PositioningUncertainty>& u, bool with_local) {
   if (!u) return JsonValue();
   JsonValue j = JsonValue::Object();
   const UncertaintyJsonKeys keys = UncertaintyKeys(u->kind);
   j.Set("k", 2);
   j.Set(keys.span, u->span);
   j.Set(keys.span_u, u->span_u);
-  j.Set(keys.local_u, u->local_u);
+  if (with_local) j.Set(keys.local_u, u->local_u);
   JsonValue terms = JsonValue::Array();
   for (const auto& t : u->terms) {
     JsonValue o = JsonValue::Object();

@@ -6,11 +6,12 @@
 #include <sstream>
 
 #include "volcomp/metrology/polar_fit.hpp"
+#include "volcomp/tools/math_constants.hpp"
 
 namespace volcomp::metrology {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+using tools::kPi;
 
 double Rad(double deg) { return deg * kPi / 180.0; }
 

@@ -14,6 +14,11 @@
 namespace volcomp::metrology {
 namespace {
 
+// "; FILE ..." naming the drift test E_VE came from, or "" (the JSON's drift_source).
+std::string DriftSourceText(const tools::JsonValue* source) {
+  return source != nullptr ? "; " + source->string : "";
+}
+
 using report::FormatFixed;
 using tools::JsonValue;
 
@@ -43,6 +48,7 @@ JsonValue UncertaintyJson(const std::optional<ErrorMotionUncertainty>& u) {
   j.Set("setup", u->setup);
   j.Set("drift", u->eve);
   j.Set("drift_stated", u->drift_stated);
+  if (!u->drift_source.empty()) j.Set("drift_source", u->drift_source);
   j.Set("revolutions", u->revolutions);
   return j;
 }
@@ -213,7 +219,8 @@ void WriteRotaryText(std::ostream& out, const JsonValue& ev) {
           << json::Text(u, "device_from") << ", setup "
           << FormatFixed(json::Number(u, "setup"), d + 1) << ", drift "
           << (json::At(u, "drift_stated").boolean
-                  ? FormatFixed(json::Number(u, "drift"), d + 1) + " (0.6 × E_VE, F.3)"
+                  ? FormatFixed(json::Number(u, "drift"), d + 1) + " (0.6 × E_VE, F.3" +
+                        DriftSourceText(u.get("drift_source")) + ")"
                   : std::string("not stated"))
           << ", n = " << json::Integer(u, "revolutions") << "\n";
     }
@@ -270,7 +277,8 @@ std::string UncertaintyText(const RotaryMeasurement& m) {
          FormatFixed(u.device_basis, d) +
          (u.from_calibration ? " (calibration, F.1)" : " (0.6 × error range, F.2)") + ", setup " +
          FormatFixed(u.setup, d) + ", drift " +
-         (u.drift_stated ? FormatFixed(u.eve, d) + " (0.6 × E_VE, F.3)"
+         (u.drift_stated ? FormatFixed(u.eve, d) + " (0.6 × E_VE, F.3" +
+                               (u.drift_source.empty() ? "" : "; " + u.drift_source) + ")"
                          : std::string("not stated")) +
          ", n = " + std::to_string(u.revolutions) + " revolutions.";
 }

@@ -10,6 +10,7 @@
 #include "dissertation_tables.hpp"
 #include "volcomp/datasets/s500.hpp"
 #include "volcomp/model/dissertation.hpp"
+#include "volcomp/tools/math_constants.hpp"
 
 namespace volcomp::reproduce::dissertation {
 namespace {
@@ -20,7 +21,7 @@ using model::DissertationOptions;
 using model::DissertationResult;
 using model::PointErrors;
 
-constexpr double kPi = 3.14159265358979323846;
+using tools::kPi;
 
 // The inputs as the appendix prints them (line 3009: ρ, line 3011: ε), [axis][direction].
 const char* const kPrintedRho[3][3] = {{"30.566667", "4.733333", "0.3"},

@@ -11,6 +11,7 @@
 #include "dissertation_tables.hpp"
 #include "volcomp/datasets/s500.hpp"
 #include "volcomp/model/dissertation.hpp"
+#include "volcomp/tools/math_constants.hpp"
 
 namespace volcomp::reproduce::dissertation {
 namespace {
@@ -21,7 +22,7 @@ using model::DissertationOptions;
 using model::DissertationResult;
 using model::PointErrors;
 
-constexpr double kPi = 3.14159265358979323846;
+using tools::kPi;
 constexpr double kArcsecPerRad = 180.0 * 3600.0 / kPi;
 
 DissertationResult Evaluate(const PointErrors& p, double k, DissertationCase which) {

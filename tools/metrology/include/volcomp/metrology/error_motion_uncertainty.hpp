@@ -15,6 +15,7 @@
 #pragma once
 
 #include <optional>
+#include <string>
 
 #include "volcomp/hosted/expected.hpp"
 
@@ -25,6 +26,7 @@ struct ErrorMotionUncertaintyInputs {
   std::optional<double> device_range_um;        // R_DEVICE, the maker's error range (F.2)
   double setup_um = 0.0;                        // setup contributors, one U at k = 2
   std::optional<double> drift_range_um;         // E_VE, range of a drift test (F.3)
+  std::string drift_source;                     // where E_VE comes from ("" none): the file
   bool literal_f6 = false;                      // F.6 as printed for single-plot values
 
   /// True when the instrument is stated (the least an uncertainty needs).
@@ -38,6 +40,7 @@ struct ErrorMotionUncertainty {
   double setup = 0.0;
   double eve = 0.0;  // U_EVE = 0.6·E_VE (0 when no drift test is stated)
   bool drift_stated = false;
+  std::string drift_source;        // as given
   int revolutions = 0;             // n
   double single_plot = 0.0;        // F.4
   double synchronous_plot = 0.0;   // F.5

@@ -18,9 +18,11 @@ namespace volcomp::metrology {
 
 /// One JSON object with the standard, the per-position values and every overall parameter.
 tools::JsonValue PositioningJson(const PositioningResult& result);
-/// A budget as JSON: k, the span and its U, the local U and terms[] (keys naming their unit,
-/// UncertaintyKeys()); null for none.
-tools::JsonValue UncertaintyJson(const std::optional<PositioningUncertainty>& u);
+/// A budget as JSON: k, the span and its U, the local U (unless `with_local` is false: a budget
+/// that stands for one length only, as the circular test's F) and terms[] (keys naming their
+/// unit, UncertaintyKeys()); null for none.
+tools::JsonValue UncertaintyJson(const std::optional<PositioningUncertainty>& u,
+                                 bool with_local = true);
 /// A budget's terms[] as text: "instrument 0.60, thermometer 1.38, ..." (U in key `u_key`).
 std::string UncertaintyTermsText(const tools::JsonValue& terms, const char* u_key);
 
