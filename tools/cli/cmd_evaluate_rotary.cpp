@@ -66,8 +66,7 @@ Expected<Output> RunEvaluateRotary(Args& args, Context& ctx) {
   o.uncertainty.device_range_um = args.Number("--instrument-range-um");
   const auto setup_u = args.Number("--setup-u-um");
   o.uncertainty.drift_range_um = args.Number("--drift-range-um");
-  VOLCOMP_TRY(ReadDriftTest(args, ctx, &o.uncertainty.drift_range_um,
-                           &o.uncertainty.drift_source));
+  VOLCOMP_TRY(ReadDriftTest(args, ctx, &o.uncertainty.drift_range_um, &o.uncertainty.drift_source));
   o.uncertainty.literal_f6 = args.Flag("--f6-as-printed");
   const auto reversal_file = args.Value("--reversal");
   const std::string reversal_channel = args.Value("--reversal-channel").value_or("");

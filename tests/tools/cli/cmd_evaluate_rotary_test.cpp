@@ -46,8 +46,7 @@ TEST(MetrologyCli, EvaluateRotaryNamesItsDriftTest) {
   r = RunCli({"evaluate", "rotary", SamplePath("metrology/spindle_error_motion.csv"),
               "--tilt-distance-mm", "80", "--instrument-u-um", "0.1", "--drift-test", drift});
   ASSERT_EQ(r.code, 0) << r.err;
-  EXPECT_NE(r.out.find("(0.6 × E_VE, F.3; drift test " + drift + ": "), std::string::npos)
-      << r.out;
+  EXPECT_NE(r.out.find("(0.6 × E_VE, F.3; drift test " + drift + ": "), std::string::npos) << r.out;
 }
 
 TEST(MetrologyCli, EvaluateRotaryAboutEveryCentre) {

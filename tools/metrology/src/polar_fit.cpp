@@ -1,12 +1,13 @@
 // LSC and minimum-zone centres of polar profiles.
 #include "volcomp/metrology/polar_fit.hpp"
-#include "volcomp/tools/math_constants.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <set>
 #include <string>
+
+#include "volcomp/tools/math_constants.hpp"
 
 namespace volcomp::metrology {
 namespace {
