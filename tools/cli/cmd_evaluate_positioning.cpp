@@ -68,6 +68,9 @@ Expected<Output> RunEvaluatePositioning(Args& args, Context& ctx) {
   ev.warnings.insert(ev.warnings.begin(), file.warnings.begin(), file.warnings.end());
   Output output{m::PositioningEvaluationJson(ev), EvaluatePositioningText, ev.warnings};
   output.data.Set("format", datasets::PositioningFormatName(file.format));
+  if (file.format == datasets::PositioningFormat::kRtl) {
+    output.data.Set("rtl_units", datasets::RtlUnitsName(file.rtl_units));
+  }
   if (report_dir) {
     VOLCOMP_TRY(WriteMetrologyReport(m::PositioningEvaluationPage(ev), output.data, *report_dir,
                                      m::PositioningReportName(ev), ctx));

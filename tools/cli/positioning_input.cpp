@@ -16,9 +16,15 @@ const Options& PositioningFormatOptions() {
        "(unidirectional test)"},
       {"--rtl-negate", nullptr, nullptr, nullptr, nullptr,
        ".rtl deviations are nominal − actual (laser set up the other way): flip their sign"},
+      {"--rtl-units", nullptr, "mm|in", nullptr, "mm",
+       ".rtl written in mm and µm, or (laser software in imperial units) in inches and µin: "
+       "converted to mm and µm"},
+      {"--rtl-expansion-per", nullptr, "auto|C|F", nullptr, "auto",
+       ".rtl expansion coefficient in ppm/°C or ppm/°F (auto: ppm/°F when the file's "
+       "temperatures are °F)"},
       {"--accept-units", nullptr, nullptr, nullptr, nullptr,
-       "accept a µm deviation column whose values are all below 0.1 µm (refused by default as "
-       "mm typed as µm)"},
+       "accept a µm (or µin) deviation column whose values are all below 0.1 µm (refused by "
+       "default as mm typed as µm, or inches typed as µin)"},
   };
   return kOptions;
 }
@@ -38,6 +44,19 @@ Expected<datasets::PositioningReadOptions> ParsePositioningReadOptions(Args& arg
                                         {"forward", RtlRuns::kForward},
                                         {"reverse", RtlRuns::kReverse}}));
   o.rtl.negate = args.Flag("--rtl-negate");
+  VOLCOMP_TRY_ASSIGN(o.rtl.units,
+                     ParseChoice<datasets::RtlUnits>(
+                         "--rtl-units", args.Value("--rtl-units").value_or("mm"),
+                         {{"mm", datasets::RtlUnits::kMm}, {"in", datasets::RtlUnits::kIn}}));
+  using datasets::RtlExpansionPer;
+  VOLCOMP_TRY_ASSIGN(o.rtl.expansion_per,
+                     ParseChoice<RtlExpansionPer>(
+                         "--rtl-expansion-per", args.Value("--rtl-expansion-per").value_or("auto"),
+                         {{"auto", RtlExpansionPer::kAuto},
+                          {"C", RtlExpansionPer::kCelsius},
+                          {"F", RtlExpansionPer::kFahrenheit},
+                          {"c", RtlExpansionPer::kCelsius, false},
+                          {"f", RtlExpansionPer::kFahrenheit, false}}));
   o.accept_units = args.Flag("--accept-units");
   return o;
 }

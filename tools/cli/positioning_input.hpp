@@ -1,7 +1,7 @@
 // The positioning-test input of every command that reads one (`evaluate positioning`, `build
 // axis`, the exports): the options that choose the file format (--format auto|csv|rtl) and how
-// a Renishaw .rtl is read (--rtl-runs, --rtl-negate), the unit plausibility check's override
-// (--accept-units), and the file read through the one loader
+// a Renishaw .rtl is read (--rtl-runs, --rtl-negate, --rtl-units, --rtl-expansion-per), the unit
+// plausibility check's override (--accept-units), and the file read through the one loader
 // (datasets/positioning_file.hpp).
 #pragma once
 
@@ -13,7 +13,7 @@
 
 namespace volcomp::cli {
 
-/// --format, --rtl-runs, --rtl-negate and --accept-units.
+/// --format, --rtl-runs, --rtl-negate, --rtl-units, --rtl-expansion-per and --accept-units.
 const Options& PositioningFormatOptions();
 
 /// Those options' values; a usage failure for a word outside their sets.

@@ -1,6 +1,7 @@
 // The unit plausibility check of the positioning loader: a µm deviation column whose values are
 // all below 0.1 µm in magnitude (not all zero) is mm typed as µm and refused, naming the column,
-// the largest value and the fix, unless accepted; CSV readings, CSV means and .rtl alike.
+// the largest value and the fix, unless accepted; CSV readings, CSV means and .rtl alike; a µin
+// column (inches typed as µin) against the same 0.1 µm.
 #include <gtest/gtest.h>
 
 #include <string>
@@ -66,6 +67,39 @@ TEST(datasets_unit_check, RtlDeviationsAreChecked) {
             0u)
       << e;
   EXPECT_NE(e.find("an .rtl holds µm"), std::string::npos) << e;
+}
+
+// A µin column gets the same physical threshold, 0.1 µm = 0.1/0.0254 = 3.93701 µin. Inches typed
+// as µin (10 µm = 0.0004 in written as 0.0004 µin) lie far below it.
+TEST(datasets_unit_check, InchesTypedAsMicroinchesAreRefused) {
+  const std::string rtl =
+      "HEADER::\nTARGET DATA::\nTarget-count: 2\nTargets :\n0 4\nRUNS::\nRun-count: 1\n"
+      "DEVIATIONS::\n1 1 0.0004\n1 2 -0.0003\n";
+  PositioningReadOptions in;
+  in.rtl.units = RtlUnits::kIn;
+  const auto r = ReadPositioningText(rtl, "t.rtl", in);
+  ASSERT_FALSE(r.ok());
+  EXPECT_EQ(r.error().message,
+            "t.rtl:8: column \"DEVIATIONS\": every value is below 0.1 µm (3.93701 µin) in "
+            "magnitude (the largest is 0.0004 µin on line 9): these look like inches typed as µin; "
+            "an .rtl read with --rtl-units in holds µin, so check the test in the laser software, "
+            "or give --accept-units if the axis really is this good");
+  in.accept_units = true;
+  EXPECT_TRUE(ReadPositioningText(rtl, "t.rtl", in).ok());
+  // 4 µin = 0.1016 µm: at the threshold's edge, plausible.
+  std::string four = rtl;
+  four.replace(four.find("0.0004"), 6, "4");
+  in.accept_units = false;
+  EXPECT_TRUE(ReadPositioningText(four, "t.rtl", in).ok());
+  // The CSV's µin column alike.
+  const std::string e =
+      ErrorOf("target_in,direction,run,deviation_uin\n0,up,1,0.0002\n4,up,1,-0.0005\n", "i.csv");
+  EXPECT_EQ(e.rfind("i.csv:1: column \"deviation_uin\": every value is below 0.1 µm (3.93701 "
+                    "µin) in magnitude (the largest is -0.0005 µin on line 3)",
+                    0),
+            0u)
+      << e;
+  EXPECT_NE(e.find("if they are inches, name the column deviation_in"), std::string::npos) << e;
 }
 
 }  // namespace

@@ -23,28 +23,41 @@ const char* PositioningFormatName(PositioningFormat format) {
 
 namespace {
 
-// The unit plausibility check of every µm column of a linear axis (unit_check.hpp).
+// The readings' column unit when it is a micro-unit (µm, or µin: 0.0254 µm), else nullptr.
+const MicroUnit* MicroUnitOf(const metrology::PositioningData& d) {
+  if (d.kind != metrology::AxisKind::kLinear) return nullptr;
+  if (d.column_scale == kMicrometre.um_per_unit) return &kMicrometre;
+  if (d.column_scale == kMicroinch.um_per_unit) return &kMicroinch;
+  return nullptr;  // mm, inches: whole units, not this check's business
+}
+
+// The unit plausibility check of every µm or µin column of a linear axis (unit_check.hpp).
 Outcome CheckUnits(const PositioningFile& f) {
-  if (f.readings && f.readings->kind == metrology::AxisKind::kLinear &&
-      f.readings->column_scale == 1.0) {
+  const MicroUnit* unit = f.readings ? MicroUnitOf(*f.readings) : nullptr;
+  if (unit) {
     std::vector<double> values;
     std::vector<std::size_t> lines;
     for (const auto& r : f.readings->readings) {
       values.push_back(r.deviation);
       lines.push_back(r.line);
     }
-    const std::string fix = f.format == PositioningFormat::kRtl
-                                ? "an .rtl holds µm, so check the test in the laser software"
-                                : "if they are mm, name the column deviation_mm";
+    const bool rtl = f.format == PositioningFormat::kRtl;
+    const std::string fix =
+        unit == &kMicrometre
+            ? (rtl ? "an .rtl holds µm, so check the test in the laser software"
+                   : "if they are mm, name the column deviation_mm")
+            : (rtl ? "an .rtl read with --rtl-units in holds µin, so check the test in the laser "
+                     "software"
+                   : "if they are inches, name the column deviation_in");
     VOLCOMP_TRY(
-        CheckMicrometreColumn(f.source, f.readings_line, f.readings->column, values, lines, fix));
+        CheckMicroColumn(f.source, f.readings_line, f.readings->column, *unit, values, lines, fix));
   }
   if (f.means && !f.means->rotary) {
     const char* fix = "if they are mm, multiply them by 1000";
-    VOLCOMP_TRY(CheckMicrometreColumn(f.source, f.readings_line, "dev_forward_um",
-                                      f.means->dev_forward, {}, fix));
-    VOLCOMP_TRY(CheckMicrometreColumn(f.source, f.readings_line, "dev_reverse_um",
-                                      f.means->dev_reverse, {}, fix));
+    VOLCOMP_TRY(CheckMicroColumn(f.source, f.readings_line, "dev_forward_um", kMicrometre,
+                                 f.means->dev_forward, {}, fix));
+    VOLCOMP_TRY(CheckMicroColumn(f.source, f.readings_line, "dev_reverse_um", kMicrometre,
+                                 f.means->dev_reverse, {}, fix));
   }
   return Outcome::Ok();
 }
@@ -70,6 +83,7 @@ Expected<PositioningFile> ReadAnyFormat(const std::string& text,
   PositioningFile f;
   f.source = source;
   f.format = PositioningFormat::kRtl;
+  f.rtl_units = options.rtl.units;
   f.conditions = std::move(test.conditions);
   f.readings = std::move(test.readings);
   f.readings_line = test.deviations_line;

@@ -7,7 +7,9 @@
 #include <sstream>
 #include <utility>
 
+#include "environment_units.hpp"
 #include "trim.hpp"
+#include "volcomp/metrology/inch.hpp"
 #include "volcomp/tools/csv.hpp"
 
 namespace volcomp::datasets {
@@ -114,10 +116,26 @@ std::string Plural(std::size_t n, const char* word) {
   return std::to_string(n) + " " + word + (n == 1 ? "" : "s");
 }
 
+// The file's length units and what one of each is in mm / µm (the one conversion of an .rtl).
+struct LengthUnits {
+  const char* target;
+  const char* deviation;
+  double mm_per_target;
+  double um_per_deviation;
+};
+
+LengthUnits LengthUnitsOf(RtlUnits units) {
+  // 1 in = 25.4 mm exactly, so 1 µin = 0.0254 µm.
+  if (units == RtlUnits::kIn) {
+    return {"in", "µin", metrology::kMmPerInch, metrology::kMmPerInch / 1000.0};
+  }
+  return {"mm", "µm", 1.0, 1.0};
+}
+
 class Reader {
  public:
   Reader(std::string source, const RtlOptions& options)
-      : source_(std::move(source)), options_(options) {}
+      : source_(std::move(source)), options_(options), units_(LengthUnitsOf(options.units)) {}
 
   Expected<RtlTest> Read(const std::string& text);
 
@@ -138,9 +156,16 @@ class Reader {
   Outcome Finish(std::size_t last_line);
   void AddCondition(const std::string& key, std::string value, std::size_t line);
   void AddEnvironmentConditions();
+  Outcome ConvertEnvironment();
+  Outcome ConvertTemperatures();
+  Outcome ConvertPressure();
+  void ConvertExpansion();
 
   std::string source_;
   RtlOptions options_;
+  LengthUnits units_;
+  std::vector<std::string> units_read_;  // "temperatures °F", ...: for "units as read"
+  bool fahrenheit_ = false;              // the temperatures are °F
   RtlTest test_;
   std::string section_;  // current section name, "" before the first
   std::map<std::string, std::size_t> section_lines_;
@@ -210,14 +235,15 @@ Outcome Reader::TargetNumbers(const Line& line, const std::vector<std::string>& 
                                  " of Target-count (line " + std::to_string(target_count_line_) +
                                  ")");
     }
+    const double target_mm = *v * units_.mm_per_target;
     for (std::size_t j = 0; j < test_.targets_mm.size(); ++j) {
-      if (test_.targets_mm[j] == *v) {
-        return At(line.number, "target " + w + " mm is listed twice (targets " +
+      if (test_.targets_mm[j] == target_mm) {
+        return At(line.number, "target " + w + " " + units_.target + " is listed twice (targets " +
                                    std::to_string(j + 1) + " and " +
                                    std::to_string(test_.targets_mm.size() + 1) + ")");
       }
     }
-    test_.targets_mm.push_back(*v);
+    test_.targets_mm.push_back(target_mm);
   }
   return Outcome::Ok();
 }
@@ -268,10 +294,10 @@ Outcome Reader::DeviationRow(const Line& line) {
                                std::to_string(*target_count_) + " (line " +
                                std::to_string(target_count_line_) + ")");
   }
-  const double deviation = *tools::ParseDouble(w[2]);
+  const double deviation = *tools::ParseDouble(w[2]) * units_.um_per_deviation;  // µm
   if (std::fabs(deviation) > metrology::kMaxReadingMagnitude) {
-    return At(line.number,
-              "a deviation of " + w[2] + " µm cannot be a reading (the limit is ±1e9 µm); refused");
+    return At(line.number, "a deviation of " + w[2] + " " + units_.deviation +
+                               " cannot be a reading (the limit is ±1e9 µm); refused");
   }
   const std::pair<int, int> key{static_cast<int>(*run), static_cast<int>(*target)};
   const auto [it, added] = row_line_.emplace(key, line.number);
@@ -383,6 +409,115 @@ std::string Number(double v) {
 std::string ReadingText(const RtlReading& r) {
   if (r.start == r.end) return Number(r.start);
   return Number(r.start) + " at start, " + Number(r.end) + " at end";
+}
+
+// "68.6 and 68.7 °F", or "6.5 ppm/°F" when start and end agree (no unit: "") for messages.
+std::string ValuesText(const RtlReading& r, const std::string& unit) {
+  const std::string values =
+      r.start == r.end ? Number(r.start) : Number(r.start) + " and " + Number(r.end);
+  return unit.empty() ? values : values + " " + unit;
+}
+
+// The temperatures in °C: each line's unit recognised by its range (environment_units.hpp).
+Outcome Reader::ConvertTemperatures() {
+  RtlEnvironment& env = test_.environment;
+  const std::pair<std::optional<RtlReading>*, const char*> temperatures[] = {
+      {&env.air_temperature_c, "Air temp"},
+      {&env.material_temperature_c[0], "Mat temp 1"},
+      {&env.material_temperature_c[1], "Mat temp 2"},
+      {&env.material_temperature_c[2], "Mat temp 3"}};
+  std::size_t celsius_line = 0, fahrenheit_line = 0;
+  for (const auto& [slot, name] : temperatures) {
+    if (!*slot) continue;
+    RtlReading& r = **slot;
+    const std::optional<TemperatureUnit> unit = RecogniseTemperature(r.start, r.end);
+    if (!unit) {
+      return At(r.line, std::string(name) + " " + ValuesText(r, "") +
+                            " is not a shop temperature: °C up to 45, or °F above 45 up to " +
+                            Number(kHighestShopFahrenheit) + " (45 °C), start and end alike");
+    }
+    if (*unit == TemperatureUnit::kCelsius) {
+      if (celsius_line == 0) celsius_line = r.line;
+      continue;
+    }
+    if (fahrenheit_line == 0) fahrenheit_line = r.line;
+    const std::string as_written = ValuesText(r, "°F");
+    r.start = CelsiusFromFahrenheit(r.start);
+    r.end = CelsiusFromFahrenheit(r.end);
+    Warn(r.line, std::string(name) + " is above 45, so read as °F: " + as_written + " = " +
+                     ValuesText(r, "°C"));
+  }
+  fahrenheit_ = fahrenheit_line != 0;
+  if (fahrenheit_) units_read_.push_back("temperatures °F");
+  if (fahrenheit_ && celsius_line != 0) {
+    Warn(celsius_line, "this temperature is 45 or below, so read as °C, but line " +
+                           std::to_string(fahrenheit_line) +
+                           "'s is °F: check both against the laser software");
+  }
+  if (fahrenheit_ && options_.units == RtlUnits::kMm) {
+    Warn(fahrenheit_line,
+         "the temperatures are °F but the file is read in mm and µm (--rtl-units mm): it was "
+         "probably written in inch units; if its targets are inches, read it with --rtl-units in");
+  } else if (!fahrenheit_ && celsius_line != 0 && options_.units == RtlUnits::kIn) {
+    Warn(celsius_line,
+         "the temperatures are °C but the file is read in inches and µin (--rtl-units in): it "
+         "was probably written in metric units; if its targets are mm, read it with "
+         "--rtl-units mm");
+  }
+  return Outcome::Ok();
+}
+
+// The air pressure in kPa: its unit recognised by its range (environment_units.hpp).
+Outcome Reader::ConvertPressure() {
+  std::optional<RtlReading>& pressure = test_.environment.air_pressure_kpa;
+  if (!pressure) return Outcome::Ok();
+  RtlReading& r = *pressure;
+  const PressureUnit* unit = RecognisePressure(r.start, r.end);
+  if (!unit) {
+    return At(r.line, "Air press " + ValuesText(r, "") +
+                          " is in none of the air pressure ranges (" + PressureRangesText() +
+                          ", start and end alike)");
+  }
+  if (unit->kpa_per_unit == 1.0) return Outcome::Ok();
+  const std::string as_written = ValuesText(r, unit->name);
+  r.start *= unit->kpa_per_unit;
+  r.end *= unit->kpa_per_unit;
+  Warn(r.line, std::string("Air press read as ") + unit->name + " by its range (" +
+                   PressureRangesText() + "): " + as_written + " = " + ValuesText(r, "kPa"));
+  units_read_.push_back(std::string("pressure ") + unit->name);
+  return Outcome::Ok();
+}
+
+// The expansion coefficient in ppm/°C.
+void Reader::ConvertExpansion() {
+  std::optional<RtlReading>& expansion = test_.environment.expansion_ppm_per_c;
+  if (!expansion) return;
+  const RtlExpansionPer per = options_.expansion_per;
+  if (per == RtlExpansionPer::kCelsius || (per == RtlExpansionPer::kAuto && !fahrenheit_)) return;
+  RtlReading& r = *expansion;
+  const std::string as_written = ValuesText(r, "ppm/°F");
+  r.start *= 1.8;  // per °F → per °C: a kelvin is 1.8 °F
+  r.end *= 1.8;
+  units_read_.push_back("expansion coefficient ppm/°F");
+  if (per == RtlExpansionPer::kAuto) {
+    Warn(r.line, "Exp coeff read as ppm/°F, since the temperatures are °F: " + as_written + " = " +
+                     ValuesText(r, "ppm/°C") +
+                     "; give --rtl-expansion-per C if the file states ppm/°C");
+  }
+}
+
+Outcome Reader::ConvertEnvironment() {
+  if (options_.units == RtlUnits::kIn) units_read_.push_back("targets in, deviations µin");
+  VOLCOMP_TRY(ConvertTemperatures());
+  VOLCOMP_TRY(ConvertPressure());
+  ConvertExpansion();
+  if (!units_read_.empty()) {
+    std::string text;
+    for (const std::string& u : units_read_) text += (text.empty() ? "" : ", ") + u;
+    test_.conditions.entries.emplace_back("units as read",
+                                          text + " (converted to mm, µm, °C, kPa and ppm/°C)");
+  }
+  return Outcome::Ok();
 }
 
 void Reader::AddCondition(const std::string& key, std::string value, std::size_t line) {
@@ -510,7 +645,8 @@ Outcome Reader::Finish(std::size_t last_line) {
   d.source = source_;
   d.kind = metrology::AxisKind::kLinear;
   d.column = "DEVIATIONS";
-  d.column_scale = 1.0;
+  d.column_scale = units_.um_per_deviation;
+  d.read_in_inches = options_.units == RtlUnits::kIn;
   for (const Row& r : rows_) {
     metrology::PositioningReading reading;
     reading.target = test_.targets_mm[static_cast<std::size_t>(r.target - 1)];
@@ -537,6 +673,7 @@ Outcome Reader::Finish(std::size_t last_line) {
          "no ENVIRONMENT:: section: the test conditions give no air or material "
          "temperature");
   }
+  VOLCOMP_TRY(ConvertEnvironment());
   AddEnvironmentConditions();
   return Outcome::Ok();
 }
@@ -563,6 +700,8 @@ Expected<RtlTest> Reader::Read(const std::string& text) {
 }
 
 }  // namespace
+
+const char* RtlUnitsName(RtlUnits units) { return units == RtlUnits::kIn ? "in" : "mm"; }
 
 bool LooksLikeRtl(const std::string& text) {
   std::size_t start = text.compare(0, 3, "\xEF\xBB\xBF") == 0 ? 3 : 0;

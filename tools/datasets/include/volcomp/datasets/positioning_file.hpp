@@ -30,10 +30,10 @@ const char* PositioningFormatName(PositioningFormat format);
 
 struct PositioningReadOptions {
   PositioningFormat format = PositioningFormat::kAuto;
-  RtlOptions rtl;  // .rtl only: directions of the runs, sign
-  /// Accept a µm column whose values are all below 0.1 µm (not all zero): without it such a
-  /// column is refused as mm typed as µm (a failure naming the column, the largest value and the
-  /// fix).
+  RtlOptions rtl;  // .rtl only: directions of the runs, sign, units
+  /// Accept a µm (or µin) column whose values are all below 0.1 µm (not all zero): without it
+  /// such a column is refused as mm typed as µm (inches typed as µin; a failure naming the
+  /// column, the largest value and the fix).
   bool accept_units = false;
 };
 
@@ -41,6 +41,7 @@ struct PositioningReadOptions {
 struct PositioningFile {
   std::string source;                                  // file name or "<stdin>"
   PositioningFormat format = PositioningFormat::kCsv;  // what was read: kCsv or kRtl
+  RtlUnits rtl_units = RtlUnits::kMm;  // .rtl: the units it was read in (converted to mm/µm)
   metrology::TestConditions conditions;
   std::optional<metrology::PositioningData> readings;  // raw readings (CSV or .rtl)
   std::size_t readings_line = 0;  // the line naming the data as a whole (header, DEVIATIONS::)
@@ -49,7 +50,7 @@ struct PositioningFile {
 };
 
 /// Reads the file at `path` (kIoError when it cannot be read), with the unit plausibility check
-/// of every µm deviation column of a linear axis (see PositioningReadOptions::accept_units).
+/// of every µm or µin deviation column of a linear axis (see PositioningReadOptions::accept_units).
 Expected<PositioningFile> ReadPositioningFile(const std::string& path,
                                               const PositioningReadOptions& options = {});
 /// The same from text already read; `source` names it in messages.

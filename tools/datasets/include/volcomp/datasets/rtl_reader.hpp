@@ -23,7 +23,23 @@
 //     [infer].
 // Units: targets in mm, deviations in µm ([code], three parsers say µm, a fourth divides by 1000
 // for controller tables in mm); temperatures in °C, pressure in kPa [infer], humidity in %RH,
-// expansion coefficient in ppm/°C [infer].
+// expansion coefficient in ppm/°C [infer]. The file records no unit that any parser knows.
+//
+// Inch files (RtlUnits::kIn, --rtl-units in) [unconfirmed: no inch sample exists in public]:
+// LaserXL run in imperial units is taken to write the same file with other units: targets in
+// inches and deviations in microinches (µin). They are converted exactly (1 in = 25.4 mm,
+// 1 µin = 0.0254 µm) into the mm/µm test the rest of the tool uses, here and nowhere else. Check
+// a first real file once against the laser software's display: one target (e.g. 4.000000 in
+// on screen = 101.6 mm in `evaluate positioning`) and one deviation (e.g. 78.74 µin on screen
+// = 2.000 µm).
+// Environment units are recognised by range in both unit systems (environment_units.hpp), said
+// aloud in a warning: a temperature above 45 is °F (converted to °C); a pressure in kPa, hPa,
+// mmHg or inHg (converted to kPa); when the temperatures are °F, `Exp coeff` is read as ppm/°F
+// (×1.8 to ppm/°C) unless RtlOptions::expansion_per says otherwise (6.4 ppm/°F steel and
+// 6.4 ppm/°C granite are both plausible, so its range cannot tell). °F temperatures in a file
+// read as mm (or °C in one read as inches) are warned about: it was probably written in the
+// other unit system. The test conditions get a "units as read" entry when anything was
+// converted.
 //
 // Sign: volcomp's convention is error E = actual − nominal in µm. The parsers' writers put the
 // stored deviation unchanged into controller tables that hold E (Heidenhain, Siemens), so the
@@ -41,8 +57,9 @@
 // list longer or shorter than Target-count, or a target given twice; a deviation row that is not
 // three numbers, whose run or target is beyond the counts or repeats an earlier row; fewer rows
 // than R × N (a truncated file: the missing run/targets are named); a non-number where a number
-// belongs; a deviation beyond metrology::kMaxReadingMagnitude. A missing ENVIRONMENT section is a
-// warning (no temperatures in the test conditions).
+// belongs; a deviation beyond metrology::kMaxReadingMagnitude; a temperature neither °C nor °F
+// of a shop, or a pressure in none of the recognised ranges (the ranges are named). A missing
+// ENVIRONMENT section is a warning (no temperatures in the test conditions).
 #pragma once
 
 #include <cstddef>
@@ -63,9 +80,27 @@ enum class RtlRuns {
   kReverse,    // every run ↓
 };
 
+/// The length units the laser software wrote the file in (the file does not say).
+enum class RtlUnits {
+  kMm,  // targets mm, deviations µm
+  kIn,  // targets inches, deviations µin [unconfirmed]: converted to mm and µm
+};
+
+/// "mm" or "in".
+const char* RtlUnitsName(RtlUnits units);
+
+/// The temperature unit of `Exp coeff`'s ppm.
+enum class RtlExpansionPer {
+  kAuto,        // per °F when the file's temperatures are °F (warned), else per °C
+  kCelsius,     // ppm/°C as written
+  kFahrenheit,  // ppm/°F: ×1.8 to ppm/°C
+};
+
 struct RtlOptions {
   RtlRuns runs = RtlRuns::kAlternate;
   bool negate = false;  // the laser setup measured nominal − actual: flip every deviation
+  RtlUnits units = RtlUnits::kMm;
+  RtlExpansionPer expansion_per = RtlExpansionPer::kAuto;
 };
 
 /// One environment record: value at the start and at the end of the test.
@@ -75,6 +110,8 @@ struct RtlReading {
   std::size_t line = 0;
 };
 
+/// As read, converted to these units (the units the file was written in are in the warnings and
+/// the condition "units as read").
 struct RtlEnvironment {
   std::optional<RtlReading> air_temperature_c;
   std::optional<RtlReading> air_pressure_kpa;
@@ -89,7 +126,7 @@ struct RtlTest {
   metrology::PositioningData readings;   // linear axis, targets mm, deviations µm (E)
   metrology::TestConditions conditions;  // user text, then the environment
   RtlEnvironment environment;
-  std::vector<double> targets_mm;  // in Targets order
+  std::vector<double> targets_mm;  // in Targets order, converted to mm
   int run_count = 0;
   std::size_t deviations_line = 0;    // the DEVIATIONS:: line
   std::vector<std::string> warnings;  // "source:line: ..." or "source: ..."
