@@ -69,7 +69,7 @@ struct ControllerTableArgs {
   std::map<char, double> reference;  // machine units (deg); absent: none (or the default)
   bool negate = false;
   metrology::GroupingOptions grouping;
-  datasets::PositioningReadOptions read;  // --format, --rtl-runs, --rtl-negate, --accept-units
+  datasets::PositioningReadOptions read;  // --format, --rtl-*, --accept-units
 };
 
 /// Reads the options of ControllerTableOptions (with the same `metric_only`), AllowFewRuns and

@@ -56,6 +56,16 @@ TEST(datasets_unit_check, CsvMeansAreChecked) {
   EXPECT_EQ(ErrorOf("position_deg,dev_forward_arcsec\n0,0.01\n90,0.02\n", "r.csv"), "(accepted)");
 }
 
+// An inch machine's means: checked in their own µin (0.1 µm = 3.94 µin), named by their column.
+TEST(datasets_unit_check, InchMeansAreCheckedInMicroinches) {
+  const std::string e =
+      ErrorOf("position_in,dev_forward_uin,dev_reverse_uin\n0,0.0002,120\n2,0.0004,80\n", "i.csv");
+  EXPECT_EQ(e.rfind("i.csv:1: column \"dev_forward_uin\"", 0), 0u) << e;
+  EXPECT_NE(e.find("the largest is 0.0004 µin"), std::string::npos) << e;
+  EXPECT_NE(e.find("multiply them by 1000000"), std::string::npos) << e;
+  EXPECT_EQ(ErrorOf("position_in,dev_forward_uin\n0,4\n2,-6\n", "i.csv"), "(accepted)");
+}
+
 TEST(datasets_unit_check, RtlDeviationsAreChecked) {
   const std::string rtl =
       "HEADER::\nTARGET DATA::\nTarget-count: 2\nTargets :\n0 100\nRUNS::\nRun-count: 1\n"

@@ -59,6 +59,7 @@ Expected<PositioningFile> PositioningFileFromCsv(const CsvTable& csv) {
   f.conditions = metrology::ConditionsFromPreamble(csv);
   if (csv.find("position_mm") || csv.find("position_in") || csv.find("position_deg")) {
     VOLCOMP_TRY_ASSIGN(f.means, MeansFromCsv(csv));
+    f.means_in_inches = csv.find("position_in").has_value() && !csv.find("position_deg");
     f.readings_line = csv.header_line();
     return f;
   }

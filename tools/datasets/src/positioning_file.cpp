@@ -53,10 +53,16 @@ Outcome CheckUnits(const PositioningFile& f) {
         CheckMicroColumn(f.source, f.readings_line, f.readings->column, *unit, values, lines, fix));
   }
   if (f.means && !f.means->rotary) {
-    const char* fix = "if they are mm, multiply them by 1000";
-    VOLCOMP_TRY(CheckMicroColumn(f.source, f.readings_line, "dev_forward_um", kMicrometre,
+    // The means are held in µm; an inch file's columns are named and shown in their µin.
+    const bool inch = f.means_in_inches;
+    const MicroUnit& u = inch ? kMicroinch : kMicrometre;
+    const char* fix = inch ? "if they are inches, multiply them by 1000000"
+                           : "if they are mm, multiply them by 1000";
+    VOLCOMP_TRY(CheckMicroColumn(f.source, f.readings_line,
+                                 inch ? "dev_forward_uin" : "dev_forward_um", u,
                                  f.means->dev_forward, {}, fix));
-    VOLCOMP_TRY(CheckMicroColumn(f.source, f.readings_line, "dev_reverse_um", kMicrometre,
+    VOLCOMP_TRY(CheckMicroColumn(f.source, f.readings_line,
+                                 inch ? "dev_reverse_uin" : "dev_reverse_um", u,
                                  f.means->dev_reverse, {}, fix));
   }
   return Outcome::Ok();

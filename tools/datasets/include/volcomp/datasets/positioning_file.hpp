@@ -46,7 +46,8 @@ struct PositioningFile {
   std::optional<metrology::PositioningData> readings;  // raw readings (CSV or .rtl)
   std::size_t readings_line = 0;  // the line naming the data as a whole (header, DEVIATIONS::)
   std::optional<model::PositioningData> means;  // the CSV layout position_mm, dev_forward_um ...
-  std::vector<std::string> warnings;            // the reader's (.rtl: directions, environment)
+  bool means_in_inches = false;  // means read from position_in, dev_forward_uin ... (into mm/µm)
+  std::vector<std::string> warnings;  // the reader's (.rtl: directions, environment)
 };
 
 /// Reads the file at `path` (kIoError when it cannot be read), with the unit plausibility check
