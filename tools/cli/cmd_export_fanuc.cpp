@@ -50,7 +50,8 @@ JsonValue PointsJson(const std::vector<exporters::FanucPoint>& points) {
 }
 
 Expected<Output> RunExportFanuc(Args& args, Context& ctx) {
-  VOLCOMP_TRY_ASSIGN(const std::vector<AxisInput> inputs, PositioningInputs(args));
+  VOLCOMP_TRY_ASSIGN(const std::vector<AxisInput> inputs,
+                     PositioningInputs(args, /*model_axes=*/true));
   const std::string out_file = args.Required("-o", "--output");
   exporters::FanucOptions o;
   const std::optional<double> detection_unit = args.Number("--detection-unit");
@@ -132,7 +133,8 @@ const Command& ExportFanucCommand() {
       "FANUC pitch error compensation entry sheet (3620-3627, increments) from positioning tests",
       "",
       Join({PositioningFileOptions(),
-            {{"--output", "-o", "FILE", nullptr, nullptr, "the entry sheet to write (required)"},
+            {ModelAxesOption(),
+             {"--output", "-o", "FILE", nullptr, nullptr, "the entry sheet to write (required)"},
              {"--detection-unit", nullptr, "U", "mm or in (--units)", nullptr,
               "the axis's detection unit (default: 0.001 mm; 0.0001 in on an inch machine)"},
              {"--magnification", nullptr, "N", nullptr, "1",

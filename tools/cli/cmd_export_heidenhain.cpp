@@ -36,7 +36,8 @@ constexpr const char* kMetricOnly =
     "configuration is metric, inch is a display and program unit";
 
 Expected<Output> RunExportHeidenhain(Args& args, Context& ctx) {
-  VOLCOMP_TRY_ASSIGN(const std::vector<AxisInput> inputs, PositioningInputs(args));
+  VOLCOMP_TRY_ASSIGN(const std::vector<AxisInput> inputs,
+                     PositioningInputs(args, /*model_axes=*/true));
   const std::string out_dir = args.Required("-o", "--output");
   const std::string control = args.Value("--control").value_or("tnc6xx");
   const std::string cma = args.Value("--cma").value_or("CONFIG.CMA");
@@ -101,7 +102,8 @@ const Command& ExportHeidenhainCommand() {
       "HEIDENHAIN TNC .COM tables (with BACKLASH) and the .CMA naming them, from positioning tests",
       "",
       Join({PositioningFileOptions(),
-            {{"--output", "-o", "DIR", nullptr, nullptr,
+            {ModelAxesOption(),
+             {"--output", "-o", "DIR", nullptr, nullptr,
               "directory for AXIS_X.COM ..., the .CMA and NOTES.TXT (required)"},
              {"--control", nullptr, "tnc6xx|tnc4xx", nullptr, "tnc6xx",
               "tnc6xx: TNC 640 / MANUALplus 620 (any positions); tnc4xx: TNC 407/415/425 (a "

@@ -58,7 +58,8 @@ constexpr const char* kMetricOnly =
     "there is no inch)";
 
 Expected<Output> RunExportIsg(Args& args, Context& ctx) {
-  VOLCOMP_TRY_ASSIGN(const std::vector<AxisInput> inputs, PositioningInputs(args));
+  VOLCOMP_TRY_ASSIGN(const std::vector<AxisInput> inputs,
+                     PositioningInputs(args, /*model_axes=*/true));
   const std::string out_dir = args.Required("-o", "--output");
   const long long max_points =
       args.Integer("--max-points")
@@ -90,8 +91,10 @@ Expected<Output> RunExportIsg(Args& args, Context& ctx) {
     }
   }
   JsonValue axes = JsonValue::Array();
-  for (const auto& [name, path] : inputs) {
-    VOLCOMP_TRY_ASSIGN(const model::PositioningData data, LoadAxisTest(path, read, grouping, ctx));
+  for (const AxisInput& in : inputs) {
+    const char name = in.axis;
+    const std::string& path = in.path;
+    VOLCOMP_TRY_ASSIGN(const model::PositioningData data, LoadAxisTest(in, read, grouping, ctx));
     exporters::IsgLsecOptions options;
     options.axis_number = numbers[name];
     options.axis_name = std::string(1, name);
@@ -142,7 +145,8 @@ const Command& ExportIsgCommand() {
       "ISG / TwinCAT CNC leadscrew error compensation lists (achskw*.lis) from positioning tests",
       "",
       Join({PositioningFileOptions(),
-            {{"--output", "-o", "DIR", nullptr, nullptr,
+            {ModelAxesOption(),
+             {"--output", "-o", "DIR", nullptr, nullptr,
               "directory for achskw_x.lis ... (required)"},
              {"--axis-numbers", nullptr, "X=N,...", nullptr, nullptr,
               "logical axis number (kopf.achs_nr) per axis (default: X=1 ... W=9)"},

@@ -66,7 +66,8 @@ std::string JointsIniFile(const std::string& ini, exporters::LengthUnit unit) {
 }
 
 Expected<Output> RunExportLinuxcnc(Args& args, Context& ctx) {
-  VOLCOMP_TRY_ASSIGN(const std::vector<AxisInput> inputs, PositioningInputs(args));
+  VOLCOMP_TRY_ASSIGN(const std::vector<AxisInput> inputs,
+                     PositioningInputs(args, /*model_axes=*/true));
   const std::string out_dir = args.Required("-o", "--output");
   const long long type = args.Integer("--type").value_or(1);
   VOLCOMP_TRY(args.status());
@@ -110,7 +111,9 @@ Expected<Output> RunExportLinuxcnc(Args& args, Context& ctx) {
   std::string ini;
   std::vector<exporters::LinuxcncJointComp> joint_comps;
   std::map<int, char> axis_of_joint;
-  for (const auto& [name, path] : inputs) {
+  for (const AxisInput& in : inputs) {
+    const char name = in.axis;
+    const std::string& path = in.path;
     const auto [other, added] = axis_of_joint.emplace(joint[name], name);
     if (!added) {
       return UsageFailure("--joints: " + std::string(1, other->second) + " and " +
@@ -118,7 +121,7 @@ Expected<Output> RunExportLinuxcnc(Args& args, Context& ctx) {
     }
     datasets::PositioningFormat format = datasets::PositioningFormat::kCsv;
     VOLCOMP_TRY_ASSIGN(const model::PositioningData data,
-                       LoadAxisTest(path, read, grouping, ctx, &format));
+                       LoadAxisTest(in, read, grouping, ctx, &format));
     const auto s = spacing.find(name);
     const Expected<exporters::LinuxcncComp> comp =
         exporters::BuildLinuxcncComp(data, comp_type, s != spacing.end() ? s->second : 0.0, unit);
@@ -133,7 +136,7 @@ Expected<Output> RunExportLinuxcnc(Args& args, Context& ctx) {
     a.Set("axis", std::string(1, name))
         .Set("joint", joint[name])
         .Set("source", path)
-        .Set("format", datasets::PositioningFormatName(format))
+        .Set("format", in.from_model ? "model" : datasets::PositioningFormatName(format))
         .Set("unit", exporters::UnitName(unit, data.rotary))
         .Set("points", uint64_t{comp->rows.size()})
         .Set("from", comp->rows.front().nominal)
@@ -180,7 +183,8 @@ const Command& ExportLinuxcncCommand() {
       "LinuxCNC joint compensation files (COMP_FILE_TYPE 0 or 1) from positioning tests",
       "",
       Join({PositioningFileOptions(),
-            {{"--output", "-o", "DIR", nullptr, nullptr,
+            {ModelAxesOption(),
+             {"--output", "-o", "DIR", nullptr, nullptr,
               "directory for x.comp ... and joints.ini (required)"},
              {"--type", nullptr, "0|1", nullptr, "1",
               "COMP_FILE_TYPE: 1 the file holds the trims, 0 the positions reached"},

@@ -74,17 +74,25 @@ struct CrossInput {
   char output = 'Y';
 };
 
-Expected<std::vector<CrossInput>> CrossInputs(const std::vector<std::string>& specs) {
+// `IN:OUT` alone takes the straightness from the --model (`model`, absent: refused).
+Expected<std::vector<CrossInput>> CrossInputs(const std::vector<std::string>& specs,
+                                              const std::optional<std::string>& model) {
   std::vector<CrossInput> out;
   for (const std::string& s : specs) {
     const auto linear = [](char c) { return c == 'X' || c == 'Y' || c == 'Z'; };
-    const bool shape = s.size() > 4 && s[1] == ':' && s[3] == '=';
+    const bool from_model = s.size() == 3 && s[1] == ':';
+    if (from_model && !model) {
+      return UsageFailure("--cross " + s +
+                          ": IN:OUT without =FILE takes the straightness from "
+                          "--model, and there is none");
+    }
+    const bool shape = from_model || (s.size() > 4 && s[1] == ':' && s[3] == '=');
     const char in = shape ? static_cast<char>(std::toupper(static_cast<unsigned char>(s[0]))) : 0;
     const char o = shape ? static_cast<char>(std::toupper(static_cast<unsigned char>(s[2]))) : 0;
     if (!shape || !linear(in) || !linear(o) || in == o) {
       return UsageFailure("--cross " + s +
-                          ": INPUT:OUTPUT=FILE with two different linear axes, e.g. "
-                          "X:Y=straightness_x_in_y.csv");
+                          ": INPUT:OUTPUT=FILE (or INPUT:OUTPUT with --model) with two different "
+                          "linear axes, e.g. X:Y=straightness_x_in_y.csv");
     }
     for (const CrossInput& c : out) {
       if (c.input.axis == in && c.output == o) {
@@ -92,7 +100,11 @@ Expected<std::vector<CrossInput>> CrossInputs(const std::vector<std::string>& sp
                             " is given twice");
       }
     }
-    out.push_back({{in, s.substr(4)}, o});
+    if (from_model) {
+      out.push_back({{in, *model, true, o}, o});
+    } else {
+      out.push_back({{in, s.substr(4)}, o});
+    }
   }
   return out;
 }
@@ -105,7 +117,9 @@ Expected<exporters::StraightnessLine> ParseLine(const std::string& text) {
 }
 
 Expected<Output> RunExportSiemens(Args& args, Context& ctx) {
-  const Expected<std::vector<AxisInput>> pitch_inputs = PositioningInputs(args);
+  const Expected<std::vector<AxisInput>> pitch_inputs =
+      PositioningInputs(args, /*model_axes=*/true);
+  const std::optional<std::string> model = args.Value("--model");
   const std::vector<std::string> cross_specs = args.Values("--cross");
   const std::string line_text = args.Value("--straightness-line").value_or("lsq");
   const std::string out_file = args.Required("-o", "--output");
@@ -129,7 +143,7 @@ Expected<Output> RunExportSiemens(Args& args, Context& ctx) {
   if (!pitch_inputs.ok() && cross_specs.empty()) return Fail(pitch_inputs.error());
   const std::vector<AxisInput> inputs =
       pitch_inputs.ok() ? *pitch_inputs : std::vector<AxisInput>();
-  VOLCOMP_TRY_ASSIGN(const std::vector<CrossInput> cross, CrossInputs(cross_specs));
+  VOLCOMP_TRY_ASSIGN(const std::vector<CrossInput> cross, CrossInputs(cross_specs, model));
   VOLCOMP_TRY_ASSIGN(const exporters::StraightnessLine line, ParseLine(line_text));
   if (!cross.empty() && mode == "lec") {
     return UsageFailure("--cross writes CEC tables: not with --mode lec");
@@ -225,7 +239,8 @@ const Command& ExportSiemensCommand() {
       "SINUMERIK LEC ($AA_ENC_COMP) or CEC ($AN_CEC) compensation program from positioning tests",
       "",
       Join({PositioningFileOptions(),
-            {{"--output", "-o", "FILE", nullptr, nullptr,
+            {ModelAxesOption(),
+             {"--output", "-o", "FILE", nullptr, nullptr,
               "the program to write, e.g. AX_EEC.INI (required)"},
              {"--mode", nullptr, "lec|cec|auto", nullptr, "auto",
               "LEC: one table per axis (a two-direction test: their mean); CEC: a table per "
@@ -235,7 +250,8 @@ const Command& ExportSiemensCommand() {
              {"--encoder", nullptr, "0|1", nullptr, "0", "LEC: the measuring system compensated"},
              {"--cross", nullptr, "IN:OUT=FILE", nullptr, nullptr,
               "a cross-axis CEC table from a straightness test: FILE's deviations are OUT's "
-              "error (actual - nominal, um) at IN's targets, e.g. X:Y=str_xy.csv (repeatable)",
+              "error (actual - nominal, um) at IN's targets, e.g. X:Y=str_xy.csv; IN:OUT alone "
+              "takes E_OUT,IN from --model (repeatable)",
               true},
              {"--straightness-line", nullptr, "lsq|ends|none", nullptr, "lsq",
               "the reference line removed from a --cross test (ISO 230-1: least squares or end "

@@ -7,7 +7,9 @@
 
 #include "choice_option.hpp"
 #include "positioning_input.hpp"
+#include "volcomp/datasets/model_file.hpp"
 #include "volcomp/datasets/positioning_csv.hpp"
+#include "volcomp/datasets/s500.hpp"
 #include "volcomp/image/axis_units.hpp"
 #include "volcomp/tools/csv.hpp"
 
@@ -18,14 +20,39 @@ constexpr const char* kAxes = "XYZABCUVW";
 
 }  // namespace
 
-Expected<std::vector<AxisInput>> PositioningInputs(Args& args) {
+args::OptionSpec ModelAxesOption() {
+  return {"--model",
+          nullptr,
+          "s500|FILE",
+          nullptr,
+          nullptr,
+          "a 21-parameter model (conf, Etalon, ISG-CSV): its positioning errors E_XX, E_YY, "
+          "E_ZZ are the tables of the axes X, Y, Z no file gives (one direction)"};
+}
+
+Expected<std::vector<AxisInput>> PositioningInputs(Args& args, bool model_axes) {
   std::vector<AxisInput> inputs;
+  const std::optional<std::string> model = model_axes ? args.Value("--model") : std::nullopt;
   for (int i = 0; kAxes[i] != '\0'; ++i) {
     const std::string opt = std::string("--") + static_cast<char>(kAxes[i] - 'A' + 'a');
-    if (auto p = args.Value(opt)) inputs.push_back({kAxes[i], *p});
+    if (auto p = args.Value(opt)) {
+      inputs.push_back({kAxes[i], *p});
+    } else if (model && i < 3) {
+      inputs.push_back({kAxes[i], *model, true});
+    }
   }
-  if (inputs.empty()) return UsageFailure("give at least one axis file, e.g. --x x.csv");
+  if (inputs.empty()) {
+    return UsageFailure(model_axes ? "give at least one axis file, e.g. --x x.csv, or --model FILE"
+                                   : "give at least one axis file, e.g. --x x.csv");
+  }
   return inputs;
+}
+
+Expected<model::Model> LoadModelArgument(const std::string& name, Context& ctx) {
+  if (name == "s500") return datasets::S500Model();
+  VOLCOMP_TRY_ASSIGN(datasets::LoadedModel loaded, datasets::LoadModelFile(name));
+  for (const std::string& w : loaded.warnings) ctx.err << "warning: " << w << "\n";
+  return std::move(loaded.model);
 }
 
 Expected<std::map<char, double>> ParseAxisNumbers(const std::optional<std::string>& text,
@@ -66,11 +93,41 @@ Expected<std::map<char, int>> ParseAxisNumberMap(const std::optional<std::string
   return number;
 }
 
-Expected<model::PositioningData> LoadAxisTest(const std::string& path,
+namespace {
+
+// The model's error of axis `in.axis` in direction `in.direction` (its own: positioning) as a
+// one-direction test at the model's positions.
+Expected<model::PositioningData> ModelAxisTest(const AxisInput& in, Context& ctx) {
+  const int axis = in.axis - 'X';
+  const int direction = (in.direction != 0 ? in.direction : in.axis) - 'X';
+  if (axis < 0 || axis > 2 || direction < 0 || direction > 2) {
+    return UsageFailure(std::string("--model: a model has the linear axes X, Y, Z only, not ") +
+                        in.axis);
+  }
+  VOLCOMP_TRY_ASSIGN(const model::Model m, LoadModelArgument(in.path, ctx));
+  const model::AxisErrorTable& t = m.axes[static_cast<std::size_t>(axis)];
+  model::PositioningData d;
+  for (std::size_t i = 0; i < t.size(); ++i) {
+    d.position.push_back(t.position_mm(i));
+    d.dev_forward.push_back(t.row(i).linear_um[direction]);
+  }
+  if (d.position.size() < 2) {
+    return Fail(Error::kInputInvalid, in.path + ": the model's " + in.axis +
+                                          " table has fewer "
+                                          "than 2 positions");
+  }
+  return d;
+}
+
+}  // namespace
+
+Expected<model::PositioningData> LoadAxisTest(const AxisInput& in,
                                               const datasets::PositioningReadOptions& read,
                                               const metrology::GroupingOptions& grouping,
                                               Context& ctx,
                                               datasets::PositioningFormat* format) {
+  if (in.from_model) return ModelAxisTest(in, ctx);
+  const std::string& path = in.path;
   VOLCOMP_TRY_ASSIGN(const datasets::PositioningFile input,
                      ReadPositioningArgument(path, read, ctx));
   if (format != nullptr) *format = input.format;
@@ -132,7 +189,7 @@ Expected<AxisErrorTable> LoadAxisErrorTable(const AxisInput& input,
                                             Context& ctx,
                                             bool reference_at_first) {
   VOLCOMP_TRY_ASSIGN(const model::PositioningData data,
-                     LoadAxisTest(input.path, options.read, options.grouping, ctx));
+                     LoadAxisTest(input, options.read, options.grouping, ctx));
   exporters::ErrorTableOptions o;
   o.unit = options.unit;
   o.negate = options.negate;

@@ -15,16 +15,30 @@
 #include "volcomp/exporters/error_table.hpp"
 #include "volcomp/metrology/positioning_data.hpp"
 #include "volcomp/model/positioning.hpp"
+#include "volcomp/model/rigid_body.hpp"
 
 namespace volcomp::cli {
 
 struct AxisInput {
-  char axis = 'X';   // X Y Z A B C U V W
-  std::string path;  // the test file
+  char axis = 'X';          // X Y Z A B C U V W
+  std::string path;         // the test file, or with from_model the model (a file or "s500")
+  bool from_model = false;  // the model's error of this linear axis (X, Y or Z), in direction
+  char direction = 0;       // `direction` (0: the axis's own, the positioning error E_XX ...;
+                            // another axis: the straightness, 'Y' for E_YX)
 };
 
-/// The files of --x ... --w, in XYZABCUVW order; kUsage when there is none.
-Expected<std::vector<AxisInput>> PositioningInputs(Args& args);
+/// --model s500|FILE: a 21-parameter model (model config, Etalon, ISG-CSV) as the source of the
+/// X, Y, Z tables no --x/--y/--z file gives (its positioning errors E_XX, E_YY, E_ZZ, one
+/// direction).
+args::OptionSpec ModelAxesOption();
+
+/// The files of --x ... --w, in XYZABCUVW order, and with `model_axes` the --model's X, Y, Z
+/// for the linear axes no file gives; kUsage when there is none.
+Expected<std::vector<AxisInput>> PositioningInputs(Args& args, bool model_axes = false);
+
+/// The model `name` names: "s500" (the built-in one) or a model file of any format; the
+/// reader's warnings go to ctx.err.
+Expected<model::Model> LoadModelArgument(const std::string& name, Context& ctx);
 
 /// `option`'s "X=N,..." (absent: nullopt text): each axis's whole number in [min, max]; an axis
 /// not named keeps `first` + its place in XYZABCUVW. Usage failure "OPTION: WHAT of X must be
@@ -42,10 +56,11 @@ Expected<std::map<char, double>> ParseAxisNumbers(const std::optional<std::strin
                                                   const std::string& option,
                                                   bool positive);
 
-/// The positioning test in `path` (a CSV or a Renishaw .rtl, positioning_input.hpp) as every
-/// export reads it, as mean deviations; its warnings go to ctx.err; `format` (when given) says
-/// what the file held.
-Expected<model::PositioningData> LoadAxisTest(const std::string& path,
+/// The positioning test of `input` as every export reads it, as mean deviations: the file (a CSV
+/// or a Renishaw .rtl, positioning_input.hpp; `format`, when given, says which), or the model's
+/// error function (input.from_model: one direction, at the model's positions); warnings go to
+/// ctx.err.
+Expected<model::PositioningData> LoadAxisTest(const AxisInput& input,
                                               const datasets::PositioningReadOptions& read,
                                               const metrology::GroupingOptions& grouping,
                                               Context& ctx,

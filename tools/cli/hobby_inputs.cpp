@@ -6,8 +6,6 @@
 #include <ostream>
 
 #include "positioning_input.hpp"
-#include "volcomp/datasets/model_file.hpp"
-#include "volcomp/datasets/s500.hpp"
 
 namespace volcomp::cli {
 namespace {
@@ -83,14 +81,7 @@ Expected<HobbyArgs> ReadHobbyArgs(Args& args, bool squareness, bool backlash) {
 Expected<exporters::HobbySquareness> LoadSquareness(const HobbyArgs& a, Context& ctx) {
   exporters::HobbySquareness s;
   if (a.model) {
-    model::Model m;
-    if (*a.model == "s500") {
-      m = datasets::S500Model();
-    } else {
-      VOLCOMP_TRY_ASSIGN(datasets::LoadedModel loaded, datasets::LoadModelFile(*a.model));
-      for (const std::string& w : loaded.warnings) ctx.err << "warning: " << w << "\n";
-      m = std::move(loaded.model);
-    }
+    VOLCOMP_TRY_ASSIGN(const model::Model m, LoadModelArgument(*a.model, ctx));
     const double values[] = {m.squareness.c0y_urad, m.squareness.b0z_urad, m.squareness.a0z_urad};
     for (int i = 0; i < 3; ++i) {
       *PlaneOf(s, i) = exporters::PlaneSquareness{
@@ -118,7 +109,7 @@ Expected<std::vector<exporters::AxisBacklash>> LoadBacklash(const HobbyArgs& a, 
   std::vector<exporters::AxisBacklash> result;
   for (const AxisInput& in : a.tests) {
     VOLCOMP_TRY_ASSIGN(const model::PositioningData data,
-                       LoadAxisTest(in.path, a.read, a.grouping, ctx));
+                       LoadAxisTest(in, a.read, a.grouping, ctx));
     const Expected<exporters::AxisBacklash> b =
         exporters::BacklashFromTest(in.axis, in.path, data, a.negate_tests);
     if (!b.ok()) return Fail(Error::kInputInvalid, b.error().message);

@@ -5,6 +5,7 @@
 // the limit and the fix; --negate flips every value.
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -86,6 +87,58 @@ TEST(VolcompExportSiemens, InchMachineMatchesTheHandWrittenProgram) {
                             {"--units", "in", "--mode", "lec", "--reference", "X=0"},
                             "siemens_lec_x_inch.mpf.expected",
                             {"\"unit\": \"in\"", "\"step\": 2,", "\"largest_error_uin\": 200,"});
+}
+
+// Column `column` of samples/model/s500_x.csv (the model file's X table), read here line by line,
+// not through the model reader.
+std::vector<double> S500XColumn(int column) {
+  std::ifstream in(SourcePath("samples/model/s500_x.csv"));
+  std::vector<double> values;
+  for (std::string line; std::getline(in, line);) {
+    if (line.empty() || line[0] == '#' || line[0] == 'n') continue;
+    std::stringstream fields(line);
+    std::string f;
+    for (int i = 0; i <= column; ++i) std::getline(fields, f, ',');
+    values.push_back(std::stod(f));
+  }
+  return values;
+}
+
+// "%.4f" of a µm value in mm, as SINUMERIK's tables are written.
+std::string Mm4(double um) {
+  char s[32];
+  std::snprintf(s, sizeof s, "%.4f", um / 1000.0);
+  return std::string(s) == "-0.0000" ? "0.0000" : s;
+}
+
+// A 21-parameter model as the tables' source: E_XX (column ex_um) is X's LEC table and E_YX
+// (ey_um) the X -> Y cross table, value for value (no reference, no line removed).
+TEST(VolcompExportSiemens, TablesFromAModel) {
+  ScratchDir dir("export_siemens_model");
+  const std::string model = SourcePath("samples/model/s500.conf"), out = dir / "m.mpf";
+  const auto r = RunCli({"export", "siemens", "--model", model, "--cross", "X:Y",
+                         "--straightness-line", "none", "-o", out});
+  ASSERT_EQ(r.code, 0) << r.err;
+  const std::string text = ReadFile(out);
+  const std::vector<double> ex = S500XColumn(2), ey = S500XColumn(3);
+  ASSERT_EQ(ex.size(), 21u);
+  for (std::size_t i = 0; i < ex.size(); ++i) {
+    EXPECT_NE(text.find("$AN_CEC[0," + std::to_string(i) + "]=" + Mm4(ex[i]) + "\n"),
+              std::string::npos)
+        << i;
+    EXPECT_NE(text.find("$AN_CEC[3," + std::to_string(i) + "]=" + Mm4(ey[i]) + "\n"),
+              std::string::npos)
+        << i;
+  }
+  EXPECT_NE(text.find("$AN_CEC_INPUT_AXIS[3]=(X1)\n$AN_CEC_OUTPUT_AXIS[3]=(Y1)"),
+            std::string::npos);
+  // A file for an axis replaces the model's; IN:OUT without a model is refused.
+  const auto x_file = RunCli(
+      {"export", "siemens", "--model", model, "--x", Data("x_forward.csv"), "-o", out, "--json"});
+  ASSERT_EQ(x_file.code, 0) << x_file.err;
+  EXPECT_NE(x_file.out.find("x_forward.csv"), std::string::npos);
+  ExpectRefused({"export", "siemens", "--x", Data("x_forward.csv"), "--cross", "X:Y", "-o", out},
+                "--cross X:Y: IN:OUT without =FILE takes the straightness from --model");
 }
 
 TEST(VolcompExportSiemens, NegateFlipsEveryValue) {

@@ -158,6 +158,24 @@ TEST(VolcompExportLinuxcnc, InchMachine) {
   EXPECT_NE(r.err.find(ini + ":2: [TRAJ] LINEAR_UNITS = 0.5"), std::string::npos) << r.err;
 }
 
+// The built-in S500 model's positioning errors as the joints' files: X's trim at 0 mm undoes
+// E_XX(0) = -0.466667 um (Table 3.2, samples/model/s500_x.csv), to first order.
+TEST(VolcompExportLinuxcnc, FromAModel) {
+  const std::string dir = TempPath("export_linuxcnc_model");
+  const auto r = RunCli({"export", "linuxcnc", "--model", "s500", "-o", dir, "--json"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("\"format\": \"model\""), std::string::npos) << r.out;
+  for (const char* f : {"x.comp", "y.comp", "z.comp"}) {
+    EXPECT_TRUE(std::filesystem::exists(std::filesystem::path(dir) / f)) << f;
+  }
+  std::ifstream x(std::filesystem::path(dir) / "x.comp");
+  double n, fwd, rev;
+  ASSERT_TRUE(x >> n >> fwd >> rev);
+  EXPECT_EQ(n, 0.0);
+  EXPECT_NEAR(fwd, 0.000467, 2e-6);
+  EXPECT_EQ(fwd, rev);  // a model has one direction
+}
+
 TEST(VolcompExportLinuxcnc, OptionsAreChecked) {
   const std::string csv = RawReadings();
   const std::string dir = TempPath("export_linuxcnc_lcnc_opts");
@@ -173,7 +191,8 @@ TEST(VolcompExportLinuxcnc, OptionsAreChecked) {
         "--joints: joint of Z must be 0..15");
   usage({"export", "linuxcnc", "--z", csv, "-o", dir, "--spacing", "Z=0"},
         "--spacing: Z must be > 0");
-  usage({"export", "linuxcnc", "-o", dir}, "give at least one axis file, e.g. --x x.csv");
+  usage({"export", "linuxcnc", "-o", dir},
+        "give at least one axis file, e.g. --x x.csv, or --model FILE");
   usage({"export", "linuxcnc", "--z", csv, "-o", dir, "--units", "inch"},
         "--units must be mm or in");
   // Too many points for LinuxCNC: refused naming the file.
