@@ -87,6 +87,7 @@ for t in "${targets[@]}"; do
   per_worker_seconds=$((left_seconds / workers))
   parallel=()
   [[ $workers -gt 1 ]] && parallel=(-jobs="$workers" -workers="$workers")
+  commit=$(git rev-parse --short HEAD 2>/dev/null || echo unknown)  # of the checkout the build is of
   start=$(date +%s)
   # From inside the part's directory: with -jobs, libFuzzer writes each worker's log (fuzz-N.log)
   # to the current directory. CPU time of every worker: /usr/bin/time counts waited-for children.
@@ -106,7 +107,6 @@ for t in "${targets[@]}"; do
   crashes=$(find "$part" -maxdepth 1 -name 'crash-*' -o -maxdepth 1 -name 'leak-*' -o -maxdepth 1 -name 'timeout-*' -o -maxdepth 1 -name 'oom-*' | wc -l)
   corpus=$(find "$dir/corpus" -type f | wc -l)
   per_cpu=$(awk -v r="$runs" -v c="$cpu" 'BEGIN { printf "%d", (c > 0 ? r / c : 0) }')
-  commit=$(git rev-parse --short HEAD 2>/dev/null || echo unknown)
   printf '%s\t%d\t%s\t%d\t%d\t%d\t%d\t%s\n' "$commit" "$runs" "$cpu" "$wall" "$cov" "$corpus" \
     "$crashes" "$(date -u +%Y-%m-%dT%H:%M:%SZ)" >>"$dir/parts.tsv"
   parts=$((done_parts + 1))
