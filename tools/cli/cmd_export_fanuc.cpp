@@ -50,8 +50,7 @@ JsonValue PointsJson(const std::vector<exporters::FanucPoint>& points) {
 }
 
 Expected<Output> RunExportFanuc(Args& args, Context& ctx) {
-  VOLCOMP_TRY_ASSIGN(const std::vector<AxisInput> inputs,
-                     PositioningInputs(args, /*model_axes=*/true));
+  VOLCOMP_TRY_ASSIGN(std::vector<AxisInput> inputs, PositioningInputs(args, /*model_axes=*/true));
   const std::string out_file = args.Required("-o", "--output");
   exporters::FanucOptions o;
   const std::optional<double> detection_unit = args.Number("--detection-unit");
@@ -59,6 +58,7 @@ Expected<Output> RunExportFanuc(Args& args, Context& ctx) {
   VOLCOMP_TRY_ASSIGN(const ControllerTableArgs table_args, ReadControllerTableArgs(args));
   args.Flag("--json");
   VOLCOMP_TRY(args.Finish());
+  VOLCOMP_TRY(LoadModels(&inputs, ctx));
   o.unit = table_args.unit;
   const bool inch = o.unit == exporters::LengthUnit::kInch;
   const std::string u = exporters::UnitName(o.unit, false);

@@ -36,8 +36,7 @@ constexpr const char* kMetricOnly =
     "configuration is metric, inch is a display and program unit";
 
 Expected<Output> RunExportHeidenhain(Args& args, Context& ctx) {
-  VOLCOMP_TRY_ASSIGN(const std::vector<AxisInput> inputs,
-                     PositioningInputs(args, /*model_axes=*/true));
+  VOLCOMP_TRY_ASSIGN(std::vector<AxisInput> inputs, PositioningInputs(args, /*model_axes=*/true));
   const std::string out_dir = args.Required("-o", "--output");
   const std::string control = args.Value("--control").value_or("tnc6xx");
   const std::string cma = args.Value("--cma").value_or("CONFIG.CMA");
@@ -45,6 +44,7 @@ Expected<Output> RunExportHeidenhain(Args& args, Context& ctx) {
                      ReadControllerTableArgs(args, kMetricOnly));
   args.Flag("--json");
   VOLCOMP_TRY(args.Finish());
+  VOLCOMP_TRY(LoadModels(&inputs, ctx));
   if (control != "tnc6xx" && control != "tnc4xx") {
     return UsageFailure("--control " + control + ": tnc6xx or tnc4xx");
   }

@@ -58,8 +58,7 @@ constexpr const char* kMetricOnly =
     "there is no inch)";
 
 Expected<Output> RunExportIsg(Args& args, Context& ctx) {
-  VOLCOMP_TRY_ASSIGN(const std::vector<AxisInput> inputs,
-                     PositioningInputs(args, /*model_axes=*/true));
+  VOLCOMP_TRY_ASSIGN(std::vector<AxisInput> inputs, PositioningInputs(args, /*model_axes=*/true));
   const std::string out_dir = args.Required("-o", "--output");
   const long long max_points =
       args.Integer("--max-points")
@@ -77,6 +76,7 @@ Expected<Output> RunExportIsg(Args& args, Context& ctx) {
                      ParsePositioningReadOptions(args));
   args.Flag("--json");  // the command layer prints the data as JSON
   VOLCOMP_TRY(args.Finish());
+  VOLCOMP_TRY(LoadModels(&inputs, ctx));
 
   std::error_code ec;
   std::filesystem::create_directories(out_dir, ec);

@@ -66,8 +66,7 @@ std::string JointsIniFile(const std::string& ini, exporters::LengthUnit unit) {
 }
 
 Expected<Output> RunExportLinuxcnc(Args& args, Context& ctx) {
-  VOLCOMP_TRY_ASSIGN(const std::vector<AxisInput> inputs,
-                     PositioningInputs(args, /*model_axes=*/true));
+  VOLCOMP_TRY_ASSIGN(std::vector<AxisInput> inputs, PositioningInputs(args, /*model_axes=*/true));
   const std::string out_dir = args.Required("-o", "--output");
   const long long type = args.Integer("--type").value_or(1);
   VOLCOMP_TRY(args.status());
@@ -85,6 +84,7 @@ Expected<Output> RunExportLinuxcnc(Args& args, Context& ctx) {
   VOLCOMP_TRY_ASSIGN(const datasets::PositioningReadOptions read,
                      ParsePositioningReadOptions(args));
   VOLCOMP_TRY(args.Finish());
+  VOLCOMP_TRY(LoadModels(&inputs, ctx));
   const char* unit_name = exporters::UnitName(unit, false);
   // The INI's machine unit must be the files': read it before anything is written.
   std::optional<std::string> ini_before;

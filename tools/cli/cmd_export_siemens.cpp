@@ -141,13 +141,21 @@ Expected<Output> RunExportSiemens(Args& args, Context& ctx) {
   }
   if (max_points < 2) return UsageFailure("--max-points must be at least 2");
   if (!pitch_inputs.ok() && cross_specs.empty()) return Fail(pitch_inputs.error());
-  const std::vector<AxisInput> inputs =
-      pitch_inputs.ok() ? *pitch_inputs : std::vector<AxisInput>();
-  VOLCOMP_TRY_ASSIGN(const std::vector<CrossInput> cross, CrossInputs(cross_specs, model));
+  std::vector<AxisInput> inputs = pitch_inputs.ok() ? *pitch_inputs : std::vector<AxisInput>();
+  VOLCOMP_TRY_ASSIGN(std::vector<CrossInput> cross, CrossInputs(cross_specs, model));
   VOLCOMP_TRY_ASSIGN(const exporters::StraightnessLine line, ParseLine(line_text));
   if (!cross.empty() && mode == "lec") {
     return UsageFailure("--cross writes CEC tables: not with --mode lec");
   }
+  // The model, read once for the pitch and the cross tables alike.
+  std::vector<AxisInput> cross_inputs;
+  for (const CrossInput& c : cross) cross_inputs.push_back(c.input);
+  inputs.insert(inputs.end(), cross_inputs.begin(), cross_inputs.end());
+  VOLCOMP_TRY(LoadModels(&inputs, ctx));
+  for (std::size_t i = 0; i < cross.size(); ++i) {
+    cross[i].input = inputs[inputs.size() - cross.size() + i];
+  }
+  inputs.resize(inputs.size() - cross.size());
 
   auto machine_name = [&](char axis) {
     const auto n = names.find(axis);

@@ -104,8 +104,12 @@ Expected<model::PositioningData> ModelAxisTest(const AxisInput& in, Context& ctx
     return UsageFailure(std::string("--model: a model has the linear axes X, Y, Z only, not ") +
                         in.axis);
   }
-  VOLCOMP_TRY_ASSIGN(const model::Model m, LoadModelArgument(in.path, ctx));
-  const model::AxisErrorTable& t = m.axes[static_cast<std::size_t>(axis)];
+  std::shared_ptr<const model::Model> m = in.model;
+  if (!m) {
+    VOLCOMP_TRY_ASSIGN(model::Model read, LoadModelArgument(in.path, ctx));
+    m = std::make_shared<const model::Model>(std::move(read));
+  }
+  const model::AxisErrorTable& t = m->axes[static_cast<std::size_t>(axis)];
   model::PositioningData d;
   for (std::size_t i = 0; i < t.size(); ++i) {
     d.position.push_back(t.position_mm(i));
@@ -120,6 +124,20 @@ Expected<model::PositioningData> ModelAxisTest(const AxisInput& in, Context& ctx
 }
 
 }  // namespace
+
+Expected<void> LoadModels(std::vector<AxisInput>* inputs, Context& ctx) {
+  std::map<std::string, std::shared_ptr<const model::Model>> read;
+  for (AxisInput& in : *inputs) {
+    if (!in.from_model) continue;
+    auto& m = read[in.path];
+    if (!m) {
+      VOLCOMP_TRY_ASSIGN(model::Model loaded, LoadModelArgument(in.path, ctx));
+      m = std::make_shared<const model::Model>(std::move(loaded));
+    }
+    in.model = m;
+  }
+  return {};
+}
 
 Expected<model::PositioningData> LoadAxisTest(const AxisInput& in,
                                               const datasets::PositioningReadOptions& read,

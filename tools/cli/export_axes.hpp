@@ -5,6 +5,7 @@
 #pragma once
 
 #include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -25,6 +26,7 @@ struct AxisInput {
   bool from_model = false;  // the model's error of this linear axis (X, Y or Z), in direction
   char direction = 0;       // `direction` (0: the axis's own, the positioning error E_XX ...;
                             // another axis: the straightness, 'Y' for E_YX)
+  std::shared_ptr<const model::Model> model;  // from_model: the model read (LoadModels)
 };
 
 /// --model s500|FILE: a 21-parameter model (model config, Etalon, ISG-CSV) as the source of the
@@ -39,6 +41,9 @@ Expected<std::vector<AxisInput>> PositioningInputs(Args& args, bool model_axes =
 /// The model `name` names: "s500" (the built-in one) or a model file of any format; the
 /// reader's warnings go to ctx.err.
 Expected<model::Model> LoadModelArgument(const std::string& name, Context& ctx);
+
+/// Reads the model of every from_model input once (its warnings said once) into its `model`.
+Expected<void> LoadModels(std::vector<AxisInput>* inputs, Context& ctx);
 
 /// `option`'s "X=N,..." (absent: nullopt text): each axis's whole number in [min, max]; an axis
 /// not named keeps `first` + its place in XYZABCUVW. Usage failure "OPTION: WHAT of X must be

@@ -174,6 +174,17 @@ TEST(VolcompExportLinuxcnc, FromAModel) {
   EXPECT_EQ(n, 0.0);
   EXPECT_NEAR(fwd, 0.000467, 2e-6);
   EXPECT_EQ(fwd, rev);  // a model has one direction
+
+  // A model file is read once: its reader's warning (here: no squareness block) is said once.
+  const std::string isg = TempPath("export_linuxcnc_model_isg.csv");
+  std::ofstream(isg) << "X EXX EYX EZX EAX EBX ECX\n0 0 0 0 0 0 0\n100 0.004 0 0 0 0 0\n#\n"
+                        "Y EXY EYY EZY EAY EBY ECY\n0 0 0 0 0 0 0\n100 0 0.002 0 0 0 0\n#\n"
+                        "Z EXZ EYZ EZZ EAZ EBZ ECZ\n0 0 0 0 0 0 0\n100 0 0 0.003 0 0 0\n";
+  const auto m = RunCli({"export", "linuxcnc", "--model", isg, "-o", dir});
+  ASSERT_EQ(m.code, 0) << m.err;
+  const std::size_t first = m.err.find("not in the file, taken as 0");
+  ASSERT_NE(first, std::string::npos) << m.err;
+  EXPECT_EQ(m.err.find("not in the file, taken as 0", first + 1), std::string::npos) << m.err;
 }
 
 TEST(VolcompExportLinuxcnc, OptionsAreChecked) {
