@@ -101,9 +101,9 @@ Expected<std::vector<CrossInput>> CrossInputs(const std::vector<std::string>& sp
       }
     }
     if (from_model) {
-      out.push_back({{in, *model, true, o}, o});
+      out.push_back({{in, *model, true, o, nullptr}, o});
     } else {
-      out.push_back({{in, s.substr(4)}, o});
+      out.push_back({{in, s.substr(4), false, 0, nullptr}, o});
     }
   }
   return out;

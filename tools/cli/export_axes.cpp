@@ -36,9 +36,9 @@ Expected<std::vector<AxisInput>> PositioningInputs(Args& args, bool model_axes) 
   for (int i = 0; kAxes[i] != '\0'; ++i) {
     const std::string opt = std::string("--") + static_cast<char>(kAxes[i] - 'A' + 'a');
     if (auto p = args.Value(opt)) {
-      inputs.push_back({kAxes[i], *p});
+      inputs.push_back({kAxes[i], *p, false, 0, nullptr});
     } else if (model && i < 3) {
-      inputs.push_back({kAxes[i], *model, true});
+      inputs.push_back({kAxes[i], *model, true, 0, nullptr});
     }
   }
   if (inputs.empty()) {
