@@ -245,7 +245,8 @@ JsonValue ErrorTableJson(const AxisErrorTable& axis) {
       .Set("largest_error", largest);
   if (t.unit == exporters::LengthUnit::kInch && !t.rotary) {
     // 1 µin = 0.0254 µm; to 1e-6 µin, so that 5.08 µm reads 200 µin.
-    j.Set("largest_error_uin", std::round(largest / (exporters::kMmPerInch * 1e-3) * 1e6) / 1e6);
+    j.Set("largest_error_uin",
+          std::round(largest / metrology::kMicrometresPerMicroinch * 1e6) / 1e6);
   }
   if (t.zero_at) j.Set("reference", *t.zero_at);
   return j;

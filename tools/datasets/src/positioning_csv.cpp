@@ -25,7 +25,7 @@ Expected<model::PositioningData> MeansFromCsv(const CsvTable& csv) {
     fwd_col = "dev_forward_uin";
     rev_col = "dev_reverse_uin";
     mm_per_unit = metrology::kMmPerInch;
-    um_per_unit = metrology::kMmPerInch / 1000.0;  // 1 µin = 0.0254 µm
+    um_per_unit = metrology::kMicrometresPerMicroinch;
   }
   VOLCOMP_TRY(csv.Require(pos_col));
   VOLCOMP_TRY(csv.Require(fwd_col));

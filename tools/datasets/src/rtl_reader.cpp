@@ -127,7 +127,7 @@ struct LengthUnits {
 LengthUnits LengthUnitsOf(RtlUnits units) {
   // 1 in = 25.4 mm exactly, so 1 µin = 0.0254 µm.
   if (units == RtlUnits::kIn) {
-    return {"in", "µin", metrology::kMmPerInch, metrology::kMmPerInch / 1000.0};
+    return {"in", "µin", metrology::kMmPerInch, metrology::kMicrometresPerMicroinch};
   }
   return {"mm", "µm", 1.0, 1.0};
 }

@@ -27,7 +27,7 @@ struct MicroUnit {
   double um_per_unit;  // 1 µin = 0.0254 µm exactly
 };
 inline constexpr MicroUnit kMicrometre{"µm", "mm", 1.0};
-inline constexpr MicroUnit kMicroinch{"µin", "inches", metrology::kMmPerInch / 1000.0};
+inline constexpr MicroUnit kMicroinch{"µin", "inches", metrology::kMicrometresPerMicroinch};
 
 /// A failure (kInputInvalid) "source:line: column "NAME": every value is below 0.1 µm ... the
 /// largest is V UNIT (line L) ...; FIX, or --accept-units" when every value of `values_um` (µm,

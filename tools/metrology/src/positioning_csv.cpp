@@ -31,7 +31,7 @@ constexpr MeasurementColumn kMeasurementColumns[] = {
     {"deviation_mm", AxisKind::kLinear, 1000.0, false, false},
     {"measured_mm", AxisKind::kLinear, 1000.0, true, false},
     {"deviation_in", AxisKind::kLinear, kMmPerInch * 1000.0, false, true},
-    {"deviation_uin", AxisKind::kLinear, kMmPerInch / 1000.0, false, true},
+    {"deviation_uin", AxisKind::kLinear, kMicrometresPerMicroinch, false, true},
     {"measured_in", AxisKind::kLinear, kMmPerInch * 1000.0, true, true},
     {"deviation_arcsec", AxisKind::kRotary, 1.0, false, false},
     {"deviation_deg", AxisKind::kRotary, 3600.0, false, false},
