@@ -58,6 +58,10 @@ status=0
 first=1
 for t in "${targets[@]}"; do
   bin=build/fuzz/tests/fuzz/fuzz_$t
+  # The seeds the build made for the target (tests/fuzz/CMakeLists.txt: fuzz_seed_prefixes_*), if
+  # any, else the checked-in ones.
+  seeds=$root/build/fuzz/tests/fuzz/seeds_$t
+  [[ -d $seeds ]] || seeds=$root/tests/fuzz/corpus/$t
   [[ -x $bin ]] || { echo "fuzz-campaign: $bin not built (cmake --build --preset fuzz)" >&2; exit 2; }
   dir="$out/$t"
   [[ $resume -eq 1 ]] || rm -rf "$dir"
@@ -95,7 +99,7 @@ for t in "${targets[@]}"; do
   (cd "$part" && /usr/bin/time -f "%U %S" -o cpu.txt sh -c "ulimit -s $stack_kib && exec \"\$@\"" \
     fuzz "$root/$bin" $opts -runs="$per_worker_runs" -max_total_time="$per_worker_seconds" \
     -timeout=10 -rss_limit_mb=2048 -print_final_stats=1 "${parallel[@]}" -artifact_prefix=./ \
-    ../corpus "$root/tests/fuzz/corpus/$t" >fuzz.log 2>&1) || true
+    ../corpus "$seeds" >fuzz.log 2>&1) || true
   wall=$(($(date +%s) - start))
   logs=("$part/fuzz.log")
   [[ $workers -gt 1 ]] && logs=("$part"/fuzz-*.log)
