@@ -370,6 +370,11 @@ def run(s, grid, args):
                                   min_cycles=20,
                                   stall_s=args.stall_first_attempt_s if attempt == 0 else 0)
         s.expect_zero = True
+        if rc != 0 and "at rest" not in out:
+            # Refused, but not for the reason under test (a failed transfer, say): no evidence.
+            s.fail("activation while moving failed without the board's 'at rest' refusal: %s" %
+                   out.strip().splitlines()[-1:])
+            break
         if rc != 0 and s.max_abs_correction != 0:
             s.fail("a refused activation corrected the targets (up to %d increments)" %
                    s.max_abs_correction)

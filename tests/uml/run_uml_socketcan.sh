@@ -2,10 +2,11 @@
 # Real SocketCAN: boots Debian's user-mode-linux kernel with the host filesystem as root, loads
 # can, can-raw, can-dev and vcan, creates vcan0, runs the simulated node (the real firmware) on
 # vcan0 through the SocketCAN backend, and uploads + activates a table with the PC tool's SocketCAN
-# transport. candump -L records the bus; the log is kept as a test artifact.
-# usage: run_uml_socketcan.sh VOLCOMP_SIM VOLCOMP SOURCE_DIR ARTIFACT_DIR
+# transport. candump -L records the bus; the log is kept as a test artifact. First, on vcan1, the
+# kernel-level checks of the socket (KERNEL_TEST: filter, dropped-frame count, receive buffer).
+# usage: run_uml_socketcan.sh VOLCOMP_SIM VOLCOMP SOURCE_DIR ARTIFACT_DIR [KERNEL_TEST]
 set -euo pipefail
-sim=$1 volcomp=$2 src=$3 artifacts=$4
+sim=$1 volcomp=$2 src=$3 artifacts=$4 kernel_test=${5:-}
 source "$(dirname "$0")/uml_lib.sh"
 uml_require
 mkdir -p "$artifacts"
@@ -15,11 +16,13 @@ trap 'rm -rf "$work"' EXIT
   --resolution-nm X=1000,Y=1000,Z=1000 --table-id 9 >/dev/null 2>&1
 
 {
-uml_init_prologue vcan0
+uml_init_prologue vcan0 vcan1
 cat <<INIT
 rc=1
 (
   set -e
+  # (set -e does not act inside a subshell whose status && tests: each check exits by itself.)
+  if [ -n "$kernel_test" ]; then VOLCOMP_VCAN=vcan1 $kernel_test || exit 1; fi
   candump -L vcan0 > $work/candump.log &
   dump=\$!
   $sim node --socketcan vcan0 --ready-file $work/ready --duration 50 > $work/node.log 2>&1 &

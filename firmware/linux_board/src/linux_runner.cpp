@@ -246,10 +246,13 @@ void Runner::Report() {
   std::fprintf(stderr,
                "  frames: %u from controller (%u to drives, %u for the node, %u SYNC), %u from "
                "drives (%u to controller, %u conflicts); targets corrected %u, actuals corrected "
-               "%u, short PDOs %u, send failures %u\n",
+               "%u, short PDOs %u, send failures %u; lost by the kernel (receive buffer full): "
+               "%llu from controller, %llu from drives\n",
                g.from_controller, a.forwarded_to_drives, g.local, g.syncs, g.from_drives,
                a.forwarded_to_controller, g.conflicts, g.targets_corrected, g.actuals_corrected,
-               g.short_pdos, a.send_failures);
+               g.short_pdos, a.send_failures,
+               static_cast<unsigned long long>(controller_.counters().rx_dropped),
+               static_cast<unsigned long long>(have_drives_ ? drives_.counters().rx_dropped : 0));
   const lb::FileFlash::Counters fc = board_.tables().counters();
   const std::optional<Failure> flash_error = board_.tables().write_error();
   std::fprintf(stderr, "  table flash: %llu erases, %llu programs, most queued %llu%s%s\n",
@@ -282,6 +285,8 @@ void Runner::Report() {
     << ",\"syncs\":" << g.syncs << ",\"targets_corrected\":" << g.targets_corrected
     << ",\"actuals_corrected\":" << g.actuals_corrected << ",\"short_pdos\":" << g.short_pdos
     << ",\"conflicts\":" << g.conflicts << ",\"send_failures\":" << a.send_failures
+    << ",\"rx_dropped_controller\":" << controller_.counters().rx_dropped
+    << ",\"rx_dropped_drives\":" << (have_drives_ ? drives_.counters().rx_dropped : 0)
     << ",\"controller_to_drives\":" << dir(to_drives_)
     << ",\"drives_to_controller\":" << dir(to_controller_) << "}\n";
 }

@@ -47,6 +47,7 @@ void SocketCanPort::Service() {
       }
       return;
     }
+    counters_.rx_dropped = socket_.dropped_frames();
     if (is_error) {
       OnError(info);
     } else {
@@ -82,6 +83,7 @@ bool SocketCanPort::DoReceive(CanFrame* frame) {
       }
       return false;
     }
+    counters_.rx_dropped = socket_.dropped_frames();
     if (is_error) {
       OnError(info);
       continue;

@@ -132,7 +132,7 @@ std::string SocketCanErrorText(const std::string& what, int err) {
 }
 
 SocketCanSocket::SocketCanSocket(SocketCanSocket&& other) noexcept
-    : fd_(other.fd_), iface_(std::move(other.iface_)) {
+    : fd_(other.fd_), iface_(std::move(other.iface_)), dropped_(other.dropped_) {
   other.fd_ = -1;
 }
 
@@ -141,6 +141,7 @@ SocketCanSocket& SocketCanSocket::operator=(SocketCanSocket&& other) noexcept {
     Close();
     fd_ = other.fd_;
     iface_ = std::move(other.iface_);
+    dropped_ = other.dropped_;
     other.fd_ = -1;
   }
   return *this;
@@ -192,6 +193,17 @@ Expected<void> SocketCanSocket::Open(const std::string& iface, const Options& op
       return fail("setsockopt(CAN_RAW_RECV_OWN_MSGS)");
     }
   }
+  // The kernel's count of frames it dropped for this socket, with every frame read (Read()).
+  const int on = 1;
+  if (::setsockopt(fd, SOL_SOCKET, SO_RXQ_OVFL, &on, sizeof on) != 0) {
+    return fail("setsockopt(SO_RXQ_OVFL)");
+  }
+  if (options.receive_buffer_bytes != 0) {
+    const int bytes = static_cast<int>(options.receive_buffer_bytes);
+    if (::setsockopt(fd, SOL_SOCKET, SO_RCVBUFFORCE, &bytes, sizeof bytes) != 0) {
+      ::setsockopt(fd, SOL_SOCKET, SO_RCVBUF, &bytes, sizeof bytes);  // capped: still more room
+    }
+  }
   sockaddr_can addr{};
   addr.can_family = AF_CAN;
   addr.can_ifindex = static_cast<int>(index);
@@ -200,6 +212,7 @@ Expected<void> SocketCanSocket::Open(const std::string& iface, const Options& op
   }
   fd_ = fd;
   iface_ = iface;
+  dropped_ = 0;
   return Expected<void>::Ok();
 }
 
@@ -223,7 +236,21 @@ SocketCanSocket::IoResult SocketCanSocket::Read(CanFrame* frame,
                                                 bool* is_error,
                                                 int* err) {
   can_frame cf{};
-  const ssize_t n = ::read(fd_, &cf, sizeof cf);
+  iovec iov{&cf, sizeof cf};
+  alignas(cmsghdr) char control[CMSG_SPACE(sizeof(uint32_t))];
+  msghdr msg{};
+  msg.msg_iov = &iov;
+  msg.msg_iovlen = 1;
+  msg.msg_control = control;
+  msg.msg_controllen = sizeof control;
+  const ssize_t n = ::recvmsg(fd_, &msg, 0);
+  if (n >= 0) {
+    for (cmsghdr* c = CMSG_FIRSTHDR(&msg); c != nullptr; c = CMSG_NXTHDR(&msg, c)) {
+      if (c->cmsg_level == SOL_SOCKET && c->cmsg_type == SO_RXQ_OVFL) {
+        std::memcpy(&dropped_, CMSG_DATA(c), sizeof dropped_);
+      }
+    }
+  }
   if (n < 0) {
     if (errno == EAGAIN || errno == EWOULDBLOCK) return IoResult::kWouldBlock;
     if (err != nullptr) *err = errno;
@@ -247,6 +274,13 @@ SocketCanSocket::IoResult SocketCanSocket::Read(CanFrame* frame,
   if (!f.rtr) std::memcpy(f.data, cf.data, f.dlc);
   *frame = f;
   return IoResult::kOk;
+}
+
+uint32_t SocketCanSocket::receive_buffer_bytes() const {
+  int bytes = 0;
+  socklen_t len = sizeof bytes;
+  if (fd_ < 0 || ::getsockopt(fd_, SOL_SOCKET, SO_RCVBUF, &bytes, &len) != 0) return 0;
+  return static_cast<uint32_t>(bytes);
 }
 
 bool SocketCanSocket::WaitReadable(std::chrono::microseconds timeout) const {

@@ -59,6 +59,40 @@ TEST(SdoRunner, WriteU32TimesOutAfterTheGivenTimeout) {
   EXPECT_LT(waited_us, 40000u);
 }
 
+// What the link knows (frames the kernel dropped) is added to a failure's message, and only to a
+// failure's.
+TEST(SdoRunner, TheLinksDiagnosisEndsAFailuresMessage) {
+  SilentLink s;
+  FrameLink link = s.link();
+  int asked = 0;
+  link.diagnose = [&asked] {
+    ++asked;
+    return std::string("12 received frames were lost");
+  };
+  SdoClient::Options o;
+  o.timeout_ms = 20;
+  const SdoExpected<uint32_t> r = ReadU32(link, 0x10, 0x2104, 0, o);
+  ASSERT_FALSE(r.ok());
+  EXPECT_EQ(asked, 1);
+  const std::string& m = r.error().message;
+  EXPECT_NE(m.find("timed out); 12 received frames were lost"), std::string::npos) << m;
+  // A transfer that succeeds does not ask.
+  FrameLink answering = link;
+  answering.receive = [&s](uint64_t) -> Expected<std::optional<CanFrame>> {
+    CanFrame f;
+    f.id = 0x590;
+    f.dlc = 8;
+    const uint8_t reply[8] = {0x4B, 0x04, 0x21, 0x00, 0x34, 0x12, 0, 0};
+    for (int i = 0; i < 8; ++i) f.data[i] = reply[i];
+    s.now_us += 100;
+    return std::optional<CanFrame>(f);
+  };
+  const SdoExpected<uint32_t> ok = ReadU32(answering, 0x10, 0x2104, 0, o);
+  ASSERT_TRUE(ok.ok()) << ok.error().message;
+  EXPECT_EQ(*ok, 0x1234u);
+  EXPECT_EQ(asked, 1);
+}
+
 TEST(SdoRunner, DefaultTimeoutIsOneSecond) {
   SilentLink s;
   EXPECT_FALSE(ReadU32(s.link(), 0x10, 0x2104, 0).ok());

@@ -27,8 +27,9 @@ Expected<std::string> LogInterfaceName(const std::string& spec) {
 }
 
 Expected<std::unique_ptr<CanTransport>> OpenTransportWithLog(const std::string& spec,
-                                                             const std::string& log_path) {
-  VOLCOMP_TRY_ASSIGN(auto transport, OpenTransport(spec));
+                                                             const std::string& log_path,
+                                                             const TransportOptions& options) {
+  VOLCOMP_TRY_ASSIGN(auto transport, OpenTransport(spec, options));
   if (log_path.empty()) return transport;
   VOLCOMP_TRY_ASSIGN(const std::string iface, LogInterfaceName(spec));
   VOLCOMP_TRY_ASSIGN(auto log, CandumpLogWriter::OpenFile(log_path, iface));

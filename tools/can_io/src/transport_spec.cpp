@@ -108,13 +108,18 @@ Expected<TransportSpec> ParseTransportSpec(const std::string& spec) {
   return Bad(spec, "unknown transport");
 }
 
-Expected<std::unique_ptr<CanTransport>> OpenTransport(const std::string& spec) {
+Expected<std::unique_ptr<CanTransport>> OpenTransport(const std::string& spec,
+                                                      const TransportOptions& options) {
   VOLCOMP_TRY_ASSIGN(const TransportSpec s, ParseTransportSpec(spec));
   SlcanOptions slcan;
   slcan.bitrate = s.bitrate;
   switch (s.kind) {
     case TransportSpec::Kind::kSocketCan: {
-      VOLCOMP_TRY_ASSIGN(auto t, SocketCanTransport::Open(s.target, SocketCanOptions()));
+      SocketCanOptions socketcan;
+      for (const ReceiveFilter& f : options.receive) {
+        socketcan.socket.filters.push_back({f.id, f.mask, false});
+      }
+      VOLCOMP_TRY_ASSIGN(auto t, SocketCanTransport::Open(s.target, socketcan));
       return std::unique_ptr<CanTransport>(std::move(t));
     }
     case TransportSpec::Kind::kSlcanSerial: {

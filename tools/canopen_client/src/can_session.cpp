@@ -3,6 +3,7 @@
 
 #include "volcomp/can_io/logging_transport.hpp"
 #include "volcomp/canopen/node.hpp"
+#include "volcomp/canopen/sdo_protocol.hpp"
 
 namespace volcomp::canopen_client {
 
@@ -10,7 +11,10 @@ Expected<std::unique_ptr<CanSession>> CanSession::Open(const std::string& spec,
                                                        uint8_t node,
                                                        const std::string& log_path,
                                                        SdoClient::Options options) {
-  VOLCOMP_TRY_ASSIGN(auto transport, can_io::OpenTransportWithLog(spec, log_path));
+  can_io::TransportOptions transport_options;
+  transport_options.receive = ReceiveFilters(node);
+  VOLCOMP_TRY_ASSIGN(auto transport,
+                     can_io::OpenTransportWithLog(spec, log_path, transport_options));
   return std::unique_ptr<CanSession>(new CanSession(std::move(transport), node, options));
 }
 
@@ -28,6 +32,24 @@ CanSession::CanSession(std::unique_ptr<can_io::CanTransport> transport,
                                      .count());
   };
   link_.other = [this](const CanFrame& f) { Observe(f); };
+  link_.diagnose = [this] { return DescribeDrops(); };
+}
+
+std::vector<can_io::ReceiveFilter> CanSession::ReceiveFilters(uint8_t node) {
+  return {{static_cast<uint16_t>(canopen::sdo::kResponseCobBase + node), 0x7FF},
+          {static_cast<uint16_t>(canopen::kEmcyCobBase + node), 0x7FF},
+          {canopen::kHeartbeatCobBase, 0x780}};
+}
+
+std::string CanSession::DescribeDrops() {
+  const uint64_t dropped = transport_->dropped_frames();
+  if (dropped == drops_reported_) return "";
+  const uint64_t n = dropped - drops_reported_;
+  drops_reported_ = dropped;
+  return std::to_string(n) + " received frame" + (n == 1 ? " was" : "s were") + " lost on " +
+         transport_->description() +
+         " before this program could read them (its receive buffer was full: the program did "
+         "not run for a while; a busy computer?)";
 }
 
 void CanSession::Observe(const CanFrame& f) {

@@ -68,6 +68,13 @@ void SdoClient::Abandon(const Failure& why) {
   tx_pos_ = 0;
 }
 
+void SdoClient::AddToFailure(const std::string& note) {
+  if (state_ != State::kDone || result_.ok() || note.empty()) return;
+  SdoFailure f = result_.error();
+  f.message += "; " + note;
+  result_ = Fail(std::move(f));
+}
+
 void SdoClient::SendAbort(canopen::SdoAbort code, const std::string& message) {
   CanFrame f = Request(kAbort);
   StoreLe32(f.data + 4, canopen::Code(code));
@@ -172,6 +179,13 @@ bool SdoClient::PopTx(CanFrame* frame) {
 void SdoClient::Poll(uint64_t now_us) {
   now_us_ = now_us;
   if (state_ == State::kDone || state_ == State::kBlockSend) return;
+  if (state_ == State::kBlockUpRecv && up_sub_block_started_ && opt_.block_gap_ms != 0 &&
+      now_us > up_gap_deadline_us_) {
+    ++gap_acks_;
+    AckUploadSubBlock();
+    deadline_us_ = now_us + uint64_t{opt_.timeout_ms} * 1000;
+    return;
+  }
   if (deadline_us_ == 0) deadline_us_ = now_us + uint64_t{opt_.timeout_ms} * 1000;
   if (now_us > deadline_us_)
     SendAbort(canopen::SdoAbort::kTimeout, "no response from node " + std::to_string(node_id_));
@@ -356,6 +370,7 @@ SdoClient::Reply SdoClient::OnBlockUploadFrame(const CanFrame& f) {
       upload_size_ = (cmd & kBlockSizeIndicated) != 0 ? LoadLe32(f.data + 4) : 0;
       up_last_seq_ = 0;
       up_last_ = false;
+      up_sub_block_started_ = false;
       up_block_.clear();
       Queue(Plain(Block(kCcsBlockUpload, kBlockStartUpload)));
       state_ = State::kBlockUpRecv;
@@ -379,11 +394,18 @@ void SdoClient::OnBlockUploadSegment(const CanFrame& f) {
     received_.insert(received_.end(), f.data + 1, f.data + 1 + kSegmentBytes);
     up_last_ = last;
   }
+  up_sub_block_started_ = true;
+  up_gap_deadline_us_ = now_us_ + uint64_t{opt_.block_gap_ms} * 1000;
   if (seq != opt_.upload_block_size && !last) return;
+  AckUploadSubBlock();
+}
+
+void SdoClient::AckUploadSubBlock() {
   CanFrame a = Plain(Block(kCcsBlockUpload, kBlockAck));
   a.data[1] = up_last_seq_;
   a.data[2] = opt_.upload_block_size;
   Queue(a);
+  up_sub_block_started_ = false;  // the node's turn: its silence now is the timeout's business
   if (up_last_) {
     state_ = State::kBlockUpEnd;
   } else {

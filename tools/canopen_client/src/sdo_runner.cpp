@@ -38,6 +38,7 @@ const SdoExpected<std::vector<uint8_t>>& RunToCompletion(SdoClient& client, cons
   while (client.PopTx(&f)) {
     if (!link.send(f).ok()) break;
   }
+  if (!client.result().ok() && link.diagnose) client.AddToFailure(link.diagnose());
   return client.result();
 }
 

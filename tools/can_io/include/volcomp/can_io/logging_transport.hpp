@@ -22,6 +22,7 @@ class LoggingTransport : public CanTransport {
   Expected<std::optional<CanFrame>> Receive(std::chrono::microseconds timeout) override;
   std::string description() const override;
   std::vector<BusEvent> TakeEvents() override { return inner_->TakeEvents(); }
+  uint64_t dropped_frames() const override { return inner_->dropped_frames(); }
 
   CanTransport& inner() { return *inner_; }
   CandumpLogWriter& log() { return *log_; }
@@ -35,9 +36,11 @@ class LoggingTransport : public CanTransport {
 /// SLCAN forms (what the kernel's slcan driver would call it).
 Expected<std::string> LogInterfaceName(const std::string& spec);
 
-/// OpenTransport(spec), wrapped in a LoggingTransport writing to `log_path` when it is not empty
-/// (kIoError when the log cannot be written).
+/// OpenTransport(spec, options), wrapped in a LoggingTransport writing to `log_path` when it is
+/// not empty (kIoError when the log cannot be written). The log has the frames the transport
+/// passes on: with options.receive set, only those (and every frame sent).
 Expected<std::unique_ptr<CanTransport>> OpenTransportWithLog(const std::string& spec,
-                                                             const std::string& log_path);
+                                                             const std::string& log_path,
+                                                             const TransportOptions& options = {});
 
 }  // namespace volcomp::can_io

@@ -4,7 +4,8 @@
 // it backs off 100 µs .. 2 ms and retries until `send_timeout`, then fails with a hint to raise
 // txqueuelen. Error frames become BusEvents; a bus-off triggers one restart request (rtnetlink,
 // needs CAP_NET_ADMIN) and, until the controller reports a restart, Send() fails ("controller is
-// bus-off"). Failures are kCommunication (transport.hpp).
+// bus-off"). The receive buffer is enlarged (SocketCanOptions) and the kernel's count of frames it
+// dropped for the socket is kept (dropped_frames()). Failures are kCommunication (transport.hpp).
 //
 // Thread-safety: one thread at a time.
 #pragma once
@@ -22,6 +23,11 @@ struct SocketCanOptions {
   hal::socketcan::SocketCanSocket::Options socket;  // filters, error frames, receive own
   std::chrono::milliseconds send_timeout{2000};
   bool restart_on_bus_off = true;
+  /// Asked for in place of socket.receive_buffer_bytes: 1 MiB holds about 1 s of a 1 Mbit/s bus
+  /// at full load (the kernel's default, a few hundred frames, fills in ~0.1 s), so a PC tool
+  /// that does not run for a moment loses nothing. Capped by the kernel unless the process may
+  /// force it (CAP_NET_ADMIN).
+  uint32_t receive_buffer_bytes = 1u << 20;
 };
 
 class SocketCanTransport : public CanTransport {
@@ -35,6 +41,7 @@ class SocketCanTransport : public CanTransport {
   Expected<std::optional<CanFrame>> Receive(std::chrono::microseconds timeout) override;
   std::string description() const override { return "socketcan:" + socket_.iface(); }
   std::vector<BusEvent> TakeEvents() override;
+  uint64_t dropped_frames() const override { return socket_.dropped_frames(); }
 
   hal::socketcan::BusState bus_state() const { return state_; }
 

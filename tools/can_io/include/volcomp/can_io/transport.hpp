@@ -53,6 +53,23 @@ class CanTransport {
   virtual std::string description() const = 0;
   /// Events seen since the last call (oldest first).
   virtual std::vector<BusEvent> TakeEvents() { return {}; }
+  /// Received frames lost before this program read them, since the transport was opened (a
+  /// kernel receive buffer that was full: a process that did not run for a while on a busy bus);
+  /// 0 where the transport cannot tell.
+  virtual uint64_t dropped_frames() const { return 0; }
+};
+
+/// A received standard (11-bit) frame is wanted when (id & mask) == (this id & mask).
+struct ReceiveFilter {
+  uint16_t id = 0;
+  uint16_t mask = 0x7FF;
+};
+
+struct TransportOptions {
+  /// The frames this program needs; empty: all. SocketCAN lets the kernel drop the others before
+  /// they take room in the receive buffer (a session with one node on a bus full of PDOs);
+  /// SLCAN receives everything the adapter sends (the caller ignores what it does not need).
+  std::vector<ReceiveFilter> receive;
 };
 
 /// A parsed transport spec.
@@ -72,6 +89,7 @@ Expected<uint32_t> ParseBitrate(const std::string& text);
 /// Opens the transport a spec names. The failure says what to do, e.g. "socketcan:
 /// socket(AF_CAN): address family not supported: this kernel has no CAN support (try
 /// slcan-tcp:HOST:PORT against a simulator, or run inside user-mode-linux)" (kCommunication).
-Expected<std::unique_ptr<CanTransport>> OpenTransport(const std::string& spec);
+Expected<std::unique_ptr<CanTransport>> OpenTransport(const std::string& spec,
+                                                      const TransportOptions& options = {});
 
 }  // namespace volcomp::can_io

@@ -31,6 +31,10 @@ class CanSession : public NodeObjects {
   CanSession& operator=(const CanSession&) = delete;
 
   can_io::CanTransport& transport() { return *transport_; }
+  /// The frames a session needs from the bus (the transport's kernel filter on SocketCAN): this
+  /// node's SDO responses and EMCY, and every node's heartbeat and boot-up (a reset node may come
+  /// back with another node-ID).
+  static std::vector<can_io::ReceiveFilter> ReceiveFilters(uint8_t node);
 
   /// Receives for `duration`, recording heartbeats and EMCY (monitoring, waiting for a state).
   Outcome Listen(std::chrono::milliseconds duration);
@@ -62,8 +66,12 @@ class CanSession : public NodeObjects {
   Expected<bool> ReceiveUntil(std::chrono::milliseconds timeout,
                               const std::function<bool(const CanFrame&)>& done);
 
+  // "N received frames were dropped ..." when the transport lost frames since the last call.
+  std::string DescribeDrops();
+
   FrameLink link_;  // what NodeObjects talks through (bound before it is filled in)
   std::unique_ptr<can_io::CanTransport> transport_;
+  uint64_t drops_reported_ = 0;
   std::optional<uint8_t> nmt_state_;
   std::vector<CanFrame> emcy_;
 };

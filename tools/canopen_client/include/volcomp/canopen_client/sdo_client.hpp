@@ -57,6 +57,12 @@ class SdoClient {
     uint32_t timeout_ms = 1000;  // per response
     bool use_block = true;       // block transfer for downloads > 4 bytes
     uint8_t upload_block_size = 127;
+    /// A block upload's sub-block that goes this long without a segment after its first one
+    /// (its end was lost: a full receive buffer, a garbled frame) is acknowledged up to the last
+    /// segment received in sequence, and the node sends the rest again (CiA 301 block transfer;
+    /// the board does the same for block downloads). Well below the node's own timeout (1000 ms
+    /// on the board). 0: wait for the timeout instead.
+    uint32_t block_gap_ms = 200;
     /// Reads through NodeObjects are repeated up to this many attempts in all when one ends with
     /// a protocol abort from either side (0x0503xxxx / 0x0504xxxx: a timeout, a stale or garbled
     /// frame): a read changes nothing on the node, so a fresh attempt is safe. Writes are not
@@ -77,6 +83,9 @@ class SdoClient {
   void StartRead(uint16_t index, uint8_t sub, bool block = false);
   /// Ends the transfer with `why` without sending anything (the link to the node failed).
   void Abandon(const Failure& why);
+  /// Appends "; " + `note` to the message of a failed transfer (nothing when `note` is empty or
+  /// the transfer did not fail).
+  void AddToFailure(const std::string& note);
 
   void OnFrame(const CanFrame& frame, uint64_t now_us);
   void Poll(uint64_t now_us);
@@ -88,6 +97,8 @@ class SdoClient {
   uint8_t node_id() const { return node_id_; }
   /// Segments resent after a gap acknowledgement (block download), for reports.
   uint32_t resent_segments() const { return resent_; }
+  /// Block upload sub-blocks acknowledged after a gap (Options::block_gap_ms), for reports.
+  uint32_t gap_acks() const { return gap_acks_; }
 
  private:
   enum class State : uint8_t {
@@ -121,6 +132,8 @@ class SdoClient {
   Reply OnUploadReply(const CanFrame& f);
   Reply OnBlockUploadFrame(const CanFrame& f);
   void OnBlockUploadSegment(const CanFrame& f);
+  // Acknowledges the segments received in sequence; the next sub-block (or the end) follows.
+  void AckUploadSubBlock();
   void OnBlockUploadEnd(const CanFrame& f);
   // Bytes 1-3 of an initiate response or abort name this transfer's object.
   bool ForThisObject(const CanFrame& f) const;
@@ -151,6 +164,9 @@ class SdoClient {
   uint32_t upload_size_ = 0;
   std::vector<uint8_t> up_block_;  // segments of the current upload sub-block
   uint8_t up_last_seq_ = 0;
+  bool up_sub_block_started_ = false;  // a segment of the current sub-block arrived
+  uint64_t up_gap_deadline_us_ = 0;
+  uint32_t gap_acks_ = 0;
   bool up_last_ = false;
   uint64_t deadline_us_ = 0;
   uint64_t now_us_ = 0;

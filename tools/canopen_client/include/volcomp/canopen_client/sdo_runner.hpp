@@ -22,6 +22,9 @@ struct FrameLink {
   std::function<uint64_t()> now_us;
   /// Frames that are not SDO responses for this client (heartbeat, EMCY): optional observer.
   std::function<void(const CanFrame&)> other;
+  /// What the link knows that may explain a failed transfer (e.g. frames the kernel dropped),
+  /// appended to its message; empty: nothing. Optional.
+  std::function<std::string()> diagnose;
 };
 
 /// Drives `client` (an operation already started) until it completes; returns its result.

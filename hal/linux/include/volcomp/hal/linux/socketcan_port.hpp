@@ -29,6 +29,7 @@ class SocketCanPort final : public CanPort {
   struct Counters {
     uint64_t tx_frames = 0;     // written to the socket
     uint64_t rx_frames = 0;     // data/remote frames received
+    uint64_t rx_dropped = 0;    // frames the kernel dropped: the socket's receive buffer was full
     uint64_t error_frames = 0;  // error frames received
     uint64_t enobufs = 0;       // writes deferred because the interface queue was full
     uint64_t tx_dropped = 0;    // frames dropped after a hard write error

@@ -58,6 +58,11 @@ class SocketCanSocket {
     std::vector<CanFilter> filters;  // empty: receive everything
     bool error_frames = true;        // subscribe to every error class
     bool receive_own = false;        // CAN_RAW_RECV_OWN_MSGS
+    // Receive buffer to ask for (SO_RCVBUFFORCE where permitted, else SO_RCVBUF, which the kernel
+    // caps at net.core.rmem_max); 0 keeps the kernel's default (net.core.rmem_default, room for
+    // a few hundred frames). Not getting it is not an error: receive_buffer_bytes() says what
+    // the socket has.
+    uint32_t receive_buffer_bytes = 0;
   };
   enum class IoResult : uint8_t {
     kOk,          // one frame written / read
@@ -87,6 +92,14 @@ class SocketCanSocket {
   /// error frames fill *error and set *is_error true.
   IoResult Read(CanFrame* frame, CanErrorInfo* error, bool* is_error, int* err);
 
+  /// Frames the kernel dropped for this socket since Open() because its receive buffer was full
+  /// (SO_RXQ_OVFL). The kernel reports the count with the next frame it queues after the drops,
+  /// so it is known once that frame has been read.
+  uint32_t dropped_frames() const { return dropped_; }
+  /// The socket's receive buffer as the kernel reports it (SO_RCVBUF; it counts its own overhead,
+  /// several hundred bytes per frame).
+  uint32_t receive_buffer_bytes() const;
+
   /// poll() for readability / writability; false on timeout.
   bool WaitReadable(std::chrono::microseconds timeout) const;
   bool WaitWritable(std::chrono::microseconds timeout) const;
@@ -94,6 +107,7 @@ class SocketCanSocket {
  private:
   int fd_ = -1;
   std::string iface_;
+  uint32_t dropped_ = 0;
 };
 
 /// Asks the kernel to restart a bus-off CAN controller now (rtnetlink, IFLA_CAN_RESTART; what
