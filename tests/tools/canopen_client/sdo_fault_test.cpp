@@ -21,6 +21,16 @@ struct Faults {
   std::function<bool(const CanFrame&)> lose_to_client;
 };
 
+// Node 0x10 with the test's object values, no heartbeat.
+struct ServerNode {
+  ServerNode() {
+    node.Start(0x10, &values, 0);
+    node.set_heartbeat_ms(0);
+  }
+  testing::TestValues values;
+  canopen::Node node;
+};
+
 Faults RandomFaults(double drop, double duplicate, double delay) {
   Faults f;
   f.drop = drop;
@@ -76,10 +86,9 @@ LinkRun Transfer(canopen::Node& node,
 
 TEST(SdoFaultInjection, EveryTransferSucceedsExactlyOrFailsCleanly) {
   std::mt19937_64 rng(77);
-  testing::TestValues values;
-  canopen::Node node;
-  node.Start(0x10, &values, 0);
-  node.set_heartbeat_ms(0);
+  ServerNode server;
+  testing::TestValues& values = server.values;
+  canopen::Node& node = server.node;
   uint64_t now_ms = 0;
   int ok = 0, failed = 0;
   uint32_t resent = 0;
@@ -126,10 +135,9 @@ TEST(SdoFaultInjection, EveryTransferSucceedsExactlyOrFailsCleanly) {
 // the client acknowledges what it has after block_gap_ms of silence and the node sends the rest
 // again, well within the node's own 1000 ms timeout. Without that the node times out.
 TEST(SdoFaultInjection, BlockUploadRecoversFromALostLastSegment) {
-  testing::TestValues values;
-  canopen::Node node;
-  node.Start(0x10, &values, 0);
-  node.set_heartbeat_ms(0);
+  ServerNode server;
+  testing::TestValues& values = server.values;
+  canopen::Node& node = server.node;
   values.domain_readback.resize(624);  // 90 segments: one sub-block, as 0x2124 on the board
   for (size_t i = 0; i < values.domain_readback.size(); ++i) {
     values.domain_readback[i] = static_cast<uint8_t>(i * 7 + 3);
@@ -168,10 +176,9 @@ TEST(SdoFaultInjection, BlockUploadRecoversFromALostLastSegment) {
 // bytes or with a clean failure (an abort), most of them succeed, and gap acknowledgements occur.
 TEST(SdoFaultInjection, BlockUploadsOverAFaultyLinkAreExactOrFailCleanly) {
   std::mt19937_64 rng(11);
-  testing::TestValues values;
-  canopen::Node node;
-  node.Start(0x10, &values, 0);
-  node.set_heartbeat_ms(0);
+  ServerNode server;
+  testing::TestValues& values = server.values;
+  canopen::Node& node = server.node;
   uint64_t now_ms = 0;
   int ok = 0;
   uint32_t gap_acks = 0;
@@ -201,10 +208,9 @@ TEST(SdoFaultInjection, BlockUploadsOverAFaultyLinkAreExactOrFailCleanly) {
 
 TEST(SdoFaultInjection, UploadsAndSmallWritesOverACleanLink) {
   std::mt19937_64 rng(5);
-  testing::TestValues values;
-  canopen::Node node;
-  node.Start(0x10, &values, 0);
-  node.set_heartbeat_ms(0);
+  ServerNode server;
+  testing::TestValues& values = server.values;
+  canopen::Node& node = server.node;
   uint64_t now_ms = 0;
   for (size_t n : {0u, 1u, 6u, 7u, 8u, 127u * 7u, 127u * 7u + 1u, 5000u}) {
     values.domain_readback.resize(n);
