@@ -13,9 +13,7 @@ using Clock = std::chrono::steady_clock;
 Expected<std::unique_ptr<SocketCanTransport>> SocketCanTransport::Open(
     const std::string& iface, const SocketCanOptions& options) {
   std::unique_ptr<SocketCanTransport> t(new SocketCanTransport(options));
-  SocketCanSocket::Options socket = options.socket;
-  socket.receive_buffer_bytes = options.receive_buffer_bytes;
-  const Expected<void> opened = t->socket_.Open(iface, socket);
+  const Expected<void> opened = t->socket_.Open(iface, options.socket);
   if (!opened.ok()) {
     const Failure& f = opened.error();
     return Fail(f.code == Error::kInvalidArgument ? f.code : Error::kCommunication, f.message);

@@ -20,14 +20,15 @@
 namespace volcomp::can_io {
 
 struct SocketCanOptions {
-  hal::socketcan::SocketCanSocket::Options socket;  // filters, error frames, receive own
+  /// The socket's receive buffer is 1 MiB unless set otherwise: about 1 s of a 1 Mbit/s bus at
+  /// full load (the kernel's default, a few hundred frames, fills in ~0.1 s), so a PC tool that
+  /// does not run for a moment loses nothing. Capped by the kernel unless the process may force
+  /// it (CAP_NET_ADMIN).
+  SocketCanOptions() { socket.receive_buffer_bytes = 1u << 20; }
+
+  hal::socketcan::SocketCanSocket::Options socket;  // filters, error frames, receive own, buffer
   std::chrono::milliseconds send_timeout{2000};
   bool restart_on_bus_off = true;
-  /// Asked for in place of socket.receive_buffer_bytes: 1 MiB holds about 1 s of a 1 Mbit/s bus
-  /// at full load (the kernel's default, a few hundred frames, fills in ~0.1 s), so a PC tool
-  /// that does not run for a moment loses nothing. Capped by the kernel unless the process may
-  /// force it (CAP_NET_ADMIN).
-  uint32_t receive_buffer_bytes = 1u << 20;
 };
 
 class SocketCanTransport : public CanTransport {
